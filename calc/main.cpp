@@ -1,0 +1,147 @@
+// trebuchet-calc: optimal engines from the scaling laws of tab:CPNC. Parses, calls the
+// library, prints. Exit codes: see ErrorKind in lib/trebuchet/error.hpp and docs/calculator.md.
+#include <CLI/CLI.hpp>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <optional>
+
+#include "trebuchet/batch.hpp"
+#include "trebuchet/calculator.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/report.hpp"
+#include "trebuchet/request.hpp"
+#include "trebuchet/scaling_table.hpp"
+#include "trebuchet/units.hpp"
+
+namespace {
+
+using namespace trebuchet;
+
+struct Options {
+  std::map<Quantity, std::string> givens;
+  std::string theta = "30";
+  std::string F = "2/3";
+  std::string branch = "auto";
+  std::string beta2, youngs_modulus, wood_density, g;  // empty: the table's own
+  bool extrapolate = false;
+  std::string scale;
+  std::string format = "table";
+  std::string batch;
+  std::string table_file;
+};
+
+Material material_from(const Options& options, const Material& reference) {
+  Material material = reference;
+  if (!options.beta2.empty()) material.beta2 = parse_positive(options.beta2, UnitDimension::dimensionless, "--beta2");
+  if (!options.youngs_modulus.empty())
+    material.youngs_modulus = parse_positive(options.youngs_modulus, UnitDimension::pressure, "--youngs-modulus");
+  if (!options.wood_density.empty())
+    material.wood_density = parse_positive(options.wood_density, UnitDimension::density, "--wood-density");
+  if (!options.g.empty()) material.g = parse_positive(options.g, UnitDimension::acceleration, "--g");
+  return material;
+}
+
+void print(const OptimalEngine& design, const std::string& format) {
+  if (format == "json") std::cout << design_json(design).dump(2) << "\n";
+  else if (format == "csv") std::cout << design_csv_header() << "\n" << design_csv_row(design) << "\n";
+  else std::cout << design_table(design);
+}
+
+int run(const Options& options) {
+  if (options.format != "table" && options.format != "csv" && options.format != "json")
+    throw Error(ErrorKind::usage, "--format: '" + options.format + "' is not a format; use table, csv or json");
+  const ScalingTable table_from_file =
+      options.table_file.empty() ? ScalingTable{} : load_scaling_table(options.table_file);
+  const ScalingTable& table = options.table_file.empty() ? builtin_scaling_table() : table_from_file;
+
+  DesignRequest request;
+  request.theta_i_deg = parse_theta(options.theta, "--theta");
+  request.F = parse_positive(options.F, UnitDimension::dimensionless, "--F");
+  request.branch = parse_branch_choice(options.branch);
+  request.material = material_from(options, table.reference);
+  request.extrapolate = options.extrapolate;
+  const double lambda = options.scale.empty() ? 1.0 : parse_positive(options.scale, UnitDimension::dimensionless, "--scale");
+
+  std::vector<Given> givens;
+  for (const auto& [quantity, text] : options.givens)
+    if (!text.empty()) givens.push_back(parse_given(quantity_name(quantity), text));
+
+  if (!options.batch.empty()) {
+    if (!givens.empty())
+      throw Error(ErrorKind::given_count, "--batch takes the givens from its file; drop --" +
+                                              std::string(quantity_name(givens.front().quantity)) + " from the command line");
+    std::ifstream file;
+    if (options.batch != "-") {
+      file.open(options.batch);
+      if (!file) throw Error(ErrorKind::usage, "--batch: cannot read '" + options.batch + "'; give a CSV file or - for stdin");
+    }
+    std::istream& input = options.batch == "-" ? std::cin : file;
+    std::cout << "line," << design_csv_header() << "\n";
+    const int failures = run_batch(input, table, request, [&](int line, const OptimalEngine* design, const Error* error) {
+      if (design) std::cout << line << "," << design_csv_row(lambda == 1.0 ? *design : scale_optimal_engine(*design, lambda)) << "\n";
+      else std::cerr << "trebuchet-calc: line " << line << ": " << error->what() << "\n";
+    });
+    if (failures > 0) {
+      std::cerr << "trebuchet-calc: " << failures << " row(s) failed; the other rows are in the output\n";
+      return exit_code(ErrorKind::batch_rows);
+    }
+    return 0;
+  }
+
+  if (givens.size() != 2)
+    throw Error(ErrorKind::given_count, "found " + std::to_string(givens.size()) +
+                                            " given(s); give exactly two of --R --T --L1 --L2 --L4 --D --M --m --mb --Lb --l, "
+                                            "e.g. --R 150m --m 50kg");
+  request.first = givens[0];
+  request.second = givens[1];
+  OptimalEngine design = design_optimal_engine(table, request);
+  if (lambda != 1.0) design = scale_optimal_engine(design, lambda);
+  print(design, options.format);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "trebuchet-calc: the optimal swinging-counterweight trebuchet for a capacity (R, T), for R and a\n"
+      "projectile mass, or for any two engine parameters, from the scaling laws of Horsdal's tab:CPNC.\n"
+      "Values take SI suffixes (150m, 3.1t, 40kJ); bare numbers are SI base units.",
+      "trebuchet-calc"};
+  Options options;
+  for (Quantity quantity : all_quantities) {
+    const std::string name(quantity_name(quantity));
+    const std::string units = unit_list(unit_dimension(quantity_dimension(quantity)));
+    app.add_option("--" + name, options.givens[quantity],
+                   std::string(quantity_description(quantity)) + (quantity == Quantity::l ? "" : " [" + units + "]"));
+  }
+  app.add_option("--theta", options.theta, "initial beam angle theta_i [deg]: 30 or 40")->capture_default_str();
+  app.add_option("--F", options.F, "counterweight arm fraction (L2+L3)/H: 1 or 2/3")->capture_default_str();
+  app.add_option("--branch", options.branch, "auto, lower or upper (two optima for 0.30 < X < 0.40)")->capture_default_str();
+  app.add_option("--beta2", options.beta2, "allowed beam bending (default: the table's, 1/300)");
+  app.add_option("--youngs-modulus", options.youngs_modulus, "Young's modulus of the wood (default 12GPa)");
+  app.add_option("--wood-density", options.wood_density, "density of the wood (default 700kg/m3)");
+  app.add_option("--g", options.g, "gravitational acceleration (default 9.81m/s2; the moon: 1.62)");
+  app.add_flag("--extrapolate", options.extrapolate, "allow X outside the table's intervals, with a warning");
+  app.add_option("--scale", options.scale, "print the same design scaled by this factor (a model)");
+  app.add_option("--format", options.format, "table, csv or json")->capture_default_str();
+  app.add_option("--batch", options.batch, "CSV file of requests (- for stdin); header names two givens");
+  app.add_option("--table", options.table_file, "constants file in the schema of data/cpnc.json");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "trebuchet-calc: " << e.what() << "; see trebuchet-calc --help\n";
+    return exit_code(ErrorKind::usage);
+  }
+  try {
+    return run(options);
+  } catch (const Error& e) {
+    std::cerr << "trebuchet-calc: " << e.what() << "\n";
+    return exit_code(e.kind());
+  }
+}

@@ -1,0 +1,17 @@
+// Number formatting shared by messages, CSV and tables.
+#pragma once
+
+#include <string>
+
+namespace trebuchet {
+
+/// Shortest text that reads back as the same double ("150", "0.1", "3.1e-05").
+std::string format_number(double value);
+
+/// `value` rounded to `significant` digits, without trailing zeros in the exponent form.
+std::string format_significant(double value, int significant);
+
+/// A simple fraction for values such as F and beta2 ("2/3", "1/300", "1"), else the number.
+std::string format_fraction(double value);
+
+}  // namespace trebuchet

@@ -1,0 +1,160 @@
+#include "trebuchet/units.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+
+#include "trebuchet/error.hpp"
+
+namespace trebuchet {
+namespace {
+
+struct Unit {
+  std::string_view suffix;
+  UnitDimension dimension;
+  double to_si;  // multiply by this to get SI base units (degrees for angles)
+};
+
+constexpr std::array<Unit, 21> units = {{
+    {"m", UnitDimension::length, 1.0},
+    {"cm", UnitDimension::length, 1e-2},
+    {"mm", UnitDimension::length, 1e-3},
+    {"km", UnitDimension::length, 1e3},
+    {"kg", UnitDimension::mass, 1.0},
+    {"g", UnitDimension::mass, 1e-3},
+    {"t", UnitDimension::mass, 1e3},
+    {"J", UnitDimension::energy, 1.0},
+    {"kJ", UnitDimension::energy, 1e3},
+    {"MJ", UnitDimension::energy, 1e6},
+    {"deg", UnitDimension::angle, 1.0},
+    {"m/s2", UnitDimension::acceleration, 1.0},
+    {"m/s^2", UnitDimension::acceleration, 1.0},
+    {"Pa", UnitDimension::pressure, 1.0},
+    {"kPa", UnitDimension::pressure, 1e3},
+    {"MPa", UnitDimension::pressure, 1e6},
+    {"GPa", UnitDimension::pressure, 1e9},
+    {"kg/m3", UnitDimension::density, 1.0},
+    {"kg/m^3", UnitDimension::density, 1.0},
+    {"t/m3", UnitDimension::density, 1e3},
+    {"%", UnitDimension::dimensionless, 1e-2},
+}};
+
+std::string_view dimension_word(UnitDimension dimension) {
+  switch (dimension) {
+    case UnitDimension::length: return "a length";
+    case UnitDimension::mass: return "a mass";
+    case UnitDimension::energy: return "an energy";
+    case UnitDimension::dimensionless: return "a pure number";
+    case UnitDimension::angle: return "an angle";
+    case UnitDimension::acceleration: return "an acceleration";
+    case UnitDimension::pressure: return "a pressure";
+    case UnitDimension::density: return "a density";
+  }
+  return "?";
+}
+
+std::string_view bare_unit(UnitDimension dimension) {
+  switch (dimension) {
+    case UnitDimension::length: return "metres";
+    case UnitDimension::mass: return "kilograms";
+    case UnitDimension::energy: return "joules";
+    case UnitDimension::dimensionless: return "a plain number";
+    case UnitDimension::angle: return "degrees";
+    case UnitDimension::acceleration: return "m/s^2";
+    case UnitDimension::pressure: return "pascals";
+    case UnitDimension::density: return "kg/m^3";
+  }
+  return "?";
+}
+
+std::string_view example_value(UnitDimension dimension) {
+  switch (dimension) {
+    case UnitDimension::length: return "150m";
+    case UnitDimension::mass: return "50kg";
+    case UnitDimension::energy: return "40kJ";
+    case UnitDimension::dimensionless: return "2/3";
+    case UnitDimension::angle: return "30deg";
+    case UnitDimension::acceleration: return "9.81m/s2";
+    case UnitDimension::pressure: return "12GPa";
+    case UnitDimension::density: return "700kg/m3";
+  }
+  return "?";
+}
+
+std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
+
+// Parses the longest leading number of `text`; returns the number of characters used (0: none).
+std::size_t parse_number_prefix(std::string_view text, double& value) {
+  const char* first = text.data();
+  const char* last = first + text.size();
+  if (first != last && *first == '+') ++first;  // from_chars rejects a leading '+'
+  auto [end, ec] = std::from_chars(first, last, value, std::chars_format::general);
+  if (ec != std::errc()) return 0;
+  return static_cast<std::size_t>(end - text.data());
+}
+
+}  // namespace
+
+UnitDimension unit_dimension(Dimension dimension) {
+  switch (dimension) {
+    case Dimension::length: return UnitDimension::length;
+    case Dimension::mass: return UnitDimension::mass;
+    case Dimension::energy: return UnitDimension::energy;
+    case Dimension::dimensionless: return UnitDimension::dimensionless;
+  }
+  return UnitDimension::dimensionless;
+}
+
+std::string unit_list(UnitDimension dimension) {
+  std::string list;
+  for (const Unit& unit : units) {
+    if (unit.dimension != dimension) continue;
+    if (!list.empty()) list += ", ";
+    list += unit.suffix;
+  }
+  return list.empty() ? "no suffix" : list;
+}
+
+double parse_value(std::string_view text, UnitDimension dimension, std::string_view name) {
+  const std::string fix = "write a number with an optional unit, e.g. " + std::string(example_value(dimension));
+  const std::string what = std::string(name) + ": " + quoted(text);
+
+  double value = 0;
+  std::size_t used = parse_number_prefix(text, value);
+  if (used == 0) throw Error(ErrorKind::bad_number, what + " is not a number; " + fix);
+  std::string_view rest = text.substr(used);
+
+  if (!rest.empty() && rest.front() == '/') {  // a fraction a/b, e.g. 2/3 or 1/300
+    double denominator = 0;
+    std::size_t used_denominator = parse_number_prefix(rest.substr(1), denominator);
+    if (used_denominator == 0 || denominator == 0)
+      throw Error(ErrorKind::bad_number, what + " is not a valid fraction; " + fix);
+    value /= denominator;
+    rest = rest.substr(1 + used_denominator);
+  }
+  if (!std::isfinite(value))
+    throw Error(ErrorKind::bad_number, what + " is not a finite number; " + fix);
+
+  if (rest.empty()) return value;
+  for (const Unit& unit : units) {
+    if (unit.suffix != rest) continue;
+    if (unit.dimension != dimension)
+      throw Error(ErrorKind::unknown_unit, what + " is " + std::string(dimension_word(unit.dimension)) + ", but " +
+                                               std::string(name) + " is " + std::string(dimension_word(dimension)) +
+                                               "; use " + unit_list(dimension) + " or a bare number in " +
+                                               std::string(bare_unit(dimension)));
+    return value * unit.to_si;
+  }
+  throw Error(ErrorKind::unknown_unit, what + " has the unknown unit " + quoted(rest) + "; use " +
+                                           unit_list(dimension) + " or a bare number in " +
+                                           std::string(bare_unit(dimension)));
+}
+
+double parse_positive(std::string_view text, UnitDimension dimension, std::string_view name) {
+  double value = parse_value(text, dimension, name);
+  if (!(value > 0))
+    throw Error(ErrorKind::bad_number, std::string(name) + ": " + quoted(text) + " must be positive; give a value > 0");
+  return value;
+}
+
+}  // namespace trebuchet

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages trebuchet builds and tests with, skipping what is present.
+# Run as root (or with sudo available). Safe to run again.
+set -euo pipefail
+
+packages=(
+  cmake g++ make
+  libeigen3-dev     # Eigen 3.4
+  libgsl-dev        # GSL 2.7: odeiv2, roots, minimisation
+  nlohmann-json3-dev
+  catch2            # Catch2 2.13 with CTest discovery
+  libcli11-dev
+  gnuplot-nox       # charts, without X11
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all packages present"
+  exit 0
+fi
+
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  sudo_cmd=(sudo)
+fi
+
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,263 @@
+// The calculator's own physics and algebra: exact round trips, scaling laws, material,
+// branches and refusals. Tolerances here are rounding of doubles (a few 1e-15 per
+// operation, amplified by the condition of the inversion), not the paper's rounding.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+
+#include "paper_rounding.hpp"
+#include "trebuchet/calculator.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+
+using namespace trebuchet;
+using namespace trebuchet::testing;
+
+namespace {
+
+DesignRequest capacity(double R, double T, double theta_i_deg = 30, double F = 2.0 / 3) {
+  DesignRequest r;
+  r.first = {Quantity::R, R};
+  r.second = {Quantity::T, T};
+  r.theta_i_deg = theta_i_deg;
+  r.F = F;
+  return r;
+}
+
+// A capacity with the given X and Y (eq:XY_RT inverted; the rotation is orthogonal).
+DesignRequest at_XY(double X, double Y, double theta_i_deg = 30, double F = 2.0 / 3) {
+  const double s = std::sqrt(26.0);
+  return capacity(240 * std::exp((5 * X + Y) / s), 26000 * std::exp((-X + 5 * Y) / s), theta_i_deg, F);
+}
+
+double value_of(const OptimalEngine& d, Quantity q) {
+  const Engine& e = d.engine;
+  switch (q) {
+    case Quantity::R: return d.R;
+    case Quantity::T: return d.T;
+    case Quantity::L1: return e.L1;
+    case Quantity::L2: return e.L2;
+    case Quantity::L4: return e.L4;
+    case Quantity::D: return e.D;
+    case Quantity::M: return e.M;
+    case Quantity::m: return e.m;
+    case Quantity::mb: return e.mb;
+    case Quantity::Lb: return beam_length(e);
+    case Quantity::l: return scaled_design(e).l;
+  }
+  return 0;
+}
+
+double relative(double a, double b) { return std::abs(a / b - 1); }
+
+}  // namespace
+
+// eq:RT_ZiZj and eq:ZiZj_RT are inverse to each other: any two quantities of an optimal
+// engine give back its capacity. Round-off: ~1e-15 times the amplification (< 1e3 here).
+TEST_CASE("any pair of an optimal engine's quantities gives back its capacity", "[calculator]") {
+  for (double X : {-0.4, -0.1, 0.2, 0.5})
+    for (double Y : {-1.0, 0.0, 2.0}) {
+      const OptimalEngine design = design_optimal_engine(builtin_scaling_table(), at_XY(X, Y));
+      for (Quantity qi : all_quantities)
+        for (Quantity qj : all_quantities) {
+          if (qi >= qj) continue;
+          DesignRequest r = at_XY(X, Y);
+          r.first = {qi, value_of(design, qi)};
+          r.second = {qj, value_of(design, qj)};
+          INFO("X " << X << " Y " << Y << " pair " << quantity_name(qi) << ", " << quantity_name(qj));
+          const OptimalEngine back = design_optimal_engine(builtin_scaling_table(), r);
+          if (relative(back.R, design.R) > 1e-10) {
+            // Two capacities can share the pair (two segments each consistent, or Lb with
+            // another given): the one not shown must be announced with its X.
+            REQUIRE(!back.warnings.empty());
+            CHECK_THAT(back.warnings.front(), Catch::Contains("another optimal engine") &&
+                                                  Catch::Contains("X = " + format_significant(design.X, 3)));
+            continue;
+          }
+          CHECK(relative(back.T, design.T) < 1e-10);
+          CHECK(relative(back.engine.M, design.engine.M) < 1e-10);
+          CHECK(relative(back.engine.L4, design.engine.L4) < 1e-10);
+        }
+    }
+}
+
+// eq:ExtraScalings: along constant X a design scales with lengths ~ lambda, masses ~ lambda^4,
+// T ~ lambda^5, D ~ lambda^1.5 (n_Z). The calculator at (lambda R, lambda^5 T) gives the scaled
+// design, except that each fitted law obeys p_Z + 5 q_Z = n_Z only to its printed digits:
+// log(direct/scaled) must be exactly (p_Z + 5 q_Z - n_Z) log(lambda), up to round-off.
+TEST_CASE("the optimum at (lambda R, lambda^5 T) is the optimum at (R, T) scaled by lambda", "[calculator][scaling]") {
+  const ScalingTable& table = builtin_scaling_table();
+  const OptimalEngine base = design_optimal_engine(table, capacity(425, 224e3));
+  const TableBlock& block = *table.find_block(30, 2.0 / 3);
+  const Segment* segment = nullptr;
+  for (const Segment& s : block.segments)
+    if (s.X_min == base.segment_X_min) segment = &s;
+  REQUIRE(segment);
+  for (double lambda : {0.1, 0.5, 2.0}) {
+    const OptimalEngine direct = design_optimal_engine(table, capacity(425 * lambda, 224e3 * std::pow(lambda, 5)));
+    const OptimalEngine scaled = scale_optimal_engine(base, lambda);
+    INFO("lambda " << lambda);
+    CHECK(std::abs(direct.X - scaled.X) < 1e-12);
+    CHECK(std::abs(direct.Y - scaled.Y) < 1e-12);
+    const std::pair<Param, double> checks[] = {{Param::L1, direct.engine.L1 / scaled.engine.L1},
+                                               {Param::L4, direct.engine.L4 / scaled.engine.L4},
+                                               {Param::D, direct.engine.D / scaled.engine.D},
+                                               {Param::M, direct.engine.M / scaled.engine.M},
+                                               {Param::mb, direct.engine.mb / scaled.engine.mb}};
+    for (const auto& [param, ratio] : checks) {
+      const PowerLaw& law = segment->laws[index(param)];
+      INFO(param_name(param));
+      CHECK(std::abs(std::log(ratio) - (law.p + 5 * law.q - table.n[index(param)]) * std::log(lambda)) < 1e-12);
+    }
+  }
+}
+
+// tab:Denny: the "Model" row is the theta_i = 30 deg, F = 2/3 "Max Q" row scaled down
+// (eq:ExtraScalings). lambda = 80.0 m / 425 m carries the rounding of both ranges; each
+// tolerance adds the input's printed rounding, lambda's times the power, and the output's.
+TEST_CASE("tab:Denny Model row from the Max Q row above it", "[calculator][scaling][paper]") {
+  Engine max_q;
+  max_q.L1 = 7.06 * 0.8;  // only Lb, H, L4 and the masses are printed; split Lb arbitrarily
+  max_q.L2 = 7.06 * 0.2;
+  max_q.L4 = 5.57;
+  max_q.M = 15.7e3;
+  max_q.m = 101;
+  max_q.mb = 591;
+  max_q.theta_i_deg = 30;
+  const double H = 5.30;
+  const double lambda = 80.0 / 425;
+  const double lambda_rounding = 0.05 / 80.0 + 0.5 / 425;
+  const Engine model = scale_engine(max_q, lambda);
+  std::printf("tab:Denny Model row\n");
+  auto check = [&](const char* label, double ours, const char* paper, double input_rounding, int power) {
+    check_printed(label, ours, paper, std::abs(ours) * (input_rounding + power * lambda_rounding));
+  };
+  check("Lb", beam_length(model), "1.33", 0.005 / 7.06, 1);
+  check("H", H * lambda, "1.00", 0.005 / 5.30, 1);
+  check("L4", model.L4, "1.05", 0.005 / 5.57, 1);
+  check("M [kg]", model.M, "19.9", 50 / 15.7e3, 4);
+  check("m [kg]", model.m, "0.127", 0.5 / 101, 4);
+  check("mb [kg]", model.mb, "0.745", 0.5 / 591, 4);
+  check("R [m]", 425 * lambda, "80.0", 0.5 / 425, 1);
+  check("T [J]", 224e3 * std::pow(lambda, 5), "53.1", 0.5 / 224, 5);
+}
+
+// Section 7: beta2 from 1/300 to 1/200 at the same lengths keeps R and scales masses, T and
+// the beam cross-section by 2/3. Checked on the calculator (exact up to round-off) and on the
+// paper's example, row 7 of tab:SketchBook-II: 858 kJ becomes 572 kJ, R stays 297 m.
+TEST_CASE("section 7: beta2 = 1/200 keeps lengths and R, scales masses and T by 2/3", "[calculator][material][paper]") {
+  const MaterialScaling s = material_scaling(Material{}, Material{1.0 / 200});
+  CHECK(s.mass == Approx(2.0 / 3).epsilon(1e-14));
+  CHECK(s.energy == Approx(2.0 / 3).epsilon(1e-14));
+  CHECK(s.diameter * s.diameter == Approx(2.0 / 3).epsilon(1e-14));
+  std::printf("section 7, beta2 = 1/200\n");
+  check_printed("T of SketchBook-II row 7 [kJ]", 858 * s.energy, "572", 0.5 * s.energy);
+
+  DesignRequest r;
+  r.first = {Quantity::Lb, 9};
+  r.second = {Quantity::l, 6.0};
+  const OptimalEngine stiff = design_optimal_engine(builtin_scaling_table(), r);
+  r.material.beta2 = 1.0 / 200;
+  const OptimalEngine weak = design_optimal_engine(builtin_scaling_table(), r);
+  CHECK(relative(weak.R, stiff.R) < 1e-12);
+  CHECK(relative(weak.engine.L1, stiff.engine.L1) < 1e-12);
+  CHECK(relative(weak.engine.L4, stiff.engine.L4) < 1e-12);
+  CHECK(relative(weak.engine.M, stiff.engine.M * 2 / 3) < 1e-12);
+  CHECK(relative(weak.engine.mb, stiff.engine.mb * 2 / 3) < 1e-12);
+  CHECK(relative(weak.T, stiff.T * 2 / 3) < 1e-12);
+  CHECK(relative(weak.engine.D * weak.engine.D, stiff.engine.D * stiff.engine.D * 2 / 3) < 1e-12);
+}
+
+// Section 7: "a trebuchet on a special mission to the moon". With g = 1.62 m/s^2, k_M and k_D
+// scale with g (eq:kMkD); the optimum for (R, m) is the earth optimum for (R, m g0/g) with
+// masses times g/g0 and T times (g/g0)^2. eq:ExtraScalings then holds with the moon's k_M.
+TEST_CASE("section 7: a trebuchet for the moon", "[calculator][material]") {
+  const double g_moon = 1.62, g_earth = 9.81;
+  DesignRequest moon_request;
+  moon_request.first = {Quantity::R, 400};
+  moon_request.second = {Quantity::m, 50};
+  moon_request.material.g = g_moon;
+  const OptimalEngine moon = design_optimal_engine(builtin_scaling_table(), moon_request);
+  DesignRequest earth_request = moon_request;
+  earth_request.material.g = g_earth;
+  earth_request.second = {Quantity::m, 50 * g_earth / g_moon};
+  const OptimalEngine earth = design_optimal_engine(builtin_scaling_table(), earth_request);
+  CHECK(relative(moon.engine.L2, earth.engine.L2) < 1e-12);
+  CHECK(relative(moon.engine.L4, earth.engine.L4) < 1e-12);
+  CHECK(relative(moon.engine.M, earth.engine.M * g_moon / g_earth) < 1e-12);
+  CHECK(relative(moon.T, earth.T * (g_moon / g_earth) * (g_moon / g_earth)) < 1e-12);
+  CHECK(std::abs(moon.X - earth.X) < 1e-12);
+  auto bending_law = [](const OptimalEngine& d) {  // M / (K^2 (k_M/beta2) L2^4), eq:ExtraScalings
+    const ScaledDesign s = scaled_design(d.engine);
+    return d.engine.M / (s.K * s.K * k_M(d.material) / d.material.beta2 * std::pow(d.engine.L2, 4));
+  };
+  CHECK(relative(bending_law(moon), bending_law(earth)) < 1e-12);
+  // The fits themselves obey eq:ExtraScalings to their accuracy (a few per cent).
+  CHECK(std::abs(bending_law(earth) - 1) < 0.05);
+}
+
+// eq:BeamMass: D^2 = 4 mb / (pi rho_d (L1 + L2)). The table fits D and mb separately; over the
+// covered X range they agree with this law to the fits' accuracy (1.5% in D).
+TEST_CASE("fitted D and mb agree with eq:BeamMass", "[calculator]") {
+  for (double X : {-0.5, -0.2, 0.1, 0.35, 0.5}) {
+    const OptimalEngine d = design_optimal_engine(builtin_scaling_table(), at_XY(X, 0.5));
+    const double D_beam = std::sqrt(4 * d.engine.mb / (M_PI * d.material.wood_density * beam_length(d.engine)));
+    INFO("X " << X << " D " << d.engine.D << " from eq:BeamMass " << D_beam);
+    CHECK(relative(d.engine.D, D_beam) < 0.015);
+  }
+}
+
+TEST_CASE("auto takes the lower branch below X_d and the upper above, with the steps reported", "[calculator][branch]") {
+  const OptimalEngine below = design_optimal_engine(builtin_scaling_table(), at_XY(0.33, 0, 30, 1));
+  const OptimalEngine above = design_optimal_engine(builtin_scaling_table(), at_XY(0.35, 0, 30, 1));
+  CHECK(below.branch == Branch::lower);
+  CHECK(above.branch == Branch::upper);
+  REQUIRE(below.branch_steps);
+  CHECK_THAT(below.warnings.front(), Catch::Contains("S_L4 = +16%"));
+  // The optimum jumps at X_d: l4 on the upper branch is ~11% longer (section 6.2).
+  CHECK(scaled_design(above.engine).l4 / scaled_design(below.engine).l4 > 1.1);
+
+  DesignRequest forced = at_XY(0.35, 0, 30, 1);
+  forced.branch = BranchChoice::lower;
+  CHECK(design_optimal_engine(builtin_scaling_table(), forced).branch == Branch::lower);
+  forced = at_XY(0.2, 0, 30, 1);
+  forced.branch = BranchChoice::upper;
+  CHECK_THROWS_WITH(design_optimal_engine(builtin_scaling_table(), forced), Catch::Contains("upper branch has no optimum"));
+  const OptimalEngine plain = design_optimal_engine(builtin_scaling_table(), at_XY(0.1, 0));
+  CHECK(plain.branch == Branch::none);
+  CHECK(!plain.branch_steps);
+  CHECK(plain.warnings.empty());
+}
+
+TEST_CASE("X outside the covered interval is refused, or extrapolated with a warning", "[calculator][range]") {
+  DesignRequest r = at_XY(0.8, 0);
+  try {
+    design_optimal_engine(builtin_scaling_table(), r);
+    FAIL("no error");
+  } catch (const Error& e) {
+    CHECK(e.kind() == ErrorKind::out_of_range);
+    CHECK_THAT(e.what(), Catch::Contains("X = 0.8") && Catch::Contains("[-0.55, 0.57]") && Catch::Contains("--extrapolate"));
+  }
+  r.extrapolate = true;
+  const OptimalEngine d = design_optimal_engine(builtin_scaling_table(), r);
+  CHECK(std::abs(d.X - 0.8) < 1e-12);
+  REQUIRE(d.warnings.size() == 1);
+  CHECK_THAT(d.warnings.front(), Catch::StartsWith("extrapolated"));
+  CHECK_THROWS_WITH(design_optimal_engine(builtin_scaling_table(), capacity(150, 40e3, 35, 1)),
+                    Catch::Contains("no constants for theta_i = 35"));
+}
+
+// eq:ZiZj_RT: a 1% error in either given moves log R and log T by up to
+// (|q_i| + |q_j|)/|D_ij| or (|p_i| + |p_j|)/|D_ij| per cent.
+TEST_CASE("near-singular pairs report how much they amplify input errors", "[calculator]") {
+  const OptimalEngine design = design_optimal_engine(builtin_scaling_table(), at_XY(0.1, 0));
+  DesignRequest r = at_XY(0.1, 0);
+  CHECK(design.amplification == Approx(1).epsilon(1e-12));  // R and T given
+  r.first = {Quantity::L1, design.engine.L1};
+  r.second = {Quantity::L4, design.engine.L4};
+  const OptimalEngine lengths = design_optimal_engine(builtin_scaling_table(), r);
+  CHECK(lengths.amplification > 10);  // two lengths barely fix the capacity
+  r.first = {Quantity::R, design.R};
+  r.second = {Quantity::m, design.engine.m};
+  CHECK(design_optimal_engine(builtin_scaling_table(), r).amplification < 3);
+}

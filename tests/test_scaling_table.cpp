@@ -1,0 +1,82 @@
+// tab:CPNC as loaded from data/cpnc.json: its invariants, and the validation of bad files.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "paper_rounding.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/scaling_table.hpp"
+
+using namespace trebuchet;
+using namespace trebuchet::testing;
+
+// eq:ZRT: p_Z = n_Z + 5 b_Z and q_Z = -b_Z, so p_Z + 5 q_Z = n_Z exactly. With p and q
+// rounded to their printed digits the sum may miss n_Z by half a unit of p plus 5 half units
+// of q; a transcription error of one digit would break this. One printed pair misses by a
+// little more: block (30 deg, 2/3), segment [0, 0.57], D: -0.1851 + 5 * 0.3371 = 1.5004 against
+// rounding 0.0003, so one of the two constants is off by a unit in its last digit in the paper.
+TEST_CASE("every segment satisfies p_Z + 5 q_Z = n_Z to its printed digits (eq:ZRT)", "[table]") {
+  const ScalingTable& table = builtin_scaling_table();
+  for (std::size_t b = 0; b < table.blocks.size(); ++b)
+    for (std::size_t s = 0; s < table.blocks[b].segments.size(); ++s)
+      for (Param param : all_params) {
+        const std::string pointer = "/blocks/" + std::to_string(b) + "/segments/" + std::to_string(s) + "/";
+        const std::string name(param_name(param));
+        const PowerLaw& law = table.blocks[b].segments[s].laws[index(param)];
+        const double tolerance = constant_half_unit(pointer + "p/" + name) + 5 * constant_half_unit(pointer + "q/" + name);
+        const bool known_exception = b == 1 && s == 1 && param == Param::D;
+        INFO("block " << b << " segment " << s << " " << name);
+        CHECK(std::abs(law.p + 5 * law.q - table.n[index(param)]) <= (known_exception ? 0.0004 : tolerance) + 1e-12);
+      }
+}
+
+TEST_CASE("the built-in table has the paper's three blocks and X intervals", "[table]") {
+  const ScalingTable& table = builtin_scaling_table();
+  REQUIRE(table.blocks.size() == 3);
+  CHECK(table.R0 == 240);
+  CHECK(table.T0 == 26000);
+  const TableBlock* ideal = table.find_block(30, 1);
+  REQUIRE(ideal);
+  CHECK(ideal->segments.size() == 3);
+  CHECK(ideal->X_covered_min() == -0.55);
+  CHECK(ideal->X_covered_max() == 0.57);
+  REQUIRE(table.find_block(40, 2.0 / 3));
+  CHECK(table.find_block(40, 2.0 / 3)->X_covered_min() == -0.52);
+  CHECK(table.find_block(35, 1) == nullptr);
+}
+
+namespace {
+std::string table_error(const std::function<void(nlohmann::json&)>& spoil) {
+  nlohmann::json document = nlohmann::json::parse(builtin_scaling_table_json());
+  spoil(document);
+  try {
+    parse_scaling_table(document.dump(), "spoiled.json");
+  } catch (const Error& e) {
+    CHECK(e.kind() == ErrorKind::data_file);
+    return e.what();
+  }
+  FAIL("no error");
+  return {};
+}
+}  // namespace
+
+TEST_CASE("a bad constants file is refused with the file and the key named", "[table]") {
+  CHECK(table_error([](nlohmann::json& d) { d["blocks"][1]["segments"][0]["a"].erase("M"); }) ==
+        "spoiled.json: blocks[1].segments[0].a: missing key 'M'");
+  CHECK(table_error([](nlohmann::json& d) { d["blocks"][0]["Z0"]["L1"] = "3.90"; }) ==
+        "spoiled.json: blocks[0].Z0.L1: expected a number, got string");
+  CHECK(table_error([](nlohmann::json& d) { d.erase("R0_m"); }) == "spoiled.json: top level: missing key 'R0_m'");
+  CHECK(table_error([](nlohmann::json& d) { d["blocks"][0]["segments"][1]["branch"] = "none"; }) ==
+        "spoiled.json: blocks[0].segments: segments [0, 0.4] and [0.3, 0.57] overlap; label them \"lower\" and \"upper\"");
+  CHECK(table_error([](nlohmann::json& d) { d["blocks"][2]["Z0"]["M"] = -1; }) ==
+        "spoiled.json: blocks[2].Z0.M: must be positive, got -1");
+}
+
+TEST_CASE("a non-finite number or broken JSON is refused", "[table]") {
+  std::string text(builtin_scaling_table_json());
+  const std::string key = "\"R0_m\": 240";
+  text.replace(text.find(key), key.size(), "\"R0_m\": 1e999");
+  CHECK_THROWS_WITH(parse_scaling_table(text, "big.json"), Catch::Contains("big.json") && Catch::Contains("number overflow"));
+  CHECK_THROWS_WITH(parse_scaling_table("{", "cut.json"), Catch::StartsWith("cut.json: not valid JSON"));
+  CHECK_THROWS_WITH(load_scaling_table("/nonexistent/cpnc.json"), Catch::Contains("cannot be read"));
+}
