@@ -1,0 +1,66 @@
+// The scaled equations of motion of appendix A and the internal forces that follow from
+// them by Newton's laws. Scaled units: lengths in L2, masses in M, time in (L2/g)^(1/2),
+// forces in Mg, energies in M g L2. Pivot at the origin, y up; the long arm starts at
+// theta_i from the downward vertical on the +x side and the target lies toward -x.
+//   hinge          (-sin th, cos th)
+//   counterweight  (-sin th + L sin psi, cos th - L cos psi)
+//   beam CM        (l - 1)/2 (sin th, -cos th)
+//   projectile     l (sin th - l4 cos phi, -cos th - l4 sin phi)
+// These positions give eq:EOM_I_1, eq:EOM_I_2, eq:EOM_II_1 and eq:EOM_II_3 from the Lagrangian.
+#pragma once
+
+#include <array>
+
+#include "trebuchet/engine.hpp"
+
+namespace trebuchet {
+
+/// The parameters of the scaled equations (eq:Design) and the initial beam angle.
+struct ScaledEngine {
+  double l, l4, L, mu, mu_b;  ///< scaled, eq:Design
+  double theta_i;             ///< [rad]
+
+  static ScaledEngine from(const Engine& engine);
+  double beam_inertia() const;   ///< I_P = mu_b (l^2 - l + 1)/3, scaled
+  double energy_drop() const;    ///< Delta U / (M g L2), eq:DU
+};
+
+/// Phase I: projectile slides in the trough (eq:EOM_I_1-3). Phase II: lifted (eq:EOM_II_1,
+/// eq:EOM_I_2, eq:EOM_II_3). Phase III: released, mu = 0.
+enum class Phase { trough, lifted, released };
+
+/// A state of the engine, scaled. In phase I, phi and phi_dot follow from eq:EOM_I_3.
+struct State {
+  double theta = 0, psi = 0, phi = 0;              ///< [rad]
+  double theta_dot = 0, psi_dot = 0, phi_dot = 0;  ///< scaled angular speeds
+};
+
+struct Vec2 {
+  double x = 0, y = 0;
+};
+
+/// Angular accelerations and the internal forces at one state, scaled (forces in Mg).
+struct Snapshot {
+  double theta_ddot = 0, psi_ddot = 0, phi_ddot = 0;
+  Vec2 projectile, projectile_velocity;  ///< relative to the pivot, scaled
+  Vec2 pivot_reaction;   ///< F_R: force of the frame on the beam at the pivot
+  Vec2 hinge_force;      ///< F_H: force of the arm on the counterweight
+  Vec2 sling_on_tip;     ///< force of the sling on the beam tip
+  double sling_perpendicular = 0;  ///< F_S_perp: component of the sling's pull on the tip against the beam's turn
+  double normal_force = 0;         ///< trough on projectile (phase I; 0 after)
+  double energy = 0;               ///< kinetic + potential, scaled; conserved
+};
+
+/// sin phi in the trough from eq:EOM_I_3: cos th + l4 sin phi = cos th_i.
+double trough_sin_phi(const ScaledEngine& engine, double theta);
+
+/// Fills phi and phi_dot of a phase-I state from eq:EOM_I_3; returns cos phi (<= 0: the sling stands vertical).
+double complete_trough_state(const ScaledEngine& engine, State& state);
+
+/// Accelerations and forces at a state of the given phase.
+Snapshot snapshot(const ScaledEngine& engine, Phase phase, const State& state);
+
+/// Accelerations only (the right-hand side of the ODE), cheaper than snapshot.
+std::array<double, 3> accelerations(const ScaledEngine& engine, Phase phase, const State& state);
+
+}  // namespace trebuchet

@@ -1,0 +1,296 @@
+#include "trebuchet/shot.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
+#include <gsl/gsl_odeiv2.h>
+#include <gsl/gsl_roots.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <memory>
+
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+
+namespace trebuchet {
+namespace {
+
+// Phase I integrates (th, psi, th', psi'); phase II (th, psi, phi, th', psi', phi').
+struct OdeContext {
+  const ScaledEngine* engine;
+  Phase phase;
+  bool sling_vertical = false;  // set when phase I reaches cos phi <= 0
+};
+
+State state_of(const OdeContext& c, const double y[], std::size_t dimension, bool& ok) {
+  State s;
+  ok = true;
+  if (dimension == 4) {  // phase I
+    s.theta = y[0], s.psi = y[1], s.theta_dot = y[2], s.psi_dot = y[3];
+    ok = complete_trough_state(*c.engine, s) > 1e-9;
+  } else {
+    s.theta = y[0], s.psi = y[1], s.phi = y[2], s.theta_dot = y[3], s.psi_dot = y[4], s.phi_dot = y[5];
+  }
+  return s;
+}
+
+int equations(double, const double y[], double dydt[], void* params) {
+  auto* c = static_cast<OdeContext*>(params);
+  bool ok = true;
+  const State s = state_of(*c, y, c->phase == Phase::trough ? 4 : 6, ok);
+  if (!ok) {
+    c->sling_vertical = true;
+    return GSL_EBADFUNC;
+  }
+  const auto a = accelerations(*c->engine, c->phase, s);
+  if (c->phase == Phase::trough) {
+    dydt[0] = s.theta_dot, dydt[1] = s.psi_dot, dydt[2] = a[0], dydt[3] = a[1];
+  } else {
+    dydt[0] = s.theta_dot, dydt[1] = s.psi_dot, dydt[2] = s.phi_dot, dydt[3] = a[0], dydt[4] = a[1], dydt[5] = a[2];
+  }
+  return GSL_SUCCESS;
+}
+
+const gsl_odeiv2_step_type* stepper_type(const std::string& name) {
+  if (name == "rk2") return gsl_odeiv2_step_rk2;
+  if (name == "rk4") return gsl_odeiv2_step_rk4;
+  if (name == "rkf45") return gsl_odeiv2_step_rkf45;
+  if (name == "rkck") return gsl_odeiv2_step_rkck;
+  if (name == "rk8pd") return gsl_odeiv2_step_rk8pd;
+  throw Error(ErrorKind::usage, "--stepper: '" + name + "' is not a stepper; use rk2, rk4, rkf45, rkck or rk8pd");
+}
+
+using DriverPtr = std::unique_ptr<gsl_odeiv2_driver, decltype(&gsl_odeiv2_driver_free)>;
+
+// One phase: a driver for stepping and a second one for evaluating the solution between steps.
+class PhaseIntegrator {
+ public:
+  PhaseIntegrator(const ScaledEngine& engine, Phase phase, const IntegratorSettings& settings)
+      : context_{&engine, phase},
+        system_{equations, nullptr, phase == Phase::trough ? 4u : 6u, &context_},
+        stepping_(make(settings), gsl_odeiv2_driver_free),
+        evaluating_(make(settings), gsl_odeiv2_driver_free) {}
+
+  std::size_t dimension() const { return system_.dimension; }
+
+  // One accepted step toward t_end; false when the equations failed.
+  bool step(double& t, double y[], double t_end, double& h) {
+    gsl_odeiv2_driver* d = stepping_.get();
+    return gsl_odeiv2_evolve_apply(d->e, d->c, d->s, &system_, &t, t_end, &h, y) == GSL_SUCCESS;
+  }
+
+  // The solution at t1, from a stored step start (t0, y0): integrated anew to the same tolerance.
+  std::vector<double> at(double t0, const std::vector<double>& y0, double t1) {
+    std::vector<double> y = y0;
+    if (t1 <= t0) return y;
+    gsl_odeiv2_driver_reset_hstart(evaluating_.get(), t1 - t0);
+    double t = t0;
+    if (gsl_odeiv2_driver_apply(evaluating_.get(), &t, t1, y.data()) != GSL_SUCCESS)
+      throw Error(ErrorKind::numerical, "integrator failure while evaluating between steps; tighten --rtol");
+    return y;
+  }
+
+  State state(const std::vector<double>& y) const {
+    bool ok = true;
+    return state_of(context_, y.data(), y.size(), ok);
+  }
+  bool sling_vertical() const { return context_.sling_vertical; }
+
+ private:
+  gsl_odeiv2_driver* make(const IntegratorSettings& settings) {
+    return gsl_odeiv2_driver_alloc_y_new(&system_, stepper_type(settings.stepper), 1e-3, settings.atol, settings.rtol);
+  }
+  OdeContext context_;
+  gsl_odeiv2_system system_;
+  DriverPtr stepping_, evaluating_;
+};
+
+// Running extremes of the forces that enter eq:F.
+struct ForceExtremes {
+  double sling_perpendicular = 0, pivot = 0, horizontal_max = 0, horizontal_min = 0;
+  void add(const Snapshot& s) {
+    sling_perpendicular = std::max(sling_perpendicular, s.sling_perpendicular);
+    pivot = std::max(pivot, std::hypot(s.pivot_reaction.x, s.pivot_reaction.y));
+    horizontal_max = std::max(horizontal_max, s.pivot_reaction.x);
+    horizontal_min = std::min(horizontal_min, s.pivot_reaction.x);
+  }
+};
+
+ReleasePoint release_point(const ScaledEngine& e, const Quality& quality, double t, const State& s,
+                           const Snapshot& snap, ForceExtremes extremes) {
+  extremes.add(snap);
+  ReleasePoint r;
+  r.t = t;
+  r.state = s;
+  r.position = snap.projectile;
+  r.velocity = snap.projectile_velocity;
+  r.height = e.l * std::cos(e.theta_i) + r.position.y;
+  const double vx = r.velocity.x, vy = r.velocity.y;
+  if (vx < 0 && r.height >= 0) {  // toward the target, -x; vacuum flight to level 0 (g = 1 scaled)
+    const double flight = vy + std::sqrt(vy * vy + 2 * r.height);
+    r.range = -(r.position.x + vx * flight);
+  }
+  r.energy_at_target = e.mu * (0.5 * (vx * vx + vy * vy) + r.height);  // eq:T
+  r.efficiency = r.energy_at_target / e.energy_drop();                  // eq:Aux
+  r.sling_perpendicular_max = extremes.sling_perpendicular;
+  r.pivot_reaction_max = extremes.pivot;
+  r.pivot_horizontal_max = extremes.horizontal_max;
+  r.pivot_horizontal_min = extremes.horizontal_min;
+  const double sling = extremes.sling_perpendicular / e.mu;  // F_S_perp / (m g)
+  const double spread = extremes.horizontal_max - extremes.horizontal_min;
+  r.force_factor = std::pow(sling * sling * extremes.pivot * spread, 0.25);  // eq:F
+  if (r.range > 0)
+    r.quality = quality.efficiency_only
+                    ? r.efficiency
+                    : r.range / e.l * e.mu * std::pow(r.efficiency, quality.n) / r.force_factor;  // eq:Q, eq:Q_n
+  return r;
+}
+
+struct Sample {
+  double t;
+  std::vector<double> y;
+  ForceExtremes extremes;  // over [0, t]
+};
+
+[[noreturn]] void fail(const std::string& reason) { throw Error(ErrorKind::numerical, reason); }
+
+double brent_root(const std::function<double(double)>& f, double lo, double hi) {
+  gsl_function g{[](double x, void* p) { return (*static_cast<std::function<double(double)>*>(p))(x); },
+                 const_cast<std::function<double(double)>*>(&f)};
+  gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+  gsl_root_fsolver_set(solver, &g, lo, hi);
+  double root = hi;
+  for (int k = 0; k < 100; ++k) {
+    gsl_root_fsolver_iterate(solver);
+    root = gsl_root_fsolver_root(solver);
+    if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver), gsl_root_fsolver_x_upper(solver), 1e-15, 0) != GSL_CONTINUE)
+      break;
+  }
+  gsl_root_fsolver_free(solver);
+  return root;
+}
+
+// Maximum of f on [lo, hi] given an interior guess with f(guess) >= f(lo), f(hi).
+double brent_maximum(const std::function<double(double)>& f, double lo, double guess, double hi) {
+  std::function<double(double)> negated = [&](double x) { return -f(x); };
+  gsl_function g{[](double x, void* p) { return (*static_cast<std::function<double(double)>*>(p))(x); }, &negated};
+  gsl_min_fminimizer* minimizer = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+  if (gsl_min_fminimizer_set(minimizer, &g, guess, lo, hi) != GSL_SUCCESS) {
+    gsl_min_fminimizer_free(minimizer);
+    return guess;  // the maximum sits on a sample within round-off
+  }
+  double x = guess;
+  for (int k = 0; k < 200; ++k) {
+    gsl_min_fminimizer_iterate(minimizer);
+    x = gsl_min_fminimizer_x_minimum(minimizer);
+    if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(minimizer), gsl_min_fminimizer_x_upper(minimizer), 1e-13, 0) !=
+        GSL_CONTINUE)
+      break;
+  }
+  gsl_min_fminimizer_free(minimizer);
+  return x;
+}
+
+}  // namespace
+
+ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const IntegratorSettings& settings) {
+  gsl_set_error_handler_off();
+  if (!(1 - e.mu_b * (e.l - 1) / 2 > 0))
+    fail("the beam cannot turn: mu_b (l - 1)/2 = " + format_significant(e.mu_b * (e.l - 1) / 2, 4) +
+         " >= 1, its long arm outweighs the counterweight (eq:DU); lighten the beam or shorten L1");
+  ShotResult result;
+  const double energy_scale = e.energy_drop();
+  double energy0 = 0;
+  auto track_energy = [&](const Snapshot& s) { result.energy_drift = std::max(result.energy_drift, std::abs(s.energy - energy0) / energy_scale); };
+
+  // Phase I: from rest (psi_i = phi_i = 0, section 2) until the trough's normal force vanishes.
+  PhaseIntegrator trough(e, Phase::trough, settings);
+  std::vector<double> y = {e.theta_i, 0, 0, 0};
+  double t = 0, h = 1e-3;
+  ForceExtremes extremes;
+  Snapshot snap = snapshot(e, Phase::trough, trough.state(y));
+  energy0 = snap.energy;
+  extremes.add(snap);
+  auto normal_at = [&](double t0, const std::vector<double>& y0, double t1) {
+    const auto y1 = trough.at(t0, y0, t1);
+    return snapshot(e, Phase::trough, trough.state(y1)).normal_force;
+  };
+  while (true) {
+    const double t_prev = t;
+    const std::vector<double> y_prev = y;
+    if (!trough.step(t, y.data(), settings.max_time, h)) {
+      if (trough.sling_vertical())
+        fail("the sling stands vertical in the trough (cos phi -> 0) before lift-off; lengthen the sling L4");
+      fail("integrator failure in phase I; tighten --rtol or choose another --stepper");
+    }
+    if (++result.steps > settings.max_steps) fail("step budget of " + std::to_string(settings.max_steps) + " exceeded in phase I");
+    result.sample_times.push_back(t);
+    snap = snapshot(e, Phase::trough, trough.state(y));
+    if (snap.normal_force <= 0) {  // lift-off inside this step: locate it on the continuous solution
+      result.t_liftoff = brent_root([&](double x) { return normal_at(t_prev, y_prev, x); }, t_prev, t);
+      y = trough.at(t_prev, y_prev, result.t_liftoff);
+      t = result.t_liftoff;
+      snap = snapshot(e, Phase::trough, trough.state(y));
+      extremes.add(snap);
+      track_energy(snap);
+      break;
+    }
+    extremes.add(snap);
+    track_energy(snap);
+    if (y[0] >= M_PI || t >= settings.max_time)
+      fail("the projectile never lifts off: the trough still carries it when the beam is upright; "
+           "change the sling length L4 or the masses");
+  }
+
+  // Phase II from the located lift-off state.
+  const State lift = trough.state(y);
+  PhaseIntegrator lifted(e, Phase::lifted, settings);
+  y = {lift.theta, lift.psi, lift.phi, lift.theta_dot, lift.psi_dot, lift.phi_dot};
+  std::vector<Sample> samples = {{t, y, extremes}};
+  auto point_at = [&](std::size_t base, double time) {
+    const auto yt = lifted.at(samples[base].t, samples[base].y, time);
+    const State s = lifted.state(yt);
+    return release_point(e, quality, time, s, snapshot(e, Phase::lifted, s), samples[base].extremes);
+  };
+  std::size_t best = 0;
+  double best_quality = point_at(0, t).quality;
+  h = 1e-3;
+  while (true) {
+    if (!lifted.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase II; tighten --rtol or choose another --stepper");
+    if (++result.steps > settings.max_steps) fail("step budget of " + std::to_string(settings.max_steps) + " exceeded in phase II");
+    result.sample_times.push_back(t);
+    const State s = lifted.state(y);
+    snap = snapshot(e, Phase::lifted, s);
+    track_energy(snap);
+    const ReleasePoint here = release_point(e, quality, t, s, snap, samples.back().extremes);
+    extremes.add(snap);
+    samples.push_back({t, y, extremes});
+    if (here.quality > best_quality) {
+      best_quality = here.quality;
+      best = samples.size() - 1;
+    }
+    // Past the maximum: the quality has fallen to half of it, or the beam has turned over.
+    if ((best_quality > 0 && here.quality < 0.5 * best_quality) || s.theta > e.theta_i + 2 * M_PI || t >= settings.max_time) break;
+  }
+  if (!(best_quality > 0)) fail("no release sends the projectile forward: over phase II it never flies toward the target");
+  if (result.energy_drift > settings.max_energy_drift)
+    fail("energy drift " + format_significant(result.energy_drift, 3) + " of Delta U exceeds " +
+         format_significant(settings.max_energy_drift, 3) + "; tighten --rtol or choose another --stepper");
+
+  // The maximum of Q on the continuous solution between the neighbouring samples.
+  const std::size_t lo = best > 0 ? best - 1 : 0;
+  const std::size_t hi = std::min(best + 1, samples.size() - 1);
+  auto quality_at = [&](double time) {
+    std::size_t base = lo;
+    while (base + 1 <= hi && samples[base + 1].t <= time) ++base;
+    return point_at(base, time).quality;
+  };
+  const double t_release = brent_maximum(quality_at, samples[lo].t, samples[best].t, samples[hi].t);
+  std::size_t base = lo;
+  while (base + 1 <= hi && samples[base + 1].t <= t_release) ++base;
+  result.release = point_at(base, t_release);
+  return result;
+}
+
+}  // namespace trebuchet

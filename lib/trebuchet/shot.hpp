@@ -1,0 +1,59 @@
+// One shot of an engine, ab initio: phases I and II of appendix A integrated with GSL odeiv2,
+// lift-off located where the trough's normal force vanishes, and the release at the maximum
+// of the quality function over phase II (section 5). Everything here is scaled (dynamics.hpp).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "trebuchet/dynamics.hpp"
+
+namespace trebuchet {
+
+/// Settings of the integration; defaults are chosen in docs/verifier.md.
+struct IntegratorSettings {
+  std::string stepper = "rk8pd";   ///< a GSL odeiv2 explicit stepper: rk2, rk4, rkf45, rkck, rk8pd
+  double rtol = 1e-11;             ///< relative tolerance per step
+  double atol = 1e-12;             ///< absolute tolerance per step, scaled units
+  long max_steps = 200000;         ///< step budget over both phases
+  double max_energy_drift = 1e-8;  ///< |E(t) - E(0)|/DeltaU above this is an error, not a result
+  double max_time = 200;           ///< scaled; phase II is abandoned after this
+};
+
+/// Which quality the release maximises: eq:Q (n = 1), eq:Q_n, or Q_eps = eps (appendix B).
+struct Quality {
+  double n = 1;          ///< exponent of eps in eq:Q_n
+  bool efficiency_only = false;  ///< Q_eps
+};
+
+/// The projectile's state and the engine's figures at one moment of phase II, scaled.
+struct ReleasePoint {
+  double t = 0;                 ///< scaled time
+  State state;
+  Vec2 position, velocity;      ///< projectile, relative to the pivot
+  double height = 0;            ///< above the engine's base (l cos th_i + y), in L2
+  double range = 0;             ///< rho: pivot to impact at level 0, in L2; <= 0: not forward
+  double energy_at_target = 0;  ///< tau_e = T/(M g L2), eq:Aux, level 0
+  double efficiency = 0;        ///< eps = T/Delta U, eq:Aux
+  double sling_perpendicular_max = 0;  ///< running max of F_S_perp over [0, t], in Mg
+  double pivot_reaction_max = 0;       ///< running max of |F_R|, in Mg
+  double pivot_horizontal_max = 0;     ///< running max of F_Rh, in Mg
+  double pivot_horizontal_min = 0;     ///< running min of F_Rh, in Mg
+  double force_factor = 0;      ///< F of eq:F
+  double quality = 0;           ///< Q of eq:Q or eq:Q_n (or eps), at level 0
+};
+
+struct ShotResult {
+  double t_liftoff = 0;         ///< scaled
+  ReleasePoint release;
+  double energy_drift = 0;      ///< max |E(t) - E(0)| / Delta U over phases I and II
+  long steps = 0;               ///< accepted steps, both phases
+  std::vector<double> sample_times;  ///< accepted step ends, for series output
+};
+
+/// Integrates the shot and finds the release. Throws Error(numerical) with a named reason:
+/// the beam cannot turn, no lift-off, sling vertical in the trough, no forward release,
+/// integrator failure or step budget, or energy drift above the limit.
+ShotResult simulate_shot(const ScaledEngine& engine, const Quality& quality, const IntegratorSettings& settings);
+
+}  // namespace trebuchet
