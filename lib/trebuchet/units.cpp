@@ -39,46 +39,25 @@ constexpr std::array<Unit, 21> units = {{
     {"%", UnitDimension::dimensionless, 1e-2},
 }};
 
-std::string_view dimension_word(UnitDimension dimension) {
-  switch (dimension) {
-    case UnitDimension::length: return "a length";
-    case UnitDimension::mass: return "a mass";
-    case UnitDimension::energy: return "an energy";
-    case UnitDimension::dimensionless: return "a pure number";
-    case UnitDimension::angle: return "an angle";
-    case UnitDimension::acceleration: return "an acceleration";
-    case UnitDimension::pressure: return "a pressure";
-    case UnitDimension::density: return "a density";
-  }
-  return "?";
-}
+// How messages speak of each dimension.
+struct DimensionText {
+  std::string_view word;     // "a length"
+  std::string_view bare;     // unit of a bare number: "metres"
+  std::string_view example;  // a valid value: "150m"
+};
 
-std::string_view bare_unit(UnitDimension dimension) {
+DimensionText dimension_text(UnitDimension dimension) {
   switch (dimension) {
-    case UnitDimension::length: return "metres";
-    case UnitDimension::mass: return "kilograms";
-    case UnitDimension::energy: return "joules";
-    case UnitDimension::dimensionless: return "a plain number";
-    case UnitDimension::angle: return "degrees";
-    case UnitDimension::acceleration: return "m/s^2";
-    case UnitDimension::pressure: return "pascals";
-    case UnitDimension::density: return "kg/m^3";
+    case UnitDimension::length: return {"a length", "metres", "150m"};
+    case UnitDimension::mass: return {"a mass", "kilograms", "50kg"};
+    case UnitDimension::energy: return {"an energy", "joules", "40kJ"};
+    case UnitDimension::dimensionless: return {"a pure number", "a plain number", "2/3"};
+    case UnitDimension::angle: return {"an angle", "degrees", "30deg"};
+    case UnitDimension::acceleration: return {"an acceleration", "m/s^2", "9.81m/s2"};
+    case UnitDimension::pressure: return {"a pressure", "pascals", "12GPa"};
+    case UnitDimension::density: return {"a density", "kg/m^3", "700kg/m3"};
   }
-  return "?";
-}
-
-std::string_view example_value(UnitDimension dimension) {
-  switch (dimension) {
-    case UnitDimension::length: return "150m";
-    case UnitDimension::mass: return "50kg";
-    case UnitDimension::energy: return "40kJ";
-    case UnitDimension::dimensionless: return "2/3";
-    case UnitDimension::angle: return "30deg";
-    case UnitDimension::acceleration: return "9.81m/s2";
-    case UnitDimension::pressure: return "12GPa";
-    case UnitDimension::density: return "700kg/m3";
-  }
-  return "?";
+  return {"?", "?", "?"};
 }
 
 std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
@@ -116,7 +95,7 @@ std::string unit_list(UnitDimension dimension) {
 }
 
 double parse_value(std::string_view text, UnitDimension dimension, std::string_view name) {
-  const std::string fix = "write a number with an optional unit, e.g. " + std::string(example_value(dimension));
+  const std::string fix = "write a number with an optional unit, e.g. " + std::string(dimension_text(dimension).example);
   const std::string what = std::string(name) + ": " + quoted(text);
 
   double value = 0;
@@ -139,15 +118,15 @@ double parse_value(std::string_view text, UnitDimension dimension, std::string_v
   for (const Unit& unit : units) {
     if (unit.suffix != rest) continue;
     if (unit.dimension != dimension)
-      throw Error(ErrorKind::unknown_unit, what + " is " + std::string(dimension_word(unit.dimension)) + ", but " +
-                                               std::string(name) + " is " + std::string(dimension_word(dimension)) +
+      throw Error(ErrorKind::unknown_unit, what + " is " + std::string(dimension_text(unit.dimension).word) + ", but " +
+                                               std::string(name) + " is " + std::string(dimension_text(dimension).word) +
                                                "; use " + unit_list(dimension) + " or a bare number in " +
-                                               std::string(bare_unit(dimension)));
+                                               std::string(dimension_text(dimension).bare));
     return value * unit.to_si;
   }
   throw Error(ErrorKind::unknown_unit, what + " has the unknown unit " + quoted(rest) + "; use " +
                                            unit_list(dimension) + " or a bare number in " +
-                                           std::string(bare_unit(dimension)));
+                                           std::string(dimension_text(dimension).bare));
 }
 
 double parse_positive(std::string_view text, UnitDimension dimension, std::string_view name) {
