@@ -1,14 +1,12 @@
 #include "trebuchet/calculator.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
+#include "trebuchet/solve_1d.hpp"
 
 namespace trebuchet {
 namespace {
@@ -111,21 +109,7 @@ struct BeamLengthLine {
 };
 
 double brent_root(const BeamLengthLine& line, double lo, double hi) {
-  gsl_function f;
-  f.function = [](double s, void* params) { return static_cast<const BeamLengthLine*>(params)->excess(s); };
-  f.params = const_cast<BeamLengthLine*>(&line);
-  gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-  gsl_root_fsolver_set(solver, &f, lo, hi);
-  double root = 0.5 * (lo + hi);
-  for (int iteration = 0; iteration < 200; ++iteration) {
-    gsl_root_fsolver_iterate(solver);
-    root = gsl_root_fsolver_root(solver);
-    if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver), gsl_root_fsolver_x_upper(solver), 0, 1e-14) !=
-        GSL_CONTINUE)
-      break;
-  }
-  gsl_root_fsolver_free(solver);
-  return root;
+  return find_root([&line](double s) { return line.excess(s); }, lo, hi, 0, 1e-14);
 }
 
 // Solutions, and the span of Lb over the part of the line inside the segment (for messages).

@@ -1,9 +1,7 @@
 #include "trebuchet/shot.hpp"
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_min.h>
 #include <gsl/gsl_odeiv2.h>
-#include <gsl/gsl_roots.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,6 +10,7 @@
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
+#include "trebuchet/solve_1d.hpp"
 
 namespace trebuchet {
 namespace {
@@ -155,43 +154,6 @@ struct Sample {
 
 [[noreturn]] void fail(const std::string& reason) { throw Error(ErrorKind::numerical, reason); }
 
-double brent_root(const std::function<double(double)>& f, double lo, double hi) {
-  gsl_function g{[](double x, void* p) { return (*static_cast<std::function<double(double)>*>(p))(x); },
-                 const_cast<std::function<double(double)>*>(&f)};
-  gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-  gsl_root_fsolver_set(solver, &g, lo, hi);
-  double root = hi;
-  for (int k = 0; k < 100; ++k) {
-    gsl_root_fsolver_iterate(solver);
-    root = gsl_root_fsolver_root(solver);
-    if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver), gsl_root_fsolver_x_upper(solver), 1e-15, 0) != GSL_CONTINUE)
-      break;
-  }
-  gsl_root_fsolver_free(solver);
-  return root;
-}
-
-// Maximum of f on [lo, hi] given an interior guess with f(guess) >= f(lo), f(hi).
-double brent_maximum(const std::function<double(double)>& f, double lo, double guess, double hi) {
-  std::function<double(double)> negated = [&](double x) { return -f(x); };
-  gsl_function g{[](double x, void* p) { return (*static_cast<std::function<double(double)>*>(p))(x); }, &negated};
-  gsl_min_fminimizer* minimizer = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
-  if (gsl_min_fminimizer_set(minimizer, &g, guess, lo, hi) != GSL_SUCCESS) {
-    gsl_min_fminimizer_free(minimizer);
-    return guess;  // the maximum sits on a sample within round-off
-  }
-  double x = guess;
-  for (int k = 0; k < 200; ++k) {
-    gsl_min_fminimizer_iterate(minimizer);
-    x = gsl_min_fminimizer_x_minimum(minimizer);
-    if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(minimizer), gsl_min_fminimizer_x_upper(minimizer), 1e-13, 0) !=
-        GSL_CONTINUE)
-      break;
-  }
-  gsl_min_fminimizer_free(minimizer);
-  return x;
-}
-
 }  // namespace
 
 ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const IntegratorSettings& settings) {
@@ -225,10 +187,9 @@ ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const In
       fail("integrator failure in phase I; tighten --rtol or choose another --stepper");
     }
     if (++result.steps > settings.max_steps) fail("step budget of " + std::to_string(settings.max_steps) + " exceeded in phase I");
-    result.sample_times.push_back(t);
     snap = snapshot(e, Phase::trough, trough.state(y));
     if (snap.normal_force <= 0) {  // lift-off inside this step: locate it on the continuous solution
-      result.t_liftoff = brent_root([&](double x) { return normal_at(t_prev, y_prev, x); }, t_prev, t);
+      result.t_liftoff = find_root([&](double x) { return normal_at(t_prev, y_prev, x); }, t_prev, t, 1e-15, 0);
       y = trough.at(t_prev, y_prev, result.t_liftoff);
       t = result.t_liftoff;
       snap = snapshot(e, Phase::trough, trough.state(y));
@@ -259,7 +220,6 @@ ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const In
   while (true) {
     if (!lifted.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase II; tighten --rtol or choose another --stepper");
     if (++result.steps > settings.max_steps) fail("step budget of " + std::to_string(settings.max_steps) + " exceeded in phase II");
-    result.sample_times.push_back(t);
     const State s = lifted.state(y);
     snap = snapshot(e, Phase::lifted, s);
     track_energy(snap);
@@ -281,15 +241,14 @@ ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const In
   // The maximum of Q on the continuous solution between the neighbouring samples.
   const std::size_t lo = best > 0 ? best - 1 : 0;
   const std::size_t hi = std::min(best + 1, samples.size() - 1);
-  auto quality_at = [&](double time) {
+  auto point_in_bracket = [&](double time) {  // from the last sample at or before `time`
     std::size_t base = lo;
     while (base + 1 <= hi && samples[base + 1].t <= time) ++base;
-    return point_at(base, time).quality;
+    return point_at(base, time);
   };
-  const double t_release = brent_maximum(quality_at, samples[lo].t, samples[best].t, samples[hi].t);
-  std::size_t base = lo;
-  while (base + 1 <= hi && samples[base + 1].t <= t_release) ++base;
-  result.release = point_at(base, t_release);
+  const double t_release = find_maximum([&](double time) { return point_in_bracket(time).quality; }, samples[lo].t,
+                                        samples[best].t, samples[hi].t, 1e-13);
+  result.release = point_in_bracket(t_release);
   return result;
 }
 

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <string>
-#include <vector>
 
 #include "trebuchet/dynamics.hpp"
 
@@ -48,7 +47,6 @@ struct ShotResult {
   ReleasePoint release;
   double energy_drift = 0;      ///< max |E(t) - E(0)| / Delta U over phases I and II
   long steps = 0;               ///< accepted steps, both phases
-  std::vector<double> sample_times;  ///< accepted step ends, for series output
 };
 
 /// Integrates the shot and finds the release. Throws Error(numerical) with a named reason:

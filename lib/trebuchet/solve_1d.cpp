@@ -1,0 +1,53 @@
+#include "trebuchet/solve_1d.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
+#include <gsl/gsl_roots.h>
+
+namespace trebuchet {
+namespace {
+
+constexpr int max_iterations = 200;
+
+gsl_function wrap(const std::function<double(double)>& f) {
+  return {[](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); },
+          const_cast<std::function<double(double)>*>(&f)};
+}
+
+}  // namespace
+
+double find_root(const std::function<double(double)>& f, double lo, double hi, double epsabs, double epsrel) {
+  gsl_function g = wrap(f);
+  gsl_root_fsolver* solver = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+  gsl_root_fsolver_set(solver, &g, lo, hi);
+  double root = hi;
+  for (int k = 0; k < max_iterations; ++k) {
+    gsl_root_fsolver_iterate(solver);
+    root = gsl_root_fsolver_root(solver);
+    if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver), gsl_root_fsolver_x_upper(solver), epsabs, epsrel) !=
+        GSL_CONTINUE)
+      break;
+  }
+  gsl_root_fsolver_free(solver);
+  return root;
+}
+
+double find_maximum(const std::function<double(double)>& f, double lo, double guess, double hi, double epsabs) {
+  const std::function<double(double)> negated = [&](double x) { return -f(x); };
+  gsl_function g = wrap(negated);
+  gsl_min_fminimizer* minimizer = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+  double x = guess;
+  if (gsl_min_fminimizer_set(minimizer, &g, guess, lo, hi) == GSL_SUCCESS) {
+    for (int k = 0; k < max_iterations; ++k) {
+      gsl_min_fminimizer_iterate(minimizer);
+      x = gsl_min_fminimizer_x_minimum(minimizer);
+      if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(minimizer), gsl_min_fminimizer_x_upper(minimizer), epsabs, 0) !=
+          GSL_CONTINUE)
+        break;
+    }
+  }
+  gsl_min_fminimizer_free(minimizer);
+  return x;
+}
+
+}  // namespace trebuchet
