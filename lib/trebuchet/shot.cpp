@@ -4,6 +4,7 @@
 #include <gsl/gsl_odeiv2.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -71,8 +72,6 @@ class PhaseIntegrator {
         stepping_(make(settings), gsl_odeiv2_driver_free),
         evaluating_(make(settings), gsl_odeiv2_driver_free) {}
 
-  std::size_t dimension() const { return system_.dimension; }
-
   // One accepted step toward t_end; false when the equations failed.
   bool step(double& t, double y[], double t_end, double& h) {
     gsl_odeiv2_driver* d = stepping_.get();
@@ -105,20 +104,102 @@ class PhaseIntegrator {
   DriverPtr stepping_, evaluating_;
 };
 
-// Running extremes of the forces that enter eq:F.
+// The forces that enter eq:F, at one moment, in Mg. Each is maximised over [0, t]; the
+// horizontal pivot reaction is tracked both ways (its largest and its smallest value).
+constexpr int force_count = 4;
+using ForceValues = std::array<double, force_count>;  // F_S_perp, |F_R|, F_Rh, -F_Rh
+
+ForceValues force_values(const Snapshot& s) {
+  return {s.sling_perpendicular, std::hypot(s.pivot_reaction.x, s.pivot_reaction.y), s.pivot_reaction.x, -s.pivot_reaction.x};
+}
+
 struct ForceExtremes {
-  double sling_perpendicular = 0, pivot = 0, horizontal_max = 0, horizontal_min = 0;
-  void add(const Snapshot& s) {
-    sling_perpendicular = std::max(sling_perpendicular, s.sling_perpendicular);
-    pivot = std::max(pivot, std::hypot(s.pivot_reaction.x, s.pivot_reaction.y));
-    horizontal_max = std::max(horizontal_max, s.pivot_reaction.x);
-    horizontal_min = std::min(horizontal_min, s.pivot_reaction.x);
+  ForceValues max{0, 0, 0, 0};
+  void add(const ForceValues& v) {
+    for (int k = 0; k < force_count; ++k) max[k] = std::max(max[k], v[k]);
   }
+};
+
+// The samples of one phase at the integrator's step ends, with the running force extremes
+// refined on the continuous solution: where a force has a local maximum at a step end, the
+// true peak lies within the two neighbouring steps and is found there by Brent's method.
+class PhaseRecord {
+ public:
+  struct Sample {
+    double t;
+    std::vector<double> y;
+    ForceValues forces;
+    ForceExtremes extremes;  // over [0, t], refined peaks included
+  };
+  struct Peak {
+    double t;
+    ForceValues forces;
+  };
+
+  PhaseRecord(const ScaledEngine& engine, Phase phase, PhaseIntegrator& integrator, ForceExtremes before)
+      : engine_(engine), phase_(phase), integrator_(integrator), before_(before) {}
+
+  void add(double t, const std::vector<double>& y, const Snapshot& snap) {
+    const ForceValues forces = force_values(snap);
+    ForceExtremes extremes = samples_.empty() ? before_ : samples_.back().extremes;
+    extremes.add(forces);
+    samples_.push_back({t, y, forces, extremes});
+    if (samples_.size() >= 3) refine_peaks();
+  }
+
+  const std::vector<Sample>& samples() const { return samples_; }
+
+  // The state at `time`, from the last sample at or before it.
+  std::vector<double> y_at(double time) const {
+    return integrator_.at(samples_[base_of(time)].t, samples_[base_of(time)].y, time);
+  }
+
+  // The running extremes over [0, time], without the value at `time` itself.
+  ForceExtremes extremes_before(double time) const {
+    const std::size_t base = base_of(time);
+    ForceExtremes out = samples_[base].extremes;
+    for (const Peak& p : peaks_)
+      if (p.t > samples_[base].t && p.t <= time) out.add(p.forces);
+    return out;
+  }
+
+ private:
+  std::size_t base_of(double time) const {
+    std::size_t base = 0;
+    while (base + 1 < samples_.size() && samples_[base + 1].t <= time) ++base;
+    return base;
+  }
+
+  ForceValues forces_at(double time) const {
+    return force_values(snapshot(engine_, phase_, integrator_.state(y_at(time))));
+  }
+
+  // A force peaking at the middle one of the last three samples peaks between the outer two.
+  // Time tolerance 1e-9 (scaled): the peak value is quadratic in it, so exact to round-off.
+  void refine_peaks() {
+    const std::size_t mid = samples_.size() - 2;
+    const Sample &a = samples_[mid - 1], &b = samples_[mid], &c = samples_[mid + 1];
+    for (int k = 0; k < force_count; ++k) {
+      if (!(b.forces[k] > a.forces[k] && b.forces[k] >= c.forces[k])) continue;
+      const double t_peak = find_maximum([&](double time) { return forces_at(time)[k]; }, a.t, b.t, c.t, 1e-9);
+      const Peak peak{t_peak, forces_at(t_peak)};
+      peaks_.push_back(peak);
+      for (std::size_t s = mid - 1; s < samples_.size(); ++s)
+        if (samples_[s].t >= t_peak) samples_[s].extremes.add(peak.forces);
+    }
+  }
+
+  const ScaledEngine& engine_;
+  Phase phase_;
+  PhaseIntegrator& integrator_;
+  ForceExtremes before_;
+  std::vector<Sample> samples_;
+  std::vector<Peak> peaks_;
 };
 
 ReleasePoint release_point(const ScaledEngine& e, const Quality& quality, double t, const State& s,
                            const Snapshot& snap, ForceExtremes extremes) {
-  extremes.add(snap);
+  extremes.add(force_values(snap));
   ReleasePoint r;
   r.t = t;
   r.state = s;
@@ -132,13 +213,13 @@ ReleasePoint release_point(const ScaledEngine& e, const Quality& quality, double
   }
   r.energy_at_target = e.mu * (0.5 * (vx * vx + vy * vy) + r.height);  // eq:T
   r.efficiency = r.energy_at_target / e.energy_drop();                  // eq:Aux
-  r.sling_perpendicular_max = extremes.sling_perpendicular;
-  r.pivot_reaction_max = extremes.pivot;
-  r.pivot_horizontal_max = extremes.horizontal_max;
-  r.pivot_horizontal_min = extremes.horizontal_min;
-  const double sling = extremes.sling_perpendicular / e.mu;  // F_S_perp / (m g)
-  const double spread = extremes.horizontal_max - extremes.horizontal_min;
-  r.force_factor = std::pow(sling * sling * extremes.pivot * spread, 0.25);  // eq:F
+  r.sling_perpendicular_max = extremes.max[0];
+  r.pivot_reaction_max = extremes.max[1];
+  r.pivot_horizontal_max = extremes.max[2];
+  r.pivot_horizontal_min = -extremes.max[3];
+  const double sling = r.sling_perpendicular_max / e.mu;  // F_S_perp / (m g)
+  const double spread = r.pivot_horizontal_max - r.pivot_horizontal_min;
+  r.force_factor = std::pow(sling * sling * r.pivot_reaction_max * spread, 0.25);  // eq:F
   if (r.range > 0)
     r.quality = quality.efficiency_only
                     ? r.efficiency
@@ -146,17 +227,22 @@ ReleasePoint release_point(const ScaledEngine& e, const Quality& quality, double
   return r;
 }
 
-struct Sample {
-  double t;
-  std::vector<double> y;
-  ForceExtremes extremes;  // over [0, t]
-};
-
 [[noreturn]] void fail(const std::string& reason) { throw Error(ErrorKind::numerical, reason); }
+
+void record_trace(std::vector<TracePoint>* trace, const ScaledEngine& e, Phase phase, PhaseIntegrator& integrator,
+                  const std::vector<PhaseRecord::Sample>& samples, double t_end) {
+  if (!trace) return;
+  for (const auto& sample : samples) {
+    if (sample.t > t_end) break;
+    const State s = integrator.state(sample.y);
+    trace->push_back({phase, sample.t, s, snapshot(e, phase, s)});
+  }
+}
 
 }  // namespace
 
-ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const IntegratorSettings& settings) {
+ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const IntegratorSettings& settings,
+                         std::vector<TracePoint>* trace) {
   gsl_set_error_handler_off();
   if (!(1 - e.mu_b * (e.l - 1) / 2 > 0))
     fail("the beam cannot turn: mu_b (l - 1)/2 = " + format_significant(e.mu_b * (e.l - 1) / 2, 4) +
@@ -165,19 +251,20 @@ ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const In
   const double energy_scale = e.energy_drop();
   double energy0 = 0;
   auto track_energy = [&](const Snapshot& s) { result.energy_drift = std::max(result.energy_drift, std::abs(s.energy - energy0) / energy_scale); };
+  auto count_step = [&](const char* phase) {
+    if (++result.steps > settings.max_steps)
+      fail("step budget of " + std::to_string(settings.max_steps) + " steps exceeded in " + phase +
+           "; loosen --rtol or choose a higher-order --stepper");
+  };
 
   // Phase I: from rest (psi_i = phi_i = 0, section 2) until the trough's normal force vanishes.
   PhaseIntegrator trough(e, Phase::trough, settings);
+  PhaseRecord phase1(e, Phase::trough, trough, ForceExtremes{});
   std::vector<double> y = {e.theta_i, 0, 0, 0};
   double t = 0, h = 1e-3;
-  ForceExtremes extremes;
   Snapshot snap = snapshot(e, Phase::trough, trough.state(y));
   energy0 = snap.energy;
-  extremes.add(snap);
-  auto normal_at = [&](double t0, const std::vector<double>& y0, double t1) {
-    const auto y1 = trough.at(t0, y0, t1);
-    return snapshot(e, Phase::trough, trough.state(y1)).normal_force;
-  };
+  phase1.add(t, y, snap);
   while (true) {
     const double t_prev = t;
     const std::vector<double> y_prev = y;
@@ -186,52 +273,53 @@ ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const In
         fail("the sling stands vertical in the trough (cos phi -> 0) before lift-off; lengthen the sling L4");
       fail("integrator failure in phase I; tighten --rtol or choose another --stepper");
     }
-    if (++result.steps > settings.max_steps) fail("step budget of " + std::to_string(settings.max_steps) + " exceeded in phase I");
+    count_step("phase I");
     snap = snapshot(e, Phase::trough, trough.state(y));
     if (snap.normal_force <= 0) {  // lift-off inside this step: locate it on the continuous solution
-      result.t_liftoff = find_root([&](double x) { return normal_at(t_prev, y_prev, x); }, t_prev, t, 1e-15, 0);
+      auto normal_at = [&](double time) { return snapshot(e, Phase::trough, trough.state(trough.at(t_prev, y_prev, time))).normal_force; };
+      result.t_liftoff = find_root(normal_at, t_prev, t, 1e-15, 0);
       y = trough.at(t_prev, y_prev, result.t_liftoff);
       t = result.t_liftoff;
       snap = snapshot(e, Phase::trough, trough.state(y));
-      extremes.add(snap);
+      phase1.add(t, y, snap);
       track_energy(snap);
       break;
     }
-    extremes.add(snap);
+    phase1.add(t, y, snap);
     track_energy(snap);
     if (y[0] >= M_PI || t >= settings.max_time)
       fail("the projectile never lifts off: the trough still carries it when the beam is upright; "
            "change the sling length L4 or the masses");
   }
+  record_trace(trace, e, Phase::trough, trough, phase1.samples(), t);
 
   // Phase II from the located lift-off state.
   const State lift = trough.state(y);
   PhaseIntegrator lifted(e, Phase::lifted, settings);
+  PhaseRecord phase2(e, Phase::lifted, lifted, phase1.samples().back().extremes);
   y = {lift.theta, lift.psi, lift.phi, lift.theta_dot, lift.psi_dot, lift.phi_dot};
-  std::vector<Sample> samples = {{t, y, extremes}};
-  auto point_at = [&](std::size_t base, double time) {
-    const auto yt = lifted.at(samples[base].t, samples[base].y, time);
-    const State s = lifted.state(yt);
-    return release_point(e, quality, time, s, snapshot(e, Phase::lifted, s), samples[base].extremes);
+  phase2.add(t, y, snapshot(e, Phase::lifted, lift));
+  auto point_at = [&](double time) {
+    const State s = lifted.state(phase2.y_at(time));
+    return release_point(e, quality, time, s, snapshot(e, Phase::lifted, s), phase2.extremes_before(time));
   };
   std::size_t best = 0;
-  double best_quality = point_at(0, t).quality;
+  double best_quality = point_at(t).quality;
   h = 1e-3;
   while (true) {
     if (!lifted.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase II; tighten --rtol or choose another --stepper");
-    if (++result.steps > settings.max_steps) fail("step budget of " + std::to_string(settings.max_steps) + " exceeded in phase II");
+    count_step("phase II");
     const State s = lifted.state(y);
     snap = snapshot(e, Phase::lifted, s);
     track_energy(snap);
-    const ReleasePoint here = release_point(e, quality, t, s, snap, samples.back().extremes);
-    extremes.add(snap);
-    samples.push_back({t, y, extremes});
-    if (here.quality > best_quality) {
-      best_quality = here.quality;
-      best = samples.size() - 1;
+    const double quality_here = release_point(e, quality, t, s, snap, phase2.samples().back().extremes).quality;
+    phase2.add(t, y, snap);
+    if (quality_here > best_quality) {
+      best_quality = quality_here;
+      best = phase2.samples().size() - 1;
     }
     // Past the maximum: the quality has fallen to half of it, or the beam has turned over.
-    if ((best_quality > 0 && here.quality < 0.5 * best_quality) || s.theta > e.theta_i + 2 * M_PI || t >= settings.max_time) break;
+    if ((best_quality > 0 && quality_here < 0.5 * best_quality) || s.theta > e.theta_i + 2 * M_PI || t >= settings.max_time) break;
   }
   if (!(best_quality > 0)) fail("no release sends the projectile forward: over phase II it never flies toward the target");
   if (result.energy_drift > settings.max_energy_drift)
@@ -239,16 +327,16 @@ ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const In
          format_significant(settings.max_energy_drift, 3) + "; tighten --rtol or choose another --stepper");
 
   // The maximum of Q on the continuous solution between the neighbouring samples.
+  const auto& samples = phase2.samples();
   const std::size_t lo = best > 0 ? best - 1 : 0;
   const std::size_t hi = std::min(best + 1, samples.size() - 1);
-  auto point_in_bracket = [&](double time) {  // from the last sample at or before `time`
-    std::size_t base = lo;
-    while (base + 1 <= hi && samples[base + 1].t <= time) ++base;
-    return point_at(base, time);
-  };
-  const double t_release = find_maximum([&](double time) { return point_in_bracket(time).quality; }, samples[lo].t,
+  const double t_release = find_maximum([&](double time) { return point_at(time).quality; }, samples[lo].t,
                                         samples[best].t, samples[hi].t, 1e-13);
-  result.release = point_in_bracket(t_release);
+  result.release = point_at(t_release);
+  if (trace) {
+    record_trace(trace, e, Phase::lifted, lifted, samples, t_release);
+    trace->push_back({Phase::lifted, t_release, result.release.state, snapshot(e, Phase::lifted, result.release.state)});
+  }
   return result;
 }
 

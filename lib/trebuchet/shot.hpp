@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "trebuchet/dynamics.hpp"
 
@@ -34,6 +35,7 @@ struct ReleasePoint {
   double range = 0;             ///< rho: pivot to impact at level 0, in L2; <= 0: not forward
   double energy_at_target = 0;  ///< tau_e = T/(M g L2), eq:Aux, level 0
   double efficiency = 0;        ///< eps = T/Delta U, eq:Aux
+  // Running extremes over [0, t], peaks between step ends included (found on the continuous solution).
   double sling_perpendicular_max = 0;  ///< running max of F_S_perp over [0, t], in Mg
   double pivot_reaction_max = 0;       ///< running max of |F_R|, in Mg
   double pivot_horizontal_max = 0;     ///< running max of F_Rh, in Mg
@@ -49,9 +51,19 @@ struct ShotResult {
   long steps = 0;               ///< accepted steps, both phases
 };
 
+/// One moment of the motion for a time series (--series), scaled.
+struct TracePoint {
+  Phase phase;
+  double t;
+  State state;
+  Snapshot snapshot;
+};
+
 /// Integrates the shot and finds the release. Throws Error(numerical) with a named reason:
 /// the beam cannot turn, no lift-off, sling vertical in the trough, no forward release,
 /// integrator failure or step budget, or energy drift above the limit.
-ShotResult simulate_shot(const ScaledEngine& engine, const Quality& quality, const IntegratorSettings& settings);
+/// With `trace`, the integrator's step ends up to the release, and the release itself, are appended to it.
+ShotResult simulate_shot(const ScaledEngine& engine, const Quality& quality, const IntegratorSettings& settings,
+                         std::vector<TracePoint>* trace = nullptr);
 
 }  // namespace trebuchet
