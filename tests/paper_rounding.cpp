@@ -103,3 +103,22 @@ void check_printed(const std::string& label, double ours, const std::string& pap
 }
 
 }  // namespace trebuchet::testing
+
+namespace trebuchet::testing {
+
+double input_rounding_effect(const std::vector<std::string>& printed_inputs,
+                             const std::function<Engine(const std::vector<double>&)>& build,
+                             const std::function<double(const Engine&)>& result) {
+  std::vector<double> values;
+  for (const std::string& text : printed_inputs) values.push_back(printed(text).value);
+  const double base = result(build(values));
+  double effect = 0;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    std::vector<double> moved = values;
+    moved[k] += printed(printed_inputs[k]).half_unit;
+    effect += std::abs(result(build(moved)) - base);
+  }
+  return effect;
+}
+
+}  // namespace trebuchet::testing

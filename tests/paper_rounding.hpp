@@ -5,6 +5,9 @@
 #include <functional>
 #include <string>
 
+#include <vector>
+
+#include "trebuchet/engine.hpp"
 #include "trebuchet/scaling_table.hpp"
 
 namespace trebuchet::testing {
@@ -33,5 +36,16 @@ namespace trebuchet::testing {
 /// `scale` converts ours into the paper's printed unit (1e-3 for kJ from J).
 void check_printed(const std::string& label, double ours, const std::string& paper_text, double extra,
                    double scale = 1.0);
+
+}  // namespace trebuchet::testing
+
+namespace trebuchet::testing {
+
+/// First-order effect on `result` of the rounding of a printed engine: each input, given as
+/// printed ("6.13"), moves by half a unit of its last digit in turn; the changes are summed.
+/// `build` makes the engine from the input values in the order given.
+double input_rounding_effect(const std::vector<std::string>& printed_inputs,
+                             const std::function<Engine(const std::vector<double>&)>& build,
+                             const std::function<double(const Engine&)>& result);
 
 }  // namespace trebuchet::testing

@@ -220,10 +220,14 @@ ReleasePoint release_point(const ScaledEngine& e, const Quality& quality, double
   const double sling = r.sling_perpendicular_max / e.mu;  // F_S_perp / (m g)
   const double spread = r.pivot_horizontal_max - r.pivot_horizontal_min;
   r.force_factor = std::pow(sling * sling * r.pivot_reaction_max * spread, 0.25);  // eq:F
-  if (r.range > 0)
-    r.quality = quality.efficiency_only
-                    ? r.efficiency
-                    : r.range / e.l * e.mu * std::pow(r.efficiency, quality.n) / r.force_factor;  // eq:Q, eq:Q_n
+  if (r.range > 0) {
+    r.quality = r.range / e.l * e.mu * std::pow(r.efficiency, quality.n) / r.force_factor;  // eq:Q, eq:Q_n
+    switch (quality.release) {
+      case Quality::Release::quality: r.objective = r.quality; break;
+      case Quality::Release::efficiency: r.objective = r.efficiency; break;
+      case Quality::Release::range: r.objective = r.range; break;
+    }
+  }
   return r;
 }
 
@@ -304,7 +308,7 @@ ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const In
     return release_point(e, quality, time, s, snapshot(e, Phase::lifted, s), phase2.extremes_before(time));
   };
   std::size_t best = 0;
-  double best_quality = point_at(t).quality;
+  double best_quality = point_at(t).objective;
   h = 1e-3;
   while (true) {
     if (!lifted.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase II; tighten --rtol or choose another --stepper");
@@ -312,13 +316,13 @@ ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const In
     const State s = lifted.state(y);
     snap = snapshot(e, Phase::lifted, s);
     track_energy(snap);
-    const double quality_here = release_point(e, quality, t, s, snap, phase2.samples().back().extremes).quality;
+    const double quality_here = release_point(e, quality, t, s, snap, phase2.samples().back().extremes).objective;
     phase2.add(t, y, snap);
     if (quality_here > best_quality) {
       best_quality = quality_here;
       best = phase2.samples().size() - 1;
     }
-    // Past the maximum: the quality has fallen to half of it, or the beam has turned over.
+    // Past the maximum: the objective has fallen to half of it, or the beam has turned over.
     if ((best_quality > 0 && quality_here < 0.5 * best_quality) || s.theta > e.theta_i + 2 * M_PI || t >= settings.max_time) break;
   }
   if (!(best_quality > 0)) fail("no release sends the projectile forward: over phase II it never flies toward the target");
@@ -326,11 +330,11 @@ ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const In
     fail("energy drift " + format_significant(result.energy_drift, 3) + " of Delta U exceeds " +
          format_significant(settings.max_energy_drift, 3) + "; tighten --rtol or choose another --stepper");
 
-  // The maximum of Q on the continuous solution between the neighbouring samples.
+  // The maximum of the objective on the continuous solution between the neighbouring samples.
   const auto& samples = phase2.samples();
   const std::size_t lo = best > 0 ? best - 1 : 0;
   const std::size_t hi = std::min(best + 1, samples.size() - 1);
-  const double t_release = find_maximum([&](double time) { return point_at(time).quality; }, samples[lo].t,
+  const double t_release = find_maximum([&](double time) { return point_at(time).objective; }, samples[lo].t,
                                         samples[best].t, samples[hi].t, 1e-13);
   result.release = point_at(t_release);
   if (trace) {

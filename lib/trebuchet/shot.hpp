@@ -20,10 +20,12 @@ struct IntegratorSettings {
   double max_time = 200;           ///< scaled; phase II is abandoned after this
 };
 
-/// Which quality the release maximises: eq:Q (n = 1), eq:Q_n, or Q_eps = eps (appendix B).
+/// What the release maximises: the quality eq:Q (n = 1) or eq:Q_n, Q_eps = eps (appendix B),
+/// or the range (Denny's criterion; the paper's tab:Denny "Present" row).
 struct Quality {
-  double n = 1;          ///< exponent of eps in eq:Q_n
-  bool efficiency_only = false;  ///< Q_eps
+  enum class Release { quality, efficiency, range };
+  Release release = Release::quality;
+  double n = 1;  ///< exponent of eps in eq:Q_n; Q is reported with it whatever the release
 };
 
 /// The projectile's state and the engine's figures at one moment of phase II, scaled.
@@ -41,7 +43,8 @@ struct ReleasePoint {
   double pivot_horizontal_max = 0;     ///< running max of F_Rh, in Mg
   double pivot_horizontal_min = 0;     ///< running min of F_Rh, in Mg
   double force_factor = 0;      ///< F of eq:F
-  double quality = 0;           ///< Q of eq:Q or eq:Q_n (or eps), at level 0
+  double quality = 0;           ///< Q of eq:Q or eq:Q_n, at level 0
+  double objective = 0;         ///< what the release maximises: Q, eps or the range
 };
 
 struct ShotResult {

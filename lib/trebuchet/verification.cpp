@@ -4,9 +4,9 @@
 
 namespace trebuchet {
 
-Verification verify_engine(const Engine& engine, const ShotSettings& settings) {
+Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace) {
   const ScaledEngine scaled = ScaledEngine::from(engine);
-  const ShotResult shot = simulate_shot(scaled, settings.quality, settings.integrator);
+  const ShotResult shot = simulate_shot(scaled, settings.quality, settings.integrator, trace);
   const ReleasePoint& r = shot.release;
   const double L2 = engine.L2, g = settings.g;
   const double speed_unit = std::sqrt(g * L2), time_unit = std::sqrt(L2 / g);  // section 3

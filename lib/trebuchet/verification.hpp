@@ -19,7 +19,7 @@ struct Verification {
   double R = 0;            ///< pivot to impact at the target level, vacuum [m]
   double T = 0;            ///< kinetic energy at the target level [J] (eq:T at level 0 plus m g |level|)
   double eps = 0;          ///< efficiency T/Delta U at level 0, eq:Aux
-  double Q = 0;            ///< quality at the release, eq:Q / eq:Q_n / Q_eps
+  double Q = 0;            ///< quality at the release, eq:Q or eq:Q_n (with the n of the settings)
   double force_factor = 0; ///< F of eq:F
   double v = 0;            ///< release speed [m/s]
   double h = 0;            ///< release height above the base [m]
@@ -33,7 +33,8 @@ struct Verification {
   double energy_drift = 0; ///< max |E(t) - E(0)| / Delta U over phases I and II
 };
 
-/// Simulates one shot of `engine`. Throws Error(numerical) as simulate_shot does.
-Verification verify_engine(const Engine& engine, const ShotSettings& settings);
+/// Simulates one shot of `engine`. Throws Error(numerical) as simulate_shot does. With
+/// `trace`, the motion up to the release is appended to it (scaled, see simulate_shot).
+Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace = nullptr);
 
 }  // namespace trebuchet

@@ -1,0 +1,234 @@
+// The verifier against tab:Denny, tab:SketchBook-I, tab:SketchBook-II and tab:Large_Eff.
+// Each printed engine is simulated as printed; tolerances are half a unit of the printed
+// result plus the first-order effect of the rounding of the printed inputs.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+
+#include "paper_rounding.hpp"
+#include "trebuchet/capacity_fit.hpp"
+#include "trebuchet/verification.hpp"
+
+using namespace trebuchet;
+using namespace trebuchet::testing;
+
+namespace {
+
+double radians(double degrees) { return degrees * M_PI / 180; }
+
+// tab:Denny rows: theta_i, F, then Lb, H, L4 [m], M [t], m, mb [kg]. L1 = H/cos theta_i.
+Engine denny_engine(double theta_i_deg, const std::vector<double>& x) {
+  Engine e;
+  e.theta_i_deg = theta_i_deg;
+  e.L1 = x[2] / std::cos(radians(theta_i_deg));
+  e.L2 = x[1] - e.L1;
+  e.L3 = counterweight_arm(e.L1, e.L2, theta_i_deg, x[0]);
+  e.L4 = x[3], e.M = x[4] * 1000, e.m = x[5], e.mb = x[6];
+  return e;
+}
+
+// tab:SketchBook-I and -II rows: F, theta_i, then L1, L4 [m], M [t], m, mb [kg], l.
+Engine sketchbook_engine(double F, double theta_i_deg, const std::vector<double>& x) {
+  Engine e;
+  e.theta_i_deg = theta_i_deg;
+  e.L1 = x[0], e.L2 = x[0] / x[5], e.L4 = x[1], e.M = x[2] * 1000, e.m = x[3], e.mb = x[4];
+  e.L3 = counterweight_arm(e.L1, e.L2, theta_i_deg, F);
+  return e;
+}
+
+struct Expected {
+  const char* key;
+  const char* text;
+  double known = 1;  // > 1: a documented difference, allowed this multiple of the rounding tolerance
+};
+
+double pick(const Verification& v, const std::string& key) {
+  if (key == "R") return v.R;
+  if (key == "T") return v.T / 1e3;
+  if (key == "eps") return 100 * v.eps;
+  if (key == "Q") return 100 * v.Q;
+  if (key == "v") return v.v;
+  if (key == "h") return v.h;
+  if (key == "x") return v.x;
+  return v.A_deg;
+}
+
+// Simulates the printed engine and checks each expected column to the rounding of inputs and
+// outputs. Inputs marked exact in the paper (bold) are passed as e.g. "12" with extra digits.
+void check_row(const std::string& row, const std::vector<std::string>& inputs,
+               const std::function<Engine(const std::vector<double>&)>& build, const ShotSettings& settings,
+               const std::vector<Expected>& expected) {
+  std::vector<double> values;
+  for (const auto& text : inputs) values.push_back(printed(text).value);
+  const Verification v = verify_engine(build(values), settings);
+  std::printf("%s (simulated from the printed engine)\n", row.c_str());
+  for (const Expected& e : expected) {
+    const std::string key = e.key;
+    const double rounding = input_rounding_effect(inputs, build, [&](const Engine& engine) { return pick(verify_engine(engine, settings), key); });
+    const double tolerance = e.known * (printed(e.text).half_unit + rounding);
+    check_printed(row + " " + key + (e.known > 1 ? " (known)" : ""), pick(v, key), e.text, tolerance - printed(e.text).half_unit);
+  }
+}
+
+}  // namespace
+
+// tab:Denny "Present": Denny's standard engine, Lb = 12 m, M = 10 t, m = 100 kg, mb = 2000 kg
+// exact (bold); H = 6.15 m, L4 = 7.9 m and F = 0.93 as printed. Denny's figure is a maximum
+// range, and the paper's row is the release at maximum range: released there, the engine
+// reproduces R, T, eps, v and the release point of section 6.3 (20.2 m high, 6.0 m behind the
+// pivot). Released at the maximum of Q instead, it gives Q = 1.7 % as printed, but 1.4 % more T.
+TEST_CASE("tab:Denny Present row: Denny's standard engine released at maximum range", "[verify][paper]") {
+  const auto build = [](const std::vector<double>& x) { return denny_engine(45, x); };
+  const std::vector<std::string> inputs = {"0.93", "12.0000", "6.15", "7.9", "10.0000", "100.000", "2000.00"};
+  ShotSettings at_max_range;
+  at_max_range.quality.release = Quality::Release::range;
+  check_row("tab:Denny Present, max range", inputs, build, at_max_range,
+            {{"R", "425"}, {"T", "224"}, {"eps", "48.4"}, {"Q", "1.7"}, {"v", "64"}, {"h", "20.2"}, {"x", "6.0"}});
+  check_row("tab:Denny Present, max Q", inputs, build, ShotSettings{}, {{"R", "425"}, {"Q", "1.7"}, {"v", "64"}});
+}
+
+namespace {
+
+// tab:Large_Eff: F = 1, theta_i = 30 deg, capacity R = 450 m, T = 232 kJ, released at the
+// maximum of Q_eps = eps (appendix B). The printed shape (l, l4 = L4/L1, mu_b = mb/M) is
+// fitted to the capacity (section 5, steps 2-4), then the angles at release are read.
+struct LargeEffRow {
+  const char* l;
+  const char* L1;
+  const char* L4;
+  const char* M_t;
+  const char* mb;
+};
+
+EngineShape large_eff_shape(const std::vector<double>& x) {
+  return {x[0], x[2] / x[1], x[4] / (x[3] * 1000), 30, 1};
+}
+
+struct ReleaseAngles {
+  Verification v;
+  double theta_minus_180, psi, phi_minus_180;  // [deg], as tab:Large_Eff prints them
+};
+
+ReleaseAngles fitted_release(const std::vector<double>& x) {
+  ShotSettings settings;
+  settings.quality.release = Quality::Release::efficiency;
+  const CapacityFit fit = fit_capacity(large_eff_shape(x), 450, 232e3, Material{}, settings);
+  std::vector<TracePoint> trace;
+  const Verification v = verify_engine(fit.engine, settings, &trace);
+  const State& s = trace.back().state;  // the release
+  auto deg = [](double rad) { return rad * 180 / M_PI; };
+  return {v, deg(s.theta) - 180, deg(s.psi), std::remainder(deg(s.phi), 360) + 180};
+}
+
+}  // namespace
+
+TEST_CASE("tab:Large_Eff with Q_eps: efficiencies near 99.5 % and the angles at release", "[verify][paper][stiff]") {
+  const std::vector<std::pair<std::vector<std::string>, std::vector<Expected>>> rows = {
+      {{"17", "0.800", "0.673", "270", "14.7"},
+       {{"eps", "99.53"}, {"theta", "-1.95"}, {"psi", "-1.98"}, {"phi", "45.1"}, {"A", "44.9"}}},
+      {{"59", "14.9", "18.2", "71.5", "729"},
+       {{"eps", "99.50"}, {"theta", "-1.22"}, {"psi", "-0.91"}, {"phi", "47.6"}, {"A", "42.6"}}},
+  };
+  for (const auto& [inputs, expected] : rows) {
+    std::vector<double> x;
+    for (const auto& text : inputs) x.push_back(printed(text).value);
+    auto value = [](const ReleaseAngles& r, const std::string& key) {
+      if (key == "eps") return 100 * r.v.eps;
+      if (key == "theta") return r.theta_minus_180;
+      if (key == "psi") return r.psi;
+      if (key == "phi") return r.phi_minus_180;
+      return r.v.A_deg;
+    };
+    const ReleaseAngles ours = fitted_release(x);
+    std::printf("tab:Large_Eff l = %s (shape fitted to 450 m, 232 kJ): F_R = %.2f Mg, F_S_perp = %.0f mg\n", inputs[0].c_str(),
+                ours.v.FR_Mg, ours.v.FS_perp_mg);
+    if (inputs[0] == "17") {
+      // Appendix B on the l = 17 engine: a fulcrum force "near 10 Mg" and a sling tension of
+      // "a few hundred mg" (read as 8-12 Mg and 200-900 mg).
+      CHECK(ours.v.FR_Mg > 8);
+      CHECK(ours.v.FR_Mg < 12);
+      CHECK(ours.v.FS_perp_mg > 200);
+      CHECK(ours.v.FS_perp_mg < 900);
+    }
+    for (const Expected& e : expected) {
+      // Rounding of the printed shape, first order, each input in turn.
+      double rounding = 0;
+      for (std::size_t k = 0; k < x.size(); ++k) {
+        std::vector<double> moved = x;
+        moved[k] += printed(inputs[k]).half_unit;
+        rounding += std::abs(value(fitted_release(moved), e.key) - value(ours, e.key));
+      }
+      check_printed(std::string("tab:Large_Eff l = ") + inputs[0] + " " + e.key, value(ours, e.key), e.text, rounding);
+    }
+  }
+}
+
+namespace {
+
+// tab:SketchBook-II rows: Lb = 9 m and l exact (bold), so L1 = Lb l/(l + 1); then L4 [m],
+// M [t], m, mb [kg] as printed.
+Engine sketchbook2_engine(double F, double theta_i_deg, double l, const std::vector<double>& x) {
+  return sketchbook_engine(F, theta_i_deg, {9 * l / (l + 1), x[0], x[1], x[2], x[3], l});
+}
+
+struct QRow {
+  std::string name;
+  std::vector<std::string> inputs;
+  std::function<Engine(const std::vector<double>&)> build;
+  double n;
+  std::vector<Expected> expected;  // R, T, eps
+  const char* Q;
+};
+
+std::vector<QRow> optimised_rows() {
+  auto sb1 = [](double F, double th) { return [=](const std::vector<double>& x) { return sketchbook_engine(F, th, x); }; };
+  auto sb2 = [](double F, double th, double l) { return [=](const std::vector<double>& x) { return sketchbook2_engine(F, th, l, x); }; };
+  auto dn = [](double th) { return [=](const std::vector<double>& x) { return denny_engine(th, x); }; };
+  return {
+      {"SketchBook-I n=1 F=1 30", {"6.13", "5.80", "14.3", "100.000", "660", "5.68"}, sb1(1, 30), 1, {{"R", "450"}, {"T", "235"}, {"eps", "93.1", 1.5}}, "7.41"},
+      {"SketchBook-I n=1 F=2/3 30", {"6.20", "5.69", "16.9", "100.000", "601", "6.77"}, sb1(2.0 / 3, 30), 1, {{"R", "450"}, {"T", "234"}, {"eps", "92.6"}}, "6.43"},
+      {"SketchBook-I n=1 F=2/3 40", {"6.48", "5.55", "19.1", "100.000", "622", "7.51"}, sb1(2.0 / 3, 40), 1, {{"R", "450"}, {"T", "234"}, {"eps", "91.6"}}, "5.55"},
+      {"SketchBook-I n=5", {"6.31", "6.68", "15.6", "101", "611", "6.64"}, sb1(1, 30), 5, {{"R", "450"}, {"T", "235"}, {"eps", "97.5", 1.5}}, "6.38"},
+      {"SketchBook-I n=0", {"6.60", "6.04", "13.4", "98.3", "807", "5.29"}, sb1(1, 30), 0, {{"R", "450"}, {"T", "235", 2.5}, {"eps", "87.8", 6}}, "8.11"},
+      {"SketchBook-II #1", {"7.00", "26.8", "301", "1696"}, sb2(1, 25, 4.5), 1, {{"R", "426"}, {"T", "677"}, {"eps", "93.3", 2}}, "10.4"},
+      {"SketchBook-II #2", {"6.80", "26.0", "298", "1682"}, sb2(1, 30, 4.5), 1, {{"R", "407"}, {"T", "641"}, {"eps", "92.9"}}, "10.2"},
+      {"SketchBook-II #3", {"6.20", "23.7", "299", "1589"}, sb2(1, 40, 4.5), 1, {{"R", "341"}, {"T", "540"}, {"eps", "91.5", 3}}, "10.2"},
+      {"SketchBook-II #4", {"7.16", "33.4", "248", "1605"}, sb2(1, 30, 5.5), 1, {{"R", "540"}, {"T", "700", 1.5}, {"eps", "93.2"}}, "7.71"},
+      {"SketchBook-II #5", {"6.76", "34.9", "343", "1653"}, sb2(2.0 / 3, 30, 5.5), 1, {{"R", "401"}, {"T", "726", 1.5}, {"eps", "91.6"}}, "8.79"},
+      {"SketchBook-II #6", {"6.98", "38.7", "299", "1623"}, sb2(2.0 / 3, 30, 6.0), 1, {{"R", "482"}, {"T", "752"}, {"eps", "92.0", 2}}, "7.55"},
+      {"SketchBook-II #7", {"6.41", "45.9", "538", "1746"}, sb2(0.5, 30, 6.0), 1, {{"R", "297"}, {"T", "858"}, {"eps", "88.1", 2}}, "9.01"},
+      {"Denny Max Q 45", {"0.93", "8.67", "5.25", "6.19", "13.3", "101", "629"}, dn(45), 1, {{"R", "425"}, {"T", "224"}, {"eps", "91.4"}}, "7.0"},
+      {"Denny Max Q 30 F=1", {"1.00000", "7.15", "5.23", "5.69", "13.3", "101", "647"}, dn(30), 1, {{"R", "425"}, {"T", "224"}, {"eps", "93.3"}}, "7.8"},
+      {"Denny Max Q 30 F=2/3", {"0.666667", "7.06", "5.30", "5.57", "15.7", "101", "591"}, dn(30), 1, {{"R", "425"}, {"T", "224"}, {"eps", "92.2"}}, "6.7"},
+  };
+}
+
+}  // namespace
+
+// The optimised engines of tab:SketchBook-I, tab:SketchBook-II and tab:Denny, simulated as
+// printed and released at the maximum of Q (or Q_n). R agrees with every row to the rounding
+// of inputs and outputs, T with all but three, eps with nine of fifteen. The others are marked
+// "known": T and eps are read at the release, which sits on a flat maximum of Q and moves with
+// the force factor F, so they carry the verifier issue's open point on Q. Under the literal
+// reading of eq:F, Q matches the n = 5 row, while the paper's Q is 4-11 % higher for the other
+// rows (docs/verifier.md has the table and what was tried). This test pins that spread, so a
+// change of the force factor shows up here; it prints each row for the docs.
+TEST_CASE("optimised engines of the paper: R, T and eps to rounding; Q as documented", "[verify][paper][q-table]") {
+  std::printf("%-28s %8s %8s %7s\n", "row", "Q ours", "Q paper", "ratio");
+  for (const QRow& row : optimised_rows()) {
+    ShotSettings settings;
+    settings.quality.n = row.n;
+    check_row(row.name, row.inputs, row.build, settings, row.expected);
+    std::vector<double> x;
+    for (const auto& text : row.inputs) x.push_back(printed(text).value);
+    const double Q = 100 * verify_engine(row.build(x), settings).Q;
+    const double ratio = printed(row.Q).value / Q;
+    std::printf("  %-28s Q ours %.3f %% paper %s %% ratio %.3f\n", row.name.c_str(), Q, row.Q, ratio);
+    if (row.n == 5) {
+      check_printed(row.name + " Q_5", Q, row.Q, input_rounding_effect(row.inputs, row.build, [&](const Engine& e) { return 100 * verify_engine(e, settings).Q; }));
+    } else {
+      CHECK(ratio > 1.03);
+      CHECK(ratio < 1.12);
+    }
+  }
+}

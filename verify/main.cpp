@@ -1,0 +1,236 @@
+// trebuchet-verify: the ab-initio shot of an engine (appendix A), its capacity, efficiency,
+// forces and quality at the best release, checked against a predicted capacity. Parses,
+// calls the library, prints. Exit codes: 0 pass, 1 outside --tol, 2 bad input, 3 numerical
+// failure (docs/verifier.md).
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <optional>
+#include <sstream>
+
+#include "trebuchet/capacity_fit.hpp"
+#include "trebuchet/design_input.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/units.hpp"
+#include "trebuchet/verification.hpp"
+#include "trebuchet/verification_report.hpp"
+
+namespace {
+
+using namespace trebuchet;
+
+constexpr int exit_pass = 0, exit_outside_tolerance = 1, exit_bad_input = 2, exit_numerical = 3;
+
+int exit_code_of(const Error& e) { return e.kind() == ErrorKind::numerical ? exit_numerical : exit_bad_input; }
+
+struct Options {
+  std::string input;  // file, "-" for stdin, empty for flags
+  std::map<std::string, std::string> engine_flags;  // L1 L2 L3 F L4 M m mb
+  std::string theta = "30", g, R, T;
+  std::string tolerance = "0.02";
+  std::string target_level = "0";
+  std::string format = "table";
+  std::string series;
+  std::string quality = "Q";
+  std::string n = "1";
+  IntegratorSettings integrator;
+  std::string rtol, atol;
+  bool fit = false;
+};
+
+const std::pair<const char*, UnitDimension> engine_keys[] = {
+    {"L1", UnitDimension::length}, {"L2", UnitDimension::length}, {"L3", UnitDimension::length},
+    {"F", UnitDimension::dimensionless}, {"L4", UnitDimension::length}, {"M", UnitDimension::mass},
+    {"m", UnitDimension::mass}, {"mb", UnitDimension::mass}};
+
+// The flags as one JSON design, so that flags and files go through the same checks.
+nlohmann::json design_from_flags(const Options& o) {
+  nlohmann::json design;
+  for (const auto& [key, text] : o.engine_flags)
+    if (!text.empty()) design[key] = text;
+  if (!o.theta.empty()) design["theta_i_deg"] = o.theta;
+  if (!o.R.empty()) design["R"] = o.R;
+  if (!o.T.empty()) design["T"] = o.T;
+  return design;
+}
+
+nlohmann::json read_input(const std::string& path) {
+  std::string text;
+  if (path == "-") {
+    text.assign(std::istreambuf_iterator<char>(std::cin), {});
+  } else {
+    std::ifstream file(path);
+    if (!file) throw Error(ErrorKind::usage, "cannot read '" + path + "'; give a JSON file, or - for stdin");
+    text.assign(std::istreambuf_iterator<char>(file), {});
+  }
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw Error(ErrorKind::usage, (path == "-" ? std::string("stdin") : path) + " is not valid JSON (" + e.what() +
+                                      "); give a design object or an array of them");
+  }
+}
+
+struct Outcome {
+  nlohmann::ordered_json json;
+  std::string table;
+  int code = exit_pass;
+};
+
+Outcome verify_one(const nlohmann::json& object, const std::string& where, const Options& o, const ShotSettings& base,
+                   double tolerance) {
+  const DesignInput in = design_from_json(object, where);
+  ShotSettings settings = base;
+  if (in.g && o.g.empty()) settings.g = *in.g;
+  Outcome out;
+  Engine engine = in.engine;
+  std::optional<CapacityCheck> check;
+  nlohmann::ordered_json fitted;
+  if (o.fit) {
+    if (!in.R) throw Error(ErrorKind::usage, where + ": --fit needs a capacity; give --R and --T, or \"R\" and \"T\" in the input");
+    Material material;
+    material.g = settings.g;
+    const CapacityFit fit = fit_capacity(engine_shape(engine), *in.R, *in.T, material, settings);
+    engine = fit.engine;
+    fitted = engine_json(engine);
+    fitted["simulations"] = fit.simulations;
+  }
+  std::vector<TracePoint> trace;
+  const Verification v = verify_engine(engine, settings, o.series.empty() ? nullptr : &trace);
+  if (in.R) check = check_capacity(v, *in.R, *in.T, tolerance);
+  out.json = verification_json(v, check);
+  out.table = verification_table(v, check);
+  if (o.fit) {
+    out.json["engine"] = fitted;
+    std::ostringstream lines;
+    lines << "fitted engine (" << fitted["simulations"].get<int>() << " shots): ";
+    for (const char* key : {"L1", "L2", "L3", "L4", "M", "m", "mb", "D"}) lines << key << " = " << fitted[key].get<double>() << "  ";
+    out.table = lines.str() + "\n" + out.table;
+  }
+  if (!o.series.empty()) {
+    std::ofstream file(o.series);
+    file << trace_csv(trace, engine, settings.g);
+    if (!file) throw Error(ErrorKind::usage, "--series: cannot write '" + o.series + "'");
+  }
+  if (check && !check->pass) out.code = exit_outside_tolerance;
+  return out;
+}
+
+int run(const Options& o) {
+  if (o.format != "table" && o.format != "json")
+    throw Error(ErrorKind::usage, "--format: '" + o.format + "' is not a format; use table or json");
+  ShotSettings settings;
+  settings.integrator = o.integrator;
+  if (!o.rtol.empty()) settings.integrator.rtol = parse_positive(o.rtol, UnitDimension::dimensionless, "--rtol");
+  if (!o.atol.empty()) settings.integrator.atol = parse_positive(o.atol, UnitDimension::dimensionless, "--atol");
+  if (!o.g.empty()) settings.g = parse_positive(o.g, UnitDimension::acceleration, "--g");
+  settings.target_level = parse_value(o.target_level, UnitDimension::length, "--target-level");
+  if (o.quality == "eps") settings.quality.release = Quality::Release::efficiency;
+  else if (o.quality == "range") settings.quality.release = Quality::Release::range;
+  else if (o.quality != "Q")
+    throw Error(ErrorKind::usage, "--quality: '" + o.quality + "' is not a release criterion; use Q (eq:Q, eq:Q_n with --n), eps or range");
+  settings.quality.n = parse_value(o.n, UnitDimension::dimensionless, "--n");
+  if (!(settings.quality.n >= 0)) throw Error(ErrorKind::bad_number, "--n: '" + o.n + "' must be 0 or more (eq:Q_n)");
+  const double tolerance = parse_positive(o.tolerance, UnitDimension::dimensionless, "--tol");
+
+  const bool has_engine_flags = !o.theta.empty() || std::any_of(o.engine_flags.begin(), o.engine_flags.end(),
+                                                                 [](const auto& kv) { return !kv.second.empty(); });
+  nlohmann::json input;
+  bool is_array = false;
+  if (!o.input.empty()) {
+    if (has_engine_flags)
+      throw Error(ErrorKind::usage, "the engine comes from '" + o.input + "'; drop the engine flags (--L1 ... --theta), or drop the file");
+    input = read_input(o.input);
+    is_array = input.is_array();
+    // --R/--T on the command line give the capacity of a single design from a file.
+    if (!is_array && (!o.R.empty() || !o.T.empty())) {
+      if (!o.R.empty()) input["R"] = o.R;
+      if (!o.T.empty()) input["T"] = o.T;
+    }
+  } else {
+    if (!has_engine_flags) throw Error(ErrorKind::usage, "no design; give a JSON file (or - for stdin), or flags like --L1 6.13m --L2 1.08m --F 1 --L4 5.8m --M 14.3t --m 100kg --mb 660kg");
+    input = design_from_flags(o);
+  }
+  if (is_array && !o.series.empty() && input.size() != 1)
+    throw Error(ErrorKind::usage, "--series writes the motion of one design; the input holds " + std::to_string(input.size()));
+  if (!is_array) {
+    const Outcome out = verify_one(input, o.input.empty() ? "flags" : "design", o, settings, tolerance);
+    if (o.format == "json") std::cout << out.json.dump(2) << "\n";
+    else std::cout << out.table;
+    return out.code;
+  }
+  // An array: every design is tried; a failing one is reported in its place, the others kept.
+  nlohmann::ordered_json results = nlohmann::ordered_json::array();
+  int code = exit_pass, index = 0;
+  for (const auto& object : input) {
+    const std::string where = "design[" + std::to_string(index++) + "]";
+    try {
+      const Outcome out = verify_one(object, where, o, settings, tolerance);
+      results.push_back(out.json);
+      if (o.format == "table") std::cout << where << "\n" << out.table << "\n";
+      code = std::max(code, out.code);
+    } catch (const Error& e) {
+      std::cerr << "trebuchet-verify: " << (std::string(e.what()).rfind(where, 0) == 0 ? "" : where + ": ") << e.what() << "\n";
+      results.push_back({{"error", e.what()}, {"exit_code", exit_code_of(e)}});
+      code = std::max(code, exit_code_of(e));
+    }
+  }
+  if (o.format == "json") std::cout << results.dump(2) << "\n";
+  return code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "trebuchet-verify: the ab-initio shot of a swinging-counterweight trebuchet (Horsdal, appendix A):\n"
+      "range, energy, efficiency, forces and quality at the best release, checked against a predicted\n"
+      "capacity. Give a JSON design (the calculator's output, or hand-written), an array of them, or flags.\n"
+      "Values take SI suffixes (6.13m, 14.3t, 224kJ). Exit codes: 0 pass, 1 outside --tol, 2 bad input,\n"
+      "3 numerical failure.",
+      "trebuchet-verify"};
+  Options o;
+  o.theta.clear();
+  app.add_option("input", o.input, "JSON file with a design or an array of designs; - for stdin");
+  const std::map<std::string, std::string> help = {
+      {"L1", "long beam section"}, {"L2", "short beam section"}, {"L3", "counterweight arm (or --F)"},
+      {"F", "arm fraction (L2+L3)/H, instead of --L3"}, {"L4", "sling length"}, {"M", "counterweight mass"},
+      {"m", "projectile mass"}, {"mb", "beam mass"}};
+  for (const auto& [key, dimension] : engine_keys) {
+    o.engine_flags[key];
+    app.add_option("--" + std::string(key), o.engine_flags[key],
+                   help.at(key) + (dimension == UnitDimension::dimensionless ? "" : " [" + unit_list(dimension) + "]"));
+  }
+  app.add_option("--theta", o.theta, "initial beam angle theta_i [deg] (default 30)");
+  app.add_option("--g", o.g, "gravitational acceleration (default: the input's, else 9.81m/s2)");
+  app.add_option("--R", o.R, "predicted range to check, or the range to --fit");
+  app.add_option("--T", o.T, "predicted energy to check, or the energy to --fit");
+  app.add_option("--tol", o.tolerance, "relative tolerance on the predicted R and T")->capture_default_str();
+  app.add_flag("--fit", o.fit, "keep the design's shape (l, l4, mu_b, theta_i, F); fit mu and the size to --R and --T");
+  app.add_option("--target-level", o.target_level, "target height relative to the engine's base, e.g. -54m")->capture_default_str();
+  app.add_option("--quality", o.quality, "what the release maximises: Q (eq:Q, eq:Q_n), eps (appendix B) or range (Denny)")->capture_default_str();
+  app.add_option("--n", o.n, "exponent of eps in eq:Q_n")->capture_default_str();
+  app.add_option("--format", o.format, "table or json")->capture_default_str();
+  app.add_option("--series", o.series, "write the time series of the shot (angles, forces, energy) to this CSV file");
+  app.add_option("--stepper", o.integrator.stepper, "GSL odeiv2 stepper: rk2, rk4, rkf45, rkck, rk8pd")->capture_default_str();
+  app.add_option("--rtol", o.rtol, "relative tolerance per step (default 1e-11)");
+  app.add_option("--atol", o.atol, "absolute tolerance per step, scaled units (default 1e-12)");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "trebuchet-verify: " << e.what() << "; see trebuchet-verify --help\n";
+    return exit_bad_input;
+  }
+  try {
+    return run(o);
+  } catch (const Error& e) {
+    std::cerr << "trebuchet-verify: " << e.what() << "\n";
+    return exit_code_of(e);
+  }
+}
