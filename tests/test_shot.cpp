@@ -177,3 +177,35 @@ TEST_CASE("a beam too heavy to turn is a named error", "[shot]") {
   heavy.mb = 3000;
   CHECK_THROWS_WITH(verify_engine(heavy, ShotSettings{}), Catch::StartsWith("the beam cannot turn"));
 }
+
+// Degenerate engines end in a named error, never in a number (issue 3's list of errors).
+TEST_CASE("degenerate engines are named errors", "[shot]") {
+  auto message = [](const ScaledEngine& e) {
+    try {
+      simulate_shot(e, Quality{}, IntegratorSettings{});
+    } catch (const Error& error) {
+      CHECK(error.kind() == ErrorKind::numerical);
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  // A sling three times the long arm: it is still slack in the trough when the beam is upright.
+  CHECK_THAT(message({4.7, 3.0, 1.5, 0.3, 0.056, M_PI / 6}), Catch::StartsWith("the projectile never lifts off"));
+  // A projectile of 30 % of M: the trough carries it until the sling stands vertical.
+  CHECK_THAT(message({4.7, 0.86, 1.5, 0.3, 0.056, M_PI / 6}), Catch::StartsWith("the sling stands vertical in the trough"));
+  // Found by the random search of docs/verifier.md: the projectile only ever flies backwards.
+  CHECK_THAT(message({54.7282, 1.56034, 1.66527, 0.0406626, 0.0027864, 50.6807 * M_PI / 180}),
+             Catch::StartsWith("no release sends the projectile forward"));
+  // A beam whose long arm outweighs the counterweight's pull (eq:DU).
+  CHECK_THAT(message({48.2, 1.7, 0.15, 0.03, 0.044, M_PI / 6}), Catch::StartsWith("the beam cannot turn"));
+}
+
+// Loose, low-order integration must end in a named error rather than a wrong number: the
+// energy monitor catches rk2 at rtol 1e-3 on the ordinary Ca engine.
+TEST_CASE("loose integration is caught by the energy monitor", "[shot][physics]") {
+  ShotSettings loose;
+  loose.integrator.stepper = "rk2";
+  loose.integrator.rtol = 1e-3;
+  loose.integrator.atol = 1e-3;
+  CHECK_THROWS_WITH(verify_engine(alcala(4.13, 0.88, 3.55, 3.11, 174), loose), Catch::Contains("energy drift"));
+}

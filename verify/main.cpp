@@ -14,6 +14,7 @@
 #include "trebuchet/capacity_fit.hpp"
 #include "trebuchet/design_input.hpp"
 #include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
 #include "trebuchet/units.hpp"
 #include "trebuchet/verification.hpp"
 #include "trebuchet/verification_report.hpp"
@@ -66,10 +67,13 @@ nlohmann::json read_input(const std::string& path) {
     if (!file) throw Error(ErrorKind::usage, "cannot read '" + path + "'; give a JSON file, or - for stdin");
     text.assign(std::istreambuf_iterator<char>(file), {});
   }
+  const std::string source = path == "-" ? std::string("stdin") : "'" + path + "'";
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw Error(ErrorKind::usage, source + " is empty; give a design object or an array of them");
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    throw Error(ErrorKind::usage, (path == "-" ? std::string("stdin") : path) + " is not valid JSON (" + e.what() +
+    throw Error(ErrorKind::usage, source + " is not valid JSON (" + e.what() +
                                       "); give a design object or an array of them");
   }
 }
@@ -90,7 +94,7 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
   std::optional<CapacityCheck> check;
   nlohmann::ordered_json fitted;
   if (o.fit) {
-    if (!in.R) throw Error(ErrorKind::usage, where + ": --fit needs a capacity; give --R and --T, or \"R\" and \"T\" in the input");
+    if (!in.R) throw Error(ErrorKind::usage, "--fit needs a capacity; give --R and --T, or \"R\" and \"T\" in the input");
     Material material;
     material.g = settings.g;
     const CapacityFit fit = fit_capacity(engine_shape(engine), *in.R, *in.T, material, settings);
@@ -107,7 +111,8 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
     out.json["engine"] = fitted;
     std::ostringstream lines;
     lines << "fitted engine (" << fitted["simulations"].get<int>() << " shots): ";
-    for (const char* key : {"L1", "L2", "L3", "L4", "M", "m", "mb", "D"}) lines << key << " = " << fitted[key].get<double>() << "  ";
+    for (const char* key : {"L1", "L2", "L3", "L4", "D"}) lines << key << " = " << format_significant(fitted[key].get<double>(), 5) << " m  ";
+    for (const char* key : {"M", "m", "mb"}) lines << key << " = " << format_significant(fitted[key].get<double>(), 5) << " kg  ";
     out.table = lines.str() + "\n" + out.table;
   }
   if (!o.series.empty()) {
@@ -157,7 +162,7 @@ int run(const Options& o) {
   if (is_array && !o.series.empty() && input.size() != 1)
     throw Error(ErrorKind::usage, "--series writes the motion of one design; the input holds " + std::to_string(input.size()));
   if (!is_array) {
-    const Outcome out = verify_one(input, o.input.empty() ? "flags" : "design", o, settings, tolerance);
+    const Outcome out = verify_one(input, o.input.empty() ? "" : "design", o, settings, tolerance);
     if (o.format == "json") std::cout << out.json.dump(2) << "\n";
     else std::cout << out.table;
     return out.code;

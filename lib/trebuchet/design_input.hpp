@@ -18,7 +18,8 @@ struct DesignInput {
   std::optional<double> R, T;              ///< predicted capacity [m], [J], when the input carries one
 };
 
-/// Reads one design from a JSON object; `where` names it in messages ("design[2]").
+/// Reads one design from a JSON object; `where` names it in messages ("design[2]"; empty:
+/// the command line, whose keys are named as flags, "--L4").
 /// Throws Error(bad_number | unknown_unit | usage) naming the key and the fix.
 DesignInput design_from_json(const nlohmann::json& object, const std::string& where);
 

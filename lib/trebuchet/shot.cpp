@@ -17,6 +17,9 @@ namespace trebuchet {
 namespace {
 
 // Phase I integrates (th, psi, th', psi'); phase II (th, psi, phi, th', psi', phi').
+// Phase I is singular where the sling stands vertical (cos phi = 0 in eq:EOM_I_1); it is
+// abandoned below this cos phi (phi > 88.9 deg), before the step control loses accuracy there.
+constexpr double min_trough_cos_phi = 0.02;
 struct OdeContext {
   const ScaledEngine* engine;
   Phase phase;
@@ -28,7 +31,7 @@ State state_of(const OdeContext& c, const double y[], std::size_t dimension, boo
   ok = true;
   if (dimension == 4) {  // phase I
     s.theta = y[0], s.psi = y[1], s.theta_dot = y[2], s.psi_dot = y[3];
-    ok = complete_trough_state(*c.engine, s) > 1e-9;
+    ok = complete_trough_state(*c.engine, s) > min_trough_cos_phi;
   } else {
     s.theta = y[0], s.psi = y[1], s.phi = y[2], s.theta_dot = y[3], s.psi_dot = y[4], s.phi_dot = y[5];
   }
@@ -274,7 +277,7 @@ ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const In
     const std::vector<double> y_prev = y;
     if (!trough.step(t, y.data(), settings.max_time, h)) {
       if (trough.sling_vertical())
-        fail("the sling stands vertical in the trough (cos phi -> 0) before lift-off; lengthen the sling L4");
+        fail("the sling stands vertical in the trough (phi -> 90 deg) before lift-off; lengthen the sling L4 or lighten the projectile m");
       fail("integrator failure in phase I; tighten --rtol or choose another --stepper");
     }
     count_step("phase I");
