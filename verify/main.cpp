@@ -220,7 +220,7 @@ int main(int argc, char** argv) {
   app.add_option("--n", o.n, "exponent of eps in eq:Q_n")->capture_default_str();
   app.add_option("--format", o.format, "table or json")->capture_default_str();
   app.add_option("--series", o.series, "write the time series of the shot (angles, forces, energy) to this CSV file");
-  app.add_option("--stepper", o.integrator.stepper, "GSL odeiv2 stepper: rk2, rk4, rkf45, rkck, rk8pd")->capture_default_str();
+  app.add_option("--stepper", o.integrator.stepper, "GSL odeiv2 stepper: " + stepper_names())->capture_default_str();
   app.add_option("--rtol", o.rtol, "relative tolerance per step (default 1e-11)");
   app.add_option("--atol", o.atol, "absolute tolerance per step, scaled units (default 1e-12)");
   try {

@@ -31,19 +31,28 @@ struct Accel {
   double theta, psi, phi;
 };
 
+// Sines and cosines of the three angles, one sincos each; differences by the angle-sum rules.
+struct Trig {
+  double st, ct, sp, cp, sf, cf;
+  explicit Trig(const State& s)
+      : st(std::sin(s.theta)), ct(std::cos(s.theta)), sp(std::sin(s.psi)), cp(std::cos(s.psi)), sf(std::sin(s.phi)),
+        cf(std::cos(s.phi)) {}
+};
+
 // Solves the linear system of the phase for the angular accelerations.
 Accel solve(const ScaledEngine& e, Phase phase, const State& s) {
   const double I = e.beam_inertia();
-  const double c_tp = std::cos(s.theta - s.psi), s_tp = std::sin(s.theta - s.psi);
+  const Trig trig(s);
+  const double c_tp = trig.ct * trig.cp + trig.st * trig.sp, s_tp = trig.st * trig.cp - trig.ct * trig.sp;
   // eq:EOM_I_2: -cos(th - psi) th'' + L psi'' = -sin(th - psi) th'^2 - sin psi
-  const double b2 = -s_tp * s.theta_dot * s.theta_dot - std::sin(s.psi);
+  const double b2 = -s_tp * s.theta_dot * s.theta_dot - trig.sp;
   if (phase == Phase::trough || phase == Phase::released) {
-    double a11 = I + 1, b1 = e.L * s_tp * s.psi_dot * s.psi_dot - (e.mu_b / 2 * (e.l - 1) - 1) * std::sin(s.theta);
+    double a11 = I + 1, b1 = e.L * s_tp * s.psi_dot * s.psi_dot - (e.mu_b / 2 * (e.l - 1) - 1) * trig.st;
     if (phase == Phase::trough) {  // eq:EOM_I_1 with f(th), df/dth of appendix A
-      const double cos_phi = std::cos(s.phi);
-      const double f = std::cos(s.theta - s.phi) / cos_phi;
-      const double df = -std::sin(s.theta - s.phi) / cos_phi +
-                        std::sin(s.theta) * std::sin(s.theta) / (e.l4 * cos_phi * cos_phi * cos_phi);
+      const double cos_phi = trig.cf;
+      const double f = (trig.ct * trig.cf + trig.st * trig.sf) / cos_phi;  // cos(th - phi)/cos phi
+      const double df = -(trig.st * trig.cf - trig.ct * trig.sf) / cos_phi +
+                        trig.st * trig.st / (e.l4 * cos_phi * cos_phi * cos_phi);
       a11 += e.mu * e.l * e.l * f * f;
       b1 -= e.mu * e.l * e.l * f * df * s.theta_dot * s.theta_dot;
     }
@@ -53,13 +62,13 @@ Accel solve(const ScaledEngine& e, Phase phase, const State& s) {
     return {theta_ddot, (b2 + c_tp * theta_ddot) / e.L, 0};
   }
   // Phase II: eq:EOM_II_1, eq:EOM_I_2, eq:EOM_II_3.
-  const double c_tf = std::cos(s.theta - s.phi), s_tf = std::sin(s.theta - s.phi);
+  const double c_tf = trig.ct * trig.cf + trig.st * trig.sf, s_tf = trig.st * trig.cf - trig.ct * trig.sf;
   const double ml2 = e.mu * e.l * e.l;
   const double a11 = ml2 + I + 1, a12 = -e.L * c_tp, a13 = -ml2 * e.l4 * s_tf;
   const double b1 = e.L * s_tp * s.psi_dot * s.psi_dot - ml2 * e.l4 * c_tf * s.phi_dot * s.phi_dot -
-                    (e.mu * e.l + e.mu_b / 2 * (e.l - 1) - 1) * std::sin(s.theta);
+                    (e.mu * e.l + e.mu_b / 2 * (e.l - 1) - 1) * trig.st;
   // eq:EOM_II_3: -l sin(th - phi) th'' + l l4 phi'' = l cos(th - phi) th'^2 + cos phi
-  const double b3 = e.l * c_tf * s.theta_dot * s.theta_dot + std::cos(s.phi);
+  const double b3 = e.l * c_tf * s.theta_dot * s.theta_dot + trig.cf;
   // psi'' = (b2 + c_tp th'')/L and phi'' = (b3 + l s_tf th'')/(l l4): substitute into the first row.
   const double theta_ddot = (b1 - a12 * b2 / e.L - a13 * b3 / (e.l * e.l4)) /
                             (a11 + a12 * c_tp / e.L + a13 * s_tf / e.l4);

@@ -12,13 +12,17 @@ namespace trebuchet {
 
 /// Settings of the integration; defaults are chosen in docs/verifier.md.
 struct IntegratorSettings {
-  std::string stepper = "rk8pd";   ///< a GSL odeiv2 explicit stepper: rk2, rk4, rkf45, rkck, rk8pd
+  std::string stepper = "rk8pd";   ///< a GSL odeiv2 stepper, one of stepper_names()
   double rtol = 1e-11;             ///< relative tolerance per step
   double atol = 1e-12;             ///< absolute tolerance per step, scaled units
   long max_steps = 200000;         ///< step budget over both phases
   double max_energy_drift = 1e-8;  ///< |E(t) - E(0)|/DeltaU above this is an error, not a result
   double max_time = 200;           ///< scaled; phase II is abandoned after this
 };
+
+/// The GSL odeiv2 steppers the shot can use, for messages and help: explicit Runge-Kutta,
+/// Adams, and implicit ones with a finite-difference Jacobian.
+std::string stepper_names();
 
 /// What the release maximises: the quality eq:Q (n = 1) or eq:Q_n, Q_eps = eps (appendix B),
 /// or the range (Denny's criterion; the paper's tab:Denny "Present" row).

@@ -4,6 +4,9 @@
 #include <gsl/gsl_min.h>
 #include <gsl/gsl_roots.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace trebuchet {
 namespace {
 
@@ -38,16 +41,26 @@ double find_maximum(const std::function<double(double)>& f, double lo, double gu
   gsl_min_fminimizer* minimizer = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
   double x = guess;
   if (gsl_min_fminimizer_set(minimizer, &g, guess, lo, hi) == GSL_SUCCESS) {
+    // Values of f near a smooth maximum differ by round-off closer than ~sqrt(epsilon) |x|.
+    const double resolution = 1e-8 * std::max(std::abs(lo), std::abs(hi));
     for (int k = 0; k < max_iterations; ++k) {
       gsl_min_fminimizer_iterate(minimizer);
       x = gsl_min_fminimizer_x_minimum(minimizer);
-      if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(minimizer), gsl_min_fminimizer_x_upper(minimizer), epsabs, 0) !=
-          GSL_CONTINUE)
+      if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(minimizer), gsl_min_fminimizer_x_upper(minimizer),
+                                std::max(epsabs, resolution), 0) != GSL_CONTINUE)
         break;
     }
   }
   gsl_min_fminimizer_free(minimizer);
   return x;
+}
+
+double find_argmax(const std::function<double(double)>& f, double lo, double guess, double hi, double slope_step,
+                   double epsabs) {
+  const auto slope = [&](double x) { return f(x + slope_step) - f(x - slope_step); };
+  const double inner_lo = lo + slope_step, inner_hi = hi - slope_step;
+  if (inner_lo < inner_hi && slope(inner_lo) > 0 && slope(inner_hi) < 0) return find_root(slope, inner_lo, inner_hi, epsabs, 0);
+  return find_maximum(f, lo, guess, hi, epsabs);
 }
 
 }  // namespace trebuchet
