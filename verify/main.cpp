@@ -221,8 +221,8 @@ int main(int argc, char** argv) {
   app.add_option("--format", o.format, "table or json")->capture_default_str();
   app.add_option("--series", o.series, "write the time series of the shot (angles, forces, energy) to this CSV file");
   app.add_option("--stepper", o.integrator.stepper, "GSL odeiv2 stepper: " + stepper_names())->capture_default_str();
-  app.add_option("--rtol", o.rtol, "relative tolerance per step (default 1e-11)");
-  app.add_option("--atol", o.atol, "absolute tolerance per step, scaled units (default 1e-12)");
+  app.add_option("--rtol", o.rtol, "relative tolerance per step (default 1e-12)");
+  app.add_option("--atol", o.atol, "absolute tolerance per step, scaled units (default 1e-13)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {

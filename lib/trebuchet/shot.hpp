@@ -13,8 +13,8 @@ namespace trebuchet {
 /// Settings of the integration; defaults are chosen in docs/verifier.md.
 struct IntegratorSettings {
   std::string stepper = "rk8pd";   ///< a GSL odeiv2 stepper, one of stepper_names()
-  double rtol = 1e-11;             ///< relative tolerance per step
-  double atol = 1e-12;             ///< absolute tolerance per step, scaled units
+  double rtol = 1e-12;             ///< relative tolerance per step
+  double atol = 1e-13;             ///< absolute tolerance per step, scaled units
   long max_steps = 200000;         ///< step budget over both phases
   double max_energy_drift = 1e-8;  ///< |E(t) - E(0)|/DeltaU above this is an error, not a result
   double max_time = 200;           ///< scaled; phase II is abandoned after this

@@ -1,0 +1,154 @@
+// Work-precision of the verifier: for three designs, every GSL odeiv2 stepper the shot can use,
+// at tolerances 1e-3 ... 1e-13, the median wall time of a verified shot and its error in R, T,
+// eps and Q against a reference. Also the calculator as a point, and the cost of a shot against
+// the stiffness l. Writes CSV to stdout; scripts/work-precision.sh turns it into docs/ charts.
+// Usage: bench-shot [seconds_per_point]
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "trebuchet/calculator.hpp"
+#include "trebuchet/capacity_fit.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/verification.hpp"
+
+using namespace trebuchet;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+// Repeats `work` until `budget` seconds have passed (at least 3, at most 41 times); median [s].
+template <class Work>
+double median_seconds(Work work, double budget) {
+  std::vector<double> times;
+  const auto start = Clock::now();
+  while (times.size() < 3 || (times.size() < 41 && std::chrono::duration<double>(Clock::now() - start).count() < budget)) {
+    const auto t0 = Clock::now();
+    work();
+    times.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+  }
+  return median(times);
+}
+
+struct Design {
+  std::string name;
+  Engine engine;
+  Quality quality;
+};
+
+Engine alcala_ca() {  // tab:Alcala_la_Vieja row Ca, as printed
+  Engine e;
+  e.theta_i_deg = 30, e.L1 = 4.13, e.L2 = 0.88, e.L4 = 3.55, e.M = 3110, e.m = 50, e.mb = 174;
+  e.L3 = counterweight_arm(e.L1, e.L2, 30, 2.0 / 3);
+  return e;
+}
+
+Engine denny_standard() {  // tab:Denny Present: Lb = 12 m, H = 6.15 m, theta_i = 45 deg, F = 0.93
+  Engine e;
+  e.theta_i_deg = 45, e.L1 = 6.15 / std::cos(M_PI / 4), e.L2 = 12 - e.L1, e.L4 = 7.9, e.M = 1e4, e.m = 100, e.mb = 2000;
+  e.L3 = counterweight_arm(e.L1, e.L2, 45, 0.93);
+  return e;
+}
+
+Design large_eff_17() {  // tab:Large_Eff l = 17, fitted to (450 m, 232 kJ), released at max eps
+  ShotSettings settings;
+  settings.quality.release = Quality::Release::efficiency;
+  const EngineShape shape{17, 0.673 / 0.800, 14.7 / 270000, 30, 1};
+  return {"large_eff_l17", fit_capacity(shape, 450, 232e3, Material{}, settings).engine, settings.quality};
+}
+
+const char* steppers[] = {"rk2", "rk4", "rkf45", "rkck", "rk8pd", "msadams", "rk1imp", "rk2imp", "rk4imp", "bsimp", "msbdf"};
+
+ShotSettings settings_for(const Design& d, const std::string& stepper, double tol) {
+  ShotSettings s;
+  s.quality = d.quality;
+  s.integrator.stepper = stepper;
+  s.integrator.rtol = tol;
+  s.integrator.atol = tol / 10;
+  s.integrator.max_energy_drift = 1;  // the chart shows the error itself; the monitor is tested elsewhere
+  return s;
+}
+
+double relative(double value, double reference) { return std::abs(value / reference - 1); }
+
+void work_precision(const Design& d, double budget) {
+  const Verification ref = verify_engine(d.engine, settings_for(d, "rk8pd", 1e-13));
+  const Verification check = verify_engine(d.engine, settings_for(d, "rkck", 1e-13));
+  std::fprintf(stderr, "%s: reference rk8pd 1e-13, cross-check rkck 1e-13: R %.1e T %.1e eps %.1e Q %.1e\n", d.name.c_str(),
+               relative(check.R, ref.R), relative(check.T, ref.T), relative(check.eps, ref.eps), relative(check.Q, ref.Q));
+  std::printf("reference,%s,rkck,1e-13,,%.3e,%.3e,%.3e,%.3e,,cross-check\n", d.name.c_str(), relative(check.R, ref.R),
+              relative(check.T, ref.T), relative(check.eps, ref.eps), relative(check.Q, ref.Q));
+  for (const char* stepper : steppers) {
+    for (int e = 3; e <= 13; ++e) {
+      const double tol = std::pow(10.0, -e);
+      const ShotSettings s = settings_for(d, stepper, tol);
+      try {
+        const Verification v = verify_engine(d.engine, s);
+        const double seconds = median_seconds([&] { verify_engine(d.engine, s); }, budget);
+        std::printf("shot,%s,%s,%.0e,%.4e,%.3e,%.3e,%.3e,%.3e,%.2e,\n", d.name.c_str(), stepper, tol, seconds, relative(v.R, ref.R),
+                    relative(v.T, ref.T), relative(v.eps, ref.eps), relative(v.Q, ref.Q), v.energy_drift);
+      } catch (const Error& error) {
+        std::string reason = error.what();
+        reason = reason.substr(0, reason.find(';'));
+        std::printf("shot,%s,%s,%.0e,,,,,,,%s\n", d.name.c_str(), stepper, tol, reason.c_str());
+      }
+      std::fflush(stdout);
+    }
+  }
+}
+
+// The calculator as a point: its time per design, and its error as the deviation of the
+// verified capacity and Q from what it predicted.
+void calculator_point(const char* name, double R, double T, double budget) {
+  DesignRequest request;
+  request.first = {Quantity::R, R};
+  request.second = {Quantity::T, T};
+  const ScalingTable& table = builtin_scaling_table();
+  const OptimalEngine design = design_optimal_engine(table, request);
+  const double seconds = median_seconds([&] {
+    for (int k = 0; k < 1000; ++k) design_optimal_engine(table, request);
+  }, budget) / 1000;
+  const Verification v = verify_engine(design.engine, ShotSettings{});
+  std::printf("calculator,%s,tab:CPNC,,%.4e,%.3e,%.3e,,,,\n", name, seconds, relative(v.R, R), relative(v.T, T));
+}
+
+// Cost against stiffness: the small-l4 shape of tab:Large_Eff with l from 4 to 60, at default
+// settings. Appendix B: the beam rings at omega = {L/(L+1) I_P}^(-1/2) (scaled).
+void stiffness(double budget) {
+  for (double l : {4.0, 6.0, 10.0, 17.0, 25.0, 35.0, 45.0, 60.0}) {
+    ShotSettings s;
+    s.quality.release = Quality::Release::efficiency;
+    const ScaledEngine e{l, 0.673 / 0.800, l * std::cos(M_PI / 6) - 1, 3.85e-4, 14.7 / 270000, M_PI / 6};
+    try {
+      const ShotResult r = simulate_shot(e, s.quality, s.integrator);
+      const double seconds = median_seconds([&] { simulate_shot(e, s.quality, s.integrator); }, budget);
+      const double omega = 1 / std::sqrt(e.L / (e.L + 1) * e.beam_inertia());
+      std::printf("stiffness,l=%g,rk8pd,default,%.4e,,,,,%ld,omega=%.4g t_release=%.4g\n", l, seconds, r.steps, omega, r.release.t);
+    } catch (const Error& error) {
+      std::printf("stiffness,l=%g,rk8pd,default,,,,,,,%s\n", l, error.what());
+    }
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const double budget = argc > 1 ? std::atof(argv[1]) : 0.2;
+  std::printf("kind,design,method,tolerance,seconds,err_R,err_T,err_eps,err_Q,energy_drift_or_steps,note\n");
+  calculator_point("alcala_ca capacity 150m 40.45kJ", 150, 40454.8, budget);
+  calculator_point("denny capacity 425m 224kJ", 425, 224e3, budget);
+  work_precision({"alcala_ca", alcala_ca(), Quality{}}, budget);
+  work_precision({"denny_standard", denny_standard(), Quality{}}, budget);
+  work_precision(large_eff_17(), budget);
+  stiffness(budget);
+}
