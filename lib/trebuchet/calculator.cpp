@@ -62,6 +62,8 @@ double material_factor(Quantity quantity, const MaterialScaling& scaling) {
   }
 }
 
+constexpr double warn_amplification = 10, max_amplification = 50;
+
 double X_of(double lr, double lt) { return (5 * lr - lt) / sqrt26; }  // eq:XY_RT
 double Y_of(double lr, double lt) { return (lr + 5 * lt) / sqrt26; }
 
@@ -386,6 +388,16 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
   result.F = request.F;
   result.material = request.material;
   result.amplification = chosen.amplification;
+  // The constants of tab:CPNC reproduce the ab-initio optimum to about 1 % (docs/verifier.md);
+  // the inversion multiplies that, and any error of the givens, by the amplification. Above
+  // 50 the capacity is uncertain by more than half and the pair is refused; above 10, warned.
+  const std::string conditioning = "a 1 % change of " + pair() + " moves R or T by up to " +
+                                   format_significant(chosen.amplification, 2) + " % (amplification, eq:ZiZj_RT)";
+  if (chosen.amplification > max_amplification)
+    throw Error(ErrorKind::given_count, "the pair " + pair() + " barely fixes the capacity: " + conditioning +
+                                            ", above the limit of " + format_significant(max_amplification, 2) +
+                                            "; give a better-conditioned pair such as R and m, or M and m");
+  if (chosen.amplification > warn_amplification) result.warnings.push_back("ill-conditioned pair: " + conditioning);
 
   if (segment.branch != Branch::none) {
     double overlap_lo = -std::numeric_limits<double>::infinity(), overlap_hi = -overlap_lo;
