@@ -28,15 +28,17 @@ struct OdeContext {
   Phase phase;
 };
 
-// The integrated variables; phase I uses the first four. Fixed size: no allocation per use.
+// The integrated variables; phases I and III use the first four. Fixed size: no allocation per use.
 using OdeVector = std::array<double, 6>;
 
-State state_of(const OdeContext& c, const double y[], std::size_t dimension, bool& ok) {
+std::size_t dimension_of(Phase phase) { return phase == Phase::lifted ? 6 : 4; }
+
+State state_of(const OdeContext& c, const double y[], bool& ok) {
   State s;
   ok = true;
-  if (dimension == 4) {  // phase I
+  if (c.phase != Phase::lifted) {  // (th, psi, th', psi')
     s.theta = y[0], s.psi = y[1], s.theta_dot = y[2], s.psi_dot = y[3];
-    ok = complete_trough_state(*c.engine, s) > refuse_trough_cos_phi;
+    if (c.phase == Phase::trough) ok = complete_trough_state(*c.engine, s) > refuse_trough_cos_phi;
   } else {
     s.theta = y[0], s.psi = y[1], s.phi = y[2], s.theta_dot = y[3], s.psi_dot = y[4], s.phi_dot = y[5];
   }
@@ -46,10 +48,10 @@ State state_of(const OdeContext& c, const double y[], std::size_t dimension, boo
 int equations(double, const double y[], double dydt[], void* params) {
   auto* c = static_cast<OdeContext*>(params);
   bool ok = true;
-  const State s = state_of(*c, y, c->phase == Phase::trough ? 4 : 6, ok);
+  const State s = state_of(*c, y, ok);
   if (!ok) return GSL_FAILURE;  // a trial state near the singularity: GSL retries with a shorter step
   const auto a = accelerations(*c->engine, c->phase, s);
-  if (c->phase == Phase::trough) {
+  if (c->phase != Phase::lifted) {
     dydt[0] = s.theta_dot, dydt[1] = s.psi_dot, dydt[2] = a[0], dydt[3] = a[1];
   } else {
     dydt[0] = s.theta_dot, dydt[1] = s.psi_dot, dydt[2] = s.phi_dot, dydt[3] = a[0], dydt[4] = a[1], dydt[5] = a[2];
@@ -61,7 +63,7 @@ int equations(double, const double y[], double dydt[], void* params) {
 // autonomous, so df/dt = 0). Step sqrt(machine epsilon) relative: about 8 good digits, which
 // is all a Newton iteration needs.
 int jacobian(double t, const double y[], double* dfdy, double dfdt[], void* params) {
-  const std::size_t n = static_cast<OdeContext*>(params)->phase == Phase::trough ? 4 : 6;
+  const std::size_t n = dimension_of(static_cast<OdeContext*>(params)->phase);
   std::array<double, 6> f0{}, f1{}, shifted{};
   if (equations(t, y, f0.data(), params) != GSL_SUCCESS) return GSL_FAILURE;
   for (std::size_t j = 0; j < n; ++j) {
@@ -92,7 +94,7 @@ class PhaseIntegrator {
  public:
   PhaseIntegrator(const ScaledEngine& engine, Phase phase, const IntegratorSettings& settings)
       : context_{&engine, phase},
-        system_{equations, jacobian, phase == Phase::trough ? 4u : 6u, &context_},
+        system_{equations, jacobian, dimension_of(phase), &context_},
         stepping_(make(settings), gsl_odeiv2_driver_free),
         evaluating_(make(settings), gsl_odeiv2_driver_free) {}
 
@@ -117,7 +119,7 @@ class PhaseIntegrator {
 
   State state(const OdeVector& y) const {
     bool ok = true;
-    return state_of(context_, y.data(), dimension(), ok);
+    return state_of(context_, y.data(), ok);
   }
 
   // y' = f(y): the angular speeds and accelerations at a step end, for the interpolant.
@@ -324,6 +326,20 @@ void record_trace(std::vector<TracePoint>* trace, const ScaledEngine& e, Phase p
   }
 }
 
+// Phase III for the series: beam and counterweight without the projectile (mu = 0), from the
+// release for as long again as the shot took, so that the ringing of appendix B shows.
+void trace_released(const ScaledEngine& e, const IntegratorSettings& settings, const State& release, double t_release,
+                    std::vector<TracePoint>& trace) {
+  PhaseIntegrator released(e, Phase::released, settings);
+  OdeVector y = {release.theta, release.psi, release.theta_dot, release.psi_dot, 0, 0};
+  double t = t_release, h = 1e-3;
+  for (long steps = 0; t < 2 * t_release && steps < settings.max_steps; ++steps) {
+    if (!released.step(t, y.data(), 2 * t_release, h)) fail("integrator failure in phase III; tighten --rtol");
+    const State s = released.state(y);
+    trace.push_back({Phase::released, t, s, snapshot(e, Phase::released, s)});
+  }
+}
+
 }  // namespace
 
 std::string stepper_names() { return "rk2, rk4, rkf45, rkck, rk8pd, msadams, rk1imp, rk2imp, rk4imp, bsimp or msbdf"; }
@@ -434,6 +450,7 @@ ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const In
   if (trace) {
     record_trace(trace, e, Phase::lifted, lifted, samples, t_release);
     trace->push_back({Phase::lifted, t_release, result.release.state, snapshot(e, Phase::lifted, result.release.state)});
+    trace_released(e, settings, result.release.state, t_release, *trace);
   }
   return result;
 }

@@ -69,7 +69,8 @@ struct TracePoint {
 /// Integrates the shot and finds the release. Throws Error(numerical) with a named reason:
 /// the beam cannot turn, no lift-off, sling vertical in the trough, no forward release,
 /// integrator failure or step budget, or energy drift above the limit.
-/// With `trace`, the integrator's step ends up to the release, and the release itself, are appended to it.
+/// With `trace`, the integrator's step ends up to the release, the release itself, and phase III
+/// (beam and counterweight alone) for as long again, are appended to it.
 ShotResult simulate_shot(const ScaledEngine& engine, const Quality& quality, const IntegratorSettings& settings,
                          std::vector<TracePoint>* trace = nullptr);
 

@@ -84,12 +84,17 @@ std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine
   const double time_unit = std::sqrt(engine.L2 / g);           // section 3 [s]
   const double energy_unit = engine.M * g * engine.L2;         // [J]
   const double drop = scaled.energy_drop();
-  const double energy0 = trace.empty() ? 0 : trace.front().snapshot.energy;
+  double energy0 = trace.empty() ? 0 : trace.front().snapshot.energy;
+  bool released = false;
   std::ostringstream out;
   out << "phase,t_s,theta_deg,psi_deg,phi_deg,theta_dot_rad_s,psi_dot_rad_s,phi_dot_rad_s,"
          "FS_perp_mg,FR_Mg,FRh_Mg,FRv_Mg,FH_Mg,normal_mg,energy_J,energy_drift\n";
   for (const TracePoint& p : trace) {
     const Snapshot& s = p.snapshot;
+    if (p.phase == Phase::released && !released) {  // without the projectile, energy is conserved anew
+      released = true;
+      energy0 = s.energy;
+    }
     const double row[] = {p.t * time_unit,
                           degrees(p.state.theta),
                           degrees(p.state.psi),
@@ -105,7 +110,7 @@ std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine
                           s.normal_force / scaled.mu,
                           s.energy * energy_unit,
                           (s.energy - energy0) / drop};
-    out << (p.phase == Phase::trough ? "I" : "II");
+    out << (p.phase == Phase::trough ? "I" : p.phase == Phase::lifted ? "II" : "III");
     for (double x : row) out << "," << format_number(checked(x, "in the series"));
     out << "\n";
   }

@@ -37,7 +37,8 @@ nlohmann::ordered_json engine_json(const Engine& engine);
 
 /// One CSV row per trace point: phase, time [s], angles [deg], angular speeds [rad/s],
 /// forces (F_S_perp/(m g), F_R and its components/(M g), F_H/(M g), normal/(m g)),
-/// energy [J] and its drift relative to Delta U.
+/// energy [J] and its drift relative to Delta U (in phase III, from the energy at release,
+/// the projectile having left).
 std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine, double g);
 
 }  // namespace trebuchet
