@@ -9,6 +9,7 @@
 #include "trebuchet/batch.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/error.hpp"
+#include "trebuchet/program.hpp"
 #include "trebuchet/report.hpp"
 #include "trebuchet/request.hpp"
 #include "trebuchet/scaling_table.hpp"
@@ -129,19 +130,5 @@ int main(int argc, char** argv) {
   app.add_option("--batch", options.batch, "CSV file of requests (- for stdin); header names two givens");
   app.add_option("--table", options.table_file, "constants file in the schema of data/cpnc.json");
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp&) {
-    std::cout << app.help();
-    return 0;
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "trebuchet-calc: " << e.what() << "; see trebuchet-calc --help\n";
-    return exit_code(ErrorKind::usage);
-  }
-  try {
-    return run(options);
-  } catch (const Error& e) {
-    std::cerr << "trebuchet-calc: " << e.what() << "\n";
-    return exit_code(e.kind());
-  }
+  return run_program(app, argc, argv, exit_code(ErrorKind::usage), [&] { return run(options); }, [](const Error& e) { return exit_code(e.kind()); });
 }

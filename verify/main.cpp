@@ -14,6 +14,7 @@
 #include "trebuchet/capacity_fit.hpp"
 #include "trebuchet/design_input.hpp"
 #include "trebuchet/error.hpp"
+#include "trebuchet/program.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/units.hpp"
 #include "trebuchet/verification.hpp"
@@ -223,19 +224,5 @@ int main(int argc, char** argv) {
   app.add_option("--stepper", o.integrator.stepper, "GSL odeiv2 stepper: " + stepper_names())->capture_default_str();
   app.add_option("--rtol", o.rtol, "relative tolerance per step (default 1e-12)");
   app.add_option("--atol", o.atol, "absolute tolerance per step, scaled units (default 1e-13)");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp&) {
-    std::cout << app.help();
-    return 0;
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "trebuchet-verify: " << e.what() << "; see trebuchet-verify --help\n";
-    return exit_bad_input;
-  }
-  try {
-    return run(o);
-  } catch (const Error& e) {
-    std::cerr << "trebuchet-verify: " << e.what() << "\n";
-    return exit_code_of(e);
-  }
+  return run_program(app, argc, argv, exit_bad_input, [&] { return run(o); }, exit_code_of);
 }
