@@ -4,6 +4,7 @@
 // failure (docs/verifier.md).
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -16,6 +17,8 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/program.hpp"
 #include "trebuchet/format.hpp"
+#include "trebuchet/optimizer.hpp"
+#include "trebuchet/request.hpp"
 #include "trebuchet/units.hpp"
 #include "trebuchet/verification.hpp"
 #include "trebuchet/verification_report.hpp"
@@ -41,6 +44,7 @@ struct Options {
   IntegratorSettings integrator;
   std::string rtol, atol;
   bool fit = false;
+  bool optimize = false;
 };
 
 const std::pair<const char*, UnitDimension> engine_keys[] = {
@@ -125,6 +129,50 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
   return out;
 }
 
+// --optimize: the ab-initio optimum for the capacity, one per start (branch).
+int run_optimizer(const Options& o, const ShotSettings& settings) {
+  if (o.R.empty() || o.T.empty()) throw Error(ErrorKind::usage, "--optimize needs a capacity; give --R and --T, e.g. --R 425m --T 224kJ");
+  if (!o.input.empty()) throw Error(ErrorKind::usage, "--optimize designs the engine itself; drop the input file");
+  OptimizeRequest request;
+  request.R = parse_positive(o.R, UnitDimension::length, "--R");
+  request.T = parse_positive(o.T, UnitDimension::energy, "--T");
+  request.theta_i_deg = o.theta.empty() ? 30 : parse_theta(o.theta, "--theta");
+  request.F = o.engine_flags.at("F").empty() ? 2.0 / 3 : parse_positive(o.engine_flags.at("F"), UnitDimension::dimensionless, "--F");
+  request.material.g = settings.g;
+  request.settings = settings;
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<Optimum> optima = optimize(request);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  nlohmann::ordered_json all = nlohmann::ordered_json::array();
+  for (const Optimum& optimum : optima) {
+    const Engine& e = optimum.fit.engine;
+    nlohmann::ordered_json design = engine_json(e);
+    design["Lb"] = beam_length(e);
+    design["H"] = pivot_height(e);
+    design["l"] = optimum.shape.l;
+    design["l4"] = optimum.shape.l4;
+    design["mu"] = e.m / e.M;
+    design["mu_b"] = optimum.shape.mu_b;
+    design["start"] = optimum.start;
+    design["simulations"] = optimum.simulations;
+    design["iterations"] = optimum.iterations;
+    design["wall_time_s"] = seconds;
+    nlohmann::ordered_json shot = verification_json(optimum.fit.verification, std::nullopt);
+    for (const auto& [key, value] : shot.items()) design[key] = value;
+    all.push_back(design);
+    if (o.format == "table")
+      std::cout << "optimum from the " << optimum.start << " start (" << optimum.simulations << " shots, " << optimum.iterations
+                << " simplex iterations):\n  Lb = " << format_significant(beam_length(e), 4) << " m, H = " << format_significant(pivot_height(e), 4)
+                << " m, L1 = " << format_significant(e.L1, 4) << " m, L2 = " << format_significant(e.L2, 4) << " m, L3 = " << format_significant(e.L3, 4)
+                << " m, L4 = " << format_significant(e.L4, 4) << " m\n  M = " << format_significant(e.M, 4) << " kg, m = " << format_significant(e.m, 4)
+                << " kg, mb = " << format_significant(e.mb, 4) << " kg, D = " << format_significant(e.D, 3) << " m\n"
+                << verification_table(optimum.fit.verification, std::nullopt) << "\n";
+  }
+  if (o.format == "json") std::cout << all.dump(2) << "\n";
+  else std::cout << "wall time " << format_significant(seconds, 3) << " s\n";
+  return exit_pass;
+}
+
 int run(const Options& o) {
   if (o.format != "table" && o.format != "json")
     throw Error(ErrorKind::usage, "--format: '" + o.format + "' is not a format; use table or json");
@@ -141,6 +189,7 @@ int run(const Options& o) {
   settings.quality.n = parse_value(o.n, UnitDimension::dimensionless, "--n");
   if (!(settings.quality.n >= 0)) throw Error(ErrorKind::bad_number, "--n: '" + o.n + "' must be 0 or more (eq:Q_n)");
   const double tolerance = parse_positive(o.tolerance, UnitDimension::dimensionless, "--tol");
+  if (o.optimize) return run_optimizer(o, settings);
 
   const bool has_engine_flags = !o.theta.empty() || std::any_of(o.engine_flags.begin(), o.engine_flags.end(),
                                                                  [](const auto& kv) { return !kv.second.empty(); });
@@ -215,6 +264,7 @@ int main(int argc, char** argv) {
   app.add_option("--R", o.R, "predicted range to check, or the range to --fit");
   app.add_option("--T", o.T, "predicted energy to check, or the energy to --fit");
   app.add_option("--tol", o.tolerance, "relative tolerance on the predicted R and T")->capture_default_str();
+  app.add_flag("--optimize", o.optimize, "find the ab-initio optimum for --R and --T at --theta and --F (section 5)");
   app.add_flag("--fit", o.fit, "keep the design's shape (l, l4, mu_b, theta_i, F); fit mu and the size to --R and --T");
   app.add_option("--target-level", o.target_level, "target height relative to the engine's base, e.g. -54m")->capture_default_str();
   app.add_option("--quality", o.quality, "what the release maximises: Q (eq:Q, eq:Q_n), eps (appendix B) or range (Denny)")->capture_default_str();
