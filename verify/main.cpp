@@ -10,7 +10,6 @@
 #include <iterator>
 #include <map>
 #include <optional>
-#include <sstream>
 
 #include "trebuchet/capacity_fit.hpp"
 #include "trebuchet/design_input.hpp"
@@ -98,6 +97,7 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
   Engine engine = in.engine;
   std::optional<CapacityCheck> check;
   nlohmann::ordered_json fitted;
+  std::string fitted_table;
   if (o.fit) {
     if (!in.R) throw Error(ErrorKind::usage, "--fit needs a capacity; give --R and --T, or \"R\" and \"T\" in the input");
     Material material;
@@ -106,6 +106,7 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
     engine = fit.engine;
     fitted = engine_json(engine);
     fitted["simulations"] = fit.simulations;
+    fitted_table = "fitted engine (" + std::to_string(fit.simulations) + " shots):\n" + engine_table(engine);
   }
   std::vector<TracePoint> trace;
   const Verification v = verify_engine(engine, settings, o.series.empty() ? nullptr : &trace);
@@ -114,11 +115,7 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
   out.table = verification_table(v, check);
   if (o.fit) {
     out.json["engine"] = fitted;
-    std::ostringstream lines;
-    lines << "fitted engine (" << fitted["simulations"].get<int>() << " shots): ";
-    for (const char* key : {"L1", "L2", "L3", "L4", "D"}) lines << key << " = " << format_significant(fitted[key].get<double>(), 5) << " m  ";
-    for (const char* key : {"M", "m", "mb"}) lines << key << " = " << format_significant(fitted[key].get<double>(), 5) << " kg  ";
-    out.table = lines.str() + "\n" + out.table;
+    out.table = fitted_table + out.table;
   }
   if (!o.series.empty()) {
     std::ofstream file(o.series);
@@ -162,11 +159,7 @@ int run_optimizer(const Options& o, const ShotSettings& settings) {
     all.push_back(design);
     if (o.format == "table")
       std::cout << "optimum from the " << optimum.start << " start (" << optimum.simulations << " shots, " << optimum.iterations
-                << " simplex iterations):\n  Lb = " << format_significant(beam_length(e), 4) << " m, H = " << format_significant(pivot_height(e), 4)
-                << " m, L1 = " << format_significant(e.L1, 4) << " m, L2 = " << format_significant(e.L2, 4) << " m, L3 = " << format_significant(e.L3, 4)
-                << " m, L4 = " << format_significant(e.L4, 4) << " m\n  M = " << format_significant(e.M, 4) << " kg, m = " << format_significant(e.m, 4)
-                << " kg, mb = " << format_significant(e.mb, 4) << " kg, D = " << format_significant(e.D, 3) << " m\n"
-                << verification_table(optimum.fit.verification, std::nullopt) << "\n";
+                << " simplex iterations):\n" << engine_table(e) << verification_table(optimum.fit.verification, std::nullopt) << "\n";
   }
   if (o.format == "json") std::cout << all.dump(2) << "\n";
   else std::cout << "wall time " << format_significant(seconds, 3) << " s\n";

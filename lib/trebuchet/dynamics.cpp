@@ -13,6 +13,11 @@ double ScaledEngine::beam_inertia() const { return mu_b * (l * l - l + 1) / 3; }
 
 double ScaledEngine::energy_drop() const { return (1 - mu_b * (l - 1) / 2) * (1 + std::cos(theta_i)); }
 
+double vacuum_range(Vec2 position, Vec2 velocity, double drop, double g) {
+  const double flight = (velocity.y + std::sqrt(velocity.y * velocity.y + 2 * g * drop)) / g;
+  return -(position.x + velocity.x * flight);
+}
+
 double trough_sin_phi(const ScaledEngine& e, double theta) { return (std::cos(e.theta_i) - std::cos(theta)) / e.l4; }
 
 double complete_trough_state(const ScaledEngine& e, State& s) {

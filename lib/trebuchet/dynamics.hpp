@@ -51,6 +51,11 @@ struct Snapshot {
   double energy = 0;               ///< kinetic + potential, scaled; conserved
 };
 
+/// Phase III in vacuum: the horizontal distance from the pivot, toward the target (-x), to
+/// where a projectile released at `position` with `velocity` lands `drop` below its release
+/// height. Units consistent with g (scaled: g = 1).
+double vacuum_range(Vec2 position, Vec2 velocity, double drop, double g);
+
 /// sin phi in the trough from eq:EOM_I_3: cos th + l4 sin phi = cos th_i.
 double trough_sin_phi(const ScaledEngine& engine, double theta);
 

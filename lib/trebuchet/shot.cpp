@@ -220,7 +220,8 @@ class PhaseRecord {
 
   // The state at `time`, integrated anew from the last sample at or before it.
   OdeVector y_exact_at(double time) const {
-    return integrator_.at(samples_[base_of(time)].t, samples_[base_of(time)].y, time);
+    const Sample& base = samples_[base_of(time)];
+    return integrator_.at(base.t, base.y, time);
   }
 
   // The running extremes over [0, time], without the value at `time` itself.
@@ -233,10 +234,11 @@ class PhaseRecord {
   }
 
  private:
+  // The last sample at or before `time` (the first one for earlier times); samples are in time order.
   std::size_t base_of(double time) const {
-    std::size_t base = 0;
-    while (base + 1 < samples_.size() && samples_[base + 1].t <= time) ++base;
-    return base;
+    const auto after = std::upper_bound(samples_.begin() + 1, samples_.end(), time,
+                                        [](double value, const Sample& sample) { return value < sample.t; });
+    return static_cast<std::size_t>(after - samples_.begin()) - 1;
   }
 
   ForceValues forces_at(double time) const {
@@ -290,10 +292,7 @@ ReleasePoint release_point(const ScaledEngine& e, const Quality& quality, double
   r.velocity = snap.projectile_velocity;
   r.height = e.l * std::cos(e.theta_i) + r.position.y;
   const double vx = r.velocity.x, vy = r.velocity.y;
-  if (vx < 0 && r.height >= 0) {  // toward the target, -x; vacuum flight to level 0 (g = 1 scaled)
-    const double flight = vy + std::sqrt(vy * vy + 2 * r.height);
-    r.range = -(r.position.x + vx * flight);
-  }
+  if (vx < 0 && r.height >= 0) r.range = vacuum_range(r.position, r.velocity, r.height, 1);  // toward the target, level 0
   r.energy_at_target = e.mu * (0.5 * (vx * vx + vy * vy) + r.height);  // eq:T
   r.efficiency = r.energy_at_target / e.energy_drop();                  // eq:Aux
   r.sling_perpendicular_max = extremes.max[0];

@@ -16,10 +16,8 @@ Verification verify_engine(const Engine& engine, const ShotSettings& settings, s
   out.h = r.height * L2;
   out.x = r.position.x * L2;
   out.A_deg = std::atan2(vy, -vx) * 180 / M_PI;
-  // Vacuum flight from the release to the target level (toward -x).
-  const double drop = out.h - settings.target_level;
-  const double flight = (vy + std::sqrt(vy * vy + 2 * g * drop)) / g;
-  out.R = -(out.x + vx * flight);
+  const double drop = out.h - settings.target_level;  // release to target level [m]
+  out.R = vacuum_range({out.x, 0}, {vx, vy}, drop, g);
   out.T = 0.5 * engine.m * out.v * out.v + engine.m * g * drop;  // eq:T, measured at the target
   out.eps = r.efficiency;
   out.Q = r.quality;

@@ -79,6 +79,15 @@ nlohmann::ordered_json engine_json(const Engine& e) {
   return out;
 }
 
+std::string engine_table(const Engine& e) {
+  auto sig = [](double x) { return format_significant(x, 4); };
+  std::ostringstream out;
+  out << "  Lb = " << sig(beam_length(e)) << " m, H = " << sig(pivot_height(e)) << " m, L1 = " << sig(e.L1) << " m, L2 = " << sig(e.L2)
+      << " m, L3 = " << sig(e.L3) << " m, L4 = " << sig(e.L4) << " m\n"
+      << "  M = " << sig(e.M) << " kg, m = " << sig(e.m) << " kg, mb = " << sig(e.mb) << " kg, D = " << format_significant(e.D, 3) << " m\n";
+  return out.str();
+}
+
 std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine, double g) {
   const ScaledEngine scaled = ScaledEngine::from(engine);
   const double time_unit = std::sqrt(engine.L2 / g);           // section 3 [s]

@@ -35,6 +35,9 @@ std::string verification_table(const Verification& v, const std::optional<Capaci
 /// The engine's parameters under the calculator's JSON keys (L1 ... mb, theta_i_deg, F).
 nlohmann::ordered_json engine_json(const Engine& engine);
 
+/// Two indented lines with units: Lb, H and the lengths; the masses and D.
+std::string engine_table(const Engine& engine);
+
 /// One CSV row per trace point: phase, time [s], angles [deg], angular speeds [rad/s],
 /// forces (F_S_perp/(m g), F_R and its components/(M g), F_H/(M g), normal/(m g)),
 /// energy [J] and its drift relative to Delta U (in phase III, from the energy at release,
