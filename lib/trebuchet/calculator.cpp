@@ -391,13 +391,16 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
   // The constants of tab:CPNC reproduce the ab-initio optimum to about 1 % (docs/verifier.md);
   // the inversion multiplies that, and any error of the givens, by the amplification. Above
   // 50 the capacity is uncertain by more than half and the pair is refused; above 10, warned.
-  const std::string conditioning = "a 1 % change of " + pair() + " moves R or T by up to " +
-                                   format_significant(chosen.amplification, 2) + " % (amplification, eq:ZiZj_RT)";
+  // The message is built only when it is printed: this is the calculator's hot path.
+  auto conditioning = [&] {
+    return "a 1 % change of " + pair() + " moves R or T by up to " + format_significant(chosen.amplification, 2) +
+           " % (amplification, eq:ZiZj_RT)";
+  };
   if (chosen.amplification > max_amplification)
-    throw Error(ErrorKind::given_count, "the pair " + pair() + " barely fixes the capacity: " + conditioning +
+    throw Error(ErrorKind::given_count, "the pair " + pair() + " barely fixes the capacity: " + conditioning() +
                                             ", above the limit of " + format_significant(max_amplification, 2) +
                                             "; give a better-conditioned pair such as R and m, or M and m");
-  if (chosen.amplification > warn_amplification) result.warnings.push_back("ill-conditioned pair: " + conditioning);
+  if (chosen.amplification > warn_amplification) result.warnings.push_back("ill-conditioned pair: " + conditioning());
 
   if (segment.branch != Branch::none) {
     double overlap_lo = -std::numeric_limits<double>::infinity(), overlap_hi = -overlap_lo;
