@@ -18,7 +18,9 @@ do for [design in "alcala_ca denny_standard large_eff_l17"] {
          using (strcol(1) eq "shot" && strcol(2) eq design && strcol(3) eq s && strcol(5) ne "" ? $5 : NaN):(err($6,$7,$8) > 0 ? err($6,$7,$8) : 1e-13) \
          with linespoints title s, \
        "docs/work_precision.csv" using (strcol(1) eq "calculator" && ((design eq "alcala_ca" && strstrt(strcol(2), "alcala")) || (design eq "denny_standard" && strstrt(strcol(2), "denny"))) ? $5 : NaN):(err($6,$7,0)) \
-         with points pt 7 ps 1.5 lc rgb "black" title "calculator"
+         with points pt 7 ps 1.5 lc rgb "black" title "calculator", \
+       "docs/work_precision.csv" using (strcol(1) eq "optimizer" && ((design eq "alcala_ca" && strstrt(strcol(2), "alcala")) || (design eq "denny_standard" && strstrt(strcol(2), "denny"))) ? $5 : NaN):(err($6,$7,0) > 0 ? err($6,$7,0) : 1e-13) \
+         with points pt 5 ps 1.5 lc rgb "red" title "ab-initio optimum"
 }
 unset multiplot
 

@@ -1,6 +1,6 @@
 // Work-precision of the verifier: for three designs, every GSL odeiv2 stepper the shot can use,
 // at tolerances 1e-3 ... 1e-13, the median wall time of a verified shot and its error in R, T,
-// eps and Q against a reference. Also the calculator as a point, and the cost of a shot against
+// eps and Q against a reference. Also the calculator and the optimizer as points, and the cost of a shot against
 // the stiffness l. Writes CSV to stdout; scripts/work-precision.sh turns it into docs/ charts.
 // Usage: bench-shot [seconds_per_point]
 #include <algorithm>
@@ -14,6 +14,7 @@
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/capacity_fit.hpp"
 #include "trebuchet/error.hpp"
+#include "trebuchet/optimizer.hpp"
 #include "trebuchet/verification.hpp"
 
 using namespace trebuchet;
@@ -122,6 +123,17 @@ void calculator_point(const char* name, double R, double T, double budget) {
   std::printf("calculator,%s,tab:CPNC,,%.4e,%.3e,%.3e,,,,\n", name, seconds, relative(v.R, R), relative(v.T, T));
 }
 
+// The ab-initio optimum as a point: the wall time of one optimisation for the capacity, and
+// its error as the deviation of the verified capacity from the requested one.
+void optimizer_point(const char* name, double R, double T, double F, double budget) {
+  OptimizeRequest request;
+  request.R = R, request.T = T, request.F = F;
+  const Optimum best = optimize(request).front();
+  const double seconds = median_seconds([&] { optimize(request); }, budget);
+  std::printf("optimizer,%s,nmsimplex2,,%.4e,%.3e,%.3e,,,%d,Q=%.5g\n", name, seconds, relative(best.fit.verification.R, R),
+              relative(best.fit.verification.T, T), best.simulations, best.objective);
+}
+
 // Cost against stiffness: the small-l4 shape of tab:Large_Eff with l from 4 to 60, at default
 // settings. Appendix B: the beam rings at omega = {L/(L+1) I_P}^(-1/2) (scaled).
 void stiffness(double budget) {
@@ -147,6 +159,8 @@ int main(int argc, char** argv) {
   std::printf("kind,design,method,tolerance,seconds,err_R,err_T,err_eps,err_Q,energy_drift_or_steps,note\n");
   calculator_point("alcala_ca capacity 150m 40.45kJ", 150, 40454.8, budget);
   calculator_point("denny capacity 425m 224kJ", 425, 224e3, budget);
+  optimizer_point("alcala_ca capacity 150m 40.45kJ", 150, 40454.8, 2.0 / 3, budget);
+  optimizer_point("denny capacity 425m 224kJ", 425, 224e3, 2.0 / 3, budget);
   work_precision({"alcala_ca", alcala_ca(), Quality{}}, budget);
   work_precision({"denny_standard", denny_standard(), Quality{}}, budget);
   work_precision(large_eff_17(), budget);
