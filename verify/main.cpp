@@ -10,6 +10,8 @@
 #include <iterator>
 #include <map>
 #include <optional>
+#include <thread>
+#include <unistd.h>
 
 #include "trebuchet/capacity_fit.hpp"
 #include "trebuchet/design_input.hpp"
@@ -18,6 +20,8 @@
 #include "trebuchet/format.hpp"
 #include "trebuchet/optimizer.hpp"
 #include "trebuchet/request.hpp"
+#include "trebuchet/sweep.hpp"
+#include "trebuchet/table_derivation.hpp"
 #include "trebuchet/units.hpp"
 #include "trebuchet/verification.hpp"
 #include "trebuchet/verification_report.hpp"
@@ -44,6 +48,11 @@ struct Options {
   std::string rtol, atol;
   bool fit = false;
   bool optimize = false;
+  bool derive_table = false;
+  std::string X_grid = "-0.55:0.55:0.05";
+  int threads = std::max(1u, std::thread::hardware_concurrency());
+  std::string shard;
+  std::vector<std::string> merge;
 };
 
 const std::pair<const char*, UnitDimension> engine_keys[] = {
@@ -62,7 +71,9 @@ nlohmann::json design_from_flags(const Options& o) {
   return design;
 }
 
-nlohmann::json read_input(const std::string& path) {
+// The JSON of a file, or of stdin for "-"; `expected` says what it should hold, for messages.
+template <class Json>
+Json read_json(const std::string& path, const std::string& expected) {
   std::string text;
   if (path == "-") {
     text.assign(std::istreambuf_iterator<char>(std::cin), {});
@@ -72,15 +83,15 @@ nlohmann::json read_input(const std::string& path) {
     text.assign(std::istreambuf_iterator<char>(file), {});
   }
   const std::string source = path == "-" ? std::string("stdin") : "'" + path + "'";
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
-    throw Error(ErrorKind::usage, source + " is empty; give a design object or an array of them");
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw Error(ErrorKind::usage, source + " is empty; give " + expected);
   try {
-    return nlohmann::json::parse(text);
+    return Json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
-    throw Error(ErrorKind::usage, source + " is not valid JSON (" + e.what() +
-                                      "); give a design object or an array of them");
+    throw Error(ErrorKind::usage, source + " is not valid JSON (" + e.what() + "); give " + expected);
   }
 }
+
+nlohmann::json read_input(const std::string& path) { return read_json<nlohmann::json>(path, "a design object or an array of them"); }
 
 struct Outcome {
   nlohmann::ordered_json json;
@@ -166,6 +177,61 @@ int run_optimizer(const Options& o, const ShotSettings& settings) {
   return exit_pass;
 }
 
+// Prints a table or sweep part; a point without an optimum is named on stderr and gives exit 3.
+int print_table(const nlohmann::ordered_json& table) {
+  std::cout << table.dump(2) << "\n";
+  const std::vector<double> failed = failed_points(table);
+  for (double X : failed) std::cerr << "trebuchet-verify: no optimum at X = " << format_number(X) << "; its reason is in the output, the fit used the other points\n";
+  return failed.empty() ? exit_pass : exit_numerical;
+}
+
+// A progress bar on stderr, drawn only when stderr is a terminal.
+std::function<void(int, int)> progress_bar() {
+  if (!isatty(STDERR_FILENO)) return {};
+  return [](int done, int total) {
+    const int width = 30, filled = width * done / total;
+    std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, ' ') << "] " << done << "/" << total << " X points"
+              << (done == total ? "\n" : "") << std::flush;
+  };
+}
+
+// --derive-table: optimise along X for one block; the table, or with --shard a part to --merge.
+int run_derive_table(const Options& o, const ShotSettings& settings) {
+  if (!o.input.empty()) throw Error(ErrorKind::usage, "--derive-table optimises its own engines; drop the input file");
+  SweepSpec spec;
+  spec.theta_i_deg = o.theta.empty() ? 30 : parse_theta(o.theta, "--theta");
+  spec.F = o.engine_flags.at("F").empty() ? 2.0 / 3 : parse_positive(o.engine_flags.at("F"), UnitDimension::dimensionless, "--F");
+  spec.material.g = settings.g;
+  spec.quality = settings.quality;
+  char c1 = 0, c2 = 0, rest = 0;
+  if (std::sscanf(o.X_grid.c_str(), "%lf%c%lf%c%lf%c", &spec.X_from, &c1, &spec.X_to, &c2, &spec.X_step, &rest) != 5 || c1 != ':' || c2 != ':')
+    throw Error(ErrorKind::usage, "--X: '" + o.X_grid + "' is not from:to:step; e.g. --X -0.55:0.55:0.05");
+  if (o.threads < 1) throw Error(ErrorKind::usage, "--threads: " + std::to_string(o.threads) + " must be 1 or more");
+  const Shard shard = o.shard.empty() ? Shard{} : parse_shard(o.shard);
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<SweepPoint> points = run_sweep(spec, shard, o.threads, progress_bar());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  int shots = 0;
+  for (const SweepPoint& p : points) shots += p.simulations;
+  std::cerr << "trebuchet-verify: " << points.size() << " X points, " << shots << " shots, " << format_significant(seconds, 3) << " s on "
+            << o.threads << " threads\n";
+  nlohmann::ordered_json part = sweep_json(spec, shard, points);
+  if (!o.shard.empty()) {
+    std::cout << part.dump(2) << "\n";
+    return std::any_of(points.begin(), points.end(), [](const SweepPoint& p) { return !p.error.empty(); }) ? exit_numerical : exit_pass;
+  }
+  return print_table(derive_table({{"the sweep", part}}));
+}
+
+// --merge: sweep parts into one table.
+int run_merge(const Options& o) {
+  std::vector<SweepPart> parts;
+  for (const std::string& path : o.merge) {
+    parts.push_back({"'" + path + "'", read_json<nlohmann::ordered_json>(path, "a part written by --derive-table --shard k/N")});
+  }
+  return print_table(derive_table(parts));
+}
+
 int run(const Options& o) {
   if (o.format != "table" && o.format != "json")
     throw Error(ErrorKind::usage, "--format: '" + o.format + "' is not a format; use table or json");
@@ -175,14 +241,13 @@ int run(const Options& o) {
   if (!o.atol.empty()) settings.integrator.atol = parse_positive(o.atol, UnitDimension::dimensionless, "--atol");
   if (!o.g.empty()) settings.g = parse_positive(o.g, UnitDimension::acceleration, "--g");
   settings.target_level = parse_value(o.target_level, UnitDimension::length, "--target-level");
-  if (o.quality == "eps") settings.quality.release = Quality::Release::efficiency;
-  else if (o.quality == "range") settings.quality.release = Quality::Release::range;
-  else if (o.quality != "Q")
-    throw Error(ErrorKind::usage, "--quality: '" + o.quality + "' is not a release criterion; use Q (eq:Q, eq:Q_n with --n), eps or range");
+  settings.quality.release = parse_release(o.quality);
   settings.quality.n = parse_value(o.n, UnitDimension::dimensionless, "--n");
   if (!(settings.quality.n >= 0)) throw Error(ErrorKind::bad_number, "--n: '" + o.n + "' must be 0 or more (eq:Q_n)");
   const double tolerance = parse_positive(o.tolerance, UnitDimension::dimensionless, "--tol");
   if (o.optimize) return run_optimizer(o, settings);
+  if (o.derive_table) return run_derive_table(o, settings);
+  if (!o.merge.empty()) return run_merge(o);
 
   const bool has_engine_flags = !o.theta.empty() || std::any_of(o.engine_flags.begin(), o.engine_flags.end(),
                                                                  [](const auto& kv) { return !kv.second.empty(); });
@@ -258,6 +323,11 @@ int main(int argc, char** argv) {
   app.add_option("--T", o.T, "predicted energy to check, or the energy to --fit");
   app.add_option("--tol", o.tolerance, "relative tolerance on the predicted R and T")->capture_default_str();
   app.add_flag("--optimize", o.optimize, "find the ab-initio optimum for --R and --T at --theta and --F (section 5)");
+  app.add_flag("--derive-table", o.derive_table, "re-derive tab:CPNC for --theta and --F: optimise along --X and fit eq:f_ZX (JSON for the calculator's --table)");
+  app.add_option("--X", o.X_grid, "X points of --derive-table, from:to:step (eq:Xi)")->capture_default_str();
+  app.add_option("--threads", o.threads, "threads for --derive-table (default: the cores)");
+  app.add_option("--shard", o.shard, "with --derive-table: run part k of N of the X points, e.g. 2/8, for --merge");
+  app.add_option("--merge", o.merge, "join the parts written by --derive-table --shard into one table");
   app.add_flag("--fit", o.fit, "keep the design's shape (l, l4, mu_b, theta_i, F); fit mu and the size to --R and --T");
   app.add_option("--target-level", o.target_level, "target height relative to the engine's base, e.g. -54m")->capture_default_str();
   app.add_option("--quality", o.quality, "what the release maximises: Q (eq:Q, eq:Q_n), eps (appendix B) or range (Denny)")->capture_default_str();

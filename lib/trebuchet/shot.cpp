@@ -454,4 +454,19 @@ ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const In
   return result;
 }
 
+std::string release_name(Quality::Release release) {
+  switch (release) {
+    case Quality::Release::quality: return "Q";
+    case Quality::Release::efficiency: return "eps";
+    case Quality::Release::range: return "range";
+  }
+  return "?";
+}
+
+Quality::Release parse_release(const std::string& name) {
+  for (Quality::Release r : {Quality::Release::quality, Quality::Release::efficiency, Quality::Release::range})
+    if (name == release_name(r)) return r;
+  throw Error(ErrorKind::usage, "--quality: '" + name + "' is not a release criterion; use Q (eq:Q, eq:Q_n with --n), eps or range");
+}
+
 }  // namespace trebuchet

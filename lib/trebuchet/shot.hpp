@@ -32,6 +32,12 @@ struct Quality {
   double n = 1;  ///< exponent of eps in eq:Q_n; Q is reported with it whatever the release
 };
 
+/// "Q", "eps" or "range": the names --quality takes.
+std::string release_name(Quality::Release release);
+
+/// The release criterion of a --quality name; Error(usage) names the text and the choices.
+Quality::Release parse_release(const std::string& name);
+
 /// The projectile's state and the engine's figures at one moment of phase II, scaled.
 struct ReleasePoint {
   double t = 0;                 ///< scaled time

@@ -16,6 +16,7 @@ Verification verify_engine(const Engine& engine, const ShotSettings& settings, s
   out.h = r.height * L2;
   out.x = r.position.x * L2;
   out.A_deg = std::atan2(vy, -vx) * 180 / M_PI;
+  out.theta_release_deg = r.state.theta * 180 / M_PI;
   const double drop = out.h - settings.target_level;  // release to target level [m]
   out.R = vacuum_range({out.x, 0}, {vx, vy}, drop, g);
   out.T = 0.5 * engine.m * out.v * out.v + engine.m * g * drop;  // eq:T, measured at the target

@@ -25,6 +25,7 @@ struct Verification {
   double h = 0;            ///< release height above the base [m]
   double x = 0;            ///< release position along the throw, from the pivot: > 0 behind it [m]
   double A_deg = 0;        ///< initial climb [deg]
+  double theta_release_deg = 0;  ///< beam angle at release from the downward vertical [deg]; 180 is upright (section 6.2: below it, lower branch)
   double t_release = 0;    ///< [s]
   double t_liftoff = 0;    ///< [s]
   double FS_perp_mg = 0;   ///< largest perpendicular sling force on the beam / (m g)
