@@ -21,6 +21,11 @@ struct Start {
 // The calculator's optimum for the capacity on each branch it has, as starting shapes.
 std::vector<Start> starts_for(const OptimizeRequest& r) {
   std::vector<Start> starts;
+  for (EngineShape shape : r.starts) {
+    shape.theta_i_deg = r.theta_i_deg, shape.F = r.F;
+    starts.push_back({"given shape " + std::to_string(starts.size() + 1), shape});
+  }
+  if (!starts.empty()) return starts;
   for (BranchChoice branch : {BranchChoice::lower, BranchChoice::upper, BranchChoice::automatic}) {
     DesignRequest d;
     d.first = {Quantity::R, r.R};

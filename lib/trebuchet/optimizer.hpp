@@ -17,6 +17,7 @@ struct OptimizeRequest {
   Material material{};
   ShotSettings settings{};      ///< quality (Q, Q_n or Q_eps) and integrator
   double shape_tolerance = 1e-4;  ///< simplex size in log shape at which a search stops
+  std::vector<EngineShape> starts;  ///< when given, searches start here instead of at the calculator's designs
 };
 
 struct Optimum {
@@ -29,9 +30,9 @@ struct Optimum {
   int iterations = 0;           ///< simplex iterations
 };
 
-/// One search per start; each result delivers (R, T) to 1e-6. Starts are the calculator's
-/// designs for the capacity (both branches where tab:CPNC has two) when it covers it, else a
-/// generic shape. Throws Error(out_of_range) when no start can deliver the capacity.
+/// One search per start; each result delivers (R, T) to 1e-6. Starts are the request's, else the
+/// calculator's designs for the capacity (both branches where tab:CPNC has two) when it covers
+/// it, else a generic shape. Throws Error(out_of_range) when no start can deliver the capacity.
 std::vector<Optimum> optimize(const OptimizeRequest& request);
 
 }  // namespace trebuchet

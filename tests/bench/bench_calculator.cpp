@@ -9,8 +9,10 @@
 #include <vector>
 
 #include "trebuchet/calculator.hpp"
+#include "timing.hpp"
 
 using namespace trebuchet;
+using trebuchet::bench::median;
 
 namespace {
 
@@ -29,11 +31,6 @@ std::vector<DesignRequest> requests(std::size_t count, Quantity second) {
     list.push_back(r);
   }
   return list;
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
 }
 
 void measure(const char* label, const std::vector<DesignRequest>& list, int runs) {

@@ -16,30 +16,12 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/optimizer.hpp"
 #include "trebuchet/verification.hpp"
+#include "timing.hpp"
 
 using namespace trebuchet;
+using namespace trebuchet::bench;
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
-
-// Repeats `work` until `budget` seconds have passed (at least 3, at most 41 times); median [s].
-template <class Work>
-double median_seconds(Work work, double budget) {
-  std::vector<double> times;
-  const auto start = Clock::now();
-  while (times.size() < 3 || (times.size() < 41 && std::chrono::duration<double>(Clock::now() - start).count() < budget)) {
-    const auto t0 = Clock::now();
-    work();
-    times.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
-  }
-  return median(times);
-}
 
 struct Design {
   std::string name;
