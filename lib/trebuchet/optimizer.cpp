@@ -8,6 +8,7 @@
 
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/error.hpp"
+#include "trebuchet/gsl_errors.hpp"
 #include "trebuchet/format.hpp"
 
 namespace trebuchet {
@@ -118,7 +119,7 @@ Optimum search_from(const OptimizeRequest& request, const Start& start) {
 }  // namespace
 
 std::vector<Optimum> optimize(const OptimizeRequest& request) {
-  gsl_set_error_handler_off();
+  use_gsl_return_codes();
   std::vector<Optimum> optima;
   std::string reasons;
   for (const Start& start : starts_for(request)) {

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "trebuchet/error.hpp"
+#include "trebuchet/gsl_errors.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/solve_1d.hpp"
 
@@ -345,7 +346,7 @@ std::string stepper_names() { return "rk2, rk4, rkf45, rkck, rk8pd, msadams, rk1
 
 ShotResult simulate_shot(const ScaledEngine& e, const Quality& quality, const IntegratorSettings& settings,
                          std::vector<TracePoint>* trace) {
-  gsl_set_error_handler_off();
+  use_gsl_return_codes();
   if (!(1 - e.mu_b * (e.l - 1) / 2 > 0))
     fail("the beam cannot turn: mu_b (l - 1)/2 = " + format_significant(e.mu_b * (e.l - 1) / 2, 4) +
          " >= 1, its long arm outweighs the counterweight (eq:DU); lighten the beam or shorten L1");

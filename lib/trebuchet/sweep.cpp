@@ -3,7 +3,6 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
-#include <gsl/gsl_errno.h>
 #include <mutex>
 #include <thread>
 
@@ -86,7 +85,6 @@ std::vector<SweepPoint> run_sweep(const SweepSpec& spec, Shard shard, int thread
   std::vector<double> mine;
   for (std::size_t i = shard.k - 1; i < grid.size(); i += shard.n) mine.push_back(grid[i]);
   std::vector<SweepPoint> points(mine.size());
-  gsl_set_error_handler_off();  // process-wide, so set once before the workers start
   // Each worker takes the next unclaimed point and writes only its own slot: the order in
   // which points finish cannot change what is written.
   std::atomic<std::size_t> next{0};
