@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "trebuchet/optimizer.hpp"
+#include "trebuchet/sweep.hpp"
 
 using namespace trebuchet;
 
@@ -40,7 +41,8 @@ TEST_CASE("the optimum for (425 m, 224 kJ) delivers the capacity and beats its s
 TEST_CASE("at X = 0.34 both branch starts meet at one optimum on the border of the branches", "[optimizer][branches]") {
   const double X = 0.34;
   OptimizeRequest request;
-  request.R = 240 * std::exp(5 * X / std::sqrt(26.0)), request.T = 26e3 * std::exp(-X / std::sqrt(26.0));  // eq:XY_RT, Y = 0
+  const AxisCapacity capacity = capacity_on_X_axis(X, 240, 26e3);
+  request.R = capacity.R, request.T = capacity.T;
   request.theta_i_deg = 30, request.F = 1;
   const std::vector<Optimum> optima = optimize(request);
   REQUIRE(optima.size() == 2);

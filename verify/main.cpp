@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <thread>
+#include <tuple>
 #include <unistd.h>
 
 #include "trebuchet/capacity_fit.hpp"
@@ -137,6 +138,12 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
   return out;
 }
 
+// The block of --optimize and --derive-table: --theta (default 30) and --F (default 2/3).
+std::pair<double, double> theta_and_F(const Options& o) {
+  return {o.theta.empty() ? 30 : parse_theta(o.theta, "--theta"),
+          o.engine_flags.at("F").empty() ? 2.0 / 3 : parse_positive(o.engine_flags.at("F"), UnitDimension::dimensionless, "--F")};
+}
+
 // --optimize: the ab-initio optimum for the capacity, one per start (branch).
 int run_optimizer(const Options& o, const ShotSettings& settings) {
   if (o.R.empty() || o.T.empty()) throw Error(ErrorKind::usage, "--optimize needs a capacity; give --R and --T, e.g. --R 425m --T 224kJ");
@@ -144,8 +151,7 @@ int run_optimizer(const Options& o, const ShotSettings& settings) {
   OptimizeRequest request;
   request.R = parse_positive(o.R, UnitDimension::length, "--R");
   request.T = parse_positive(o.T, UnitDimension::energy, "--T");
-  request.theta_i_deg = o.theta.empty() ? 30 : parse_theta(o.theta, "--theta");
-  request.F = o.engine_flags.at("F").empty() ? 2.0 / 3 : parse_positive(o.engine_flags.at("F"), UnitDimension::dimensionless, "--F");
+  std::tie(request.theta_i_deg, request.F) = theta_and_F(o);
   request.material.g = settings.g;
   request.settings = settings;
   const auto start = std::chrono::steady_clock::now();
@@ -177,10 +183,9 @@ int run_optimizer(const Options& o, const ShotSettings& settings) {
   return exit_pass;
 }
 
-// Prints a table or sweep part; a point without an optimum is named on stderr and gives exit 3.
-int print_table(const nlohmann::ordered_json& table) {
-  std::cout << table.dump(2) << "\n";
-  const std::vector<double> failed = failed_points(table);
+// Prints a table or sweep part; each X without an optimum is named on stderr and gives exit 3.
+int print_derived(const nlohmann::ordered_json& json, const std::vector<double>& failed) {
+  std::cout << json.dump(2) << "\n";
   for (double X : failed) std::cerr << "trebuchet-verify: no optimum at X = " << format_number(X) << "; its reason is in the output, the fit used the other points\n";
   return failed.empty() ? exit_pass : exit_numerical;
 }
@@ -199,8 +204,7 @@ std::function<void(int, int)> progress_bar() {
 int run_derive_table(const Options& o, const ShotSettings& settings) {
   if (!o.input.empty()) throw Error(ErrorKind::usage, "--derive-table optimises its own engines; drop the input file");
   SweepSpec spec;
-  spec.theta_i_deg = o.theta.empty() ? 30 : parse_theta(o.theta, "--theta");
-  spec.F = o.engine_flags.at("F").empty() ? 2.0 / 3 : parse_positive(o.engine_flags.at("F"), UnitDimension::dimensionless, "--F");
+  std::tie(spec.theta_i_deg, spec.F) = theta_and_F(o);
   spec.material.g = settings.g;
   spec.quality = settings.quality;
   char c1 = 0, c2 = 0, rest = 0;
@@ -215,12 +219,12 @@ int run_derive_table(const Options& o, const ShotSettings& settings) {
   for (const SweepPoint& p : points) shots += p.simulations;
   std::cerr << "trebuchet-verify: " << points.size() << " X points, " << shots << " shots, " << format_significant(seconds, 3) << " s on "
             << o.threads << " threads\n";
-  nlohmann::ordered_json part = sweep_json(spec, shard, points);
-  if (!o.shard.empty()) {
-    std::cout << part.dump(2) << "\n";
-    return std::any_of(points.begin(), points.end(), [](const SweepPoint& p) { return !p.error.empty(); }) ? exit_numerical : exit_pass;
-  }
-  return print_table(derive_table({{"the sweep", part}}));
+  const nlohmann::ordered_json part = sweep_json(spec, shard, points);
+  const nlohmann::ordered_json out = o.shard.empty() ? derive_table({{"the sweep", part}}) : part;
+  std::vector<double> failed;
+  for (const SweepPoint& p : points)
+    if (!p.error.empty()) failed.push_back(p.X);
+  return print_derived(out, failed);
 }
 
 // --merge: sweep parts into one table.
@@ -229,7 +233,8 @@ int run_merge(const Options& o) {
   for (const std::string& path : o.merge) {
     parts.push_back({"'" + path + "'", read_json<nlohmann::ordered_json>(path, "a part written by --derive-table --shard k/N")});
   }
-  return print_table(derive_table(parts));
+  const nlohmann::ordered_json table = derive_table(parts);
+  return print_derived(table, failed_points(table));
 }
 
 int run(const Options& o) {

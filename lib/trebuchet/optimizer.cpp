@@ -133,4 +133,11 @@ std::vector<Optimum> optimize(const OptimizeRequest& request) {
   return optima;
 }
 
+const Optimum& best_optimum(const std::vector<Optimum>& optima) {
+  const Optimum* best = &optima.front();
+  for (const Optimum& o : optima)
+    if (o.objective > best->objective) best = &o;
+  return *best;
+}
+
 }  // namespace trebuchet

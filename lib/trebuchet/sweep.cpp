@@ -31,6 +31,10 @@ std::vector<double> sweep_grid(const SweepSpec& spec) {
   return grid;
 }
 
+AxisCapacity capacity_on_X_axis(double X, double R0, double T0) {
+  return {R0 * std::exp(5 * X / std::sqrt(26.0)), T0 * std::exp(-X / std::sqrt(26.0))};
+}
+
 Shard parse_shard(const std::string& text) {
   Shard shard;
   char slash = 0, rest = 0;
@@ -45,9 +49,8 @@ namespace {
 SweepPoint optimize_point(const SweepSpec& spec, double X) {
   SweepPoint point;
   point.X = X;
-  // eq:XY_RT inverted at Y = 0: log(R/R0) = 5X/sqrt(26), log(T/T0) = -X/sqrt(26).
-  point.R = spec.R0 * std::exp(5 * X / std::sqrt(26.0));
-  point.T = spec.T0 * std::exp(-X / std::sqrt(26.0));
+  const AxisCapacity capacity = capacity_on_X_axis(X, spec.R0, spec.T0);
+  point.R = capacity.R, point.T = capacity.T;
   OptimizeRequest request;
   request.R = point.R, request.T = point.T;
   request.theta_i_deg = spec.theta_i_deg, request.F = spec.F;
@@ -56,11 +59,7 @@ SweepPoint optimize_point(const SweepSpec& spec, double X) {
   request.settings.quality = spec.quality;
   try {
     const std::vector<Optimum> optima = optimize(request);
-    const Optimum* best = &optima.front();
-    for (const Optimum& o : optima) {
-      if (o.objective > best->objective) best = &o;
-      point.simulations += o.simulations;
-    }
+    for (const Optimum& o : optima) point.simulations += o.simulations;
     // Two starts that meet (shape within 1 %) found one optimum, not two branches.
     for (std::size_t i = 0; i < optima.size(); ++i) {
       bool distinct = true;
@@ -69,9 +68,10 @@ SweepPoint optimize_point(const SweepSpec& spec, double X) {
                                 std::abs(std::log(optima[i].shape.l / optima[j].shape.l)) > 0.01);
       point.optima_found += distinct;
     }
-    point.engine = best->fit.engine;
-    point.shot = best->fit.verification;
-    point.l = best->shape.l, point.l4 = best->shape.l4, point.mu_b = best->shape.mu_b;
+    const Optimum& best = best_optimum(optima);
+    point.engine = best.fit.engine;
+    point.shot = best.fit.verification;
+    point.shape = best.shape;
   } catch (const Error& e) {
     point.error = e.what();
   }
@@ -129,7 +129,7 @@ nlohmann::ordered_json sweep_json(const SweepSpec& spec, Shard shard, const std:
       const Engine& e = p.engine;
       j["Z"] = {{"L1", e.L1}, {"L2", e.L2}, {"L4", e.L4}, {"D", e.D}, {"M", e.M}, {"m", e.m}, {"mb", e.mb}};
       j["L3_m"] = e.L3;
-      j["l"] = p.l, j["l4"] = p.l4, j["mu_b"] = p.mu_b, j["mu"] = e.m / e.M;
+      j["l"] = p.shape.l, j["l4"] = p.shape.l4, j["mu_b"] = p.shape.mu_b, j["mu"] = e.m / e.M;
       j["Q"] = p.shot.Q, j["eps"] = p.shot.eps, j["force_factor"] = p.shot.force_factor;
       j["theta_release_deg"] = p.shot.theta_release_deg;
       j["optima_found"] = p.optima_found;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "trebuchet/capacity_fit.hpp"
 #include "trebuchet/scaling_table.hpp"
 #include "trebuchet/verification.hpp"
 
@@ -27,6 +28,14 @@ struct SweepSpec {
 /// whenever the interval holds it. Throws Error(usage) for a step <= 0 or an empty interval.
 std::vector<double> sweep_grid(const SweepSpec& spec);
 
+/// A capacity on the X axis: eq:XY_RT inverted at Y = 0.
+struct AxisCapacity {
+  double R;  ///< R0 e^{5X/sqrt26} [m]
+  double T;  ///< T0 e^{-X/sqrt26} [J]
+};
+
+AxisCapacity capacity_on_X_axis(double X, double R0, double T0);
+
 /// Part k (1-based) of n: every n-th grid point from the k-th, so that parts cost about the same.
 struct Shard {
   int k = 1, n = 1;
@@ -35,14 +44,14 @@ struct Shard {
 /// Parses "k/N" with 1 <= k <= N; Error(usage) names the text and the fix.
 Shard parse_shard(const std::string& text);
 
-/// The optimum at one X point (R = R0 e^{5X/sqrt26}, T = T0 e^{-X/sqrt26}), or the reason there is none.
+/// The optimum at one X point (capacity_on_X_axis), or the reason there is none.
 struct SweepPoint {
   double X = 0;
   double R = 0, T = 0;          ///< capacity [m], [J]
   std::string error;            ///< empty when the point has an optimum
   Engine engine;                ///< the optimum, fitted to (R, T)
   Verification shot;            ///< its shot at the best release
-  double l = 0, l4 = 0, mu_b = 0;  ///< its shape, scaled
+  EngineShape shape;            ///< its shape, scaled
   int simulations = 0;          ///< shots of the whole search
   int optima_found = 0;         ///< distinct optima from the starts (two where branches compete)
 };

@@ -38,7 +38,7 @@ struct Block {
   nlohmann::ordered_json spec;  // the first part's header
   std::string first_origin;
   std::map<double, nlohmann::ordered_json> points;  // by X
-  std::map<double, std::string> origin_of;
+  std::map<double, std::string> origin_of;          // the part each point came from, for messages
 };
 
 [[noreturn]] void fail(const std::string& where, const std::string& problem) {
@@ -219,11 +219,11 @@ nlohmann::ordered_json derive_table(const std::vector<SweepPart>& parts) {
   const double R0 = table_header.at("R0_m").get<double>();
   for (auto& [key, block] : blocks) {
     const std::string name = block_name(block.spec);
-    for (double X : sweep_grid(spec_of(block.spec)))
+    const std::vector<double> grid = sweep_grid(spec_of(block.spec));
+    for (double X : grid)
       if (!block.points.count(X))
         fail(name, "X = " + format_number(X) + " is missing; merge every shard k/N of the sweep");
-    if (block.points.size() != sweep_grid(spec_of(block.spec)).size())
-      fail(name, "points off the X grid; merge parts of one sweep only");
+    if (block.points.size() != grid.size()) fail(name, "points off the X grid; merge parts of one sweep only");
     out_blocks.push_back(block_json(block, R0));
   }
   table["blocks"] = out_blocks;

@@ -13,6 +13,7 @@
 
 #include "timing.hpp"
 #include "trebuchet/optimizer.hpp"
+#include "trebuchet/sweep.hpp"
 
 using namespace trebuchet;
 using namespace trebuchet::bench;
@@ -28,14 +29,8 @@ struct Case {
 Case on_axis(double X, double theta_i_deg, double F) {
   char name[64];
   std::snprintf(name, sizeof name, "X %+.2f theta %g F %.3g", X, theta_i_deg, F);
-  return {name, 240 * std::exp(5 * X / std::sqrt(26.0)), 26e3 * std::exp(-X / std::sqrt(26.0)), theta_i_deg, F};
-}
-
-const Optimum& best_of(const std::vector<Optimum>& optima) {
-  const Optimum* best = &optima.front();
-  for (const Optimum& o : optima)
-    if (o.objective > best->objective) best = &o;
-  return *best;
+  const AxisCapacity capacity = capacity_on_X_axis(X, 240, 26e3);
+  return {name, capacity.R, capacity.T, theta_i_deg, F};
 }
 
 }  // namespace
@@ -60,7 +55,7 @@ int main(int argc, char** argv) {
       optima = optimize(request);
       times.push_back(seconds_since(start));
     }
-    const Optimum& found = best_of(optima);
+    const Optimum& found = best_optimum(optima);
     int shots = 0;
     for (const Optimum& o : optima) shots += o.simulations;
 

@@ -13,6 +13,7 @@
 #include "trebuchet/capacity_fit.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/optimizer.hpp"
+#include "trebuchet/sweep.hpp"
 
 using namespace trebuchet;
 
@@ -54,13 +55,12 @@ int main(int argc, char** argv) {
       double sum_paper = 0, sum_derived = 0;
       int count = 0, derived_wins = 0;
       for (double X : {-0.5, -0.25, 0.0, 0.25, 0.5}) {
-        const double R = 240 * std::exp(5 * X / std::sqrt(26.0)), T = 26e3 * std::exp(-X / std::sqrt(26.0));  // eq:XY_RT, Y = 0
+        const auto [R, T] = capacity_on_X_axis(X, paper.R0, paper.T0);
         const Scored p = score(paper, R, T, block.theta_i_deg, block.F);
         const Scored d = score(derived, R, T, block.theta_i_deg, block.F);
         OptimizeRequest request;
         request.R = R, request.T = T, request.theta_i_deg = block.theta_i_deg, request.F = block.F;
-        double optimum = 0;
-        for (const Optimum& o : optimize(request)) optimum = std::max(optimum, o.objective);
+        const double optimum = best_optimum(optimize(request)).objective;
         std::printf("%g,%.4f,%+.2f,%.2f,%.0f,%+.4f,%+.4f,%+.4f,%+.4f,%.4f,%.4f,%.4f\n", block.theta_i_deg, block.F, X, R, T, p.R_deviation, p.T_deviation,
                     d.R_deviation, d.T_deviation, 100 * p.Q_fitted, 100 * d.Q_fitted, 100 * optimum);
         sum_paper += p.Q_fitted / optimum, sum_derived += d.Q_fitted / optimum;
