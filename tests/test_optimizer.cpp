@@ -66,3 +66,24 @@ TEST_CASE("at X = 0.34 both branch starts meet at one optimum on the border of t
   CHECK(std::abs(std::log(optima[1].shape.l4 / optima[0].shape.l4)) < 0.01);
   CHECK(std::abs(std::log(optima[1].shape.l / optima[0].shape.l)) < 0.01);
 }
+
+// Section 7 (eq:ExtraScalings): beta2 from 1/300 to 1/200 multiplies masses and energies by 2/3
+// at equal lengths and scaled design. So the optimum for (R, 2T/3) with beta2 = 1/200 must be
+// the optimum for (R, T) with 1/300 with masses times 2/3: the same shape and Q to the search's
+// resolution (simplex size 1e-4 in log shape), lengths and masses to 1e-3.
+TEST_CASE("the optimum follows beta2 as section 7 says", "[optimizer]") {
+  OptimizeRequest stiff;
+  stiff.R = 300, stiff.T = 60e3, stiff.theta_i_deg = 30, stiff.F = 2.0 / 3;
+  OptimizeRequest supple = stiff;
+  supple.material.beta2 = 1.0 / 200;
+  supple.T = stiff.T * 2 / 3;
+  const Optimum a = best_optimum(optimize(stiff));
+  const Optimum b = best_optimum(optimize(supple));
+  std::printf("beta2 1/300: Q %.5f %%, L1 %.4f m, M %.1f kg; beta2 1/200: Q %.5f %%, L1 %.4f m, M %.1f kg (ratio %.5f)\n", 100 * a.objective,
+              a.fit.engine.L1, a.fit.engine.M, 100 * b.objective, b.fit.engine.L1, b.fit.engine.M, b.fit.engine.M / a.fit.engine.M);
+  CHECK(b.objective == Approx(a.objective).epsilon(1e-4));
+  CHECK(b.fit.engine.L1 == Approx(a.fit.engine.L1).epsilon(1e-3));
+  CHECK(b.fit.engine.L4 == Approx(a.fit.engine.L4).epsilon(1e-3));
+  CHECK(b.fit.engine.M == Approx(a.fit.engine.M * 2 / 3).epsilon(1e-3));
+  CHECK(b.fit.engine.m == Approx(a.fit.engine.m * 2 / 3).epsilon(1e-3));
+}

@@ -40,6 +40,7 @@ struct Options {
   std::map<std::string, std::string> engine_flags;  // L1 L2 L3 F L4 M m mb
   std::string theta = "30", g, R, T;
   std::string tolerance = "0.02";
+  std::string beta2;
   std::string target_level = "0";
   std::string format = "table";
   std::string series;
@@ -94,6 +95,15 @@ Json read_json(const std::string& path, const std::string& expected) {
 
 nlohmann::json read_input(const std::string& path) { return read_json<nlohmann::json>(path, "a design object or an array of them"); }
 
+// The material that ties masses to lengths when the program sizes engines (--fit, --optimize,
+// --derive-table): eq:kMkD's wood, --beta2 (default 1/300) and the shot's g.
+Material material_of(const Options& o, const ShotSettings& settings) {
+  Material material;
+  material.g = settings.g;
+  if (!o.beta2.empty()) material.beta2 = parse_positive(o.beta2, UnitDimension::dimensionless, "--beta2");
+  return material;
+}
+
 struct Outcome {
   nlohmann::ordered_json json;
   std::string table;
@@ -112,9 +122,7 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
   std::string fitted_table;
   if (o.fit) {
     if (!in.R) throw Error(ErrorKind::usage, "--fit needs a capacity; give --R and --T, or \"R\" and \"T\" in the input");
-    Material material;
-    material.g = settings.g;
-    const CapacityFit fit = fit_capacity(engine_shape(engine), *in.R, *in.T, material, settings);
+    const CapacityFit fit = fit_capacity(engine_shape(engine), *in.R, *in.T, material_of(o, settings), settings);
     engine = fit.engine;
     fitted = engine_json(engine);
     fitted["simulations"] = fit.simulations;
@@ -152,7 +160,7 @@ int run_optimizer(const Options& o, const ShotSettings& settings) {
   request.R = parse_positive(o.R, UnitDimension::length, "--R");
   request.T = parse_positive(o.T, UnitDimension::energy, "--T");
   std::tie(request.theta_i_deg, request.F) = theta_and_F(o);
-  request.material.g = settings.g;
+  request.material = material_of(o, settings);
   request.settings = settings;
   const auto start = std::chrono::steady_clock::now();
   const std::vector<Optimum> optima = optimize(request);
@@ -205,7 +213,7 @@ int run_derive_table(const Options& o, const ShotSettings& settings) {
   if (!o.input.empty()) throw Error(ErrorKind::usage, "--derive-table optimises its own engines; drop the input file");
   SweepSpec spec;
   std::tie(spec.theta_i_deg, spec.F) = theta_and_F(o);
-  spec.material.g = settings.g;
+  spec.material = material_of(o, settings);
   spec.quality = settings.quality;
   char c1 = 0, c2 = 0, rest = 0;
   if (std::sscanf(o.X_grid.c_str(), "%lf%c%lf%c%lf%c", &spec.X_from, &c1, &spec.X_to, &c2, &spec.X_step, &rest) != 5 || c1 != ':' || c2 != ':')
@@ -327,6 +335,7 @@ int main(int argc, char** argv) {
   app.add_option("--R", o.R, "predicted range to check, or the range to --fit");
   app.add_option("--T", o.T, "predicted energy to check, or the energy to --fit");
   app.add_option("--tol", o.tolerance, "relative tolerance on the predicted R and T")->capture_default_str();
+  app.add_option("--beta2", o.beta2, "allowed beam bending u2/L2 when sizing engines (--fit, --optimize, --derive-table; default 1/300)");
   app.add_flag("--optimize", o.optimize, "find the ab-initio optimum for --R and --T at --theta and --F (section 5)");
   app.add_flag("--derive-table", o.derive_table, "re-derive tab:CPNC for --theta and --F: optimise along --X and fit eq:f_ZX (JSON for the calculator's --table)");
   app.add_option("--X", o.X_grid, "X points of --derive-table, from:to:step (eq:Xi)")->capture_default_str();

@@ -133,7 +133,7 @@ std::vector<Optimum> optimize(const OptimizeRequest& request) {
   return optima;
 }
 
-const Optimum& best_optimum(const std::vector<Optimum>& optima) {
+Optimum best_optimum(const std::vector<Optimum>& optima) {
   const Optimum* best = &optima.front();
   for (const Optimum& o : optima)
     if (o.objective > best->objective) best = &o;

@@ -35,7 +35,8 @@ struct Optimum {
 /// it, else a generic shape. Throws Error(out_of_range) when no start can deliver the capacity.
 std::vector<Optimum> optimize(const OptimizeRequest& request);
 
-/// The optimum with the highest objective (the first of equals); `optima` must not be empty.
-const Optimum& best_optimum(const std::vector<Optimum>& optima);
+/// The optimum with the highest objective (the first of equals), as a copy, so that it may
+/// outlive `optima`; `optima` must not be empty.
+Optimum best_optimum(const std::vector<Optimum>& optima);
 
 }  // namespace trebuchet

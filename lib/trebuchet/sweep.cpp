@@ -68,7 +68,7 @@ SweepPoint optimize_point(const SweepSpec& spec, double X) {
                                 std::abs(std::log(optima[i].shape.l / optima[j].shape.l)) > 0.01);
       point.optima_found += distinct;
     }
-    const Optimum& best = best_optimum(optima);
+    const Optimum best = best_optimum(optima);
     point.engine = best.fit.engine;
     point.shot = best.fit.verification;
     point.shape = best.shape;

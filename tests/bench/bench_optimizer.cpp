@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
       optima = optimize(request);
       times.push_back(seconds_since(start));
     }
-    const Optimum& found = best_optimum(optima);
+    const Optimum found = best_optimum(optima);
     int shots = 0;
     for (const Optimum& o : optima) shots += o.simulations;
 
