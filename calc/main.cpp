@@ -1,5 +1,5 @@
 // trebuchet-calc: optimal engines from the scaling laws of tab:CPNC. Parses, calls the
-// library, prints. Exit codes: see ErrorKind in lib/trebuchet/error.hpp and docs/calculator.md.
+// library, prints. Exit codes: cli/exit_codes.hpp and docs/exit_codes.md.
 #include <CLI/CLI.hpp>
 #include <fstream>
 #include <iostream>
@@ -8,9 +8,11 @@
 
 #include "trebuchet/batch.hpp"
 #include "trebuchet/calculator.hpp"
+#include "trebuchet/format.hpp"
+#include "program.hpp"
 #include "trebuchet/error.hpp"
-#include "trebuchet/program.hpp"
 #include "trebuchet/report.hpp"
+#include "trebuchet/schema.hpp"
 #include "trebuchet/request.hpp"
 #include "trebuchet/scaling_table.hpp"
 #include "trebuchet/units.hpp"
@@ -21,8 +23,8 @@ using namespace trebuchet;
 
 struct Options {
   std::map<Quantity, std::string> givens;
-  std::string theta = "30";
-  std::string F = "2/3";
+  std::string theta = format_number(standard_theta_i_deg);
+  std::string F = format_fraction(standard_F);
   std::string branch = "auto";
   std::string beta2, youngs_modulus, wood_density, g;  // empty: the table's own
   bool extrapolate = false;
@@ -85,7 +87,7 @@ int run(const Options& options) {
     });
     if (failures > 0) {
       std::cerr << "trebuchet-calc: " << failures << " row(s) failed; the other rows are in the output\n";
-      return exit_code(ErrorKind::batch_rows);
+      return exit_code(Program::calc, ErrorKind::batch_rows);
     }
     return 0;
   }
@@ -130,5 +132,5 @@ int main(int argc, char** argv) {
   app.add_option("--batch", options.batch, "CSV file of requests (- for stdin); header names two givens");
   app.add_option("--table", options.table_file, "constants file in the schema of data/cpnc.json");
 
-  return run_program(app, argc, argv, exit_code(ErrorKind::usage), [&] { return run(options); }, [](const Error& e) { return exit_code(e.kind()); });
+  return run_program(app, Program::calc, argc, argv, [&] { return run(options); });
 }

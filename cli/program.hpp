@@ -1,0 +1,38 @@
+// The shared frame of the command-line programs: parse with CLI11, run, and turn every error
+// into a message on stderr and the program's exit code (exit_codes.hpp). Header-only and
+// outside the library, so that only the programs depend on CLI11.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <string>
+
+#include "exit_codes.hpp"
+#include "trebuchet/error.hpp"
+
+namespace trebuchet {
+
+/// Parses argv into `app`, then returns run(); --help prints and exits 0. A parse error exits
+/// with the code of ErrorKind::usage, an Error with that of its kind; both are printed as
+/// "program: message".
+template <class Run>
+int run_program(CLI::App& app, Program program, int argc, char** argv, Run run) {
+  const std::string name = app.get_name();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return exit_success;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << name << ": " << e.what() << "; see " << name << " --help\n";
+    return exit_code(program, ErrorKind::usage);
+  }
+  try {
+    return run();
+  } catch (const Error& e) {
+    std::cerr << name << ": " << e.what() << "\n";
+    return exit_code(program, e.kind());
+  }
+}
+
+}  // namespace trebuchet

@@ -1,0 +1,30 @@
+// The capacity fit of section 5, steps 2-4: a scaled design (l, l4, mu_b) at theta_i and F is
+// given a projectile ratio mu and an absolute size so that it delivers a requested capacity
+// (R, T) at level 0. The work is scaled: a shot gives rho = R/L2 and tau_e = T/(M g L2)
+// (eq:Aux), so L2 = R/rho, and eq:ExtraScalings gives T = M g L2 tau_e; mu is adjusted until
+// T matches. The engine is made in SI once, at the end.
+#pragma once
+
+#include "trebuchet/capacity.hpp"
+#include "trebuchet/design.hpp"
+#include "trebuchet/engine.hpp"
+#include "trebuchet/material.hpp"
+#include "trebuchet/verification.hpp"
+
+namespace trebuchet {
+
+struct CapacityFit {
+  ScaledDesign design;        ///< the shape with its fitted mu
+  Engine engine;              ///< the design at the size that delivers the capacity, in SI
+  Verification verification;  ///< of `engine`, level 0, at the shot settings of the fit
+  int simulations = 0;        ///< shots it took
+};
+
+/// Fits mu and the size of `shape` (its mu is ignored) so that its shot lands at R [m] with
+/// T [J] at level 0 (capacity.target_level is not used), each to `rtol` relative. Throws
+/// Error(out_of_range) when no mu within a factor 20 of the guess m = 2T/(g R) reaches T, and
+/// Error(numerical) when T jumps with mu at the root (the release moves between maxima).
+CapacityFit fit_capacity(const ScaledDesign& shape, const Capacity& capacity, const Material& material,
+                         const ShotSettings& settings, double rtol = 1e-6);
+
+}  // namespace trebuchet

@@ -1,0 +1,75 @@
+// The scaled equations of motion of appendix A and the internal forces that follow from
+// them by Newton's laws. Scaled units: lengths in L2, masses in M, time in (L2/g)^(1/2),
+// forces in Mg, energies in M g L2. Pivot at the origin, y up; the long arm starts at
+// theta_i from the downward vertical on the +x side and the target lies toward -x.
+//   hinge          (-sin th, cos th)
+//   counterweight  (-sin th + L sin psi, cos th - L cos psi)
+//   beam CM        (l - 1)/2 (sin th, -cos th)
+//   projectile     l (sin th - l4 cos phi, -cos th - l4 sin phi)
+// These positions give eq:EOM_I_1, eq:EOM_I_2, eq:EOM_II_1 and eq:EOM_II_3 from the Lagrangian.
+#pragma once
+
+#include <array>
+
+#include "trebuchet/design.hpp"
+
+namespace trebuchet {
+
+/// Phase I: projectile slides in the trough (eq:EOM_I_1-3). Phase II: lifted (eq:EOM_II_1,
+/// eq:EOM_I_2, eq:EOM_II_3). Phase III: released, mu = 0.
+enum class Phase { trough, lifted, released };
+
+/// A state of the engine, scaled. In phase I, phi and phi_dot follow from eq:EOM_I_3.
+struct State {
+  double theta = 0, psi = 0, phi = 0;              ///< [rad]
+  double theta_dot = 0, psi_dot = 0, phi_dot = 0;  ///< scaled angular speeds
+};
+
+struct Vec2 {
+  double x = 0, y = 0;
+};
+
+/// Angular accelerations and the internal forces at one state, scaled (forces in Mg).
+struct Snapshot {
+  double theta_ddot = 0, psi_ddot = 0, phi_ddot = 0;
+  Vec2 projectile, projectile_velocity;  ///< relative to the pivot, scaled
+  Vec2 pivot_reaction;   ///< F_R: force of the frame on the beam at the pivot
+  Vec2 hinge_force;      ///< F_H: force of the arm on the counterweight
+  Vec2 sling_on_tip;     ///< force of the sling on the beam tip
+  double sling_perpendicular = 0;  ///< F_S_perp: component of the sling's pull on the tip against the beam's turn
+  double normal_force = 0;         ///< trough on projectile (phase I; 0 after)
+  double energy = 0;               ///< kinetic + potential, scaled; conserved
+};
+
+/// Phase III in vacuum: the horizontal distance from the pivot, toward the target (-x), to
+/// where a projectile released at `position` with `velocity` lands `drop` below its release
+/// height. Units consistent with g (scaled: g = 1).
+double vacuum_range(Vec2 position, Vec2 velocity, double drop, double g);
+
+/// The equations of motion of one scaled design, with its constants computed once.
+class Dynamics {
+ public:
+  explicit Dynamics(const ScaledDesign& design);
+
+  const ScaledDesign& design() const { return design_; }
+  double theta_i() const { return theta_i_; }  ///< [rad]
+
+  /// sin phi in the trough from eq:EOM_I_3: cos th + l4 sin phi = cos th_i.
+  double trough_sin_phi(double theta) const;
+
+  /// Fills phi and phi_dot of a phase-I state from eq:EOM_I_3; returns cos phi (<= 0: the sling stands vertical).
+  double complete_trough_state(State& state) const;
+
+  /// Accelerations and forces at a state of the given phase.
+  Snapshot snapshot(Phase phase, const State& state) const;
+
+  /// Accelerations only (the right-hand side of the ODE), cheaper than snapshot.
+  std::array<double, 3> accelerations(Phase phase, const State& state) const;
+
+ private:
+  ScaledDesign design_;
+  double theta_i_, cos_theta_i_;  // [rad], scaled
+  double L_, inertia_;            // eq:Design, section 2; scaled
+};
+
+}  // namespace trebuchet

@@ -1,0 +1,47 @@
+// Beam material, allowed bending and gravity: what ties masses to lengths (section 4), and
+// eq:ExtraScalings, the one place where an engine's masses, diameter and energy follow from
+// its size.
+#pragma once
+
+namespace trebuchet {
+
+/// The paper's defaults are those of eq:kMkD.
+struct Material {
+  double beta2 = 1.0 / 300;      ///< allowed bending of the short beam section u2/L2, eq:bend_L2, scaled
+  double youngs_modulus = 12e9;  ///< Young's modulus of the beam's wood [Pa]
+  double wood_density = 700;     ///< density of the beam's wood [kg/m^3]
+  double g = 9.81;               ///< gravitational acceleration [m/s^2]
+};
+
+/// k_M = (4 pi / 3) g rho_d^2 / M_e of eq:kMkD [kg/m^4].
+double k_M(const Material& material);
+
+/// k_D = (16 / 3) g rho_d / M_e of eq:kMkD [1/m].
+double k_D(const Material& material);
+
+/// eq:ExtraScalings for a scaled design with K = (l + 1)/mu_b (eq:kMkD) at short arm L2 [m]:
+/// M = K^2 (k_M/beta2) L2^4, D = sqrt(K k_D/beta2) L2^(3/2), and the energy unit M g L2 of
+/// section 3, so that T = M g L2 tau_e.
+struct ExtraScalings {
+  double M;            ///< counterweight mass [kg]
+  double D;            ///< beam diameter [m]
+  double energy_unit;  ///< M g L2 [J]
+};
+
+ExtraScalings extra_scalings(double K, double L2, const Material& material);
+
+/// Factors that carry an optimal engine from one size and material to another at the same
+/// scaled design, by eq:ExtraScalings: lengths and R with the length ratio, masses with the
+/// ratio of M, D with that of D, energies with that of M g L2. Section 7: beta2 from 1/300 to
+/// 1/200 at equal lengths gives mass = energy = 2/3 and diameter^2 = 2/3.
+struct SizeFactors {
+  double length = 1;
+  double mass = 1;
+  double diameter = 1;
+  double energy = 1;
+};
+
+/// From (L2_from, from) to (L2_to, to) [m]; K cancels.
+SizeFactors size_factors(double L2_from, const Material& from, double L2_to, const Material& to);
+
+}  // namespace trebuchet

@@ -1,0 +1,29 @@
+// The names by which users and files choose the library's options: the release criterion
+// (--quality, and "quality" in sweep parts) and the stepper (--stepper). Kept apart from the
+// physics, which knows only the enums.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "trebuchet/integrator.hpp"
+#include "trebuchet/quality.hpp"
+
+namespace trebuchet {
+
+/// "Q", "eps" or "range".
+std::string release_name(Release release);
+
+/// The release criterion of a name; Error(usage) names `option`, the text and the choices.
+Release parse_release(std::string_view name, std::string_view option);
+
+/// "rk8pd", ...: GSL's own names of its odeiv2 steppers.
+std::string stepper_name(Stepper stepper);
+
+/// "rk2, rk4, ... or msbdf", for messages and help.
+std::string stepper_names();
+
+/// The stepper of a name; Error(usage) names `option`, the text and the choices.
+Stepper parse_stepper(std::string_view name, std::string_view option);
+
+}  // namespace trebuchet

@@ -1,0 +1,41 @@
+// The ab-initio optimum for a capacity (section 5): the shape (l, l4, mu_b) that maximises the
+// quality when each candidate is fitted to deliver (R, T) exactly (capacity_fit.hpp). GSL's
+// Nelder-Mead simplex in (log l, log l4, log mu_b), started from the calculator's designs.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "trebuchet/capacity_fit.hpp"
+
+namespace trebuchet {
+
+struct OptimizeRequest {
+  Capacity capacity;                           ///< R [m] and T [J] at level 0
+  double theta_i_deg = standard_theta_i_deg;   ///< [deg]
+  double F = standard_F;                       ///< (L2 + L3)/H, scaled
+  Material material{};
+  ShotSettings settings{};        ///< release criterion (Q, Q_n or Q_eps) and integrator
+  double shape_tolerance = 1e-4;  ///< simplex size in log shape at which a search stops, scaled
+  std::vector<ScaledDesign> starts;  ///< when given, searches start at these shapes instead of the calculator's designs
+};
+
+struct Optimum {
+  std::string start;            ///< where the search began ("calculator, lower branch", ...)
+  ScaledDesign start_design;    ///< the shape it began from
+  CapacityFit fit;              ///< the best engine (its design, SI engine and shot) and the shots of its last fit
+  double objective = 0;         ///< the maximised quality
+  int simulations = 0;          ///< shots over the whole search
+  int iterations = 0;           ///< simplex iterations
+};
+
+/// One search per start; each result delivers (R, T) to 1e-6. Starts are the request's, else the
+/// calculator's designs for the capacity (both branches where tab:CPNC has two) when it covers
+/// it, else a generic shape. Throws Error(out_of_range) when no start can deliver the capacity.
+std::vector<Optimum> optimize(const OptimizeRequest& request);
+
+/// The optimum with the highest objective (the first of equals), as a copy, so that it may
+/// outlive `optima`; `optima` must not be empty.
+Optimum best_optimum(const std::vector<Optimum>& optima);
+
+}  // namespace trebuchet

@@ -1,0 +1,35 @@
+// What the programs print for people: aligned lines with units, and the time series of a shot
+// as CSV (for spreadsheets and gnuplot). SI units; angles in degrees. Machine-readable records
+// are in schema.hpp.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "trebuchet/calculator.hpp"
+#include "trebuchet/schema.hpp"
+#include "trebuchet/shot.hpp"
+#include "trebuchet/verification.hpp"
+
+namespace trebuchet {
+
+/// The calculator's design. Throws Error(numerical) if a number is not finite.
+std::string design_table(const OptimalEngine& design);
+
+/// A shot's figures, and the check of a predicted capacity when there is one.
+std::string verification_table(const Verification& v, const std::optional<CapacityCheck>& check = std::nullopt);
+
+/// Two indented lines with units: Lb, H and the lengths; the masses and D.
+std::string engine_table(const Engine& engine);
+
+/// An optimum: where its search started and what it cost, its engine and its shot.
+std::string optimum_table(const Optimum& optimum);
+
+/// One CSV row per trace point: phase, time [s], angles [deg], angular speeds [rad/s],
+/// forces (F_S_perp/(m g), F_R and its components/(M g), F_H/(M g), normal/(m g)),
+/// energy [J] and its drift relative to Delta U (in phase III, from the energy at release,
+/// the projectile having left).
+std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine);
+
+}  // namespace trebuchet

@@ -1,0 +1,79 @@
+// The one JSON and CSV form of an engine and of the records that carry one, read and written
+// by both programs, the sweep parts and the derived tables. Keys are the paper's symbols in SI
+// base units (m, kg, J, Pa, kg/m^3, m/s^2); angles carry _deg; forces as multiples of m g or
+// M g carry _mg or _Mg. docs/schema.md lists every key.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "trebuchet/calculator.hpp"
+#include "trebuchet/capacity.hpp"
+#include "trebuchet/engine.hpp"
+#include "trebuchet/optimizer.hpp"
+#include "trebuchet/verification.hpp"
+
+namespace trebuchet {
+
+/// A named number of a record, in print order.
+struct Field {
+  const char* key;
+  double value;
+};
+
+/// The engine's keys: theta_i_deg, F, beta2, L1, L2, L3, L4, D, M, m, mb, Lb, H, the scaled
+/// design l, l4, L, mu, mu_b, K, DeltaU (eq:DU) and the material youngs_modulus, wood_density, g.
+std::vector<Field> engine_fields(const Engine& engine);
+
+/// engine_fields as JSON members of `out`. Throws Error(numerical) if a value is not finite.
+void write_engine(nlohmann::ordered_json& out, const Engine& engine);
+
+/// An engine read from JSON, with the capacity it claims when it carries one.
+struct EngineRecord {
+  Engine engine;
+  std::optional<Capacity> capacity;  ///< "R" and "T", both or neither (level 0)
+};
+
+/// Reads an engine: L1, L2, L4, M, m, mb; L3, or F = (L2 + L3)/H; optional theta_i_deg
+/// (default 30), D, the material keys (default eq:kMkD's) and R with T. Values are SI numbers
+/// or strings with a unit ("6.13m"); other keys are ignored, so that every writer's output
+/// reads back. `where` names the object in messages ("design[2]"; empty: the command line,
+/// whose keys are named as flags, "--L4"). Throws Error(bad_number | unknown_unit | usage)
+/// naming the key and the fix, and checks the engine (check_engine).
+EngineRecord read_engine(const nlohmann::json& object, const std::string& where);
+
+/// Lengths and masses positive (mb may be 0), theta_i in (0, 90) degrees, a positive material.
+/// Throws Error(bad_number) naming the parameter as `where` names keys.
+void check_engine(const Engine& engine, const std::string& where);
+
+/// The calculator's design: R, T, X, Y, the engine's keys, amplification, branch, warnings and,
+/// near X_d, branch_steps.
+nlohmann::ordered_json design_json(const OptimalEngine& design);
+
+/// Comma-separated column names, in the order of design_csv_row.
+std::string design_csv_header();
+std::string design_csv_row(const OptimalEngine& design);
+
+/// A predicted capacity (from the calculator) against the simulated one.
+struct CapacityCheck {
+  Capacity predicted;           ///< [m], [J]
+  double deviation_R = 0;       ///< simulated/predicted - 1
+  double deviation_T = 0;
+  double tolerance = 0;         ///< relative
+  bool pass = false;            ///< both deviations within the tolerance
+};
+
+CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance);
+
+/// Keys R, T, eps, Q, force_factor, v, h, x, A_deg, t_release, t_liftoff, FS_perp_mg, FR_Mg,
+/// dFRh_Mg, energy_drift; with a check, also predicted, deviation, tolerance and pass.
+/// Throws Error(numerical) if a number is not finite.
+nlohmann::ordered_json verification_json(const Verification& v, const std::optional<CapacityCheck>& check = std::nullopt);
+
+/// An optimum: the engine's keys, start, simulations, iterations, wall_time_s (the whole
+/// search's, given by the caller) and the verification's keys of its shot.
+nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s);
+
+}  // namespace trebuchet

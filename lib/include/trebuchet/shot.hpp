@@ -1,0 +1,55 @@
+// One shot of an engine, ab initio: phases I and II of appendix A integrated with GSL odeiv2,
+// lift-off located where the trough's normal force vanishes, and the release at the maximum
+// of the quality function over phase II (section 5). Everything here is scaled (dynamics.hpp).
+#pragma once
+
+#include <vector>
+
+#include "trebuchet/design.hpp"
+#include "trebuchet/dynamics.hpp"
+#include "trebuchet/integrator.hpp"
+#include "trebuchet/quality.hpp"
+
+namespace trebuchet {
+
+/// The projectile's state and the engine's figures at one moment of phase II, scaled.
+struct ReleasePoint {
+  double t = 0;                 ///< scaled time
+  State state;
+  Vec2 position, velocity;      ///< projectile, relative to the pivot
+  double height = 0;            ///< above the engine's base (l cos th_i + y), in L2
+  double range = 0;             ///< rho: pivot to impact at level 0, in L2; <= 0: not forward
+  double energy_at_target = 0;  ///< tau_e = T/(M g L2), eq:Aux, level 0
+  double efficiency = 0;        ///< eps = T/Delta U, eq:Aux
+  /// Running extremes of the forces of eq:F over [0, t], in Mg, peaks between step ends
+  /// included (found on the continuous solution).
+  ForceExtremes extremes;
+  double force_factor = 0;      ///< F of eq:F
+  double quality = 0;           ///< Q of eq:Q or eq:Q_n, at level 0
+  double objective = 0;         ///< what the release maximises: Q, eps or the range
+};
+
+struct ShotResult {
+  double t_liftoff = 0;         ///< scaled
+  ReleasePoint release;
+  double energy_drift = 0;      ///< max |E(t) - E(0)| / Delta U over phases I and II
+  long steps = 0;               ///< accepted steps, both phases
+};
+
+/// One moment of the motion for a time series (--series), scaled.
+struct TracePoint {
+  Phase phase;
+  double t;
+  State state;
+  Snapshot snapshot;
+};
+
+/// Integrates the shot and finds the release. Throws Error(numerical) with a named reason:
+/// the beam cannot turn, no lift-off, sling vertical in the trough, no forward release,
+/// integrator failure or step budget, or energy drift above the limit.
+/// With `trace`, the integrator's step ends up to the release, the release itself, and phase III
+/// (beam and counterweight alone) for as long again, are appended to it.
+ShotResult simulate_shot(const ScaledDesign& design, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
+                         std::vector<TracePoint>* trace = nullptr);
+
+}  // namespace trebuchet

@@ -1,0 +1,45 @@
+// The ab-initio figures of an engine in SI units: a shot (shot.hpp) of its scaled design,
+// turned back into metres, joules and newtons with L2, M and the engine's g (section 3).
+#pragma once
+
+#include <vector>
+
+#include "trebuchet/capacity.hpp"
+#include "trebuchet/engine.hpp"
+#include "trebuchet/shot.hpp"
+
+namespace trebuchet {
+
+struct ShotSettings {
+  double target_level = 0;     ///< target height relative to the engine's base [m], e.g. -54
+  ReleaseCriterion criterion{};
+  IntegratorSettings integrator{};
+};
+
+/// What trebuchet-verify reports, in SI units (angles in degrees).
+struct Verification {
+  Capacity capacity;       ///< vacuum range from the pivot and energy eq:T, both at the target level
+  double eps = 0;          ///< efficiency T/Delta U at level 0, eq:Aux
+  double Q = 0;            ///< quality at the release, eq:Q or eq:Q_n (with the n of the settings)
+  double force_factor = 0; ///< F of eq:F, scaled
+  double v = 0;            ///< release speed [m/s]
+  double h = 0;            ///< release height above the base [m]
+  double x = 0;            ///< release position along the throw, from the pivot: > 0 behind it [m]
+  double A_deg = 0;        ///< initial climb [deg]
+  double theta_release_deg = 0;  ///< beam angle at release from the downward vertical [deg]; 180 is upright (section 6.2: below it, lower branch)
+  double t_release = 0;    ///< [s]
+  double t_liftoff = 0;    ///< [s]
+  double FS_perp_mg = 0;   ///< largest perpendicular sling force on the beam / (m g), scaled
+  double FR_Mg = 0;        ///< largest |pivot reaction| / (M g), scaled
+  double dFRh_Mg = 0;      ///< largest minus smallest horizontal pivot reaction / (M g), scaled
+  double energy_drift = 0; ///< max |E(t) - E(0)| / Delta U over phases I and II, scaled
+};
+
+/// The SI figures of a shot of `engine` (of scaled design scaled_design(engine)).
+Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level);
+
+/// Simulates one shot of `engine` under its own g. Throws Error(numerical) as simulate_shot
+/// does. With `trace`, the motion is appended to it (scaled, see simulate_shot).
+Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace = nullptr);
+
+}  // namespace trebuchet

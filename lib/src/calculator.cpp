@@ -1,0 +1,441 @@
+#include "trebuchet/calculator.hpp"
+
+#include <algorithm>
+#include <Eigen/Dense>
+#include <cmath>
+#include <limits>
+
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+#include "solve_1d.hpp"
+
+namespace trebuchet {
+namespace {
+
+// log(value) = c + pq (log(R/R0), log(T/T0)): a quantity that is log-linear in the capacity,
+// as every entry of eq:ZRT is (one row of eq:RT_Z1Z2, or R and T themselves).
+struct LogLaw {
+  double c;
+  Eigen::RowVector2d pq;
+};
+
+std::optional<Param> fitted_param(Quantity quantity) {
+  switch (quantity) {
+    case Quantity::L1: return Param::L1;
+    case Quantity::L2: return Param::L2;
+    case Quantity::L4: return Param::L4;
+    case Quantity::D: return Param::D;
+    case Quantity::M: return Param::M;
+    case Quantity::m: return Param::m;
+    case Quantity::mb: return Param::mb;
+    default: return std::nullopt;
+  }
+}
+
+LogLaw param_law(const TableBlock& block, const Segment& segment, Param param) {
+  return {std::log(segment.a[index(param)] * block.Z0[index(param)]), segment.exponents.row(index(param))};
+}
+
+// Lb = L1 + L2 is the one given that is not log-linear.
+std::optional<LogLaw> log_law(const ScalingTable& table, const TableBlock& block, const Segment& segment,
+                              Quantity quantity) {
+  if (auto param = fitted_param(quantity)) return param_law(block, segment, *param);
+  switch (quantity) {
+    case Quantity::R: return LogLaw{std::log(table.R0), {1, 0}};
+    case Quantity::T: return LogLaw{std::log(table.T0), {0, 1}};
+    case Quantity::l: {
+      const LogLaw L1 = param_law(block, segment, Param::L1);
+      const LogLaw L2 = param_law(block, segment, Param::L2);
+      return LogLaw{L1.c - L2.c, L1.pq - L2.pq};
+    }
+    default: return std::nullopt;
+  }
+}
+
+// Factor from the table's material to the requested one at equal lengths (section 7).
+double material_factor(Quantity quantity, const SizeFactors& factors) {
+  switch (quantity_dimension(quantity)) {
+    case Dimension::mass: return factors.mass;
+    case Dimension::energy: return factors.energy;
+    default: return quantity == Quantity::D ? factors.diameter : 1.0;
+  }
+}
+
+constexpr double warn_amplification = 10, max_amplification = 50;
+
+struct Candidate {
+  const Segment* segment;
+  double lr, lt;          // log(R/R0), log(T/T0)
+  double amplification;
+  double X() const { return capacity_coordinates(lr, lt).X; }
+  bool inside() const { return X() >= segment->X_min - 1e-12 && X() <= segment->X_max + 1e-12; }
+  double outside_by() const { return std::max({segment->X_min - X(), X() - segment->X_max, 0.0}); }
+  double depth() const { return std::min(X() - segment->X_min, segment->X_max - X()); }
+};
+
+// eq:RT_ZiZj for two log-linear givens: the 2x2 matrix of their (p, q) rows.
+Eigen::Matrix2d pair_matrix(const LogLaw& i, const LogLaw& j) {
+  Eigen::Matrix2d A;
+  A << i.pq, j.pq;
+  return A;
+}
+
+// Largest relative change of R or T per relative change of the givens: the infinity norm of
+// the inverse of eq:ZiZj_RT, (|q_i| + |q_j|, |p_i| + |p_j|)/|D_ij| row by row.
+double amplification_of(const Eigen::Matrix2d& A) { return A.inverse().cwiseAbs().rowwise().sum().maxCoeff(); }
+
+// eq:ZiZj_RT: (lr, lt) from two log-linear givens; nullopt when D_ij = 0.
+std::optional<Candidate> invert_pair(const Segment& segment, const LogLaw& i, double log_i, const LogLaw& j,
+                                     double log_j) {
+  const Eigen::Matrix2d A = pair_matrix(i, j);
+  if (std::abs(A.determinant()) < 1e-12) return std::nullopt;  // D_ij
+  const Eigen::Vector2d capacity = A.inverse() * Eigen::Vector2d(log_i - i.c, log_j - j.c);
+  return Candidate{&segment, capacity(0), capacity(1), amplification_of(A)};
+}
+
+// Lb = L1 + L2 together with a log-linear given A: on the line log A = const in the
+// (lr, lt) plane, log Lb is the log of a sum of two exponentials of the line parameter s,
+// hence convex in s, with at most two roots; each is bracketed and found by Brent's method.
+struct BeamLengthLine {
+  double lr0, lt0, dr, dt;  // point and unit direction of the line
+  LogLaw L1, L2;
+  double log_Lb;
+  double lr(double s) const { return lr0 + s * dr; }
+  double lt(double s) const { return lt0 + s * dt; }
+  double log_of(const LogLaw& law, double s) const { return law.c + law.pq.dot(Eigen::Vector2d(lr(s), lt(s))); }
+  double excess(double s) const {  // log Lb(s) - log Lb_given
+    const double a1 = log_of(L1, s), a2 = log_of(L2, s);
+    const double top = std::max(a1, a2);
+    return top + std::log(std::exp(a1 - top) + std::exp(a2 - top)) - log_Lb;
+  }
+};
+
+double brent_root(const BeamLengthLine& line, double lo, double hi) {
+  return find_root([&line](double s) { return line.excess(s); }, lo, hi, 0, 1e-14);
+}
+
+// Solutions, and the span of Lb over the part of the line inside the segment (for messages).
+struct BeamLengthSolutions {
+  std::vector<Candidate> found;
+  double Lb_min = 0, Lb_max = 0;  // [m]
+};
+
+BeamLengthSolutions invert_with_beam_length(const TableBlock& block, const Segment& segment, const LogLaw& A,
+                                            double log_A, double log_Lb) {
+  const double norm = A.pq.norm();
+  const double b = (log_A - A.c) / norm;
+  BeamLengthLine line{A.pq(0) / norm * b, A.pq(1) / norm * b, A.pq(1) / norm, -A.pq(0) / norm,
+                      param_law(block, segment, Param::L1), param_law(block, segment, Param::L2), log_Lb};
+  // The part of the line inside the segment's X interval; X is constant along it when A
+  // depends on X alone (the beam ratio l), and then the line is only bounded by sanity.
+  const double dX = capacity_coordinates(line.dr, line.dt).X;  // X is linear in (lr, lt)
+  const double X0 = capacity_coordinates(line.lr0, line.lt0).X;
+  const double far = 50;  // |log(R/R0)|, |log(T/T0)| beyond any engine
+  double lo = -far, hi = far;
+  if (std::abs(dX) > 1e-12) {
+    lo = (segment.X_min - X0) / dX;
+    hi = (segment.X_max - X0) / dX;
+    if (lo > hi) std::swap(lo, hi);
+  } else if (X0 < segment.X_min || X0 > segment.X_max) {
+    return {};
+  }
+  BeamLengthSolutions solutions;
+  // Minimum of the convex excess: where the two exponentials' slopes cancel, or an end.
+  const Eigen::Vector2d direction(line.dr, line.dt);
+  const double beta1 = line.L1.pq.dot(direction), beta2 = line.L2.pq.dot(direction);
+  double s_min = beta1 >= 0 && beta2 >= 0 ? lo : hi;
+  if (beta1 * beta2 < 0) {
+    const double alpha1 = line.log_of(line.L1, 0), alpha2 = line.log_of(line.L2, 0);
+    s_min = std::clamp((std::log(-beta2 / beta1) - alpha1 + alpha2) / (beta1 - beta2), lo, hi);
+  }
+  auto add = [&](double s) {
+    // Local slopes of log Lb give the conditioning of the pair (A, Lb).
+    const double w1 = std::exp(line.log_of(line.L1, s)), w2 = std::exp(line.log_of(line.L2, s));
+    const LogLaw Lb{0, (w1 * line.L1.pq + w2 * line.L2.pq) / (w1 + w2)};
+    solutions.found.push_back({&segment, line.lr(s), line.lt(s), amplification_of(pair_matrix(A, Lb))});
+  };
+  const double f_min = line.excess(s_min);
+  const double given_Lb = std::exp(log_Lb);
+  solutions.Lb_min = given_Lb * std::exp(f_min);
+  solutions.Lb_max = given_Lb * std::exp(std::max(line.excess(lo), line.excess(hi)));
+  if (f_min > 0) return solutions;
+  if (f_min == 0) {
+    add(s_min);
+    return solutions;
+  }
+  if (s_min > lo && line.excess(lo) >= 0) add(brent_root(line, lo, s_min));
+  if (s_min < hi && line.excess(hi) >= 0) add(brent_root(line, s_min, hi));
+  return solutions;
+}
+
+bool first_is_beam_length(const Given& first, const Given&) { return first.quantity == Quantity::Lb; }
+
+std::string describe_given(const Given& given) {
+  const Dimension dimension = quantity_dimension(given.quantity);
+  const char* unit = dimension == Dimension::length ? " m" : dimension == Dimension::mass ? " kg"
+                     : dimension == Dimension::energy                                 ? " J"
+                                                                                      : "";
+  return std::string(quantity_name(given.quantity)) + " = " + format_significant(given.value, 6) + unit;
+}
+
+std::string describe_interval(double lo, double hi) {
+  return "[" + format_number(lo) + ", " + format_number(hi) + "]";
+}
+
+std::string describe_block(const TableBlock& block) {
+  return "theta_i = " + format_number(block.theta_i_deg) + " deg, F = " + format_fraction(block.F);
+}
+
+bool branch_allowed(const Candidate& candidate, BranchChoice choice) {
+  const Branch branch = candidate.segment->branch;
+  if (branch == Branch::none || choice == BranchChoice::automatic) return true;
+  return (choice == BranchChoice::lower) == (branch == Branch::lower);
+}
+
+// Picks one candidate; fills warnings about branches and ambiguities.
+Candidate choose(const std::vector<Candidate>& inside, const TableBlock& block, BranchChoice choice,
+                 std::vector<std::string>& warnings) {
+  std::vector<Candidate> allowed;
+  for (const Candidate& c : inside)
+    if (branch_allowed(c, choice)) allowed.push_back(c);
+  if (allowed.empty()) {
+    // Only possible when the forced branch does not reach this X.
+    const Candidate& other = inside.front();
+    throw Error(ErrorKind::out_of_range,
+                "the " + std::string(choice == BranchChoice::lower ? "lower" : "upper") +
+                    " branch has no optimum for these givens (the solution lies at X = " +
+                    format_significant(other.X(), 3) + " on the " + std::string(branch_name(other.segment->branch)) +
+                    " branch); use --branch auto or --branch " + std::string(branch_name(other.segment->branch)));
+  }
+  if (choice != BranchChoice::automatic && allowed.front().segment->branch == Branch::none)
+    warnings.push_back("--branch " + std::string(choice == BranchChoice::lower ? "lower" : "upper") +
+                       " ignored: only one optimal branch exists at X = " + format_significant(allowed.front().X(), 3));
+
+  // In the overlap, auto takes the branch with the higher Q: lower below X_d, upper above (section 6.2).
+  const double X_d = block.branch_switch_X.value_or(std::numeric_limits<double>::quiet_NaN());
+  auto preferred = [&](const Candidate& c) {
+    if (c.segment->branch == Branch::lower) return c.X() < X_d;
+    if (c.segment->branch == Branch::upper) return c.X() >= X_d;
+    return true;
+  };
+  std::vector<Candidate> best;
+  for (const Candidate& c : allowed)
+    if (choice != BranchChoice::automatic || preferred(c)) best.push_back(c);
+  if (best.empty()) best = allowed;  // each branch prefers the other: take the one deepest inside
+  std::stable_sort(best.begin(), best.end(), [](const Candidate& a, const Candidate& b) { return a.depth() > b.depth(); });
+
+  // Two different capacities can match one pair of givens (Lb with another given, or two
+  // branches each consistent at its own X): say so rather than hide the second.
+  for (std::size_t k = 1; k < best.size(); ++k) {
+    const Candidate& c = best[k];
+    if (std::abs(c.X() - best.front().X()) < 1e-6 && std::abs(c.lt - best.front().lt) < 1e-6) continue;
+    warnings.push_back("another optimal engine also matches these givens: X = " + format_significant(c.X(), 3) +
+                       (c.segment->branch == Branch::none ? "" : " on the " + std::string(branch_name(c.segment->branch)) + " branch") +
+                       "; it is not shown (use --branch or other givens to select it)");
+  }
+  return best.front();
+}
+
+// Sets a given quantity to the value given; the inversion reproduces it only to rounding.
+void copy_given(const Given& given, OptimalEngine& design) {
+  Engine& e = design.engine;
+  switch (given.quantity) {
+    case Quantity::R: design.capacity.R = given.value; break;
+    case Quantity::T: design.capacity.T = given.value; break;
+    case Quantity::L1: e.L1 = given.value; break;
+    case Quantity::L2: e.L2 = given.value; break;
+    case Quantity::L4: e.L4 = given.value; break;
+    case Quantity::D: e.D = given.value; break;
+    case Quantity::M: e.M = given.value; break;
+    case Quantity::m: e.m = given.value; break;
+    case Quantity::mb: e.mb = given.value; break;
+    case Quantity::Lb:
+    case Quantity::l: break;  // not stored; L1 and L2 reproduce them to rounding
+  }
+}
+
+}  // namespace
+
+std::optional<std::array<double, param_count>> branch_steps(const TableBlock& block) {
+  if (!block.branch_switch_X) return std::nullopt;
+  const Segment* lower = nullptr;
+  const Segment* upper = nullptr;
+  for (const Segment& s : block.segments) {
+    if (s.branch == Branch::lower) lower = &s;
+    if (s.branch == Branch::upper) upper = &s;
+  }
+  if (!lower || !upper) return std::nullopt;
+  // eq:ZiZj_vs_X: on the X axis (Y = 0) log(R/R0) = 5 X/sqrt26 and log(T/T0) = -X/sqrt26.
+  const Capacity at_switch = capacity_at({*block.branch_switch_X, 0}, 1, 1);
+  const Eigen::Vector2d log_capacity(std::log(at_switch.R), std::log(at_switch.T));
+  const ParamVector steps = upper->a.cwiseQuotient(lower->a).cwiseProduct(
+      ((upper->exponents - lower->exponents) * log_capacity).array().exp().matrix());
+  std::array<double, param_count> out{};
+  for (Param param : all_params) out[index(param)] = steps[index(param)];
+  return out;
+}
+
+OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignRequest& request) {
+  const Given& gi = request.first;
+  const Given& gj = request.second;
+  if (gi.quantity == gj.quantity)
+    throw Error(ErrorKind::given_count, "both givens are " + std::string(quantity_name(gi.quantity)) +
+                                            "; give two different quantities, e.g. --R 150m --m 50kg");
+  for (const Given& g : {gi, gj})
+    if (!(g.value > 0) || !std::isfinite(g.value))
+      throw Error(ErrorKind::bad_number, describe_given(g) + " must be a positive finite number");
+
+  const TableBlock* block = table.find_block(request.theta_i_deg, request.F);
+  if (!block)
+    throw Error(ErrorKind::out_of_range, "tab:CPNC has no constants for theta_i = " + format_number(request.theta_i_deg) +
+                                             " deg with F = " + format_fraction(request.F) + "; it has " +
+                                             table.block_list() + " (--theta, --F)");
+
+  const SizeFactors scaling = size_factors(1, table.reference, 1, request.material);
+  const double log_i = std::log(gi.value / material_factor(gi.quantity, scaling));
+  const double log_j = std::log(gj.value / material_factor(gj.quantity, scaling));
+
+  std::vector<Candidate> candidates;
+  std::string beam_length_spans;  // where Lb is given: the Lb that optimal engines reach per segment
+  for (const Segment& segment : block->segments) {
+    auto law_i = log_law(table, *block, segment, gi.quantity);
+    auto law_j = log_law(table, *block, segment, gj.quantity);
+    if (law_i && law_j) {
+      if (auto c = invert_pair(segment, *law_i, log_i, *law_j, log_j)) candidates.push_back(*c);
+    } else {
+      const bool first_is_Lb = !law_i;
+      const BeamLengthSolutions solved = invert_with_beam_length(
+          *block, segment, first_is_Lb ? *law_j : *law_i, first_is_Lb ? log_j : log_i, first_is_Lb ? log_i : log_j);
+      candidates.insert(candidates.end(), solved.found.begin(), solved.found.end());
+      if (solved.Lb_max > 0)
+        beam_length_spans += std::string(beam_length_spans.empty() ? "" : ", ") + format_significant(solved.Lb_min, 3) +
+                             " to " + format_significant(solved.Lb_max, 3) + " m in segment " +
+                             describe_interval(segment.X_min, segment.X_max);
+    }
+  }
+
+  std::vector<Candidate> inside;
+  for (const Candidate& c : candidates)
+    if (c.inside()) inside.push_back(c);
+
+  OptimalEngine result;
+  // Message parts, formatted only when a message needs them.
+  auto pair = [&] { return describe_given(gi) + ", " + describe_given(gj); };
+  auto covered = [&] { return describe_interval(block->X_covered_min(), block->X_covered_max()); };
+  Candidate chosen{};
+  if (!inside.empty()) {
+    chosen = choose(inside, *block, request.branch, result.warnings);
+  } else {
+    std::string tried;
+    for (const Candidate& c : candidates)
+      tried += (tried.empty() ? "" : ", ") + std::string("X = ") + format_significant(c.X(), 3) + " in segment " +
+               describe_interval(c.segment->X_min, c.segment->X_max);
+    if (candidates.empty() || !request.extrapolate) {
+      const bool both_capacity = (gi.quantity == Quantity::R || gi.quantity == Quantity::T) &&
+                                 (gj.quantity == Quantity::R || gj.quantity == Quantity::T);
+      std::string message = both_capacity
+          ? "capacity " + pair() + " has X = " + format_significant(candidates.front().X(), 3) +
+                ", outside the interval " + covered() + " covered by tab:CPNC for " + describe_block(*block) +
+                "; raise T or lower R to lower X (X = (5 ln(R/R0) - ln(T/T0))/sqrt(26)), or use --extrapolate"
+          : "no meaningful capacity for the pair " + pair() + " at " + describe_block(*block) + ": " +
+                (!beam_length_spans.empty() && candidates.empty()
+                     ? "optimal engines with " + describe_given(first_is_beam_length(gi, gj) ? gj : gi) +
+                           " have Lb from " + beam_length_spans
+                     : (tried.empty() ? std::string("no segment gives a solution") : "the inversion gives " + tried) +
+                           ", outside the covered interval " + covered()) +
+                "; give another pair, or --extrapolate to use the nearest segment";
+      throw Error(ErrorKind::out_of_range, message);
+    }
+    std::vector<Candidate> allowed;
+    for (const Candidate& c : candidates)
+      if (branch_allowed(c, request.branch)) allowed.push_back(c);
+    if (allowed.empty()) allowed = candidates;
+    chosen = *std::min_element(allowed.begin(), allowed.end(),
+                               [](const Candidate& a, const Candidate& b) { return a.outside_by() < b.outside_by(); });
+    result.warnings.push_back("extrapolated: X = " + format_significant(chosen.X(), 3) + " lies outside the interval " +
+                              covered() + " covered by tab:CPNC; constants of segment " +
+                              describe_interval(chosen.segment->X_min, chosen.segment->X_max) + " used beyond it");
+  }
+
+  const Segment& segment = *chosen.segment;
+  // eq:RT_Z1Z2: the seven logarithms at once, then eq:ZRT.
+  const ParamVector Z = segment.a.cwiseProduct(block->Z0).cwiseProduct(
+      (segment.exponents * Eigen::Vector2d(chosen.lr, chosen.lt)).array().exp().matrix());
+  Engine& e = result.engine;
+  e.L1 = Z[index(Param::L1)];
+  e.L2 = Z[index(Param::L2)];
+  e.L4 = Z[index(Param::L4)];
+  e.D = Z[index(Param::D)] * scaling.diameter;
+  e.M = Z[index(Param::M)] * scaling.mass;
+  e.m = Z[index(Param::m)] * scaling.mass;
+  e.mb = Z[index(Param::mb)] * scaling.mass;
+  e.theta_i_deg = request.theta_i_deg;
+  e.material = request.material;
+  result.capacity.R = table.R0 * std::exp(chosen.lr);
+  result.capacity.T = table.T0 * std::exp(chosen.lt) * scaling.energy;
+  for (const Given& given : {gi, gj}) copy_given(given, result);  // exact, not a round trip through logarithms
+  e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, request.F);
+  if (!(e.L3 > 0))
+    throw Error(ErrorKind::out_of_range, "the design for " + pair() + " has no room for the counterweight arm (L3 = " +
+                                             format_significant(e.L3, 3) + " m); stay inside the covered interval " + covered());
+  result.coordinates = capacity_coordinates(chosen.lr, chosen.lt);
+  result.branch = segment.branch;
+  result.segment_X_min = segment.X_min;
+  result.segment_X_max = segment.X_max;
+  result.F = request.F;
+  result.amplification = chosen.amplification;
+  // The constants of tab:CPNC reproduce the ab-initio optimum to about 1 % (docs/verifier.md);
+  // the inversion multiplies that, and any error of the givens, by the amplification. Above
+  // 50 the capacity is uncertain by more than half and the pair is refused; above 10, warned.
+  // The message is built only when it is printed: this is the calculator's hot path.
+  auto conditioning = [&] {
+    return "a 1 % change of " + pair() + " moves R or T by up to " + format_significant(chosen.amplification, 2) +
+           " % (amplification, eq:ZiZj_RT)";
+  };
+  if (chosen.amplification > max_amplification)
+    throw Error(ErrorKind::given_count, "the pair " + pair() + " barely fixes the capacity: " + conditioning() +
+                                            ", above the limit of " + format_significant(max_amplification, 2) +
+                                            "; give a better-conditioned pair such as R and m, or M and m");
+  if (chosen.amplification > warn_amplification) result.warnings.push_back("ill-conditioned pair: " + conditioning());
+
+  if (segment.branch != Branch::none) {
+    double overlap_lo = -std::numeric_limits<double>::infinity(), overlap_hi = -overlap_lo;
+    for (const Segment& s : block->segments)
+      if (s.branch != Branch::none) {
+        overlap_lo = std::max(overlap_lo, s.X_min);
+        overlap_hi = std::min(overlap_hi, s.X_max);
+      }
+    if (result.coordinates.X >= overlap_lo && result.coordinates.X <= overlap_hi) {
+      result.branch_steps = branch_steps(*block);
+      if (result.branch_steps) {
+        std::string steps;
+        for (Param param : all_params) {
+          const double percent = 100 * ((*result.branch_steps)[index(param)] - 1);
+          steps += (steps.empty() ? "" : ", ") + std::string("S_") + std::string(param_name(param)) + " = " +
+                   (percent >= 0 ? "+" : "") + format_significant(percent, 2) + "%";
+        }
+        result.warnings.push_back("X = " + format_significant(result.coordinates.X, 3) + " lies where a lower and an upper branch compete " +
+                                  describe_interval(overlap_lo, overlap_hi) + "; this is the " +
+                                  std::string(branch_name(segment.branch)) + " branch. At X_d = " +
+                                  format_number(*block->branch_switch_X) + " the optimum jumps by " + steps +
+                                  " (eq:ZiZj_vs_X); --branch lower|upper selects one");
+      }
+    }
+  }
+  return result;
+}
+
+OptimalEngine scale_optimal_engine(const OptimalEngine& design, double lambda) {
+  const Material& material = design.engine.material;
+  const SizeFactors factors = size_factors(design.engine.L2, material, lambda * design.engine.L2, material);  // eq:ExtraScalings
+  OptimalEngine scaled = design;
+  scaled.engine = resized(design.engine, factors);
+  scaled.capacity.R *= factors.length;
+  scaled.capacity.T *= factors.energy;
+  // The capacity moves along a line of constant X (section 6.1): X stays, Y grows.
+  const CapacityCoordinates shift = capacity_coordinates(std::log(factors.length), std::log(factors.energy));
+  scaled.coordinates.Y += shift.Y;
+  return scaled;
+}
+
+}  // namespace trebuchet

@@ -1,0 +1,79 @@
+#include "trebuchet/capacity_fit.hpp"
+
+#include <cmath>
+
+#include "solve_1d.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+
+namespace trebuchet {
+
+CapacityFit fit_capacity(const ScaledDesign& shape, const Capacity& capacity, const Material& material,
+                         const ShotSettings& settings, double rtol) {
+  const double R = capacity.R, T = capacity.T;
+  CapacityFit fit;
+  ScaledDesign design = shape;
+  // One shot of the design with ratio mu gives the L2 that lands at R, and the T delivered there.
+  struct Trial {
+    ShotResult shot;
+    double L2, T;
+  };
+  auto trial = [&](double mu) {
+    design.mu = mu;
+    Trial out{simulate_shot(design, settings.criterion, settings.integrator), 0, 0};
+    ++fit.simulations;
+    out.L2 = R / out.shot.release.range;
+    out.T = extra_scalings(design.K(), out.L2, material).energy_unit * out.shot.release.energy_at_target;  // eq:ExtraScalings
+    return out;
+  };
+  auto log_T_error = [&](double log_mu) { return std::log(trial(std::exp(log_mu)).T / T); };
+  // First guess without a shot: T ~ m g R / 2 gives m (section 4), and T ~ 0.9 Delta U with
+  // Delta U = M g L2 (Delta U/(M g L2)) (eq:DU) and M g L2 ~ L2^5 (eq:ExtraScalings) gives L2 and M.
+  const double drop_per_L2_5 = extra_scalings(shape.K(), 1.0, material).energy_unit * shape.energy_drop();  // Delta U at L2 = 1 m [J]
+  const double L2_guess = std::pow(T / (0.9 * drop_per_L2_5), 0.2);
+  const double m_guess = 2 * T / (material.g * R);
+  const double log_mu_guess = std::log(m_guess / extra_scalings(shape.K(), L2_guess, material).M);
+  // T(mu) need not be monotone (the release can move between maxima of the objective), so
+  // walk outward from the guess on both sides, 5 % steps in mu, up to a factor 20, and take
+  // the first sign change of the T error; shots that fail on the way are stepped over.
+  const double step = 0.05, reach = 3.0;
+  auto error_or_nan = [&](double log_mu) {
+    if (log_mu < std::log(1e-6) || log_mu > 0) return std::nan("");
+    try {
+      return log_T_error(log_mu);
+    } catch (const Error&) {
+      return std::nan("");
+    }
+  };
+  const double at_guess = error_or_nan(log_mu_guess);
+  double lo = 0, hi = 0;
+  bool bracketed = false;
+  double previous[2] = {at_guess, at_guess};
+  for (int k = 1; !bracketed && k * step <= reach; ++k) {
+    for (int side = 0; side < 2 && !bracketed; ++side) {
+      const double inner = log_mu_guess + (side ? 1 : -1) * (k - 1) * step, outer = log_mu_guess + (side ? 1 : -1) * k * step;
+      const double value = error_or_nan(outer);
+      if (std::isfinite(value) && std::isfinite(previous[side]) && (value > 0) != (previous[side] > 0)) {
+        lo = std::min(inner, outer), hi = std::max(inner, outer);
+        bracketed = true;
+      }
+      previous[side] = value;
+    }
+  }
+  if (!bracketed)
+    throw Error(ErrorKind::out_of_range, "no projectile mass within a factor 20 of m = 2T/(gR) = " + format_significant(m_guess, 3) +
+                                             " kg lets this shape deliver " + format_significant(T / 1e3, 4) + " kJ at " +
+                                             format_significant(R, 4) + " m; change the shape (l, l4, mu_b) or the capacity");
+  const Trial found = trial(std::exp(find_root(log_T_error, lo, hi, 0.1 * rtol, 0)));
+  fit.design = design;
+  fit.engine = engine_of(design, found.L2, material);  // the one conversion to SI
+  fit.verification = verification_of(fit.engine, found.shot, 0);
+  if (!(std::abs(found.T / T - 1) <= rtol))
+    throw Error(ErrorKind::numerical, "the capacity fit reached R = " + format_significant(fit.verification.capacity.R, 8) +
+                                          " m, T = " + format_significant(found.T, 8) + " J, not within " +
+                                          format_significant(rtol, 2) + " of the request: T jumps with mu here, as the "
+                                          "release moves from one maximum of the objective to another");
+  return fit;
+}
+
+}  // namespace trebuchet

@@ -1,0 +1,17 @@
+#include "trebuchet/design.hpp"
+
+#include <cmath>
+
+#include "trebuchet/units.hpp"
+
+namespace trebuchet {
+
+double ScaledDesign::L() const { return F * l * std::cos(radians(theta_i_deg)) - 1; }
+
+double ScaledDesign::K() const { return (l + 1) / mu_b; }
+
+double ScaledDesign::beam_inertia() const { return mu_b * (l * l - l + 1) / 3; }
+
+double ScaledDesign::energy_drop() const { return (1 - mu_b * (l - 1) / 2) * (1 + std::cos(radians(theta_i_deg))); }
+
+}  // namespace trebuchet

@@ -1,0 +1,58 @@
+#include "trebuchet/engine.hpp"
+
+#include <cmath>
+
+#include "trebuchet/units.hpp"
+
+namespace trebuchet {
+
+ScaledDesign scaled_design(const Engine& engine) {
+  return {engine.L1 / engine.L2, engine.L4 / engine.L1, engine.mb / engine.M, engine.m / engine.M, engine.theta_i_deg,
+          arm_fraction(engine)};
+}
+
+Engine engine_of(const ScaledDesign& design, double L2, const Material& material) {
+  const ExtraScalings size = extra_scalings(design.K(), L2, material);
+  Engine e;
+  e.theta_i_deg = design.theta_i_deg;
+  e.L2 = L2;
+  e.L1 = design.l * L2;
+  e.L3 = counterweight_arm(e.L1, L2, design.theta_i_deg, design.F);
+  e.L4 = design.l4 * e.L1;
+  e.M = size.M;
+  e.D = size.D;
+  e.m = design.mu * e.M;
+  e.mb = design.mu_b * e.M;
+  e.material = material;
+  return e;
+}
+
+double beam_length(const Engine& engine) { return engine.L1 + engine.L2; }
+
+double pivot_height(const Engine& engine) { return engine.L1 * std::cos(radians(engine.theta_i_deg)); }
+
+double arm_fraction(const Engine& engine) { return (engine.L2 + engine.L3) / pivot_height(engine); }
+
+double counterweight_arm(double L1, double L2, double theta_i_deg, double F) {
+  return F * L1 * std::cos(radians(theta_i_deg)) - L2;
+}
+
+double potential_energy_drop(const Engine& engine) {
+  const double L_CM = (engine.L1 - engine.L2) / 2;  // pivot to beam centre of mass [m]
+  return (engine.M * engine.L2 - engine.mb * L_CM) * engine.material.g * (1 + std::cos(radians(engine.theta_i_deg)));  // eq:DU
+}
+
+Engine resized(const Engine& engine, const SizeFactors& f) {
+  Engine out = engine;
+  out.L1 *= f.length;
+  out.L2 *= f.length;
+  out.L3 *= f.length;
+  out.L4 *= f.length;
+  out.D *= f.diameter;
+  out.M *= f.mass;
+  out.m *= f.mass;
+  out.mb *= f.mass;
+  return out;
+}
+
+}  // namespace trebuchet

@@ -1,0 +1,74 @@
+// The equations of motion of one phase as a GSL odeiv2 system (appendix A), stepped and
+// evaluated between steps, and the quintic Hermite interpolant between step ends.
+// Internal to the library: the shot is its one user.
+#pragma once
+
+#include <gsl/gsl_odeiv2.h>
+
+#include <array>
+#include <memory>
+
+#include "trebuchet/dynamics.hpp"
+#include "trebuchet/integrator.hpp"
+
+namespace trebuchet {
+
+// Phase I integrates (th, psi, th', psi'); phase II (th, psi, phi, th', psi', phi').
+// Fixed size: no allocation per use.
+using OdeVector = std::array<double, 6>;
+
+// A step end: time, state y = (angles q, angular speeds q') and y' = (q', q'').
+struct StepEnd {
+  double t;
+  OdeVector y, dy;
+};
+
+// Between two step ends, each angle follows the quintic Hermite interpolant that matches q, q'
+// and q'' at both ends, and each angular speed is that interpolant's derivative. Errors are
+// O(h^6) in q and O(h^5) in q'. `n` is the dimension of the phase (4 or 6).
+OdeVector hermite(const StepEnd& a, const StepEnd& b, double time, std::size_t n);
+
+// Phase I is singular where the sling stands vertical (cos phi = 0 in eq:EOM_I_1). Trial
+// states with cos phi below this are refused, so GSL shortens the step rather than evaluate
+// the equations near the singularity; the shot abandons phase I at twice this.
+inline constexpr double refuse_trough_cos_phi = 0.01;
+
+// One phase: a driver for stepping and a second one for evaluating the solution between steps.
+class PhaseIntegrator {
+ public:
+  PhaseIntegrator(const Dynamics& dynamics, Phase phase, const IntegratorSettings& settings);
+
+  // One accepted step toward t_end; false when the equations failed.
+  bool step(double& t, double y[], double t_end, double& h);
+
+  // The solution at t1, from a stored step start (t0, y0): integrated anew to the same
+  // tolerance. Throws Error(numerical) when the integrator fails.
+  OdeVector at(double t0, const OdeVector& y0, double t1);
+
+  std::size_t dimension() const { return system_.dimension; }
+  Phase phase() const { return context_.phase; }
+  const Dynamics& dynamics() const { return *context_.dynamics; }
+
+  // The full state of an integrated vector (phi from eq:EOM_I_3 in phase I).
+  State state(const OdeVector& y) const;
+
+  // y' = f(y): the angular speeds and accelerations at a step end, for the interpolant.
+  OdeVector derivative(const OdeVector& y);
+
+  // A step end at (t, y) with its derivative.
+  StepEnd step_end(double t, const OdeVector& y) { return {t, y, derivative(y)}; }
+
+  struct Context {
+    const Dynamics* dynamics;
+    Phase phase;
+  };
+
+ private:
+  using DriverPtr = std::unique_ptr<gsl_odeiv2_driver, decltype(&gsl_odeiv2_driver_free)>;
+  gsl_odeiv2_driver* make(const IntegratorSettings& settings);
+  Context context_;
+  gsl_odeiv2_system system_;
+  DriverPtr stepping_, evaluating_;
+};
+
+}  // namespace trebuchet

@@ -1,0 +1,142 @@
+#include "trebuchet/optimizer.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multimin.h>
+
+#include <cmath>
+#include <memory>
+
+#include "gsl_errors.hpp"
+#include "trebuchet/calculator.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+
+namespace trebuchet {
+namespace {
+
+struct Start {
+  std::string name;
+  ScaledDesign shape;
+};
+
+// The calculator's optimum for the capacity on each branch it has, as starting shapes.
+std::vector<Start> starts_for(const OptimizeRequest& r) {
+  std::vector<Start> starts;
+  for (ScaledDesign shape : r.starts) {
+    shape.theta_i_deg = r.theta_i_deg, shape.F = r.F;
+    starts.push_back({"given shape " + std::to_string(starts.size() + 1), shape});
+  }
+  if (!starts.empty()) return starts;
+  for (BranchChoice branch : {BranchChoice::lower, BranchChoice::upper, BranchChoice::automatic}) {
+    DesignRequest d;
+    d.first = {Quantity::R, r.capacity.R};
+    d.second = {Quantity::T, r.capacity.T};
+    d.theta_i_deg = r.theta_i_deg;
+    d.F = r.F;
+    d.branch = branch;
+    d.extrapolate = true;
+    try {
+      const OptimalEngine design = design_optimal_engine(builtin_scaling_table(), d);
+      const std::string name = branch == BranchChoice::automatic ? "calculator" : branch == BranchChoice::lower ? "calculator, lower branch" : "calculator, upper branch";
+      const ScaledDesign shape = scaled_design(design.engine);
+      bool seen = false;
+      for (const Start& s : starts) seen = seen || (std::abs(s.shape.l / shape.l - 1) < 1e-9 && std::abs(s.shape.l4 / shape.l4 - 1) < 1e-9);
+      if (!seen) starts.push_back({name, shape});
+    } catch (const Error&) {
+      // no block or branch here: the other starts, or the generic one, remain
+    }
+    if (branch == BranchChoice::upper && starts.size() == 2) break;  // both branches found
+  }
+  if (starts.empty()) starts.push_back({"generic shape", {5.5, 0.9, 0.045, 0, r.theta_i_deg, r.F}});
+  for (Start& s : starts) s.shape.theta_i_deg = r.theta_i_deg, s.shape.F = r.F;
+  return starts;
+}
+
+struct Search {
+  const OptimizeRequest* request = nullptr;
+  int simulations = 0;
+  double best = -1;
+  CapacityFit best_fit;
+
+  // Minus the quality of the shape at log coordinates x, its mu fitted to the capacity; a
+  // shape that cannot deliver it, or fails, scores 0.
+  double cost(const gsl_vector* x, double theta, double F) {
+    const ScaledDesign shape{std::exp(gsl_vector_get(x, 0)), std::exp(gsl_vector_get(x, 1)), std::exp(gsl_vector_get(x, 2)), 0, theta, F};
+    try {
+      const CapacityFit fit = fit_capacity(shape, request->capacity, request->material, request->settings);
+      simulations += fit.simulations;
+      const double q = objective_of(fit.verification);
+      if (q > best) best = q, best_fit = fit;
+      return -q;
+    } catch (const Error&) {
+      simulations += 1;
+      return 0;
+    }
+  }
+
+  double objective_of(const Verification& v) const {
+    return request->settings.criterion.release == Release::efficiency ? v.eps : v.Q;
+  }
+};
+
+double cost_function(const gsl_vector* x, void* params) {
+  auto* p = static_cast<std::pair<Search*, const ScaledDesign*>*>(params);
+  return p->first->cost(x, p->second->theta_i_deg, p->second->F);
+}
+
+Optimum search_from(const OptimizeRequest& request, const Start& start) {
+  Search search;
+  search.request = &request;
+  const ScaledDesign fixed = start.shape;
+  std::pair<Search*, const ScaledDesign*> params{&search, &fixed};
+  gsl_multimin_function function{cost_function, 3, &params};
+  std::unique_ptr<gsl_vector, decltype(&gsl_vector_free)> x(gsl_vector_alloc(3), gsl_vector_free), step(gsl_vector_alloc(3), gsl_vector_free);
+  gsl_vector_set(x.get(), 0, std::log(start.shape.l));
+  gsl_vector_set(x.get(), 1, std::log(start.shape.l4));
+  gsl_vector_set(x.get(), 2, std::log(start.shape.mu_b));
+  gsl_vector_set_all(step.get(), 0.05);  // 5 % in each shape parameter
+  std::unique_ptr<gsl_multimin_fminimizer, decltype(&gsl_multimin_fminimizer_free)> minimizer(
+      gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, 3), gsl_multimin_fminimizer_free);
+  gsl_multimin_fminimizer_set(minimizer.get(), &function, x.get(), step.get());
+  Optimum out;
+  out.start = start.name;
+  out.start_design = start.shape;
+  for (out.iterations = 0; out.iterations < 400; ++out.iterations) {
+    if (gsl_multimin_fminimizer_iterate(minimizer.get()) != GSL_SUCCESS) break;
+    if (gsl_multimin_test_size(gsl_multimin_fminimizer_size(minimizer.get()), request.shape_tolerance) == GSL_SUCCESS) break;
+  }
+  if (!(search.best > 0))
+    throw Error(ErrorKind::out_of_range, "no shape near the " + start.name + " start delivers " +
+                                             format_significant(request.capacity.R, 4) + " m with " +
+                                             format_significant(request.capacity.T / 1e3, 4) + " kJ; try another capacity");
+  out.fit = search.best_fit;
+  out.objective = search.best;
+  out.simulations = search.simulations;
+  return out;
+}
+
+}  // namespace
+
+std::vector<Optimum> optimize(const OptimizeRequest& request) {
+  use_gsl_return_codes();
+  std::vector<Optimum> optima;
+  std::string reasons;
+  for (const Start& start : starts_for(request)) {
+    try {
+      optima.push_back(search_from(request, start));
+    } catch (const Error& e) {
+      reasons += (reasons.empty() ? "" : "; ") + std::string(e.what());
+    }
+  }
+  if (optima.empty()) throw Error(ErrorKind::out_of_range, reasons);
+  return optima;
+}
+
+Optimum best_optimum(const std::vector<Optimum>& optima) {
+  const Optimum* best = &optima.front();
+  for (const Optimum& o : optima)
+    if (o.objective > best->objective) best = &o;
+  return *best;
+}
+
+}  // namespace trebuchet

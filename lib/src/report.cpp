@@ -1,0 +1,141 @@
+#include "trebuchet/report.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "trebuchet/error.hpp"
+#include "trebuchet/units.hpp"
+#include "trebuchet/format.hpp"
+
+namespace trebuchet {
+namespace {
+
+std::string with_unit(double value, const char* unit) { return format_significant(value, 4) + " " + unit; }
+
+std::string mass_text(double kg) { return kg >= 1000 ? with_unit(kg / 1000, "t") : with_unit(kg, "kg"); }
+
+std::string energy_text(double joules) {
+  if (joules >= 1e6) return with_unit(joules / 1e6, "MJ");
+  if (joules >= 1e3) return with_unit(joules / 1e3, "kJ");
+  return with_unit(joules, "J");
+}
+
+// The series is computed: a number that is not finite means the integration failed.
+double finite_or_error(double value) {
+  if (!std::isfinite(value)) throw Error(ErrorKind::numerical, "the result in the series is not finite; tighten --rtol");
+  return value;
+}
+
+std::string cell(const std::string& label, const std::string& value) {
+  std::string text = label + " = " + value;
+  return text + std::string(text.size() < 18 ? 18 - text.size() : 1, ' ');
+}
+
+}  // namespace
+
+std::string design_table(const OptimalEngine& design) {
+  design_json(design);  // the same finiteness check as JSON
+  const Engine& e = design.engine;
+  const ScaledDesign s = scaled_design(e);
+  std::string t;
+  t += "Optimal engine from tab:CPNC: theta_i = " + format_number(e.theta_i_deg) + " deg, F = " +
+       format_fraction(design.F) + ", beta2 = " + format_fraction(e.material.beta2) + ", " +
+       (design.branch == Branch::none ? std::string("segment") : std::string(branch_name(design.branch)) + " branch") +
+       " X in [" + format_number(design.segment_X_min) + ", " + format_number(design.segment_X_max) + "]\n";
+  t += "  capacity       " + cell("R", with_unit(design.capacity.R, "m")) + cell("T", energy_text(design.capacity.T)) +
+       cell("X", format_significant(design.coordinates.X, 3)) + cell("Y", format_significant(design.coordinates.Y, 3)) + "\n";
+  t += "  beam           " + cell("L1", with_unit(e.L1, "m")) + cell("L2", with_unit(e.L2, "m")) +
+       cell("Lb", with_unit(beam_length(e), "m")) + cell("H", with_unit(pivot_height(e), "m")) + "\n";
+  t += "                 " + cell("D", with_unit(e.D, "m")) + cell("mb", mass_text(e.mb)) + "\n";
+  t += "  counterweight  " + cell("M", mass_text(e.M)) + cell("L3", with_unit(e.L3, "m")) + "\n";
+  t += "  sling          " + cell("L4", with_unit(e.L4, "m")) + "\n";
+  t += "  projectile     " + cell("m", mass_text(e.m)) + "\n";
+  t += "  scaled         " + cell("l", format_significant(s.l, 4)) + cell("l4", format_significant(s.l4, 4)) +
+       cell("L", format_significant(e.L3 / e.L2, 4)) + "\n";
+  t += "                 " + cell("mu", format_significant(s.mu, 4)) + cell("mu_b", format_significant(s.mu_b, 4)) +
+       cell("K", format_significant(s.K(), 4)) + "\n";
+  t += "  stored energy  " + cell("DeltaU", energy_text(potential_energy_drop(e))) + "(eq:DU)\n";
+  const Material& material = e.material;
+  if (material.g != Material{}.g || material.wood_density != Material{}.wood_density ||
+      material.youngs_modulus != Material{}.youngs_modulus)
+    t += "  material       " + cell("E", with_unit(material.youngs_modulus / 1e9, "GPa")) +
+         cell("rho_d", with_unit(material.wood_density, "kg/m3")) + cell("g", with_unit(material.g, "m/s2")) + "\n";
+  for (const std::string& w : design.warnings) t += "warning: " + w + "\n";
+  return t;
+}
+
+std::string verification_table(const Verification& v, const std::optional<CapacityCheck>& check) {
+  verification_json(v, check);  // the same finiteness check as JSON
+  auto sig = [](double x, int digits = 5) { return format_significant(x, digits); };
+  std::ostringstream out;
+  out << "R = " << sig(v.capacity.R) << " m   T = " << sig(v.capacity.T / 1e3) << " kJ   at the target level\n"
+      << "eps = " << sig(100 * v.eps, 4) << " %   Q = " << sig(100 * v.Q, 4) << " %   F = " << sig(v.force_factor, 4) << "\n"
+      << "release: v = " << sig(v.v, 4) << " m/s, h = " << sig(v.h, 4) << " m, x = " << sig(v.x, 4)
+      << " m (behind the pivot if > 0), A = " << sig(v.A_deg, 4) << " deg\n"
+      << "times: lift-off " << sig(v.t_liftoff, 4) << " s, release " << sig(v.t_release, 4) << " s\n"
+      << "forces: F_S_perp = " << sig(v.FS_perp_mg, 4) << " mg, F_R = " << sig(v.FR_Mg, 4) << " Mg, dF_Rh = " << sig(v.dFRh_Mg, 4)
+      << " Mg\n"
+      << "energy drift: " << sig(v.energy_drift, 2) << " of Delta U\n";
+  if (check) {
+    out << "predicted: R = " << sig(check->predicted.R) << " m (" << (check->deviation_R >= 0 ? "+" : "") << sig(100 * check->deviation_R, 3)
+        << " %), T = " << sig(check->predicted.T / 1e3) << " kJ (" << (check->deviation_T >= 0 ? "+" : "") << sig(100 * check->deviation_T, 3)
+        << " %): " << (check->pass ? "pass" : "FAIL") << " at tolerance " << sig(100 * check->tolerance, 3) << " %\n";
+  }
+  return out.str();
+}
+
+std::string optimum_table(const Optimum& optimum) {
+  return "optimum from the " + optimum.start + " start (" + std::to_string(optimum.simulations) + " shots, " +
+         std::to_string(optimum.iterations) + " simplex iterations):\n" + engine_table(optimum.fit.engine) +
+         verification_table(optimum.fit.verification);
+}
+
+std::string engine_table(const Engine& e) {
+  auto sig = [](double x) { return format_significant(x, 4); };
+  std::ostringstream out;
+  out << "  Lb = " << sig(beam_length(e)) << " m, H = " << sig(pivot_height(e)) << " m, L1 = " << sig(e.L1) << " m, L2 = " << sig(e.L2)
+      << " m, L3 = " << sig(e.L3) << " m, L4 = " << sig(e.L4) << " m\n"
+      << "  M = " << sig(e.M) << " kg, m = " << sig(e.m) << " kg, mb = " << sig(e.mb) << " kg, D = " << format_significant(e.D, 3) << " m\n";
+  return out.str();
+}
+
+std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine) {
+  const ScaledDesign scaled = scaled_design(engine);
+  const double g = engine.material.g;
+  const double time_unit = std::sqrt(engine.L2 / g);           // section 3 [s]
+  const double energy_unit = engine.M * g * engine.L2;         // [J]
+  const double drop = scaled.energy_drop();
+  double energy0 = trace.empty() ? 0 : trace.front().snapshot.energy;
+  bool released = false;
+  std::ostringstream out;
+  out << "phase,t_s,theta_deg,psi_deg,phi_deg,theta_dot_rad_s,psi_dot_rad_s,phi_dot_rad_s,"
+         "FS_perp_mg,FR_Mg,FRh_Mg,FRv_Mg,FH_Mg,normal_mg,energy_J,energy_drift\n";
+  for (const TracePoint& p : trace) {
+    const Snapshot& s = p.snapshot;
+    if (p.phase == Phase::released && !released) {  // without the projectile, energy is conserved anew
+      released = true;
+      energy0 = s.energy;
+    }
+    const double row[] = {p.t * time_unit,
+                          degrees(p.state.theta),
+                          degrees(p.state.psi),
+                          degrees(p.state.phi),
+                          p.state.theta_dot / time_unit,
+                          p.state.psi_dot / time_unit,
+                          p.state.phi_dot / time_unit,
+                          s.sling_perpendicular / scaled.mu,
+                          std::hypot(s.pivot_reaction.x, s.pivot_reaction.y),
+                          s.pivot_reaction.x,
+                          s.pivot_reaction.y,
+                          std::hypot(s.hinge_force.x, s.hinge_force.y),
+                          s.normal_force / scaled.mu,
+                          s.energy * energy_unit,
+                          (s.energy - energy0) / drop};
+    out << (p.phase == Phase::trough ? "I" : p.phase == Phase::lifted ? "II" : "III");
+    for (double x : row) out << "," << format_number(finite_or_error(x));
+    out << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace trebuchet

@@ -1,0 +1,247 @@
+#include "trebuchet/scaling_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+
+namespace trebuchet {
+namespace {
+
+using nlohmann::json;
+
+// Walks a JSON document and reports the first problem with the path of the offending key.
+class Reader {
+ public:
+  explicit Reader(const std::string& origin) : origin_(origin) {}
+
+  [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
+    throw Error(ErrorKind::data_file, origin_ + ": " + (path.empty() ? "top level" : path) + ": " + problem);
+  }
+
+  static std::string join(const std::string& path, const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+  }
+
+  const json& member(const json& object, const std::string& path, const std::string& key) const {
+    if (!object.is_object()) fail(path, "expected an object");
+    auto it = object.find(key);
+    if (it == object.end()) fail(path, "missing key '" + key + "'");
+    return *it;
+  }
+
+  double number(const json& object, const std::string& path, const std::string& key) const {
+    const json& value = member(object, path, key);
+    if (!value.is_number()) fail(join(path, key), "expected a number, got " + std::string(value.type_name()));
+    double x = value.get<double>();
+    if (!std::isfinite(x)) fail(join(path, key), "not a finite number");
+    return x;
+  }
+
+  double positive(const json& object, const std::string& path, const std::string& key) const {
+    double x = number(object, path, key);
+    if (!(x > 0)) fail(join(path, key), "must be positive, got " + format_number(x));
+    return x;
+  }
+
+  const json& array(const json& object, const std::string& path, const std::string& key) const {
+    const json& value = member(object, path, key);
+    if (!value.is_array() || value.empty()) fail(join(path, key), "expected a non-empty array");
+    return value;
+  }
+
+  ParamVector per_param(const json& object, const std::string& path, const std::string& key, bool must_be_positive) const {
+    const json& values = member(object, path, key);
+    const std::string here = join(path, key);
+    ParamVector result;
+    for (Param param : all_params) {
+      const std::string name(param_name(param));
+      result[index(param)] = must_be_positive ? positive(values, here, name) : number(values, here, name);
+    }
+    return result;
+  }
+
+ private:
+  std::string origin_;
+};
+
+Branch parse_branch(const Reader& reader, const json& segment, const std::string& path) {
+  const json& value = reader.member(segment, path, "branch");
+  if (!value.is_string()) reader.fail(path + ".branch", "expected \"none\", \"lower\" or \"upper\"");
+  const std::string text = value.get<std::string>();
+  if (text == "none") return Branch::none;
+  if (text == "lower") return Branch::lower;
+  if (text == "upper") return Branch::upper;
+  reader.fail(path + ".branch", "expected \"none\", \"lower\" or \"upper\", got \"" + text + "\"");
+}
+
+Segment parse_segment(const Reader& reader, const json& object, const std::string& path) {
+  Segment segment{};
+  segment.X_min = reader.number(object, path, "X_min");
+  segment.X_max = reader.number(object, path, "X_max");
+  if (!(segment.X_min < segment.X_max)) reader.fail(path, "X_min must be below X_max");
+  segment.branch = parse_branch(reader, object, path);
+  segment.a = reader.per_param(object, path, "a", true);
+  segment.exponents << reader.per_param(object, path, "p", false), reader.per_param(object, path, "q", false);
+  return segment;
+}
+
+void check_overlaps(const Reader& reader, const TableBlock& block, const std::string& path) {
+  for (std::size_t i = 0; i < block.segments.size(); ++i)
+    for (std::size_t j = i + 1; j < block.segments.size(); ++j) {
+      const Segment& s = block.segments[i];
+      const Segment& t = block.segments[j];
+      const bool overlap = std::max(s.X_min, t.X_min) < std::min(s.X_max, t.X_max);
+      const bool labelled = s.branch != Branch::none && t.branch != Branch::none && s.branch != t.branch;
+      if (overlap && !labelled)
+        reader.fail(path + ".segments", "segments [" + format_number(s.X_min) + ", " + format_number(s.X_max) +
+                                            "] and [" + format_number(t.X_min) + ", " + format_number(t.X_max) +
+                                            "] overlap; label them \"lower\" and \"upper\"");
+    }
+}
+
+TableBlock parse_block(const Reader& reader, const json& object, const std::string& path) {
+  TableBlock block{};
+  block.theta_i_deg = reader.positive(object, path, "theta_i_deg");
+  block.F = reader.positive(object, path, "F");
+  block.Z0 = reader.per_param(object, path, "Z0", true);
+  if (object.contains("branch_switch_X")) block.branch_switch_X = reader.number(object, path, "branch_switch_X");
+  const json& segments = reader.array(object, path, "segments");
+  for (std::size_t i = 0; i < segments.size(); ++i)
+    block.segments.push_back(parse_segment(reader, segments[i], path + ".segments[" + std::to_string(i) + "]"));
+  std::stable_sort(block.segments.begin(), block.segments.end(),
+                   [](const Segment& a, const Segment& b) { return a.X_min < b.X_min; });
+  check_overlaps(reader, block, path);
+  return block;
+}
+
+}  // namespace
+
+std::string_view param_name(Param param) {
+  static constexpr std::array<std::string_view, param_count> names = {"L1", "L2", "L4", "D", "M", "m", "mb"};
+  return names[index(param)];
+}
+
+std::string_view branch_name(Branch branch) {
+  switch (branch) {
+    case Branch::none: return "none";
+    case Branch::lower: return "lower";
+    case Branch::upper: return "upper";
+  }
+  return "?";
+}
+
+double TableBlock::X_covered_min() const {
+  double x = segments.front().X_min;
+  for (const Segment& s : segments) x = std::min(x, s.X_min);
+  return x;
+}
+
+double TableBlock::X_covered_max() const {
+  double x = segments.front().X_max;
+  for (const Segment& s : segments) x = std::max(x, s.X_max);
+  return x;
+}
+
+const TableBlock* ScalingTable::find_block(double theta_i_deg, double F) const {
+  for (const TableBlock& block : blocks)
+    if (std::abs(block.theta_i_deg - theta_i_deg) < 1e-9 && std::abs(block.F - F) < 1e-9) return &block;
+  return nullptr;
+}
+
+std::string ScalingTable::block_list() const {
+  std::string list;
+  for (const TableBlock& block : blocks) {
+    if (!list.empty()) list += ", ";
+    list += "theta " + format_number(block.theta_i_deg) + " with F " + format_fraction(block.F);
+  }
+  return list;
+}
+
+ScalingTable parse_scaling_table(std::string_view json_text, const std::string& origin) {
+  json document;
+  try {
+    document = json::parse(json_text);
+  } catch (const json::exception& e) {  // parse errors, and numbers beyond double range
+    throw Error(ErrorKind::data_file, origin + ": not valid JSON (" + std::string(e.what()) + ")");
+  }
+  const Reader reader(origin);
+  ScalingTable table{};
+  table.origin = origin;
+  if (document.is_object()) {
+    table.name = document.value("name", "");
+    if (document.contains("provenance")) table.provenance = document["provenance"];
+  }
+  table.R0 = reader.positive(document, "", "R0");
+  table.T0 = reader.positive(document, "", "T0");
+  const json& material = reader.member(document, "", "reference_material");
+  table.reference = {reader.positive(material, "reference_material", "beta2"),
+                     reader.positive(material, "reference_material", "youngs_modulus"),
+                     reader.positive(material, "reference_material", "wood_density"),
+                     reader.positive(material, "reference_material", "g")};
+  table.n = reader.per_param(document, "", "n", true);
+  const json& blocks = reader.array(document, "", "blocks");
+  for (std::size_t i = 0; i < blocks.size(); ++i)
+    table.blocks.push_back(parse_block(reader, blocks[i], "blocks[" + std::to_string(i) + "]"));
+  return table;
+}
+
+nlohmann::ordered_json param_json(const ParamVector& values) {
+  nlohmann::ordered_json out;
+  for (Param p : all_params) out[std::string(param_name(p))] = values[index(p)];
+  return out;
+}
+
+nlohmann::ordered_json material_json(const Material& m) {
+  return {{"beta2", m.beta2}, {"youngs_modulus", m.youngs_modulus}, {"wood_density", m.wood_density}, {"g", m.g}};
+}
+
+nlohmann::ordered_json scaling_table_json(const ScalingTable& table) {
+  nlohmann::ordered_json out;
+  out["name"] = table.name;
+  if (!table.provenance.is_null()) out["provenance"] = table.provenance;
+  out["R0"] = table.R0;
+  out["T0"] = table.T0;
+  out["reference_material"] = material_json(table.reference);
+  out["n"] = param_json(table.n);
+  nlohmann::ordered_json blocks = nlohmann::ordered_json::array();
+  for (const TableBlock& block : table.blocks) {
+    nlohmann::ordered_json b;
+    b["theta_i_deg"] = block.theta_i_deg;
+    b["F"] = block.F;
+    if (block.branch_switch_X) b["branch_switch_X"] = *block.branch_switch_X;
+    b["Z0"] = param_json(block.Z0);
+    nlohmann::ordered_json segments = nlohmann::ordered_json::array();
+    for (const Segment& segment : block.segments)
+      segments.push_back({{"X_min", segment.X_min},
+                          {"X_max", segment.X_max},
+                          {"branch", branch_name(segment.branch)},
+                          {"a", param_json(segment.a)},
+                          {"p", param_json(segment.exponents.col(0))},
+                          {"q", param_json(segment.exponents.col(1))}});
+    b["segments"] = segments;
+    blocks.push_back(b);
+  }
+  out["blocks"] = blocks;
+  return out;
+}
+
+ScalingTable load_scaling_table(const std::string& path) {
+  std::ifstream file(path);
+  if (!file)
+    throw Error(ErrorKind::data_file, path + ": cannot be read; give the path of a constants file like data/cpnc.json");
+  std::stringstream text;
+  text << file.rdbuf();
+  return parse_scaling_table(text.str(), path);
+}
+
+const ScalingTable& builtin_scaling_table() {
+  static const ScalingTable table = parse_scaling_table(builtin_scaling_table_json(), "built-in data/cpnc.json");
+  return table;
+}
+
+}  // namespace trebuchet

@@ -1,0 +1,229 @@
+#include "trebuchet/schema.hpp"
+
+#include <cmath>
+
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/units.hpp"
+
+namespace trebuchet {
+namespace {
+
+// How a key is named in messages: "--L4" on the command line (empty `where`), "design[2].L4" in a file.
+std::string key_name(const std::string& where, const std::string& key) { return where.empty() ? "--" + key : where + "." + key; }
+
+// A number in SI, or a string with a unit suffix.
+std::optional<double> read_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension,
+                                 const std::string& where) {
+  if (!object.contains(key) || object[key].is_null()) return std::nullopt;
+  const nlohmann::json& value = object[key];
+  const std::string name = key_name(where, key);
+  if (value.is_number()) {
+    const double number = value.get<double>();
+    if (!std::isfinite(number)) throw Error(ErrorKind::bad_number, name + ": " + value.dump() + " is not a finite number");
+    return number;
+  }
+  if (value.is_string()) return parse_value(value.get<std::string>(), dimension, name);
+  throw Error(ErrorKind::bad_number, name + ": " + value.dump() + " is neither a number nor a value with a unit like \"6.13m\"");
+}
+
+double require_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension,
+                     const std::string& where, const std::string& hint) {
+  const auto value = read_value(object, key, dimension, where);
+  if (!value)
+    throw Error(ErrorKind::usage, (where.empty() ? "--" + key + " is missing" : where + ": key \"" + key + "\" is missing") + "; give " + hint);
+  return *value;
+}
+
+// The calculator's numbers are computed, never read: one that is not finite is a defect.
+void require_finite(const std::vector<Field>& fields) {
+  for (const Field& field : fields)
+    if (!std::isfinite(field.value))
+      throw Error(ErrorKind::numerical, std::string("internal error: ") + field.key +
+                                            " is not finite; please report the command that caused it");
+}
+
+std::vector<Field> design_fields(const OptimalEngine& d) {
+  std::vector<Field> fields = {{"R", d.capacity.R}, {"T", d.capacity.T}, {"X", d.coordinates.X}, {"Y", d.coordinates.Y}};
+  for (const Field& field : engine_fields(d.engine)) fields.push_back(field);
+  fields.push_back({"amplification", d.amplification});
+  return fields;
+}
+
+std::string joined_warnings(const OptimalEngine& design) {
+  std::string text;
+  for (const std::string& w : design.warnings) text += (text.empty() ? "" : "; ") + w;
+  return text;
+}
+
+std::string csv_quoted(const std::string& text) {
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+}  // namespace
+
+std::vector<Field> engine_fields(const Engine& e) {
+  const ScaledDesign s = scaled_design(e);
+  return {{"theta_i_deg", e.theta_i_deg},
+          {"F", s.F},
+          {"beta2", e.material.beta2},
+          {"L1", e.L1},
+          {"L2", e.L2},
+          {"L3", e.L3},
+          {"L4", e.L4},
+          {"D", e.D},
+          {"M", e.M},
+          {"m", e.m},
+          {"mb", e.mb},
+          {"Lb", beam_length(e)},
+          {"H", pivot_height(e)},
+          {"l", s.l},
+          {"l4", s.l4},
+          {"L", e.L3 / e.L2},
+          {"mu", s.mu},
+          {"mu_b", s.mu_b},
+          {"K", s.K()},
+          {"DeltaU", potential_energy_drop(e)},
+          {"youngs_modulus", e.material.youngs_modulus},
+          {"wood_density", e.material.wood_density},
+          {"g", e.material.g}};
+}
+
+void write_engine(nlohmann::ordered_json& out, const Engine& engine) {
+  const std::vector<Field> fields = engine_fields(engine);
+  require_finite(fields);
+  for (const Field& field : fields) out[field.key] = field.value;
+}
+
+void check_engine(const Engine& e, const std::string& where) {
+  auto positive = [&](double value, const char* key, const char* what) {
+    if (!(value > 0))
+      throw Error(ErrorKind::bad_number, key_name(where, key) + " = " + format_significant(value, 6) + ": the " + what +
+                                             " must be positive");
+  };
+  positive(e.L1, "L1", "long beam section");
+  positive(e.L2, "L2", "short beam section");
+  positive(e.L3, "L3", "counterweight arm (hinge to counterweight centre)");
+  positive(e.L4, "L4", "sling length");
+  positive(e.M, "M", "counterweight mass");
+  positive(e.m, "m", "projectile mass");
+  if (!(e.mb >= 0)) throw Error(ErrorKind::bad_number, key_name(where, "mb") + " = " + format_significant(e.mb, 6) + ": the beam mass must not be negative");
+  if (!(e.theta_i_deg > 0 && e.theta_i_deg < 90))
+    throw Error(ErrorKind::bad_number, key_name(where, where.empty() ? "theta" : "theta_i_deg") + " = " + format_significant(e.theta_i_deg, 6) +
+                                           ": the initial beam angle must lie between 0 and 90 degrees");
+  positive(e.material.beta2, "beta2", "allowed bending");
+  positive(e.material.youngs_modulus, "youngs_modulus", "Young's modulus");
+  positive(e.material.wood_density, "wood_density", "wood density");
+  positive(e.material.g, "g", "gravitational acceleration");
+}
+
+EngineRecord read_engine(const nlohmann::json& object, const std::string& where) {
+  if (!object.is_object())
+    throw Error(ErrorKind::usage, (where.empty() ? std::string("input") : where) + ": expected a JSON object with keys L1, L2, L3 (or F), L4, M, m, mb, theta_i_deg");
+  EngineRecord in;
+  Engine& e = in.engine;
+  e.L1 = require_value(object, "L1", UnitDimension::length, where, "the long beam section, e.g. \"L1\": \"6.13m\"");
+  e.L2 = require_value(object, "L2", UnitDimension::length, where, "the short beam section, e.g. \"L2\": \"1.08m\"");
+  e.L4 = require_value(object, "L4", UnitDimension::length, where, "the sling length, e.g. \"L4\": \"5.80m\"");
+  e.M = require_value(object, "M", UnitDimension::mass, where, "the counterweight mass, e.g. \"M\": \"14.3t\"");
+  e.m = require_value(object, "m", UnitDimension::mass, where, "the projectile mass, e.g. \"m\": \"100kg\"");
+  e.mb = require_value(object, "mb", UnitDimension::mass, where, "the beam mass, e.g. \"mb\": \"660kg\"");
+  e.theta_i_deg = read_value(object, "theta_i_deg", UnitDimension::angle, where).value_or(standard_theta_i_deg);
+  e.D = read_value(object, "D", UnitDimension::length, where).value_or(0);
+  if (const auto L3 = read_value(object, "L3", UnitDimension::length, where)) {
+    e.L3 = *L3;
+  } else if (const auto F = read_value(object, "F", UnitDimension::dimensionless, where)) {
+    e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, *F);
+  } else {
+    throw Error(ErrorKind::usage, (where.empty() ? std::string("flags") : where) +
+                                      ": give the counterweight arm L3 in metres, or the fraction F = (L2 + L3)/H, e.g. F = 2/3");
+  }
+  Material& material = e.material;
+  material.beta2 = read_value(object, "beta2", UnitDimension::dimensionless, where).value_or(material.beta2);
+  material.youngs_modulus = read_value(object, "youngs_modulus", UnitDimension::pressure, where).value_or(material.youngs_modulus);
+  material.wood_density = read_value(object, "wood_density", UnitDimension::density, where).value_or(material.wood_density);
+  material.g = read_value(object, "g", UnitDimension::acceleration, where).value_or(material.g);
+  check_engine(e, where);
+  const auto R = read_value(object, "R", UnitDimension::length, where);
+  const auto T = read_value(object, "T", UnitDimension::energy, where);
+  if (R.has_value() != T.has_value())
+    throw Error(ErrorKind::usage, (where.empty() ? std::string("flags") : where) + ": a capacity needs both R and T; give both or neither");
+  if (R && !(*R > 0 && *T > 0))
+    throw Error(ErrorKind::bad_number, (where.empty() ? std::string("flags") : where) + ": R and T must be positive");
+  if (R) in.capacity = Capacity{*R, *T, 0};
+  return in;
+}
+
+nlohmann::ordered_json design_json(const OptimalEngine& design) {
+  const std::vector<Field> fields = design_fields(design);
+  require_finite(fields);
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const Field& field : fields) out[field.key] = field.value;
+  out["branch"] = branch_name(design.branch);
+  if (design.branch_steps) {
+    nlohmann::ordered_json steps = nlohmann::ordered_json::object();
+    for (Param param : all_params) steps[std::string(param_name(param))] = (*design.branch_steps)[index(param)];
+    out["branch_steps"] = steps;
+  }
+  out["warnings"] = design.warnings;
+  return out;
+}
+
+std::string design_csv_header() {
+  std::string header;
+  for (const Field& field : design_fields(OptimalEngine{})) header += std::string(field.key) + ",";
+  return header + "branch,warnings";
+}
+
+std::string design_csv_row(const OptimalEngine& design) {
+  const std::vector<Field> fields = design_fields(design);
+  require_finite(fields);
+  std::string row;
+  for (const Field& field : fields) row += format_number(field.value) + ",";
+  return row + std::string(branch_name(design.branch)) + "," + (design.warnings.empty() ? "" : csv_quoted(joined_warnings(design)));
+}
+
+CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance) {
+  CapacityCheck c;
+  c.predicted = predicted, c.tolerance = tolerance;
+  c.deviation_R = v.capacity.R / predicted.R - 1;
+  c.deviation_T = v.capacity.T / predicted.T - 1;
+  c.pass = std::abs(c.deviation_R) <= tolerance && std::abs(c.deviation_T) <= tolerance;
+  return c;
+}
+
+nlohmann::ordered_json verification_json(const Verification& v, const std::optional<CapacityCheck>& check) {
+  nlohmann::ordered_json out;
+  const Field fields[] = {
+      {"R", v.capacity.R}, {"T", v.capacity.T}, {"eps", v.eps}, {"Q", v.Q}, {"force_factor", v.force_factor}, {"v", v.v}, {"h", v.h},
+      {"x", v.x}, {"A_deg", v.A_deg}, {"t_release", v.t_release}, {"t_liftoff", v.t_liftoff}, {"FS_perp_mg", v.FS_perp_mg},
+      {"FR_Mg", v.FR_Mg}, {"dFRh_Mg", v.dFRh_Mg}, {"energy_drift", v.energy_drift}};
+  for (const Field& field : fields) {
+    if (!std::isfinite(field.value))
+      throw Error(ErrorKind::numerical, std::string("the result ") + field.key + " is not finite; tighten --rtol");
+    out[field.key] = field.value;
+  }
+  if (check) {
+    out["predicted"] = {{"R", check->predicted.R}, {"T", check->predicted.T}};
+    out["deviation"] = {{"R", check->deviation_R}, {"T", check->deviation_T}};
+    out["tolerance"] = check->tolerance;
+    out["pass"] = check->pass;
+  }
+  return out;
+}
+
+nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s) {
+  nlohmann::ordered_json out;
+  write_engine(out, optimum.fit.engine);
+  out["start"] = optimum.start;
+  out["simulations"] = optimum.simulations;
+  out["iterations"] = optimum.iterations;
+  out["wall_time_s"] = wall_time_s;
+  const nlohmann::ordered_json shot = verification_json(optimum.fit.verification);
+  for (const auto& [key, value] : shot.items()) out[key] = value;
+  return out;
+}
+
+}  // namespace trebuchet

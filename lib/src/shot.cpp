@@ -1,0 +1,277 @@
+#include "trebuchet/shot.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "gsl_errors.hpp"
+#include "ode.hpp"
+#include "solve_1d.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/units.hpp"
+
+namespace trebuchet {
+namespace {
+
+// A shot whose accepted state passes cos phi = 0.02 (phi > 88.9 deg) in the trough is
+// abandoned, before the step control loses accuracy at the singularity of eq:EOM_I_1.
+constexpr double abandon_trough_cos_phi = 2 * refuse_trough_cos_phi;
+
+// The samples of one phase at the integrator's step ends, with the running force extremes
+// refined on the continuous solution: where a force has a local maximum at a step end, the
+// true peak lies within the two neighbouring steps and is found there by Brent's method.
+class PhaseRecord {
+ public:
+  struct Sample : StepEnd {
+    ForceValues forces;
+    ForceExtremes extremes;  // over [0, t], refined peaks included
+  };
+  struct Peak {
+    double t;
+    ForceValues forces;
+  };
+
+  PhaseRecord(PhaseIntegrator& integrator, ForceExtremes before) : integrator_(integrator), before_(before) {}
+
+  void add(const StepEnd& end, const Snapshot& snap) {
+    const ForceValues forces = force_values(snap);
+    ForceExtremes extremes = samples_.empty() ? before_ : samples_.back().extremes;
+    extremes.add(forces);
+    samples_.push_back({end, forces, extremes});
+    if (samples_.size() >= 3) refine_peaks();
+  }
+
+  const std::vector<Sample>& samples() const { return samples_; }
+
+  // The state at `time` from the interpolant between the samples around it.
+  OdeVector y_at(double time) const {
+    const std::size_t base = base_of(time);
+    if (time <= samples_[base].t || base + 1 == samples_.size()) return y_exact_at(time);
+    return hermite(samples_[base], samples_[base + 1], time, integrator_.dimension());
+  }
+
+  // The state at `time`, integrated anew from the last sample at or before it.
+  OdeVector y_exact_at(double time) const {
+    const Sample& base = samples_[base_of(time)];
+    return integrator_.at(base.t, base.y, time);
+  }
+
+  // The running extremes over [0, time], without the value at `time` itself.
+  ForceExtremes extremes_before(double time) const {
+    const std::size_t base = base_of(time);
+    ForceExtremes out = samples_[base].extremes;
+    for (const Peak& p : peaks_)
+      if (p.t > samples_[base].t && p.t <= time) out.add(p.forces);
+    return out;
+  }
+
+ private:
+  // The last sample at or before `time` (the first one for earlier times); samples are in time order.
+  std::size_t base_of(double time) const {
+    const auto after = std::upper_bound(samples_.begin() + 1, samples_.end(), time,
+                                        [](double value, const Sample& sample) { return value < sample.t; });
+    return static_cast<std::size_t>(after - samples_.begin()) - 1;
+  }
+
+  ForceValues forces_at(double time) const {
+    return force_values(integrator_.dynamics().snapshot(integrator_.phase(), integrator_.state(y_at(time))));
+  }
+
+  // A force peaking at the middle one of the last three samples peaks between the outer two.
+  // A peak that stays well below the running maximum before it cannot change any later
+  // maximum and is skipped: the parabola through the three samples estimates it, and 1 %
+  // covers that estimate's error. Time tolerance 1e-7 (scaled): the peak value is quadratic in
+  // it, so it is exact to 1e-14.
+  void refine_peaks() {
+    const std::size_t mid = samples_.size() - 2;
+    const Sample &a = samples_[mid - 1], &b = samples_[mid], &c = samples_[mid + 1];
+    for (int k = 0; k < force_count; ++k) {
+      const double fa = a.forces[k], fb = b.forces[k], fc = c.forces[k];
+      if (!(fb > fa && fb >= fc)) continue;
+      if (parabola_peak(a.t, fa, b.t, fb, c.t, fc) < 0.99 * a.extremes.max[k]) continue;
+      const double t_peak = find_maximum([&](double time) { return forces_at(time)[k]; }, a.t, b.t, c.t, 1e-7);
+      const Peak peak{t_peak, forces_at(t_peak)};
+      peaks_.push_back(peak);
+      for (std::size_t s = mid - 1; s < samples_.size(); ++s)
+        if (samples_[s].t >= t_peak) samples_[s].extremes.add(peak.forces);
+    }
+  }
+
+  // The largest value of the parabola through three points with y1 >= y0, y2.
+  static double parabola_peak(double x0, double y0, double x1, double y1, double x2, double y2) {
+    const double d0 = (y1 - y0) / (x1 - x0), d1 = (y2 - y1) / (x2 - x1);
+    const double curvature = (d1 - d0) / (x2 - x0);  // half the second derivative
+    if (!(curvature < 0)) return y1;
+    const double slope_mid = d0 + curvature * (x1 - x0);  // derivative at x1
+    return y1 - slope_mid * slope_mid / (4 * curvature);
+  }
+
+  PhaseIntegrator& integrator_;
+  ForceExtremes before_;
+  std::vector<Sample> samples_;
+  std::vector<Peak> peaks_;
+};
+
+ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criterion, double t, const State& s,
+                           const Snapshot& snap, ForceExtremes extremes) {
+  extremes.add(force_values(snap));
+  ReleasePoint r;
+  r.t = t;
+  r.state = s;
+  r.position = snap.projectile;
+  r.velocity = snap.projectile_velocity;
+  r.height = e.l * std::cos(radians(e.theta_i_deg)) + r.position.y;
+  if (r.velocity.x < 0 && r.height >= 0) r.range = vacuum_range(r.position, r.velocity, r.height, 1);  // toward the target, level 0
+  r.energy_at_target = energy_at_target(e.mu, r.velocity, r.height);
+  r.efficiency = efficiency(r.energy_at_target, e.energy_drop());
+  r.extremes = extremes;
+  r.force_factor = force_factor(extremes, e.mu);
+  if (r.range > 0) {
+    r.quality = quality(r.range, e.l, e.mu, r.efficiency, r.force_factor, criterion.n);
+    switch (criterion.release) {
+      case Release::quality: r.objective = r.quality; break;
+      case Release::efficiency: r.objective = r.efficiency; break;
+      case Release::range: r.objective = r.range; break;
+    }
+  }
+  return r;
+}
+
+[[noreturn]] void fail(const std::string& reason) { throw Error(ErrorKind::numerical, reason); }
+
+void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, const std::vector<PhaseRecord::Sample>& samples,
+                  double t_end) {
+  if (!trace) return;
+  for (const auto& sample : samples) {
+    if (sample.t > t_end) break;
+    const State s = integrator.state(sample.y);
+    trace->push_back({integrator.phase(), sample.t, s, integrator.dynamics().snapshot(integrator.phase(), s)});
+  }
+}
+
+// Phase III for the series: beam and counterweight without the projectile (mu = 0), from the
+// release for as long again as the shot took, so that the ringing of appendix B shows.
+void trace_released(const Dynamics& dynamics, const IntegratorSettings& settings, const State& release, double t_release,
+                    std::vector<TracePoint>& trace) {
+  PhaseIntegrator released(dynamics, Phase::released, settings);
+  OdeVector y = {release.theta, release.psi, release.theta_dot, release.psi_dot, 0, 0};
+  double t = t_release, h = 1e-3;
+  for (long steps = 0; t < 2 * t_release && steps < settings.max_steps; ++steps) {
+    if (!released.step(t, y.data(), 2 * t_release, h)) fail("integrator failure in phase III; tighten --rtol");
+    const State s = released.state(y);
+    trace.push_back({Phase::released, t, s, dynamics.snapshot(Phase::released, s)});
+  }
+}
+
+}  // namespace
+
+ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
+                         std::vector<TracePoint>* trace) {
+  use_gsl_return_codes();
+  const Dynamics dynamics(e);
+  if (!(1 - e.mu_b * (e.l - 1) / 2 > 0))
+    fail("the beam cannot turn: mu_b (l - 1)/2 = " + format_significant(e.mu_b * (e.l - 1) / 2, 4) +
+         " >= 1, its long arm outweighs the counterweight (eq:DU); lighten the beam or shorten L1");
+  ShotResult result;
+  const double energy_scale = e.energy_drop();
+  double energy0 = 0;
+  auto track_energy = [&](const Snapshot& s) { result.energy_drift = std::max(result.energy_drift, std::abs(s.energy - energy0) / energy_scale); };
+  auto count_step = [&](const char* phase) {
+    if (++result.steps > settings.max_steps)
+      fail("step budget of " + std::to_string(settings.max_steps) + " steps exceeded in " + phase +
+           "; loosen --rtol or choose a higher-order --stepper");
+  };
+
+  // Phase I: from rest (psi_i = phi_i = 0, section 2) until the trough's normal force vanishes.
+  PhaseIntegrator trough(dynamics, Phase::trough, settings);
+  PhaseRecord phase1(trough, ForceExtremes{});
+  OdeVector y = {dynamics.theta_i(), 0, 0, 0, 0, 0};
+  double t = 0, h = 1e-3;
+  Snapshot snap = dynamics.snapshot(Phase::trough, trough.state(y));
+  energy0 = snap.energy;
+  phase1.add(trough.step_end(t, y), snap);
+  while (true) {
+    if (!trough.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase I; tighten --rtol or choose another --stepper");
+    count_step("phase I");
+    if (std::cos(trough.state(y).phi) < abandon_trough_cos_phi)
+      fail("the sling stands vertical in the trough (phi -> 90 deg) before lift-off; lengthen the sling L4 or lighten the projectile m");
+    snap = dynamics.snapshot(Phase::trough, trough.state(y));
+    if (snap.normal_force <= 0) {
+      // Lift-off inside this step: the root of the normal force on the interpolant, then the
+      // state there integrated anew from the step start.
+      const StepEnd& before = phase1.samples().back();
+      const StepEnd after = trough.step_end(t, y);
+      auto normal_at = [&](double time) { return dynamics.snapshot(Phase::trough, trough.state(hermite(before, after, time, 4))).normal_force; };
+      result.t_liftoff = find_root(normal_at, before.t, t, 1e-13, 0);
+      y = trough.at(before.t, before.y, result.t_liftoff);
+      t = result.t_liftoff;
+      snap = dynamics.snapshot(Phase::trough, trough.state(y));
+      phase1.add(trough.step_end(t, y), snap);
+      track_energy(snap);
+      break;
+    }
+    phase1.add(trough.step_end(t, y), snap);
+    track_energy(snap);
+    if (y[0] >= M_PI || t >= settings.max_time)
+      fail("the projectile never lifts off: the trough still carries it when the beam is upright; "
+           "change the sling length L4 or the masses");
+  }
+  record_trace(trace, trough, phase1.samples(), t);
+
+  // Phase II from the located lift-off state.
+  const State lift = trough.state(y);
+  PhaseIntegrator lifted(dynamics, Phase::lifted, settings);
+  PhaseRecord phase2(lifted, phase1.samples().back().extremes);
+  y = {lift.theta, lift.psi, lift.phi, lift.theta_dot, lift.psi_dot, lift.phi_dot};
+  phase2.add(lifted.step_end(t, y), dynamics.snapshot(Phase::lifted, lift));
+  auto point_from = [&](double time, const OdeVector& state) {
+    const State s = lifted.state(state);
+    return release_point(e, criterion, time, s, dynamics.snapshot(Phase::lifted, s), phase2.extremes_before(time));
+  };
+  auto point_at = [&](double time) { return point_from(time, phase2.y_at(time)); };
+  std::size_t best = 0;
+  double best_quality = point_at(t).objective;
+  h = 1e-3;
+  while (true) {
+    if (!lifted.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase II; tighten --rtol or choose another --stepper");
+    count_step("phase II");
+    const State s = lifted.state(y);
+    snap = dynamics.snapshot(Phase::lifted, s);
+    track_energy(snap);
+    const double quality_here = release_point(e, criterion, t, s, snap, phase2.samples().back().extremes).objective;
+    phase2.add(lifted.step_end(t, y), snap);
+    if (quality_here > best_quality) {
+      best_quality = quality_here;
+      best = phase2.samples().size() - 1;
+    }
+    // Past the maximum: the objective has fallen to half of it, or the beam has turned over.
+    if ((best_quality > 0 && quality_here < 0.5 * best_quality) || s.theta > dynamics.theta_i() + 2 * M_PI || t >= settings.max_time) break;
+  }
+  if (!(best_quality > 0)) fail("no release sends the projectile forward: over phase II it never flies toward the target");
+  if (result.energy_drift > settings.max_energy_drift)
+    fail("energy drift " + format_significant(result.energy_drift, 3) + " of Delta U exceeds " +
+         format_significant(settings.max_energy_drift, 3) + "; tighten --rtol or choose another --stepper");
+
+  // The maximum of the objective on the interpolant between the neighbouring samples; the
+  // state there is then integrated anew from the step start.
+  const auto& samples = phase2.samples();
+  // The bracket spans at least 4 slope steps of 1e-5 (scaled time), which puts the argmax to
+  // ~1e-10 in time: truncation ~ step^2, round-off ~ 1e-16/step.
+  const double slope_step = 1e-5;
+  std::size_t lo = best > 0 ? best - 1 : 0, hi = std::min(best + 1, samples.size() - 1);
+  while (samples[hi].t - samples[lo].t < 4 * slope_step && (lo > 0 || hi + 1 < samples.size())) {
+    if (lo > 0) --lo;
+    if (hi + 1 < samples.size()) ++hi;
+  }
+  const double t_release = find_argmax([&](double time) { return point_at(time).objective; }, samples[lo].t,
+                                       samples[best].t, samples[hi].t, slope_step, 1e-13);
+  result.release = point_from(t_release, phase2.y_exact_at(t_release));
+  if (trace) {
+    record_trace(trace, lifted, samples, t_release);
+    trace->push_back({Phase::lifted, t_release, result.release.state, dynamics.snapshot(Phase::lifted, result.release.state)});
+    trace_released(dynamics, settings, result.release.state, t_release, *trace);
+  }
+  return result;
+}
+
+}  // namespace trebuchet

@@ -1,0 +1,41 @@
+#include "trebuchet/verification.hpp"
+
+#include <cmath>
+
+#include "trebuchet/units.hpp"
+
+namespace trebuchet {
+
+Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level) {
+  const ReleasePoint& r = shot.release;
+  const double L2 = engine.L2, g = engine.material.g;
+  const double speed_unit = std::sqrt(g * L2), time_unit = std::sqrt(L2 / g);  // section 3
+  Verification out;
+  const double vx = r.velocity.x * speed_unit, vy = r.velocity.y * speed_unit;
+  out.v = std::hypot(vx, vy);
+  out.h = r.height * L2;
+  out.x = r.position.x * L2;
+  out.A_deg = degrees(std::atan2(vy, -vx));
+  out.theta_release_deg = degrees(r.state.theta);
+  const double drop = out.h - target_level;  // release to target level [m]
+  out.capacity.R = vacuum_range({out.x, 0}, {vx, vy}, drop, g);
+  out.capacity.T = 0.5 * engine.m * out.v * out.v + engine.m * g * drop;  // eq:T, measured at the target
+  out.capacity.target_level = target_level;
+  out.eps = r.efficiency;
+  out.Q = r.quality;
+  out.force_factor = r.force_factor;
+  out.t_release = r.t * time_unit;
+  out.t_liftoff = shot.t_liftoff * time_unit;
+  out.FS_perp_mg = r.extremes.max[sling_perpendicular] / (engine.m / engine.M);
+  out.FR_Mg = r.extremes.max[pivot_reaction];
+  out.dFRh_Mg = r.extremes.max[pivot_horizontal] + r.extremes.max[pivot_horizontal_negated];
+  out.energy_drift = shot.energy_drift;
+  return out;
+}
+
+Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace) {
+  const ShotResult shot = simulate_shot(scaled_design(engine), settings.criterion, settings.integrator, trace);
+  return verification_of(engine, shot, settings.target_level);
+}
+
+}  // namespace trebuchet
