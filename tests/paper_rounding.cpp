@@ -74,8 +74,8 @@ double table_rounding_effect(double theta_i_deg, double F, const std::function<d
       const std::string segment_pointer = block_pointer + "/segments/" + std::to_string(s) + "/";
       for (char which : {'a', 'p', 'q'}) {
         ScalingTable table = nominal;
-        PowerLaw& law = table.blocks[b].segments[s].laws[index(param)];
-        double& constant = which == 'a' ? law.a : which == 'p' ? law.p : law.q;
+        Segment& segment = table.blocks[b].segments[s];
+        double& constant = which == 'a' ? segment.a[index(param)] : segment.exponents(index(param), which == 'p' ? 0 : 1);
         constant += constant_half_unit(segment_pointer + which + "/" + name);
         effect += std::abs(result(table) - base);
       }

@@ -33,7 +33,7 @@ struct Expected {
 
 double pick(const OptimalEngine& d, const std::string& name) {
   const Engine& e = d.engine;
-  if (name == "T") return d.T;
+  if (name == "T") return d.capacity.T;
   if (name == "L1") return e.L1;
   if (name == "L2") return e.L2;
   if (name == "L4") return e.L4;
@@ -128,9 +128,9 @@ TEST_CASE("section 6.3: Denny's standard parameters, pair (M, m)", "[calculator]
   auto rounding = [&](auto pick_value) {
     return table_rounding_effect(30, 2.0 / 3, [&](const ScalingTable& t) { return pick_value(design_optimal_engine(t, r)); });
   };
-  check_printed("R", design.R, "288", rounding([](const OptimalEngine& d) { return d.R; }));
-  check_printed("T", design.T, "152", rounding([](const OptimalEngine& d) { return d.T; }), 1e-3);
-  check_printed("X", design.X, "-0.17", rounding([](const OptimalEngine& d) { return d.X; }));
+  check_printed("R", design.capacity.R, "288", rounding([](const OptimalEngine& d) { return d.capacity.R; }));
+  check_printed("T", design.capacity.T, "152", rounding([](const OptimalEngine& d) { return d.capacity.T; }), 1e-3);
+  check_printed("X", design.coordinates.X, "-0.17", rounding([](const OptimalEngine& d) { return d.coordinates.X; }));
   check_printed("Lb", beam_length(design.engine), "6.6", rounding([](const OptimalEngine& d) { return beam_length(d.engine); }));
   // "mb ~ 475 kg": read as 475 +- 5 kg (the paper writes ~, we take the last printed digit as tens).
   check_printed("mb", design.engine.mb, "475", 4.5 + rounding([](const OptimalEngine& d) { return d.engine.mb; }));

@@ -7,14 +7,14 @@
 #include <map>
 #include <random>
 
+#include "engines.hpp"
+#include "exit_codes.hpp"
 #include "trebuchet/calculator.hpp"
-#include "trebuchet/design_input.hpp"
 #include "trebuchet/error.hpp"
-#include "trebuchet/report.hpp"
 #include "trebuchet/request.hpp"
+#include "trebuchet/schema.hpp"
 #include "trebuchet/units.hpp"
 #include "trebuchet/verification.hpp"
-#include "trebuchet/verification_report.hpp"
 
 using namespace trebuchet;
 
@@ -31,7 +31,7 @@ void print_counts(const char* what, const std::map<std::string, int>& counts) {
 
 // The message up to its first ':' or ';', to group failures by reason; bad input by kind.
 std::string reason_of(const Error& e) {
-  if (e.kind() != ErrorKind::numerical) return "bad input, exit code " + std::to_string(exit_code(e.kind()));
+  if (e.kind() != ErrorKind::numerical) return "bad input, exit code " + std::to_string(exit_code(Program::verify, e.kind()));
   const std::string message = e.what();
   return message.substr(0, message.find_first_of(":;"));
 }
@@ -57,7 +57,7 @@ TEST_CASE("10 000 random engines: a finite result or a named error each", "[robu
     try {
       check_engine(e, "random");
       const Verification v = verify_engine(e, ShotSettings{});
-      verification_json(v, check_capacity(v, 100, 1e4, 0.02));  // throws if any number is not finite
+      verification_json(v, check_capacity(v, {100, 1e4}, 0.02));  // throws if any number is not finite
       ++outcomes["result"];
     } catch (const Error& error) {
       CHECK((error.kind() == ErrorKind::numerical || error.kind() == ErrorKind::bad_number));
@@ -82,11 +82,10 @@ TEST_CASE("random calculator requests: a design with finite numbers or a named e
     request.extrapolate = std::uniform_int_distribution<int>(0, 3)(random) == 0;
     try {
       const OptimalEngine design = design_optimal_engine(builtin_scaling_table(), request);
-      require_finite(design);
-      design_json(design);
+      design_json(design);  // throws if any number is not finite
       ++outcomes["design"];
     } catch (const Error& error) {
-      ++outcomes["error, exit code " + std::to_string(exit_code(error.kind()))];
+      ++outcomes["error, exit code " + std::to_string(exit_code(Program::calc, error.kind()))];
     }
   }
   print_counts("20 000 random requests", outcomes);
@@ -113,9 +112,11 @@ TEST_CASE("malformed values and designs are named errors", "[robustness]") {
       }
     }
     // The same text as a JSON design value, in place of L4.
-    nlohmann::json design = {{"L1", 4.13}, {"L2", 0.88}, {"F", "2/3"}, {"L4", text}, {"M", 3110}, {"m", 50}, {"mb", 174}};
+    nlohmann::ordered_json design;
+    write_engine(design, testing::alcala_ca());
+    design["L4"] = text;
     try {
-      const DesignInput in = design_from_json(design, "design");
+      const EngineRecord in = read_engine(design, "design");
       CHECK(std::isfinite(in.engine.L4));
     } catch (const Error& error) {
       CHECK(std::string(error.what()).find("L4") != std::string::npos);

@@ -45,6 +45,7 @@ TEST_CASE("unknown suffixes and suffixes of another dimension are unknown_unit",
   CHECK(kind_of("40kW", UnitDimension::energy) == ErrorKind::unknown_unit);
   try {
     parse_value("150kg", UnitDimension::length, "--R");
+    FAIL("a mass was accepted as a length");
   } catch (const Error& e) {
     CHECK(std::string(e.what()) == "--R: '150kg' is a mass, but --R is a length; use m, cm, mm, km or a bare number in metres");
   }

@@ -9,14 +9,14 @@
 #include "paper_rounding.hpp"
 #include "trebuchet/capacity_fit.hpp"
 #include "trebuchet/error.hpp"
+#include "trebuchet/names.hpp"
+#include "trebuchet/units.hpp"
 #include "trebuchet/verification.hpp"
 
 using namespace trebuchet;
 using namespace trebuchet::testing;
 
 namespace {
-
-double radians(double degrees) { return degrees * M_PI / 180; }
 
 // tab:Denny rows: theta_i, F, then Lb, H, L4 [m], M [t], m, mb [kg]. L1 = H/cos theta_i.
 Engine denny_engine(double theta_i_deg, const std::vector<double>& x) {
@@ -45,8 +45,8 @@ struct Expected {
 };
 
 double pick(const Verification& v, const std::string& key) {
-  if (key == "R") return v.R;
-  if (key == "T") return v.T / 1e3;
+  if (key == "R") return v.capacity.R;
+  if (key == "T") return v.capacity.T / 1e3;
   if (key == "eps") return 100 * v.eps;
   if (key == "Q") return 100 * v.Q;
   if (key == "v") return v.v;
@@ -83,7 +83,7 @@ TEST_CASE("tab:Denny Present row: Denny's standard engine released at maximum ra
   const auto build = [](const std::vector<double>& x) { return denny_engine(45, x); };
   const std::vector<std::string> inputs = {"0.93", "12.0000", "6.15", "7.9", "10.0000", "100.000", "2000.00"};
   ShotSettings at_max_range;
-  at_max_range.quality.release = Quality::Release::range;
+  at_max_range.criterion.release = Release::range;
   check_row("tab:Denny Present, max range", inputs, build, at_max_range,
             {{"R", "425"}, {"T", "224"}, {"eps", "48.4"}, {"Q", "1.7"}, {"v", "64"}, {"h", "20.2"}, {"x", "6.0"}});
   check_row("tab:Denny Present, max Q", inputs, build, ShotSettings{}, {{"R", "425"}, {"Q", "1.7"}, {"v", "64"}});
@@ -102,9 +102,18 @@ struct LargeEffRow {
   const char* mb;
 };
 
-EngineShape large_eff_shape(const std::vector<double>& x) {
-  return {x[0], x[2] / x[1], x[4] / (x[3] * 1000), 30, 1};
+ScaledDesign large_eff_shape(const std::vector<double>& x) {
+  return {x[0], x[2] / x[1], x[4] / (x[3] * 1000), 0, 30, 1};
 }
+
+// The l = 17 engine of tab:Large_Eff, fitted to the table's capacity and released at max eps.
+ShotSettings at_max_efficiency() {
+  ShotSettings settings;
+  settings.criterion.release = Release::efficiency;
+  return settings;
+}
+
+Engine large_eff_17() { return fit_capacity(large_eff_shape({17, 0.800, 0.673, 270, 14.7}), {450, 232e3}, Material{}, at_max_efficiency()).engine; }
 
 struct ReleaseAngles {
   Verification v;
@@ -112,15 +121,13 @@ struct ReleaseAngles {
 };
 
 ReleaseAngles fitted_release(const std::vector<double>& x) {
-  ShotSettings settings;
-  settings.quality.release = Quality::Release::efficiency;
-  const CapacityFit fit = fit_capacity(large_eff_shape(x), 450, 232e3, Material{}, settings);
+  const ShotSettings settings = at_max_efficiency();
+  const CapacityFit fit = fit_capacity(large_eff_shape(x), {450, 232e3}, Material{}, settings);
   std::vector<TracePoint> trace;
   const Verification v = verify_engine(fit.engine, settings, &trace);
   const auto release = std::find_if(trace.rbegin(), trace.rend(), [](const TracePoint& p) { return p.phase == Phase::lifted; });
   const State& s = release->state;  // the last point of phase II is the release
-  auto deg = [](double rad) { return rad * 180 / M_PI; };
-  return {v, deg(s.theta) - 180, deg(s.psi), std::remainder(deg(s.phi), 360) + 180};
+  return {v, degrees(s.theta) - 180, degrees(s.psi), std::remainder(degrees(s.phi), 360) + 180};
 }
 
 }  // namespace
@@ -180,7 +187,8 @@ struct QRow {
   std::function<Engine(const std::vector<double>&)> build;
   double n;
   std::vector<Expected> expected;  // R, T, eps
-  const char* Q;
+  const char* Q;       // the paper's
+  const char* Q_ours;  // ours at 4 digits, as docs/verifier.md lists it: pinned, so that a change of eq:F shows
 };
 
 std::vector<QRow> optimised_rows() {
@@ -188,21 +196,21 @@ std::vector<QRow> optimised_rows() {
   auto sb2 = [](double F, double th, double l) { return [=](const std::vector<double>& x) { return sketchbook2_engine(F, th, l, x); }; };
   auto dn = [](double th) { return [=](const std::vector<double>& x) { return denny_engine(th, x); }; };
   return {
-      {"SketchBook-I n=1 F=1 30", {"6.13", "5.80", "14.3", "100.000", "660", "5.68"}, sb1(1, 30), 1, {{"R", "450"}, {"T", "235"}, {"eps", "93.1", 1.5}}, "7.41"},
-      {"SketchBook-I n=1 F=2/3 30", {"6.20", "5.69", "16.9", "100.000", "601", "6.77"}, sb1(2.0 / 3, 30), 1, {{"R", "450"}, {"T", "234"}, {"eps", "92.6"}}, "6.43"},
-      {"SketchBook-I n=1 F=2/3 40", {"6.48", "5.55", "19.1", "100.000", "622", "7.51"}, sb1(2.0 / 3, 40), 1, {{"R", "450"}, {"T", "234"}, {"eps", "91.6"}}, "5.55"},
-      {"SketchBook-I n=5", {"6.31", "6.68", "15.6", "101", "611", "6.64"}, sb1(1, 30), 5, {{"R", "450"}, {"T", "235"}, {"eps", "97.5", 1.5}}, "6.38"},
-      {"SketchBook-I n=0", {"6.60", "6.04", "13.4", "98.3", "807", "5.29"}, sb1(1, 30), 0, {{"R", "450"}, {"T", "235", 2.5}, {"eps", "87.8", 6}}, "8.11"},
-      {"SketchBook-II #1", {"7.00", "26.8", "301", "1696"}, sb2(1, 25, 4.5), 1, {{"R", "426"}, {"T", "677"}, {"eps", "93.3", 2}}, "10.4"},
-      {"SketchBook-II #2", {"6.80", "26.0", "298", "1682"}, sb2(1, 30, 4.5), 1, {{"R", "407"}, {"T", "641"}, {"eps", "92.9"}}, "10.2"},
-      {"SketchBook-II #3", {"6.20", "23.7", "299", "1589"}, sb2(1, 40, 4.5), 1, {{"R", "341"}, {"T", "540"}, {"eps", "91.5", 3}}, "10.2"},
-      {"SketchBook-II #4", {"7.16", "33.4", "248", "1605"}, sb2(1, 30, 5.5), 1, {{"R", "540"}, {"T", "700", 1.5}, {"eps", "93.2"}}, "7.71"},
-      {"SketchBook-II #5", {"6.76", "34.9", "343", "1653"}, sb2(2.0 / 3, 30, 5.5), 1, {{"R", "401"}, {"T", "726", 1.5}, {"eps", "91.6"}}, "8.79"},
-      {"SketchBook-II #6", {"6.98", "38.7", "299", "1623"}, sb2(2.0 / 3, 30, 6.0), 1, {{"R", "482"}, {"T", "752"}, {"eps", "92.0", 2}}, "7.55"},
-      {"SketchBook-II #7", {"6.41", "45.9", "538", "1746"}, sb2(0.5, 30, 6.0), 1, {{"R", "297"}, {"T", "858"}, {"eps", "88.1", 2}}, "9.01"},
-      {"Denny Max Q 45", {"0.93", "8.67", "5.25", "6.19", "13.3", "101", "629"}, dn(45), 1, {{"R", "425"}, {"T", "224"}, {"eps", "91.4"}}, "7.0"},
-      {"Denny Max Q 30 F=1", {"1.00000", "7.15", "5.23", "5.69", "13.3", "101", "647"}, dn(30), 1, {{"R", "425"}, {"T", "224"}, {"eps", "93.3"}}, "7.8"},
-      {"Denny Max Q 30 F=2/3", {"0.666667", "7.06", "5.30", "5.57", "15.7", "101", "591"}, dn(30), 1, {{"R", "425"}, {"T", "224"}, {"eps", "92.2"}}, "6.7"},
+      {"SketchBook-I n=1 F=1 30", {"6.13", "5.80", "14.3", "100.000", "660", "5.68"}, sb1(1, 30), 1, {{"R", "450"}, {"T", "235"}, {"eps", "93.1", 1.5}}, "7.41", "6.963"},
+      {"SketchBook-I n=1 F=2/3 30", {"6.20", "5.69", "16.9", "100.000", "601", "6.77"}, sb1(2.0 / 3, 30), 1, {{"R", "450"}, {"T", "234"}, {"eps", "92.6"}}, "6.43", "5.942"},
+      {"SketchBook-I n=1 F=2/3 40", {"6.48", "5.55", "19.1", "100.000", "622", "7.51"}, sb1(2.0 / 3, 40), 1, {{"R", "450"}, {"T", "234"}, {"eps", "91.6"}}, "5.55", "5.258"},
+      {"SketchBook-I n=5", {"6.31", "6.68", "15.6", "101", "611", "6.64"}, sb1(1, 30), 5, {{"R", "450"}, {"T", "235"}, {"eps", "97.5", 1.5}}, "6.38", "6.351"},
+      {"SketchBook-I n=0", {"6.60", "6.04", "13.4", "98.3", "807", "5.29"}, sb1(1, 30), 0, {{"R", "450"}, {"T", "235", 2.5}, {"eps", "87.8", 6}}, "8.11", "7.339"},
+      {"SketchBook-II #1", {"7.00", "26.8", "301", "1696"}, sb2(1, 25, 4.5), 1, {{"R", "426"}, {"T", "677"}, {"eps", "93.3", 2}}, "10.4", "9.400"},
+      {"SketchBook-II #2", {"6.80", "26.0", "298", "1682"}, sb2(1, 30, 4.5), 1, {{"R", "407"}, {"T", "641"}, {"eps", "92.9"}}, "10.2", "9.359"},
+      {"SketchBook-II #3", {"6.20", "23.7", "299", "1589"}, sb2(1, 40, 4.5), 1, {{"R", "341"}, {"T", "540"}, {"eps", "91.5", 3}}, "10.2", "9.485"},
+      {"SketchBook-II #4", {"7.16", "33.4", "248", "1605"}, sb2(1, 30, 5.5), 1, {{"R", "540"}, {"T", "700", 1.5}, {"eps", "93.2"}}, "7.71", "7.203"},
+      {"SketchBook-II #5", {"6.76", "34.9", "343", "1653"}, sb2(2.0 / 3, 30, 5.5), 1, {{"R", "401"}, {"T", "726", 1.5}, {"eps", "91.6"}}, "8.79", "8.004"},
+      {"SketchBook-II #6", {"6.98", "38.7", "299", "1623"}, sb2(2.0 / 3, 30, 6.0), 1, {{"R", "482"}, {"T", "752"}, {"eps", "92.0", 2}}, "7.55", "6.922"},
+      {"SketchBook-II #7", {"6.41", "45.9", "538", "1746"}, sb2(0.5, 30, 6.0), 1, {{"R", "297"}, {"T", "858"}, {"eps", "88.1", 2}}, "9.01", "8.183"},
+      {"Denny Max Q 45", {"0.93", "8.67", "5.25", "6.19", "13.3", "101", "629"}, dn(45), 1, {{"R", "425"}, {"T", "224"}, {"eps", "91.4"}}, "7.0", "6.701"},
+      {"Denny Max Q 30 F=1", {"1.00000", "7.15", "5.23", "5.69", "13.3", "101", "647"}, dn(30), 1, {{"R", "425"}, {"T", "224"}, {"eps", "93.3"}}, "7.8", "7.312"},
+      {"Denny Max Q 30 F=2/3", {"0.666667", "7.06", "5.30", "5.57", "15.7", "101", "591"}, dn(30), 1, {{"R", "425"}, {"T", "224"}, {"eps", "92.2"}}, "6.7", "6.222"},
   };
 }
 
@@ -214,25 +222,23 @@ std::vector<QRow> optimised_rows() {
 // "known": T and eps are read at the release, which sits on a flat maximum of Q and moves with
 // the force factor F, so they carry the verifier issue's open point on Q. Under the literal
 // reading of eq:F, Q matches the n = 5 row, while the paper's Q is 4-11 % higher for the other
-// rows (docs/verifier.md has the table and what was tried). This test pins that spread, so a
-// change of the force factor shows up here; it prints each row for the docs.
-TEST_CASE("optimised engines of the paper: R, T and eps to rounding; Q as documented", "[verify][paper][q-table]") {
+// rows (docs/verifier.md has the table and what was tried). Each row's Q is pinned to our own
+// value to the 4 digits docs/verifier.md prints (half a unit: 0.007 % of Q), far below what a
+// change of the force factor moves; it prints each row for the docs.
+TEST_CASE("optimised engines of the paper: R, T and eps to rounding, and Q as documented", "[verify][paper][q-table]") {
   std::printf("%-28s %8s %8s %7s\n", "row", "Q ours", "Q paper", "ratio");
   for (const QRow& row : optimised_rows()) {
     ShotSettings settings;
-    settings.quality.n = row.n;
+    settings.criterion.n = row.n;
     check_row(row.name, row.inputs, row.build, settings, row.expected);
     std::vector<double> x;
     for (const auto& text : row.inputs) x.push_back(printed(text).value);
     const double Q = 100 * verify_engine(row.build(x), settings).Q;
     const double ratio = printed(row.Q).value / Q;
     std::printf("  %-28s Q ours %.3f %% paper %s %% ratio %.3f\n", row.name.c_str(), Q, row.Q, ratio);
-    if (row.n == 5) {
+    check_printed(row.name + " Q ours", Q, row.Q_ours, 0);
+    if (row.n == 5)
       check_printed(row.name + " Q_5", Q, row.Q, input_rounding_effect(row.inputs, row.build, [&](const Engine& e) { return 100 * verify_engine(e, settings).Q; }));
-    } else {
-      CHECK(ratio > 1.03);
-      CHECK(ratio < 1.12);
-    }
   }
 }
 
@@ -242,10 +248,8 @@ TEST_CASE("optimised engines of the paper: R, T and eps to rounding; Q as docume
 // theta' - psi', the frequency must match it to 1 %. The paper prints f = 42.2 Hz for this
 // engine; the series and the formula both give 33.8 Hz (docs/verifier.md, known difference).
 TEST_CASE("tab:Large_Eff l = 17 rings at appendix B's frequency", "[verify][paper][stiff]") {
-  ShotSettings settings;
-  settings.quality.release = Quality::Release::efficiency;
-  const EngineShape shape{17, 0.673 / 0.800, 14.7 / 270000, 30, 1};
-  const Engine engine = fit_capacity(shape, 450, 232e3, Material{}, settings).engine;
+  const ShotSettings settings = at_max_efficiency();
+  const Engine engine = large_eff_17();
   std::vector<TracePoint> trace;
   verify_engine(engine, settings, &trace);
   std::vector<double> zeros;  // of theta' - psi', scaled time, by linear interpolation
@@ -256,9 +260,9 @@ TEST_CASE("tab:Large_Eff l = 17 rings at appendix B's frequency", "[verify][pape
   }
   REQUIRE(zeros.size() >= 5);
   const double period = (zeros.back() - zeros[1]) / ((zeros.size() - 2) / 2.0);  // skip the first, transient zero
-  const double time_unit = std::sqrt(engine.L2 / 9.81);                          // section 3 [s]
-  const ScaledEngine e = ScaledEngine::from(engine);
-  const double omega = 1 / std::sqrt(e.L / (e.L + 1) * e.beam_inertia());
+  const double time_unit = std::sqrt(engine.L2 / engine.material.g);                        // section 3 [s]
+  const ScaledDesign e = scaled_design(engine);
+  const double omega = 1 / std::sqrt(e.L() / (e.L() + 1) * e.beam_inertia());
   const double simulated_hz = 1 / (period * time_unit), formula_hz = omega / (2 * M_PI * time_unit);
   std::printf("tab:Large_Eff l = 17 ringing: simulated %.2f Hz, appendix B formula %.2f Hz, paper prints 42.2 Hz\n",
               simulated_hz, formula_hz);
@@ -270,25 +274,23 @@ TEST_CASE("tab:Large_Eff l = 17 rings at appendix B's frequency", "[verify][pape
 // 1e-8 of Delta U; the work-precision chart shows such runs within 3e-7 of the reference, so
 // an accepted result further than 1e-5 from it would be a wrong number that slipped through.
 TEST_CASE("loose integration of the stiff engine is an error or a right number", "[verify][stiff]") {
-  ShotSettings settings;
-  settings.quality.release = Quality::Release::efficiency;
-  const EngineShape shape{17, 0.673 / 0.800, 14.7 / 270000, 30, 1};
-  const Engine engine = fit_capacity(shape, 450, 232e3, Material{}, settings).engine;
+  const ShotSettings settings = at_max_efficiency();
+  const Engine engine = large_eff_17();
   const Verification reference = verify_engine(engine, settings);
   int refused = 0, accepted = 0;
-  for (const char* stepper : {"rk2", "rk4", "rkf45", "rkck", "rk8pd", "msadams", "rk2imp"})
+  for (Stepper stepper : {Stepper::rk2, Stepper::rk4, Stepper::rkf45, Stepper::rkck, Stepper::rk8pd, Stepper::msadams, Stepper::rk2imp})
     for (double tol : {1e-2, 1e-3, 1e-4, 1e-5, 1e-6}) {
       ShotSettings loose = settings;
       loose.integrator.stepper = stepper;
       loose.integrator.rtol = tol;
       loose.integrator.atol = tol;
       loose.integrator.max_steps = 20000;
-      INFO(stepper << " at " << tol);
+      INFO(stepper_name(stepper) << " at " << tol);
       try {
         const Verification v = verify_engine(engine, loose);
         ++accepted;
-        CHECK(std::abs(v.R / reference.R - 1) < 1e-5);
-        CHECK(std::abs(v.T / reference.T - 1) < 1e-5);
+        CHECK(std::abs(v.capacity.R / reference.capacity.R - 1) < 1e-5);
+        CHECK(std::abs(v.capacity.T / reference.capacity.T - 1) < 1e-5);
         CHECK(std::abs(v.eps / reference.eps - 1) < 1e-5);
       } catch (const Error& e) {
         ++refused;

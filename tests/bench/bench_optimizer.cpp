@@ -29,7 +29,7 @@ struct Case {
 Case on_axis(double X, double theta_i_deg, double F) {
   char name[64];
   std::snprintf(name, sizeof name, "X %+.2f theta %g F %.3g", X, theta_i_deg, F);
-  const AxisCapacity capacity = capacity_on_X_axis(X, 240, 26e3);
+  const Capacity capacity = capacity_at({X, 0}, 240, 26e3);
   return {name, capacity.R, capacity.T, theta_i_deg, F};
 }
 
@@ -47,7 +47,8 @@ int main(int argc, char** argv) {
   std::vector<double> walls, shortfalls;
   for (const Case& c : cases) {
     OptimizeRequest request;
-    request.R = c.R, request.T = c.T, request.theta_i_deg = c.theta_i_deg, request.F = c.F;
+    request.capacity = {c.R, c.T};
+    request.theta_i_deg = c.theta_i_deg, request.F = c.F;
     std::vector<Optimum> optima;
     std::vector<double> times;
     for (int r = 0; r < runs; ++r) {
@@ -66,7 +67,7 @@ int main(int argc, char** argv) {
     double best_Q = found.objective;
     int long_shots = 0, restarts = 0, agreeing = 0;
     for (; long_shots < 10 * shots; ++restarts) {
-      EngineShape shape = found.shape;
+      ScaledDesign shape = found.fit.design;
       if (restarts > 0) shape.l *= std::exp(spread(random)), shape.l4 *= std::exp(spread(random)), shape.mu_b *= std::exp(spread(random));
       longer.starts = {shape};
       try {

@@ -13,7 +13,9 @@
 
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/capacity_fit.hpp"
+#include "engines.hpp"
 #include "trebuchet/error.hpp"
+#include "trebuchet/names.hpp"
 #include "trebuchet/optimizer.hpp"
 #include "trebuchet/verification.hpp"
 #include "timing.hpp"
@@ -26,35 +28,19 @@ namespace {
 struct Design {
   std::string name;
   Engine engine;
-  Quality quality;
+  ReleaseCriterion criterion;
 };
-
-Engine alcala_ca() {  // tab:Alcala_la_Vieja row Ca, as printed
-  Engine e;
-  e.theta_i_deg = 30, e.L1 = 4.13, e.L2 = 0.88, e.L4 = 3.55, e.M = 3110, e.m = 50, e.mb = 174;
-  e.L3 = counterweight_arm(e.L1, e.L2, 30, 2.0 / 3);
-  return e;
-}
-
-Engine denny_standard() {  // tab:Denny Present: Lb = 12 m, H = 6.15 m, theta_i = 45 deg, F = 0.93
-  Engine e;
-  e.theta_i_deg = 45, e.L1 = 6.15 / std::cos(M_PI / 4), e.L2 = 12 - e.L1, e.L4 = 7.9, e.M = 1e4, e.m = 100, e.mb = 2000;
-  e.L3 = counterweight_arm(e.L1, e.L2, 45, 0.93);
-  return e;
-}
 
 Design large_eff_17() {  // tab:Large_Eff l = 17, fitted to (450 m, 232 kJ), released at max eps
   ShotSettings settings;
-  settings.quality.release = Quality::Release::efficiency;
-  const EngineShape shape{17, 0.673 / 0.800, 14.7 / 270000, 30, 1};
-  return {"large_eff_l17", fit_capacity(shape, 450, 232e3, Material{}, settings).engine, settings.quality};
+  settings.criterion.release = Release::efficiency;
+  const ScaledDesign shape{17, 0.673 / 0.800, 14.7 / 270000, 0, 30, 1};
+  return {"large_eff_l17", fit_capacity(shape, {450, 232e3}, Material{}, settings).engine, settings.criterion};
 }
 
-const char* steppers[] = {"rk2", "rk4", "rkf45", "rkck", "rk8pd", "msadams", "rk1imp", "rk2imp", "rk4imp", "bsimp", "msbdf"};
-
-ShotSettings settings_for(const Design& d, const std::string& stepper, double tol) {
+ShotSettings settings_for(const Design& d, Stepper stepper, double tol) {
   ShotSettings s;
-  s.quality = d.quality;
+  s.criterion = d.criterion;
   s.integrator.stepper = stepper;
   s.integrator.rtol = tol;
   s.integrator.atol = tol / 10;
@@ -65,25 +51,25 @@ ShotSettings settings_for(const Design& d, const std::string& stepper, double to
 double relative(double value, double reference) { return std::abs(value / reference - 1); }
 
 void work_precision(const Design& d, double budget) {
-  const Verification ref = verify_engine(d.engine, settings_for(d, "rk8pd", 1e-13));
-  const Verification check = verify_engine(d.engine, settings_for(d, "rkck", 1e-13));
+  const Verification ref = verify_engine(d.engine, settings_for(d, Stepper::rk8pd, 1e-13));
+  const Verification check = verify_engine(d.engine, settings_for(d, Stepper::rkck, 1e-13));
   std::fprintf(stderr, "%s: reference rk8pd 1e-13, cross-check rkck 1e-13: R %.1e T %.1e eps %.1e Q %.1e\n", d.name.c_str(),
-               relative(check.R, ref.R), relative(check.T, ref.T), relative(check.eps, ref.eps), relative(check.Q, ref.Q));
-  std::printf("reference,%s,rkck,1e-13,,%.3e,%.3e,%.3e,%.3e,,cross-check\n", d.name.c_str(), relative(check.R, ref.R),
-              relative(check.T, ref.T), relative(check.eps, ref.eps), relative(check.Q, ref.Q));
-  for (const char* stepper : steppers) {
+               relative(check.capacity.R, ref.capacity.R), relative(check.capacity.T, ref.capacity.T), relative(check.eps, ref.eps), relative(check.Q, ref.Q));
+  std::printf("reference,%s,rkck,1e-13,,%.3e,%.3e,%.3e,%.3e,,cross-check\n", d.name.c_str(), relative(check.capacity.R, ref.capacity.R),
+              relative(check.capacity.T, ref.capacity.T), relative(check.eps, ref.eps), relative(check.Q, ref.Q));
+  for (Stepper stepper : all_steppers) {
     for (int e = 3; e <= 13; ++e) {
       const double tol = std::pow(10.0, -e);
       const ShotSettings s = settings_for(d, stepper, tol);
       try {
         const Verification v = verify_engine(d.engine, s);
         const double seconds = median_seconds([&] { verify_engine(d.engine, s); }, budget);
-        std::printf("shot,%s,%s,%.0e,%.4e,%.3e,%.3e,%.3e,%.3e,%.2e,\n", d.name.c_str(), stepper, tol, seconds, relative(v.R, ref.R),
-                    relative(v.T, ref.T), relative(v.eps, ref.eps), relative(v.Q, ref.Q), v.energy_drift);
+        std::printf("shot,%s,%s,%.0e,%.4e,%.3e,%.3e,%.3e,%.3e,%.2e,\n", d.name.c_str(), stepper_name(stepper).c_str(), tol, seconds,
+                    relative(v.capacity.R, ref.capacity.R), relative(v.capacity.T, ref.capacity.T), relative(v.eps, ref.eps), relative(v.Q, ref.Q), v.energy_drift);
       } catch (const Error& error) {
         std::string reason = error.what();
         reason = reason.substr(0, reason.find(';'));
-        std::printf("shot,%s,%s,%.0e,,,,,,,%s\n", d.name.c_str(), stepper, tol, reason.c_str());
+        std::printf("shot,%s,%s,%.0e,,,,,,,%s\n", d.name.c_str(), stepper_name(stepper).c_str(), tol, reason.c_str());
       }
       std::fflush(stdout);
     }
@@ -102,18 +88,20 @@ void calculator_point(const char* name, double R, double T, double budget) {
     for (int k = 0; k < 1000; ++k) design_optimal_engine(table, request);
   }, budget) / 1000;
   const Verification v = verify_engine(design.engine, ShotSettings{});
-  std::printf("calculator,%s,tab:CPNC,,%.4e,%.3e,%.3e,,,,\n", name, seconds, relative(v.R, R), relative(v.T, T));
+  std::printf("calculator,%s,tab:CPNC,,%.4e,%.3e,%.3e,,,,\n", name, seconds, relative(v.capacity.R, R), relative(v.capacity.T, T));
 }
 
 // The ab-initio optimum as a point: the wall time of one optimisation for the capacity, and
 // its error as the deviation of the verified capacity from the requested one.
 void optimizer_point(const char* name, double R, double T, double F, double budget) {
   OptimizeRequest request;
-  request.R = R, request.T = T, request.F = F;
+  request.capacity = {R, T};
+  request.F = F;
   const Optimum best = optimize(request).front();
   const double seconds = median_seconds([&] { optimize(request); }, budget);
-  std::printf("optimizer,%s,nmsimplex2,,%.4e,%.3e,%.3e,,,%d,Q=%.5g\n", name, seconds, relative(best.fit.verification.R, R),
-              relative(best.fit.verification.T, T), best.simulations, best.objective);
+  const Verification fresh = verify_engine(best.fit.engine, ShotSettings{});
+  std::printf("optimizer,%s,nmsimplex2,,%.4e,%.3e,%.3e,,,%d,Q=%.5g\n", name, seconds, relative(fresh.capacity.R, R),
+              relative(fresh.capacity.T, T), best.simulations, best.objective);
 }
 
 // Cost against stiffness: the small-l4 shape of tab:Large_Eff with l from 4 to 60, at default
@@ -121,12 +109,12 @@ void optimizer_point(const char* name, double R, double T, double F, double budg
 void stiffness(double budget) {
   for (double l : {4.0, 6.0, 10.0, 17.0, 25.0, 35.0, 45.0, 60.0}) {
     ShotSettings s;
-    s.quality.release = Quality::Release::efficiency;
-    const ScaledEngine e{l, 0.673 / 0.800, l * std::cos(M_PI / 6) - 1, 3.85e-4, 14.7 / 270000, M_PI / 6};
+    s.criterion.release = Release::efficiency;
+    const ScaledDesign e{l, 0.673 / 0.800, 14.7 / 270000, 3.85e-4, 30, 1};
     try {
-      const ShotResult r = simulate_shot(e, s.quality, s.integrator);
-      const double seconds = median_seconds([&] { simulate_shot(e, s.quality, s.integrator); }, budget);
-      const double omega = 1 / std::sqrt(e.L / (e.L + 1) * e.beam_inertia());
+      const ShotResult r = simulate_shot(e, s.criterion, s.integrator);
+      const double seconds = median_seconds([&] { simulate_shot(e, s.criterion, s.integrator); }, budget);
+      const double omega = 1 / std::sqrt(e.L() / (e.L() + 1) * e.beam_inertia());
       std::printf("stiffness,l=%g,rk8pd,default,%.4e,,,,,%ld,omega=%.4g t_release=%.4g\n", l, seconds, r.steps, omega, r.release.t);
     } catch (const Error& error) {
       std::printf("stiffness,l=%g,rk8pd,default,,,,,,,%s\n", l, error.what());
@@ -143,8 +131,8 @@ int main(int argc, char** argv) {
   calculator_point("denny capacity 425m 224kJ", 425, 224e3, budget);
   optimizer_point("alcala_ca capacity 150m 40.45kJ", 150, 40454.8, 2.0 / 3, budget);
   optimizer_point("denny capacity 425m 224kJ", 425, 224e3, 2.0 / 3, budget);
-  work_precision({"alcala_ca", alcala_ca(), Quality{}}, budget);
-  work_precision({"denny_standard", denny_standard(), Quality{}}, budget);
+  work_precision({"alcala_ca", testing::alcala_ca(), ReleaseCriterion{}}, budget);
+  work_precision({"denny_standard", testing::denny_standard(), ReleaseCriterion{}}, budget);
   work_precision(large_eff_17(), budget);
   stiffness(budget);
 }

@@ -32,9 +32,9 @@ Scored score(const ScalingTable& table, double R, double T, double theta_i_deg, 
   const Engine engine = design_optimal_engine(table, request).engine;
   const Verification v = verify_engine(engine, ShotSettings{});
   Scored out;
-  out.R_deviation = v.R / R - 1;
-  out.T_deviation = v.T / T - 1;
-  out.Q_fitted = fit_capacity(engine_shape(engine), R, T, Material{}, ShotSettings{}).verification.Q;
+  out.R_deviation = v.capacity.R / R - 1;
+  out.T_deviation = v.capacity.T / T - 1;
+  out.Q_fitted = fit_capacity(scaled_design(engine), {R, T}, Material{}, ShotSettings{}).verification.Q;
   return out;
 }
 
@@ -55,11 +55,13 @@ int main(int argc, char** argv) {
       double sum_paper = 0, sum_derived = 0;
       int count = 0, derived_wins = 0;
       for (double X : {-0.5, -0.25, 0.0, 0.25, 0.5}) {
-        const auto [R, T] = capacity_on_X_axis(X, paper.R0, paper.T0);
+        const Capacity capacity = capacity_at({X, 0}, paper.R0, paper.T0);
+        const double R = capacity.R, T = capacity.T;
         const Scored p = score(paper, R, T, block.theta_i_deg, block.F);
         const Scored d = score(derived, R, T, block.theta_i_deg, block.F);
         OptimizeRequest request;
-        request.R = R, request.T = T, request.theta_i_deg = block.theta_i_deg, request.F = block.F;
+        request.capacity = capacity;
+        request.theta_i_deg = block.theta_i_deg, request.F = block.F;
         const double optimum = best_optimum(optimize(request)).objective;
         std::printf("%g,%.4f,%+.2f,%.2f,%.0f,%+.4f,%+.4f,%+.4f,%+.4f,%.4f,%.4f,%.4f\n", block.theta_i_deg, block.F, X, R, T, p.R_deviation, p.T_deviation,
                     d.R_deviation, d.T_deviation, 100 * p.Q_fitted, 100 * d.Q_fitted, 100 * optimum);

@@ -1,0 +1,44 @@
+// The engines the tests and benchmarks share, each once, as the paper prints them.
+#pragma once
+
+#include <cmath>
+
+#include "trebuchet/design.hpp"
+#include "trebuchet/engine.hpp"
+#include "trebuchet/units.hpp"
+
+namespace trebuchet::testing {
+
+/// A row of tab:Alcala_la_Vieja as printed: theta_i = 30 deg, F = 2/3, m = 50 kg stones;
+/// lengths [m], M [t], mb [kg].
+inline Engine alcala_row(double L1, double L2, double L4, double M_t, double mb) {
+  Engine e;
+  e.L1 = L1, e.L2 = L2, e.L4 = L4, e.M = M_t * 1000, e.m = 50, e.mb = mb, e.theta_i_deg = 30;
+  e.L3 = counterweight_arm(L1, L2, 30, 2.0 / 3);
+  return e;
+}
+
+/// tab:Alcala_la_Vieja row Ca (150 m, 50 kg).
+inline Engine alcala_ca() { return alcala_row(4.13, 0.88, 3.55, 3.11, 174); }
+/// tab:Alcala_la_Vieja row Ma aimed at 480 m.
+inline Engine alcala_ma_480() { return alcala_row(5.50, 0.71, 5.15, 11.5, 334); }
+/// tab:Alcala_la_Vieja row Ma aimed at 426 m (the target lies 54 m below).
+inline Engine alcala_ma_426() { return alcala_row(5.36, 0.75, 4.96, 9.70, 320); }
+/// tab:Alcala_la_Vieja row Sa (Saone, 250 m).
+inline Engine alcala_sa() { return alcala_row(4.72, 0.85, 4.19, 5.16, 242); }
+
+/// tab:Denny "Present": Denny's standard engine, Lb = 12 m, M = 10 t, m = 100 kg, mb = 2 t
+/// (bold), H = 6.15 m, L4 = 7.9 m at theta_i = 45 deg and F = 0.93 as printed.
+inline Engine denny_standard() {
+  Engine e;
+  e.theta_i_deg = 45, e.L1 = 6.15 / std::cos(radians(45)), e.L2 = 12 - e.L1, e.L4 = 7.9, e.M = 1e4, e.m = 100, e.mb = 2000;
+  e.L3 = counterweight_arm(e.L1, e.L2, 45, 0.93);
+  return e;
+}
+
+/// A scaled design given by L = L3/L2 rather than F, as appendix A writes the equations.
+inline ScaledDesign design_with_L(double l, double l4, double L, double mu, double mu_b, double theta_i_deg) {
+  return {l, l4, mu_b, mu, theta_i_deg, (L + 1) / (l * std::cos(radians(theta_i_deg)))};
+}
+
+}  // namespace trebuchet::testing

@@ -1,0 +1,38 @@
+// The step-end interpolant and the odeiv2 wrapper of the shot (lib/src/ode.hpp).
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "ode.hpp"
+
+using namespace trebuchet;
+
+// The quintic Hermite interpolant matches q, q' and q'' at both ends, so it reproduces any
+// polynomial of degree 5 exactly, and its derivative that polynomial's derivative: only
+// round-off (a few 1e-15 for values of order 1) separates them.
+TEST_CASE("the interpolant between step ends is exact for quintics", "[ode]") {
+  auto q = [](double t) { return 0.3 - 1.2 * t + 0.5 * t * t + 2 * std::pow(t, 3) - 0.7 * std::pow(t, 4) + 0.25 * std::pow(t, 5); };
+  auto dq = [](double t) { return -1.2 + t + 6 * t * t - 2.8 * std::pow(t, 3) + 1.25 * std::pow(t, 4); };
+  auto ddq = [](double t) { return 1 + 12 * t - 8.4 * t * t + 5 * std::pow(t, 3); };
+  auto end = [&](double t) { return StepEnd{t, {q(t), dq(t), 0, 0, 0, 0}, {dq(t), ddq(t), 0, 0, 0, 0}}; };
+  const StepEnd a = end(0.4), b = end(1.1);
+  for (double t : {0.4, 0.5, 0.77, 1.0, 1.1}) {
+    const OdeVector y = hermite(a, b, t, 2);
+    CHECK(y[0] == Approx(q(t)).epsilon(1e-13));
+    CHECK(y[1] == Approx(dq(t)).epsilon(1e-13));
+  }
+}
+
+// Phase III of a pendulum-like engine: the solution between step ends, integrated anew from
+// the step start, agrees with the stepped solution at the next step end to the stepping
+// tolerance (rtol 1e-12 over one step: 1e-10 is ample).
+TEST_CASE("the solution between steps agrees with the stepped one", "[ode]") {
+  const Dynamics dynamics(ScaledDesign{5, 0.9, 0.06, 0.01, 30, 2.0 / 3});
+  PhaseIntegrator integrator(dynamics, Phase::released, IntegratorSettings{});
+  const OdeVector start = {0.5, 0, 0, 0, 0, 0};
+  OdeVector y = start;
+  double t = 0, h = 1e-3;
+  REQUIRE(integrator.step(t, y.data(), 1.0, h));
+  REQUIRE(integrator.step(t, y.data(), 1.0, h));
+  const OdeVector again = integrator.at(0, start, t);
+  for (std::size_t i = 0; i < 4; ++i) CHECK(again[i] == Approx(y[i]).epsilon(1e-10).margin(1e-12));
+}
