@@ -13,9 +13,9 @@ trap 'rm -rf "$parts"' EXIT
 for block in "30 1" "30 2/3" "40 2/3" "40 1"; do
   read -r theta F <<< "$block"
   echo "block theta $theta deg, F $F:"
-  build/verify/trebuchet-verify --derive-table --theta "$theta" --F "$F" --X -0.55:0.55:0.05 --shard 1/1 > "$parts/$theta-${F/\//_}.json"
+  build/verify/trebuchet-verify derive-table --theta "$theta" --F "$F" --X -0.55:0.55:0.05 --shard 1/1 > "$parts/$theta-${F/\//_}.json"
 done
-build/verify/trebuchet-verify --merge "$parts"/*.json > data/cpnc-derived.json
+build/verify/trebuchet-verify merge "$parts"/*.json > data/cpnc-derived.json
 build/tests/compare-tables data/cpnc-derived.json > docs/derived_vs_paper.csv
 grep '^#' docs/derived_vs_paper.csv
 echo "wrote data/cpnc-derived.json and docs/derived_vs_paper.csv"

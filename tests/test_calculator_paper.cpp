@@ -174,9 +174,9 @@ TEST_CASE("section 6.2: steps S_Z between the branches at X_d", "[calculator][pa
 TEST_CASE("section 6.2: expansions of l4 near X_d on both branches", "[calculator][paper]") {
   const double X_d = 0.34;
   auto l4_at = [&](const ScalingTable& table, double X, BranchChoice branch) {
-    // A capacity on the X axis (Y = 0): log(R/R0) = 5X/sqrt(26), log(T/T0) = -X/sqrt(26).
-    DesignRequest r = request({Quantity::R, table.R0 * std::exp(5 * X / std::sqrt(26.0))},
-                              {Quantity::T, table.T0 * std::exp(-X / std::sqrt(26.0))}, 30, 1);
+    // A capacity on the X axis (Y = 0), eq:XY_RT.
+    const Capacity capacity = capacity_at({X, 0}, table.R0, table.T0);
+    DesignRequest r = request({Quantity::R, capacity.R}, {Quantity::T, capacity.T}, 30, 1);
     r.branch = branch;
     return scaled_design(design_optimal_engine(table, r).engine).l4;
   };

@@ -8,7 +8,7 @@ const double sqrt26 = std::sqrt(26.0);
 }  // namespace
 
 CapacityCoordinates capacity_coordinates(double log_R_ratio, double log_T_ratio) {
-  return {(5 * log_R_ratio - log_T_ratio) / sqrt26, (log_R_ratio + 5 * log_T_ratio) / sqrt26};  // eq:XY_RT
+  return {(5 * log_R_ratio - log_T_ratio) / sqrt26, (log_R_ratio + 5 * log_T_ratio) / sqrt26};  // eq:XY_RT; X is eq:Xi
 }
 
 Capacity capacity_at(CapacityCoordinates c, double R0, double T0) {

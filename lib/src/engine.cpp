@@ -6,7 +6,7 @@
 
 namespace trebuchet {
 
-ScaledDesign scaled_design(const Engine& engine) {
+ScaledDesign scaled_design(const Engine& engine) {  // eq:Design
   return {engine.L1 / engine.L2, engine.L4 / engine.L1, engine.mb / engine.M, engine.m / engine.M, engine.theta_i_deg,
           arm_fraction(engine)};
 }
@@ -38,8 +38,7 @@ double counterweight_arm(double L1, double L2, double theta_i_deg, double F) {
 }
 
 double potential_energy_drop(const Engine& engine) {
-  const double L_CM = (engine.L1 - engine.L2) / 2;  // pivot to beam centre of mass [m]
-  return (engine.M * engine.L2 - engine.mb * L_CM) * engine.material.g * (1 + std::cos(radians(engine.theta_i_deg)));  // eq:DU
+  return scaled_design(engine).energy_drop() * engine.M * engine.material.g * engine.L2;  // in units of M g L2 (section 3)
 }
 
 Engine resized(const Engine& engine, const SizeFactors& f) {

@@ -4,11 +4,11 @@
 
 namespace trebuchet {
 
-double k_M(const Material& material) {
+double k_M(const Material& material) {  // eq:kMkD
   return 4.0 * M_PI / 3.0 * material.g * material.wood_density * material.wood_density / material.youngs_modulus;
 }
 
-double k_D(const Material& material) {
+double k_D(const Material& material) {  // eq:kMkD
   return 16.0 / 3.0 * material.g * material.wood_density / material.youngs_modulus;
 }
 

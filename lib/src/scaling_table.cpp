@@ -162,7 +162,7 @@ std::string ScalingTable::block_list() const {
   return list;
 }
 
-ScalingTable parse_scaling_table(std::string_view json_text, const std::string& origin) {
+ScalingTable parse_scaling_table(std::string_view json_text, const std::string& origin) {  // tab:CPNC and its re-derivations
   json document;
   try {
     document = json::parse(json_text);

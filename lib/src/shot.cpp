@@ -131,7 +131,7 @@ ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criter
     switch (criterion.release) {
       case Release::quality: r.objective = r.quality; break;
       case Release::efficiency: r.objective = r.efficiency; break;
-      case Release::range: r.objective = r.range; break;
+      case Release::range: r.objective = r.range; break;  // tab:Denny, "Present" row
     }
   }
   return r;

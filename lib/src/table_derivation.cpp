@@ -12,7 +12,7 @@
 
 namespace trebuchet {
 
-ExponentialFit fit_exponential(const std::vector<double>& X, const std::vector<double>& f) {
+ExponentialFit fit_exponential(const std::vector<double>& X, const std::vector<double>& f) {  // eq:f_MX
   if (X.size() != f.size() || X.size() < 2) throw Error(ErrorKind::data_file, "an exponential fit needs two or more points");
   const Eigen::Index n = static_cast<Eigen::Index>(X.size());
   Eigen::MatrixXd design(n, 2);  // log f = log a + b u with u = sqrt(26) X: columns (1, u)

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "trebuchet/quality.hpp"
 #include "trebuchet/units.hpp"
 
 namespace trebuchet {
@@ -19,7 +20,8 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   out.theta_release_deg = degrees(r.state.theta);
   const double drop = out.h - target_level;  // release to target level [m]
   out.capacity.R = vacuum_range({out.x, 0}, {vx, vy}, drop, g);
-  out.capacity.T = 0.5 * engine.m * out.v * out.v + engine.m * g * drop;  // eq:T, measured at the target
+  // eq:T at the target level: the height above it is drop/L2, scaled; M g L2 turns tau_e into joules.
+  out.capacity.T = energy_at_target(engine.m / engine.M, r.velocity, drop / L2) * engine.M * g * L2;
   out.capacity.target_level = target_level;
   out.eps = r.efficiency;
   out.Q = r.quality;

@@ -22,10 +22,11 @@ std::vector<DesignRequest> requests(std::size_t count, Quantity second) {
   std::uniform_real_distribution<double> X(-0.5, 0.5), Y(-1.0, 2.0);
   std::vector<DesignRequest> list;
   for (std::size_t k = 0; k < count; ++k) {
-    const double x = X(random), y = Y(random), s = std::sqrt(26.0);
+    const double x = X(random), y = Y(random);
+    const Capacity capacity = capacity_at({x, y}, 240, 26000);
     DesignRequest r;
-    r.first = {Quantity::R, 240 * std::exp((5 * x + y) / s)};
-    r.second = {Quantity::T, 26000 * std::exp((-x + 5 * y) / s)};
+    r.first = {Quantity::R, capacity.R};
+    r.second = {Quantity::T, capacity.T};
     if (second != Quantity::T)  // the same engines, asked for through another given
       r.second = {second, design_optimal_engine(builtin_scaling_table(), r).engine.m};
     list.push_back(r);

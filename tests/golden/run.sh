@@ -9,7 +9,7 @@ if [ "$1" = --old ]; then old=1; shift; fi
 CALC=$(realpath "$1") VERIFY=$(realpath "$2") out=$(realpath -m "$3")
 here=$(cd "$(dirname "$0")" && pwd)
 CLI=$here/../cli
-DATA=$here/../../data
+GOLDEN=$here
 mkdir -p "$out"
 calc() { "$CALC" "$@"; }
 verify() {
