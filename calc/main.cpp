@@ -125,7 +125,7 @@ int main(int argc, char** argv) {
   app.add_option("--beta2", options.beta2, "allowed beam bending (default: the table's, 1/300)");
   app.add_option("--youngs-modulus", options.youngs_modulus, "Young's modulus of the wood (default 12GPa)");
   app.add_option("--wood-density", options.wood_density, "density of the wood (default 700kg/m3)");
-  app.add_option("--g", options.g, "gravitational acceleration (default 9.81m/s2; the moon: 1.62)");
+  app.add_option("--g", options.g, "gravitational acceleration (default " + format_number(Material{}.g) + "m/s2; the moon: 1.62)");
   app.add_flag("--extrapolate", options.extrapolate, "allow X outside the table's intervals, with a warning");
   app.add_option("--scale", options.scale, "print the same design scaled by this factor (a model)");
   app.add_option("--format", options.format, "table, csv or json")->capture_default_str();

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+#include "engines.hpp"
 #include "trebuchet/capacity_fit.hpp"
 #include "trebuchet/error.hpp"
 
@@ -10,7 +11,7 @@ using namespace trebuchet;
 // tab:SketchBook-I rows 1 and 2 and tab:Alcala_la_Vieja row Ca as shapes (mu set by each fit).
 const ScaledDesign shapes[] = {{5.68, 5.80 / 6.13, 660.0 / 14300, 0, 30, 1},
                                {6.77, 5.69 / 6.20, 601.0 / 16900, 0, 30, 2.0 / 3},
-                               {4.69, 3.55 / 4.13, 174.0 / 3110, 0, 30, 2.0 / 3}};
+                               scaled_design(testing::alcala_ca())};
 
 // An engine built from a shape with a known mu and L2 delivers some (R, T); fitting the shape
 // to that (R, T) must give back mu and L2, and the fitted engine, shot anew, must deliver

@@ -344,7 +344,7 @@ int main(int argc, char** argv) {
     add_release_options(sub, o);
     add_integrator_options(sub, o);
     add_format_option(sub, o);
-    sub->add_option("--g", o.g, "gravitational acceleration (default: the input's, else 9.81m/s2)");
+    sub->add_option("--g", o.g, "gravitational acceleration (default: the input's, else " + format_number(Material{}.g) + "m/s2)");
   }
   add_sizing_options(fit, o, "the design");
   optimizer->add_option("--R", o.R, "range [m]");
@@ -352,7 +352,7 @@ int main(int argc, char** argv) {
   for (CLI::App* sub : {optimizer, derive}) {
     sub->add_option("--theta", o.theta, "initial beam angle theta_i [deg] (default 30)");
     sub->add_option("--F", o.engine_flags["F"], "counterweight arm fraction (L2+L3)/H (default 2/3)");
-    sub->add_option("--g", o.g, "gravitational acceleration (default 9.81m/s2)");
+    sub->add_option("--g", o.g, "gravitational acceleration (default " + format_number(Material{}.g) + "m/s2)");
     add_sizing_options(sub, o, "the engines");
     add_release_options(sub, o);
   }
