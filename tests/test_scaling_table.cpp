@@ -79,5 +79,5 @@ TEST_CASE("a non-finite number or broken JSON is refused", "[table]") {
   text.replace(text.find(key), key.size(), "\"R0\": 1e999");
   CHECK_THROWS_WITH(parse_scaling_table(text, "big.json"), Catch::Contains("big.json") && Catch::Contains("number overflow"));
   CHECK_THROWS_WITH(parse_scaling_table("{", "cut.json"), Catch::StartsWith("cut.json: not valid JSON"));
-  CHECK_THROWS_WITH(load_scaling_table("/nonexistent/cpnc.json"), Catch::Contains("cannot be read"));
+  CHECK_THROWS_WITH(load_scaling_table("/nonexistent/cpnc.json"), Catch::Contains("cannot read '/nonexistent/cpnc.json'"));
 }

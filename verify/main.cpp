@@ -24,6 +24,7 @@
 #include "trebuchet/schema.hpp"
 #include "trebuchet/sweep.hpp"
 #include "trebuchet/table_derivation.hpp"
+#include "trebuchet/text_input.hpp"
 #include "trebuchet/units.hpp"
 #include "trebuchet/verification.hpp"
 
@@ -57,21 +58,7 @@ const std::pair<const char*, UnitDimension> engine_keys[] = {
 
 // The JSON of a file, or of stdin for "-"; `expected` says what it should hold, for messages.
 nlohmann::json read_json(const std::string& path, const std::string& expected) {
-  std::string text;
-  if (path == "-") {
-    text.assign(std::istreambuf_iterator<char>(std::cin), {});
-  } else {
-    std::ifstream file(path);
-    if (!file) throw Error(ErrorKind::usage, "cannot read '" + path + "'; give a JSON file, or - for stdin");
-    text.assign(std::istreambuf_iterator<char>(file), {});
-  }
-  const std::string source = path == "-" ? std::string("stdin") : "'" + path + "'";
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw Error(ErrorKind::usage, source + " is empty; give " + expected);
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw Error(ErrorKind::usage, source + " is not valid JSON (" + e.what() + "); give " + expected);
-  }
+  return parse_json(read_text(path, expected), source_name(path), expected);
 }
 
 ShotSettings shot_settings(const Options& o) {
@@ -149,8 +136,13 @@ int run_shot(const Options& o, bool fit) {
   if (!o.input.empty()) {
     if (has_engine_flags)
       throw Error(ErrorKind::usage, "the engine comes from '" + o.input + "'; drop the engine flags (--L1 ... --theta), or drop the file");
-    input = read_json(o.input, "a design object or an array of them");
+    const std::string expected = "a design object like {\"L1\": \"6.13m\", ...} or an array of them";
+    input = read_json(o.input, expected);
+    if (!input.is_object() && !input.is_array())
+      throw Error(ErrorKind::usage, source_name(o.input) + " holds " + input.dump() + ", not a design; give " + expected);
   } else {
+    if (!o.engine_flags.at("L3").empty() && !o.engine_flags.at("F").empty())
+      throw Error(ErrorKind::usage, "--L3 and --F both fix the counterweight arm (L2 + L3 = F H); give one of them");
     if (!has_engine_flags)
       throw Error(ErrorKind::usage, "no design; give a JSON file (or - for stdin), or flags like --L1 6.13m --L2 1.08m --F 1 --L4 5.8m --M 14.3t --m 100kg --mb 660kg");
     for (const auto& [key, text] : o.engine_flags)
@@ -159,6 +151,9 @@ int run_shot(const Options& o, bool fit) {
   }
   const bool is_array = input.is_array();
   // --R/--T on the command line give the capacity of a single design.
+  if (is_array && (!o.R.empty() || !o.T.empty()))
+    throw Error(ErrorKind::usage, "--R and --T give the capacity of one design, but " + source_name(o.input) + " holds " +
+                                      std::to_string(input.size()) + "; give \"R\" and \"T\" in each design instead");
   if (!is_array) {
     if (!o.R.empty()) input["R"] = o.R;
     if (!o.T.empty()) input["T"] = o.T;
@@ -260,7 +255,7 @@ int run_derive_table(const Options& o) {
     if (!p.error.empty()) failed.push_back(p.X);
   }
   std::cerr << "trebuchet-verify: " << part.points.size() << " X points, " << shots << " shots, " << format_significant(seconds, 3)
-            << " s on " << o.threads << " threads\n";
+            << " s on " << sweep_threads(o.threads, part.points.size()) << " threads\n";
   if (!o.shard.empty()) return print_derived(sweep_part_json(part), failed);
   const DerivedTable table = derive_table({part});
   return print_derived(derived_table_json(table), failed_points(table));

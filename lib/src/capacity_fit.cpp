@@ -68,6 +68,10 @@ CapacityFit fit_capacity(const ScaledDesign& shape, const Capacity& capacity, co
   fit.design = design;
   fit.engine = engine_of(design, found.L2, material);  // the one conversion to SI
   fit.verification = verification_of(fit.engine, found.shot, 0);
+  check_engine(fit.engine, "the fitted engine");
+  if (!(fit.verification.eps <= 1))
+    throw Error(ErrorKind::numerical, "the fitted engine has eps = " + format_significant(fit.verification.eps, 4) +
+                                          " > 1: energy is not conserved (eq:Aux); tighten --rtol");
   if (!(std::abs(found.T / T - 1) <= rtol))
     throw Error(ErrorKind::numerical, "the capacity fit reached R = " + format_significant(fit.verification.capacity.R, 8) +
                                           " m, T = " + format_significant(found.T, 8) + " J, not within " +

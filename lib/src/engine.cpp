@@ -2,9 +2,13 @@
 
 #include <cmath>
 
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
 #include "trebuchet/units.hpp"
 
 namespace trebuchet {
+std::string engine_key_name(const std::string& where, const std::string& key) { return where.empty() ? "--" + key : where + "." + key; }
+
 
 ScaledDesign scaled_design(const Engine& engine) {  // eq:Design
   return {engine.L1 / engine.L2, engine.L4 / engine.L1, engine.mb / engine.M, engine.m / engine.M, engine.theta_i_deg,
@@ -25,6 +29,28 @@ Engine engine_of(const ScaledDesign& design, double L2, const Material& material
   e.mb = design.mu_b * e.M;
   e.material = material;
   return e;
+}
+
+void check_engine(const Engine& e, const std::string& where) {
+  auto positive = [&](double value, const char* key, const char* what) {
+    if (!(value > 0))
+      throw Error(ErrorKind::bad_number, engine_key_name(where, key) + " = " + format_significant(value, 6) + ": the " + what +
+                                             " must be positive");
+  };
+  if (!(e.theta_i_deg > 0 && e.theta_i_deg < 90))
+    throw Error(ErrorKind::bad_number, engine_key_name(where, where.empty() ? "theta" : "theta_i_deg") + " = " + format_significant(e.theta_i_deg, 6) +
+                                           ": the initial beam angle must lie between 0 and 90 degrees");
+  positive(e.L1, "L1", "long beam section");
+  positive(e.L2, "L2", "short beam section");
+  positive(e.L3, "L3", "counterweight arm (hinge to counterweight centre)");
+  positive(e.L4, "L4", "sling length");
+  positive(e.M, "M", "counterweight mass");
+  positive(e.m, "m", "projectile mass");
+  if (!(e.mb >= 0)) throw Error(ErrorKind::bad_number, engine_key_name(where, "mb") + " = " + format_significant(e.mb, 6) + ": the beam mass must not be negative");
+  positive(e.material.beta2, "beta2", "allowed bending");
+  positive(e.material.youngs_modulus, "youngs_modulus", "Young's modulus");
+  positive(e.material.wood_density, "wood_density", "wood density");
+  positive(e.material.g, "g", "gravitational acceleration");
 }
 
 double beam_length(const Engine& engine) { return engine.L1 + engine.L2; }

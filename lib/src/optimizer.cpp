@@ -10,6 +10,7 @@
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
+#include "trebuchet/units.hpp"
 
 namespace trebuchet {
 namespace {
@@ -48,7 +49,13 @@ std::vector<Start> starts_for(const OptimizeRequest& r) {
     if (branch == BranchChoice::upper && starts.size() == 2) break;  // both branches found
   }
   if (starts.empty()) starts.push_back({"generic shape", {5.5, 0.9, 0.045, 0, r.theta_i_deg, r.F}});
-  for (Start& s : starts) s.shape.theta_i_deg = r.theta_i_deg, s.shape.F = r.F;
+  // A shape has a counterweight arm only for l > 1/(F cos theta_i) (L > 0, eq:Design): a start
+  // without one is moved to half as long again.
+  const double l_min = 1 / (r.F * std::cos(radians(r.theta_i_deg)));
+  for (Start& s : starts) {
+    s.shape.theta_i_deg = r.theta_i_deg, s.shape.F = r.F;
+    if (!(s.shape.L() > 0)) s.shape.l = 1.5 * l_min;
+  }
   return starts;
 }
 
@@ -57,6 +64,7 @@ struct Search {
   int simulations = 0;
   double best = -1;
   CapacityFit best_fit;
+  std::string last_failure;  // why the last shape that could not deliver the capacity failed
 
   // Minus the quality of the shape at log coordinates x, its mu fitted to the capacity; a
   // shape that cannot deliver it, or fails, scores 0.
@@ -68,8 +76,9 @@ struct Search {
       const double q = objective_of(fit.verification);
       if (q > best) best = q, best_fit = fit;
       return -q;
-    } catch (const Error&) {
+    } catch (const Error& e) {
       simulations += 1;
+      last_failure = e.what();
       return 0;
     }
   }
@@ -108,7 +117,8 @@ Optimum search_from(const OptimizeRequest& request, const Start& start) {
   if (!(search.best > 0))
     throw Error(ErrorKind::out_of_range, "no shape near the " + start.name + " start delivers " +
                                              format_significant(request.capacity.R, 4) + " m with " +
-                                             format_significant(request.capacity.T / 1e3, 4) + " kJ; try another capacity");
+                                             format_significant(request.capacity.T / 1e3, 4) + " kJ (the last shape tried: " +
+                                             search.last_failure + "); try another capacity, theta_i or F");
   out.fit = search.best_fit;
   out.objective = search.best;
   out.simulations = search.simulations;
@@ -119,6 +129,15 @@ Optimum search_from(const OptimizeRequest& request, const Start& start) {
 
 std::vector<Optimum> optimize(const OptimizeRequest& request) {
   use_gsl_return_codes();
+  // L3 = F L1 cos(theta_i) - L2 > 0 needs l > 1/(F cos theta_i); the paper's engines, formal
+  // ones of appendix B included, have l < 60.
+  const double l_min = 1 / (request.F * std::cos(radians(request.theta_i_deg)));
+  if (!(request.F > 0 && request.theta_i_deg > 0 && request.theta_i_deg < 90) || !(l_min < max_beam_ratio))
+    throw Error(ErrorKind::out_of_range, "theta_i = " + format_significant(request.theta_i_deg, 4) + " deg with F = " +
+                                             format_significant(request.F, 4) + " leaves room for the counterweight arm (L2 + L3 = F L1 cos(theta_i) > L2) "
+                                             "only for a beam ratio l = L1/L2 above " + format_significant(l_min, 3) +
+                                             ", beyond any engine of the paper (l < " + format_number(max_beam_ratio) +
+                                             "); lower theta_i or raise F (the paper's are 30 or 40 deg and 1, 2/3 or 1/2)");
   std::vector<Optimum> optima;
   std::string reasons;
   for (const Start& start : starts_for(request)) {

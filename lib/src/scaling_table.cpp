@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
+#include "trebuchet/text_input.hpp"
 
 namespace trebuchet {
 namespace {
@@ -231,12 +230,12 @@ nlohmann::ordered_json scaling_table_json(const ScalingTable& table) {
 }
 
 ScalingTable load_scaling_table(const std::string& path) {
-  std::ifstream file(path);
-  if (!file)
-    throw Error(ErrorKind::data_file, path + ": cannot be read; give the path of a constants file like data/cpnc.json");
-  std::stringstream text;
-  text << file.rdbuf();
-  return parse_scaling_table(text.str(), path);
+  try {
+    return parse_scaling_table(read_text(path, "a constants file like data/cpnc.json"), path);
+  } catch (const Error& e) {
+    if (e.kind() == ErrorKind::data_file) throw;
+    throw Error(ErrorKind::data_file, e.what());
+  }
 }
 
 const ScalingTable& builtin_scaling_table() {

@@ -9,15 +9,12 @@
 namespace trebuchet {
 namespace {
 
-// How a key is named in messages: "--L4" on the command line (empty `where`), "design[2].L4" in a file.
-std::string key_name(const std::string& where, const std::string& key) { return where.empty() ? "--" + key : where + "." + key; }
-
 // A number in SI, or a string with a unit suffix.
 std::optional<double> read_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension,
                                  const std::string& where) {
   if (!object.contains(key) || object[key].is_null()) return std::nullopt;
   const nlohmann::json& value = object[key];
-  const std::string name = key_name(where, key);
+  const std::string name = engine_key_name(where, key);
   if (value.is_number()) {
     const double number = value.get<double>();
     if (!std::isfinite(number)) throw Error(ErrorKind::bad_number, name + ": " + value.dump() + " is not a finite number");
@@ -97,28 +94,6 @@ void write_engine(nlohmann::ordered_json& out, const Engine& engine) {
   for (const Field& field : fields) out[field.key] = field.value;
 }
 
-void check_engine(const Engine& e, const std::string& where) {
-  auto positive = [&](double value, const char* key, const char* what) {
-    if (!(value > 0))
-      throw Error(ErrorKind::bad_number, key_name(where, key) + " = " + format_significant(value, 6) + ": the " + what +
-                                             " must be positive");
-  };
-  positive(e.L1, "L1", "long beam section");
-  positive(e.L2, "L2", "short beam section");
-  positive(e.L3, "L3", "counterweight arm (hinge to counterweight centre)");
-  positive(e.L4, "L4", "sling length");
-  positive(e.M, "M", "counterweight mass");
-  positive(e.m, "m", "projectile mass");
-  if (!(e.mb >= 0)) throw Error(ErrorKind::bad_number, key_name(where, "mb") + " = " + format_significant(e.mb, 6) + ": the beam mass must not be negative");
-  if (!(e.theta_i_deg > 0 && e.theta_i_deg < 90))
-    throw Error(ErrorKind::bad_number, key_name(where, where.empty() ? "theta" : "theta_i_deg") + " = " + format_significant(e.theta_i_deg, 6) +
-                                           ": the initial beam angle must lie between 0 and 90 degrees");
-  positive(e.material.beta2, "beta2", "allowed bending");
-  positive(e.material.youngs_modulus, "youngs_modulus", "Young's modulus");
-  positive(e.material.wood_density, "wood_density", "wood density");
-  positive(e.material.g, "g", "gravitational acceleration");
-}
-
 EngineRecord read_engine(const nlohmann::json& object, const std::string& where) {
   if (!object.is_object())
     throw Error(ErrorKind::usage, (where.empty() ? std::string("input") : where) + ": expected a JSON object with keys L1, L2, L3 (or F), L4, M, m, mb, theta_i_deg");
@@ -136,6 +111,11 @@ EngineRecord read_engine(const nlohmann::json& object, const std::string& where)
     e.L3 = *L3;
   } else if (const auto F = read_value(object, "F", UnitDimension::dimensionless, where)) {
     e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, *F);
+    if (e.theta_i_deg > 0 && e.theta_i_deg < 90 && e.L1 > 0 && e.L2 > 0 && *F > 0 && !(e.L3 > 0))
+      throw Error(ErrorKind::bad_number, (where.empty() ? std::string("flags") : where) + ": with F = " + format_significant(*F, 4) +
+                                             " and theta_i = " + format_significant(e.theta_i_deg, 4) + " deg, L2 + L3 = F L1 cos(theta_i) = " +
+                                             format_significant(*F * pivot_height(e), 4) + " m is not longer than L2 = " + format_significant(e.L2, 4) +
+                                             " m: no room for the counterweight arm; lower theta_i, raise F or lengthen L1");
   } else {
     throw Error(ErrorKind::usage, (where.empty() ? std::string("flags") : where) +
                                       ": give the counterweight arm L3 in metres, or the fraction F = (L2 + L3)/H, e.g. F = 2/3");

@@ -168,6 +168,9 @@ void trace_released(const Dynamics& dynamics, const IntegratorSettings& settings
 ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
                          std::vector<TracePoint>* trace) {
   use_gsl_return_codes();
+  if (!(e.L() > 0))
+    fail("no room for the counterweight arm: L3/L2 = F l cos(theta_i) - 1 = " + format_significant(e.L(), 4) +
+         " <= 0 (eq:Design); raise F or l, or lower theta_i");
   const Dynamics dynamics(e);
   if (!(1 - e.mu_b * (e.l - 1) / 2 > 0))
     fail("the beam cannot turn: mu_b (l - 1)/2 = " + format_significant(e.mu_b * (e.l - 1) / 2, 4) +

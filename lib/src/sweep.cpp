@@ -1,8 +1,10 @@
 #include "trebuchet/sweep.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <charconv>
 #include <cmath>
-#include <cstdio>
+#include <limits>
 #include <mutex>
 #include <thread>
 
@@ -22,10 +24,15 @@ std::vector<double> sweep_grid(const SweepSpec& spec) {
     throw Error(ErrorKind::usage, "the X interval [" + format_number(spec.X_from) + ", " + format_number(spec.X_to) +
                                       "] is empty; give from:to:step with from <= to");
   // Multiples of the step, so that X = 0 (Z0 of tab:CPNC) is on the grid; 1e-9 absorbs the
-  // rounding of from/step when from is itself a multiple.
-  const long first = static_cast<long>(std::ceil(spec.X_from / spec.X_step - 1e-9));
-  const long last = static_cast<long>(std::floor(spec.X_to / spec.X_step + 1e-9));
-  if (last - first > 10000) throw Error(ErrorKind::usage, "the X grid has " + std::to_string(last - first + 1) + " points; use a larger step");
+  // rounding of from/step when from is itself a multiple. The count is checked in doubles,
+  // before anything is converted to an integer or allocated.
+  const double first_multiple = std::ceil(spec.X_from / spec.X_step - 1e-9);
+  const double last_multiple = std::floor(spec.X_to / spec.X_step + 1e-9);
+  if (!(last_multiple - first_multiple < max_grid_points))
+    throw Error(ErrorKind::usage, "the X grid from " + format_number(spec.X_from) + " to " + format_number(spec.X_to) + " in steps of " +
+                                      format_number(spec.X_step) + " has " + format_significant(last_multiple - first_multiple + 1, 3) +
+                                      " points, more than " + std::to_string(max_grid_points) + "; use a larger step or a shorter interval");
+  const long first = static_cast<long>(first_multiple), last = static_cast<long>(last_multiple);
   std::vector<double> grid;
   // Rounded to 1e-12 so that i * step prints as the user wrote it (-0.3, not -0.30000000000000004).
   for (long i = first; i <= last; ++i) grid.push_back(std::nearbyint(static_cast<double>(i) * spec.X_step * 1e12) / 1e12);
@@ -36,10 +43,16 @@ std::vector<double> sweep_grid(const SweepSpec& spec) {
 
 Shard parse_shard(const std::string& text) {
   Shard shard;
-  char slash = 0, rest = 0;
-  const int read = std::sscanf(text.c_str(), "%d%c%d%c", &shard.k, &slash, &shard.n, &rest);
-  if (read != 3 || slash != '/' || shard.n < 1 || shard.k < 1 || shard.k > shard.n)
-    throw Error(ErrorKind::usage, "--shard: '" + text + "' is not a part; give k/N with 1 <= k <= N, e.g. 2/8");
+  const std::size_t slash = text.find('/');
+  auto whole = [&](std::string_view digits, int& value) {  // digits only, no sign, and within int
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    return ec == std::errc() && end == digits.data() + digits.size() && !digits.empty() && digits.front() != '-';
+  };
+  const std::string_view view(text);
+  if (slash == std::string::npos || !whole(view.substr(0, slash), shard.k) || !whole(view.substr(slash + 1), shard.n) ||
+      shard.n < 1 || shard.k < 1 || shard.k > shard.n)
+    throw Error(ErrorKind::usage, "--shard: '" + text + "' is not a part; give k/N with 1 <= k <= N <= " +
+                                      std::to_string(std::numeric_limits<int>::max()) + ", e.g. 2/8");
   return shard;
 }
 
@@ -76,6 +89,12 @@ SweepPoint optimize_point(const SweepSpec& spec, double X) {
 
 }  // namespace
 
+int sweep_threads(int requested, std::size_t points) {
+  // More threads than points, or than cores, would only wait: the count is capped at both.
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return std::clamp(requested, 1, std::max(1, std::min(cores, static_cast<int>(std::min<std::size_t>(points, max_grid_points)))));
+}
+
 std::vector<SweepPoint> run_sweep(const SweepSpec& spec, Shard shard, int threads, const std::function<void(int, int)>& progress) {
   const std::vector<double> grid = sweep_grid(spec);
   std::vector<double> mine;
@@ -94,8 +113,9 @@ std::vector<SweepPoint> run_sweep(const SweepSpec& spec, Shard shard, int thread
       if (progress) progress(done, static_cast<int>(mine.size()));
     }
   };
+  const int used = sweep_threads(threads, mine.size());
   std::vector<std::thread> workers;
-  for (int t = 1; t < std::max(1, threads); ++t) workers.emplace_back(work);
+  for (int t = 1; t < used; ++t) workers.emplace_back(work);
   work();
   for (std::thread& w : workers) w.join();
   return points;

@@ -63,11 +63,14 @@ DimensionText dimension_text(UnitDimension dimension) {
 std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
 
 // Parses the longest leading number of `text`; returns the number of characters used (0: none).
-std::size_t parse_number_prefix(std::string_view text, double& value) {
+// A number beyond the range of a double is reported as such, naming `what`.
+std::size_t parse_number_prefix(std::string_view text, double& value, const std::string& what) {
   const char* first = text.data();
   const char* last = first + text.size();
   if (first != last && *first == '+') ++first;  // from_chars rejects a leading '+'
   auto [end, ec] = std::from_chars(first, last, value, std::chars_format::general);
+  if (ec == std::errc::result_out_of_range)
+    throw Error(ErrorKind::bad_number, what + " is beyond the range of numbers (about 1e-308 to 1e308); give a value of ordinary size");
   if (ec != std::errc()) return 0;
   return static_cast<std::size_t>(end - text.data());
 }
@@ -99,13 +102,13 @@ double parse_value(std::string_view text, UnitDimension dimension, std::string_v
   const std::string what = std::string(name) + ": " + quoted(text);
 
   double value = 0;
-  std::size_t used = parse_number_prefix(text, value);
+  std::size_t used = parse_number_prefix(text, value, what);
   if (used == 0) throw Error(ErrorKind::bad_number, what + " is not a number; " + fix);
   std::string_view rest = text.substr(used);
 
   if (!rest.empty() && rest.front() == '/') {  // a fraction a/b, e.g. 2/3 or 1/300
     double denominator = 0;
-    std::size_t used_denominator = parse_number_prefix(rest.substr(1), denominator);
+    std::size_t used_denominator = parse_number_prefix(rest.substr(1), denominator, what);
     if (used_denominator == 0 || denominator == 0)
       throw Error(ErrorKind::bad_number, what + " is not a valid fraction; " + fix);
     value /= denominator;

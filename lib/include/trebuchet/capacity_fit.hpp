@@ -23,7 +23,8 @@ struct CapacityFit {
 /// Fits mu and the size of `shape` (its mu is ignored) so that its shot lands at R [m] with
 /// T [J] at level 0 (capacity.target_level is not used), each to `rtol` relative. Throws
 /// Error(out_of_range) when no mu within a factor 20 of the guess m = 2T/(g R) reaches T, and
-/// Error(numerical) when T jumps with mu at the root (the release moves between maxima).
+/// Error(numerical) when T jumps with mu at the root (the release moves between maxima). The
+/// engine it returns passes check_engine, has eps <= 1 and its shot conserved energy.
 CapacityFit fit_capacity(const ScaledDesign& shape, const Capacity& capacity, const Material& material,
                          const ShotSettings& settings, double rtol = 1e-6);
 

@@ -2,6 +2,8 @@
 // follows from it: its scaled design (eq:Design), geometry and stored energy (eq:DU).
 #pragma once
 
+#include <string>
+
 #include "trebuchet/design.hpp"
 #include "trebuchet/material.hpp"
 
@@ -28,6 +30,14 @@ ScaledDesign scaled_design(const Engine& engine);
 /// The engine of a scaled design at short arm L2 [m] (eq:Design), its counterweight mass and
 /// beam diameter from eq:ExtraScalings, m = mu M and mb = mu_b M.
 Engine engine_of(const ScaledDesign& design, double L2, const Material& material);
+
+/// The validation every engine passes, given or computed: lengths and masses positive (mb may
+/// be 0), theta_i in (0, 90) degrees, a positive material. Throws Error(bad_number) naming the
+/// parameter: "--L4" for an empty `where` (the command line), else "where.L4".
+void check_engine(const Engine& engine, const std::string& where);
+
+/// How check_engine and the readers name a key: "--key", or "where.key".
+std::string engine_key_name(const std::string& where, const std::string& key);
 
 double beam_length(const Engine& engine);    ///< Lb = L1 + L2 [m]
 double pivot_height(const Engine& engine);   ///< H = L1 cos(theta_i) [m]

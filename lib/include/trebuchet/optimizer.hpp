@@ -10,6 +10,9 @@
 
 namespace trebuchet {
 
+/// The largest beam ratio l = L1/L2 the optimizer considers: appendix B's formal engine has 59.
+inline constexpr double max_beam_ratio = 60;
+
 struct OptimizeRequest {
   Capacity capacity;                           ///< R [m] and T [J] at level 0
   double theta_i_deg = standard_theta_i_deg;   ///< [deg]

@@ -44,10 +44,6 @@ struct EngineRecord {
 /// naming the key and the fix, and checks the engine (check_engine).
 EngineRecord read_engine(const nlohmann::json& object, const std::string& where);
 
-/// Lengths and masses positive (mb may be 0), theta_i in (0, 90) degrees, a positive material.
-/// Throws Error(bad_number) naming the parameter as `where` names keys.
-void check_engine(const Engine& engine, const std::string& where);
-
 /// The calculator's design: R, T, X, Y, the engine's keys, amplification, branch, warnings and,
 /// near X_d, branch_steps.
 nlohmann::ordered_json design_json(const OptimalEngine& design);

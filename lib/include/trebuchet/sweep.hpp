@@ -25,9 +25,12 @@ struct SweepSpec {
   ReleaseCriterion criterion{};  ///< what each optimum maximises: eq:Q, eq:Q_n or Q_eps
 };
 
+/// The most X points a sweep may have.
+inline constexpr int max_grid_points = 10000;
+
 /// The X points of a sweep: the multiples of X_step in [X_from, X_to], so X = 0 is one of them
 /// whenever the interval holds it. Throws Error(usage) for a step <= 0, an empty interval or
-/// more than 10 001 points.
+/// more than max_grid_points points.
 std::vector<double> sweep_grid(const SweepSpec& spec);
 
 /// Part k (1-based) of n: every n-th grid point from the k-th, so that parts cost about the same.
@@ -49,7 +52,12 @@ struct SweepPoint {
   int optima_found = 0;         ///< distinct optima from the starts (two where branches compete)
 };
 
-/// Optimises every point of the shard, `threads` at a time; `progress(done, total)` is called
+/// The threads a sweep of `points` points uses when asked for `requested`: at most one per point
+/// and per core, at least one.
+int sweep_threads(int requested, std::size_t points);
+
+/// Optimises every point of the shard, sweep_threads(threads, points) at a time;
+/// `progress(done, total)` is called
 /// after each point, from one thread at a time. Results are in grid order.
 std::vector<SweepPoint> run_sweep(const SweepSpec& spec, Shard shard, int threads,
                                   const std::function<void(int, int)>& progress = {});
