@@ -1,6 +1,7 @@
 // trebuchet-calc: optimal engines from the scaling laws of tab:CPNC. Parses, calls the
 // library, prints. Exit codes: cli/exit_codes.hpp and docs/exit_codes.md.
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -64,7 +65,7 @@ int run(const Options& options) {
   request.branch = parse_branch_choice(options.branch);
   request.material = material_from(options, table.reference);
   request.extrapolate = options.extrapolate;
-  const double lambda = options.scale.empty() ? 1.0 : parse_positive(options.scale, UnitDimension::dimensionless, "--scale");
+  if (!options.scale.empty()) request.scale = parse_positive(options.scale, UnitDimension::dimensionless, "--scale");
 
   std::vector<Given> givens;
   for (const auto& [quantity, text] : options.givens)
@@ -76,15 +77,31 @@ int run(const Options& options) {
                                               std::string(quantity_name(givens.front().quantity)) + " from the command line");
     std::ifstream file;
     if (options.batch != "-") {
+      std::error_code error;
+      if (std::filesystem::is_directory(options.batch, error))
+        throw Error(ErrorKind::usage, "--batch: '" + options.batch + "' is a directory; give a CSV file or - for stdin");
       file.open(options.batch);
       if (!file) throw Error(ErrorKind::usage, "--batch: cannot read '" + options.batch + "'; give a CSV file or - for stdin");
     }
     std::istream& input = options.batch == "-" ? std::cin : file;
-    std::cout << "line," << design_csv_header() << "\n";
+    const bool json = options.format == "json";
+    if (!json) std::cout << "line," << design_csv_header() << "\n";
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    // A row is printed only once it is whole, so that a failure cannot leave half a row.
     const int failures = run_batch(input, table, request, [&](int line, const OptimalEngine* design, const Error* error) {
-      if (design) std::cout << line << "," << design_csv_row(lambda == 1.0 ? *design : scale_optimal_engine(*design, lambda)) << "\n";
-      else std::cerr << "trebuchet-calc: line " << line << ": " << error->what() << "\n";
+      if (!design) {
+        std::cerr << "trebuchet-calc: line " << line << ": " << error->what() << "\n";
+        if (json) rows.push_back({{"line", line}, {"error", error->what()}, {"exit_code", exit_code(Program::calc, error->kind())}});
+      } else if (json) {
+        nlohmann::ordered_json row = {{"line", line}};
+        row.update(design_json(*design));
+        rows.push_back(row);
+      } else {
+        const std::string row = std::to_string(line) + "," + design_csv_row(*design) + "\n";
+        std::cout << row;
+      }
     });
+    if (json) std::cout << rows.dump(2) << "\n";
     if (failures > 0) {
       std::cerr << "trebuchet-calc: " << failures << " row(s) failed; the other rows are in the output\n";
       return exit_code(Program::calc, ErrorKind::batch_rows);
@@ -98,9 +115,7 @@ int run(const Options& options) {
                                             "e.g. --R 150m --m 50kg");
   request.first = givens[0];
   request.second = givens[1];
-  OptimalEngine design = design_optimal_engine(table, request);
-  if (lambda != 1.0) design = scale_optimal_engine(design, lambda);
-  print(design, options.format);
+  print(design_optimal_engine(table, request), options.format);
   return 0;
 }
 

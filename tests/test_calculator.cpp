@@ -309,3 +309,64 @@ TEST_CASE("near-singular pairs report how much they amplify input errors", "[cal
   r.second = {Quantity::m, design.engine.m};
   CHECK(design_optimal_engine(builtin_scaling_table(), r).amplification < 3);
 }
+
+// Seams (issue 11): where two segments meet, their constants agree only to their rounding, so
+// for a fixed second given (m, M or L1) each segment reaches the seam X_s at a slightly
+// different R; between those two ranges a request could solve to just past the seam in both.
+// Every seam of both tables is probed across that interval (its ends, its middle and beyond
+// it); each probe must give an engine, none may be refused as outside the table.
+TEST_CASE("no gap at any seam of either table", "[calculator][range]") {
+  const ScalingTable derived = load_scaling_table(TREBUCHET_DATA_DIR "/cpnc-derived.json");
+  int probes = 0, seams = 0, gaps = 0;
+  for (const ScalingTable* table : {&builtin_scaling_table(), &derived})
+    for (const TableBlock& block : table->blocks)
+      for (const Segment& left : block.segments)
+        for (const Segment& right : block.segments) {
+          const bool one_family = left.branch == right.branch || left.branch == Branch::none || right.branch == Branch::none;
+          if (left.X_max != right.X_min || !one_family) continue;
+          ++seams;
+          const double X_s = left.X_max;
+          for (double Y : {-1.0, 0.5})
+            for (Param second : {Param::m, Param::M, Param::L1}) {
+              const Capacity c = capacity_at({X_s, Y}, table->R0, table->T0);
+              const OptimalEngine design = design_optimal_engine(*table, capacity(c.R, c.T, block.theta_i_deg, block.F));
+              const Quantity q = second == Param::m ? Quantity::m : second == Param::M ? Quantity::M : Quantity::L1;
+              const double Z = value_of(design, q);
+              // The R at which each segment puts the seam for this Z: log Z = log(a Z0) + p lr + q lt
+              // and X_s = (5 lr - lt)/sqrt(26) (eq:XY_RT), solved for lr.
+              auto R_at_seam = [&](const Segment& s) {
+                const double p = s.exponents(index(second), 0), qz = s.exponents(index(second), 1);
+                const double b = std::log(Z / (s.a[index(second)] * block.Z0[index(second)]));
+                const double lr = (b + qz * std::sqrt(26.0) * X_s) / (p + 5 * qz);
+                return table->R0 * std::exp(lr);
+              };
+              const double R_left = R_at_seam(left), R_right = R_at_seam(right);
+              for (double f : {-0.5, 0.0, 0.25, 0.5, 0.75, 1.0, 1.5}) {
+                DesignRequest r = capacity(c.R, c.T, block.theta_i_deg, block.F);
+                r.first = {Quantity::R, R_left + f * (R_right - R_left)};
+                r.second = {q, Z};
+                INFO(table->origin << " block " << block.theta_i_deg << "/" << block.F << " seam " << X_s << " " << quantity_name(q) << " f " << f);
+                try {
+                  const OptimalEngine d = design_optimal_engine(*table, r);
+                  gaps += !(d.coordinates.X >= d.segment_X_min && d.coordinates.X <= d.segment_X_max);
+                } catch (const Error& e) {
+                  FAIL_CHECK(e.what());
+                }
+                ++probes;
+              }
+            }
+        }
+  std::printf("seams: %d seams, %d probes, %d of them in a gap between two segments\n", seams, probes, gaps);
+  CHECK(seams == 18);
+  CHECK(gaps > 0);  // the probes do reach the gaps this guards
+}
+
+// The issue's example: (321.294 m, 66.484 kg) fell between the two segments of (30 deg, 2/3).
+TEST_CASE("the seam example of issue 11 gives an engine", "[calculator][range]") {
+  DesignRequest r;
+  r.first = {Quantity::R, 321.294};
+  r.second = {Quantity::m, 66.484};
+  const OptimalEngine d = design_optimal_engine(builtin_scaling_table(), r);
+  CHECK(std::abs(d.coordinates.X) < 1e-4);
+  CHECK(d.warnings.empty());
+}

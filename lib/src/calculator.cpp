@@ -170,6 +170,45 @@ BeamLengthSolutions invert_with_beam_length(const TableBlock& block, const Segme
 
 bool first_is_beam_length(const Given& first, const Given&) { return first.quantity == Quantity::Lb; }
 
+// Two segments that meet at a seam X_s agree there only to the rounding of their constants, so
+// a pair of givens near X_s can solve to just past the seam in both: the left segment's X above
+// X_s and the right one's below it. Such a gap is covered: the candidate nearer its own segment
+// is taken (docs/calculator.md, "Seams"). Segments of two different branches do not form a
+// seam; an unlabeled segment continues whichever branch meets it.
+bool same_family(Branch a, Branch b) { return a == b || a == Branch::none || b == Branch::none; }
+
+std::optional<Candidate> seam_candidate(const std::vector<Candidate>& candidates) {
+  std::optional<Candidate> best;
+  for (const Candidate& left : candidates)
+    for (const Candidate& right : candidates) {
+      const Segment &a = *left.segment, &b = *right.segment;
+      if (&a == &b || a.X_max != b.X_min || !same_family(a.branch, b.branch)) continue;
+      if (!(left.X() > a.X_max && right.X() < b.X_min)) continue;
+      const Candidate& nearer = left.outside_by() <= right.outside_by() ? left : right;
+      if (!best || nearer.outside_by() < best->outside_by()) best = nearer;
+    }
+  return best;
+}
+
+// Every number of a design is finite, and lengths and masses are positive: extreme givens, a
+// material far from wood or a huge --scale can push one out of the range of doubles, and
+// that is the input's fault, named with `cause`.
+void require_representable(const OptimalEngine& d, const std::string& cause) {
+  const Engine& e = d.engine;
+  const std::pair<const char*, double> positive[] = {{"R", d.capacity.R}, {"T", d.capacity.T}, {"L1", e.L1}, {"L2", e.L2}, {"L3", e.L3},
+                                                     {"L4", e.L4}, {"D", e.D}, {"M", e.M}, {"m", e.m}, {"mb", e.mb},
+                                                     {"Delta U", potential_energy_drop(e)}};
+  auto fail = [&](const char* name, const char* how) {
+    throw Error(ErrorKind::bad_number, cause + " gives an engine whose " + name + " is " + how +
+                                           " for a number (beyond about 1e-308 to 1e308); give values of ordinary size");
+  };
+  for (const auto& [name, value] : positive) {
+    if (!std::isfinite(value)) fail(name, "too large");
+    if (!(value > std::numeric_limits<double>::min())) fail(name, "too small");
+  }
+  if (!std::isfinite(d.coordinates.X) || !std::isfinite(d.coordinates.Y)) fail("capacity (X, Y)", "too far from R0, T0");
+}
+
 std::string describe_given(const Given& given) {
   const Dimension dimension = quantity_dimension(given.quantity);
   const char* unit = dimension == Dimension::length ? " m" : dimension == Dimension::mass ? " kg"
@@ -292,6 +331,13 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
                                              table.block_list() + " (--theta, --F)");
 
   const SizeFactors scaling = size_factors(1, table.reference, 1, request.material);
+  const Material& m = request.material;
+  if (!(std::isfinite(scaling.mass) && std::isfinite(scaling.energy) && std::isfinite(scaling.diameter) && scaling.mass > 0 &&
+        scaling.diameter > 0 && scaling.energy > 0 && scaling.mass < 1e300 && scaling.mass > 1e-300))
+    throw Error(ErrorKind::bad_number, "the material (beta2 = " + format_significant(m.beta2, 3) + ", Young's modulus " +
+                                           format_significant(m.youngs_modulus, 3) + " Pa, wood density " + format_significant(m.wood_density, 3) +
+                                           " kg/m^3, g = " + format_significant(m.g, 3) + " m/s^2) scales the masses by " +
+                                           "a factor beyond the range of numbers; give values of ordinary size, e.g. the paper's 1/300, 12GPa, 700kg/m3, 9.81");
   const double log_i = std::log(gi.value / material_factor(gi.quantity, scaling));
   const double log_j = std::log(gj.value / material_factor(gj.quantity, scaling));
 
@@ -317,6 +363,8 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
   std::vector<Candidate> inside;
   for (const Candidate& c : candidates)
     if (c.inside()) inside.push_back(c);
+  if (inside.empty())
+    if (auto seam = seam_candidate(candidates)) inside.push_back(*seam);
 
   OptimalEngine result;
   // Message parts, formatted only when a message needs them.
@@ -397,6 +445,7 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
                                             ", above the limit of " + format_significant(max_amplification, 2) +
                                             "; give a better-conditioned pair such as R and m, or M and m");
   if (chosen.amplification > warn_amplification) result.warnings.push_back("ill-conditioned pair: " + conditioning());
+  require_representable(result, "the request " + pair());
 
   if (segment.branch != Branch::none) {
     double overlap_lo = -std::numeric_limits<double>::infinity(), overlap_hi = -overlap_lo;
@@ -422,7 +471,7 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
       }
     }
   }
-  return result;
+  return request.scale == 1 ? result : scale_optimal_engine(result, request.scale);
 }
 
 OptimalEngine scale_optimal_engine(const OptimalEngine& design, double lambda) {
@@ -435,6 +484,7 @@ OptimalEngine scale_optimal_engine(const OptimalEngine& design, double lambda) {
   // The capacity moves along a line of constant X (section 6.1): X stays, Y grows.
   const CapacityCoordinates shift = capacity_coordinates(std::log(factors.length), std::log(factors.energy));
   scaled.coordinates.Y += shift.Y;
+  require_representable(scaled, "scaling by " + format_significant(lambda, 3));
   return scaled;
 }
 

@@ -32,12 +32,13 @@ double require_value(const nlohmann::json& object, const std::string& key, UnitD
   return *value;
 }
 
-// The calculator's numbers are computed, never read: one that is not finite is a defect.
+// A written number must be finite: JSON has no inf or nan, and neither has a spreadsheet. The
+// calculator rejects extreme inputs before this; an engine read back is checked here once more.
 void require_finite(const std::vector<Field>& fields) {
   for (const Field& field : fields)
     if (!std::isfinite(field.value))
-      throw Error(ErrorKind::numerical, std::string("internal error: ") + field.key +
-                                            " is not finite; please report the command that caused it");
+      throw Error(ErrorKind::bad_number, std::string("the engine's ") + field.key +
+                                             " is beyond the range of numbers (about 1e-308 to 1e308); give values of ordinary size");
 }
 
 std::vector<Field> design_fields(const OptimalEngine& d) {

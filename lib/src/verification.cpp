@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
 #include "trebuchet/quality.hpp"
 #include "trebuchet/units.hpp"
 
@@ -19,6 +21,10 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   out.A_deg = degrees(std::atan2(vy, -vx));
   out.theta_release_deg = degrees(r.state.theta);
   const double drop = out.h - target_level;  // release to target level [m]
+  const double apex = out.h + (vy > 0 ? vy * vy / (2 * g) : 0);  // highest point of the flight above the base [m]
+  if (!(target_level <= apex))
+    throw Error(ErrorKind::usage, "the target level " + format_significant(target_level, 4) + " m lies above the apex of the flight, " +
+                                      format_significant(apex, 4) + " m above the engine's base; give a target level below it");
   out.capacity.R = vacuum_range({out.x, 0}, {vx, vy}, drop, g);
   // eq:T at the target level: the height above it is drop/L2, scaled; M g L2 turns tau_e into joules.
   out.capacity.T = energy_at_target(engine.m / engine.M, r.velocity, drop / L2) * engine.M * g * L2;

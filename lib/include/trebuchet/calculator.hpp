@@ -34,6 +34,7 @@ struct DesignRequest {
   BranchChoice branch = BranchChoice::automatic;
   Material material{};         ///< may differ from the table's; masses, D and T follow by size_factors
   bool extrapolate = false;    ///< use the nearest segment when X is outside all of them
+  double scale = 1;            ///< print the optimum at this factor of its size (a model), scaled
 };
 
 /// An optimal engine with the capacity it is designed for.
@@ -53,15 +54,18 @@ struct OptimalEngine {
   std::vector<std::string> warnings;
 };
 
-/// The optimal engine for a request. Throws Error(given_count) for an unusable pair,
-/// Error(out_of_range) when no (theta_i, F) block or no X-segment gives a consistent solution.
+/// The optimal engine for a request, scaled by request.scale. Throws Error(given_count) for an
+/// unusable pair, Error(out_of_range) when no (theta_i, F) block or no X-segment gives a
+/// consistent solution, and Error(bad_number) when the givens, the material or the scale
+/// are so extreme that a number of the engine leaves the range of doubles.
 OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignRequest& request);
 
 /// S_Z of eq:ZiZj_vs_X for a block with two branches, at the block's X_d; nullopt without.
 std::optional<std::array<double, param_count>> branch_steps(const TableBlock& block);
 
 /// The same optimal engine at lambda times the size (lengths lambda, D lambda^1.5, masses
-/// lambda^4, T lambda^5); X is unchanged, so it stays optimal (eq:ExtraScalings).
+/// lambda^4, T lambda^5); X is unchanged, so it stays optimal (eq:ExtraScalings). Throws
+/// Error(bad_number) when a number leaves the range of doubles.
 OptimalEngine scale_optimal_engine(const OptimalEngine& design, double lambda);
 
 }  // namespace trebuchet

@@ -35,7 +35,8 @@ struct Verification {
   double energy_drift = 0; ///< max |E(t) - E(0)| / Delta U over phases I and II, scaled
 };
 
-/// The SI figures of a shot of `engine` (of scaled design scaled_design(engine)).
+/// The SI figures of a shot of `engine` (of scaled design scaled_design(engine)). Throws
+/// Error(usage) when the target level lies above the apex of the flight.
 Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level);
 
 /// Simulates one shot of `engine` under its own g. Throws Error(numerical) as simulate_shot
