@@ -73,6 +73,20 @@ TEST_CASE("a bad constants file is refused with the file and the key named", "[t
         "spoiled.json: blocks[2].Z0.M: must be positive, got -1");
 }
 
+// Issue 11: a table is checked as data. eq:ZRT's p_Z + 5 q_Z = n_Z must hold to one unit of the
+// last printed digit of p plus five of q: all-zero exponents fail it, while the paper's (30 deg,
+// 2/3) D pair, 0.0004 off with four decimals (allowed 0.0006), still loads with the table.
+TEST_CASE("a table whose constants break eq:ZRT, or with a doubled block, is refused", "[table]") {
+  CHECK(table_error([](nlohmann::json& d) {
+          for (auto& segment : d["blocks"][0]["segments"])
+            for (auto& [key, value] : segment["p"].items()) value = 0, segment["q"][key] = 0;
+        }) == "spoiled.json: blocks[0].segments[0]: p + 5 q = 0 for L1, not n = 1 as eq:ZRT requires (to 1e-12, what the printed "
+              "digits allow); correct p or q of L1");
+  CHECK(table_error([](nlohmann::json& d) { d["blocks"].push_back(d["blocks"][2]); }) ==
+        "spoiled.json: blocks[3]: a second block for theta_i = 40 deg, F = 2/3; give each (theta_i, F) once");
+  CHECK_NOTHROW(parse_scaling_table(builtin_scaling_table_json(), "paper"));
+}
+
 TEST_CASE("a non-finite number or broken JSON is refused", "[table]") {
   std::string text(builtin_scaling_table_json());
   const std::string key = "\"R0\": 240";

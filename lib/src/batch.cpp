@@ -85,6 +85,25 @@ DesignRequest parse_row(const Header& header, std::string_view line, const Desig
   return request;
 }
 
+// The longest line a batch may have: a row of every column with long units fits in far less.
+constexpr std::size_t max_line_bytes = 1 << 16;
+
+// The next line of `input` into `line`, without its '\n'; false at the end. A line longer
+// than max_line_bytes is an error: an endless one (/dev/zero) is never read whole.
+bool read_line(std::istream& input, std::string& line, int line_number) {
+  line.clear();
+  std::streambuf* buffer = input.rdbuf();
+  int c = buffer->sbumpc();
+  if (c == std::char_traits<char>::eof()) return false;
+  for (; c != std::char_traits<char>::eof() && c != '\n'; c = buffer->sbumpc()) {
+    if (line.size() == max_line_bytes)
+      throw Error(ErrorKind::usage, "batch line " + std::to_string(line_number) + " is longer than " +
+                                        std::to_string(max_line_bytes >> 10) + " KiB; give a CSV file of requests, one a line");
+    line += static_cast<char>(c);
+  }
+  return true;
+}
+
 }  // namespace
 
 int run_batch(std::istream& input, const ScalingTable& table, const DesignRequest& defaults,
@@ -93,8 +112,10 @@ int run_batch(std::istream& input, const ScalingTable& table, const DesignReques
   int line_number = 0;
   std::optional<Header> header;
   int failures = 0;
-  while (std::getline(input, line)) {
+  while (read_line(input, line, line_number + 1)) {
     ++line_number;
+    // Excel's "CSV UTF-8" starts with a byte-order mark; it is not part of the first column's name.
+    if (line_number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     if (skipped(line)) continue;
     if (!header) {
       header = parse_header(line);

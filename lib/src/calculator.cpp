@@ -170,6 +170,32 @@ BeamLengthSolutions invert_with_beam_length(const TableBlock& block, const Segme
 
 bool first_is_beam_length(const Given& first, const Given&) { return first.quantity == Quantity::Lb; }
 
+// For a request with R and a log-linear other given, the ranges of R the block covers with that
+// other given held, [R_lo, R_hi] in m: in each segment, eq:RT_ZiZj with X at the segment's ends
+// (X = (5 lr - lt)/sqrt(26), eq:XY_RT) fixes lr. Empty when the pair has no R.
+std::optional<std::pair<double, double>> R_range_for(const ScalingTable& table, const TableBlock& block, const Given& gi,
+                                                     const Given& gj, const SizeFactors& scaling) {
+  const Given& other = gi.quantity == Quantity::R ? gj : gi;
+  if ((gi.quantity == Quantity::R) == (gj.quantity == Quantity::R)) return std::nullopt;
+  double lo = HUGE_VAL, hi = 0;
+  for (const Segment& segment : block.segments) {
+    const auto law = log_law(table, block, segment, other.quantity);
+    if (!law) return std::nullopt;
+    for (double X : {segment.X_min, segment.X_max}) {
+      // Unit steps in lr and lt move X by these (eq:XY_RT is linear).
+      const double dX_dr = capacity_coordinates(1, 0).X, dX_dt = capacity_coordinates(0, 1).X;
+      Eigen::Matrix2d A;
+      A << law->pq, dX_dr, dX_dt;
+      if (std::abs(A.determinant()) < 1e-12) continue;
+      const Eigen::Vector2d x = A.inverse() * Eigen::Vector2d(std::log(other.value / material_factor(other.quantity, scaling)) - law->c, X);
+      const double R = table.R0 * std::exp(x(0));
+      lo = std::min(lo, R), hi = std::max(hi, R);
+    }
+  }
+  if (!(hi > 0) || !std::isfinite(lo) || !std::isfinite(hi)) return std::nullopt;
+  return std::pair{lo, hi};
+}
+
 // Two segments that meet at a seam X_s agree there only to the rounding of their constants, so
 // a pair of givens near X_s can solve to just past the seam in both: the left segment's X above
 // X_s and the right one's below it. Such a gap is covered: the candidate nearer its own segment
@@ -384,14 +410,30 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
       std::string message = both_capacity
           ? "capacity " + pair() + " has X = " + format_significant(candidates.front().X(), 3) +
                 ", outside the interval " + covered() + " covered by tab:CPNC for " + describe_block(*block) +
-                "; raise T or lower R to lower X (X = (5 ln(R/R0) - ln(T/T0))/sqrt(26)), or use --extrapolate"
+                "; raise T or lower R to lower X (X = (5 ln(R/R0) - ln(T/T0))/sqrt(26))"
           : "no meaningful capacity for the pair " + pair() + " at " + describe_block(*block) + ": " +
                 (!beam_length_spans.empty() && candidates.empty()
                      ? "optimal engines with " + describe_given(first_is_beam_length(gi, gj) ? gj : gi) +
                            " have Lb from " + beam_length_spans
                      : (tried.empty() ? std::string("no segment gives a solution") : "the inversion gives " + tried) +
-                           ", outside the covered interval " + covered()) +
-                "; give another pair, or --extrapolate to use the nearest segment";
+                           ", outside the covered interval " + covered());
+      // In the user's terms: the ranges that work with the other given held.
+      if (const auto range = R_range_for(table, *block, gi, gj, scaling)) {
+        const Given& other = gi.quantity == Quantity::R ? gj : gi;
+        message += "; with " + describe_given(other) + " the table covers R from " + format_significant(range->first, 3) + " m to " +
+                   format_significant(range->second, 3) + " m: change R to lie there, or change " +
+                   std::string(quantity_name(other.quantity));
+      } else if (!both_capacity) {
+        message += "; give another pair";
+      }
+      // A model of a full-size engine lies at the full-size engine's X: design that and scale it.
+      const bool short_range = (gi.quantity == Quantity::R && gi.value < 0.25 * table.R0) ||
+                               (gj.quantity == Quantity::R && gj.value < 0.25 * table.R0);
+      if (short_range)
+        message += "; for a small model of a full-size engine, design the full-size one and add --scale, e.g. "
+                   "trebuchet-calc --R 425m --T 224kJ --scale 80/425 (tab:Denny's 80 m model)";
+      message += request.extrapolate ? "; even --extrapolate finds no segment that solves the pair"
+                                     : "; or add --extrapolate to use the nearest segment beyond its interval";
       throw Error(ErrorKind::out_of_range, message);
     }
     std::vector<Candidate> allowed;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "trebuchet/error.hpp"
@@ -12,6 +13,75 @@ namespace trebuchet {
 namespace {
 
 using nlohmann::json;
+
+// The text of every non-integer number of a JSON document, by its path as messages name it
+// ("blocks[0].segments[1].p.L1"), read with nlohmann's SAX interface, which hands the text over.
+// The printed digits of a constant tell how exact it is.
+class NumberTexts : public nlohmann::json_sax<json> {
+ public:
+  std::map<std::string, std::string> texts;
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t& text) override {
+    texts[next_path()] = text;
+    return true;
+  }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override { return open(false); }
+  bool key(string_t& name) override {
+    key_ = name;
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(true); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+
+ private:
+  struct Frame {
+    bool array;
+    std::size_t index;
+    std::string path;
+  };
+  std::string next_path() {
+    if (frames_.empty()) return "";
+    Frame& f = frames_.back();
+    if (f.array) return f.path + "[" + std::to_string(f.index++) + "]";
+    return f.path.empty() ? key_ : f.path + "." + key_;
+  }
+  bool value() {
+    next_path();
+    return true;
+  }
+  bool open(bool array) {
+    frames_.push_back({array, 0, next_path()});
+    return true;
+  }
+  bool close() {
+    frames_.pop_back();
+    return true;
+  }
+  std::vector<Frame> frames_;
+  std::string key_;
+};
+
+// One unit in the last printed digit of a number's text ("-0.1851" -> 1e-4, "2.5e3" -> 100); 0
+// for an integer literal, which is exact.
+double last_digit_unit(const std::map<std::string, std::string>& texts, const std::string& path) {
+  const auto it = texts.find(path);
+  if (it == texts.end()) return 0;
+  const std::string& text = it->second;
+  const auto e = text.find_first_of("eE");
+  const std::string mantissa = text.substr(0, e);
+  const auto dot = mantissa.find('.');
+  const int decimals = dot == std::string::npos ? 0 : static_cast<int>(mantissa.size() - dot - 1);
+  const int exponent = e == std::string::npos ? 0 : std::atoi(text.c_str() + e + 1);
+  return std::pow(10.0, exponent - decimals);
+}
 
 // Walks a JSON document and reports the first problem with the path of the offending key.
 class Reader {
@@ -78,6 +148,23 @@ Branch parse_branch(const Reader& reader, const json& segment, const std::string
   reader.fail(path + ".branch", "expected \"none\", \"lower\" or \"upper\", got \"" + text + "\"");
 }
 
+// eq:ZRT holds p_Z + 5 q_Z = n_Z for every parameter (eq:f_ZX: p_Z = n_Z + 5 b_Z, q_Z = -b_Z).
+// A printed constant may be off by one unit of its last digit (a rounding of a rounded value:
+// the paper's (30 deg, 2/3) D pair misses by 0.0004 with four decimals), so the sum may miss
+// n_Z by unit(p) + 5 unit(q), plus round-off; integers count as exact.
+void check_exponents(const Reader& reader, const Segment& segment, const ParamVector& n, const std::string& path,
+                     const std::map<std::string, std::string>& texts) {
+  for (Param param : all_params) {
+    const std::string name(param_name(param));
+    const double p = segment.exponents(index(param), 0), q = segment.exponents(index(param), 1);
+    const double allowed = last_digit_unit(texts, path + ".p." + name) + 5 * last_digit_unit(texts, path + ".q." + name) + 1e-12;
+    if (!(std::abs(p + 5 * q - n[index(param)]) <= allowed))
+      reader.fail(path, "p + 5 q = " + format_significant(p + 5 * q, 6) + " for " + name + ", not n = " + format_number(n[index(param)]) +
+                            " as eq:ZRT requires (to " + format_significant(allowed, 2) + ", what the printed digits allow); "
+                            "correct p or q of " + name);
+  }
+}
+
 Segment parse_segment(const Reader& reader, const json& object, const std::string& path) {
   Segment segment{};
   segment.X_min = reader.number(object, path, "X_min");
@@ -103,15 +190,19 @@ void check_overlaps(const Reader& reader, const TableBlock& block, const std::st
     }
 }
 
-TableBlock parse_block(const Reader& reader, const json& object, const std::string& path) {
+TableBlock parse_block(const Reader& reader, const json& object, const std::string& path, const ParamVector& n,
+                       const std::map<std::string, std::string>& texts) {
   TableBlock block{};
   block.theta_i_deg = reader.positive(object, path, "theta_i_deg");
   block.F = reader.positive(object, path, "F");
   block.Z0 = reader.per_param(object, path, "Z0", true);
   if (object.contains("branch_switch_X")) block.branch_switch_X = reader.number(object, path, "branch_switch_X");
   const json& segments = reader.array(object, path, "segments");
-  for (std::size_t i = 0; i < segments.size(); ++i)
-    block.segments.push_back(parse_segment(reader, segments[i], path + ".segments[" + std::to_string(i) + "]"));
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const std::string here = path + ".segments[" + std::to_string(i) + "]";
+    block.segments.push_back(parse_segment(reader, segments[i], here));
+    check_exponents(reader, block.segments.back(), n, here, texts);
+  }
   std::stable_sort(block.segments.begin(), block.segments.end(),
                    [](const Segment& a, const Segment& b) { return a.X_min < b.X_min; });
   check_overlaps(reader, block, path);
@@ -168,11 +259,13 @@ ScalingTable parse_scaling_table(std::string_view json_text, const std::string& 
   } catch (const json::exception& e) {  // parse errors, and numbers beyond double range
     throw Error(ErrorKind::data_file, origin + ": not valid JSON (" + std::string(e.what()) + ")");
   }
+  NumberTexts numbers;
+  json::sax_parse(json_text, &numbers);
   const Reader reader(origin);
   ScalingTable table{};
   table.origin = origin;
   if (document.is_object()) {
-    table.name = document.value("name", "");
+    if (document.contains("name") && document["name"].is_string()) table.name = document["name"].get<std::string>();
     if (document.contains("provenance")) table.provenance = document["provenance"];
   }
   table.R0 = reader.positive(document, "", "R0");
@@ -184,8 +277,14 @@ ScalingTable parse_scaling_table(std::string_view json_text, const std::string& 
                      reader.positive(material, "reference_material", "g")};
   table.n = reader.per_param(document, "", "n", true);
   const json& blocks = reader.array(document, "", "blocks");
-  for (std::size_t i = 0; i < blocks.size(); ++i)
-    table.blocks.push_back(parse_block(reader, blocks[i], "blocks[" + std::to_string(i) + "]"));
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const std::string path = "blocks[" + std::to_string(i) + "]";
+    const TableBlock block = parse_block(reader, blocks[i], path, table.n, numbers.texts);
+    if (table.find_block(block.theta_i_deg, block.F))
+      reader.fail(path, "a second block for theta_i = " + format_number(block.theta_i_deg) + " deg, F = " + format_fraction(block.F) +
+                            "; give each (theta_i, F) once");
+    table.blocks.push_back(block);
+  }
   return table;
 }
 

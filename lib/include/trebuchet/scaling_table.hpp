@@ -70,7 +70,9 @@ struct ScalingTable {
 
 /// Parses and validates a constants table. Throws Error(data_file) naming `origin` and the
 /// key: a missing key, a wrong type, a non-finite or non-positive number where one must be
-/// positive, an empty interval, or overlapping segments without distinct branch labels.
+/// positive, an empty interval, overlapping segments without distinct branch labels, two
+/// blocks for one (theta_i, F), or a segment whose p_Z + 5 q_Z misses n_Z (eq:ZRT) by more
+/// than one unit of the last printed digit of p_Z plus five of q_Z.
 ScalingTable parse_scaling_table(std::string_view json_text, const std::string& origin);
 
 /// A value per parameter as a JSON object with keys L1 ... mb.
