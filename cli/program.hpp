@@ -12,6 +12,17 @@
 
 namespace trebuchet {
 
+/// The first option of `app` or its parsed subcommands that was given an empty value
+/// (`--R ''`), or nullptr: an empty value is a mistake, never "not given".
+inline const CLI::Option* option_with_empty_value(const CLI::App& app) {
+  for (const CLI::Option* option : app.get_options())
+    for (const std::string& value : option->results())
+      if (value.empty()) return option;
+  for (const CLI::App* sub : app.get_subcommands())
+    if (const CLI::Option* option = option_with_empty_value(*sub)) return option;
+  return nullptr;
+}
+
 /// Parses argv into `app`, then returns run(); --help prints and exits 0. A parse error exits
 /// with the code of ErrorKind::usage, an Error with that of its kind; both are printed as
 /// "program: message".
@@ -25,6 +36,10 @@ int run_program(CLI::App& app, Program program, int argc, char** argv, Run run) 
     return exit_success;
   } catch (const CLI::ParseError& e) {
     std::cerr << name << ": " << e.what() << "; see " << name << " --help\n";
+    return exit_code(program, ErrorKind::usage);
+  }
+  if (const CLI::Option* empty = option_with_empty_value(app)) {
+    std::cerr << name << ": " << empty->get_name() << " was given an empty value; give a value after it, or leave it out\n";
     return exit_code(program, ErrorKind::usage);
   }
   try {

@@ -217,6 +217,7 @@ int run_optimize(const Options& o) {
 
 // Prints a table or sweep part; each X without an optimum is named on stderr and gives exit 3.
 int print_derived(const nlohmann::ordered_json& json, const std::vector<double>& failed) {
+  require_finite_json(json, "the table");
   std::cout << json.dump(2) << "\n";
   for (double X : failed) std::cerr << "trebuchet-verify: no optimum at X = " << format_number(X) << "; its reason is in the output, the fit used the other points\n";
   return failed.empty() ? exit_success : exit_code(Program::verify, ErrorKind::numerical);

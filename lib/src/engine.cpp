@@ -7,7 +7,10 @@
 #include "trebuchet/units.hpp"
 
 namespace trebuchet {
-std::string engine_key_name(const std::string& where, const std::string& key) { return where.empty() ? "--" + key : where + "." + key; }
+std::string engine_key_name(const std::string& where, const std::string& key) {
+  if (where.empty()) return key == "theta_i_deg" ? "--theta" : "--" + key;  // the flag is the short name
+  return where + "." + key;
+}
 
 
 ScaledDesign scaled_design(const Engine& engine) {  // eq:Design
@@ -38,7 +41,7 @@ void check_engine(const Engine& e, const std::string& where) {
                                              " must be positive");
   };
   if (!(e.theta_i_deg > 0 && e.theta_i_deg < 90))
-    throw Error(ErrorKind::bad_number, engine_key_name(where, where.empty() ? "theta" : "theta_i_deg") + " = " + format_significant(e.theta_i_deg, 6) +
+    throw Error(ErrorKind::bad_number, engine_key_name(where, "theta_i_deg") + " = " + format_significant(e.theta_i_deg, 6) +
                                            ": the initial beam angle must lie between 0 and 90 degrees");
   positive(e.L1, "L1", "long beam section");
   positive(e.L2, "L2", "short beam section");

@@ -111,6 +111,9 @@ EngineRecord read_engine(const nlohmann::json& object, const std::string& where)
   if (const auto L3 = read_value(object, "L3", UnitDimension::length, where)) {
     e.L3 = *L3;
   } else if (const auto F = read_value(object, "F", UnitDimension::dimensionless, where)) {
+    if (!(*F > 0))
+      throw Error(ErrorKind::bad_number, engine_key_name(where, "F") + " = " + format_significant(*F, 6) +
+                                             ": the counterweight arm fraction (L2 + L3)/H must be positive; the paper's are 1, 2/3 and 1/2");
     e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, *F);
     if (e.theta_i_deg > 0 && e.theta_i_deg < 90 && e.L1 > 0 && e.L2 > 0 && *F > 0 && !(e.L3 > 0))
       throw Error(ErrorKind::bad_number, (where.empty() ? std::string("flags") : where) + ": with F = " + format_significant(*F, 4) +
@@ -193,6 +196,14 @@ nlohmann::ordered_json verification_json(const Verification& v, const std::optio
     out["pass"] = check->pass;
   }
   return out;
+}
+
+void require_finite_json(const nlohmann::ordered_json& json, const std::string& what) {
+  if (json.is_number_float() && !std::isfinite(json.get<double>()))
+    throw Error(ErrorKind::data_file, what + " holds a number that is not finite; nothing was written");
+  if (json.is_structured())
+    for (auto it = json.begin(); it != json.end(); ++it)
+      require_finite_json(*it, what + (json.is_object() ? "." + it.key() : "[" + std::to_string(std::distance(json.begin(), it)) + "]"));
 }
 
 nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s) {

@@ -18,7 +18,9 @@
 namespace trebuchet {
 
 std::vector<double> sweep_grid(const SweepSpec& spec) {
-  if (!(spec.X_step > 0) || !std::isfinite(spec.X_step))
+  if (!std::isfinite(spec.X_from) || !std::isfinite(spec.X_to) || !std::isfinite(spec.X_step))
+    throw Error(ErrorKind::usage, "the X grid needs finite numbers from:to:step; e.g. -0.55:0.55:0.05");
+  if (!(spec.X_step > 0))
     throw Error(ErrorKind::usage, "the X step must be positive, got " + format_number(spec.X_step) + "; e.g. -0.55:0.55:0.05");
   if (!(spec.X_from <= spec.X_to) || !std::isfinite(spec.X_from) || !std::isfinite(spec.X_to))
     throw Error(ErrorKind::usage, "the X interval [" + format_number(spec.X_from) + ", " + format_number(spec.X_to) +
@@ -30,8 +32,8 @@ std::vector<double> sweep_grid(const SweepSpec& spec) {
   const double last_multiple = std::floor(spec.X_to / spec.X_step + 1e-9);
   if (!(last_multiple - first_multiple < max_grid_points))
     throw Error(ErrorKind::usage, "the X grid from " + format_number(spec.X_from) + " to " + format_number(spec.X_to) + " in steps of " +
-                                      format_number(spec.X_step) + " has " + format_significant(last_multiple - first_multiple + 1, 3) +
-                                      " points, more than " + std::to_string(max_grid_points) + "; use a larger step or a shorter interval");
+                                      format_number(spec.X_step) + " has more than " + std::to_string(max_grid_points) +
+                                      " points; use a larger step or a shorter interval");
   const long first = static_cast<long>(first_multiple), last = static_cast<long>(last_multiple);
   std::vector<double> grid;
   // Rounded to 1e-12 so that i * step prints as the user wrote it (-0.3, not -0.30000000000000004).

@@ -68,6 +68,10 @@ CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, d
 /// Throws Error(numerical) if a number is not finite.
 nlohmann::ordered_json verification_json(const Verification& v, const std::optional<CapacityCheck>& check = std::nullopt);
 
+/// Throws Error(data_file) naming `what` and the JSON path if `json` holds a number that is not
+/// finite: JSON has no inf or nan, and nlohmann would write null in their place.
+void require_finite_json(const nlohmann::ordered_json& json, const std::string& what);
+
 /// An optimum: the engine's keys, start, simulations, iterations, wall_time_s (the whole
 /// search's, given by the caller) and the verification's keys of its shot.
 nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s);
