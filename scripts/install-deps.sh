@@ -11,6 +11,7 @@ packages=(
   catch2            # Catch2 2.13 with CTest discovery
   libcli11-dev
   gnuplot-nox       # charts, without X11
+  clang-14 libclang-rt-14-dev  # libFuzzer for the fuzz targets of tests/fuzz
 )
 
 missing=()

@@ -1,0 +1,27 @@
+// Fuzz target: the calculator's CSV batch reader with the built-in table. Every row is a design
+// or a named error; a design the calculator returns must write as a row of finite numbers (a
+// throw there is a defect, not an input error); the batch itself may only end in an Error.
+#include <cstdlib>
+#include <sstream>
+#include <string>
+
+#include "trebuchet/batch.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/schema.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
+  std::istringstream input(std::string(reinterpret_cast<const char*>(data), size));
+  try {
+    trebuchet::run_batch(input, trebuchet::builtin_scaling_table(), trebuchet::DesignRequest{},
+                         [](int, const trebuchet::OptimalEngine* design, const trebuchet::Error*) {
+                           if (!design) return;
+                           try {
+                             trebuchet::design_csv_row(*design);
+                           } catch (const trebuchet::Error&) {
+                             std::abort();
+                           }
+                         });
+  } catch (const trebuchet::Error&) {
+  }
+  return 0;
+}

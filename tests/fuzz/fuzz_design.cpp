@@ -1,0 +1,39 @@
+// Fuzz target: the JSON design reader, as the verifier reads a file: parse_json, then
+// read_engine on the object or on each member of an array. A design read must be finite and
+// must write and read back as itself.
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include "trebuchet/error.hpp"
+#include "trebuchet/schema.hpp"
+#include "trebuchet/text_input.hpp"
+
+namespace {
+
+void read_one(const nlohmann::json& object, const std::string& where) {
+  try {
+    const trebuchet::EngineRecord record = trebuchet::read_engine(object, where);
+    nlohmann::ordered_json written;
+    trebuchet::write_engine(written, record.engine);
+    const trebuchet::Engine back = trebuchet::read_engine(nlohmann::json::parse(written.dump()), where).engine;
+    if (back.L1 != record.engine.L1 || back.M != record.engine.M || back.L3 != record.engine.L3) std::abort();
+  } catch (const trebuchet::Error&) {
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  try {
+    const nlohmann::json input = trebuchet::parse_json(text, "fuzz", "a design");
+    if (input.is_array()) {
+      for (std::size_t i = 0; i < input.size(); ++i) read_one(input[i], "design[" + std::to_string(i) + "]");
+    } else {
+      read_one(input, "design");
+    }
+  } catch (const trebuchet::Error&) {
+  }
+  return 0;
+}

@@ -1,0 +1,35 @@
+// Fuzz target: the constants-table loader. A table that loads must serve a request: the
+// calculator gives a design or a named error, and a design it gives writes with finite numbers.
+#include <cstdlib>
+#include <optional>
+#include <string>
+
+#include "trebuchet/calculator.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/schema.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
+  try {
+    const trebuchet::ScalingTable table =
+        trebuchet::parse_scaling_table(std::string(reinterpret_cast<const char*>(data), size), "fuzz");
+    for (const trebuchet::TableBlock& block : table.blocks) {
+      trebuchet::DesignRequest request;
+      request.first = {trebuchet::Quantity::R, 150};
+      request.second = {trebuchet::Quantity::m, 50};
+      request.theta_i_deg = block.theta_i_deg, request.F = block.F, request.extrapolate = true;
+      std::optional<trebuchet::OptimalEngine> design;
+      try {
+        design = trebuchet::design_optimal_engine(table, request);
+      } catch (const trebuchet::Error&) {
+      }
+      if (!design) continue;
+      try {
+        trebuchet::design_json(*design);
+      } catch (const trebuchet::Error&) {
+        std::abort();
+      }
+    }
+  } catch (const trebuchet::Error&) {
+  }
+  return 0;
+}
