@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "oracle.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/schema.hpp"
@@ -22,12 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t siz
         design = trebuchet::design_optimal_engine(table, request);
       } catch (const trebuchet::Error&) {
       }
-      if (!design) continue;
-      try {
-        trebuchet::design_json(*design);
-      } catch (const trebuchet::Error&) {
-        std::abort();
-      }
+      if (design) require_writes([&] { trebuchet::design_json(*design); });
     }
   } catch (const trebuchet::Error&) {
   }
