@@ -199,3 +199,55 @@ TEST_CASE("loose integration is caught by the energy monitor", "[shot][physics]"
   loose.integrator.atol = 1e-3;
   CHECK_THROWS_WITH(verify_engine(alcala_ca(), loose), Catch::Contains("energy drift"));
 }
+
+// Issue 12: where the model stops holding before the release, the shot says when. The
+// counterweight hangs at most F l cos(theta_i) below the pivot, the base lies l cos(theta_i)
+// below it: with F > 1 it can pass below the base, with F <= 1 it cannot. At the start its
+// height above the base is cos(theta_i) + 1 + l cos(theta_i) (1 - F), negative for Ca at F = 1.5.
+TEST_CASE("a counterweight below the base is warned with its time, and only when F > 1 allows it", "[shot][physics]") {
+  auto onset = [](double F) {
+    Engine e = alcala_ca();
+    e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, F);
+    return simulate_shot(scaled_design(e), ReleaseCriterion{}, IntegratorSettings{});
+  };
+  const ShotResult hanging = onset(1.5), dipping = onset(1.2);
+  REQUIRE(hanging.counterweight_below_base);
+  CHECK(*hanging.counterweight_below_base == 0);
+  REQUIRE(dipping.counterweight_below_base);
+  CHECK(*dipping.counterweight_below_base > 0);
+  CHECK(*dipping.counterweight_below_base < dipping.release.t);
+  for (double F : {1.0, 2.0 / 3}) {
+    INFO("F = " << F);
+    CHECK(!onset(F).counterweight_below_base);
+    CHECK(!onset(F).slack_sling);
+    CHECK(!onset(F).tip_below_base);
+  }
+  const Verification v = verify_engine([] {
+    Engine e = alcala_ca();
+    e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, 1.2);
+    return e;
+  }(), ShotSettings{});
+  REQUIRE(v.warnings.size() == 1);
+  CHECK_THAT(v.warnings.front(), Catch::StartsWith("the counterweight passes below the engine's base at t = 0.7028 s"));
+}
+
+// A heavy projectile (2.5 % of M) on a sling longer than the beam, found in the random set of
+// docs/stability.md: the sling would push it before the release. The onset is the root of the
+// tension on the continuous solution, so the traced step ends change sign around it.
+TEST_CASE("a slack sling is warned at the time its tension changes sign", "[shot][physics]") {
+  Engine e;
+  e.theta_i_deg = 46.14, e.L1 = 8.1534, e.L2 = 2.7885, e.L3 = 1.41903, e.L4 = 10.1182, e.M = 54672.5, e.m = 1360.62, e.mb = 112.258;
+  std::vector<TracePoint> trace;
+  const ShotResult shot = simulate_shot(scaled_design(e), ReleaseCriterion{}, IntegratorSettings{}, &trace);
+  REQUIRE(shot.slack_sling);
+  CHECK(*shot.slack_sling < shot.release.t);
+  double last_before = 0, first_after = 0;
+  for (const TracePoint& p : trace) {
+    if (p.phase == Phase::released) break;
+    if (p.t <= *shot.slack_sling) last_before = p.snapshot.sling_tension;
+    else if (first_after == 0) first_after = p.snapshot.sling_tension;
+    if (p.t < *shot.slack_sling) CHECK(p.snapshot.sling_tension > -1e-9);  // taut until the onset
+  }
+  CHECK(last_before >= -1e-9);
+  CHECK(first_after < 0);
+}

@@ -123,6 +123,13 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
     sling_on_projectile = {e.mu * p_acc.x, e.mu * (p_acc.y + 1)};
   }
   out.sling_on_tip = {-sling_on_projectile.x, -sling_on_projectile.y};
+  // The sling runs from the projectile to the tip along (cos phi, sin phi): its tension is the
+  // pull on the projectile along it; a sling can pull but not push.
+  out.sling_tension = sling_on_projectile.x * cf + sling_on_projectile.y * sf;
+  // Heights above the engine's base, which lies l cos(theta_i) below the pivot (H = L1 cos theta_i).
+  const double base = -e.l * cos_theta_i_;
+  out.counterweight_height = ct - e.L * cp - base;
+  out.tip_height = -e.l * ct - base;
   // The tip moves along (cos th, sin th) as theta grows; the sling pulls against that.
   out.sling_perpendicular = -(out.sling_on_tip.x * ct + out.sling_on_tip.y * st);
 

@@ -76,6 +76,7 @@ std::string verification_table(const Verification& v, const std::optional<Capaci
       << "forces: F_S_perp = " << sig(v.FS_perp_mg, 4) << " mg, F_R = " << sig(v.FR_Mg, 4) << " Mg, dF_Rh = " << sig(v.dFRh_Mg, 4)
       << " Mg\n"
       << "energy drift: " << sig(v.energy_drift, 2) << " of Delta U\n";
+  for (const std::string& w : v.warnings) out << "warning: " << w << "\n";
   if (check) {
     out << "predicted: R = " << sig(check->predicted.R) << " m (" << (check->deviation_R >= 0 ? "+" : "") << sig(100 * check->deviation_R, 3)
         << " %), T = " << sig(check->predicted.T / 1e3) << " kJ (" << (check->deviation_T >= 0 ? "+" : "") << sig(100 * check->deviation_T, 3)

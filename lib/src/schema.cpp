@@ -189,6 +189,7 @@ nlohmann::ordered_json verification_json(const Verification& v, const std::optio
       throw Error(ErrorKind::numerical, std::string("the result ") + field.key + " is not finite; tighten --rtol");
     out[field.key] = field.value;
   }
+  out["warnings"] = v.warnings;
   if (check) {
     out["predicted"] = {{"R", check->predicted.R}, {"T", check->predicted.T}};
     out["deviation"] = {{"R", check->deviation_R}, {"T", check->deviation_T}};

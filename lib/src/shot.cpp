@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "gsl_errors.hpp"
 #include "ode.hpp"
@@ -17,6 +18,20 @@ namespace {
 // abandoned, before the step control loses accuracy at the singularity of eq:EOM_I_1.
 constexpr double abandon_trough_cos_phi = 2 * refuse_trough_cos_phi;
 
+// Where the model stops holding (issue 12): the sling pushes instead of pulling, or the
+// counterweight or the beam's tip passes below the engine's base. Each is a continuous function
+// of time, negative when the condition fails; the first time each turns negative is kept.
+constexpr int condition_count = 3;
+using Conditions = std::array<double, condition_count>;
+// A condition fails below -1e-9 (scaled: M g for the tension, L2 for heights), so that round-off
+// cannot raise it where it holds with equality: an F = 1 counterweight hanging straight down
+// touches the base's level.
+constexpr double condition_slack = 1e-9;
+Conditions conditions_of(const Snapshot& s) {
+  return {s.sling_tension + condition_slack, s.counterweight_height + condition_slack, s.tip_height + condition_slack};
+}
+using Onsets = std::array<std::optional<double>, condition_count>;
+
 // The samples of one phase at the integrator's step ends, with the running force extremes
 // refined on the continuous solution: where a force has a local maximum at a step end, the
 // true peak lies within the two neighbouring steps and is found there by Brent's method.
@@ -31,7 +46,8 @@ class PhaseRecord {
     ForceValues forces;
   };
 
-  PhaseRecord(PhaseIntegrator& integrator, ForceExtremes before) : integrator_(integrator), before_(before) {}
+  PhaseRecord(PhaseIntegrator& integrator, ForceExtremes before, Onsets& onsets)
+      : integrator_(integrator), before_(before), onsets_(onsets) {}
 
   void add(const StepEnd& end, const Snapshot& snap) {
     const ForceValues forces = force_values(snap);
@@ -39,6 +55,7 @@ class PhaseRecord {
     extremes.add(forces);
     samples_.push_back({end, forces, extremes});
     if (samples_.size() >= 3) refine_peaks();
+    record_onsets(conditions_of(snap));
   }
 
   const std::vector<Sample>& samples() const { return samples_; }
@@ -73,8 +90,24 @@ class PhaseRecord {
     return static_cast<std::size_t>(after - samples_.begin()) - 1;
   }
 
-  ForceValues forces_at(double time) const {
-    return force_values(integrator_.dynamics().snapshot(integrator_.phase(), integrator_.state(y_at(time))));
+  Snapshot snapshot_at(double time) const { return integrator_.dynamics().snapshot(integrator_.phase(), integrator_.state(y_at(time))); }
+
+  ForceValues forces_at(double time) const { return force_values(snapshot_at(time)); }
+
+  // A condition that turns negative between the last two samples fails at the root of its
+  // value on the interpolant between them; one negative at the first sample fails there.
+  void record_onsets(const Conditions& now) {
+    for (int k = 0; k < condition_count; ++k) {
+      if (onsets_[k] || !(now[k] < 0)) continue;
+      const double t = samples_.back().t;
+      if (samples_.size() == 1 || !(previous_[k] >= 0)) {
+        onsets_[k] = t;
+      } else {
+        const double t0 = samples_[samples_.size() - 2].t;
+        onsets_[k] = find_root([&](double time) { return conditions_of(snapshot_at(time))[k]; }, t0, t, 1e-12, 0);
+      }
+    }
+    previous_ = now;
   }
 
   // A force peaking at the middle one of the last three samples peaks between the outer two.
@@ -108,6 +141,8 @@ class PhaseRecord {
 
   PhaseIntegrator& integrator_;
   ForceExtremes before_;
+  Onsets& onsets_;
+  Conditions previous_{};
   std::vector<Sample> samples_;
   std::vector<Peak> peaks_;
 };
@@ -187,7 +222,8 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
 
   // Phase I: from rest (psi_i = phi_i = 0, section 2) until the trough's normal force vanishes.
   PhaseIntegrator trough(dynamics, Phase::trough, settings);
-  PhaseRecord phase1(trough, ForceExtremes{});
+  Onsets onsets;
+  PhaseRecord phase1(trough, ForceExtremes{}, onsets);
   OdeVector y = {dynamics.theta_i(), 0, 0, 0, 0, 0};
   double t = 0, h = 1e-3;
   Snapshot snap = dynamics.snapshot(Phase::trough, trough.state(y));
@@ -224,7 +260,7 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   // Phase II from the located lift-off state.
   const State lift = trough.state(y);
   PhaseIntegrator lifted(dynamics, Phase::lifted, settings);
-  PhaseRecord phase2(lifted, phase1.samples().back().extremes);
+  PhaseRecord phase2(lifted, phase1.samples().back().extremes, onsets);
   y = {lift.theta, lift.psi, lift.phi, lift.theta_dot, lift.psi_dot, lift.phi_dot};
   phase2.add(lifted.step_end(t, y), dynamics.snapshot(Phase::lifted, lift));
   auto point_from = [&](double time, const OdeVector& state) {
@@ -269,6 +305,11 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   const double t_release = find_argmax([&](double time) { return point_at(time).objective; }, samples[lo].t,
                                        samples[best].t, samples[hi].t, slope_step, 1e-13);
   result.release = point_from(t_release, phase2.y_exact_at(t_release));
+  // Only what happens before the release invalidates the shot.
+  auto before_release = [&](const std::optional<double>& t) { return t && *t <= t_release ? t : std::nullopt; };
+  result.slack_sling = before_release(onsets[0]);
+  result.counterweight_below_base = before_release(onsets[1]);
+  result.tip_below_base = before_release(onsets[2]);
   if (trace) {
     record_trace(trace, lifted, samples, t_release);
     trace->push_back({Phase::lifted, t_release, result.release.state, dynamics.snapshot(Phase::lifted, result.release.state)});

@@ -38,6 +38,13 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   out.FR_Mg = r.extremes.max[pivot_reaction];
   out.dFRh_Mg = r.extremes.max[pivot_horizontal] + r.extremes.max[pivot_horizontal_negated];
   out.energy_drift = shot.energy_drift;
+  auto warn = [&](const std::optional<double>& t, const std::string& what) {
+    if (t) out.warnings.push_back(what + " at t = " + format_significant(*t * time_unit, 4) + " s, before the release at " +
+                                  format_significant(out.t_release, 4) + " s: the model no longer holds there, and the figures are not physical");
+  };
+  warn(shot.slack_sling, "the sling goes slack (it would push the projectile)");
+  warn(shot.counterweight_below_base, "the counterweight passes below the engine's base");
+  warn(shot.tip_below_base, "the beam's tip passes below the engine's base");
   return out;
 }
 

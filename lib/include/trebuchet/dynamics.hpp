@@ -38,6 +38,9 @@ struct Snapshot {
   Vec2 sling_on_tip;     ///< force of the sling on the beam tip
   double sling_perpendicular = 0;  ///< F_S_perp: component of the sling's pull on the tip against the beam's turn
   double normal_force = 0;         ///< trough on projectile (phase I; 0 after)
+  double sling_tension = 0;        ///< pull of the sling on the projectile along it (< 0: it would push, the sling is slack)
+  double counterweight_height = 0; ///< of the counterweight above the engine's base (< 0: below it)
+  double tip_height = 0;           ///< of the beam's tip above the engine's base (< 0: below it)
   double energy = 0;               ///< kinetic + potential, scaled; conserved
 };
 

@@ -3,6 +3,7 @@
 // of the quality function over phase II (section 5). Everything here is scaled (dynamics.hpp).
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "trebuchet/design.hpp"
@@ -34,6 +35,10 @@ struct ShotResult {
   ReleasePoint release;
   double energy_drift = 0;      ///< max |E(t) - E(0)| / Delta U over phases I and II
   long steps = 0;               ///< accepted steps, both phases
+  // Where the model stops holding before the release, the scaled time it starts; none when it holds.
+  std::optional<double> slack_sling;               ///< the sling would push the projectile (tension < 0)
+  std::optional<double> counterweight_below_base;  ///< the counterweight passes below the engine's base
+  std::optional<double> tip_below_base;            ///< the beam's tip passes below the engine's base
 };
 
 /// One moment of the motion for a time series (--series), scaled.

@@ -2,6 +2,7 @@
 // turned back into metres, joules and newtons with L2, M and the engine's g (section 3).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "trebuchet/capacity.hpp"
@@ -33,6 +34,9 @@ struct Verification {
   double FR_Mg = 0;        ///< largest |pivot reaction| / (M g), scaled
   double dFRh_Mg = 0;      ///< largest minus smallest horizontal pivot reaction / (M g), scaled
   double energy_drift = 0; ///< max |E(t) - E(0)| / Delta U over phases I and II, scaled
+  /// Where the model stops holding before the release (a slack sling, the counterweight or the
+  /// beam's tip below the base), each with its time: the figures are then not physical.
+  std::vector<std::string> warnings;
 };
 
 /// The SI figures of a shot of `engine` (of scaled design scaled_design(engine)). Throws
