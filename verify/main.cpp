@@ -154,13 +154,11 @@ int run_shot(const Options& o, bool fit) {
   if (is_array && (!o.R.empty() || !o.T.empty()))
     throw Error(ErrorKind::usage, "--R and --T give the capacity of one design, but " + source_name(o.input) + " holds " +
                                       std::to_string(input.size()) + "; give \"R\" and \"T\" in each design instead");
-  if (!is_array) {
-    if (!o.R.empty()) input["R"] = o.R;
-    if (!o.T.empty()) input["T"] = o.T;
-  }
   if (is_array && !o.series.empty() && input.size() != 1)
     throw Error(ErrorKind::usage, "--series writes the motion of one design; the input holds " + std::to_string(input.size()));
   if (!is_array) {
+    if (!o.R.empty()) input["R"] = o.R;
+    if (!o.T.empty()) input["T"] = o.T;
     const Outcome out = verify_one(input, o.input.empty() ? "" : "design", o, settings, tolerance, fit);
     std::cout << (o.format == "json" ? out.json.dump(2) + "\n" : out.table);
     return out.code;

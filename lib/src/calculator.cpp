@@ -177,20 +177,18 @@ std::optional<std::pair<double, double>> R_range_for(const ScalingTable& table, 
                                                      const Given& gj, const SizeFactors& scaling) {
   const Given& other = gi.quantity == Quantity::R ? gj : gi;
   if ((gi.quantity == Quantity::R) == (gj.quantity == Quantity::R)) return std::nullopt;
+  // X is log-linear in the capacity too (eq:XY_RT): with the other given, eq:ZiZj_RT fixes lr.
+  const LogLaw X_law{0, {capacity_coordinates(1, 0).X, capacity_coordinates(0, 1).X}};
+  const double log_other = std::log(other.value / material_factor(other.quantity, scaling));
   double lo = HUGE_VAL, hi = 0;
   for (const Segment& segment : block.segments) {
     const auto law = log_law(table, block, segment, other.quantity);
     if (!law) return std::nullopt;
-    for (double X : {segment.X_min, segment.X_max}) {
-      // Unit steps in lr and lt move X by these (eq:XY_RT is linear).
-      const double dX_dr = capacity_coordinates(1, 0).X, dX_dt = capacity_coordinates(0, 1).X;
-      Eigen::Matrix2d A;
-      A << law->pq, dX_dr, dX_dt;
-      if (std::abs(A.determinant()) < 1e-12) continue;
-      const Eigen::Vector2d x = A.inverse() * Eigen::Vector2d(std::log(other.value / material_factor(other.quantity, scaling)) - law->c, X);
-      const double R = table.R0 * std::exp(x(0));
-      lo = std::min(lo, R), hi = std::max(hi, R);
-    }
+    for (double X : {segment.X_min, segment.X_max})
+      if (const auto at_end = invert_pair(segment, *law, log_other, X_law, X)) {
+        const double R = table.R0 * std::exp(at_end->lr);
+        lo = std::min(lo, R), hi = std::max(hi, R);
+      }
   }
   if (!(hi > 0) || !std::isfinite(lo) || !std::isfinite(hi)) return std::nullopt;
   return std::pair{lo, hi};

@@ -115,7 +115,7 @@ EngineRecord read_engine(const nlohmann::json& object, const std::string& where)
       throw Error(ErrorKind::bad_number, engine_key_name(where, "F") + " = " + format_significant(*F, 6) +
                                              ": the counterweight arm fraction (L2 + L3)/H must be positive; the paper's are 1, 2/3 and 1/2");
     e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, *F);
-    if (e.theta_i_deg > 0 && e.theta_i_deg < 90 && e.L1 > 0 && e.L2 > 0 && *F > 0 && !(e.L3 > 0))
+    if (e.theta_i_deg > 0 && e.theta_i_deg < 90 && e.L1 > 0 && e.L2 > 0 && !(e.L3 > 0))
       throw Error(ErrorKind::bad_number, (where.empty() ? std::string("flags") : where) + ": with F = " + format_significant(*F, 4) +
                                              " and theta_i = " + format_significant(e.theta_i_deg, 4) + " deg, L2 + L3 = F L1 cos(theta_i) = " +
                                              format_significant(*F * pivot_height(e), 4) + " m is not longer than L2 = " + format_significant(e.L2, 4) +
