@@ -79,20 +79,30 @@ const gsl_odeiv2_step_type* stepper_type(Stepper stepper) {
 
 OdeVector hermite(const StepEnd& a, const StepEnd& b, double time, std::size_t n) {
   const double h = b.t - a.t, s = (time - a.t) / h;
-  const double s2 = s * s, s3 = s2 * s, s4 = s3 * s, s5 = s4 * s;
-  const double h0 = 1 - 10 * s3 + 15 * s4 - 6 * s5, h1 = s - 6 * s3 + 8 * s4 - 3 * s5;
-  const double h2 = 0.5 * s2 - 1.5 * s3 + 1.5 * s4 - 0.5 * s5, h3 = 0.5 * s3 - s4 + 0.5 * s5;
-  const double h4 = -4 * s3 + 7 * s4 - 3 * s5, h5 = 10 * s3 - 15 * s4 + 6 * s5;
-  const double d0 = -30 * s2 + 60 * s3 - 30 * s4, d1 = 1 - 18 * s2 + 32 * s3 - 15 * s4;  // d/ds of h0, h1, ...
-  const double d2 = s - 4.5 * s2 + 6 * s3 - 2.5 * s4, d3 = 1.5 * s2 - 4 * s3 + 2.5 * s4;
-  const double d4 = -12 * s2 + 28 * s3 - 15 * s4, d5 = 30 * s2 - 60 * s3 + 30 * s4;
+  // The basis on [0, 1] for q, q', q'', q''' at 0 (p0..p3) and at 1 (r0..r3), and its derivative.
+  const double s2 = s * s, s3 = s2 * s, s4 = s3 * s;
+  const double p0 = 1 + s4 * (-35 + s * (84 + s * (-70 + 20 * s))), r0 = 1 - p0;
+  const double p1 = s * (1 + s3 * (-20 + s * (45 + s * (-36 + 10 * s))));
+  const double p2 = s2 * (0.5 + s2 * (-5 + s * (10 + s * (-7.5 + 2 * s))));
+  const double p3 = s3 * (1.0 / 6 + s * (-2.0 / 3 + s * (1 + s * (-2.0 / 3 + s / 6))));
+  const double r1 = s4 * (-15 + s * (39 + s * (-34 + 10 * s)));
+  const double r2 = s4 * (2.5 + s * (-7 + s * (6.5 - 2 * s)));
+  const double r3 = s4 * (-1.0 / 6 + s * (0.5 + s * (-0.5 + s / 6)));
+  const double dp0 = s3 * (-140 + s * (420 + s * (-420 + 140 * s))), dr0 = -dp0;
+  const double dp1 = 1 + s3 * (-80 + s * (225 + s * (-216 + 70 * s)));
+  const double dp2 = s * (1 + s2 * (-20 + s * (50 + s * (-45 + 14 * s))));
+  const double dp3 = s2 * (0.5 + s * (-8.0 / 3 + s * (5 + s * (-4 + 7 * s / 6))));
+  const double dr1 = s3 * (-60 + s * (195 + s * (-204 + 70 * s)));
+  const double dr2 = s3 * (10 + s * (-35 + s * (39 - 14 * s)));
+  const double dr3 = s3 * (-2.0 / 3 + s * (2.5 + s * (-3 + 7 * s / 6)));
   const std::size_t angles = n / 2;
+  const double h2 = h * h, h3 = h2 * h;
   OdeVector y{};
   for (std::size_t i = 0; i < angles; ++i) {
-    const double q0 = a.y[i], v0 = a.y[angles + i], acc0 = a.dy[angles + i];
-    const double q1 = b.y[i], v1 = b.y[angles + i], acc1 = b.dy[angles + i];
-    y[i] = h0 * q0 + h * h1 * v0 + h * h * h2 * acc0 + h * h * h3 * acc1 + h * h4 * v1 + h5 * q1;
-    y[angles + i] = (d0 * q0 + h * d1 * v0 + h * h * d2 * acc0 + h * h * d3 * acc1 + h * d4 * v1 + d5 * q1) / h;
+    const double q0 = a.y[i], v0 = a.y[angles + i], acc0 = a.dy[angles + i], j0 = a.jerk[i];
+    const double q1 = b.y[i], v1 = b.y[angles + i], acc1 = b.dy[angles + i], j1 = b.jerk[i];
+    y[i] = p0 * q0 + r0 * q1 + h * (p1 * v0 + r1 * v1) + h2 * (p2 * acc0 + r2 * acc1) + h3 * (p3 * j0 + r3 * j1);
+    y[angles + i] = (dp0 * q0 + dr0 * q1) / h + dp1 * v0 + dr1 * v1 + h * (dp2 * acc0 + dr2 * acc1) + h2 * (dp3 * j0 + dr3 * j1);
   }
   return y;
 }
@@ -120,6 +130,20 @@ OdeVector PhaseIntegrator::at(double t0, const OdeVector& y0, double t1) {
   if (gsl_odeiv2_driver_apply(evaluating_.get(), &t, t1, y.data()) != GSL_SUCCESS)
     throw Error(ErrorKind::numerical, "integrator failure while evaluating between steps; tighten --rtol");
   return y;
+}
+
+// The jerk by a central difference along the flow, y +- delta y': truncation delta^2 q^(5)/6 and
+// round-off 1e-16/delta, both ~1e-10 of q''' at delta = 1e-4 (scaled time); the interpolant
+// multiplies it by h^3/100 or less.
+StepEnd PhaseIntegrator::step_end(double t, const OdeVector& y) {
+  constexpr double delta = 1e-4;
+  StepEnd end{t, y, derivative(y), {}};
+  OdeVector ahead = y, behind = y;
+  for (std::size_t i = 0; i < dimension(); ++i) ahead[i] += delta * end.dy[i], behind[i] -= delta * end.dy[i];
+  const OdeVector rate_ahead = derivative(ahead), rate_behind = derivative(behind);
+  const std::size_t angles = dimension() / 2;
+  for (std::size_t i = 0; i < angles; ++i) end.jerk[i] = (rate_ahead[angles + i] - rate_behind[angles + i]) / (2 * delta);
+  return end;
 }
 
 State PhaseIntegrator::state(const OdeVector& y) const {

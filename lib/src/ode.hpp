@@ -17,15 +17,17 @@ namespace trebuchet {
 // Fixed size: no allocation per use.
 using OdeVector = std::array<double, 6>;
 
-// A step end: time, state y = (angles q, angular speeds q') and y' = (q', q'').
+// A step end: time, state y = (angles q, angular speeds q'), y' = (q', q'') and the jerk q'''.
 struct StepEnd {
   double t;
   OdeVector y, dy;
+  std::array<double, 3> jerk;
 };
 
-// Between two step ends, each angle follows the quintic Hermite interpolant that matches q, q'
-// and q'' at both ends, and each angular speed is that interpolant's derivative. Errors are
-// O(h^6) in q and O(h^5) in q'. `n` is the dimension of the phase (4 or 6).
+// Between two step ends, each angle follows the septic Hermite interpolant that matches q, q',
+// q'' and q''' at both ends, and each angular speed is that interpolant's derivative. Errors are
+// O(h^8) in q and O(h^7) in q', the order of the rk8pd steps themselves. `n` is the dimension of
+// the phase (4 or 6).
 OdeVector hermite(const StepEnd& a, const StepEnd& b, double time, std::size_t n);
 
 // Phase I is singular where the sling stands vertical (cos phi = 0 in eq:EOM_I_1). Trial
@@ -55,8 +57,8 @@ class PhaseIntegrator {
   // y' = f(y): the angular speeds and accelerations at a step end, for the interpolant.
   OdeVector derivative(const OdeVector& y);
 
-  // A step end at (t, y) with its derivative.
-  StepEnd step_end(double t, const OdeVector& y) { return {t, y, derivative(y)}; }
+  // A step end at (t, y) with its derivative and jerk.
+  StepEnd step_end(double t, const OdeVector& y);
 
   struct Context {
     const Dynamics* dynamics;

@@ -35,6 +35,9 @@ struct ShotResult {
   ReleasePoint release;
   double energy_drift = 0;      ///< max |E(t) - E(0)| / Delta U over phases I and II
   long steps = 0;               ///< accepted steps, both phases
+  /// The release sits at the instant this running extreme of eq:F starts to grow (a kink of
+  /// the objective); none when it sits at a smooth maximum.
+  std::optional<ForceIndex> release_at_growth_of;
   // Where the model stops holding before the release, the scaled time it starts; none when it holds.
   std::optional<double> slack_sling;               ///< the sling would push the projectile (tension < 0)
   std::optional<double> counterweight_below_base;  ///< the counterweight passes below the engine's base
