@@ -19,6 +19,7 @@
 #include "trebuchet/format.hpp"
 #include "trebuchet/names.hpp"
 #include "trebuchet/optimizer.hpp"
+#include "trebuchet/parallel.hpp"
 #include "trebuchet/report.hpp"
 #include "trebuchet/request.hpp"
 #include "trebuchet/schema.hpp"
@@ -128,6 +129,7 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
 // shot and fit: the design from a file, stdin or flags; an array is computed design by design.
 int run_shot(const Options& o, bool fit) {
   check_format(o);
+  if (o.threads < 1) throw Error(ErrorKind::usage, "--threads: " + std::to_string(o.threads) + " must be 1 or more");
   const ShotSettings settings = shot_settings(o);
   const double tolerance = parse_positive(o.tolerance, UnitDimension::dimensionless, "--tol");
   const bool has_engine_flags = !o.theta.empty() || std::any_of(o.engine_flags.begin(), o.engine_flags.end(),
@@ -163,21 +165,31 @@ int run_shot(const Options& o, bool fit) {
     std::cout << (o.format == "json" ? out.json.dump(2) + "\n" : out.table);
     return out.code;
   }
-  // An array: every design is tried; a failing one is reported in its place, the others kept.
-  nlohmann::ordered_json results = nlohmann::ordered_json::array();
-  int code = exit_success, index = 0;
-  for (const auto& object : input) {
-    const std::string where = "design[" + std::to_string(index++) + "]";
+  // An array: every design is tried, on every core; a failing one is reported in its place, the
+  // others kept. Each design's outcome goes to its own slot and all are printed in input order,
+  // so the output is the same on any number of threads.
+  std::vector<Outcome> outcomes(input.size());
+  std::vector<std::optional<Error>> errors(input.size());
+  auto where = [](std::size_t i) { return "design[" + std::to_string(i) + "]"; };
+  for_each_index(input.size(), o.threads, [&](std::size_t i) {
     try {
-      const Outcome out = verify_one(object, where, o, settings, tolerance, fit);
-      results.push_back(out.json);
-      if (o.format == "table") std::cout << where << "\n" << out.table << "\n";
-      code = std::max(code, out.code);
+      outcomes[i] = verify_one(input[i], where(i), o, settings, tolerance, fit);
     } catch (const Error& e) {
-      const int error_code = exit_code(Program::verify, e.kind());
-      std::cerr << "trebuchet-verify: " << (std::string(e.what()).rfind(where, 0) == 0 ? "" : where + ": ") << e.what() << "\n";
-      results.push_back({{"error", e.what()}, {"exit_code", error_code}});
+      errors[i] = e;
+    }
+  });
+  nlohmann::ordered_json results = nlohmann::ordered_json::array();
+  int code = exit_success;
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    if (const auto& e = errors[i]) {
+      const int error_code = exit_code(Program::verify, e->kind());
+      std::cerr << "trebuchet-verify: " << (std::string(e->what()).rfind(where(i), 0) == 0 ? "" : where(i) + ": ") << e->what() << "\n";
+      results.push_back({{"error", e->what()}, {"exit_code", error_code}});
       code = std::max(code, error_code);
+    } else {
+      results.push_back(outcomes[i].json);
+      if (o.format == "table") std::cout << where(i) << "\n" << outcomes[i].table << "\n";
+      code = std::max(code, outcomes[i].code);
     }
   }
   if (o.format == "json") std::cout << results.dump(2) << "\n";
@@ -254,7 +266,7 @@ int run_derive_table(const Options& o) {
     if (!p.error.empty()) failed.push_back(p.X);
   }
   std::cerr << "trebuchet-verify: " << part.points.size() << " X points, " << shots << " shots, " << format_significant(seconds, 3)
-            << " s on " << sweep_threads(o.threads, part.points.size()) << " threads\n";
+            << " s on " << thread_count(o.threads, part.points.size()) << " threads\n";
   if (!o.shard.empty()) return print_derived(sweep_part_json(part), failed);
   const DerivedTable table = derive_table({part});
   return print_derived(derived_table_json(table), failed_points(table));
@@ -284,6 +296,7 @@ void add_engine_options(CLI::App* app, Options& o) {
   app->add_option("--tol", o.tolerance, "relative tolerance on the predicted R and T")->capture_default_str();
   app->add_option("--target-level", o.target_level, "target height relative to the engine's base, e.g. -54m")->capture_default_str();
   app->add_option("--series", o.series, "write the time series of the shot (angles, forces, energy) to this CSV file");
+  app->add_option("--threads", o.threads, "threads for an array of designs (default: the cores); the output is the same on any number");
 }
 
 void add_release_options(CLI::App* app, Options& o) {
@@ -293,8 +306,8 @@ void add_release_options(CLI::App* app, Options& o) {
 
 void add_integrator_options(CLI::App* app, Options& o) {
   app->add_option("--stepper", o.stepper, "GSL odeiv2 stepper: " + stepper_names())->capture_default_str();
-  app->add_option("--rtol", o.rtol, "relative tolerance per step (default 1e-12)");
-  app->add_option("--atol", o.atol, "absolute tolerance per step, scaled units (default 1e-13)");
+  app->add_option("--rtol", o.rtol, "relative tolerance per step (default 1e-11)");
+  app->add_option("--atol", o.atol, "absolute tolerance per step, scaled units (default 1e-11)");
 }
 
 void add_format_option(CLI::App* app, Options& o) {

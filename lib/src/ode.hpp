@@ -57,8 +57,8 @@ class PhaseIntegrator {
   // y' = f(y): the angular speeds and accelerations at a step end, for the interpolant.
   OdeVector derivative(const OdeVector& y);
 
-  // A step end at (t, y) with its derivative and jerk.
-  StepEnd step_end(double t, const OdeVector& y);
+  // A step end at (t, y), with the accelerations of its snapshot, and the jerk.
+  StepEnd step_end(double t, const OdeVector& y, const Snapshot& snapshot);
 
   struct Context {
     const Dynamics* dynamics;

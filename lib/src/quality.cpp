@@ -6,7 +6,8 @@
 namespace trebuchet {
 
 ForceValues force_values(const Snapshot& s) {
-  return {s.sling_perpendicular, std::hypot(s.pivot_reaction.x, s.pivot_reaction.y), s.pivot_reaction.x, -s.pivot_reaction.x};
+  const Vec2& r = s.pivot_reaction;  // of order M g: no overflow to guard against, as hypot would
+  return {s.sling_perpendicular, std::sqrt(r.x * r.x + r.y * r.y), r.x, -r.x};
 }
 
 void ForceExtremes::add(const ForceValues& values) {
@@ -20,11 +21,11 @@ double efficiency(double tau_e, double energy_drop) { return tau_e / energy_drop
 double force_factor(const ForceExtremes& e, double mu) {
   const double sling = e.max[sling_perpendicular] / mu;  // F_S_perp / (m g)
   const double spread = e.max[pivot_horizontal] + e.max[pivot_horizontal_negated];  // Delta F_Rh / (M g)
-  return std::pow(sling * sling * e.max[pivot_reaction] * spread, 0.25);  // eq:F
+  return std::sqrt(std::sqrt(sling * sling * e.max[pivot_reaction] * spread));  // eq:F, a fourth root
 }
 
 double quality(double rho, double l, double mu, double eps, double force_factor, double n) {
-  return rho / l * mu * std::pow(eps, n) / force_factor;  // eq:Q, eq:Q_n
+  return rho / l * mu * (n == 1 ? eps : std::pow(eps, n)) / force_factor;  // eq:Q, eq:Q_n
 }
 
 }  // namespace trebuchet

@@ -32,6 +32,16 @@ Conditions conditions_of(const Snapshot& s) {
 }
 using Onsets = std::array<std::optional<double>, condition_count>;
 
+// The vertex of the parabola through three points with the middle one highest: where it
+// peaks, and its value; the middle point when they are not concave.
+Point parabola_vertex(Point a, Point b, Point c) {
+  const double d0 = (b.f - a.f) / (b.x - a.x), d1 = (c.f - b.f) / (c.x - b.x);
+  const double curvature = (d1 - d0) / (c.x - a.x);  // half the second derivative
+  if (!(curvature < 0)) return b;
+  const double slope_mid = d0 + curvature * (b.x - a.x);  // derivative at b
+  return {b.x - slope_mid / (2 * curvature), b.f - slope_mid * slope_mid / (4 * curvature)};
+}
+
 // The samples of one phase at the integrator's step ends, with the running force extremes
 // refined on the continuous solution: where a force has a local maximum at a step end, the
 // true peak lies within the two neighbouring steps and is found there by Brent's method.
@@ -47,7 +57,9 @@ class PhaseRecord {
   };
 
   PhaseRecord(PhaseIntegrator& integrator, ForceExtremes before, Onsets& onsets)
-      : integrator_(integrator), before_(before), onsets_(onsets) {}
+      : integrator_(integrator), before_(before), onsets_(onsets) {
+    samples_.reserve(128);  // a phase takes 20 to 70 steps at the defaults
+  }
 
   void add(const StepEnd& end, const Snapshot& snap) {
     const ForceValues forces = force_values(snap);
@@ -140,30 +152,24 @@ class PhaseRecord {
   // A force peaking at the middle one of the last three samples peaks between the outer two.
   // A peak that stays well below the running maximum before it cannot change any later
   // maximum and is skipped: the parabola through the three samples estimates it, and 1 %
-  // covers that estimate's error. Time tolerance 1e-7 (scaled): the peak value is quadratic in
-  // it, so it is exact to 1e-14.
+  // covers that estimate's error (1e-3 at worst on the random designs of tests/test_reference).
+  // The peak is the root of the force's slope, central difference with step 1e-6 (scaled time),
+  // found to 1e-8: its value is then exact to f'' 1e-16 / 2.
   void refine_peaks() {
     const std::size_t mid = samples_.size() - 2;
     const Sample &a = samples_[mid - 1], &b = samples_[mid], &c = samples_[mid + 1];
     for (int k = 0; k < force_count; ++k) {
       const double fa = a.forces[k], fb = b.forces[k], fc = c.forces[k];
       if (!(fb > fa && fb >= fc)) continue;
-      if (parabola_peak(a.t, fa, b.t, fb, c.t, fc) < 0.99 * a.extremes.max[k]) continue;
-      const double t_peak = find_maximum([&](double time) { return forces_at(time)[k]; }, a.t, b.t, c.t, 1e-7);
-      const Peak peak{t_peak, forces_at(t_peak)};
+      const Point estimate = parabola_vertex({a.t, fa}, {b.t, fb}, {c.t, fc});
+      if (estimate.f < 0.99 * a.extremes.max[k]) continue;
+      const double t_peak = peak_between([&](double time) { return forces_at(time)[k]; }, a.t, estimate.x, c.t, 1e-6, 1e-8);
+      Peak peak{t_peak, forces_at(t_peak)};
+      if (!(peak.forces[k] >= fb)) peak = {b.t, b.forces};  // the slope's root was no peak
       peaks_.push_back(peak);
       for (std::size_t s = mid - 1; s < samples_.size(); ++s)
         if (samples_[s].t >= t_peak) samples_[s].extremes.add(peak.forces);
     }
-  }
-
-  // The largest value of the parabola through three points with y1 >= y0, y2.
-  static double parabola_peak(double x0, double y0, double x1, double y1, double x2, double y2) {
-    const double d0 = (y1 - y0) / (x1 - x0), d1 = (y2 - y1) / (x2 - x1);
-    const double curvature = (d1 - d0) / (x2 - x0);  // half the second derivative
-    if (!(curvature < 0)) return y1;
-    const double slope_mid = d0 + curvature * (x1 - x0);  // derivative at x1
-    return y1 - slope_mid * slope_mid / (4 * curvature);
   }
 
   PhaseIntegrator& integrator_;
@@ -201,15 +207,17 @@ ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criter
 
 // The objective is smooth between the onsets of growth of the running extremes, where its slope
 // jumps. Each smooth piece is maximised, at the root of its slope when the maximum lies inside,
-// else at an end; the best of these candidates is the release. The slope is the four-point
+// else at an end; the best of these candidates is the release. `estimate` is where the maximum
+// probably lies (the vertex of the parabola through the samples). The slope is the four-point
 // central difference with step 1e-5 (scaled time): truncation O(step^4) moves the root by
 // ~1e-20, round-off by ~1e-11, relative; a maximum within two steps of an onset is taken at the
 // onset, at most Q'' (2e-5)^2/2 below it. Checked against the independent reference on 500
 // random designs (tests/test_reference.cpp).
 template <class Objective>
-std::pair<double, std::optional<ForceIndex>> release_time(const Objective& objective, double lo, double hi,
+std::pair<double, std::optional<ForceIndex>> release_time(const Objective& objective, double lo, double estimate, double hi,
                                                           const std::vector<PhaseRecord::Onset>& onsets) {
   constexpr double slope_step = 1e-5;
+  const double near = (hi - lo) / 20;
   std::vector<double> ends{lo};
   for (const auto& onset : onsets) ends.push_back(onset.t);
   ends.push_back(hi);
@@ -224,7 +232,13 @@ std::pair<double, std::optional<ForceIndex>> release_time(const Objective& objec
   for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
     const double a = ends[i] + 2 * slope_step, b = ends[i + 1] - 2 * slope_step;
     consider(ends[i + 1]);
-    if (a < b && slope(a) > 0 && slope(b) < 0) consider(find_root(slope, a, b, 1e-13, 0));
+    if (!(a < b)) continue;
+    // A root is a maximum when the slope falls through zero; a minimum loses to the ends. It is
+    // sought first near the estimate, when that lies on this piece.
+    std::optional<double> root;
+    if (estimate > a && estimate < b) root = root_between(slope, std::max(a, estimate - near), std::min(b, estimate + near), 1e-11, 0);
+    if (!root) root = root_between(slope, a, b, 1e-11, 0);
+    if (root) consider(*root);
   }
   std::optional<ForceIndex> at_onset;
   for (const auto& onset : onsets)
@@ -288,7 +302,7 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   double t = 0, h = 1e-3;
   Snapshot snap = dynamics.snapshot(Phase::trough, trough.state(y));
   energy0 = snap.energy;
-  phase1.add(trough.step_end(t, y), snap);
+  phase1.add(trough.step_end(t, y, snap), snap);
   while (true) {
     if (!trough.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase I; tighten --rtol or choose another --stepper");
     count_step("phase I");
@@ -299,17 +313,17 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
       // Lift-off inside this step: the root of the normal force on the interpolant, then the
       // state there integrated anew from the step start.
       const StepEnd& before = phase1.samples().back();
-      const StepEnd after = trough.step_end(t, y);
+      const StepEnd after = trough.step_end(t, y, snap);
       auto normal_at = [&](double time) { return dynamics.snapshot(Phase::trough, trough.state(hermite(before, after, time, 4))).normal_force; };
       result.t_liftoff = find_root(normal_at, before.t, t, 1e-13, 0);
       y = trough.at(before.t, before.y, result.t_liftoff);
       t = result.t_liftoff;
       snap = dynamics.snapshot(Phase::trough, trough.state(y));
-      phase1.add(trough.step_end(t, y), snap);
+      phase1.add(trough.step_end(t, y, snap), snap);
       track_energy(snap);
       break;
     }
-    phase1.add(trough.step_end(t, y), snap);
+    phase1.add(trough.step_end(t, y, snap), snap);
     track_energy(snap);
     if (y[0] >= M_PI || t >= settings.max_time)
       fail("the projectile never lifts off: the trough still carries it when the beam is upright; "
@@ -322,7 +336,8 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   PhaseIntegrator lifted(dynamics, Phase::lifted, settings);
   PhaseRecord phase2(lifted, phase1.samples().back().extremes, onsets);
   y = {lift.theta, lift.psi, lift.phi, lift.theta_dot, lift.psi_dot, lift.phi_dot};
-  phase2.add(lifted.step_end(t, y), dynamics.snapshot(Phase::lifted, lift));
+  const Snapshot lift_snapshot = dynamics.snapshot(Phase::lifted, lift);
+  phase2.add(lifted.step_end(t, y, lift_snapshot), lift_snapshot);
   auto point_from = [&](double time, const OdeVector& state) {
     const State s = lifted.state(state);
     return release_point(e, criterion, time, s, dynamics.snapshot(Phase::lifted, s), phase2.extremes_before(time));
@@ -338,7 +353,7 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
     snap = dynamics.snapshot(Phase::lifted, s);
     track_energy(snap);
     const double quality_here = release_point(e, criterion, t, s, snap, phase2.samples().back().extremes).objective;
-    phase2.add(lifted.step_end(t, y), snap);
+    phase2.add(lifted.step_end(t, y, snap), snap);
     if (quality_here > best_quality) {
       best_quality = quality_here;
       best = phase2.samples().size() - 1;
@@ -354,9 +369,11 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   // The maximum of the objective between the samples around the best one, on the interpolant;
   // the state there is then integrated anew from the step start.
   const auto& samples = phase2.samples();
-  const double lo = samples[best > 0 ? best - 1 : 0].t, hi = samples[std::min(best + 1, samples.size() - 1)].t;
-  const auto [t_release, onset] = release_time([&](double time) { return point_at(time).objective; }, lo, hi,
-                                               phase2.growth_onsets(lo, hi));
+  const std::size_t before = best > 0 ? best - 1 : 0, after = std::min(best + 1, samples.size() - 1);
+  const double lo = samples[before].t, hi = samples[after].t;
+  const auto objective = [&](double time) { return point_at(time).objective; };
+  const double estimate = parabola_vertex({lo, objective(lo)}, {samples[best].t, best_quality}, {hi, objective(hi)}).x;
+  const auto [t_release, onset] = release_time(objective, lo, estimate, hi, phase2.growth_onsets(lo, hi));
   result.release_at_growth_of = onset;
   result.release = point_from(t_release, phase2.y_exact_at(t_release));
   // Only what happens before the release invalidates the shot.

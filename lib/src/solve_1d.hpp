@@ -1,25 +1,28 @@
-// One-dimensional root finding and maximisation with GSL's Brent methods.
+// One-dimensional root finding with GSL's Brent method, and peaks as roots of a slope.
 #pragma once
 
 #include <functional>
+#include <optional>
 
 namespace trebuchet {
 
-/// A root of f in [lo, hi], where f(lo) and f(hi) must differ in sign (Error(numerical) if not);
-/// stops when the bracket is narrower than epsabs + epsrel |x| (gsl_root_test_interval).
+/// A point of a function of one variable.
+struct Point {
+  double x, f;
+};
+
+/// A root of f in [lo, hi], by Brent's method, when f(lo) and f(hi) differ in sign; stops when
+/// the bracket is narrower than epsabs + epsrel |x| (gsl_root_test_interval).
+std::optional<double> root_between(const std::function<double(double)>& f, double lo, double hi, double epsabs, double epsrel);
+
+/// As root_between, where a change of sign is certain: Error(numerical) if there is none.
 double find_root(const std::function<double(double)>& f, double lo, double hi, double epsabs, double epsrel);
 
-/// The maximum of f on [lo, hi] from an interior guess with f(guess) > f(lo), f(hi), by Brent's
-/// minimiser on -f, to epsabs but no closer than 1e-8 |x|: near a smooth maximum, values of f
-/// differ by round-off only. Good for the maximum's value. Returns the guess when GSL finds no
-/// bracket (the maximum sits on it within round-off).
-double find_maximum(const std::function<double(double)>& f, double lo, double guess, double hi, double epsabs);
-
-/// Where the maximum lies, to epsabs: the root of the central difference
-/// f(x + slope_step) - f(x - slope_step) when it changes sign across [lo + slope_step,
-/// hi - slope_step] (a root is found to round-off), else find_maximum. Truncation moves the
-/// root by O(slope_step^2), round-off by O(machine epsilon / slope_step), relative to f.
-double find_argmax(const std::function<double(double)>& f, double lo, double guess, double hi, double slope_step,
-                   double epsabs);
+/// Where f peaks in [lo, hi], near `estimate` (within a tenth of the bracket, say): the root of
+/// the central difference f(x + slope_step) - f(x - slope_step), to epsabs, searched first
+/// within (hi - lo)/20 of the estimate, then in the whole bracket; the estimate when the slope
+/// does not change sign. The root is found to round-off, where comparing values near a smooth
+/// maximum cannot place it closer than ~1e-8 relative; truncation moves it by O(slope_step^2).
+double peak_between(const std::function<double(double)>& f, double lo, double estimate, double hi, double slope_step, double epsabs);
 
 }  // namespace trebuchet

@@ -1,17 +1,16 @@
 #include "trebuchet/sweep.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <charconv>
 #include <cmath>
 #include <limits>
 #include <mutex>
-#include <thread>
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/names.hpp"
 #include "trebuchet/optimizer.hpp"
+#include "trebuchet/parallel.hpp"
 #include "trebuchet/scaling_table.hpp"
 #include "trebuchet/schema.hpp"
 
@@ -91,35 +90,19 @@ SweepPoint optimize_point(const SweepSpec& spec, double X) {
 
 }  // namespace
 
-int sweep_threads(int requested, std::size_t points) {
-  // More threads than points, or than cores, would only wait: the count is capped at both.
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  return std::clamp(requested, 1, std::max(1, std::min(cores, static_cast<int>(std::min<std::size_t>(points, max_grid_points)))));
-}
-
 std::vector<SweepPoint> run_sweep(const SweepSpec& spec, Shard shard, int threads, const std::function<void(int, int)>& progress) {
   const std::vector<double> grid = sweep_grid(spec);
   std::vector<double> mine;
   for (std::size_t i = shard.k - 1; i < grid.size(); i += shard.n) mine.push_back(grid[i]);
   std::vector<SweepPoint> points(mine.size());
-  // Each worker takes the next unclaimed point and writes only its own slot: the order in
-  // which points finish cannot change what is written.
-  std::atomic<std::size_t> next{0};
   std::mutex report;
   int done = 0;
-  auto work = [&] {
-    for (std::size_t i = next++; i < mine.size(); i = next++) {
-      points[i] = optimize_point(spec, mine[i]);
-      const std::lock_guard<std::mutex> lock(report);
-      ++done;
-      if (progress) progress(done, static_cast<int>(mine.size()));
-    }
-  };
-  const int used = sweep_threads(threads, mine.size());
-  std::vector<std::thread> workers;
-  for (int t = 1; t < used; ++t) workers.emplace_back(work);
-  work();
-  for (std::thread& w : workers) w.join();
+  for_each_index(mine.size(), threads, [&](std::size_t i) {
+    points[i] = optimize_point(spec, mine[i]);
+    const std::lock_guard<std::mutex> lock(report);
+    ++done;
+    if (progress) progress(done, static_cast<int>(mine.size()));
+  });
   return points;
 }
 

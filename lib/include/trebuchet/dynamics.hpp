@@ -60,19 +60,24 @@ class Dynamics {
   /// sin phi in the trough from eq:EOM_I_3: cos th + l4 sin phi = cos th_i.
   double trough_sin_phi(double theta) const;
 
+  /// cos phi in the trough from eq:EOM_I_3 (0 where the sling would stand vertical or beyond).
+  double trough_cos_phi(double theta) const;
+
   /// Fills phi and phi_dot of a phase-I state from eq:EOM_I_3; returns cos phi (<= 0: the sling stands vertical).
   double complete_trough_state(State& state) const;
 
   /// Accelerations and forces at a state of the given phase.
   Snapshot snapshot(Phase phase, const State& state) const;
 
-  /// Accelerations only (the right-hand side of the ODE), cheaper than snapshot.
+  /// Accelerations only (the right-hand side of the ODE), cheaper than snapshot. In the trough
+  /// phi and phi_dot of `state` are not read: they follow from theta.
   std::array<double, 3> accelerations(Phase phase, const State& state) const;
 
  private:
   ScaledDesign design_;
   double theta_i_, cos_theta_i_;  // [rad], scaled
   double L_, inertia_;            // eq:Design, section 2; scaled
+  double inv_l_, inv_l4_, inv_L_; // their reciprocals, so that evaluations multiply
 };
 
 }  // namespace trebuchet

@@ -16,8 +16,8 @@ inline constexpr std::array<Stepper, 11> all_steppers = {
 
 struct IntegratorSettings {
   Stepper stepper = Stepper::rk8pd;
-  double rtol = 1e-12;             ///< relative tolerance per step, scaled
-  double atol = 1e-13;             ///< absolute tolerance per step, scaled units
+  double rtol = 1e-11;             ///< relative tolerance per step, scaled
+  double atol = 1e-11;             ///< absolute tolerance per step, scaled units
   long max_steps = 200000;         ///< step budget over both phases
   double max_energy_drift = 1e-8;  ///< |E(t) - E(0)|/Delta U above this is an error, not a result
   double max_time = 200;           ///< scaled; phase II is abandoned after this

@@ -52,11 +52,7 @@ struct SweepPoint {
   int optima_found = 0;         ///< distinct optima from the starts (two where branches compete)
 };
 
-/// The threads a sweep of `points` points uses when asked for `requested`: at most one per point
-/// and per core, at least one.
-int sweep_threads(int requested, std::size_t points);
-
-/// Optimises every point of the shard, sweep_threads(threads, points) at a time;
+/// Optimises every point of the shard, thread_count(threads, points) at a time (parallel.hpp);
 /// `progress(done, total)` is called
 /// after each point, from one thread at a time. Results are in grid order.
 std::vector<SweepPoint> run_sweep(const SweepSpec& spec, Shard shard, int threads,

@@ -14,6 +14,7 @@
 #include "trebuchet/material.hpp"
 #include "trebuchet/names.hpp"
 #include "trebuchet/optimizer.hpp"
+#include "trebuchet/parallel.hpp"
 #include "trebuchet/quality.hpp"
 #include "trebuchet/quantity.hpp"
 #include "trebuchet/report.hpp"
