@@ -27,16 +27,20 @@ CapacityFit fit_capacity(const ScaledDesign& shape, const Capacity& capacity, co
     return out;
   };
   auto log_T_error = [&](double log_mu) { return std::log(trial(std::exp(log_mu)).T / T); };
-  // First guess without a shot: T ~ m g R / 2 gives m (section 4), and T ~ 0.9 Delta U with
-  // Delta U = M g L2 (Delta U/(M g L2)) (eq:DU) and M g L2 ~ L2^5 (eq:ExtraScalings) gives L2 and M.
+  // The guess: the given mu (a warm start), or one without a shot: T ~ m g R / 2 gives m
+  // (section 4), and T ~ 0.9 Delta U with Delta U = M g L2 (Delta U/(M g L2)) (eq:DU) and
+  // M g L2 ~ L2^5 (eq:ExtraScalings) gives L2 and M.
   const double drop_per_L2_5 = extra_scalings(shape.K(), 1.0, material).energy_unit * shape.energy_drop();  // Delta U at L2 = 1 m [J]
   const double L2_guess = std::pow(T / (0.9 * drop_per_L2_5), 0.2);
   const double m_guess = 2 * T / (material.g * R);
-  const double log_mu_guess = std::log(m_guess / extra_scalings(shape.K(), L2_guess, material).M);
-  // T(mu) need not be monotone (the release can move between maxima of the objective), so
-  // walk outward from the guess on both sides, 5 % steps in mu, up to a factor 20, and take
-  // the first sign change of the T error; shots that fail on the way are stepped over.
-  const double step = 0.05, reach = 3.0;
+  const bool warm = shape.mu > 0;
+  const double log_mu_guess = warm ? std::log(shape.mu) : std::log(m_guess / extra_scalings(shape.K(), L2_guess, material).M);
+  // T grows with mu where the fit has worked (a heavier stone needs a larger engine for the
+  // same R), so the walk goes first the way the error at the guess points, then the other way:
+  // outward in steps that double from 1 % (warm) or 5 % in mu, up to a factor 20, to the first
+  // sign change of the T error. T(mu) need not be monotone (the release can move between
+  // maxima of the objective); shots that fail on the way are stepped over.
+  const double first_step = warm ? 0.01 : 0.05, reach = 3.0;
   auto error_or_nan = [&](double log_mu) {
     if (log_mu < std::log(1e-6) || log_mu > 0) return std::nan("");
     try {
@@ -48,21 +52,25 @@ CapacityFit fit_capacity(const ScaledDesign& shape, const Capacity& capacity, co
   const double at_guess = error_or_nan(log_mu_guess);
   double lo = 0, hi = 0;
   bool bracketed = false;
-  double previous[2] = {at_guess, at_guess};
-  for (int k = 1; !bracketed && k * step <= reach; ++k) {
-    for (int side = 0; side < 2 && !bracketed; ++side) {
-      const double inner = log_mu_guess + (side ? 1 : -1) * (k - 1) * step, outer = log_mu_guess + (side ? 1 : -1) * k * step;
-      const double value = error_or_nan(outer);
-      if (std::isfinite(value) && std::isfinite(previous[side]) && (value > 0) != (previous[side] > 0)) {
-        lo = std::min(inner, outer), hi = std::max(inner, outer);
+  const double first_side = at_guess > 0 ? -1 : 1;
+  for (const double side : {first_side, -first_side}) {
+    double previous = at_guess, inner = 0;
+    for (double step = first_step; !bracketed && inner < reach; inner += step, step *= 2) {
+      const double from = log_mu_guess + side * inner, to = log_mu_guess + side * (inner + step);
+      const double value = error_or_nan(to);
+      if (std::isfinite(value) && std::isfinite(previous) && (value > 0) != (previous > 0)) {
+        lo = std::min(from, to), hi = std::max(from, to);
         bracketed = true;
       }
-      previous[side] = value;
+      previous = value;
     }
+    if (bracketed) break;
   }
   if (!bracketed)
-    throw Error(ErrorKind::out_of_range, "no projectile mass within a factor 20 of m = 2T/(gR) = " + format_significant(m_guess, 3) +
-                                             " kg lets this shape deliver " + format_significant(T / 1e3, 4) + " kJ at " +
+    throw Error(ErrorKind::out_of_range, "no projectile mass within a factor 20 of " +
+                                             (warm ? "the starting m/M = " + format_significant(shape.mu, 3)
+                                                   : "m = 2T/(gR) = " + format_significant(m_guess, 3) + " kg") +
+                                             " lets this shape deliver " + format_significant(T / 1e3, 4) + " kJ at " +
                                              format_significant(R, 4) + " m; change the shape (l, l4, mu_b) or the capacity");
   const Trial found = trial(std::exp(find_root(log_T_error, lo, hi, 0.1 * rtol, 0)));
   fit.design = design;

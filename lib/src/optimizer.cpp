@@ -69,7 +69,9 @@ struct Search {
   // Minus the quality of the shape at log coordinates x, its mu fitted to the capacity; a
   // shape that cannot deliver it, or fails, scores 0.
   double cost(const gsl_vector* x, double theta, double F) {
-    const ScaledDesign shape{std::exp(gsl_vector_get(x, 0)), std::exp(gsl_vector_get(x, 1)), std::exp(gsl_vector_get(x, 2)), 0, theta, F};
+    // mu starts from the best fit so far: the simplex moves in small steps, so its mu is close.
+    const double warm_mu = best > 0 ? best_fit.design.mu : 0;
+    const ScaledDesign shape{std::exp(gsl_vector_get(x, 0)), std::exp(gsl_vector_get(x, 1)), std::exp(gsl_vector_get(x, 2)), warm_mu, theta, F};
     try {
       const CapacityFit fit = fit_capacity(shape, request->capacity, request->material, request->settings);
       simulations += fit.simulations;

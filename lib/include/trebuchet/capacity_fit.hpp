@@ -20,8 +20,10 @@ struct CapacityFit {
   int simulations = 0;        ///< shots it took
 };
 
-/// Fits mu and the size of `shape` (its mu is ignored) so that its shot lands at R [m] with
-/// T [J] at level 0 (capacity.target_level is not used), each to `rtol` relative. Throws
+/// Fits mu and the size of `shape` so that its shot lands at R [m] with T [J] at level 0
+/// (capacity.target_level is not used), each to `rtol` relative. The search for mu starts from
+/// shape.mu when it is positive (a warm start, e.g. a neighbouring shape's fitted mu), else from
+/// the guess m = 2T/(g R) of section 4. Throws
 /// Error(out_of_range) when no mu within a factor 20 of the guess m = 2T/(g R) reaches T, and
 /// Error(numerical) when T jumps with mu at the root (the release moves between maxima). The
 /// engine it returns passes check_engine, has eps <= 1 and its shot conserved energy.
