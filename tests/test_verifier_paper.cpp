@@ -3,6 +3,7 @@
 // result plus the first-order effect of the rounding of the printed inputs.
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -10,6 +11,7 @@
 #include "trebuchet/capacity_fit.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/names.hpp"
+#include "trebuchet/optimizer.hpp"
 #include "trebuchet/units.hpp"
 #include "trebuchet/verification.hpp"
 
@@ -299,4 +301,103 @@ TEST_CASE("loose integration of the stiff engine is an error or a right number",
     }
   std::printf("stiff engine, 35 loose settings: %d refused with a named error, %d accepted and right\n", refused, accepted);
   CHECK(refused > 20);
+}
+
+// Issue 12, part 4: the open point on Q, closed with the optimizer. For every optimised row of
+// tab:Denny and tab:SketchBook-I, the ab-initio optimum for the row's capacity, theta_i, F and n
+// (section 5), under eq:F as written, searched from the calculator's designs and from the
+// printed engine, the better kept. Where even the optimum falls short of the printed Q by
+// more than its rounding, no design and no release reproduces the row: the printed Q does not
+// follow from eq:F. Each optimum's Q is pinned to its own 4 digits (half a unit: < 0.01 % of Q;
+// the optimizer finds Q to ~1e-8, bench-optimizer), so that a change of eq:F or of the search
+// shows; the rows print the table of docs/verifier.md.
+TEST_CASE("the optimum's Q for each optimised row of tab:Denny and tab:SketchBook-I", "[verify][paper][q-optimum]") {
+  struct Row {
+    const char* name;
+    double R, T, theta_i_deg, F, n;  // [m], [J], [deg], scaled, eq:Q_n
+    double beta2;                    // the row's: Denny's 0.66 % at 45 deg, else 1/300
+    const char* Q_paper;
+    const char* Q_optimum;  // ours, pinned
+  };
+  const Row rows[] = {
+      {"Denny Max Q 45", 425, 224e3, 45, 0.93, 1, 0.0066, "7.0", "6.854"},
+      {"Denny Max Q 30 F=1", 425, 224e3, 30, 1, 1, 1.0 / 300, "7.8", "7.678"},
+      {"Denny Max Q 30 F=2/3", 425, 224e3, 30, 2.0 / 3, 1, 1.0 / 300, "6.7", "6.499"},
+      {"SketchBook-I n=1 F=1 30", 450, 235e3, 30, 1, 1, 1.0 / 300, "7.41", "7.310"},
+      {"SketchBook-I n=1 F=2/3 30", 450, 234e3, 30, 2.0 / 3, 1, 1.0 / 300, "6.43", "6.220"},
+      {"SketchBook-I n=1 F=2/3 40", 450, 234e3, 40, 2.0 / 3, 1, 1.0 / 300, "5.55", "5.441"},
+      {"SketchBook-I n=5", 450, 235e3, 30, 1, 5, 1.0 / 300, "6.38", "6.391"},
+      {"SketchBook-I n=0", 450, 235e3, 30, 1, 0, 1.0 / 300, "8.11", "7.834"},
+  };
+  std::printf("%-28s %9s %9s %8s %6s %6s %7s %7s %8s\n", "row", "Q optimum", "Q paper", "paper/opt", "L1", "L4", "M", "mb", "eps");
+  for (const Row& row : rows) {
+    OptimizeRequest request;
+    request.capacity = {row.R, row.T};
+    request.theta_i_deg = row.theta_i_deg;
+    request.F = row.F;
+    request.material.beta2 = row.beta2;
+    request.settings.criterion.n = row.n;
+    Optimum best = best_optimum(optimize(request));
+    for (const QRow& printed_row : optimised_rows()) {
+      if (printed_row.name != row.name) continue;
+      std::vector<double> x;
+      for (const auto& text : printed_row.inputs) x.push_back(printed(text).value);
+      request.starts = {scaled_design(printed_row.build(x))};
+      const Optimum from_printed = best_optimum(optimize(request));
+      std::printf("  (%s: from the calculator Q %.4f %%, from the printed engine %.4f %%)\n", row.name, 100 * best.objective, 100 * from_printed.objective);
+      if (from_printed.objective > best.objective) best = from_printed;
+    }
+    const double Q = 100 * best.objective;
+    const Engine& e = best.fit.engine;
+    std::printf("%-28s %9.3f %9s %8.3f %6.2f %6.2f %7.1f %7.0f %8.1f\n", row.name, Q, row.Q_paper, printed(row.Q_paper).value / Q, e.L1, e.L4,
+                e.M / 1000, e.mb, 100 * best.fit.verification.eps);
+    check_printed(std::string(row.name) + " Q optimum", Q, row.Q_optimum, 0);
+    // The finding: for n <= 1 the printed Q lies above the best any design reaches, beyond the
+    // rounding of the printed value; for n = 5 some design reaches it.
+    const double lowest_printed = printed(row.Q_paper).value - printed(row.Q_paper).half_unit;
+    if (row.n <= 1) CHECK(lowest_printed > Q);
+    else CHECK(Q >= lowest_printed);
+  }
+}
+
+// Issue 12, part 4, the paper's slips. Appendix B: for the l = 17 engine of tab:Large_Eff "the
+// tension of the sling rises to 350 mg shortly before release". At two printed digits
+// (345-355 mg) that is the sling's full tension, the largest over the step ends and the release;
+// its component perpendicular to the beam, F_S_perp of eq:F, stays at 328 mg.
+TEST_CASE("appendix B's 350 mg is the sling's full tension, not F_S_perp", "[verify][paper][slips]") {
+  std::vector<TracePoint> trace;
+  const Engine engine = large_eff_17();
+  const Verification v = verify_engine(engine, at_max_efficiency(), &trace);
+  const double mu = engine.m / engine.M;
+  double tension = 0;
+  for (const TracePoint& p : trace)
+    if (p.phase != Phase::released) tension = std::max(tension, p.snapshot.sling_tension / mu);
+  std::printf("tab:Large_Eff l = 17: largest sling tension %.1f mg, F_S_perp %.1f mg (appendix B: 350 mg)\n", tension, v.FS_perp_mg);
+  const double two_digits = 5;  // "350" read as 3.5e2: half a unit of the second digit
+  check_printed("appendix B sling tension", tension, "350", two_digits - printed("350").half_unit);
+  CHECK(std::abs(v.FS_perp_mg - 350) > two_digits);
+}
+
+// tab:SketchBook-II rows 6 and 7 print L1 = 7.74 m and 7.69 m, where the bold Lb = 9 m and
+// l = 6.0 give Lb l/(l + 1) = 7.714 m. Both readings reproduce R, T and eps within rounding;
+// the printed L1 comes closer in each, so the printed L1 is what was simulated and the bold Lb
+// and l are its rounding (7.74 m is Lb = 9.03 m).
+TEST_CASE("tab:SketchBook-II rows 6 and 7: the printed L1 against Lb and l", "[verify][paper][slips]") {
+  struct Row {
+    const char* name;
+    double F, L1_printed, L4, M_t, m, mb;
+    double R, T_kJ, eps_percent;  // printed
+  };
+  for (const Row& row : {Row{"#6", 2.0 / 3, 7.74, 6.98, 38.7, 299, 1623, 482, 752, 92.0}, Row{"#7", 0.5, 7.69, 6.41, 45.9, 538, 1746, 297, 858, 88.1}}) {
+    const double l = 6.0, from_bold = 9 * l / (l + 1);
+    CHECK(std::abs(row.L1_printed - from_bold) > printed("7.74").half_unit);
+    auto miss = [&](double L1) {
+      const Verification v = verify_engine(sketchbook_engine(row.F, 30, {L1, row.L4, row.M_t, row.m, row.mb, l}), ShotSettings{});
+      return std::array<double, 3>{std::abs(v.capacity.R - row.R), std::abs(v.capacity.T / 1e3 - row.T_kJ), std::abs(100 * v.eps - row.eps_percent)};
+    };
+    const auto printed_miss = miss(row.L1_printed), bold_miss = miss(from_bold);
+    std::printf("tab:SketchBook-II %s: |R, T, eps - printed| with L1 = %.2f m: %.2f m, %.2f kJ, %.2f %%; with L1 = %.3f m: %.2f m, %.2f kJ, %.2f %%\n", row.name,
+                row.L1_printed, printed_miss[0], printed_miss[1], printed_miss[2], from_bold, bold_miss[0], bold_miss[1], bold_miss[2]);
+    for (int k = 0; k < 3; ++k) CHECK(printed_miss[k] < bold_miss[k]);
+  }
 }
