@@ -57,6 +57,13 @@ void work_precision(const Design& d, double budget) {
                relative(check.capacity.R, ref.capacity.R), relative(check.capacity.T, ref.capacity.T), relative(check.eps, ref.eps), relative(check.Q, ref.Q));
   std::printf("reference,%s,rkck,1e-13,,%.3e,%.3e,%.3e,%.3e,,cross-check\n", d.name.c_str(), relative(check.capacity.R, ref.capacity.R),
               relative(check.capacity.T, ref.capacity.T), relative(check.eps, ref.eps), relative(check.Q, ref.Q));
+  // The defaults themselves (rtol = atol = 1e-11, off the grid below, where atol = rtol/10).
+  ShotSettings defaults;
+  defaults.criterion = d.criterion;
+  const Verification v = verify_engine(d.engine, defaults);
+  const double seconds = median_seconds([&] { verify_engine(d.engine, defaults); }, budget);
+  std::printf("default,%s,rk8pd,default,%.4e,%.3e,%.3e,%.3e,%.3e,%.2e,\n", d.name.c_str(), seconds, relative(v.capacity.R, ref.capacity.R),
+              relative(v.capacity.T, ref.capacity.T), relative(v.eps, ref.eps), relative(v.Q, ref.Q), v.energy_drift);
   for (Stepper stepper : all_steppers) {
     for (int e = 3; e <= 13; ++e) {
       const double tol = std::pow(10.0, -e);
