@@ -135,10 +135,14 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   // The sling runs from the projectile to the tip along (cos phi, sin phi): its tension is the
   // pull on the projectile along it; a sling can pull but not push.
   out.sling_tension = sling_on_projectile.x * cf + sling_on_projectile.y * sf;
-  // Heights above the engine's base, which lies l cos(theta_i) below the pivot (H = L1 cos theta_i).
+  // Positions of the hinge, the counterweight and the tip (dynamics.hpp), and heights above the
+  // engine's base, which lies l cos(theta_i) below the pivot (H = L1 cos theta_i).
+  out.hinge = {-st, ct};
+  out.counterweight = {-st + e.L * sp, ct - e.L * cp};
+  out.tip = {e.l * st, -e.l * ct};
   const double base = -e.l * cos_theta_i_;
-  out.counterweight_height = ct - e.L * cp - base;
-  out.tip_height = -e.l * ct - base;
+  out.counterweight_height = out.counterweight.y - base;
+  out.tip_height = out.tip.y - base;
   // The tip moves along (cos th, sin th) as theta grows; the sling pulls against that.
   out.sling_perpendicular = -(out.sling_on_tip.x * ct + out.sling_on_tip.y * st);
 
@@ -148,16 +152,17 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   out.pivot_reaction = {e.mu_b * cm_acc.x + out.hinge_force.x - out.sling_on_tip.x,
                         e.mu_b * (cm_acc.y + 1) + out.hinge_force.y - out.sling_on_tip.y};
 
-  // Energy: beam rotation + counterweight + projectile (on the trough in phase I, absent in III).
+  // Energy of each body, potential from the pivot's level: beam rotation, counterweight,
+  // projectile (on the trough in phase I, absent in III).
   const double I = e.I;
-  double kinetic = 0.5 * I * td * td + 0.5 * (td * td + e.L * e.L * pd * pd - 2 * e.L * (ct * cp + st * sp) * td * pd);  // cos(th - psi)
-  double potential = -e.mu_b * r * ct + ct - e.L * cp;
+  out.energies.beam = 0.5 * I * td * td - e.mu_b * r * ct;
+  out.energies.counterweight = 0.5 * (td * td + e.L * e.L * pd * pd - 2 * e.L * (ct * cp + st * sp) * td * pd) + out.counterweight.y;  // cos(th - psi)
   if (phase != Phase::released) {
     const Vec2& v = out.projectile_velocity;
-    kinetic += 0.5 * e.mu * (v.x * v.x + v.y * v.y);
-    potential += e.mu * out.projectile.y;
+    out.energies.projectile_kinetic = 0.5 * e.mu * (v.x * v.x + v.y * v.y);
+    out.energies.projectile_potential = e.mu * out.projectile.y;
   }
-  out.energy = kinetic + potential;
+  out.energy = out.energies.beam + out.energies.counterweight + out.energies.projectile_kinetic + out.energies.projectile_potential;
   return out;
 }
 

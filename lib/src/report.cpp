@@ -110,20 +110,26 @@ std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine
   bool released = false;
   std::ostringstream out;
   out << "phase,t_s,theta_deg,psi_deg,phi_deg,theta_dot_rad_s,psi_dot_rad_s,phi_dot_rad_s,"
-         "FS_perp_mg,FR_Mg,FRh_Mg,FRv_Mg,FH_Mg,normal_mg,energy_J,energy_drift\n";
+         "FS_perp_mg,FR_Mg,FRh_Mg,FRv_Mg,FH_Mg,normal_mg,energy_J,energy_drift,"
+         "counterweight_x_m,counterweight_y_m,tip_x_m,tip_y_m,projectile_x_m,projectile_y_m,"
+         "E_counterweight_J,E_beam_J,E_projectile_kinetic_J,E_projectile_potential_J\n";
   for (const TracePoint& p : trace) {
     const Snapshot& s = p.snapshot;
     if (p.phase == Phase::released && !released) {  // without the projectile, energy is conserved anew
       released = true;
       energy0 = s.energy;
     }
+    const SitePoint cw = site_point(s.counterweight, engine), tip = site_point(s.tip, engine), pr = site_point(s.projectile, engine);
+    // After the release the sling and projectile are gone: phi, its rate and their positions are left empty.
+    const double none = std::nan("");
+    const bool gone = p.phase == Phase::released;
     const double row[] = {p.t * time_unit,
                           degrees(p.state.theta),
                           degrees(p.state.psi),
-                          degrees(p.state.phi),
+                          gone ? none : degrees(p.state.phi),
                           p.state.theta_dot / time_unit,
                           p.state.psi_dot / time_unit,
-                          p.state.phi_dot / time_unit,
+                          gone ? none : p.state.phi_dot / time_unit,
                           s.sling_perpendicular / scaled.mu,
                           std::hypot(s.pivot_reaction.x, s.pivot_reaction.y),
                           s.pivot_reaction.x,
@@ -131,12 +137,22 @@ std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine
                           std::hypot(s.hinge_force.x, s.hinge_force.y),
                           s.normal_force / scaled.mu,
                           s.energy * energy_unit,
-                          (s.energy - energy0) / drop};
+                          (s.energy - energy0) / drop,
+                          cw.x, cw.y, tip.x, tip.y,
+                          gone ? none : pr.x, gone ? none : pr.y,
+                          s.energies.counterweight * energy_unit,
+                          s.energies.beam * energy_unit,
+                          s.energies.projectile_kinetic * energy_unit,
+                          s.energies.projectile_potential * energy_unit};
     out << (p.phase == Phase::trough ? "I" : p.phase == Phase::lifted ? "II" : "III");
-    for (double x : row) out << "," << format_number(finite_or_error(x));
+    for (double x : row) out << "," << (std::isnan(x) ? std::string() : format_number(finite_or_error(x)));
     out << "\n";
   }
   return out.str();
+}
+
+SitePoint site_point(Vec2 scaled, const Engine& engine) {
+  return {-scaled.x * engine.L2, scaled.y * engine.L2 + pivot_height(engine)};
 }
 
 }  // namespace trebuchet

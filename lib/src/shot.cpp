@@ -248,25 +248,41 @@ std::pair<double, std::optional<ForceIndex>> release_time(const Objective& objec
 
 [[noreturn]] void fail(const std::string& reason) { throw Error(ErrorKind::numerical, reason); }
 
-void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, const std::vector<PhaseRecord::Sample>& samples,
-                  double t_end) {
+// The motion of one phase over [t_begin, t_end] for the series: the step ends, or with dt > 0
+// the continuous solution at every multiple of dt and then t_end itself.
+void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, const PhaseRecord& record, double t_begin,
+                  double t_end, double dt) {
   if (!trace) return;
-  for (const auto& sample : samples) {
-    if (sample.t > t_end) break;
-    const State s = integrator.state(sample.y);
-    trace->push_back({integrator.phase(), sample.t, s, integrator.dynamics().snapshot(integrator.phase(), s)});
+  auto add = [&](double t, const OdeVector& y) {
+    const State s = integrator.state(y);
+    trace->push_back({integrator.phase(), t, s, integrator.dynamics().snapshot(integrator.phase(), s)});
+  };
+  if (!(dt > 0)) {
+    for (const auto& sample : record.samples())
+      if (sample.t <= t_end) add(sample.t, sample.y);
+    return;
   }
+  for (double k = std::ceil(t_begin / dt); k * dt < t_end; ++k)
+    if (k * dt > t_begin || t_begin == 0) add(k * dt, record.y_at(k * dt));
+  add(t_end, record.y_at(t_end));
 }
 
 // Phase III for the series: beam and counterweight without the projectile (mu = 0), from the
-// release for as long again as the shot took, so that the ringing of appendix B shows.
+// release for as long again as the shot took, so that the ringing of appendix B shows; at the
+// step ends, or every dt > 0.
 void trace_released(const Dynamics& dynamics, const IntegratorSettings& settings, const State& release, double t_release,
-                    std::vector<TracePoint>& trace) {
+                    double dt, std::vector<TracePoint>& trace) {
   PhaseIntegrator released(dynamics, Phase::released, settings);
   OdeVector y = {release.theta, release.psi, release.theta_dot, release.psi_dot, 0, 0};
   double t = t_release, h = 1e-3;
   for (long steps = 0; t < 2 * t_release && steps < settings.max_steps; ++steps) {
-    if (!released.step(t, y.data(), 2 * t_release, h)) fail("integrator failure in phase III; tighten --rtol");
+    if (dt > 0) {
+      const double next = (std::floor(t / dt) + 1) * dt;
+      y = released.at(t, y, next);
+      t = next;
+    } else if (!released.step(t, y.data(), 2 * t_release, h)) {
+      fail("integrator failure in phase III; tighten --rtol");
+    }
     const State s = released.state(y);
     trace.push_back({Phase::released, t, s, dynamics.snapshot(Phase::released, s)});
   }
@@ -275,7 +291,7 @@ void trace_released(const Dynamics& dynamics, const IntegratorSettings& settings
 }  // namespace
 
 ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
-                         std::vector<TracePoint>* trace) {
+                         std::vector<TracePoint>* trace, double trace_dt) {
   use_gsl_return_codes();
   if (!(e.L() > 0))
     fail("no room for the counterweight arm: L3/L2 = F l cos(theta_i) - 1 = " + format_significant(e.L(), 4) +
@@ -329,7 +345,7 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
       fail("the projectile never lifts off: the trough still carries it when the beam is upright; "
            "change the sling length L4 or the masses");
   }
-  record_trace(trace, trough, phase1.samples(), t);
+  record_trace(trace, trough, phase1, 0, t, trace_dt);
 
   // Phase II from the located lift-off state.
   const State lift = trough.state(y);
@@ -373,8 +389,9 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   const double lo = samples[before].t, hi = samples[after].t;
   const auto objective = [&](double time) { return point_at(time).objective; };
   const double estimate = parabola_vertex({lo, objective(lo)}, {samples[best].t, best_quality}, {hi, objective(hi)}).x;
-  const auto [t_release, onset] = release_time(objective, lo, estimate, hi, phase2.growth_onsets(lo, hi));
-  result.release_at_growth_of = onset;
+  const auto found = release_time(objective, lo, estimate, hi, phase2.growth_onsets(lo, hi));
+  const double t_release = found.first;
+  result.release_at_growth_of = found.second;
   result.release = point_from(t_release, phase2.y_exact_at(t_release));
   // Only what happens before the release invalidates the shot.
   auto before_release = [&](const std::optional<double>& t) { return t && *t <= t_release ? t : std::nullopt; };
@@ -382,9 +399,10 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   result.counterweight_below_base = before_release(onsets[1]);
   result.tip_below_base = before_release(onsets[2]);
   if (trace) {
-    record_trace(trace, lifted, samples, t_release);
-    trace->push_back({Phase::lifted, t_release, result.release.state, dynamics.snapshot(Phase::lifted, result.release.state)});
-    trace_released(dynamics, settings, result.release.state, t_release, *trace);
+    record_trace(trace, lifted, phase2, result.t_liftoff, t_release, trace_dt);
+    if (!(trace_dt > 0))  // the continuous record ends on the release already
+      trace->push_back({Phase::lifted, t_release, result.release.state, dynamics.snapshot(Phase::lifted, result.release.state)});
+    trace_released(dynamics, settings, result.release.state, t_release, trace_dt, *trace);
   }
   return result;
 }

@@ -48,8 +48,9 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   return out;
 }
 
-Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace) {
-  const ShotResult shot = simulate_shot(scaled_design(engine), settings.criterion, settings.integrator, trace);
+Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace, double trace_dt_s) {
+  const double time_unit = std::sqrt(engine.L2 / engine.material.g);  // section 3 [s]
+  const ShotResult shot = simulate_shot(scaled_design(engine), settings.criterion, settings.integrator, trace, trace_dt_s / time_unit);
   return verification_of(engine, shot, settings.target_level);
 }
 

@@ -29,9 +29,15 @@ struct Vec2 {
   double x = 0, y = 0;
 };
 
+/// Kinetic plus potential energy of each body, scaled (M g L2), potential from the pivot's level.
+struct BodyEnergies {
+  double beam = 0, counterweight = 0, projectile_kinetic = 0, projectile_potential = 0;
+};
+
 /// Angular accelerations and the internal forces at one state, scaled (forces in Mg).
 struct Snapshot {
   double theta_ddot = 0, psi_ddot = 0, phi_ddot = 0;
+  Vec2 hinge, counterweight, tip;        ///< relative to the pivot, scaled
   Vec2 projectile, projectile_velocity;  ///< relative to the pivot, scaled
   Vec2 pivot_reaction;   ///< F_R: force of the frame on the beam at the pivot
   Vec2 hinge_force;      ///< F_H: force of the arm on the counterweight
@@ -41,7 +47,8 @@ struct Snapshot {
   double sling_tension = 0;        ///< pull of the sling on the projectile along it (< 0: it would push, the sling is slack)
   double counterweight_height = 0; ///< of the counterweight above the engine's base (< 0: below it)
   double tip_height = 0;           ///< of the beam's tip above the engine's base (< 0: below it)
-  double energy = 0;               ///< kinetic + potential, scaled; conserved
+  BodyEnergies energies;           ///< phase III: the projectile's are 0
+  double energy = 0;               ///< kinetic + potential of all bodies, scaled; conserved
 };
 
 /// Phase III in vacuum: the horizontal distance from the pivot, toward the target (-x), to

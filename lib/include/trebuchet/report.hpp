@@ -29,7 +29,18 @@ std::string optimum_table(const Optimum& optimum);
 /// One CSV row per trace point: phase, time [s], angles [deg], angular speeds [rad/s],
 /// forces (F_S_perp/(m g), F_R and its components/(M g), F_H/(M g), normal/(m g)),
 /// energy [J] and its drift relative to Delta U (in phase III, from the energy at release,
-/// the projectile having left).
+/// the projectile having left), the positions of counterweight, beam tip and projectile
+/// (site_point, [m]) and each body's energy [J] (potential from the pivot's level). After the
+/// release, phi, its rate and the projectile's position are empty.
 std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine);
+
+/// A point on the site: x [m] from the pivot toward the target, y [m] above the engine's base.
+struct SitePoint {
+  double x, y;
+};
+
+/// Where a scaled position relative to the pivot (dynamics.hpp: the target lies toward -x) is
+/// on the site of `engine`.
+SitePoint site_point(Vec2 scaled, const Engine& engine);
 
 }  // namespace trebuchet

@@ -55,9 +55,10 @@ struct TracePoint {
 /// Integrates the shot and finds the release. Throws Error(numerical) with a named reason:
 /// the beam cannot turn, no lift-off, sling vertical in the trough, no forward release,
 /// integrator failure or step budget, or energy drift above the limit.
-/// With `trace`, the integrator's step ends up to the release, the release itself, and phase III
-/// (beam and counterweight alone) for as long again, are appended to it.
+/// With `trace`, the motion up to the release, the release itself, and phase III (beam and
+/// counterweight alone) for as long again, are appended to it: at the integrator's step ends,
+/// or with trace_dt > 0 (scaled) at every multiple of trace_dt on the continuous solution.
 ShotResult simulate_shot(const ScaledDesign& design, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
-                         std::vector<TracePoint>* trace = nullptr);
+                         std::vector<TracePoint>* trace = nullptr, double trace_dt = 0);
 
 }  // namespace trebuchet

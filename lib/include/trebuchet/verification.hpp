@@ -44,7 +44,9 @@ struct Verification {
 Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level);
 
 /// Simulates one shot of `engine` under its own g. Throws Error(numerical) as simulate_shot
-/// does. With `trace`, the motion is appended to it (scaled, see simulate_shot).
-Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace = nullptr);
+/// does. With `trace`, the motion is appended to it (scaled, see simulate_shot): at the step
+/// ends, or every trace_dt_s seconds.
+Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace = nullptr,
+                           double trace_dt_s = 0);
 
 }  // namespace trebuchet
