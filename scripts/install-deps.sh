@@ -10,7 +10,9 @@ packages=(
   nlohmann-json3-dev
   catch2            # Catch2 2.13 with CTest discovery
   libcli11-dev
-  gnuplot-nox       # charts, without X11
+  gnuplot-nox       # charts and trebuchet-verify shot --plot, without X11
+  libxml2-utils     # xmllint: the pictures' SVG is checked well-formed
+  librsvg2-bin      # rsvg-convert: SVG pictures rendered to PNG to look at (scripts/figures.sh)
   clang-14 libclang-rt-14-dev  # libFuzzer for the fuzz targets of tests/fuzz
 )
 

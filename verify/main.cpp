@@ -11,7 +11,10 @@
 #include <map>
 #include <optional>
 #include <thread>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <filesystem>
 
 #include "program.hpp"
 #include "trebuchet/capacity_fit.hpp"
@@ -20,6 +23,7 @@
 #include "trebuchet/names.hpp"
 #include "trebuchet/optimizer.hpp"
 #include "trebuchet/parallel.hpp"
+#include "trebuchet/pictures.hpp"
 #include "trebuchet/report.hpp"
 #include "trebuchet/request.hpp"
 #include "trebuchet/schema.hpp"
@@ -43,7 +47,7 @@ struct Options {
   std::string tolerance = "0.02";
   std::string target_level = "0";
   std::string format = "table";
-  std::string series;
+  std::string series, series_dt, plot;
   std::string quality = "Q", n = "1";
   std::string stepper = stepper_name(IntegratorSettings{}.stepper), rtol, atol;
   std::string X_grid = "-0.55:0.55:0.05";
@@ -93,6 +97,37 @@ struct Outcome {
   int code = exit_success;
 };
 
+// Runs gnuplot on `script` inside `folder`; an error names what failed and how to fix it.
+void run_gnuplot(const std::filesystem::path& folder, const std::string& script) {
+  const pid_t child = fork();
+  if (child == 0) {
+    // gnuplot's own messages go to gnuplot.log in the folder.
+    if (chdir(folder.c_str()) == 0 && std::freopen("gnuplot.log", "a", stderr) && std::freopen("gnuplot.log", "a", stdout))
+      execlp("gnuplot", "gnuplot", script.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  if (child < 0 || waitpid(child, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw Error(ErrorKind::usage, "--plot: gnuplot failed on " + (folder / script).string() + ", see gnuplot.log there" +
+                                      (child >= 0 && WIFEXITED(status) && WEXITSTATUS(status) == 127 ? " (gnuplot is not installed; apt-get install gnuplot-nox)" : ""));
+}
+
+// --plot DIR: the pictures of the shot (pictures.hpp), from the motion sampled anew.
+void write_pictures(const std::string& dir, const Engine& engine, const Verification& v, const ShotSettings& settings) {
+  std::vector<TracePoint> trace;
+  verify_engine(engine, settings, &trace, picture_sampling(v.t_release));
+  const std::filesystem::path folder(dir);
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  std::filesystem::remove(folder / "gnuplot.log", ec);
+  for (const PictureFile& file : shot_pictures(engine, v, trace, settings.target_level)) {
+    std::ofstream out(folder / file.name);
+    out << file.text;
+    if (!out) throw Error(ErrorKind::usage, "--plot: cannot write " + (folder / file.name).string() + "; give a folder you can write to");
+  }
+  for (const std::string& script : picture_scripts()) run_gnuplot(folder, script);
+}
+
 // One design: read, optionally fitted to its capacity, shot, and checked against its capacity.
 Outcome verify_one(const nlohmann::json& object, const std::string& where, const Options& o, const ShotSettings& settings,
                    double tolerance, bool fit) {
@@ -111,7 +146,9 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
     fitted_table = "fitted engine (" + std::to_string(result.simulations) + " shots):\n" + engine_table(engine);
   }
   std::vector<TracePoint> trace;
-  const Verification v = verify_engine(engine, settings, o.series.empty() ? nullptr : &trace);
+  const double series_dt = o.series_dt.empty() ? 0 : parse_positive(o.series_dt, UnitDimension::time, "--series-dt");
+  const Verification v = verify_engine(engine, settings, o.series.empty() ? nullptr : &trace, series_dt);
+  if (!o.plot.empty()) write_pictures(o.plot, engine, v, settings);
   std::optional<CapacityCheck> check;
   if (in.capacity) check = check_capacity(v, *in.capacity, tolerance);
   out.json = verification_json(v, check);
@@ -158,6 +195,8 @@ int run_shot(const Options& o, bool fit) {
                                       std::to_string(input.size()) + "; give \"R\" and \"T\" in each design instead");
   if (is_array && !o.series.empty() && input.size() != 1)
     throw Error(ErrorKind::usage, "--series writes the motion of one design; the input holds " + std::to_string(input.size()));
+  if (is_array && !o.plot.empty() && input.size() != 1)
+    throw Error(ErrorKind::usage, "--plot draws one design; the input holds " + std::to_string(input.size()));
   if (!is_array) {
     if (!o.R.empty()) input["R"] = o.R;
     if (!o.T.empty()) input["T"] = o.T;
@@ -295,7 +334,9 @@ void add_engine_options(CLI::App* app, Options& o) {
   app->add_option("--T", o.T, "the predicted energy to check (or to fit)");
   app->add_option("--tol", o.tolerance, "relative tolerance on the predicted R and T")->capture_default_str();
   app->add_option("--target-level", o.target_level, "target height relative to the engine's base, e.g. -54m")->capture_default_str();
-  app->add_option("--series", o.series, "write the time series of the shot (angles, forces, energy) to this CSV file");
+  app->add_option("--series", o.series, "write the time series of the shot (angles, forces, positions, energies) to this CSV file");
+  app->add_option("--series-dt", o.series_dt, "sample the series every this many seconds (e.g. 5ms) instead of at the integrator's steps");
+  app->add_option("--plot", o.plot, "draw the shot into this folder: SVG pictures, an animated GIF and index.html (needs gnuplot)");
   app->add_option("--threads", o.threads, "threads for an array of designs (default: the cores); the output is the same on any number");
 }
 

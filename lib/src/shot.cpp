@@ -275,11 +275,11 @@ void trace_released(const Dynamics& dynamics, const IntegratorSettings& settings
   PhaseIntegrator released(dynamics, Phase::released, settings);
   OdeVector y = {release.theta, release.psi, release.theta_dot, release.psi_dot, 0, 0};
   double t = t_release, h = 1e-3;
+  double k = std::floor(t_release / dt) + 1;  // the next multiple of dt, when dt > 0
   for (long steps = 0; t < 2 * t_release && steps < settings.max_steps; ++steps) {
     if (dt > 0) {
-      const double next = (std::floor(t / dt) + 1) * dt;
-      y = released.at(t, y, next);
-      t = next;
+      y = released.at(t, y, k * dt);
+      t = k++ * dt;
     } else if (!released.step(t, y.data(), 2 * t_release, h)) {
       fail("integrator failure in phase III; tighten --rtol");
     }

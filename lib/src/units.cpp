@@ -15,7 +15,7 @@ struct Unit {
   double to_si;  // multiply by this to get SI base units (degrees for angles)
 };
 
-constexpr std::array<Unit, 21> units = {{
+constexpr std::array<Unit, 23> units = {{
     {"m", UnitDimension::length, 1.0},
     {"cm", UnitDimension::length, 1e-2},
     {"mm", UnitDimension::length, 1e-3},
@@ -37,6 +37,8 @@ constexpr std::array<Unit, 21> units = {{
     {"kg/m^3", UnitDimension::density, 1.0},
     {"t/m3", UnitDimension::density, 1e3},
     {"%", UnitDimension::dimensionless, 1e-2},
+    {"s", UnitDimension::time, 1.0},
+    {"ms", UnitDimension::time, 1e-3},
 }};
 
 // How messages speak of each dimension.
@@ -56,6 +58,7 @@ DimensionText dimension_text(UnitDimension dimension) {
     case UnitDimension::acceleration: return {"an acceleration", "m/s^2", "9.81m/s2"};
     case UnitDimension::pressure: return {"a pressure", "pascals", "12GPa"};
     case UnitDimension::density: return {"a density", "kg/m^3", "700kg/m3"};
+    case UnitDimension::time: return {"a time", "seconds", "5ms"};
   }
   return {"?", "?", "?"};
 }

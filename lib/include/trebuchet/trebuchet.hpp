@@ -15,6 +15,7 @@
 #include "trebuchet/names.hpp"
 #include "trebuchet/optimizer.hpp"
 #include "trebuchet/parallel.hpp"
+#include "trebuchet/pictures.hpp"
 #include "trebuchet/quality.hpp"
 #include "trebuchet/quantity.hpp"
 #include "trebuchet/report.hpp"
