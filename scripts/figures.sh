@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Remakes the figures of docs/ (issue 13): the pictures of one shot (tab:Alcala_la_Vieja row Ca)
 # in docs/figures/, the engine drawing among them, fig:XY, fig:fZ_vs_X for each re-derived block,
-# and, with --all, the work-precision charts
+# fig:Merit_Ms, and, with --all, the work-precision charts
 # (scripts/work-precision.sh, about four minutes on one core). Renders every SVG to PNG in
 # build/figures-png, to look at.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)" --target trebuchet-verify figure-xy figure-fz
+cmake --build build -j"$(nproc)" --target trebuchet-verify figure-xy figure-fz figure-merit
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 build/verify/trebuchet-verify shot --L1 4.13m --L2 0.88m --F 2/3 --L4 3.55m --M 3.11t --m 50kg --mb 174kg --plot "$work" >/dev/null
@@ -16,6 +16,8 @@ for picture in engine paths forces energy release; do cp "$work/$picture.svg" "d
 build/tests/figure-xy > docs/figures/xy.gp   # fig:XY from the built-in tab:CPNC
 gnuplot docs/figures/xy.gp
 for script in $(build/tests/figure-fz data/cpnc-derived.json docs/figures); do gnuplot "$script"; done   # fig:fZ_vs_X
+build/tests/figure-merit docs/figures   # fig:Merit_Ms: 2000 capacity fits, the quadratic form's axes printed
+gnuplot docs/figures/merit.gp
 if [ "${1:-}" = --all ]; then bash scripts/work-precision.sh; fi
 mkdir -p build/figures-png
 for svg in docs/figures/*.svg docs/*.svg; do
