@@ -263,12 +263,13 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const Verification&
        << "<style>body{font-family:sans-serif;max-width:1150px;margin:auto;padding:1em}img{max-width:100%}"
           "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 8px;text-align:right}</style></head><body>\n"
        << "<h1>One shot of a swinging-counterweight trebuchet</h1>\n"
-       << "<p>Made by <code>trebuchet-verify shot --plot</code>: the model of Horsdal, appendix A, in vacuum, released at the "
-          "maximum of the quality Q.</p>\n<table><tr><th>engine</th><th></th><th>shot</th><th></th></tr>\n";
-  const std::pair<std::string, std::string> left[] = {{"L1 (long arm)", num(engine.L1) + " m"}, {"L2 (short arm)", num(engine.L2) + " m"},
-                                                      {"L3 (counterweight arm)", num(engine.L3) + " m"}, {"L4 (sling)", num(engine.L4) + " m"},
-                                                      {"H (pivot height)", num(H) + " m"}, {"M (counterweight)", num(engine.M) + " kg"},
-                                                      {"m (projectile)", num(engine.m) + " kg"}, {"mb (beam)", num(engine.mb) + " kg"}};
+       << "<p>Made by <code>trebuchet-verify shot --plot</code>: the model of Horsdal, appendix A, in vacuum, released where "
+          "the chosen criterion peaks (<code>--quality</code>: the quality Q unless asked otherwise).</p>\n<table><tr><th>engine</th><th></th><th>shot</th><th></th></tr>\n";
+  auto four = [](double x) { return format_significant(x, 4); };
+  const std::pair<std::string, std::string> left[] = {{"L1 (long arm)", four(engine.L1) + " m"}, {"L2 (short arm)", four(engine.L2) + " m"},
+                                                      {"L3 (counterweight arm)", four(engine.L3) + " m"}, {"L4 (sling)", four(engine.L4) + " m"},
+                                                      {"H (pivot height)", four(H) + " m"}, {"M (counterweight)", four(engine.M) + " kg"},
+                                                      {"m (projectile)", four(engine.m) + " kg"}, {"mb (beam)", four(engine.mb) + " kg"}};
   const std::pair<std::string, std::string> right[] = {{"range R", format_significant(v.capacity.R, 4) + " m"},
                                                        {"energy at target T", format_significant(v.capacity.T / 1000, 4) + " kJ"},
                                                        {"efficiency eps", format_significant(100 * v.eps, 3) + " %"},
