@@ -152,7 +152,7 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
   std::optional<CapacityCheck> check;
   if (in.capacity) check = check_capacity(v, *in.capacity, tolerance);
   out.json = verification_json(v, check);
-  out.table = fitted_table + verification_table(v, check);
+  out.table = fitted_table + verification_table(engine, settings, v, check);
   if (fit) out.json["engine"] = fitted;
   if (!o.series.empty()) {
     std::ofstream file(o.series);
@@ -257,7 +257,7 @@ int run_optimize(const Options& o) {
   nlohmann::ordered_json all = nlohmann::ordered_json::array();
   for (const Optimum& optimum : optima) {
     all.push_back(optimum_json(optimum, seconds));
-    if (o.format == "table") std::cout << optimum_table(optimum) << "\n";
+    if (o.format == "table") std::cout << optimum_table(optimum, request.settings) << "\n";
   }
   if (o.format == "json") std::cout << all.dump(2) << "\n";
   else std::cout << "wall time " << format_significant(seconds, 3) << " s\n";

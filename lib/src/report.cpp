@@ -64,17 +64,27 @@ std::string design_table(const OptimalEngine& design) {
   return t;
 }
 
-std::string verification_table(const Verification& v, const std::optional<CapacityCheck>& check) {
+std::string verification_table(const Engine& engine, const ShotSettings& settings, const Verification& v,
+                               const std::optional<CapacityCheck>& check) {
   verification_json(v, check);  // the same finiteness check as JSON
   auto sig = [](double x, int digits = 5) { return format_significant(x, digits); };
+  const double g = engine.material.g, mg_kN = engine.m * g / 1e3, Mg_kN = engine.M * g / 1e3;
+  const ReleaseCriterion& c = settings.criterion;
+  const std::string rule = c.release == Release::quality ? (c.n == 1 ? "where Q peaks (eq:Q)" : "where Q_n peaks (eq:Q_n, n = " + sig(c.n, 3) + ")")
+                           : c.release == Release::efficiency ? "where eps peaks (Q_eps, appendix B)"
+                                                              : "where the range peaks (Denny's criterion)";
   std::ostringstream out;
-  out << "R = " << sig(v.capacity.R) << " m   T = " << sig(v.capacity.T / 1e3) << " kJ   at the target level\n"
-      << "eps = " << sig(100 * v.eps, 4) << " %   Q = " << sig(100 * v.Q, 4) << " %   F = " << sig(v.force_factor, 4) << "\n"
+  out << "engine simulated:\n" << engine_table(engine) << "  theta_i = " << sig(engine.theta_i_deg, 4)
+      << " deg, arm fraction (L2 + L3)/H = " << sig(arm_fraction(engine), 4) << "\n"
+      << "assumptions: vacuum (no air drag), g = " << sig(g, 4) << " m/s2, release " << rule << ", target level "
+      << sig(settings.target_level, 4) << " m\n"
+      << "R = " << sig(v.capacity.R) << " m   T = " << sig(v.capacity.T / 1e3) << " kJ   at the target level\n"
+      << "eps = " << sig(100 * v.eps, 4) << " %   Q = " << sig(100 * v.Q, 4) << " %   force factor = " << sig(v.force_factor, 4) << " (eq:F)\n"
       << "release: v = " << sig(v.v, 4) << " m/s, h = " << sig(v.h, 4) << " m, x = " << sig(v.x, 4)
       << " m (behind the pivot if > 0), A = " << sig(v.A_deg, 4) << " deg\n"
       << "times: lift-off " << sig(v.t_liftoff, 4) << " s, release " << sig(v.t_release, 4) << " s\n"
-      << "forces: F_S_perp = " << sig(v.FS_perp_mg, 4) << " mg, F_R = " << sig(v.FR_Mg, 4) << " Mg, dF_Rh = " << sig(v.dFRh_Mg, 4)
-      << " Mg\n"
+      << "forces: F_S_perp = " << sig(v.FS_perp_mg * mg_kN, 4) << " kN (" << sig(v.FS_perp_mg, 4) << " × m·g), F_R = " << sig(v.FR_Mg * Mg_kN, 4)
+      << " kN (" << sig(v.FR_Mg, 4) << " × M·g), dF_Rh = " << sig(v.dFRh_Mg * Mg_kN, 4) << " kN (" << sig(v.dFRh_Mg, 4) << " × M·g)\n"
       << "energy drift: " << sig(v.energy_drift, 2) << " of Delta U\n";
   for (const std::string& w : v.warnings) out << "warning: " << w << "\n";
   if (check) {
@@ -85,18 +95,19 @@ std::string verification_table(const Verification& v, const std::optional<Capaci
   return out.str();
 }
 
-std::string optimum_table(const Optimum& optimum) {
+std::string optimum_table(const Optimum& optimum, const ShotSettings& settings) {
   return "optimum from the " + optimum.start + " start (" + std::to_string(optimum.simulations) + " shots, " +
-         std::to_string(optimum.iterations) + " simplex iterations):\n" + engine_table(optimum.fit.engine) +
-         verification_table(optimum.fit.verification);
+         std::to_string(optimum.iterations) + " simplex iterations):\n" + verification_table(optimum.fit.engine, settings, optimum.fit.verification);
 }
 
 std::string engine_table(const Engine& e) {
   auto sig = [](double x) { return format_significant(x, 4); };
+  auto mass = [&](double kg) { return kg >= 1000 ? sig(kg / 1000) + " t" : sig(kg) + " kg"; };
   std::ostringstream out;
   out << "  Lb = " << sig(beam_length(e)) << " m, H = " << sig(pivot_height(e)) << " m, L1 = " << sig(e.L1) << " m, L2 = " << sig(e.L2)
       << " m, L3 = " << sig(e.L3) << " m, L4 = " << sig(e.L4) << " m\n"
-      << "  M = " << sig(e.M) << " kg, m = " << sig(e.m) << " kg, mb = " << sig(e.mb) << " kg, D = " << format_significant(e.D, 3) << " m\n";
+      << "  M = " << mass(e.M) << ", m = " << mass(e.m) << ", mb = " << mass(e.mb)
+      << (e.D > 0 ? ", D = " + format_significant(e.D, 3) + " m" : std::string(", D not given")) << "\n";
   return out.str();
 }
 

@@ -17,14 +17,18 @@ namespace trebuchet {
 /// The calculator's design. Throws Error(numerical) if a number is not finite.
 std::string design_table(const OptimalEngine& design);
 
-/// A shot's figures, and the check of a predicted capacity when there is one.
-std::string verification_table(const Verification& v, const std::optional<CapacityCheck>& check = std::nullopt);
+/// A shot's figures, and the check of a predicted capacity when there is one. It begins with the
+/// engine simulated and every assumption (vacuum, g, the release rule, the target level); forces
+/// are in kN with their multiples of m·g or M·g, and the force factor of eq:F is named so, apart
+/// from the arm fraction F = (L2 + L3)/H.
+std::string verification_table(const Engine& engine, const ShotSettings& settings, const Verification& v,
+                               const std::optional<CapacityCheck>& check = std::nullopt);
 
 /// Two indented lines with units: Lb, H and the lengths; the masses and D.
 std::string engine_table(const Engine& engine);
 
 /// An optimum: where its search started and what it cost, its engine and its shot.
-std::string optimum_table(const Optimum& optimum);
+std::string optimum_table(const Optimum& optimum, const ShotSettings& settings);
 
 /// One CSV row per trace point: phase, time [s], angles [deg], angular speeds [rad/s],
 /// forces (F_S_perp/(m g), F_R and its components/(M g), F_H/(M g), normal/(m g)),
