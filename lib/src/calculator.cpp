@@ -518,6 +518,8 @@ OptimalEngine scale_optimal_engine(const OptimalEngine& design, double lambda) {
   const Material& material = design.engine.material;
   const SizeFactors factors = size_factors(design.engine.L2, material, lambda * design.engine.L2, material);  // eq:ExtraScalings
   OptimalEngine scaled = design;
+  scaled.scaled_from = OptimalEngine::Scaling{lambda * (design.scaled_from ? design.scaled_from->factor : 1),
+                                              design.scaled_from ? design.scaled_from->full_size : design.capacity};
   scaled.engine = resized(design.engine, factors);
   scaled.capacity.R *= factors.length;
   scaled.capacity.T *= factors.energy;

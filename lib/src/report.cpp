@@ -42,6 +42,10 @@ std::string design_table(const OptimalEngine& design) {
        format_fraction(design.F) + ", beta2 = " + format_fraction(e.material.beta2) + ", " +
        (design.branch == Branch::none ? std::string("segment") : std::string(branch_name(design.branch)) + " branch") +
        " X in [" + format_number(design.segment_X_min) + ", " + format_number(design.segment_X_max) + "]\n";
+  if (design.scaled_from)
+    t += "A MODEL at " + format_significant(design.scaled_from->factor, 4) + " of the size of the optimal engine for R = " +
+         with_unit(design.scaled_from->full_size.R, "m") + ", T = " + energy_text(design.scaled_from->full_size.T) +
+         " (eq:ExtraScalings); the capacity below is the model's\n";
   t += "  capacity       " + cell("R", with_unit(design.capacity.R, "m")) + cell("T", energy_text(design.capacity.T)) +
        cell("X", format_significant(design.coordinates.X, 3)) + cell("Y", format_significant(design.coordinates.Y, 3)) + "\n";
   t += "  beam           " + cell("L1", with_unit(e.L1, "m")) + cell("L2", with_unit(e.L2, "m")) +

@@ -146,6 +146,8 @@ nlohmann::ordered_json design_json(const OptimalEngine& design) {
   nlohmann::ordered_json out = nlohmann::ordered_json::object();
   for (const Field& field : fields) out[field.key] = field.value;
   out["branch"] = branch_name(design.branch);
+  if (design.scaled_from)
+    out["scaled_from"] = {{"factor", design.scaled_from->factor}, {"R", design.scaled_from->full_size.R}, {"T", design.scaled_from->full_size.T}};
   if (design.branch_steps) {
     nlohmann::ordered_json steps = nlohmann::ordered_json::object();
     for (Param param : all_params) steps[std::string(param_name(param))] = (*design.branch_steps)[index(param)];

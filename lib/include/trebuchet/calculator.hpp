@@ -51,6 +51,13 @@ struct OptimalEngine {
   double amplification = 1;
   /// S_Z = Z_upper/Z_lower at X_d (eq:ZiZj_vs_X), set when X lies where both branches exist.
   std::optional<std::array<double, param_count>> branch_steps;
+  /// Set for a model (--scale): the factor of the optimum's size it is built at, and the
+  /// capacity of the full-size optimum it was scaled from.
+  struct Scaling {
+    double factor;
+    Capacity full_size;
+  };
+  std::optional<Scaling> scaled_from;
   std::vector<std::string> warnings;
 };
 
