@@ -153,7 +153,10 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
   if (in.capacity) check = check_capacity(v, *in.capacity, tolerance);
   out.json = verification_json(v, check);
   out.table = fitted_table + verification_table(engine, settings, v, check);
-  if (fit) out.json["engine"] = fitted;
+  // The engine simulated (for fit, the fitted one, with its shots) and what the shot assumed.
+  if (!fit) write_engine(fitted, engine);
+  out.json["engine"] = fitted;
+  out.json["assumptions"] = assumptions_json(engine, settings);
   if (!o.series.empty()) {
     std::ofstream file(o.series);
     file << trace_csv(trace, engine);

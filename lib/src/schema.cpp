@@ -4,6 +4,7 @@
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
+#include "trebuchet/names.hpp"
 #include "trebuchet/units.hpp"
 
 namespace trebuchet {
@@ -138,6 +139,18 @@ EngineRecord read_engine(const nlohmann::json& object, const std::string& where)
     throw Error(ErrorKind::bad_number, (where.empty() ? std::string("flags") : where) + ": R and T must be positive");
   if (R) in.capacity = Capacity{*R, *T, 0};
   return in;
+}
+
+nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings& settings) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  out["air"] = "vacuum";
+  out["g"] = engine.material.g;
+  out["theta_i_deg"] = engine.theta_i_deg;
+  out["F"] = arm_fraction(engine);
+  out["release"] = release_name(settings.criterion.release);
+  out["n"] = settings.criterion.n;
+  out["target_level"] = settings.target_level;
+  return out;
 }
 
 nlohmann::ordered_json design_json(const OptimalEngine& design) {

@@ -46,6 +46,10 @@ EngineRecord read_engine(const nlohmann::json& object, const std::string& where)
 
 /// The calculator's design: R, T, X, Y, the engine's keys, amplification, branch, warnings and,
 /// near X_d, branch_steps.
+/// What a shot assumed: "air" ("vacuum"), g [m/s^2], theta_i_deg, the arm fraction F, the
+/// release criterion (--quality) and n, and the target level [m].
+nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings& settings);
+
 nlohmann::ordered_json design_json(const OptimalEngine& design);
 
 /// Comma-separated column names, in the order of design_csv_row.
