@@ -112,15 +112,13 @@ void run_gnuplot(const std::filesystem::path& folder, const std::string& script)
                                       (child >= 0 && WIFEXITED(status) && WEXITSTATUS(status) == 127 ? " (gnuplot is not installed; apt-get install gnuplot-nox)" : ""));
 }
 
-// --plot DIR: the pictures of the shot (pictures.hpp), from the motion sampled anew.
-void write_pictures(const std::string& dir, const Engine& engine, const Verification& v, const ShotSettings& settings) {
-  std::vector<TracePoint> trace;
-  verify_engine(engine, settings, &trace, picture_sampling(v.t_release));
+// --plot DIR: the pictures of the shot (pictures.hpp).
+void write_pictures(const std::string& dir, const Engine& engine, const ShotSettings& settings) {
   const std::filesystem::path folder(dir);
   std::error_code ec;
   std::filesystem::create_directories(folder, ec);
   std::filesystem::remove(folder / "gnuplot.log", ec);
-  for (const PictureFile& file : shot_pictures(engine, v, trace, settings.target_level)) {
+  for (const PictureFile& file : shot_pictures(engine, settings)) {
     std::ofstream out(folder / file.name);
     out << file.text;
     if (!out) throw Error(ErrorKind::usage, "--plot: cannot write " + (folder / file.name).string() + "; give a folder you can write to");
@@ -148,7 +146,7 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
   std::vector<TracePoint> trace;
   const double series_dt = o.series_dt.empty() ? 0 : parse_positive(o.series_dt, UnitDimension::time, "--series-dt");
   const Verification v = verify_engine(engine, settings, o.series.empty() ? nullptr : &trace, series_dt);
-  if (!o.plot.empty()) write_pictures(o.plot, engine, v, settings);
+  if (!o.plot.empty()) write_pictures(o.plot, engine, settings);
   std::optional<CapacityCheck> check;
   if (in.capacity) check = check_capacity(v, *in.capacity, tolerance);
   out.json = verification_json(v, check);

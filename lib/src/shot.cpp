@@ -291,7 +291,7 @@ void trace_released(const Dynamics& dynamics, const IntegratorSettings& settings
 }  // namespace
 
 ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
-                         std::vector<TracePoint>* trace, double trace_dt) {
+                         std::vector<TracePoint>* trace, double trace_dt, std::vector<TracePoint>* unreleased) {
   use_gsl_return_codes();
   if (!(e.L() > 0))
     fail("no room for the counterweight arm: L3/L2 = F l cos(theta_i) - 1 = " + format_significant(e.L(), 4) +
@@ -403,6 +403,12 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
     if (!(trace_dt > 0))  // the continuous record ends on the release already
       trace->push_back({Phase::lifted, t_release, result.release.state, dynamics.snapshot(Phase::lifted, result.release.state)});
     trace_released(dynamics, settings, result.release.state, t_release, trace_dt, *trace);
+  }
+  if (unreleased) {  // phase II past the release, as far as the search looked
+    std::vector<TracePoint> all;
+    record_trace(&all, lifted, phase2, result.t_liftoff, samples.back().t, trace_dt);
+    for (const TracePoint& p : all)
+      if (p.t > t_release) unreleased->push_back(p);
   }
   return result;
 }

@@ -18,18 +18,13 @@ struct PictureFile {
   std::string text;
 };
 
-/// The picture set of a shot. `trace` is the motion sampled every `trace_dt_s` seconds
-/// (verify_engine with a trace), `v` its verification, `target_level` the one it was shot at [m].
-/// The gnuplot scripts (*.gp) write engine.svg, paths.svg, forces.svg, energy.svg,
-/// release.svg and shot.gif in the folder they are run in.
-std::vector<PictureFile> shot_pictures(const Engine& engine, const Verification& v, const std::vector<TracePoint>& trace,
-                                       double target_level);
+/// The picture set of a shot of `engine` under `settings`: it simulates the shot, sampled about
+/// 200 times up to the release, and phase II past the release for the release picture. The
+/// gnuplot scripts (*.gp) write engine.svg, paths.svg, forces.svg, energy.svg, release.svg and
+/// shot.gif in the folder they are run in.
+std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings);
 
 /// The gnuplot scripts of the set, in the order to run them.
 std::vector<std::string> picture_scripts();
-
-/// The sampling interval [s] the pictures want for a shot released at t_release_s: about 200
-/// points up to the release.
-double picture_sampling(double t_release_s);
 
 }  // namespace trebuchet

@@ -58,7 +58,9 @@ struct TracePoint {
 /// With `trace`, the motion up to the release, the release itself, and phase III (beam and
 /// counterweight alone) for as long again, are appended to it: at the integrator's step ends,
 /// or with trace_dt > 0 (scaled) at every multiple of trace_dt on the continuous solution.
+/// `unreleased` gets phase II past the release, had the projectile not been let go, as far as
+/// the release search looked (the objective down to half its best), sampled alike.
 ShotResult simulate_shot(const ScaledDesign& design, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
-                         std::vector<TracePoint>* trace = nullptr, double trace_dt = 0);
+                         std::vector<TracePoint>* trace = nullptr, double trace_dt = 0, std::vector<TracePoint>* unreleased = nullptr);
 
 }  // namespace trebuchet
