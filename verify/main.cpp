@@ -246,9 +246,12 @@ void read_block(const Options& o, double& theta_i_deg, double& F) {
 // optimize: the ab-initio optimum for the capacity, one per start (branch).
 int run_optimize(const Options& o) {
   check_format(o);
-  if (o.R.empty() || o.T.empty()) throw Error(ErrorKind::usage, "optimize needs a capacity; give --R and --T, e.g. --R 425m --T 224kJ");
+  const std::string& m = o.engine_flags.at("m");
+  if (o.R.empty() || o.T.empty() == m.empty())
+    throw Error(ErrorKind::usage, "optimize needs a capacity: --R with --T, or --R with the stone's --m; e.g. --R 425m --T 224kJ, or --R 450m --m 100kg");
   OptimizeRequest request;
-  request.capacity = {parse_positive(o.R, UnitDimension::length, "--R"), parse_positive(o.T, UnitDimension::energy, "--T"), 0};
+  request.capacity = {parse_positive(o.R, UnitDimension::length, "--R"), o.T.empty() ? 0 : parse_positive(o.T, UnitDimension::energy, "--T"), 0};
+  if (!m.empty()) request.projectile_mass = parse_positive(m, UnitDimension::mass, "--m");
   read_block(o, request.theta_i_deg, request.F);
   request.material = sizing_material(o, Material{});
   request.settings = shot_settings(o);
@@ -384,7 +387,7 @@ int main(int argc, char** argv) {
   CLI::App* shot = app.add_subcommand("shot", "range, energy, efficiency, forces and quality at the best release of a design "
                                               "(a JSON file, - for stdin, or flags), checked against a predicted capacity");
   CLI::App* fit = app.add_subcommand("fit", "keep a design's shape (l, l4, mu_b, theta_i, F); fit mu and the size to --R and --T, then shoot");
-  CLI::App* optimizer = app.add_subcommand("optimize", "the ab-initio optimum for --R and --T at --theta and --F (section 5)");
+  CLI::App* optimizer = app.add_subcommand("optimize", "the ab-initio optimum for --R and --T (or --R and --m) at --theta and --F (section 5)");
   CLI::App* derive = app.add_subcommand("derive-table", "re-derive tab:CPNC for --theta and --F: optimise along --X and fit eq:f_ZX "
                                                         "(JSON for the calculator's --table)");
   CLI::App* merge = app.add_subcommand("merge", "join the parts written by derive-table --shard into one table");
@@ -398,6 +401,7 @@ int main(int argc, char** argv) {
   add_sizing_options(fit, o, "the design");
   optimizer->add_option("--R", o.R, "range [m]");
   optimizer->add_option("--T", o.T, "energy at the target [J]");
+  optimizer->add_option("--m", o.engine_flags["m"], "projectile mass, instead of --T: the optimum for R with this stone, T free [kg]");
   for (CLI::App* sub : {optimizer, derive}) {
     sub->add_option("--theta", o.theta, "initial beam angle theta_i [deg] (default 30)");
     sub->add_option("--F", o.engine_flags["F"], "counterweight arm fraction (L2+L3)/H (default 2/3)");

@@ -8,43 +8,49 @@
 
 namespace trebuchet {
 
-CapacityFit fit_capacity(const ScaledDesign& shape, const Capacity& capacity, const Material& material,
-                         const ShotSettings& settings, double rtol) {
-  const double R = capacity.R, T = capacity.T;
+namespace {
+
+// What the fit matches besides R: the energy T [J] (section 5) or the projectile's mass m [kg].
+enum class Matched { energy, mass };
+
+CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, double target, const Material& material,
+                      const ShotSettings& settings, double rtol) {
   CapacityFit fit;
   ScaledDesign design = shape;
-  // One shot of the design with ratio mu gives the L2 that lands at R, and the T delivered there.
+  // One shot of the design with ratio mu gives the L2 that lands at R; eq:ExtraScalings then
+  // gives M there, so the T delivered and the m thrown.
   struct Trial {
     ShotResult shot;
-    double L2, T;
+    double L2, value;  // [m]; T [J] or m [kg]
   };
   auto trial = [&](double mu) {
     design.mu = mu;
     Trial out{simulate_shot(design, settings.criterion, settings.integrator), 0, 0};
     ++fit.simulations;
     out.L2 = R / out.shot.release.range;
-    out.T = extra_scalings(design.K(), out.L2, material).energy_unit * out.shot.release.energy_at_target;  // eq:ExtraScalings
+    const ExtraScalings sizes = extra_scalings(design.K(), out.L2, material);  // eq:ExtraScalings
+    out.value = matched == Matched::energy ? sizes.energy_unit * out.shot.release.energy_at_target : mu * sizes.M;
     return out;
   };
-  auto log_T_error = [&](double log_mu) { return std::log(trial(std::exp(log_mu)).T / T); };
-  // The guess: the given mu (a warm start), or one without a shot: T ~ m g R / 2 gives m
+  auto log_error = [&](double log_mu) { return std::log(trial(std::exp(log_mu)).value / target); };
+  // The guess: the given mu (a warm start), or one without a shot: T ~ m g R / 2 ties m and T
   // (section 4), and T ~ 0.9 Delta U with Delta U = M g L2 (Delta U/(M g L2)) (eq:DU) and
   // M g L2 ~ L2^5 (eq:ExtraScalings) gives L2 and M.
+  const double T_guess = matched == Matched::energy ? target : target * material.g * R / 2;
+  const double m_guess = 2 * T_guess / (material.g * R);
   const double drop_per_L2_5 = extra_scalings(shape.K(), 1.0, material).energy_unit * shape.energy_drop();  // Delta U at L2 = 1 m [J]
-  const double L2_guess = std::pow(T / (0.9 * drop_per_L2_5), 0.2);
-  const double m_guess = 2 * T / (material.g * R);
+  const double L2_guess = std::pow(T_guess / (0.9 * drop_per_L2_5), 0.2);
   const bool warm = shape.mu > 0;
   const double log_mu_guess = warm ? std::log(shape.mu) : std::log(m_guess / extra_scalings(shape.K(), L2_guess, material).M);
-  // T grows with mu where the fit has worked (a heavier stone needs a larger engine for the
-  // same R), so the walk goes first the way the error at the guess points, then the other way:
-  // outward in steps that double from 1 % (warm) or 5 % in mu, up to a factor 20, to the first
-  // sign change of the T error. T(mu) need not be monotone (the release can move between
-  // maxima of the objective); shots that fail on the way are stepped over.
+  // T and m grow with mu where the fit has worked (a heavier stone needs a larger engine for
+  // the same R), so the walk goes first the way the error at the guess points, then the other
+  // way: outward in steps that double from 1 % (warm) or 5 % in mu, up to a factor 20, to the
+  // first sign change of the error; shots that fail on the way are stepped over.
   const double first_step = warm ? 0.01 : 0.05, reach = 3.0;
   auto error_or_nan = [&](double log_mu) {
     if (log_mu < std::log(1e-6) || log_mu > 0) return std::nan("");
     try {
-      return log_T_error(log_mu);
+      return log_error(log_mu);
     } catch (const Error&) {
       return std::nan("");
     }
@@ -66,13 +72,14 @@ CapacityFit fit_capacity(const ScaledDesign& shape, const Capacity& capacity, co
     }
     if (bracketed) break;
   }
+  const std::string goal = matched == Matched::energy ? "deliver " + format_significant(target / 1e3, 4) + " kJ at " + format_significant(R, 4) + " m"
+                                                      : "throw " + format_significant(target, 4) + " kg to " + format_significant(R, 4) + " m";
   if (!bracketed)
     throw Error(ErrorKind::out_of_range, "no projectile mass within a factor 20 of " +
                                              (warm ? "the starting m/M = " + format_significant(shape.mu, 3)
                                                    : "m = 2T/(gR) = " + format_significant(m_guess, 3) + " kg") +
-                                             " lets this shape deliver " + format_significant(T / 1e3, 4) + " kJ at " +
-                                             format_significant(R, 4) + " m; change the shape (l, l4, mu_b) or the capacity");
-  const Trial found = trial(std::exp(find_root(log_T_error, lo, hi, 0.1 * rtol, 0)));
+                                             " lets this shape " + goal + "; change the shape (l, l4, mu_b) or the capacity");
+  const Trial found = trial(std::exp(find_root(log_error, lo, hi, 0.1 * rtol, 0)));
   fit.design = design;
   fit.engine = engine_of(design, found.L2, material);  // the one conversion to SI
   fit.verification = verification_of(fit.engine, found.shot, 0);
@@ -80,12 +87,25 @@ CapacityFit fit_capacity(const ScaledDesign& shape, const Capacity& capacity, co
   if (!(fit.verification.eps <= 1))
     throw Error(ErrorKind::numerical, "the fitted engine has eps = " + format_significant(fit.verification.eps, 4) +
                                           " > 1: energy is not conserved (eq:Aux); tighten --rtol");
-  if (!(std::abs(found.T / T - 1) <= rtol))
-    throw Error(ErrorKind::numerical, "the capacity fit reached R = " + format_significant(fit.verification.capacity.R, 8) +
-                                          " m, T = " + format_significant(found.T, 8) + " J, not within " +
-                                          format_significant(rtol, 2) + " of the request: T jumps with mu here, as the "
+  if (!(std::abs(found.value / target - 1) <= rtol))
+    throw Error(ErrorKind::numerical, "the fit reached R = " + format_significant(fit.verification.capacity.R, 8) + " m with " +
+                                          (matched == Matched::energy ? "T = " + format_significant(found.value, 8) + " J"
+                                                                      : "m = " + format_significant(found.value, 8) + " kg") +
+                                          ", not within " + format_significant(rtol, 2) + " of the request: it jumps with mu here, as the "
                                           "release moves from one maximum of the objective to another");
   return fit;
+}
+
+}  // namespace
+
+CapacityFit fit_capacity(const ScaledDesign& shape, const Capacity& capacity, const Material& material,
+                         const ShotSettings& settings, double rtol) {
+  return fit_shape(shape, capacity.R, Matched::energy, capacity.T, material, settings, rtol);
+}
+
+CapacityFit fit_range_and_mass(const ScaledDesign& shape, double R, double m, const Material& material, const ShotSettings& settings,
+                               double rtol) {
+  return fit_shape(shape, R, Matched::mass, m, material, settings, rtol);
 }
 
 }  // namespace trebuchet

@@ -31,7 +31,7 @@ std::vector<Start> starts_for(const OptimizeRequest& r) {
   for (BranchChoice branch : {BranchChoice::lower, BranchChoice::upper, BranchChoice::automatic}) {
     DesignRequest d;
     d.first = {Quantity::R, r.capacity.R};
-    d.second = {Quantity::T, r.capacity.T};
+    d.second = r.projectile_mass ? Given{Quantity::m, *r.projectile_mass} : Given{Quantity::T, r.capacity.T};
     d.theta_i_deg = r.theta_i_deg;
     d.F = r.F;
     d.branch = branch;
@@ -73,7 +73,9 @@ struct Search {
     const double warm_mu = best > 0 ? best_fit.design.mu : 0;
     const ScaledDesign shape{std::exp(gsl_vector_get(x, 0)), std::exp(gsl_vector_get(x, 1)), std::exp(gsl_vector_get(x, 2)), warm_mu, theta, F};
     try {
-      const CapacityFit fit = fit_capacity(shape, request->capacity, request->material, request->settings);
+      const CapacityFit fit = request->projectile_mass
+                                  ? fit_range_and_mass(shape, request->capacity.R, *request->projectile_mass, request->material, request->settings)
+                                  : fit_capacity(shape, request->capacity, request->material, request->settings);
       simulations += fit.simulations;
       const double q = objective_of(fit.verification);
       if (q > best) best = q, best_fit = fit;
@@ -119,7 +121,9 @@ Optimum search_from(const OptimizeRequest& request, const Start& start) {
   if (!(search.best > 0))
     throw Error(ErrorKind::out_of_range, "no shape near the " + start.name + " start delivers " +
                                              format_significant(request.capacity.R, 4) + " m with " +
-                                             format_significant(request.capacity.T / 1e3, 4) + " kJ (the last shape tried: " +
+                                             (request.projectile_mass ? format_significant(*request.projectile_mass, 4) + " kg stones"
+                                                                      : format_significant(request.capacity.T / 1e3, 4) + " kJ") +
+                                             " (the last shape tried: " +
                                              search.last_failure + "); try another capacity, theta_i or F");
   out.fit = search.best_fit;
   out.objective = search.best;

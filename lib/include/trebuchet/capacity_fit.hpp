@@ -30,4 +30,10 @@ struct CapacityFit {
 CapacityFit fit_capacity(const ScaledDesign& shape, const Capacity& capacity, const Material& material,
                          const ShotSettings& settings, double rtol = 1e-6);
 
+/// As fit_capacity, for a range R [m] and a projectile mass m [kg] (a capacity as historians
+/// state it): mu and the size are fitted so that the shot lands at R with m = mu M, each to
+/// `rtol` relative; T is what follows.
+CapacityFit fit_range_and_mass(const ScaledDesign& shape, double R, double m, const Material& material, const ShotSettings& settings,
+                               double rtol = 1e-6);
+
 }  // namespace trebuchet

@@ -3,6 +3,7 @@
 // Nelder-Mead simplex in (log l, log l4, log mu_b), started from the calculator's designs.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,8 @@ inline constexpr double max_beam_ratio = 60;
 
 struct OptimizeRequest {
   Capacity capacity;                           ///< R [m] and T [J] at level 0
+  /// m [kg]: optimise for the range R and this projectile mass, T free (capacity.T is not used).
+  std::optional<double> projectile_mass;
   double theta_i_deg = standard_theta_i_deg;   ///< [deg]
   double F = standard_F;                       ///< (L2 + L3)/H, scaled
   Material material{};
