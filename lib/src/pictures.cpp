@@ -27,7 +27,7 @@ Moments moments_of(const std::vector<TracePoint>& trace) {
     const Snapshot& s = trace[i].snapshot;
     if (trace[i].phase == Phase::trough) m.liftoff = i;
     m.release = i;
-    const double reaction = std::hypot(s.pivot_reaction.x, s.pivot_reaction.y);
+    const double reaction = force_values(s)[pivot_reaction];
     if (reaction > largest) largest = reaction, m.peak_reaction = i;
     if (s.pivot_reaction.x > most) most = s.pivot_reaction.x, most_at = i;
     if (s.pivot_reaction.x < least) least = s.pivot_reaction.x, least_at = i;
@@ -86,12 +86,12 @@ std::vector<std::string> picture_scripts() { return {"engine.gp", "paths.gp", "f
 std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings) {
   const ScaledDesign d = scaled_design(engine);
   const double target_level = settings.target_level;
-  const Verification v = verify_engine(engine, settings);
-  std::vector<TracePoint> trace, unreleased;
-  simulate_shot(d, settings.criterion, settings.integrator, &trace, v.t_release / std::sqrt(engine.L2 / engine.material.g) / 200, &unreleased);
   const double g = engine.material.g, H = pivot_height(engine);
   const double mg_kN = engine.m * g / 1000, Mg_kN = engine.M * g / 1000, energy_kJ = engine.M * g * engine.L2 / 1000;
-  const double time_unit = std::sqrt(engine.L2 / g);
+  const double time_unit = std::sqrt(engine.L2 / g);  // section 3 [s]
+  const Verification v = verify_engine(engine, settings);
+  std::vector<TracePoint> trace, unreleased;
+  simulate_shot(d, settings.criterion, settings.integrator, &trace, v.t_release / time_unit / 200, &unreleased);
   const Moments m = moments_of(trace);
   auto seconds = [&](std::size_t i) { return trace[i].t * time_unit; };
   std::vector<PictureFile> files;
@@ -119,17 +119,30 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   running = ForceExtremes{};
   std::vector<TracePoint> phase_two(trace.begin(), trace.begin() + m.release + 1);
   phase_two.insert(phase_two.end(), unreleased.begin(), unreleased.end());
-  for (const TracePoint& p : phase_two) {
-    const Snapshot& s = p.snapshot;
-    running.add(force_values(s));
+  // Each moment as a release (shot.hpp), so that Q is the Q_n the shot maximised and R the
+  // range at level 0; each over its value at the release itself.
+  struct Row {
+    double t;
+    ReleasePoint r;
+    ForceValues extremes;
+  };
+  std::vector<Row> rows;
+  std::size_t release_row = 0;
+  for (std::size_t i = 0; i < phase_two.size(); ++i) {
+    const TracePoint& p = phase_two[i];
+    const ForceExtremes before = running;
+    running.add(force_values(p.snapshot));
     if (p.phase != Phase::lifted) continue;
-    const double height = d.l * std::cos(radians(d.theta_i_deg)) + s.projectile.y;
-    if (!(s.projectile_velocity.x < 0 && height >= 0)) continue;
-    const double rho = vacuum_range(s.projectile, s.projectile_velocity, height, 1);
-    const double eps = efficiency(energy_at_target(d.mu, s.projectile_velocity, height), d.energy_drop());
-    const double q = quality(rho, d.l, d.mu, eps, force_factor(running, d.mu), 1);
-    release_csv << num(p.t * time_unit) << "," << num(q / (v.Q > 0 ? v.Q : 1)) << "," << num(eps / v.eps) << "," << num(rho * engine.L2 / (v.capacity.R > 0 ? v.capacity.R : 1));
-    for (int k = 0; k < force_count; ++k) release_csv << "," << num(running.max[k] / final_extremes.max[k]);
+    const ReleasePoint r = release_point(d, settings.criterion, p.t, p.state, p.snapshot, before);
+    if (!(r.range > 0)) continue;
+    if (i == m.release) release_row = rows.size();
+    rows.push_back({p.t * time_unit, r, running.max});
+  }
+  for (const Row& row : rows) {
+    const ReleasePoint& at = rows[release_row].r;
+    release_csv << num(row.t) << "," << num(row.r.quality / at.quality) << "," << num(row.r.efficiency / at.efficiency) << ","
+                << num(row.r.range / at.range);
+    for (int k = 0; k < force_count; ++k) release_csv << "," << num(row.extremes[k] / final_extremes.max[k]);
     release_csv << "\n";
   }
   files.push_back({"release.csv", release_csv.str()});

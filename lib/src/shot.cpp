@@ -180,31 +180,6 @@ class PhaseRecord {
   std::vector<Peak> peaks_;
 };
 
-ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criterion, double t, const State& s,
-                           const Snapshot& snap, ForceExtremes extremes) {
-  extremes.add(force_values(snap));
-  ReleasePoint r;
-  r.t = t;
-  r.state = s;
-  r.position = snap.projectile;
-  r.velocity = snap.projectile_velocity;
-  r.height = e.l * std::cos(radians(e.theta_i_deg)) + r.position.y;
-  if (r.velocity.x < 0 && r.height >= 0) r.range = vacuum_range(r.position, r.velocity, r.height, 1);  // toward the target, level 0
-  r.energy_at_target = energy_at_target(e.mu, r.velocity, r.height);
-  r.efficiency = efficiency(r.energy_at_target, e.energy_drop());
-  r.extremes = extremes;
-  r.force_factor = force_factor(extremes, e.mu);
-  if (r.range > 0) {
-    r.quality = quality(r.range, e.l, e.mu, r.efficiency, r.force_factor, criterion.n);
-    switch (criterion.release) {
-      case Release::quality: r.objective = r.quality; break;
-      case Release::efficiency: r.objective = r.efficiency; break;
-      case Release::range: r.objective = r.range; break;  // tab:Denny, "Present" row
-    }
-  }
-  return r;
-}
-
 // The objective is smooth between the onsets of growth of the running extremes, where its slope
 // jumps. Each smooth piece is maximised, at the root of its slope when the maximum lies inside,
 // else at an end; the best of these candidates is the release. `estimate` is where the maximum
@@ -248,8 +223,8 @@ std::pair<double, std::optional<ForceIndex>> release_time(const Objective& objec
 
 [[noreturn]] void fail(const std::string& reason) { throw Error(ErrorKind::numerical, reason); }
 
-// The motion of one phase over [t_begin, t_end] for the series: the step ends, or with dt > 0
-// the continuous solution at every multiple of dt and then t_end itself.
+// The motion of one phase over [t_begin, t_end] for the series: the step ends in it, or with
+// dt > 0 the continuous solution at every multiple of dt after t_begin (at 0 too) and t_end.
 void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, const PhaseRecord& record, double t_begin,
                   double t_end, double dt) {
   if (!trace) return;
@@ -259,7 +234,7 @@ void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, c
   };
   if (!(dt > 0)) {
     for (const auto& sample : record.samples())
-      if (sample.t <= t_end) add(sample.t, sample.y);
+      if (sample.t >= t_begin && sample.t <= t_end) add(sample.t, sample.y);
     return;
   }
   for (double k = std::ceil(t_begin / dt); k * dt < t_end; ++k)
@@ -289,6 +264,31 @@ void trace_released(const Dynamics& dynamics, const IntegratorSettings& settings
 }
 
 }  // namespace
+
+ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criterion, double t, const State& s,
+                           const Snapshot& snap, ForceExtremes extremes) {
+  extremes.add(force_values(snap));
+  ReleasePoint r;
+  r.t = t;
+  r.state = s;
+  r.position = snap.projectile;
+  r.velocity = snap.projectile_velocity;
+  r.height = e.l * std::cos(radians(e.theta_i_deg)) + r.position.y;
+  if (r.velocity.x < 0 && r.height >= 0) r.range = vacuum_range(r.position, r.velocity, r.height, 1);  // toward the target, level 0
+  r.energy_at_target = energy_at_target(e.mu, r.velocity, r.height);
+  r.efficiency = efficiency(r.energy_at_target, e.energy_drop());
+  r.extremes = extremes;
+  r.force_factor = force_factor(extremes, e.mu);
+  if (r.range > 0) {
+    r.quality = quality(r.range, e.l, e.mu, r.efficiency, r.force_factor, criterion.n);
+    switch (criterion.release) {
+      case Release::quality: r.objective = r.quality; break;
+      case Release::efficiency: r.objective = r.efficiency; break;
+      case Release::range: r.objective = r.range; break;  // tab:Denny, "Present" row
+    }
+  }
+  return r;
+}
 
 ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
                          std::vector<TracePoint>* trace, double trace_dt, std::vector<TracePoint>* unreleased) {
@@ -406,7 +406,7 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   }
   if (unreleased) {  // phase II past the release, as far as the search looked
     std::vector<TracePoint> all;
-    record_trace(&all, lifted, phase2, result.t_liftoff, samples.back().t, trace_dt);
+    record_trace(&all, lifted, phase2, t_release, samples.back().t, trace_dt);
     for (const TracePoint& p : all)
       if (p.t > t_release) unreleased->push_back(p);
   }

@@ -30,6 +30,12 @@ struct ReleasePoint {
   double objective = 0;         ///< what the release maximises: Q, eps or the range
 };
 
+/// The figures of a release at scaled time t from state s (with its snapshot), given the running
+/// extremes of eq:F before t; the objective follows the criterion. Q (or Q_n), the range and the
+/// objective stay 0 where the projectile would not fly forward from above the base.
+ReleasePoint release_point(const ScaledDesign& design, const ReleaseCriterion& criterion, double t, const State& s,
+                           const Snapshot& snapshot, ForceExtremes extremes_before);
+
 struct ShotResult {
   double t_liftoff = 0;         ///< scaled
   ReleasePoint release;
