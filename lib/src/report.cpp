@@ -6,6 +6,7 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/units.hpp"
 #include "trebuchet/format.hpp"
+#include "trebuchet/quality.hpp"
 
 namespace trebuchet {
 namespace {
@@ -146,7 +147,7 @@ std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine
                           p.state.psi_dot / time_unit,
                           gone ? none : p.state.phi_dot / time_unit,
                           s.sling_perpendicular / scaled.mu,
-                          std::hypot(s.pivot_reaction.x, s.pivot_reaction.y),
+                          force_values(s)[pivot_reaction],
                           s.pivot_reaction.x,
                           s.pivot_reaction.y,
                           std::hypot(s.hinge_force.x, s.hinge_force.y),
