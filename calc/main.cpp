@@ -9,6 +9,7 @@
 
 #include "trebuchet/batch.hpp"
 #include "trebuchet/calculator.hpp"
+#include "trebuchet/csv.hpp"
 #include "trebuchet/format.hpp"
 #include "program.hpp"
 #include "trebuchet/error.hpp"
@@ -33,6 +34,7 @@ struct Options {
   std::string format = "table";
   std::string batch;
   std::string table_file;
+  std::string digits;  // empty: default_csv_digits
 };
 
 Material material_from(const Options& options, const Material& reference) {
@@ -46,15 +48,16 @@ Material material_from(const Options& options, const Material& reference) {
   return material;
 }
 
-void print(const OptimalEngine& design, const std::string& format) {
+void print(const OptimalEngine& design, const std::string& format, int digits) {
   if (format == "json") std::cout << design_json(design).dump(2) << "\n";
-  else if (format == "csv") std::cout << design_csv_header() << "\n" << design_csv_row(design) << "\n";
+  else if (format == "csv") std::cout << csv_line(design_csv_header()) << csv_line(design_csv_row(design, digits));
   else std::cout << design_table(design);
 }
 
 int run(const Options& options) {
   if (options.format != "table" && options.format != "csv" && options.format != "json")
     throw Error(ErrorKind::usage, "--format: '" + options.format + "' is not a format; use table, csv or json");
+  const int digits = options.digits.empty() ? default_csv_digits : parse_digits(options.digits, "--digits");
   const ScalingTable table_from_file =
       options.table_file.empty() ? ScalingTable{} : load_scaling_table(options.table_file);
   const ScalingTable& table = options.table_file.empty() ? builtin_scaling_table() : table_from_file;
@@ -85,22 +88,38 @@ int run(const Options& options) {
     }
     std::istream& input = options.batch == "-" ? std::cin : file;
     const bool json = options.format == "json";
-    if (!json) std::cout << "line," << design_csv_header() << "\n";
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-    // A row is printed only once it is whole, so that a failure cannot leave half a row.
-    const int failures = run_batch(input, table, request, [&](int line, const OptimalEngine* design, const Error* error) {
-      if (!design) {
-        std::cerr << "trebuchet-calc: line " << line << ": " << error->what() << "\n";
-        if (json) rows.push_back({{"line", line}, {"error", error->what()}, {"exit_code", exit_code(Program::calc, error->kind())}});
-      } else if (json) {
-        nlohmann::ordered_json row = {{"line", line}};
-        row.update(design_json(*design));
-        rows.push_back(row);
-      } else {
-        const std::string row = std::to_string(line) + "," + design_csv_row(*design) + "\n";
-        std::cout << row;
-      }
-    });
+    std::vector<std::string> passed_columns;
+    const std::size_t design_columns = design_csv_header().size();
+    // A row is printed only once it is whole, so that a failure cannot leave half a row. A
+    // failed row keeps its place, with its pass-through cells and the message under "error".
+    const int failures = run_batch(
+        input, table, request,
+        [&](const std::vector<std::string>& passed) {
+          passed_columns = passed;
+          std::vector<std::string> header = {"line"};
+          header.insert(header.end(), passed.begin(), passed.end());
+          for (const std::string& column : design_csv_header()) header.push_back(column);
+          header.push_back("error");
+          if (!json) std::cout << csv_line(header);
+        },
+        [&](const BatchRow& row) {
+          if (row.error) std::cerr << "trebuchet-calc: line " << row.line << ": " << row.error->what() << "\n";
+          if (json) {
+            nlohmann::ordered_json out = {{"line", row.line}};
+            for (std::size_t k = 0; k < passed_columns.size(); ++k) out[passed_columns[k]] = row.passed[k];
+            if (row.design) out.update(design_json(*row.design));
+            else out.update({{"error", row.error->what()}, {"exit_code", exit_code(Program::calc, row.error->kind())}});
+            rows.push_back(out);
+            return;
+          }
+          std::vector<std::string> cells = {std::to_string(row.line)};
+          cells.insert(cells.end(), row.passed.begin(), row.passed.end());
+          const std::vector<std::string> design = row.design ? design_csv_row(*row.design, digits) : std::vector<std::string>(design_columns);
+          cells.insert(cells.end(), design.begin(), design.end());
+          cells.push_back(row.error ? row.error->what() : "");
+          std::cout << csv_line(cells);
+        });
     if (json) std::cout << rows.dump(2) << "\n";
     if (failures > 0) {
       std::cerr << "trebuchet-calc: " << failures << " row(s) failed; the other rows are in the output\n";
@@ -115,7 +134,7 @@ int run(const Options& options) {
                                             "e.g. --R 150m --m 50kg");
   request.first = givens[0];
   request.second = givens[1];
-  print(design_optimal_engine(table, request), options.format);
+  print(design_optimal_engine(table, request), options.format, digits);
   return 0;
 }
 
@@ -144,7 +163,8 @@ int main(int argc, char** argv) {
   app.add_flag("--extrapolate", options.extrapolate, "allow X outside the table's intervals, with a warning");
   app.add_option("--scale", options.scale, "print the same design scaled by this factor (a model)");
   app.add_option("--format", options.format, "table, csv or json")->capture_default_str();
-  app.add_option("--batch", options.batch, "CSV file of requests (- for stdin); header names two givens");
+  app.add_option("--batch", options.batch, "CSV file of requests (- for stdin): the header names two givens, other columns pass through (docs/csv.md)");
+  app.add_option("--digits", options.digits, "significant digits of CSV numbers (default " + std::to_string(default_csv_digits) + "; 17: exact)");
   app.add_option("--table", options.table_file, "constants file in the schema of data/cpnc.json");
 
   return run_program(app, Program::calc, argc, argv, [&] { return run(options); });

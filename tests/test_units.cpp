@@ -21,6 +21,7 @@ ErrorKind kind_of(std::string_view text, UnitDimension dimension) {
 TEST_CASE("unit suffixes convert to SI base units", "[units]") {
   CHECK(parse_value("150m", UnitDimension::length, "R") == 150);
   CHECK(parse_value("150", UnitDimension::length, "R") == 150);
+  CHECK(parse_value("150 m", UnitDimension::length, "R") == 150);  // as spreadsheets and people write it
   CHECK(parse_value("25cm", UnitDimension::length, "D") == Approx(0.25).epsilon(1e-15));
   CHECK(parse_value("3.1t", UnitDimension::mass, "M") == Approx(3100).epsilon(1e-15));
   CHECK(parse_value("500g", UnitDimension::mass, "m") == Approx(0.5).epsilon(1e-15));

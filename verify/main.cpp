@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <sstream>
 #include <map>
 #include <optional>
 #include <thread>
@@ -18,6 +19,7 @@
 
 #include "program.hpp"
 #include "trebuchet/capacity_fit.hpp"
+#include "trebuchet/csv.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/names.hpp"
@@ -54,6 +56,7 @@ struct Options {
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::string shard;
   std::vector<std::string> merge;
+  std::string digits;  // empty: default_csv_digits
 };
 
 const std::pair<const char*, UnitDimension> engine_keys[] = {
@@ -86,14 +89,15 @@ Material sizing_material(const Options& o, Material base) {
   return base;
 }
 
-void check_format(const Options& o) {
-  if (o.format != "table" && o.format != "json")
-    throw Error(ErrorKind::usage, "--format: '" + o.format + "' is not a format; use table or json");
+void check_format(const Options& o, bool csv_too = false) {
+  if (o.format != "table" && o.format != "json" && !(csv_too && o.format == "csv"))
+    throw Error(ErrorKind::usage, "--format: '" + o.format + "' is not a format; use table" + (csv_too ? ", json or csv" : " or json"));
 }
 
 struct Outcome {
   nlohmann::ordered_json json;
   std::string table;
+  std::vector<std::string> csv;  // with --format csv
   int code = exit_success;
 };
 
@@ -128,7 +132,7 @@ void write_pictures(const std::string& dir, const Engine& engine, const ShotSett
 
 // One design: read, optionally fitted to its capacity, shot, and checked against its capacity.
 Outcome verify_one(const nlohmann::json& object, const std::string& where, const Options& o, const ShotSettings& settings,
-                   double tolerance, bool fit) {
+                   double tolerance, bool fit, int digits) {
   EngineRecord in = read_engine(object, where);
   Engine engine = in.engine;
   engine.material = sizing_material(o, engine.material);
@@ -151,6 +155,7 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
   if (in.capacity) check = check_capacity(v, *in.capacity, tolerance);
   out.json = verification_json(v, check);
   out.table = fitted_table + verification_table(engine, settings, v, check);
+  if (o.format == "csv") out.csv = verification_csv_row(engine, settings, v, check, digits);
   // The engine simulated (for fit, the fitted one, with its shots) and what the shot assumed.
   if (!fit) write_engine(fitted, engine);
   out.json["engine"] = fitted;
@@ -164,73 +169,138 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
   return out;
 }
 
-// shot and fit: the design from a file, stdin or flags; an array is computed design by design.
+// The designs of a run: a JSON object, a JSON array, CSV rows (docs/csv.md), or the flags.
+struct Inputs {
+  std::vector<std::string> passed_columns;  // CSV columns that pass through, e.g. site
+  std::vector<DesignRows::Row> rows;
+  std::vector<std::string> where;           // how messages name each row: "design[2]", "line 3"
+  bool single = true;                       // one object or the flags: an error ends the run
+};
+
+Inputs read_inputs(const Options& o) {
+  Inputs in;
+  const std::string expected = "a design object like {\"L1\": \"6.13m\", ...}, an array of them, or CSV with a header (docs/csv.md)";
+  const std::string text = read_text(o.input, expected);
+  // JSON if it is named .json, parses as JSON or opens like it (then its error is JSON's); else CSV.
+  const std::size_t start = text.find_first_not_of(" \t\r\n", text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0);
+  const bool named_json = o.input.size() >= 5 && o.input.compare(o.input.size() - 5, 5, ".json") == 0;
+  const bool csv = !named_json && start != std::string::npos && text[start] != '{' && text[start] != '[' && !nlohmann::json::accept(text);
+  if (csv) {
+    std::istringstream stream(text);
+    DesignRows csv = read_design_rows(stream, source_name(o.input));
+    in.passed_columns = std::move(csv.passed_columns);
+    in.rows = std::move(csv.rows);
+    for (const auto& row : in.rows) in.where.push_back("line " + std::to_string(row.line));
+    in.single = false;
+    return in;
+  }
+  const nlohmann::json json = parse_json(text, source_name(o.input), expected);
+  if (!json.is_object() && !json.is_array())
+    throw Error(ErrorKind::usage, source_name(o.input) + " holds " + json.dump() + ", not a design; give " + expected);
+  in.single = json.is_object();
+  for (std::size_t i = 0; i < (in.single ? 1 : json.size()); ++i) {
+    in.rows.push_back({0, in.single ? json : json[i], {}, ""});
+    in.where.push_back(in.single ? "design" : "design[" + std::to_string(i) + "]");
+  }
+  return in;
+}
+
+// shot and fit: the design from a file, stdin or flags; many designs (a JSON array or CSV rows)
+// are computed design by design.
 int run_shot(const Options& o, bool fit) {
-  check_format(o);
+  check_format(o, true);
   if (o.threads < 1) throw Error(ErrorKind::usage, "--threads: " + std::to_string(o.threads) + " must be 1 or more");
   const ShotSettings settings = shot_settings(o);
   const double tolerance = parse_positive(o.tolerance, UnitDimension::dimensionless, "--tol");
+  const int digits = o.digits.empty() ? default_csv_digits : parse_digits(o.digits, "--digits");
   const bool has_engine_flags = !o.theta.empty() || std::any_of(o.engine_flags.begin(), o.engine_flags.end(),
                                                                  [](const auto& kv) { return !kv.second.empty(); });
-  nlohmann::json input;
+  Inputs in;
   if (!o.input.empty()) {
     if (has_engine_flags)
       throw Error(ErrorKind::usage, "the engine comes from '" + o.input + "'; drop the engine flags (--L1 ... --theta), or drop the file");
-    const std::string expected = "a design object like {\"L1\": \"6.13m\", ...} or an array of them";
-    input = read_json(o.input, expected);
-    if (!input.is_object() && !input.is_array())
-      throw Error(ErrorKind::usage, source_name(o.input) + " holds " + input.dump() + ", not a design; give " + expected);
+    in = read_inputs(o);
   } else {
     if (!o.engine_flags.at("L3").empty() && !o.engine_flags.at("F").empty())
       throw Error(ErrorKind::usage, "--L3 and --F both fix the counterweight arm (L2 + L3 = F H); give one of them");
     if (!has_engine_flags)
-      throw Error(ErrorKind::usage, "no design; give a JSON file (or - for stdin), or flags like --L1 6.13m --L2 1.08m --F 1 --L4 5.8m --M 14.3t --m 100kg --mb 660kg");
+      throw Error(ErrorKind::usage, "no design; give a JSON or CSV file (or - for stdin), or flags like --L1 6.13m --L2 1.08m --F 1 --L4 5.8m --M 14.3t --m 100kg --mb 660kg");
+    nlohmann::json flags = nlohmann::json::object();
     for (const auto& [key, text] : o.engine_flags)
-      if (!text.empty()) input[key] = text;
-    if (!o.theta.empty()) input["theta_i_deg"] = o.theta;
+      if (!text.empty()) flags[key] = text;
+    if (!o.theta.empty()) flags["theta_i_deg"] = o.theta;
+    in.rows.push_back({0, flags, {}, ""});
+    in.where.push_back("");
   }
-  const bool is_array = input.is_array();
+  const std::size_t count = in.rows.size();
   // --R/--T on the command line give the capacity of a single design.
-  if (is_array && (!o.R.empty() || !o.T.empty()))
+  if (!in.single && (!o.R.empty() || !o.T.empty()))
     throw Error(ErrorKind::usage, "--R and --T give the capacity of one design, but " + source_name(o.input) + " holds " +
-                                      std::to_string(input.size()) + "; give \"R\" and \"T\" in each design instead");
-  if (is_array && !o.series.empty() && input.size() != 1)
-    throw Error(ErrorKind::usage, "--series writes the motion of one design; the input holds " + std::to_string(input.size()));
-  if (is_array && !o.plot.empty() && input.size() != 1)
-    throw Error(ErrorKind::usage, "--plot draws one design; the input holds " + std::to_string(input.size()));
-  if (!is_array) {
-    if (!o.R.empty()) input["R"] = o.R;
-    if (!o.T.empty()) input["T"] = o.T;
-    const Outcome out = verify_one(input, o.input.empty() ? "" : "design", o, settings, tolerance, fit);
-    std::cout << (o.format == "json" ? out.json.dump(2) + "\n" : out.table);
+                                      std::to_string(count) + "; give R and T in each design instead");
+  if (!o.series.empty() && count != 1)
+    throw Error(ErrorKind::usage, "--series writes the motion of one design; the input holds " + std::to_string(count));
+  if (!o.plot.empty() && count != 1)
+    throw Error(ErrorKind::usage, "--plot draws one design; the input holds " + std::to_string(count));
+  std::vector<std::string> csv_header = in.passed_columns;
+  for (const std::string& column : verification_csv_header()) csv_header.push_back(column);
+  if (in.single) {
+    nlohmann::json& design = in.rows.front().design;
+    if (!o.R.empty()) design["R"] = o.R;
+    if (!o.T.empty()) design["T"] = o.T;
+    const Outcome out = verify_one(design, in.where.front(), o, settings, tolerance, fit, digits);
+    if (o.format == "json") std::cout << out.json.dump(2) << "\n";
+    else if (o.format == "csv") std::cout << csv_line(csv_header) << csv_line(out.csv);
+    else std::cout << out.table;
     return out.code;
   }
-  // An array: every design is tried, on every core; a failing one is reported in its place, the
+  // Many designs: every one is tried, on every core; a failing one is reported in its place, the
   // others kept. Each design's outcome goes to its own slot and all are printed in input order,
   // so the output is the same on any number of threads.
-  std::vector<Outcome> outcomes(input.size());
-  std::vector<std::optional<Error>> errors(input.size());
-  auto where = [](std::size_t i) { return "design[" + std::to_string(i) + "]"; };
-  for_each_index(input.size(), o.threads, [&](std::size_t i) {
+  std::vector<Outcome> outcomes(count);
+  std::vector<std::optional<Error>> errors(count);
+  for_each_index(count, o.threads, [&](std::size_t i) {
+    if (!in.rows[i].error.empty()) {  // unreadable, or failed upstream (the calculator's "error" column)
+      errors[i] = Error(ErrorKind::usage, in.rows[i].error);
+      return;
+    }
     try {
-      outcomes[i] = verify_one(input[i], where(i), o, settings, tolerance, fit);
+      outcomes[i] = verify_one(in.rows[i].design, in.where[i], o, settings, tolerance, fit, digits);
     } catch (const Error& e) {
       errors[i] = e;
     }
   });
   nlohmann::ordered_json results = nlohmann::ordered_json::array();
+  if (o.format == "csv") {
+    csv_header.push_back("error");
+    std::cout << csv_line(csv_header);
+  }
   int code = exit_success;
-  for (std::size_t i = 0; i < input.size(); ++i) {
+  for (std::size_t i = 0; i < count; ++i) {
+    nlohmann::ordered_json passed = nlohmann::ordered_json::object();
+    for (std::size_t k = 0; k < in.passed_columns.size(); ++k) passed[in.passed_columns[k]] = in.rows[i].passed[k];
+    std::vector<std::string> cells = in.rows[i].passed;
+    // Messages name the row by its input line and its pass-through cells, "line 3 (site Saone)".
+    std::string cells_text;
+    for (std::size_t k = 0; k < in.passed_columns.size(); ++k)
+      if (in.passed_columns[k] != "line") cells_text += (cells_text.empty() ? "" : ", ") + in.passed_columns[k] + " " + in.rows[i].passed[k];
+    const std::string name = in.where[i] + (cells_text.empty() ? "" : " (" + cells_text + ")");
     if (const auto& e = errors[i]) {
       const int error_code = exit_code(Program::verify, e->kind());
-      std::cerr << "trebuchet-verify: " << (std::string(e->what()).rfind(where(i), 0) == 0 ? "" : where(i) + ": ") << e->what() << "\n";
-      results.push_back({{"error", e->what()}, {"exit_code", error_code}});
+      const bool named = std::string(e->what()).rfind(in.where[i], 0) == 0;
+      std::cerr << "trebuchet-verify: " << (named ? "" : name + ": ") << e->what() << "\n";
+      passed.update({{"error", e->what()}, {"exit_code", error_code}});
+      cells.resize(csv_header.size() - 1);
+      cells.push_back(e->what());
       code = std::max(code, error_code);
     } else {
-      results.push_back(outcomes[i].json);
-      if (o.format == "table") std::cout << where(i) << "\n" << outcomes[i].table << "\n";
+      passed.update(outcomes[i].json);
+      cells.insert(cells.end(), outcomes[i].csv.begin(), outcomes[i].csv.end());
+      cells.push_back("");
+      if (o.format == "table") std::cout << name << "\n" << outcomes[i].table << "\n";
       code = std::max(code, outcomes[i].code);
     }
+    results.push_back(passed);
+    if (o.format == "csv") std::cout << csv_line(cells);
   }
   if (o.format == "json") std::cout << results.dump(2) << "\n";
   return code;
@@ -325,7 +395,7 @@ int run_merge(const Options& o) {
 }
 
 void add_engine_options(CLI::App* app, Options& o) {
-  app->add_option("input", o.input, "JSON file with a design or an array of designs; - for stdin");
+  app->add_option("input", o.input, "JSON file with a design or an array of designs, or CSV with a design a row (docs/csv.md); - for stdin");
   const std::map<std::string, std::string> help = {
       {"L1", "long beam section"}, {"L2", "short beam section"}, {"L3", "counterweight arm (or --F)"},
       {"F", "arm fraction (L2+L3)/H, instead of --L3"}, {"L4", "sling length"}, {"M", "counterweight mass"},
@@ -355,8 +425,9 @@ void add_integrator_options(CLI::App* app, Options& o) {
   app->add_option("--atol", o.atol, "absolute tolerance per step, scaled units (default 1e-11)");
 }
 
-void add_format_option(CLI::App* app, Options& o) {
-  app->add_option("--format", o.format, "table or json")->capture_default_str();
+void add_format_option(CLI::App* app, Options& o, bool csv_too = false) {
+  app->add_option("--format", o.format, csv_too ? "table, json or csv" : "table or json")->capture_default_str();
+  if (csv_too) app->add_option("--digits", o.digits, "significant digits of CSV numbers (default " + std::to_string(default_csv_digits) + "; 17: exact)");
 }
 
 void add_sizing_options(CLI::App* app, Options& o, const std::string& what) {
@@ -395,7 +466,7 @@ int main(int argc, char** argv) {
     add_engine_options(sub, o);
     add_release_options(sub, o);
     add_integrator_options(sub, o);
-    add_format_option(sub, o);
+    add_format_option(sub, o, true);
     sub->add_option("--g", o.g, "gravitational acceleration (default: the input's, else " + format_number(Material{}.g) + "m/s2)");
   }
   add_sizing_options(fit, o, "the design");

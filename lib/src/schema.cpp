@@ -1,7 +1,9 @@
 #include "trebuchet/schema.hpp"
 
+#include <algorithm>
 #include <cmath>
 
+#include "trebuchet/csv.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/names.hpp"
@@ -43,22 +45,17 @@ void require_finite(const std::vector<Field>& fields) {
 }
 
 std::vector<Field> design_fields(const OptimalEngine& d) {
-  std::vector<Field> fields = {{"R", d.capacity.R}, {"T", d.capacity.T}, {"X", d.coordinates.X}, {"Y", d.coordinates.Y}};
+  std::vector<Field> fields = {{"R", d.capacity.R, "m"}, {"T", d.capacity.T, "J"}, {"X", d.coordinates.X}, {"Y", d.coordinates.Y}};
   for (const Field& field : engine_fields(d.engine)) fields.push_back(field);
   fields.push_back({"amplification", d.amplification});
   return fields;
 }
 
-std::string joined_warnings(const OptimalEngine& design) {
+// Warnings in one CSV cell.
+std::string joined_warnings(const std::vector<std::string>& warnings) {
   std::string text;
-  for (const std::string& w : design.warnings) text += (text.empty() ? "" : "; ") + w;
+  for (const std::string& w : warnings) text += (text.empty() ? "" : "; ") + w;
   return text;
-}
-
-std::string csv_quoted(const std::string& text) {
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
 }
 
 }  // namespace
@@ -68,26 +65,26 @@ std::vector<Field> engine_fields(const Engine& e) {
   return {{"theta_i_deg", e.theta_i_deg},
           {"F", s.F},
           {"beta2", e.material.beta2},
-          {"L1", e.L1},
-          {"L2", e.L2},
-          {"L3", e.L3},
-          {"L4", e.L4},
-          {"D", e.D},
-          {"M", e.M},
-          {"m", e.m},
-          {"mb", e.mb},
-          {"Lb", beam_length(e)},
-          {"H", pivot_height(e)},
+          {"L1", e.L1, "m"},
+          {"L2", e.L2, "m"},
+          {"L3", e.L3, "m"},
+          {"L4", e.L4, "m"},
+          {"D", e.D, "m"},
+          {"M", e.M, "kg"},
+          {"m", e.m, "kg"},
+          {"mb", e.mb, "kg"},
+          {"Lb", beam_length(e), "m"},
+          {"H", pivot_height(e), "m"},
           {"l", s.l},
           {"l4", s.l4},
           {"L", e.L3 / e.L2},
           {"mu", s.mu},
           {"mu_b", s.mu_b},
           {"K", s.K()},
-          {"DeltaU", potential_energy_drop(e)},
-          {"youngs_modulus", e.material.youngs_modulus},
-          {"wood_density", e.material.wood_density},
-          {"g", e.material.g}};
+          {"DeltaU", potential_energy_drop(e), "J"},
+          {"youngs_modulus", e.material.youngs_modulus, "Pa"},
+          {"wood_density", e.material.wood_density, "kg_m3"},
+          {"g", e.material.g, "m_s2"}};
 }
 
 void write_engine(nlohmann::ordered_json& out, const Engine& engine) {
@@ -141,6 +138,66 @@ EngineRecord read_engine(const nlohmann::json& object, const std::string& where)
   return in;
 }
 
+DesignRows read_design_rows(std::istream& input, const std::string& source) {
+  const std::vector<std::string_view> engine_keys = {"L1", "L2", "L3", "F", "L4", "M", "m", "mb", "D", "theta_i_deg", "theta",
+                                                      "beta2", "youngs_modulus", "wood_density", "g", "R", "T"};
+  const std::vector<std::string_view> dropped = {"X", "Y", "Lb", "H", "l", "l4", "L", "mu", "mu_b", "K", "DeltaU", "amplification",
+                                                 "branch", "warnings"};
+  CsvReader reader(input, source);
+  struct Column {
+    enum { engine, dropped, passed, error } role;
+    ColumnName name;
+  };
+  std::vector<Column> columns;
+  DesignRows out;
+  for (const std::string& header : reader.header()) {
+    if (const auto name = split_column_name(header, engine_keys)) {
+      columns.push_back({Column::engine, {name->key == "theta" ? "theta_i_deg" : name->key, name->unit}});
+    } else if (split_column_name(header, dropped)) {
+      columns.push_back({Column::dropped, {header, ""}});
+    } else if (header == "error") {
+      columns.push_back({Column::error, {header, ""}});
+    } else {
+      columns.push_back({Column::passed, {header, ""}});
+      out.passed_columns.push_back(header);
+    }
+  }
+  // A column every design needs is a fault of the file, not of each row.
+  auto has = [&](const char* key) {
+    return std::any_of(columns.begin(), columns.end(), [&](const Column& c) { return c.role == Column::engine && c.name.key == key; });
+  };
+  std::string missing;
+  for (const char* key : {"L1", "L2", "L4", "M", "m", "mb"})
+    if (!has(key)) missing += (missing.empty() ? "" : ", ") + std::string(key);
+  if (!has("L3") && !has("F")) missing += (missing.empty() ? "" : ", ") + std::string("L3 or F");
+  if (!missing.empty())
+    throw Error(ErrorKind::usage, source + " is neither JSON nor CSV of designs: its header lacks " + missing +
+                                      "; give a design object, an array of them, or CSV such as trebuchet-calc --batch writes");
+  while (true) {
+    DesignRows::Row row;
+    row.passed.assign(out.passed_columns.size(), "");
+    CsvRow cells;
+    try {
+      if (!reader.next(cells)) break;
+      row.line = cells.line;
+      row.design = nlohmann::json::object();
+      // The pass-through cells first, so that a bad value leaves them in the row.
+      for (std::size_t k = 0, p = 0; k < columns.size(); ++k) {
+        if (columns[k].role == Column::passed) row.passed[p++] = cells.cells[k];
+        if (columns[k].role == Column::error) row.error = cells.cells[k];
+      }
+      for (std::size_t k = 0; k < columns.size(); ++k)
+        if (columns[k].role == Column::engine && !cells.cells[k].empty())
+          row.design[columns[k].name.key] = cell_value(cells.cells[k], columns[k].name.unit, reader.header()[k]);
+    } catch (const Error& e) {
+      row.line = cells.line;
+      row.error = e.what();
+    }
+    out.rows.push_back(std::move(row));
+  }
+  return out;
+}
+
 nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings& settings) {
   nlohmann::ordered_json out = nlohmann::ordered_json::object();
   out["air"] = "vacuum";
@@ -170,18 +227,28 @@ nlohmann::ordered_json design_json(const OptimalEngine& design) {
   return out;
 }
 
-std::string design_csv_header() {
-  std::string header;
-  for (const Field& field : design_fields(OptimalEngine{})) header += std::string(field.key) + ",";
-  return header + "branch,warnings";
+std::string csv_column(const Field& field) { return *field.unit ? std::string(field.key) + "_" + field.unit : field.key; }
+
+std::vector<std::string> design_csv_header() {
+  std::vector<std::string> header;
+  for (const Field& field : design_fields(OptimalEngine{})) header.push_back(csv_column(field));
+  header.insert(header.end(), {"branch", "warnings"});
+  return header;
 }
 
-std::string design_csv_row(const OptimalEngine& design) {
+std::vector<std::string> design_csv_row(const OptimalEngine& design, int digits) {
   const std::vector<Field> fields = design_fields(design);
   require_finite(fields);
-  std::string row;
-  for (const Field& field : fields) row += format_number(field.value) + ",";
-  return row + std::string(branch_name(design.branch)) + "," + (design.warnings.empty() ? "" : csv_quoted(joined_warnings(design)));
+  std::vector<std::string> row;
+  for (const Field& field : fields) row.push_back(csv_number(field.value, digits));
+  row.insert(row.end(), {std::string(branch_name(design.branch)), joined_warnings(design.warnings)});
+  return row;
+}
+
+std::string csv_line(const std::vector<std::string>& cells) {
+  std::string line;
+  for (std::size_t k = 0; k < cells.size(); ++k) line += (k ? "," : "") + csv_cell(cells[k]);
+  return line + "\n";
 }
 
 CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance) {
@@ -193,17 +260,62 @@ CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, d
   return c;
 }
 
-nlohmann::ordered_json verification_json(const Verification& v, const std::optional<CapacityCheck>& check) {
-  nlohmann::ordered_json out;
-  const Field fields[] = {
-      {"R", v.capacity.R}, {"T", v.capacity.T}, {"eps", v.eps}, {"Q", v.Q}, {"force_factor", v.force_factor}, {"v", v.v}, {"h", v.h},
-      {"x", v.x}, {"A_deg", v.A_deg}, {"t_release", v.t_release}, {"t_liftoff", v.t_liftoff}, {"FS_perp_mg", v.FS_perp_mg},
-      {"FR_Mg", v.FR_Mg}, {"dFRh_Mg", v.dFRh_Mg}, {"energy_drift", v.energy_drift}};
-  for (const Field& field : fields) {
+namespace {
+
+// The figures of a shot, in the order of the JSON and CSV records. Throws Error(numerical) for
+// one that is not finite.
+std::vector<Field> verification_fields(const Verification& v) {
+  std::vector<Field> fields = {
+      {"R", v.capacity.R, "m"}, {"T", v.capacity.T, "J"}, {"eps", v.eps}, {"Q", v.Q}, {"force_factor", v.force_factor},
+      {"v", v.v, "m_s"}, {"h", v.h, "m"}, {"x", v.x, "m"}, {"A_deg", v.A_deg}, {"t_release", v.t_release, "s"},
+      {"t_liftoff", v.t_liftoff, "s"}, {"FS_perp_mg", v.FS_perp_mg}, {"FR_Mg", v.FR_Mg}, {"dFRh_Mg", v.dFRh_Mg},
+      {"energy_drift", v.energy_drift}};
+  for (const Field& field : fields)
     if (!std::isfinite(field.value))
       throw Error(ErrorKind::numerical, std::string("the result ") + field.key + " is not finite; tighten --rtol");
-    out[field.key] = field.value;
-  }
+  return fields;
+}
+
+// The check against a predicted capacity, as CSV fields (empty when there is none).
+std::vector<Field> check_fields(const std::optional<CapacityCheck>& check) {
+  const CapacityCheck c = check.value_or(CapacityCheck{});
+  return {{"predicted_R", c.predicted.R, "m"}, {"predicted_T", c.predicted.T, "J"}, {"deviation_R", c.deviation_R}, {"deviation_T", c.deviation_T}};
+}
+
+// The forces in kN beside their multiples of m g and M g, so that "3.0 Mg" is not read as megagrams.
+std::vector<Field> force_fields(const Engine& engine, const Verification& v) {
+  const double mg_kN = engine.m * engine.material.g / 1e3, Mg_kN = engine.M * engine.material.g / 1e3;
+  return {{"FS_perp", v.FS_perp_mg * mg_kN, "kN"}, {"FR", v.FR_Mg * Mg_kN, "kN"}, {"dFRh", v.dFRh_Mg * Mg_kN, "kN"}};
+}
+
+}  // namespace
+
+std::vector<std::string> verification_csv_header() {
+  std::vector<std::string> header;
+  const Verification v{};
+  for (const auto& fields : {engine_fields(Engine{}), verification_fields(v), force_fields(Engine{}, v), check_fields(std::nullopt)})
+    for (const Field& field : fields) header.push_back(csv_column(field));
+  header.insert(header.end(), {"pass", "air", "release", "n", "target_level_m", "warnings"});
+  return header;
+}
+
+std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSettings& settings, const Verification& v,
+                                              const std::optional<CapacityCheck>& check, int digits) {
+  std::vector<Field> engine_part = engine_fields(engine);
+  require_finite(engine_part);
+  std::vector<std::string> row;
+  for (const auto& fields : {engine_part, verification_fields(v), force_fields(engine, v)})
+    for (const Field& field : fields) row.push_back(csv_number(field.value, digits));
+  for (const Field& field : check_fields(check)) row.push_back(check ? csv_number(field.value, digits) : "");
+  const nlohmann::ordered_json assumed = assumptions_json(engine, settings);
+  row.insert(row.end(), {check ? (check->pass ? "yes" : "no") : "", assumed["air"].get<std::string>(), assumed["release"].get<std::string>(),
+                         csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), joined_warnings(v.warnings)});
+  return row;
+}
+
+nlohmann::ordered_json verification_json(const Verification& v, const std::optional<CapacityCheck>& check) {
+  nlohmann::ordered_json out;
+  for (const Field& field : verification_fields(v)) out[field.key] = field.value;
   out["warnings"] = v.warnings;
   if (check) {
     out["predicted"] = {{"R", check->predicted.R}, {"T", check->predicted.T}};

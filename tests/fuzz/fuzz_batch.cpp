@@ -14,8 +14,9 @@ extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t siz
   std::istringstream input(std::string(reinterpret_cast<const char*>(data), size));
   try {
     trebuchet::run_batch(input, trebuchet::builtin_scaling_table(), trebuchet::DesignRequest{},
-                         [](int, const trebuchet::OptimalEngine* design, const trebuchet::Error*) {
-                           if (design) require_writes([&] { trebuchet::design_csv_row(*design); });
+                         [](const std::vector<std::string>&) {},
+                         [](const trebuchet::BatchRow& row) {
+                           if (row.design) require_writes([&] { trebuchet::design_csv_row(*row.design, 17); });
                          });
   } catch (const trebuchet::Error&) {
   }

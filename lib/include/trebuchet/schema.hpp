@@ -21,7 +21,14 @@ namespace trebuchet {
 struct Field {
   const char* key;
   double value;
+  const char* unit = "";  ///< SI unit in the CSV column name ("m" gives "R_m"); "" for pure numbers
 };
+
+/// A field's CSV column: the key with its unit, "R_m", "wood_density_kg_m3" (docs/csv.md).
+std::string csv_column(const Field& field);
+
+/// One CSV line of `cells`, each quoted where it must be, ending in a line feed.
+std::string csv_line(const std::vector<std::string>& cells);
 
 /// The engine's keys: theta_i_deg, F, beta2, L1, L2, L3, L4, D, M, m, mb, Lb, H, the scaled
 /// design l, l4, L, mu, mu_b, K, DeltaU (eq:DU) and the material youngs_modulus, wood_density, g.
@@ -44,6 +51,24 @@ struct EngineRecord {
 /// naming the key and the fix, and checks the engine (check_engine).
 EngineRecord read_engine(const nlohmann::json& object, const std::string& where);
 
+/// Designs read from CSV (docs/csv.md), such as the calculator's batch output: one design a row.
+struct DesignRows {
+  std::vector<std::string> passed_columns;  ///< columns that are no engine key, e.g. site, in order
+  struct Row {
+    int line = 0;                      ///< line number in the input
+    nlohmann::json design;             ///< the engine keys as strings with units, for read_engine
+    std::vector<std::string> passed;   ///< the pass-through cells
+    std::string error;                 ///< a row that cannot be read, or an "error" cell written upstream
+  };
+  std::vector<Row> rows;
+};
+
+/// Reads CSV text: the engine's keys (with units in the header, "L1_m", or in the cells), R and
+/// T as the capacity to check, theta for theta_i_deg. The calculator's other columns (X, Y, Lb,
+/// H, l, l4, L, mu, mu_b, K, DeltaU, amplification, branch, warnings) follow from the engine and
+/// are dropped; any other column passes through. Throws Error(usage) for an input without a header.
+DesignRows read_design_rows(std::istream& input, const std::string& source);
+
 /// The calculator's design: R, T, X, Y, the engine's keys, amplification, branch, warnings and,
 /// near X_d, branch_steps.
 /// What a shot assumed: "air" ("vacuum"), g [m/s^2], theta_i_deg, the arm fraction F, the
@@ -52,9 +77,10 @@ nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings
 
 nlohmann::ordered_json design_json(const OptimalEngine& design);
 
-/// Comma-separated column names, in the order of design_csv_row.
-std::string design_csv_header();
-std::string design_csv_row(const OptimalEngine& design);
+/// The design's CSV columns, keys with units (R_m, T_J, ...), branch and warnings, and one
+/// design's cells with `digits` significant digits.
+std::vector<std::string> design_csv_header();
+std::vector<std::string> design_csv_row(const OptimalEngine& design, int digits);
 
 /// A predicted capacity (from the calculator) against the simulated one.
 struct CapacityCheck {
@@ -71,6 +97,13 @@ CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, d
 /// dFRh_Mg, energy_drift; with a check, also predicted, deviation, tolerance and pass.
 /// Throws Error(numerical) if a number is not finite.
 nlohmann::ordered_json verification_json(const Verification& v, const std::optional<CapacityCheck>& check = std::nullopt);
+
+/// The verifier's CSV columns: the engine's keys, the shot's figures with units, the forces in
+/// kN, the check (predicted_R_m ... pass, empty without a prediction), the assumptions and the
+/// warnings; and one shot's cells with `digits` significant digits.
+std::vector<std::string> verification_csv_header();
+std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSettings& settings, const Verification& v,
+                                              const std::optional<CapacityCheck>& check, int digits);
 
 /// Throws Error(data_file) naming `what` and the JSON path if `json` holds a number that is not
 /// finite: JSON has no inf or nan, and nlohmann would write null in their place.

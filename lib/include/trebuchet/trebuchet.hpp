@@ -5,6 +5,7 @@
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/capacity.hpp"
 #include "trebuchet/capacity_fit.hpp"
+#include "trebuchet/csv.hpp"
 #include "trebuchet/design.hpp"
 #include "trebuchet/dynamics.hpp"
 #include "trebuchet/engine.hpp"

@@ -18,7 +18,7 @@ enum class UnitDimension { length, mass, energy, dimensionless, angle, accelerat
 
 UnitDimension unit_dimension(Dimension dimension);
 
-/// Parses a number with an optional unit suffix into SI base units (m, kg, J, rad stays deg:
+/// Parses a number with an optional unit suffix (blanks between them allowed: "150 m") into SI base units (m, kg, J, rad stays deg:
 /// angles are returned in degrees). A bare number is taken in SI base units (degrees for
 /// angles). "a/b" is a fraction. Throws Error(bad_number) for a malformed or non-finite number
 /// and Error(unknown_unit) for a suffix that is unknown or of another dimension; `name` is the
