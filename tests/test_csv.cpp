@@ -20,14 +20,14 @@ std::vector<std::vector<std::string>> read_all(const std::string& text) {
 }
 }  // namespace
 
-TEST_CASE("a BOM, CRLF, ';' and quotes read to the same cells as plain CSV", "[csv]") {
+TEST_CASE("a BOM, CRLF, semicolons, tabs and quotes read to the same cells as plain CSV", "[csv]") {
   const std::vector<std::vector<std::string>> plain = {{"site", "R", "m"}, {"Saone, castle", "150 m", "50"}, {"say \"hi\"", "2", "3"}};
   CHECK(read_all("site,R,m\n\"Saone, castle\",150 m,50\n\"say \"\"hi\"\"\",2,3\n") == plain);
   CHECK(read_all("\xEF\xBB\xBFsite;R;m\r\nSaone, castle;150 m;50\r\n\"say \"\"hi\"\"\";2;3\r\n") == plain);
   CHECK(read_all("# a comment\n\nsite\tR\tm\nSaone, castle\t150 m\t50\n\n\"say \"\"hi\"\"\"\t2\t3") == plain);
 }
 
-TEST_CASE("a malformed row is an error naming its line; the reader reads on", "[csv]") {
+TEST_CASE("a malformed row is an error naming its line, and the reader reads on", "[csv]") {
   std::istringstream input("R,m\n150,50\n\"150,50\n150,50,7\n200,60\n");
   CsvReader reader(input, "sites.csv");
   CsvRow row;
@@ -42,7 +42,7 @@ TEST_CASE("a malformed row is an error naming its line; the reader reads on", "[
   CHECK_THROWS_WITH(CsvReader(empty, "sites.csv"), Catch::Contains("sites.csv is empty"));
 }
 
-TEST_CASE("a column's unit is in its name; the longest key wins", "[csv]") {
+TEST_CASE("a column's unit is in its name, and the longest key wins", "[csv]") {
   const std::vector<std::string_view> keys = {"m", "mb", "M", "R", "wood_density", "g"};
   CHECK(split_column_name("R_m", keys)->unit == "m");
   CHECK(split_column_name("mb_kg", keys)->key == "mb");
@@ -66,7 +66,7 @@ TEST_CASE("decimal commas are read, thousands separators refused", "[csv]") {
   CHECK_THROWS_WITH(cell_value("1,500,000", "", "R"), Catch::Contains("two commas"));
 }
 
-TEST_CASE("numbers are written with the digits asked for; 17 round-trips", "[csv]") {
+TEST_CASE("numbers are written with the digits asked for, and 17 round-trip", "[csv]") {
   CHECK(csv_number(40454.745502907805, default_csv_digits) == "40454.7");
   CHECK(std::stod(csv_number(0.1 + 0.2, 17)) == 0.1 + 0.2);
   CHECK(csv_cell("a,b") == "\"a,b\"");
