@@ -1,8 +1,10 @@
-// Fuzz target: the JSON design reader, as the verifier reads a file: parse_json, then
-// read_engine on the object or on each member of an array. A design read must be finite and
-// must write and read back as itself.
+// Fuzz target: the design readers, as the verifier reads a file: parse_json, then read_engine
+// on the object or on each member of an array; and the same bytes as CSV (read_design_rows),
+// then read_engine on each row. A design read must be finite and must write and read back as
+// itself.
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 #include <string>
 
 #include "trebuchet/error.hpp"
@@ -33,6 +35,12 @@ extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t siz
     } else {
       read_one(input, "design");
     }
+  } catch (const trebuchet::Error&) {
+  }
+  try {
+    std::istringstream csv(text);
+    for (const auto& row : trebuchet::read_design_rows(csv, "fuzz").rows)
+      if (row.error.empty()) read_one(row.design, "line " + std::to_string(row.line));
   } catch (const trebuchet::Error&) {
   }
   return 0;
