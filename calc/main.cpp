@@ -15,6 +15,7 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/report.hpp"
 #include "trebuchet/schema.hpp"
+#include "trebuchet/spreadsheet.hpp"
 #include "trebuchet/request.hpp"
 #include "trebuchet/scaling_table.hpp"
 #include "trebuchet/units.hpp"
@@ -35,6 +36,7 @@ struct Options {
   std::string batch;
   std::string table_file;
   std::string digits;  // empty: default_csv_digits
+  std::string spreadsheet;
 };
 
 Material material_from(const Options& options, const Material& reference) {
@@ -74,6 +76,25 @@ int run(const Options& options) {
   for (const auto& [quantity, text] : options.givens)
     if (!text.empty()) givens.push_back(parse_given(quantity_name(quantity), text));
 
+  if (!options.spreadsheet.empty()) {
+    // The workbook opens on the paper's examples, or on the givens: R and T on the capacity
+    // sheet, R and another on the sheet for R and one parameter, any other pair on the last.
+    SpreadsheetInputs inputs;
+    inputs.material = request.material;
+    for (DesignRequest* sheet : {&inputs.capacity, &inputs.range_and_one, &inputs.any_pair})
+      sheet->theta_i_deg = request.theta_i_deg, sheet->F = request.F, sheet->branch = request.branch, sheet->material = request.material;
+    if (givens.size() == 2) {
+      std::sort(givens.begin(), givens.end(), [](const Given& a, const Given& b) { return a.quantity < b.quantity; });
+      const bool has_R = givens[0].quantity == Quantity::R;
+      DesignRequest& sheet = has_R && givens[1].quantity == Quantity::T ? inputs.capacity : has_R ? inputs.range_and_one : inputs.any_pair;
+      sheet.first = givens[0], sheet.second = givens[1];
+    } else if (!givens.empty()) {
+      throw Error(ErrorKind::given_count, "--spreadsheet opens on the paper's examples, or on exactly two givens; found " + std::to_string(givens.size()));
+    }
+    write_spreadsheet(table, inputs, options.spreadsheet);
+    std::cout << "wrote " << options.spreadsheet << ": the calculator as a workbook with live formulas (docs/spreadsheet.md)\n";
+    return 0;
+  }
   if (!options.batch.empty()) {
     if (!givens.empty())
       throw Error(ErrorKind::given_count, "--batch takes the givens from its file; drop --" +
@@ -165,6 +186,7 @@ int main(int argc, char** argv) {
   app.add_option("--format", options.format, "table, csv or json")->capture_default_str();
   app.add_option("--batch", options.batch, "CSV file of requests (- for stdin): the header names two givens, other columns pass through (docs/csv.md)");
   app.add_option("--digits", options.digits, "significant digits of CSV numbers (default " + std::to_string(default_csv_digits) + "; 17: exact)");
+  app.add_option("--spreadsheet", options.spreadsheet, "write the calculator as a workbook with live formulas (.xlsx), opened on the paper's examples or on the givens");
   app.add_option("--table", options.table_file, "constants file in the schema of data/cpnc.json");
 
   return run_program(app, Program::calc, argc, argv, [&] { return run(options); });

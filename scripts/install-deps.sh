@@ -10,6 +10,8 @@ packages=(
   nlohmann-json3-dev
   catch2            # Catch2 2.13 with CTest discovery
   libcli11-dev
+  pkg-config libxlsxwriter-dev  # trebuchet-calc --spreadsheet writes .xlsx with it
+  libreoffice-calc-nogui        # the spreadsheet test recalculates the workbook in a real program
   gnuplot-nox       # charts and trebuchet-verify shot --plot, without X11
   libxml2-utils     # xmllint: the pictures' SVG is checked well-formed
   librsvg2-bin      # rsvg-convert: SVG pictures rendered to PNG to look at (scripts/figures.sh)

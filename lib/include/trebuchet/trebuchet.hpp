@@ -24,6 +24,7 @@
 #include "trebuchet/scaling_table.hpp"
 #include "trebuchet/schema.hpp"
 #include "trebuchet/shot.hpp"
+#include "trebuchet/spreadsheet.hpp"
 #include "trebuchet/sweep.hpp"
 #include "trebuchet/table_derivation.hpp"
 #include "trebuchet/units.hpp"
