@@ -447,7 +447,7 @@ DesignResult write_design(lxw_workbook* book, const Formats& formats, const std:
   out.D = output("D", Z(Param::D) * f.diameter, "m", "beam diameter (eq:ZRT, eq:bend_L2)");
   out.M = output("M", Z(Param::M) * f.mass, "kg", "counterweight (eq:ZRT)");
   out.m = output("m", Z(Param::m) * f.mass, "kg", "projectile (eq:ZRT)");
-  out.mb = output("mb", Z(Param::mb) * f.mass, "kg", "beam (eq:ZRT, eq:BeamMass)");
+  out.mb = output("mb", Z(Param::mb) * f.mass, "kg", "beam (eq:ZRT)");
   out.amplification = output("amplification", amplification, "", "relative change of R or T per relative change of a given (eq:ZiZj_RT); above 10 ill-conditioned, above 50 refused");
   const Text status = choose(ok, choose(below(num(50), amplification), literal("refused: the pair barely fixes the capacity (amplification above 50)"),
                                         choose(at_most(out.L3, num(0)), literal("refused: no room for the counterweight arm (L3 <= 0)"), literal("ok"))),
@@ -461,7 +461,7 @@ DesignResult write_design(lxw_workbook* book, const Formats& formats, const std:
 void write_derived(lxw_workbook* book, const Formats& formats, const Engine& e, const Expr& g) {
   Sheet s(book, "derived", formats);
   s.title("Derived quantities of an engine (section 2, eq:Design, eq:kMkD, eq:DU)",
-          "Type an engine in the yellow cells (it opens on the optimum for tab:Alcala_la_Vieja row Ca: 150 m, 50 kg); g is the material sheet's.");
+          "Type an engine in the yellow cells (it opens on the optimum for Alcala la Vieja, site Ca: 150 m, 50 kg); g is the material sheet's.");
   const Expr L1 = s.input_row(3, "L1", e.L1, "m", "long beam section, pivot to spigot");
   const Expr L2 = s.input_row(4, "L2", e.L2, "m", "short beam section, pivot to hinge");
   const Expr L4 = s.input_row(5, "L4", e.L4, "m", "sling");
@@ -492,7 +492,7 @@ void write_model_scaling(lxw_workbook* book, const Formats& formats, const Desig
   Sheet s(book, "model scaling", formats);
   s.title("A model of the optimal engine (eq:ExtraScalings)",
           "The full-size engine is the one on the sheet 'from R and T'. Lengths and R scale with lambda, D with lambda^1.5, masses with lambda^4, T with lambda^5.");
-  const Expr lambda = s.input_row(3, "lambda", scale, "", "size of the model over the full size; it opens on tab:Denny's 80 m model of the 425 m engine (80/425)");
+  const Expr lambda = s.input_row(3, "lambda", scale, "", "size of the model over the full size; it opens on the 80 m model of Denny's table of the 425 m engine (80/425)");
   s.heading(5, 0, "quantity");
   s.heading(5, 1, "model");
   s.heading(5, 2, "unit");
