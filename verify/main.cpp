@@ -18,6 +18,7 @@
 #include <filesystem>
 
 #include "program.hpp"
+#include "trebuchet/air.hpp"
 #include "trebuchet/capacity_fit.hpp"
 #include "trebuchet/csv.hpp"
 #include "trebuchet/error.hpp"
@@ -57,6 +58,9 @@ struct Options {
   std::string shard;
   std::vector<std::string> merge;
   std::string digits;  // empty: default_csv_digits
+  bool air = false;
+  std::string air_density, drag_coefficient, projectile, wind;
+  std::string range_from = "pivot";
 };
 
 const std::pair<const char*, UnitDimension> engine_keys[] = {
@@ -77,6 +81,23 @@ ShotSettings shot_settings(const Options& o) {
   settings.target_level = parse_value(o.target_level, UnitDimension::length, "--target-level");
   settings.criterion.release = parse_release(o.quality, "--quality");
   settings.criterion.n = parse_value(o.n, UnitDimension::dimensionless, "--n");
+  if (o.range_from != "pivot" && o.range_from != "release")
+    throw Error(ErrorKind::usage, "--range-from: '" + o.range_from + "' is not a range; use pivot (the paper's) or release (Denny's)");
+  settings.range_from_release = o.range_from == "release";
+  const bool air_details = !o.air_density.empty() || !o.drag_coefficient.empty() || !o.projectile.empty() || !o.wind.empty();
+  if (air_details && !o.air)
+    throw Error(ErrorKind::usage, "--air-density, --cd, --projectile and --wind describe the air; add --air to fly through it (vacuum is the default)");
+  if (o.air) {
+    Air air;
+    if (!o.air_density.empty()) air.density = parse_positive(o.air_density, UnitDimension::density, "--air-density");
+    if (o.drag_coefficient == "Re") air.drag_coefficient.reset();
+    else if (!o.drag_coefficient.empty()) air.drag_coefficient = parse_positive(o.drag_coefficient, UnitDimension::dimensionless, "--cd");
+    if (o.projectile == "stone") air.projectile_density = 2500;
+    else if (o.projectile == "iron") air.projectile_density = 7870;
+    else if (!o.projectile.empty()) air.projectile_density = parse_positive(o.projectile, UnitDimension::density, "--projectile");
+    if (!o.wind.empty()) air.wind = parse_value(o.wind, UnitDimension::speed, "--wind");
+    settings.air = air;
+  }
   if (!(settings.criterion.n >= 0)) throw Error(ErrorKind::bad_number, "--n: '" + o.n + "' must be 0 or more (eq:Q_n)");
   return settings;
 }
@@ -462,6 +483,13 @@ int main(int argc, char** argv) {
   CLI::App* derive = app.add_subcommand("derive-table", "re-derive tab:CPNC for --theta and --F: optimise along --X and fit eq:f_ZX "
                                                         "(JSON for the calculator's --table)");
   CLI::App* merge = app.add_subcommand("merge", "join the parts written by derive-table --shard into one table");
+  shot->add_flag("--air", o.air, "fly through air (quadratic drag on a sphere) instead of vacuum; with --quality range the release maximises the range in air");
+  shot->add_option("--air-density", o.air_density, "density of the air (default 1.2kg/m3)");
+  shot->add_option("--cd", o.drag_coefficient, "drag coefficient of the sphere (default 0.47), or Re for Cd(Re) of a smooth sphere");
+  shot->add_option("--projectile", o.projectile, "stone (2500kg/m3, the default), iron (7870kg/m3) or a density: gives the sphere's size");
+  shot->add_option("--wind", o.wind, "horizontal wind toward the target, e.g. 5m/s or -20km/h (against)");
+  shot->add_option("--range-from", o.range_from, "pivot (the paper's: to the target level) or release (Denny's: from the release point back to its height)")
+      ->capture_default_str();
   for (CLI::App* sub : {shot, fit}) {
     add_engine_options(sub, o);
     add_release_options(sub, o);

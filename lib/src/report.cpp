@@ -49,6 +49,7 @@ std::string design_table(const OptimalEngine& design) {
          " (eq:ExtraScalings); the capacity below is the model's\n";
   t += "  capacity       " + cell("R", with_unit(design.capacity.R, "m")) + cell("T", energy_text(design.capacity.T)) +
        cell("X", format_significant(design.coordinates.X, 3)) + cell("Y", format_significant(design.coordinates.Y, 3)) + "\n";
+  t += "                 in vacuum, from the pivot to the base's level (trebuchet-verify shot --air flies it through air)\n";
   t += "  beam           " + cell("L1", with_unit(e.L1, "m")) + cell("L2", with_unit(e.L2, "m")) +
        cell("Lb", with_unit(beam_length(e), "m")) + cell("H", with_unit(pivot_height(e), "m")) + "\n";
   t += "                 " + cell("D", with_unit(e.D, "m")) + cell("mb", mass_text(e.mb)) + "\n";
@@ -81,9 +82,14 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
   std::ostringstream out;
   out << "engine simulated:\n" << engine_table(engine) << "  theta_i = " << sig(engine.theta_i_deg, 4)
       << " deg, arm fraction (L2 + L3)/H = " << sig(arm_fraction(engine), 4) << "\n"
-      << "assumptions: vacuum (no air drag), g = " << sig(g, 4) << " m/s2, release " << rule << ", target level "
-      << sig(settings.target_level, 4) << " m\n"
-      << "R = " << sig(v.capacity.R) << " m   T = " << sig(v.capacity.T / 1e3) << " kJ   at the target level\n"
+      << "assumptions: " << (settings.air ? describe_air(*settings.air, engine.m) : std::string("vacuum (no air drag)")) << ", g = " << sig(g, 4)
+      << " m/s2, release " << rule << ", "
+      << (settings.range_from_release ? std::string("range from the release point to where the flight dips below the release height (Denny's)")
+                                      : "target level " + sig(settings.target_level, 4) + " m")
+      << "\n"
+      << "R = " << sig(v.capacity.R) << " m   T = " << sig(v.capacity.T / 1e3) << " kJ   "
+      << (settings.range_from_release ? "back at the release height" : "at the target level")
+      << (settings.air || settings.range_from_release ? "; the paper's range, in vacuum from the pivot: " + sig(v.R_vacuum) + " m" : std::string()) << "\n"
       << "eps = " << sig(100 * v.eps, 4) << " %   Q = " << sig(100 * v.Q, 4) << " %   force factor = " << sig(v.force_factor, 4) << " (eq:F)\n"
       << "release: v = " << sig(v.v, 4) << " m/s, h = " << sig(v.h, 4) << " m, x = " << sig(v.x, 4)
       << " m (behind the pivot if > 0), A = " << sig(v.A_deg, 4) << " deg\n"

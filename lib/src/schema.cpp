@@ -200,7 +200,17 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
 
 nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings& settings) {
   nlohmann::ordered_json out = nlohmann::ordered_json::object();
-  out["air"] = "vacuum";
+  if (settings.air) {
+    const Air& air = *settings.air;
+    out["air"] = {{"density", air.density},
+                  {"drag_coefficient", air.drag_coefficient ? nlohmann::ordered_json(*air.drag_coefficient) : nlohmann::ordered_json("Cd(Re)")},
+                  {"projectile_density", air.projectile_density},
+                  {"projectile_diameter", sphere_diameter(engine.m, air.projectile_density)},
+                  {"wind", air.wind}};
+  } else {
+    out["air"] = "vacuum";
+  }
+  out["range_from"] = settings.range_from_release ? "release" : "pivot";
   out["g"] = engine.material.g;
   out["theta_i_deg"] = engine.theta_i_deg;
   out["F"] = arm_fraction(engine);
@@ -216,6 +226,7 @@ nlohmann::ordered_json design_json(const OptimalEngine& design) {
   nlohmann::ordered_json out = nlohmann::ordered_json::object();
   for (const Field& field : fields) out[field.key] = field.value;
   out["branch"] = branch_name(design.branch);
+  out["air"] = "vacuum";  // R and T: the paper's, in vacuum
   if (design.scaled_from)
     out["scaled_from"] = {{"factor", design.scaled_from->factor}, {"R", design.scaled_from->full_size.R}, {"T", design.scaled_from->full_size.T}};
   if (design.branch_steps) {
@@ -266,7 +277,7 @@ namespace {
 // one that is not finite.
 std::vector<Field> verification_fields(const Verification& v) {
   std::vector<Field> fields = {
-      {"R", v.capacity.R, "m"}, {"T", v.capacity.T, "J"}, {"eps", v.eps}, {"Q", v.Q}, {"force_factor", v.force_factor},
+      {"R", v.capacity.R, "m"}, {"T", v.capacity.T, "J"}, {"R_vacuum", v.R_vacuum, "m"}, {"eps", v.eps}, {"Q", v.Q}, {"force_factor", v.force_factor},
       {"v", v.v, "m_s"}, {"h", v.h, "m"}, {"x", v.x, "m"}, {"A_deg", v.A_deg}, {"t_release", v.t_release, "s"},
       {"t_liftoff", v.t_liftoff, "s"}, {"FS_perp_mg", v.FS_perp_mg}, {"FR_Mg", v.FR_Mg}, {"dFRh_Mg", v.dFRh_Mg},
       {"energy_drift", v.energy_drift}};
@@ -308,7 +319,8 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
     for (const Field& field : fields) row.push_back(csv_number(field.value, digits));
   for (const Field& field : check_fields(check)) row.push_back(check ? csv_number(field.value, digits) : "");
   const nlohmann::ordered_json assumed = assumptions_json(engine, settings);
-  row.insert(row.end(), {check ? (check->pass ? "yes" : "no") : "", assumed["air"].get<std::string>(), assumed["release"].get<std::string>(),
+  const std::string air = settings.air ? describe_air(*settings.air, engine.m) : "vacuum";
+  row.insert(row.end(), {check ? (check->pass ? "yes" : "no") : "", air, assumed["release"].get<std::string>(),
                          csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), joined_warnings(v.warnings)});
   return row;
 }

@@ -263,6 +263,23 @@ void trace_released(const Dynamics& dynamics, const IntegratorSettings& settings
   }
 }
 
+// The range the release maximises under Release::range: in vacuum from the pivot to level 0
+// (the paper's), else through the criterion's drag, or Denny's, from the release point to where
+// the flight dips below the release height (section 6.3); 0 where the flight never comes down.
+double objective_range(const ReleasePoint& r, const ReleaseCriterion& criterion) {
+  if (!criterion.drag && !criterion.range_from_release) return r.range;
+  const double drop = criterion.range_from_release ? 0 : r.height;
+  double range = 0;
+  if (criterion.drag) {
+    const auto end = fly(r.position, r.velocity, drop, *criterion.drag, 1);
+    if (!end) return 0;
+    range = end->range;
+  } else {
+    range = vacuum_range(r.position, r.velocity, drop, 1);
+  }
+  return criterion.range_from_release ? range + r.position.x : range;
+}
+
 }  // namespace
 
 ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criterion, double t, const State& s,
@@ -284,7 +301,7 @@ ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criter
     switch (criterion.release) {
       case Release::quality: r.objective = r.quality; break;
       case Release::efficiency: r.objective = r.efficiency; break;
-      case Release::range: r.objective = r.range; break;  // tab:Denny, "Present" row
+      case Release::range: r.objective = objective_range(r, criterion); break;  // tab:Denny, "Present" row
     }
   }
   return r;

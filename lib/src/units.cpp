@@ -15,7 +15,7 @@ struct Unit {
   double to_si;  // multiply by this to get SI base units (degrees for angles)
 };
 
-constexpr std::array<Unit, 23> units = {{
+constexpr std::array<Unit, 25> units = {{
     {"m", UnitDimension::length, 1.0},
     {"cm", UnitDimension::length, 1e-2},
     {"mm", UnitDimension::length, 1e-3},
@@ -39,6 +39,8 @@ constexpr std::array<Unit, 23> units = {{
     {"%", UnitDimension::dimensionless, 1e-2},
     {"s", UnitDimension::time, 1.0},
     {"ms", UnitDimension::time, 1e-3},
+    {"m/s", UnitDimension::speed, 1.0},
+    {"km/h", UnitDimension::speed, 1 / 3.6},
 }};
 
 // How messages speak of each dimension.
@@ -59,6 +61,7 @@ DimensionText dimension_text(UnitDimension dimension) {
     case UnitDimension::pressure: return {"a pressure", "pascals", "12GPa"};
     case UnitDimension::density: return {"a density", "kg/m^3", "700kg/m3"};
     case UnitDimension::time: return {"a time", "seconds", "5ms"};
+    case UnitDimension::speed: return {"a speed", "m/s", "5m/s"};
   }
   return {"?", "?", "?"};
 }

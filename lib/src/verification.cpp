@@ -9,7 +9,8 @@
 
 namespace trebuchet {
 
-Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level) {
+Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level, const std::optional<Air>& air,
+                             bool range_from_release) {
   const ReleasePoint& r = shot.release;
   const double L2 = engine.L2, g = engine.material.g;
   const double speed_unit = std::sqrt(g * L2), time_unit = std::sqrt(L2 / g);  // section 3
@@ -25,10 +26,28 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   if (!(target_level <= apex))
     throw Error(ErrorKind::usage, "the target level " + format_significant(target_level, 4) + " m lies above the apex of the flight, " +
                                       format_significant(apex, 4) + " m above the engine's base; give a target level below it");
-  out.capacity.R = vacuum_range({out.x, 0}, {vx, vy}, drop, g);
+  out.R_vacuum = vacuum_range({out.x, 0}, {vx, vy}, drop, g);
+  out.capacity.R = out.R_vacuum;
   // eq:T at the target level: the height above it is drop/L2, scaled; M g L2 turns tau_e into joules.
   out.capacity.T = energy_at_target(engine.m / engine.M, r.velocity, drop / L2) * engine.M * g * L2;
-  out.capacity.target_level = target_level;
+  out.capacity.target_level = range_from_release ? out.h : target_level;
+  if (air || range_from_release) {
+    // The flight's end: the target level, or back at the release height for Denny's range,
+    // which is measured from the release point (x behind the pivot) rather than the pivot.
+    const double end_drop = range_from_release ? 0 : drop;
+    double range = 0;
+    Vec2 end_velocity{vx, vy};
+    if (air) {
+      const auto end = fly({out.x, 0}, {vx, vy}, end_drop, drag_of(*air, engine.m), g);
+      if (!end) throw Error(ErrorKind::numerical, "the flight through air did not come down to its end; check the air's parameters");
+      range = end->range, end_velocity = end->velocity;
+    } else {
+      range = vacuum_range({out.x, 0}, {vx, vy}, 0, g);
+      end_velocity.y = -vy;
+    }
+    out.capacity.R = range_from_release ? range + out.x : range;
+    out.capacity.T = engine.m * (end_velocity.x * end_velocity.x + end_velocity.y * end_velocity.y) / 2;
+  }
   out.eps = r.efficiency;
   out.Q = r.quality;
   out.force_factor = r.force_factor;
@@ -50,8 +69,12 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
 
 Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace, double trace_dt_s) {
   const double time_unit = std::sqrt(engine.L2 / engine.material.g);  // section 3 [s]
-  const ShotResult shot = simulate_shot(scaled_design(engine), settings.criterion, settings.integrator, trace, trace_dt_s / time_unit);
-  return verification_of(engine, shot, settings.target_level);
+  // The release under Release::range maximises the range as the settings define it.
+  ReleaseCriterion criterion = settings.criterion;
+  if (settings.air) criterion.drag = scaled(drag_of(*settings.air, engine.m), engine.L2, engine.material.g);
+  criterion.range_from_release = settings.range_from_release;
+  const ShotResult shot = simulate_shot(scaled_design(engine), criterion, settings.integrator, trace, trace_dt_s / time_unit);
+  return verification_of(engine, shot, settings.target_level, settings.air, settings.range_from_release);
 }
 
 }  // namespace trebuchet

@@ -6,6 +6,7 @@
 
 #include <array>
 
+#include "trebuchet/air.hpp"
 #include "trebuchet/dynamics.hpp"
 
 namespace trebuchet {
@@ -17,6 +18,11 @@ enum class Release { quality, efficiency, range };
 struct ReleaseCriterion {
   Release release = Release::quality;
   double n = 1;  ///< exponent of eps in eq:Q_n; Q is reported with it whatever the release
+  /// For Release::range: the drag the range is flown through (scaled, air.hpp; none: vacuum),
+  /// and whether the range is Denny's, from the release point to where the flight dips below
+  /// the release height, rather than from the pivot to the base's level.
+  std::optional<Drag> drag;
+  bool range_from_release = false;
 };
 
 /// The forces of eq:F at one moment, in M g: F_S_perp, |F_R|, F_Rh and -F_Rh, so that every

@@ -1,6 +1,7 @@
 // The whole public API of the trebuchet library, for programs that want it all.
 #pragma once
 
+#include "trebuchet/air.hpp"
 #include "trebuchet/batch.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/capacity.hpp"

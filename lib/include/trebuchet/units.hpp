@@ -14,7 +14,7 @@ inline double radians(double degrees) { return degrees * M_PI / 180.0; }
 inline double degrees(double radians) { return radians * 180 / M_PI; }
 
 /// Dimensions of option values; the first four are those of Quantity.
-enum class UnitDimension { length, mass, energy, dimensionless, angle, acceleration, pressure, density, time };
+enum class UnitDimension { length, mass, energy, dimensionless, angle, acceleration, pressure, density, time, speed };
 
 UnitDimension unit_dimension(Dimension dimension);
 

@@ -2,9 +2,11 @@
 // turned back into metres, joules and newtons with L2, M and the engine's g (section 3).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "trebuchet/air.hpp"
 #include "trebuchet/capacity.hpp"
 #include "trebuchet/engine.hpp"
 #include "trebuchet/shot.hpp"
@@ -15,11 +17,16 @@ struct ShotSettings {
   double target_level = 0;     ///< target height relative to the engine's base [m], e.g. -54
   ReleaseCriterion criterion{};
   IntegratorSettings integrator{};
+  std::optional<Air> air;      ///< none: vacuum (the paper's, and the default)
+  /// Denny's range (section 6.3): from the release point to where the flight dips below the
+  /// release height, instead of from the pivot to the target level.
+  bool range_from_release = false;
 };
 
 /// What trebuchet-verify reports, in SI units (angles in degrees).
 struct Verification {
-  Capacity capacity;       ///< vacuum range from the pivot and energy eq:T, both at the target level
+  Capacity capacity;       ///< range and energy (eq:T) at the end of the flight, under the settings' air and range definition
+  double R_vacuum = 0;     ///< the paper's range: in vacuum, from the pivot to the target level [m]
   double eps = 0;          ///< efficiency T/Delta U at level 0, eq:Aux
   double Q = 0;            ///< quality at the release, eq:Q or eq:Q_n (with the n of the settings)
   double force_factor = 0; ///< F of eq:F, scaled
@@ -39,9 +46,11 @@ struct Verification {
   std::vector<std::string> warnings;
 };
 
-/// The SI figures of a shot of `engine` (of scaled design scaled_design(engine)). Throws
-/// Error(usage) when the target level lies above the apex of the flight.
-Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level);
+/// The SI figures of a shot of `engine` (of scaled design scaled_design(engine)), its flight in
+/// vacuum or through `air`, to the target level or (range_from_release) back to the release
+/// height. Throws Error(usage) when the target level lies above the apex of the flight.
+Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level,
+                             const std::optional<Air>& air = std::nullopt, bool range_from_release = false);
 
 /// Simulates one shot of `engine` under its own g. Throws Error(numerical) as simulate_shot
 /// does. With `trace`, the motion is appended to it (scaled, see simulate_shot): at the step

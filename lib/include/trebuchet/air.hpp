@@ -1,0 +1,60 @@
+// The projectile's flight through air, when a scene asks for it (--air): quadratic drag on a
+// sphere, as the paper's discussion of tab:Denny (section 6.3) assumes, integrated with GSL
+// odeiv2 to the target level. Vacuum stays the default everywhere else.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "trebuchet/dynamics.hpp"
+
+namespace trebuchet {
+
+/// The air and the projectile's make. Defaults: a stone sphere in still air at sea level.
+struct Air {
+  double density = 1.2;                ///< of the air [kg/m^3]
+  std::optional<double> drag_coefficient = 0.47;  ///< Cd of a sphere; nullopt: Cd(Re), drag_coefficient_of
+  double projectile_density = 2500;    ///< stone [kg/m^3]; iron 7870
+  double viscosity = 1.81e-5;          ///< dynamic viscosity of air at 15 degC [Pa s], for Re
+  double wind = 0;                     ///< horizontal wind toward the target (against it: < 0) [m/s]
+};
+
+/// The diameter of a sphere of `mass` [kg] and `density` [kg/m^3] [m].
+double sphere_diameter(double mass, double density);
+
+/// Cd(Re) of a smooth sphere, by Morrison's correlation (2013), for 0.1 < Re < 1e6 and beyond.
+double drag_coefficient_of(double reynolds);
+
+/// Drag in the units of a flight: SI, or scaled by L2 and sqrt(L2/g) (section 3). The drag
+/// acceleration is -Cd per_length |u| u, u the velocity through the air.
+struct Drag {
+  double per_length = 0;            ///< rho_air A / (2 m), A the sphere's cross-section
+  std::optional<double> drag_coefficient;  ///< constant Cd; nullopt: Cd(reynolds_per_speed |u|)
+  double reynolds_per_speed = 0;    ///< rho_air d / viscosity
+  double wind = 0;                  ///< toward the target
+};
+
+/// The drag on a projectile of `mass` [kg] in SI units.
+Drag drag_of(const Air& air, double mass);
+
+/// The same drag in the scaled units of an engine with short arm L2 [m] under g [m/s^2].
+Drag scaled(const Drag& drag, double L2, double g);
+
+/// Where a flight ends. Positions are relative to the pivot, as in the shot: x > 0 behind it,
+/// the target toward -x.
+struct FlightEnd {
+  double range = 0;    ///< -x at the end: from the pivot toward the target
+  double time = 0;     ///< of flight
+  Vec2 velocity;       ///< at the end
+};
+
+/// The flight from `position` with `velocity` until it comes down through the level `drop`
+/// below the start (drop 0: back at the release height, Denny's range), under gravity g and
+/// the drag, in the units of both. nullopt when it never comes down there (it climbs past the
+/// time limit) or the integrator fails.
+std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Drag& drag, double g);
+
+/// "air (Cd 0.47, air 1.2 kg/m3, stone sphere of 2500 kg/m3, d = 0.43 m, no wind)" for outputs.
+std::string describe_air(const Air& air, double mass);
+
+}  // namespace trebuchet

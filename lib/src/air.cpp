@@ -1,0 +1,120 @@
+#include "trebuchet/air.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+
+#include <cmath>
+#include <memory>
+
+#include "trebuchet/format.hpp"
+#include "gsl_errors.hpp"
+#include "solve_1d.hpp"
+
+namespace trebuchet {
+namespace {
+
+struct FlightParameters {
+  Drag drag;
+  double g;
+};
+
+// dx/dt = v, dv/dt = -g y^ - Cd (rho A / 2m) |u| u with u = v - wind (the target lies toward -x).
+int flight_rhs(double, const double y[], double dydt[], void* params) {
+  const auto& p = *static_cast<const FlightParameters*>(params);
+  const double ux = y[2] + p.drag.wind, uy = y[3];
+  const double speed = std::sqrt(ux * ux + uy * uy);
+  const double cd = p.drag.drag_coefficient ? *p.drag.drag_coefficient : drag_coefficient_of(p.drag.reynolds_per_speed * speed);
+  const double k = cd * p.drag.per_length * speed;
+  dydt[0] = y[2];
+  dydt[1] = y[3];
+  dydt[2] = -k * ux;
+  dydt[3] = -p.g - k * uy;
+  return GSL_SUCCESS;
+}
+
+struct DriverDeleter {
+  void operator()(gsl_odeiv2_driver* d) const { gsl_odeiv2_driver_free(d); }
+};
+
+}  // namespace
+
+double sphere_diameter(double mass, double density) { return std::cbrt(6 * mass / (M_PI * density)); }
+
+double drag_coefficient_of(double re) {
+  if (!(re > 0)) return 0;
+  // Morrison, "An introduction to fluid mechanics" (2013), eq. 8.83: a fit to the standard
+  // drag curve of a smooth sphere, with the drag crisis near Re = 3e5.
+  const double a = re / 5, b = re / 263000, c = re / 1e6;
+  return 24 / re + 2.6 * a / (1 + std::pow(a, 1.52)) + 0.411 * std::pow(b, -7.94) / (1 + std::pow(b, -8)) + 0.25 * c / (1 + c);
+}
+
+Drag drag_of(const Air& air, double mass) {
+  const double d = sphere_diameter(mass, air.projectile_density);
+  Drag drag;
+  drag.per_length = air.density * (M_PI * d * d / 4) / (2 * mass);
+  drag.drag_coefficient = air.drag_coefficient;
+  drag.reynolds_per_speed = air.density * d / air.viscosity;
+  drag.wind = air.wind;
+  return drag;
+}
+
+Drag scaled(const Drag& drag, double L2, double g) {
+  const double speed_unit = std::sqrt(g * L2);  // section 3
+  Drag out = drag;
+  out.per_length = drag.per_length * L2;
+  out.reynolds_per_speed = drag.reynolds_per_speed * speed_unit;
+  out.wind = drag.wind / speed_unit;
+  return out;
+}
+
+std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Drag& drag, double g) {
+  use_gsl_return_codes();
+  FlightParameters parameters{drag, g};
+  gsl_odeiv2_system system{flight_rhs, nullptr, 4, &parameters};
+  // The flight in vacuum sets the scale of time; drag only shortens it.
+  const double vacuum_time = (velocity.y + std::sqrt(velocity.y * velocity.y + 2 * g * std::max(drop, 0.0))) / g;
+  const double chunk = std::max(vacuum_time, 1e-6) / 32;
+  std::unique_ptr<gsl_odeiv2_driver, DriverDeleter> driver(gsl_odeiv2_driver_alloc_y_new(&system, gsl_odeiv2_step_rk8pd, chunk / 8, 1e-13, 1e-13));
+  // State from the start to time t, integrated afresh from (t0, y0) each time, so that a root
+  // search sees one smooth function.
+  auto integrate = [&](double t0, const double* y0, double t, double* y) {
+    for (int k = 0; k < 4; ++k) y[k] = y0[k];
+    gsl_odeiv2_driver_reset(driver.get());
+    double time = t0;
+    return t <= t0 || gsl_odeiv2_driver_apply(driver.get(), &time, t, y) == GSL_SUCCESS;
+  };
+  double y0[4] = {position.x, 0, velocity.x, velocity.y};
+  double a[4], b[4];
+  double t_a = 0;
+  for (int k = 0; k < 4; ++k) a[k] = y0[k];
+  // Steps of a chunk until the height falls through -drop on the way down.
+  for (int n = 0; n < 4096; ++n) {
+    const double t_b = t_a + chunk;
+    if (!integrate(t_a, a, t_b, b)) return std::nullopt;
+    if (b[1] <= -drop && b[3] < 0) {
+      double end[4];
+      const double t_end = find_root(
+          [&](double t) {
+            integrate(t_a, a, t, end);
+            return end[1] + drop;
+          },
+          t_a, t_b, 0, 1e-15);
+      integrate(t_a, a, t_end, end);
+      return FlightEnd{-end[0], t_end, {end[2], end[3]}};
+    }
+    for (int k = 0; k < 4; ++k) a[k] = b[k];
+    t_a = t_b;
+  }
+  return std::nullopt;
+}
+
+std::string describe_air(const Air& air, double mass) {
+  std::string text = "air (";
+  text += air.drag_coefficient ? "Cd " + format_significant(*air.drag_coefficient, 3) : std::string("Cd(Re) of a smooth sphere");
+  text += ", air " + format_significant(air.density, 3) + " kg/m3, a sphere of " + format_significant(air.projectile_density, 4) +
+          " kg/m3, d = " + format_significant(sphere_diameter(mass, air.projectile_density), 3) + " m, ";
+  text += air.wind == 0 ? std::string("no wind") : "wind " + format_significant(air.wind, 3) + " m/s toward the target";
+  return text + ")";
+}
+
+}  // namespace trebuchet
