@@ -1,7 +1,6 @@
 #include "trebuchet/optimizer.hpp"
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_multimin.h>
 
 #include <cmath>
 #include <memory>
@@ -9,6 +8,7 @@
 #include "gsl_errors.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/error.hpp"
+#include "simplex.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/units.hpp"
 
@@ -68,10 +68,10 @@ struct Search {
 
   // Minus the quality of the shape at log coordinates x, its mu fitted to the capacity; a
   // shape that cannot deliver it, or fails, scores 0.
-  double cost(const gsl_vector* x, double theta, double F) {
+  double cost(const std::vector<double>& x, double theta, double F) {
     // mu starts from the best fit so far: the simplex moves in small steps, so its mu is close.
     const double warm_mu = best > 0 ? best_fit.design.mu : 0;
-    const ScaledDesign shape{std::exp(gsl_vector_get(x, 0)), std::exp(gsl_vector_get(x, 1)), std::exp(gsl_vector_get(x, 2)), warm_mu, theta, F};
+    const ScaledDesign shape{std::exp(x[0]), std::exp(x[1]), std::exp(x[2]), warm_mu, theta, F};
     try {
       const CapacityFit fit = request->projectile_mass
                                   ? fit_range_and_mass(shape, request->capacity.R, *request->projectile_mass, request->material, request->settings)
@@ -92,32 +92,17 @@ struct Search {
   }
 };
 
-double cost_function(const gsl_vector* x, void* params) {
-  auto* p = static_cast<std::pair<Search*, const ScaledDesign*>*>(params);
-  return p->first->cost(x, p->second->theta_i_deg, p->second->F);
-}
-
 Optimum search_from(const OptimizeRequest& request, const Start& start) {
   Search search;
   search.request = &request;
   const ScaledDesign fixed = start.shape;
-  std::pair<Search*, const ScaledDesign*> params{&search, &fixed};
-  gsl_multimin_function function{cost_function, 3, &params};
-  std::unique_ptr<gsl_vector, decltype(&gsl_vector_free)> x(gsl_vector_alloc(3), gsl_vector_free), step(gsl_vector_alloc(3), gsl_vector_free);
-  gsl_vector_set(x.get(), 0, std::log(start.shape.l));
-  gsl_vector_set(x.get(), 1, std::log(start.shape.l4));
-  gsl_vector_set(x.get(), 2, std::log(start.shape.mu_b));
-  gsl_vector_set_all(step.get(), 0.05);  // 5 % in each shape parameter
-  std::unique_ptr<gsl_multimin_fminimizer, decltype(&gsl_multimin_fminimizer_free)> minimizer(
-      gsl_multimin_fminimizer_alloc(gsl_multimin_fminimizer_nmsimplex2, 3), gsl_multimin_fminimizer_free);
-  gsl_multimin_fminimizer_set(minimizer.get(), &function, x.get(), step.get());
   Optimum out;
   out.start = start.name;
   out.start_design = start.shape;
-  for (out.iterations = 0; out.iterations < 400; ++out.iterations) {
-    if (gsl_multimin_fminimizer_iterate(minimizer.get()) != GSL_SUCCESS) break;
-    if (gsl_multimin_test_size(gsl_multimin_fminimizer_size(minimizer.get()), request.shape_tolerance) == GSL_SUCCESS) break;
-  }
+  // 5 % steps in each shape parameter, in (log l, log l4, log mu_b).
+  out.iterations = minimize_simplex([&](const std::vector<double>& x) { return search.cost(x, fixed.theta_i_deg, fixed.F); },
+                                    {std::log(start.shape.l), std::log(start.shape.l4), std::log(start.shape.mu_b)}, 0.05,
+                                    request.shape_tolerance, 400);
   if (!(search.best > 0))
     throw Error(ErrorKind::out_of_range, "no shape near the " + start.name + " start delivers " +
                                              format_significant(request.capacity.R, 4) + " m with " +
