@@ -20,6 +20,7 @@
 #include "program.hpp"
 #include "trebuchet/air.hpp"
 #include "trebuchet/capacity_fit.hpp"
+#include "trebuchet/completion.hpp"
 #include "trebuchet/csv.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
@@ -40,7 +41,7 @@ namespace {
 
 using namespace trebuchet;
 
-const char* const subcommands[] = {"shot", "fit", "optimize", "derive-table", "merge"};
+const char* const subcommands[] = {"shot", "fit", "optimize", "derive-table", "merge", "complete"};
 
 // Options as typed; parsed after CLI11 has matched them, so that messages name the option.
 struct Options {
@@ -61,6 +62,7 @@ struct Options {
   bool air = false;
   std::string air_density, drag_coefficient, projectile, wind;
   std::string range_from = "pivot";
+  std::string Lb, H, D, l, wood_density;  // complete: what a source attests
 };
 
 const std::pair<const char*, UnitDimension> engine_keys[] = {
@@ -106,6 +108,7 @@ ShotSettings shot_settings(const Options& o) {
 // --g over `base`.
 Material sizing_material(const Options& o, Material base) {
   if (!o.beta2.empty()) base.beta2 = parse_positive(o.beta2, UnitDimension::dimensionless, "--beta2");
+  if (!o.wood_density.empty()) base.wood_density = parse_positive(o.wood_density, UnitDimension::density, "--wood-density");
   if (!o.g.empty()) base.g = parse_positive(o.g, UnitDimension::acceleration, "--g");
   return base;
 }
@@ -406,6 +409,34 @@ int run_derive_table(const Options& o) {
   return print_derived(derived_table_json(table), failed_points(table));
 }
 
+// complete: the best engine that keeps what a source attests (completion.hpp).
+int run_complete(const Options& o) {
+  check_format(o);
+  CompletionRequest request;
+  Attested& a = request.attested;
+  auto read = [](const std::string& text, UnitDimension dimension, const char* name) {
+    return text.empty() ? std::nullopt : std::optional<double>(parse_value(text, dimension, name));
+  };
+  a.Lb = read(o.Lb, UnitDimension::length, "--Lb");
+  a.L1 = read(o.engine_flags.at("L1"), UnitDimension::length, "--L1");
+  a.L2 = read(o.engine_flags.at("L2"), UnitDimension::length, "--L2");
+  a.H = read(o.H, UnitDimension::length, "--H");
+  a.L4 = read(o.engine_flags.at("L4"), UnitDimension::length, "--L4");
+  a.M = read(o.engine_flags.at("M"), UnitDimension::mass, "--M");
+  a.m = read(o.engine_flags.at("m"), UnitDimension::mass, "--m");
+  a.mb = read(o.engine_flags.at("mb"), UnitDimension::mass, "--mb");
+  a.D = read(o.D, UnitDimension::length, "--D");
+  a.l = read(o.l, UnitDimension::dimensionless, "--l");
+  a.theta_i_deg = read(o.theta, UnitDimension::angle, "--theta");
+  a.F = read(o.engine_flags.at("F"), UnitDimension::dimensionless, "--F");
+  request.material = sizing_material(o, Material{});
+  request.settings = shot_settings(o);
+  const Completion completion = complete_engine(request);
+  if (o.format == "json") std::cout << completion_json(completion, request.settings).dump(2) << "\n";
+  else std::cout << completion_table(completion, request.settings);
+  return exit_success;
+}
+
 // merge: sweep parts into one table.
 int run_merge(const Options& o) {
   std::vector<SweepPart> parts;
@@ -483,13 +514,36 @@ int main(int argc, char** argv) {
   CLI::App* derive = app.add_subcommand("derive-table", "re-derive tab:CPNC for --theta and --F: optimise along --X and fit eq:f_ZX "
                                                         "(JSON for the calculator's --table)");
   CLI::App* merge = app.add_subcommand("merge", "join the parts written by derive-table --shard into one table");
-  shot->add_flag("--air", o.air, "fly through air (quadratic drag on a sphere) instead of vacuum; with --quality range the release maximises the range in air");
-  shot->add_option("--air-density", o.air_density, "density of the air (default 1.2kg/m3)");
-  shot->add_option("--cd", o.drag_coefficient, "drag coefficient of the sphere (default 0.47), or Re for Cd(Re) of a smooth sphere");
-  shot->add_option("--projectile", o.projectile, "stone (2500kg/m3, the default), iron (7870kg/m3) or a density: gives the sphere's size");
-  shot->add_option("--wind", o.wind, "horizontal wind toward the target, e.g. 5m/s or -20km/h (against)");
-  shot->add_option("--range-from", o.range_from, "pivot (the paper's: to the target level) or release (Denny's: from the release point back to its height)")
-      ->capture_default_str();
+  CLI::App* complete = app.add_subcommand("complete", "complete an engine from what a source attests (any of --Lb --L1 --L2 --H --L4 --M --m --mb --D "
+                                                     "--theta --F): keep those, choose the rest for the highest Q (or --quality range)");
+  for (CLI::App* sub : {shot, complete}) {
+    sub->add_flag("--air", o.air, "fly through air (quadratic drag on a sphere) instead of vacuum; with --quality range the release maximises the range in air");
+    sub->add_option("--air-density", o.air_density, "density of the air (default 1.2kg/m3)");
+    sub->add_option("--cd", o.drag_coefficient, "drag coefficient of the sphere (default 0.47), or Re for Cd(Re) of a smooth sphere");
+    sub->add_option("--projectile", o.projectile, "stone (2500kg/m3, the default), iron (7870kg/m3) or a density: gives the sphere's size");
+    sub->add_option("--wind", o.wind, "horizontal wind toward the target, e.g. 5m/s or -20km/h (against)");
+    sub->add_option("--range-from", o.range_from, "pivot (the paper's: to the target level) or release (Denny's: from the release point back to its height)")
+        ->capture_default_str();
+  }
+  {
+    const std::pair<const char*, std::string*> lengths[] = {{"--Lb", &o.Lb}, {"--H", &o.H}, {"--D", &o.D}};
+    const char* help[] = {"beam length L1 + L2", "pivot height L1 cos(theta_i)", "beam diameter (instead of beta2)"};
+    for (int k = 0; k < 3; ++k) complete->add_option(lengths[k].first, *lengths[k].second, std::string(help[k]) + " [" + unit_list(UnitDimension::length) + "]");
+    complete->add_option("--l", o.l, "beam ratio L1/L2");
+    for (const char* key : {"L1", "L2", "L4", "M", "m", "mb", "F"}) {
+      const bool mass = key[0] == 'M' || key[0] == 'm';
+      complete->add_option("--" + std::string(key), o.engine_flags[key], std::string("attested ") + key +
+                                                                              (std::string(key) == "F" ? " (default 2/3)" : mass ? " [kg, t]" : " [m]"));
+    }
+    complete->add_option("--theta", o.theta, "attested initial beam angle theta_i [deg] (default 30, or from H and L1)");
+    complete->add_option("--target-level", o.target_level, "target height relative to the engine's base, e.g. -54m")->capture_default_str();
+    complete->add_option("--g", o.g, "gravitational acceleration (default 9.81m/s2)");
+    complete->add_option("--wood-density", o.wood_density, "density of the beam's wood (default 700kg/m3), for D and mb");
+    add_sizing_options(complete, o, "the beam");
+    add_release_options(complete, o);
+    add_integrator_options(complete, o);
+    add_format_option(complete, o);
+  }
   for (CLI::App* sub : {shot, fit}) {
     add_engine_options(sub, o);
     add_release_options(sub, o);
@@ -521,6 +575,7 @@ int main(int argc, char** argv) {
     if (fit->parsed()) return run_shot(o, true);
     if (optimizer->parsed()) return run_optimize(o);
     if (derive->parsed()) return run_derive_table(o);
+    if (complete->parsed()) return run_complete(o);
     return run_merge(o);
   });
 }

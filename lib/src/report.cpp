@@ -111,6 +111,56 @@ std::string optimum_table(const Optimum& optimum, const ShotSettings& settings) 
          std::to_string(optimum.iterations) + " simplex iterations):\n" + verification_table(optimum.fit.engine, settings, optimum.fit.verification);
 }
 
+namespace {
+
+// The engine's quantities that a completion keeps or chooses, with their values.
+std::vector<std::pair<std::string, double>> completed_values(const Engine& e) {
+  return {{"Lb", beam_length(e)}, {"L1", e.L1}, {"L2", e.L2}, {"H", pivot_height(e)}, {"L3", e.L3}, {"L4", e.L4},
+          {"M", e.M}, {"m", e.m}, {"mb", e.mb}, {"D", e.D}};
+}
+
+bool listed(const std::vector<std::string>& names, const std::string& name) {
+  for (const std::string& n : names)
+    if (n == name) return true;
+  return false;
+}
+
+}  // namespace
+
+std::string completion_table(const Completion& c, const ShotSettings& settings) {
+  auto join = [](const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+    return text.empty() ? std::string("none") : text;
+  };
+  const ReleaseCriterion& criterion = settings.criterion;
+  const std::string goal = criterion.release == Release::range ? "the longest range" : criterion.release == Release::efficiency ? "the highest eps" : "the highest Q";
+  std::ostringstream out;
+  out << "completed engine (" << c.simulations << " shots):\n"
+      << "  attested: " << join(c.attested) << "\n"
+      << "  implied:  " << join(c.implied) << "\n"
+      << "  chosen for " << goal << ": " << join(c.chosen) << "\n";
+  out << verification_table(c.engine, settings, c.verification);
+  if (c.calculator) {
+    const OptimalEngine& o = *c.calculator;
+    out << "the calculator's optimum for this engine's capacity in vacuum (R = " << format_significant(o.capacity.R, 4) << " m, T = "
+        << format_significant(o.capacity.T / 1e3, 4) << " kJ):";
+    const auto ours = completed_values(c.engine), optimum = completed_values(o.engine);
+    for (std::size_t k = 0; k < ours.size(); ++k) {
+      const std::string& name = ours[k].first;
+      if (name == "D" && !(c.engine.D > 0)) continue;
+      const double deviation = ours[k].second / optimum[k].second - 1;
+      out << (k ? "," : "") << " " << name << " " << format_significant(optimum[k].second, 4) << " ("
+          << (listed(c.attested, name) ? "attested " : listed(c.chosen, name) ? "chosen " : "") << (deviation >= 0 ? "+" : "")
+          << format_significant(100 * deviation, 3) << " %)";
+    }
+    out << "\n";
+  } else {
+    out << "no calculator optimum for this engine's capacity: " << c.calculator_note << "\n";
+  }
+  return out.str();
+}
+
 std::string engine_table(const Engine& e) {
   auto sig = [](double x) { return format_significant(x, 4); };
   auto mass = [&](double kg) { return kg >= 1000 ? sig(kg / 1000) + " t" : sig(kg) + " kg"; };

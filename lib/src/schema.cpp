@@ -358,4 +358,19 @@ nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s) 
   return out;
 }
 
+nlohmann::ordered_json completion_json(const Completion& c, const ShotSettings& settings) {
+  nlohmann::ordered_json out;
+  write_engine(out, c.engine);
+  out["attested"] = c.attested;
+  out["implied"] = c.implied;
+  out["chosen"] = c.chosen;
+  out["simulations"] = c.simulations;
+  const nlohmann::ordered_json shot = verification_json(c.verification);
+  for (const auto& [key, value] : shot.items()) out[key] = value;
+  out["assumptions"] = assumptions_json(c.engine, settings);
+  if (c.calculator) out["calculator"] = design_json(*c.calculator);
+  else out["calculator_note"] = c.calculator_note;
+  return out;
+}
+
 }  // namespace trebuchet

@@ -30,6 +30,10 @@ std::string engine_table(const Engine& engine);
 /// An optimum: where its search started and what it cost, its engine and its shot.
 std::string optimum_table(const Optimum& optimum, const ShotSettings& settings);
 
+/// A completed engine: each quantity attested, implied or chosen, the shot, and how far the
+/// chosen values sit from the calculator's optimum for the same capacity.
+std::string completion_table(const Completion& completion, const ShotSettings& settings);
+
 /// One CSV row per trace point: phase, time [s], angles [deg], angular speeds [rad/s],
 /// forces (F_S_perp/(m g), F_R and its components/(M g), F_H/(M g), normal/(m g)),
 /// energy [J] and its drift relative to Delta U (in phase III, from the energy at release,

@@ -12,6 +12,7 @@
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/capacity.hpp"
 #include "trebuchet/engine.hpp"
+#include "trebuchet/completion.hpp"
 #include "trebuchet/optimizer.hpp"
 #include "trebuchet/verification.hpp"
 
@@ -112,5 +113,10 @@ void require_finite_json(const nlohmann::ordered_json& json, const std::string& 
 /// An optimum: the engine's keys, start, simulations, iterations, wall_time_s (the whole
 /// search's, given by the caller) and the verification's keys of its shot.
 nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s);
+
+/// A completed engine: the engine's keys, attested, implied and chosen (names), simulations,
+/// the shot's keys, the assumptions, and the calculator's optimum for the same capacity
+/// (its design, or calculator_note).
+nlohmann::ordered_json completion_json(const Completion& completion, const ShotSettings& settings);
 
 }  // namespace trebuchet
