@@ -10,6 +10,7 @@
 #include <iterator>
 #include <sstream>
 #include <map>
+#include <random>
 #include <optional>
 #include <thread>
 #include <sys/wait.h>
@@ -34,6 +35,7 @@
 #include "trebuchet/sweep.hpp"
 #include "trebuchet/table_derivation.hpp"
 #include "trebuchet/text_input.hpp"
+#include "trebuchet/uncertainty.hpp"
 #include "trebuchet/units.hpp"
 #include "trebuchet/verification.hpp"
 
@@ -63,6 +65,8 @@ struct Options {
   std::string air_density, drag_coefficient, projectile, wind;
   std::string range_from = "pivot";
   std::string Lb, H, D, l, wood_density;  // complete: what a source attests
+  int samples = 10000;                    // Monte Carlo, when a value is a range or a spread
+  std::uint64_t seed = 1;
 };
 
 const std::pair<const char*, UnitDimension> engine_keys[] = {
@@ -127,6 +131,9 @@ struct Outcome {
 
 // Runs gnuplot on `script` inside `folder`; an error names what failed and how to fix it.
 void run_gnuplot(const std::filesystem::path& folder, const std::string& script) {
+  // What is printed so far must not be copied into the child, whose freopen would flush it again.
+  std::cout.flush();
+  std::fflush(stdout);
   const pid_t child = fork();
   if (child == 0) {
     // gnuplot's own messages go to gnuplot.log in the folder.
@@ -193,6 +200,186 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
   return out;
 }
 
+// complete's request from the options (completion.hpp).
+CompletionRequest completion_request(const Options& o) {
+  CompletionRequest request;
+  Attested& a = request.attested;
+  auto read = [](const std::string& text, UnitDimension dimension, const char* name) {
+    return text.empty() ? std::nullopt : std::optional<double>(parse_value(text, dimension, name));
+  };
+  a.Lb = read(o.Lb, UnitDimension::length, "--Lb");
+  a.L1 = read(o.engine_flags.at("L1"), UnitDimension::length, "--L1");
+  a.L2 = read(o.engine_flags.at("L2"), UnitDimension::length, "--L2");
+  a.H = read(o.H, UnitDimension::length, "--H");
+  a.L4 = read(o.engine_flags.at("L4"), UnitDimension::length, "--L4");
+  a.M = read(o.engine_flags.at("M"), UnitDimension::mass, "--M");
+  a.m = read(o.engine_flags.at("m"), UnitDimension::mass, "--m");
+  a.mb = read(o.engine_flags.at("mb"), UnitDimension::mass, "--mb");
+  a.D = read(o.D, UnitDimension::length, "--D");
+  a.l = read(o.l, UnitDimension::dimensionless, "--l");
+  a.theta_i_deg = read(o.theta, UnitDimension::angle, "--theta");
+  a.F = read(o.engine_flags.at("F"), UnitDimension::dimensionless, "--F");
+  request.material = sizing_material(o, Material{});
+  request.settings = shot_settings(o);
+  return request;
+}
+
+// The options whose value may be a range or a spread (uncertainty.hpp), in an Options.
+struct SpreadOption {
+  std::string name;
+  std::string* text;
+  UnitDimension dimension;
+};
+
+std::vector<SpreadOption> spread_options(Options& o) {
+  std::vector<SpreadOption> all;
+  for (const auto& [key, dimension] : engine_keys) all.push_back({"--" + std::string(key), &o.engine_flags[key], dimension});
+  const std::pair<const char*, std::pair<std::string*, UnitDimension>> others[] = {
+      {"--theta", {&o.theta, UnitDimension::angle}},        {"--target-level", {&o.target_level, UnitDimension::length}},
+      {"--wind", {&o.wind, UnitDimension::speed}},          {"--air-density", {&o.air_density, UnitDimension::density}},
+      {"--Lb", {&o.Lb, UnitDimension::length}},             {"--H", {&o.H, UnitDimension::length}},
+      {"--D", {&o.D, UnitDimension::length}},               {"--l", {&o.l, UnitDimension::dimensionless}}};
+  for (const auto& [name, option] : others) all.push_back({name, option.first, option.second});
+  return all;
+}
+
+// The uncertain options of a run, each with its distribution.
+std::vector<std::pair<std::string, Spread>> spreads_of(const Options& o) {
+  Options copy = o;
+  std::vector<std::pair<std::string, Spread>> spreads;
+  for (const SpreadOption& option : spread_options(copy))
+    if (!option.text->empty())
+      if (const auto spread = parse_spread(*option.text, option.dimension, option.name)) spreads.push_back({option.name, *spread});
+  return spreads;
+}
+
+// The SI unit an option's draws are in, for the report.
+std::string si_unit(const std::string& option) {
+  Options any;
+  for (const SpreadOption& o : spread_options(any))
+    if (o.name == option) switch (o.dimension) {
+        case UnitDimension::length: return " m";
+        case UnitDimension::mass: return " kg";
+        case UnitDimension::angle: return " deg";
+        case UnitDimension::speed: return " m/s";
+        case UnitDimension::density: return " kg/m3";
+        default: return "";
+      }
+  return "";
+}
+
+bool has_spreads(const Options& o) { return !spreads_of(o).empty(); }
+
+std::string describe_spread(const std::string& name, const Spread& s) {
+  return name + (s.kind == Spread::Kind::uniform ? " uniform " + format_significant(s.a, 4) + ".." + format_significant(s.b, 4)
+                                                 : " normal " + format_significant(s.a, 4) + "±" + format_significant(s.b, 4)) + si_unit(name);
+}
+
+// Monte Carlo over the uncertain options: each sample sets them to a draw (in SI units) and runs
+// the shot or the completion; the percentiles of R, T, eps and v, the failures, a histogram.
+int run_monte_carlo_of(const Options& o, bool complete) {
+  if (!o.input.empty()) throw Error(ErrorKind::usage, "ranges and spreads are for values given as flags; drop the file '" + o.input + "'");
+  if (o.samples < 1) throw Error(ErrorKind::usage, "--samples: " + std::to_string(o.samples) + " must be 1 or more");
+  if (!o.series.empty()) throw Error(ErrorKind::usage, "--series writes the motion of one shot; a Monte Carlo run has many");
+  const auto spreads = spreads_of(o);
+  const std::string title = [&] {
+    std::string text;
+    for (const auto& [name, spread] : spreads) text += (text.empty() ? "" : ", ") + describe_spread(name, spread);
+    return text;
+  }();
+  const auto start = std::chrono::steady_clock::now();
+  const MonteCarloSummary summary = run_monte_carlo(o.samples, o.seed, o.threads, [&](std::mt19937_64& random) {
+    Options sample = o;
+    for (SpreadOption& option : spread_options(sample))
+      for (const auto& [name, spread] : spreads)
+        if (name == option.name) *option.text = format_number(draw(spread, random));
+    SampleOutcome outcome;
+    try {
+      Verification v;
+      if (complete) {
+        v = complete_engine(completion_request(sample)).verification;
+      } else {
+        nlohmann::json flags = nlohmann::json::object();
+        for (const auto& [key, text] : sample.engine_flags)
+          if (!text.empty()) flags[key] = text;
+        if (!sample.theta.empty()) flags["theta_i_deg"] = sample.theta;
+        Engine engine = read_engine(flags, "").engine;
+        engine.material = sizing_material(sample, engine.material);
+        v = verify_engine(engine, shot_settings(sample));
+      }
+      outcome.values = {v.capacity.R, v.capacity.T, v.eps, v.v};
+    } catch (const Error& e) {
+      outcome.failure = e.what();
+    }
+    return outcome;
+  });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const ShotSettings settings = [&] {
+    Options plain = o;
+    for (SpreadOption& option : spread_options(plain))
+      for (const auto& [name, spread] : spreads)
+        if (name == option.name) *option.text = format_number(spread.a);
+    return shot_settings(plain);
+  }();
+  const std::string air = settings.air ? "air" : "vacuum";
+  if (o.format == "json") {
+    nlohmann::ordered_json out;
+    out["samples"] = summary.samples;
+    out["seed"] = o.seed;
+    out["worked"] = summary.values.size();
+    nlohmann::ordered_json uncertain = nlohmann::ordered_json::array();
+    for (const auto& [name, spread] : spreads)
+      uncertain.push_back({{"option", name}, {"distribution", spread.kind == Spread::Kind::uniform ? "uniform" : "normal"},
+                           {spread.kind == Spread::Kind::uniform ? "from" : "mean", spread.a}, {spread.kind == Spread::Kind::uniform ? "to" : "deviation", spread.b}});
+    out["uncertain"] = uncertain;
+    for (std::size_t k = 0; k < sample_names.size(); ++k)
+      if (!summary.values.empty())
+        out["percentiles"][sample_names[k]] = {{"p5", summary.percentiles[k][0]}, {"p50", summary.percentiles[k][1]}, {"p95", summary.percentiles[k][2]}};
+    nlohmann::ordered_json failures = nlohmann::ordered_json::array();
+    for (const auto& [reason, count] : summary.failures) failures.push_back({{"reason", reason}, {"count", count}});
+    out["failures"] = failures;
+    out["air"] = air;
+    out["wall_time_s"] = seconds;
+    std::cout << out.dump(2) << "\n";
+  } else {
+    std::cout << "Monte Carlo: " << summary.samples << " samples (--seed " << o.seed << ") of " << (complete ? "the completed engine" : "the shot")
+              << ", " << format_significant(seconds, 3) << " s on " << thread_count(o.threads, static_cast<std::size_t>(summary.samples)) << " thread(s)\n"
+              << "uncertain: " << title << "\n"
+              << "ranges in " << (settings.air ? describe_air(*settings.air, 0) : std::string("vacuum")) << "\n";
+    if (!summary.values.empty()) {
+      const char* labels[] = {"R [m]", "T [kJ]", "eps [%]", "v [m/s]"};
+      const double scales[] = {1, 1e-3, 100, 1};
+      std::cout << "           5 %        50 %       95 %\n";
+      for (std::size_t k = 0; k < sample_names.size(); ++k) {
+        std::string line = labels[k];
+        line.resize(9, ' ');
+        for (double p : summary.percentiles[k]) {
+          std::string cell = format_significant(p * scales[k], 4);
+          cell.resize(11, ' ');
+          line += cell;
+        }
+        std::cout << line.substr(0, line.find_last_not_of(' ') + 1) << "\n";
+      }
+    }
+    std::cout << "failed: " << summary.samples - static_cast<int>(summary.values.size()) << " samples";
+    for (const auto& [reason, count] : summary.failures) std::cout << "; " << count << " " << reason;
+    std::cout << "\n";
+  }
+  if (!o.plot.empty()) {
+    const std::filesystem::path folder(o.plot);
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    for (const PictureFile& file : histogram_pictures(summary, title)) {
+      std::ofstream out(folder / file.name);
+      out << file.text;
+      if (!out) throw Error(ErrorKind::usage, "--plot: cannot write " + (folder / file.name).string() + "; give a folder you can write to");
+    }
+    run_gnuplot(folder, "histogram.gp");
+  }
+  if (summary.values.empty()) throw Error(ErrorKind::numerical, "no sample worked; the first reason: " + summary.failures.front().first);
+  return exit_success;
+}
+
 // The designs of a run: a JSON object, a JSON array, CSV rows (docs/csv.md), or the flags.
 struct Inputs {
   std::vector<std::string> passed_columns;  // CSV columns that pass through, e.g. site
@@ -233,6 +420,7 @@ Inputs read_inputs(const Options& o) {
 // are computed design by design.
 int run_shot(const Options& o, bool fit) {
   check_format(o, true);
+  if (!fit && has_spreads(o)) return run_monte_carlo_of(o, false);
   if (o.threads < 1) throw Error(ErrorKind::usage, "--threads: " + std::to_string(o.threads) + " must be 1 or more");
   const ShotSettings settings = shot_settings(o);
   const double tolerance = parse_positive(o.tolerance, UnitDimension::dimensionless, "--tol");
@@ -412,25 +600,8 @@ int run_derive_table(const Options& o) {
 // complete: the best engine that keeps what a source attests (completion.hpp).
 int run_complete(const Options& o) {
   check_format(o);
-  CompletionRequest request;
-  Attested& a = request.attested;
-  auto read = [](const std::string& text, UnitDimension dimension, const char* name) {
-    return text.empty() ? std::nullopt : std::optional<double>(parse_value(text, dimension, name));
-  };
-  a.Lb = read(o.Lb, UnitDimension::length, "--Lb");
-  a.L1 = read(o.engine_flags.at("L1"), UnitDimension::length, "--L1");
-  a.L2 = read(o.engine_flags.at("L2"), UnitDimension::length, "--L2");
-  a.H = read(o.H, UnitDimension::length, "--H");
-  a.L4 = read(o.engine_flags.at("L4"), UnitDimension::length, "--L4");
-  a.M = read(o.engine_flags.at("M"), UnitDimension::mass, "--M");
-  a.m = read(o.engine_flags.at("m"), UnitDimension::mass, "--m");
-  a.mb = read(o.engine_flags.at("mb"), UnitDimension::mass, "--mb");
-  a.D = read(o.D, UnitDimension::length, "--D");
-  a.l = read(o.l, UnitDimension::dimensionless, "--l");
-  a.theta_i_deg = read(o.theta, UnitDimension::angle, "--theta");
-  a.F = read(o.engine_flags.at("F"), UnitDimension::dimensionless, "--F");
-  request.material = sizing_material(o, Material{});
-  request.settings = shot_settings(o);
+  if (has_spreads(o)) return run_monte_carlo_of(o, true);
+  const CompletionRequest request = completion_request(o);
   const Completion completion = complete_engine(request);
   if (o.format == "json") std::cout << completion_json(completion, request.settings).dump(2) << "\n";
   else std::cout << completion_table(completion, request.settings);
@@ -517,6 +688,8 @@ int main(int argc, char** argv) {
   CLI::App* complete = app.add_subcommand("complete", "complete an engine from what a source attests (any of --Lb --L1 --L2 --H --L4 --M --m --mb --D "
                                                      "--theta --F): keep those, choose the rest for the highest Q (or --quality range)");
   for (CLI::App* sub : {shot, complete}) {
+    sub->add_option("--samples", o.samples, "Monte Carlo samples, when a value is a range (2.5t..3.5t) or a spread (3.5m±0.2m)")->capture_default_str();
+    sub->add_option("--seed", o.seed, "seed of the Monte Carlo draws: the same seed, the same result")->capture_default_str();
     sub->add_flag("--air", o.air, "fly through air (quadratic drag on a sphere) instead of vacuum; with --quality range the release maximises the range in air");
     sub->add_option("--air-density", o.air_density, "density of the air (default 1.2kg/m3)");
     sub->add_option("--cd", o.drag_coefficient, "drag coefficient of the sphere (default 0.47), or Re for Cd(Re) of a smooth sphere");
@@ -538,6 +711,8 @@ int main(int argc, char** argv) {
     complete->add_option("--theta", o.theta, "attested initial beam angle theta_i [deg] (default 30, or from H and L1)");
     complete->add_option("--target-level", o.target_level, "target height relative to the engine's base, e.g. -54m")->capture_default_str();
     complete->add_option("--g", o.g, "gravitational acceleration (default 9.81m/s2)");
+    complete->add_option("--threads", o.threads, "threads for a Monte Carlo run (default: the cores)");
+    complete->add_option("--plot", o.plot, "with ranges or spreads: write the histogram of R and T into this folder (needs gnuplot)");
     complete->add_option("--wood-density", o.wood_density, "density of the beam's wood (default 700kg/m3), for D and mb");
     add_sizing_options(complete, o, "the beam");
     add_release_options(complete, o);

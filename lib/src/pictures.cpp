@@ -312,4 +312,35 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   return files;
 }
 
+std::vector<PictureFile> histogram_pictures(const MonteCarloSummary& summary, const std::string& title) {
+  std::ostringstream data;
+  data << "# R [m], T [kJ] of each sample that worked\n";
+  for (const auto& v : summary.values) data << format_significant(v[0], 8) << " " << format_significant(v[1] / 1e3, 8) << "\n";
+  std::ostringstream gp;
+  const int bins = 40;
+  auto panel = [&](int column, const char* label, double scale, std::size_t index) {
+    const auto& p = summary.percentiles[index];
+    const double lo = p[0] / scale, hi = p[2] / scale, median = p[1] / scale;
+    // Bins over the central 90 % widened by half on each side; the rest is drawn at the edges.
+    const double from = lo - (hi - lo) / 2, to = hi + (hi - lo) / 2, width = std::max((to - from) / bins, 1e-12);
+    gp << "set xlabel '" << label << "'\nset xrange [" << from << ":" << to << "]\n"
+       << "set arrow 1 from " << lo << ", graph 0 to " << lo << ", graph 1 nohead dt 2 lc rgb '#555555'\n"
+       << "set arrow 2 from " << median << ", graph 0 to " << median << ", graph 1 nohead lw 2 lc rgb '#b22222'\n"
+       << "set arrow 3 from " << hi << ", graph 0 to " << hi << ", graph 1 nohead dt 2 lc rgb '#555555'\n"
+       << "set label 1 '5 %' at " << lo << ", graph 1.03 center\nset label 2 '50 %' at " << median << ", graph 1.03 center\n"
+       << "set label 3 '95 %' at " << hi << ", graph 1.03 center\n"
+       << "bin(x) = " << from << " + " << width << " * (floor((x - " << from << ") / " << width << ") + 0.5)\n"
+       << "clamp(x) = x < " << from << " ? " << from + width / 2 << " : (x > " << to << " ? " << to - width / 2 << " : x)\n"
+       << "plot 'histogram.dat' using (bin(clamp($" << column << "))):(1) smooth frequency with boxes fs solid 0.5 lc rgb '#4682b4' notitle\n";
+  };
+  gp << "set terminal svg size 1100,450 dynamic font 'sans,12'\nset output 'histogram.svg'\n"
+     << "set multiplot layout 1,2 title \"" << title << "\\n" << summary.values.size() << " of " << summary.samples
+     << " samples worked; dashed: 5 and 95 %, red: the median\"\n"
+     << "set ylabel 'samples'\nset yrange [0:*]\nset tmargin 5\nset boxwidth 1 relative\nset grid ytics\n";
+  panel(1, "range R [m]", 1, 0);
+  panel(2, "energy at the target T [kJ]", 1e3, 1);
+  gp << "unset multiplot\n";
+  return {{"histogram.dat", data.str()}, {"histogram.gp", gp.str()}};
+}
+
 }  // namespace trebuchet

@@ -8,6 +8,7 @@
 
 #include "trebuchet/engine.hpp"
 #include "trebuchet/shot.hpp"
+#include "trebuchet/uncertainty.hpp"
 #include "trebuchet/verification.hpp"
 
 namespace trebuchet {
@@ -26,5 +27,10 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
 
 /// The gnuplot scripts of the set, in the order to run them.
 std::vector<std::string> picture_scripts();
+
+/// The histograms of a Monte Carlo run (uncertainty.hpp): R and T of the samples that worked,
+/// with their 5, 50 and 95 % percentiles marked; `title` says what was uncertain. The script
+/// histogram.gp writes histogram.svg.
+std::vector<PictureFile> histogram_pictures(const MonteCarloSummary& summary, const std::string& title);
 
 }  // namespace trebuchet

@@ -29,5 +29,6 @@
 #include "trebuchet/spreadsheet.hpp"
 #include "trebuchet/sweep.hpp"
 #include "trebuchet/table_derivation.hpp"
+#include "trebuchet/uncertainty.hpp"
 #include "trebuchet/units.hpp"
 #include "trebuchet/verification.hpp"

@@ -1,0 +1,52 @@
+// Uncertain inputs, because sources are vague: a value may be a range "2.5t..3.5t" (uniform) or
+// a spread "3.5m±0.2m" (normal, mean ± standard deviation), and a Monte Carlo run draws them on
+// every core, deterministically under a seed (docs/historians.md).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <random>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "trebuchet/units.hpp"
+
+namespace trebuchet {
+
+/// A distribution of one input, in SI units.
+struct Spread {
+  enum class Kind { uniform, normal } kind;
+  double a, b;  ///< uniform: from a to b; normal: mean a, standard deviation b
+};
+
+/// The spread of `text` ("2.5t..3.5t", "3.5m±0.2m", "3.5m+-0.2m"; each side with an optional
+/// unit, a bare number in SI units), or nullopt for a plain value. Throws Error(bad_number) for
+/// an empty or reversed range or a negative deviation, naming `name`.
+std::optional<Spread> parse_spread(std::string_view text, UnitDimension dimension, std::string_view name);
+
+double draw(const Spread& spread, std::mt19937_64& random);
+
+/// What one sample gives: R [m], T [J], eps and the release speed v [m/s], or why it failed.
+struct SampleOutcome {
+  std::array<double, 4> values{};
+  std::string failure;  ///< empty when the sample worked
+};
+
+inline constexpr std::array<const char*, 4> sample_names = {"R", "T", "eps", "v"};
+
+struct MonteCarloSummary {
+  int samples = 0;
+  std::vector<std::array<double, 4>> values;            ///< of the samples that worked, in sample order
+  std::array<std::array<double, 3>, 4> percentiles{};   ///< 5, 50 and 95 % of R, T, eps, v
+  std::vector<std::pair<std::string, int>> failures;    ///< each reason (its message up to the first ':') and its count
+};
+
+/// Runs `sample` for samples 0 .. n - 1 on `threads` threads. Sample i draws from its own
+/// generator, seeded from (seed, i), so the result is the same on any number of threads.
+MonteCarloSummary run_monte_carlo(int samples, std::uint64_t seed, int threads,
+                                  const std::function<SampleOutcome(std::mt19937_64& random)>& sample);
+
+}  // namespace trebuchet

@@ -1,0 +1,66 @@
+#include "trebuchet/uncertainty.hpp"
+
+#include <gsl/gsl_statistics_double.h>
+
+#include <algorithm>
+#include <map>
+
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/parallel.hpp"
+
+namespace trebuchet {
+
+std::optional<Spread> parse_spread(std::string_view text, UnitDimension dimension, std::string_view name) {
+  const std::string what = std::string(name) + ": '" + std::string(text) + "'";
+  if (const auto dots = text.find(".."); dots != std::string_view::npos) {
+    const double a = parse_value(text.substr(0, dots), dimension, name), b = parse_value(text.substr(dots + 2), dimension, name);
+    if (!(a < b)) throw Error(ErrorKind::bad_number, what + " is not a range from low to high; write it as low..high, e.g. 2.5t..3.5t");
+    return Spread{Spread::Kind::uniform, a, b};
+  }
+  for (std::string_view sign : {std::string_view("\u00b1"), std::string_view("+-")}) {
+    const auto at = text.find(sign);
+    if (at == std::string_view::npos) continue;
+    const double mean = parse_value(text.substr(0, at), dimension, name), deviation = parse_value(text.substr(at + sign.size()), dimension, name);
+    if (!(deviation >= 0)) throw Error(ErrorKind::bad_number, what + " has a negative deviation; write mean±deviation, e.g. 3.5m±0.2m");
+    return Spread{Spread::Kind::normal, mean, deviation};
+  }
+  return std::nullopt;
+}
+
+double draw(const Spread& spread, std::mt19937_64& random) {
+  if (spread.kind == Spread::Kind::uniform) return std::uniform_real_distribution<double>(spread.a, spread.b)(random);
+  return std::normal_distribution<double>(spread.a, spread.b)(random);
+}
+
+MonteCarloSummary run_monte_carlo(int samples, std::uint64_t seed, int threads,
+                                  const std::function<SampleOutcome(std::mt19937_64& random)>& sample) {
+  std::vector<SampleOutcome> outcomes(static_cast<std::size_t>(samples));
+  for_each_index(outcomes.size(), threads, [&](std::size_t i) {
+    // Each sample's own generator: its draws do not depend on which thread runs it, or when.
+    std::seed_seq sequence{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32), static_cast<std::uint32_t>(i),
+                           static_cast<std::uint32_t>(i >> 32)};
+    std::mt19937_64 random(sequence);
+    outcomes[i] = sample(random);
+  });
+  MonteCarloSummary summary;
+  summary.samples = samples;
+  std::map<std::string, int> failures;
+  for (const SampleOutcome& o : outcomes) {
+    if (o.failure.empty()) summary.values.push_back(o.values);
+    else ++failures[o.failure.substr(0, o.failure.find(':'))];
+  }
+  summary.failures.assign(failures.begin(), failures.end());
+  std::sort(summary.failures.begin(), summary.failures.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+  if (!summary.values.empty())
+    for (std::size_t k = 0; k < sample_names.size(); ++k) {
+      std::vector<double> column;
+      for (const auto& v : summary.values) column.push_back(v[k]);
+      std::sort(column.begin(), column.end());
+      for (int p = 0; p < 3; ++p)
+        summary.percentiles[k][static_cast<std::size_t>(p)] = gsl_stats_quantile_from_sorted_data(column.data(), 1, column.size(), std::array{0.05, 0.5, 0.95}[static_cast<std::size_t>(p)]);
+    }
+  return summary;
+}
+
+}  // namespace trebuchet

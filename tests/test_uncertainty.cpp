@@ -1,0 +1,51 @@
+// Uncertain inputs and the Monte Carlo run (issue 14, part 3).
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "trebuchet/error.hpp"
+#include "trebuchet/uncertainty.hpp"
+
+using namespace trebuchet;
+
+TEST_CASE("ranges and spreads read with their units", "[uncertainty]") {
+  const auto range = parse_spread("2.5t..3.5t", UnitDimension::mass, "--M");
+  REQUIRE(range);
+  CHECK(range->kind == Spread::Kind::uniform);
+  CHECK(range->a == 2500);
+  CHECK(range->b == 3500);
+  const auto spread = parse_spread("3.5m\u00b10.2m", UnitDimension::length, "--L4");
+  REQUIRE(spread);
+  CHECK(spread->kind == Spread::Kind::normal);
+  CHECK(spread->a == 3.5);
+  CHECK(spread->b == Approx(0.2).epsilon(1e-15));
+  CHECK(parse_spread("350cm+-20cm", UnitDimension::length, "--L4")->a == Approx(3.5).epsilon(1e-15));
+  CHECK(!parse_spread("3.5m", UnitDimension::length, "--L4"));
+  CHECK_THROWS_WITH(parse_spread("3.5t..2.5t", UnitDimension::mass, "--M"), Catch::Contains("not a range from low to high"));
+  CHECK_THROWS_WITH(parse_spread("3.5m..4kg", UnitDimension::length, "--L4"), Catch::Contains("is a mass"));
+}
+
+TEST_CASE("a Monte Carlo run is the same on any number of threads, and new with a new seed", "[uncertainty]") {
+  const Spread uniform{Spread::Kind::uniform, 100, 200}, normal{Spread::Kind::normal, 50, 5};
+  auto sample = [&](std::mt19937_64& random) {
+    SampleOutcome o;
+    o.values = {draw(uniform, random), draw(normal, random), 0.9, 40};
+    if (o.values[0] > 195) o.failure = "too far: beyond 195 m";
+    return o;
+  };
+  const MonteCarloSummary one = run_monte_carlo(10000, 7, 1, sample), two = run_monte_carlo(10000, 7, 2, sample);
+  CHECK(one.values == two.values);
+  CHECK(one.failures == two.failures);
+  CHECK(run_monte_carlo(10000, 8, 2, sample).values != one.values);
+  // The failures are counted by reason: about 5 % of a uniform 100..200 lies above 195. The
+  // count is binomial, sd sqrt(10000 0.05 0.95) = 22: 4 sd is 87.
+  REQUIRE(one.failures.size() == 1);
+  CHECK(one.failures.front().first == "too far");
+  CHECK(std::abs(one.failures.front().second - 500) < 87);
+  // Percentiles of what worked (uniform on 100..195, normal 50 ± 5), each to 4 standard errors
+  // of a quantile, sqrt(p (1 - p)/N)/density with N = 9500: 0.49 m for the uniform's median
+  // (density 1/95 per m), 0.064 for the normal's (density 0.080), 0.109 at 5 and 95 % (0.021).
+  CHECK(one.percentiles[0][1] == Approx(147.5).margin(4 * 0.49));
+  CHECK(one.percentiles[1][1] == Approx(50).margin(4 * 0.064));
+  CHECK(one.percentiles[1][0] == Approx(50 - 1.645 * 5).margin(4 * 0.109));
+  CHECK(one.percentiles[1][2] == Approx(50 + 1.645 * 5).margin(4 * 0.109));
+}
