@@ -49,7 +49,7 @@ const char* const subcommands[] = {"shot", "fit", "optimize", "derive-table", "m
 struct Options {
   std::string input;                                 // file, "-" for stdin, empty for flags
   std::map<std::string, std::string> engine_flags;   // L1 L2 L3 F L4 M m mb
-  std::string theta, g, R, T, beta2;
+  std::string theta, psi_i, g, R, T, beta2;
   std::string tolerance = "0.02";
   std::string target_level = "0";
   std::string format = "table";
@@ -235,7 +235,8 @@ std::vector<SpreadOption> spread_options(Options& o) {
   std::vector<SpreadOption> all;
   for (const auto& [key, dimension] : engine_keys) all.push_back({"--" + std::string(key), &o.engine_flags[key], dimension});
   const std::pair<const char*, std::pair<std::string*, UnitDimension>> others[] = {
-      {"--theta", {&o.theta, UnitDimension::angle}},        {"--target-level", {&o.target_level, UnitDimension::length}},
+      {"--theta", {&o.theta, UnitDimension::angle}},        {"--psi-i", {&o.psi_i, UnitDimension::angle}},
+      {"--target-level", {&o.target_level, UnitDimension::length}},
       {"--wind", {&o.wind, UnitDimension::speed}},          {"--air-density", {&o.air_density, UnitDimension::density}},
       {"--Lb", {&o.Lb, UnitDimension::length}},             {"--H", {&o.H, UnitDimension::length}},
       {"--D", {&o.D, UnitDimension::length}},               {"--l", {&o.l, UnitDimension::dimensionless}}};
@@ -303,6 +304,7 @@ int run_monte_carlo_of(const Options& o, bool complete) {
         for (const auto& [key, text] : sample.engine_flags)
           if (!text.empty()) flags[key] = text;
         if (!sample.theta.empty()) flags["theta_i_deg"] = sample.theta;
+        if (!sample.psi_i.empty()) flags["psi_i_deg"] = sample.psi_i;
         Engine engine = read_engine(flags, "").engine;
         engine.material = sizing_material(sample, engine.material);
         v = verify_engine(engine, shot_settings(sample));
@@ -425,7 +427,7 @@ int run_shot(const Options& o, bool fit) {
   const ShotSettings settings = shot_settings(o);
   const double tolerance = parse_positive(o.tolerance, UnitDimension::dimensionless, "--tol");
   const int digits = o.digits.empty() ? default_csv_digits : parse_digits(o.digits, "--digits");
-  const bool has_engine_flags = !o.theta.empty() || std::any_of(o.engine_flags.begin(), o.engine_flags.end(),
+  const bool has_engine_flags = !o.theta.empty() || !o.psi_i.empty() || std::any_of(o.engine_flags.begin(), o.engine_flags.end(),
                                                                  [](const auto& kv) { return !kv.second.empty(); });
   Inputs in;
   if (!o.input.empty()) {
@@ -441,6 +443,7 @@ int run_shot(const Options& o, bool fit) {
     for (const auto& [key, text] : o.engine_flags)
       if (!text.empty()) flags[key] = text;
     if (!o.theta.empty()) flags["theta_i_deg"] = o.theta;
+    if (!o.psi_i.empty()) flags["psi_i_deg"] = o.psi_i;
     in.rows.push_back({0, flags, {}, ""});
     in.where.push_back("");
   }
@@ -627,6 +630,8 @@ void add_engine_options(CLI::App* app, Options& o) {
     app->add_option("--" + std::string(key), o.engine_flags[key],
                     help.at(key) + (dimension == UnitDimension::dimensionless ? "" : " [" + unit_list(dimension) + "]"));
   app->add_option("--theta", o.theta, "initial beam angle theta_i [deg] (default 30)");
+  app->add_option("--psi-i", o.psi_i, "initial counterweight angle psi_i [deg] of a propped counterweight (default 0, hanging; "
+                                      "negative: held back, the sense opposite to the beam's turn)");
   app->add_option("--R", o.R, "the predicted range to check (or to fit)");
   app->add_option("--T", o.T, "the predicted energy to check (or to fit)");
   app->add_option("--tol", o.tolerance, "relative tolerance on the predicted R and T")->capture_default_str();

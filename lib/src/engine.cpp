@@ -8,20 +8,21 @@
 
 namespace trebuchet {
 std::string engine_key_name(const std::string& where, const std::string& key) {
-  if (where.empty()) return key == "theta_i_deg" ? "--theta" : "--" + key;  // the flag is the short name
+  if (where.empty()) return key == "theta_i_deg" ? "--theta" : key == "psi_i_deg" ? "--psi-i" : "--" + key;  // the flag is the short name
   return where + "." + key;
 }
 
 
 ScaledDesign scaled_design(const Engine& engine) {  // eq:Design
   return {engine.L1 / engine.L2, engine.L4 / engine.L1, engine.mb / engine.M, engine.m / engine.M, engine.theta_i_deg,
-          arm_fraction(engine)};
+          arm_fraction(engine), engine.psi_i_deg};
 }
 
 Engine engine_of(const ScaledDesign& design, double L2, const Material& material) {
   const ExtraScalings size = extra_scalings(design.K(), L2, material);
   Engine e;
   e.theta_i_deg = design.theta_i_deg;
+  e.psi_i_deg = design.psi_i_deg;
   e.L2 = L2;
   e.L1 = design.l * L2;
   e.L3 = counterweight_arm(e.L1, L2, design.theta_i_deg, design.F);
@@ -43,6 +44,9 @@ void check_engine(const Engine& e, const std::string& where) {
   if (!(e.theta_i_deg > 0 && e.theta_i_deg < 90))
     throw Error(ErrorKind::bad_number, engine_key_name(where, "theta_i_deg") + " = " + format_significant(e.theta_i_deg, 6) +
                                            ": the initial beam angle must lie between 0 and 90 degrees");
+  if (!(std::abs(e.psi_i_deg) < 90))
+    throw Error(ErrorKind::bad_number, engine_key_name(where, "psi_i_deg") + " = " + format_significant(e.psi_i_deg, 6) +
+                                           ": the initial counterweight angle must lie between -90 and 90 degrees (0: hanging, unpropped)");
   positive(e.L1, "L1", "long beam section");
   positive(e.L2, "L2", "short beam section");
   positive(e.L3, "L3", "counterweight arm (hinge to counterweight centre)");

@@ -91,6 +91,7 @@ void write_engine(nlohmann::ordered_json& out, const Engine& engine) {
   const std::vector<Field> fields = engine_fields(engine);
   require_finite(fields);
   for (const Field& field : fields) out[field.key] = field.value;
+  if (engine.psi_i_deg != 0) out["psi_i_deg"] = engine.psi_i_deg;  // only a propped engine carries it
 }
 
 EngineRecord read_engine(const nlohmann::json& object, const std::string& where) {
@@ -105,6 +106,7 @@ EngineRecord read_engine(const nlohmann::json& object, const std::string& where)
   e.m = require_value(object, "m", UnitDimension::mass, where, "the projectile mass, e.g. \"m\": \"100kg\"");
   e.mb = require_value(object, "mb", UnitDimension::mass, where, "the beam mass, e.g. \"mb\": \"660kg\"");
   e.theta_i_deg = read_value(object, "theta_i_deg", UnitDimension::angle, where).value_or(standard_theta_i_deg);
+  e.psi_i_deg = read_value(object, "psi_i_deg", UnitDimension::angle, where).value_or(0);
   e.D = read_value(object, "D", UnitDimension::length, where).value_or(0);
   if (const auto L3 = read_value(object, "L3", UnitDimension::length, where)) {
     e.L3 = *L3;

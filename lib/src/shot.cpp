@@ -327,11 +327,12 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
            "; loosen --rtol or choose a higher-order --stepper");
   };
 
-  // Phase I: from rest (psi_i = phi_i = 0, section 2) until the trough's normal force vanishes.
+  // Phase I: from rest (eq:InitialConditions: phi_i = 0, and psi_i = 0 unless propped) until
+  // the trough's normal force vanishes.
   PhaseIntegrator trough(dynamics, Phase::trough, settings);
   Onsets onsets;
   PhaseRecord phase1(trough, ForceExtremes{}, onsets);
-  OdeVector y = {dynamics.theta_i(), 0, 0, 0, 0, 0};
+  OdeVector y = {dynamics.theta_i(), radians(e.psi_i_deg), 0, 0, 0, 0};
   double t = 0, h = 1e-3;
   Snapshot snap = dynamics.snapshot(Phase::trough, trough.state(y));
   energy0 = snap.energy;

@@ -21,6 +21,7 @@ struct Engine {
   double m = 0;            ///< projectile mass [kg]
   double mb = 0;           ///< beam mass [kg]
   double theta_i_deg = standard_theta_i_deg;  ///< initial beam angle theta_i [deg]
+  double psi_i_deg = 0;    ///< initial counterweight angle [deg]: 0 unpropped (design.hpp gives the sign)
   Material material{};     ///< beta2, wood and g: what sized it, and the g it is shot under
 };
 
