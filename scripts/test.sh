@@ -17,6 +17,6 @@ cmake --build build-fuzz -j"$(nproc)"
 bash tests/fuzz/run.sh build-fuzz "${TREBUCHET_FUZZ_SECONDS:-60}"
 echo "== the same suite under AddressSanitizer and UndefinedBehaviorSanitizer =="
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTREBUCHET_SANITIZE=ON >/dev/null
-cmake --build build-sanitize -j"$(nproc)" --target unit-tests trebuchet-calc trebuchet-verify golden-compare
+cmake --build build-sanitize -j"$(nproc)" --target unit-tests trebuchet-calc trebuchet-verify golden-compare check-spreadsheet
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-sanitize --output-on-failure -j"$(nproc)"

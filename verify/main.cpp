@@ -407,12 +407,13 @@ Inputs read_inputs(const Options& o) {
     in.single = false;
     return in;
   }
-  const nlohmann::json json = parse_json(text, source_name(o.input), expected);
+  nlohmann::json json = parse_json(text, source_name(o.input), expected);
   if (!json.is_object() && !json.is_array())
     throw Error(ErrorKind::usage, source_name(o.input) + " holds " + json.dump() + ", not a design; give " + expected);
   in.single = json.is_object();
+  // Moved, not copied: a copy of deeply nested input would recurse as deep as it nests.
   for (std::size_t i = 0; i < (in.single ? 1 : json.size()); ++i) {
-    in.rows.push_back({0, in.single ? json : json[i], {}, ""});
+    in.rows.push_back({0, in.single ? std::move(json) : std::move(json[i]), {}, ""});
     in.where.push_back(in.single ? "design" : "design[" + std::to_string(i) + "]");
   }
   return in;
