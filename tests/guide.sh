@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# guide.sh [--update] GUIDE BIN...: runs the walkthrough of docs/guide.md so that its commands
+# guide.sh [--update] GUIDE BIN...: runs a walkthrough (docs/guide.md, docs/historians.md) so that its commands
 # cannot rot. Every ```console block is a session: a line "$ command" is run (by bash, in one
 # scratch folder for the whole guide, with the BIN folders first on PATH), and the lines after
 # it, up to the next "$ " or the block's end, are its expected output, stdout and stderr
-# together, compared line by line without trailing blanks. With --update the guide is
+# together, compared line by line without trailing blanks (and without a Monte Carlo run's
+# time and threads). With --update the guide is
 # rewritten with the outputs of now (review the diff before committing it).
 set -u
 update=0
@@ -23,12 +24,16 @@ finish_command() {
   [ -n "$command" ] || return 0
   local actual
   actual=$(cd "$work/run" && bash -c "$command" 2>&1 | sed 's/[[:space:]]*$//')
+  # A Monte Carlo report says how long it took and on how many threads: not compared.
+  local timing='s/, [0-9.e+-]* s on [0-9]* thread(s)$/, (time) on (threads)/'
+
   commands=$((commands + 1))
   if [ "$update" = 1 ]; then
     [ -z "$actual" ] || printf '%s\n' "$actual" >> "$out"
   else
     local want
-    want=$(printf '%s\n' "${expected[@]+"${expected[@]}"}" | sed 's/[[:space:]]*$//')
+    want=$(printf '%s\n' "${expected[@]+"${expected[@]}"}" | sed 's/[[:space:]]*$//' | sed "$timing")
+    actual=$(printf '%s\n' "$actual" | sed "$timing")
     if [ "$actual" != "$want" ]; then
       failures=$((failures + 1))
       echo "FAIL: \$ $command"

@@ -1,4 +1,4 @@
-// The propped counterweight of section 6.4: row 2 of tab:SketchBook-I reaches its highest
+// The propped counterweight of section 7.2 (sec:SVdH): row 2 of tab:SketchBook-I reaches its highest
 // efficiency, 93.0 %, at psi_i = -4.6 deg (issue 14, part 6).
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>

@@ -156,7 +156,7 @@ TEST_CASE("tab:Alcala_la_Vieja ab initio, row Sa", "[shot][paper]") {
                    {{"R", "250"}, {"T", "66.0"}, {"eps", "91.4"}, {"v", "49.1"}, {"h", "11.7"}, {"A", "39.7"}});
 }
 
-// Section 6.4: the Ma engine aimed at 426 m flies on to the target 54 m below, landing near
+// Section 7.1 (sec:AVS): the Ma engine aimed at 426 m flies on to the target 54 m below, landing near
 // 481 m with about 137 kJ ("near" and "about": read to their last printed digit).
 TEST_CASE("tab:Alcala_la_Vieja row Ma at a target 54 m below", "[shot][paper]") {
   check_alcala_row("Alcala Ma 426 at -54 m", alcala_ma_426(), -54, {{"R", "481"}, {"T", "137"}});

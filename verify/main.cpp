@@ -272,8 +272,8 @@ std::string si_unit(const std::string& option) {
 bool has_spreads(const Options& o) { return !spreads_of(o).empty(); }
 
 std::string describe_spread(const std::string& name, const Spread& s) {
-  return name + (s.kind == Spread::Kind::uniform ? " uniform " + format_significant(s.a, 4) + ".." + format_significant(s.b, 4)
-                                                 : " normal " + format_significant(s.a, 4) + "±" + format_significant(s.b, 4)) + si_unit(name);
+  return name + (s.kind == Spread::Kind::uniform ? " uniform " + format_significant(s.a, 6) + ".." + format_significant(s.b, 6)
+                                                 : " normal " + format_significant(s.a, 6) + "±" + format_significant(s.b, 6)) + si_unit(name);
 }
 
 // Monte Carlo over the uncertain options: each sample sets them to a draw (in SI units) and runs

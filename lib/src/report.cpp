@@ -144,15 +144,16 @@ std::string completion_table(const Completion& c, const ShotSettings& settings) 
   if (c.calculator) {
     const OptimalEngine& o = *c.calculator;
     out << "the calculator's optimum for this engine's capacity in vacuum (R = " << format_significant(o.capacity.R, 4) << " m, T = "
-        << format_significant(o.capacity.T / 1e3, 4) << " kJ):";
+        << format_significant(o.capacity.T / 1e3, 4) << " kJ), and how far this engine's values lie from it:\n ";
     const auto ours = completed_values(c.engine), optimum = completed_values(o.engine);
     for (std::size_t k = 0; k < ours.size(); ++k) {
       const std::string& name = ours[k].first;
       if (name == "D" && !(c.engine.D > 0)) continue;
       const double deviation = ours[k].second / optimum[k].second - 1;
-      out << (k ? "," : "") << " " << name << " " << format_significant(optimum[k].second, 4) << " ("
-          << (listed(c.attested, name) ? "attested " : listed(c.chosen, name) ? "chosen " : "") << (deviation >= 0 ? "+" : "")
-          << format_significant(100 * deviation, 3) << " %)";
+      const bool mass = name == "M" || name == "m" || name == "mb";
+      out << (k ? "," : "") << " " << name << " " << format_significant(optimum[k].second, 4) << (mass ? " kg" : " m") << " ("
+          << (deviation >= 0 ? "+" : "") << format_significant(100 * deviation, 3) << " %"
+          << (listed(c.attested, name) ? ", attested" : listed(c.chosen, name) ? ", chosen" : "") << ")";
     }
     out << "\n";
   } else {

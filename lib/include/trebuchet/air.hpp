@@ -54,7 +54,8 @@ struct FlightEnd {
 /// time limit) or the integrator fails.
 std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Drag& drag, double g);
 
-/// "air (Cd 0.47, air 1.2 kg/m3, stone sphere of 2500 kg/m3, d = 0.43 m, no wind)" for outputs.
+/// "air (Cd 0.47, air 1.2 kg/m3, a sphere of 2500 kg/m3, d = 0.43 m, no wind)" for outputs; the
+/// diameter only for a mass > 0.
 std::string describe_air(const Air& air, double mass);
 
 }  // namespace trebuchet

@@ -21,7 +21,7 @@ struct ScaledDesign {
   /// Initial counterweight angle psi_i [deg], one of the initial conditions: 0 hangs straight down, as
   /// historical engines were never propped (section 2). Measured from the downward vertical in
   /// the sense theta grows during a shot; a prop that holds the counterweight toward the pivot
-  /// side of the hinge's fall is negative (section 6.4: the best for the paper's Villard engine
+  /// side of the hinge's fall is negative (sec:SVdH, section 7.2: the best for the paper's Villard engine
   /// of row 2 is psi_i = -4.6 deg).
   double psi_i_deg = 0;
 
