@@ -39,7 +39,7 @@ TEST_CASE("a Monte Carlo run is the same on any number of threads, and new with 
   // The failures are counted by reason: about 5 % of a uniform 100..200 lies above 195. The
   // count is binomial, sd sqrt(10000 0.05 0.95) = 22: 4 sd is 87.
   REQUIRE(one.failures.size() == 1);
-  CHECK(one.failures.front().first == "too far");
+  CHECK(one.failures.front().first == "too far: beyond # m");
   CHECK(std::abs(one.failures.front().second - 500) < 87);
   // Percentiles of what worked (uniform on 100..195, normal 50 ± 5), each to 4 standard errors
   // of a quantile, sqrt(p (1 - p)/N)/density with N = 9500: 0.49 m for the uniform's median

@@ -117,7 +117,8 @@ double objective_of(const Verification& v, const ReleaseCriterion& criterion) {
 }
 
 void require_positive(const std::optional<double>& value, const char* name) {
-  if (value && !(*value > 0)) throw Error(ErrorKind::bad_number, std::string("--") + name + " = " + format_significant(*value, 6) + " must be positive");
+  if (value && !(*value > 0))
+    throw Error(ErrorKind::bad_number, std::string("--") + name + " = " + format_significant(*value, 6) + " must be positive; give the attested value, or leave it out");
 }
 
 }  // namespace
@@ -181,6 +182,11 @@ Completion complete_engine(const CompletionRequest& request) {
   }
   if (!a.mb) out.implied.push_back(a.D ? "mb (from D, eq:BeamMass)" : "D and mb (from beta2 = " + format_fraction(p.material.beta2) +
                                                                            " and the wood, eq:bend_L2 and eq:BeamMass)");
+  // Q does not fix the size: without a length it grows as the engine shrinks, and without M or
+  // m as the counterweight grows against the beam.
+  if (!(a.Lb || a.L1 || a.L2 || a.H || a.L4) || !(a.M || a.m))
+    throw Error(ErrorKind::usage, "complete needs an attested length (Lb, L1, L2, H or L4) and the counterweight M or the stone m: "
+                                  "without them the best engine has no size, e.g. --Lb 9.5m --m 50kg");
   const ReleaseCriterion& criterion = request.settings.criterion;
   if (criterion.release == Release::range && (!a.M || !a.m))
     throw Error(ErrorKind::usage, "the range grows without bound with a heavier counterweight or a lighter stone: give M and m "

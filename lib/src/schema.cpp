@@ -144,7 +144,7 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
   const std::vector<std::string_view> engine_keys = {"L1", "L2", "L3", "F", "L4", "M", "m", "mb", "D", "theta_i_deg", "theta",
                                                       "beta2", "youngs_modulus", "wood_density", "g", "R", "T"};
   const std::vector<std::string_view> dropped = {"X", "Y", "Lb", "H", "l", "l4", "L", "mu", "mu_b", "K", "DeltaU", "amplification",
-                                                 "branch", "warnings"};
+                                                 "branch", "warnings", "air"};
   CsvReader reader(input, source);
   struct Column {
     enum { engine, dropped, passed, error } role;
@@ -245,7 +245,7 @@ std::string csv_column(const Field& field) { return *field.unit ? std::string(fi
 std::vector<std::string> design_csv_header() {
   std::vector<std::string> header;
   for (const Field& field : design_fields(OptimalEngine{})) header.push_back(csv_column(field));
-  header.insert(header.end(), {"branch", "warnings"});
+  header.insert(header.end(), {"branch", "warnings", "air"});
   return header;
 }
 
@@ -254,7 +254,7 @@ std::vector<std::string> design_csv_row(const OptimalEngine& design, int digits)
   require_finite(fields);
   std::vector<std::string> row;
   for (const Field& field : fields) row.push_back(csv_number(field.value, digits));
-  row.insert(row.end(), {std::string(branch_name(design.branch)), joined_warnings(design.warnings)});
+  row.insert(row.end(), {std::string(branch_name(design.branch)), joined_warnings(design.warnings), "vacuum"});
   return row;
 }
 

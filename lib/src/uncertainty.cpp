@@ -4,12 +4,25 @@
 
 #include <algorithm>
 #include <map>
+#include <regex>
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/parallel.hpp"
 
 namespace trebuchet {
+
+namespace {
+
+// A failure's reason without its numbers, so that samples failing alike count together:
+// "--L4 = -4.5: the sling length must be positive" is "--L4 = #: the sling length must be positive".
+std::string failure_reason(const std::string& message) {
+  // A number is not part of a name: L4 keeps its 4.
+  static const std::regex number("(^|[^A-Za-z0-9_.])[-+]?[0-9]+(\\.[0-9]*)?([eE][-+]?[0-9]+)?");
+  return std::regex_replace(message.substr(0, message.find(';')), number, "$1#");
+}
+
+}  // namespace
 
 std::optional<Spread> parse_spread(std::string_view text, UnitDimension dimension, std::string_view name) {
   const std::string what = std::string(name) + ": '" + std::string(text) + "'";
@@ -48,7 +61,7 @@ MonteCarloSummary run_monte_carlo(int samples, std::uint64_t seed, int threads,
   std::map<std::string, int> failures;
   for (const SampleOutcome& o : outcomes) {
     if (o.failure.empty()) summary.values.push_back(o.values);
-    else ++failures[o.failure.substr(0, o.failure.find(':'))];
+    else ++failures[failure_reason(o.failure)];
   }
   summary.failures.assign(failures.begin(), failures.end());
   std::sort(summary.failures.begin(), summary.failures.end(), [](const auto& a, const auto& b) { return a.second > b.second; });

@@ -45,8 +45,9 @@ struct Completion {
 };
 
 /// Completes the engine. Throws Error(usage) for a subset that conflicts (naming the
-/// quantities and their values) or that leaves the objective unbounded (the range with a free
-/// M or m), Error(bad_number) for a value out of its range, and Error(out_of_range) when no
+/// quantities and their values) or that leaves the objective unbounded: no attested length or
+/// neither M nor m (Q grows as the engine shrinks or the counterweight grows), or the range
+/// with a free M or m. Error(bad_number) for a value out of its range, and Error(out_of_range) when no
 /// choice of the free quantities gives a working engine.
 Completion complete_engine(const CompletionRequest& request);
 

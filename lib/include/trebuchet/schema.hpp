@@ -78,7 +78,7 @@ nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings
 
 nlohmann::ordered_json design_json(const OptimalEngine& design);
 
-/// The design's CSV columns, keys with units (R_m, T_J, ...), branch and warnings, and one
+/// The design's CSV columns, keys with units (R_m, T_J, ...), branch, warnings and air (vacuum), and one
 /// design's cells with `digits` significant digits.
 std::vector<std::string> design_csv_header();
 std::vector<std::string> design_csv_row(const OptimalEngine& design, int digits);

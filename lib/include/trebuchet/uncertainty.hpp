@@ -41,7 +41,7 @@ struct MonteCarloSummary {
   int samples = 0;
   std::vector<std::array<double, 4>> values;            ///< of the samples that worked, in sample order
   std::array<std::array<double, 3>, 4> percentiles{};   ///< 5, 50 and 95 % of R, T, eps, v
-  std::vector<std::pair<std::string, int>> failures;    ///< each reason (its message up to the first ':') and its count
+  std::vector<std::pair<std::string, int>> failures;    ///< each reason (its message to the first ';', numbers as #) and its count
 };
 
 /// Runs `sample` for samples 0 .. n - 1 on `threads` threads. Sample i draws from its own
