@@ -31,23 +31,6 @@ DesignRequest at_XY(double X, double Y, double theta_i_deg = 30, double F = 2.0 
   return capacity(c.R, c.T, theta_i_deg, F);
 }
 
-double value_of(const OptimalEngine& d, Quantity q) {
-  const Engine& e = d.engine;
-  switch (q) {
-    case Quantity::R: return d.capacity.R;
-    case Quantity::T: return d.capacity.T;
-    case Quantity::L1: return e.L1;
-    case Quantity::L2: return e.L2;
-    case Quantity::L4: return e.L4;
-    case Quantity::D: return e.D;
-    case Quantity::M: return e.M;
-    case Quantity::m: return e.m;
-    case Quantity::mb: return e.mb;
-    case Quantity::Lb: return beam_length(e);
-    case Quantity::l: return scaled_design(e).l;
-  }
-  return 0;
-}
 
 double relative(double a, double b) { return std::abs(a / b - 1); }
 
@@ -67,8 +50,8 @@ TEST_CASE("any pair of an optimal engine's quantities gives back its capacity", 
         for (Quantity qj : all_quantities) {
           if (qi >= qj) continue;
           DesignRequest r = at_XY(X, Y);
-          r.first = {qi, value_of(design, qi)};
-          r.second = {qj, value_of(design, qj)};
+          r.first = {qi, quantity_value(design, qi)};
+          r.second = {qj, quantity_value(design, qj)};
           INFO("X " << X << " Y " << Y << " pair " << quantity_name(qi) << ", " << quantity_name(qj));
           OptimalEngine back;
           try {
@@ -332,7 +315,7 @@ TEST_CASE("no gap at any seam of either table", "[calculator][range]") {
               const Capacity c = capacity_at({X_s, Y}, table->R0, table->T0);
               const OptimalEngine design = design_optimal_engine(*table, capacity(c.R, c.T, block.theta_i_deg, block.F));
               const Quantity q = second == Param::m ? Quantity::m : second == Param::M ? Quantity::M : Quantity::L1;
-              const double Z = value_of(design, q);
+              const double Z = quantity_value(design, q);
               // The R at which each segment puts the seam for this Z: log Z = log(a Z0) + p lr + q lt
               // and X_s = (5 lr - lt)/sqrt(26) (eq:XY_RT), solved for lr.
               auto R_at_seam = [&](const Segment& s) {

@@ -319,6 +319,24 @@ void copy_given(const Given& given, OptimalEngine& design) {
 
 }  // namespace
 
+double quantity_value(const OptimalEngine& d, Quantity quantity) {
+  const Engine& e = d.engine;
+  switch (quantity) {
+    case Quantity::R: return d.capacity.R;
+    case Quantity::T: return d.capacity.T;
+    case Quantity::L1: return e.L1;
+    case Quantity::L2: return e.L2;
+    case Quantity::L4: return e.L4;
+    case Quantity::D: return e.D;
+    case Quantity::M: return e.M;
+    case Quantity::m: return e.m;
+    case Quantity::mb: return e.mb;
+    case Quantity::Lb: return beam_length(e);
+    case Quantity::l: return e.L1 / e.L2;
+  }
+  return 0;
+}
+
 std::optional<std::array<double, param_count>> branch_steps(const TableBlock& block) {
   if (!block.branch_switch_X) return std::nullopt;
   const Segment* lower = nullptr;

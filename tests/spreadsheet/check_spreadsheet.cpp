@@ -142,24 +142,6 @@ DesignRequest request_of(Quantity a, double va, Quantity b, double vb, const Tab
   return request;
 }
 
-double value_in(const OptimalEngine& d, Quantity q) {
-  const Engine& e = d.engine;
-  switch (q) {
-    case Quantity::R: return d.capacity.R;
-    case Quantity::T: return d.capacity.T;
-    case Quantity::L1: return e.L1;
-    case Quantity::L2: return e.L2;
-    case Quantity::L4: return e.L4;
-    case Quantity::D: return e.D;
-    case Quantity::M: return e.M;
-    case Quantity::m: return e.m;
-    case Quantity::mb: return e.mb;
-    case Quantity::l: return e.L1 / e.L2;
-    case Quantity::Lb: return e.L1 + e.L2;
-  }
-  return 0;
-}
-
 std::vector<Case> cases(const ScalingTable& table) {
   const std::vector<Quantity> log_linear = {Quantity::R, Quantity::T, Quantity::L1, Quantity::L2, Quantity::L4,
                                             Quantity::D, Quantity::M, Quantity::m,  Quantity::mb, Quantity::l};
@@ -194,9 +176,9 @@ std::vector<Case> cases(const ScalingTable& table) {
     // Every fifteenth case lies beyond the table (R eight times larger): the calculator refuses.
     if (k % 15 == 14) c.inputs.capacity.first.value *= 8;
     const Quantity other = log_linear[1 + static_cast<std::size_t>(k) % (log_linear.size() - 1)];
-    c.inputs.range_and_one = request_of(Quantity::R, optimum.capacity.R, other, value_in(optimum, other), *block, BranchChoice::automatic, material);
+    c.inputs.range_and_one = request_of(Quantity::R, optimum.capacity.R, other, quantity_value(optimum, other), *block, BranchChoice::automatic, material);
     const auto [qi, qj] = pairs[static_cast<std::size_t>(k) % pairs.size()];
-    c.inputs.any_pair = request_of(qi, value_in(optimum, qi), qj, value_in(optimum, qj), *block, BranchChoice::automatic, material);
+    c.inputs.any_pair = request_of(qi, quantity_value(optimum, qi), qj, quantity_value(optimum, qj), *block, BranchChoice::automatic, material);
     c.inputs.engine = optimum.engine;
     c.inputs.model_scale = 0.05 + unit(random);
     c.name = "case" + std::to_string(k);

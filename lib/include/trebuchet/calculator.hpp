@@ -67,6 +67,10 @@ struct OptimalEngine {
 /// are so extreme that a number of the engine leaves the range of doubles.
 OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignRequest& request);
 
+/// The value of a quantity in a design, in SI units (l scaled): what the same quantity given
+/// would have to be to ask for this design.
+double quantity_value(const OptimalEngine& design, Quantity quantity);
+
 /// S_Z of eq:ZiZj_vs_X for a block with two branches, at the block's X_d; nullopt without.
 std::optional<std::array<double, param_count>> branch_steps(const TableBlock& block);
 
