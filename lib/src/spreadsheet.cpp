@@ -144,6 +144,10 @@ class Sheet {
     worksheet_write_number(sheet_, row, col, value, formats_.input);
     return {ref(row, col), value};
   }
+  Text text_cell(int row, int col, const std::string& value) {
+    worksheet_write_string(sheet_, row, col, value.c_str(), nullptr);
+    return {ref(row, col), value};
+  }
   Text input_text(int row, int col, const std::string& value) {
     worksheet_write_string(sheet_, row, col, value.c_str(), formats_.input);
     return {ref(row, col), value};
@@ -347,8 +351,7 @@ DesignResult write_design(lxw_workbook* book, const Formats& formats, const std:
     const std::string which = k == 0 ? "first" : "second";
     const std::string quantity(quantity_name(givens[k].quantity));
     s.describe(row, which + " given", "", k < fixed ? "fixed on this sheet" : "one of R, T, L1, L2, L4, D, M, m, mb, l (Lb: use trebuchet-calc)");
-    names[k] = k < fixed ? Text{s.ref(row, 1), quantity} : s.input_text(row, 1, quantity);
-    if (k < fixed) worksheet_write_string(s.raw(), row, 1, quantity.c_str(), nullptr);
+    names[k] = k < fixed ? s.text_cell(row, 1, quantity) : s.input_text(row, 1, quantity);
     static const char* quantities[] = {"R", "T", "L1", "L2", "L4", "D", "M", "m", "mb", "l", nullptr};
     if (k >= fixed) s.choices(row, 1, quantities);
     s.describe(row + 1, which + " value", "", "in SI base units, as the unit beside it says");
@@ -356,10 +359,9 @@ DesignResult write_design(lxw_workbook* book, const Formats& formats, const std:
   }
   const Expr theta = s.input_row(7, "theta_i", request.theta_i_deg, "deg", "initial beam angle; the table has the blocks on the constants sheet");
   const Expr F = s.input_row(8, "F", request.F, "", "(L2 + L3)/H; type =2/3 for two thirds");
-  const char* choices[] = {"auto", "lower", "upper"};
   s.describe(9, "branch", "", "auto, lower or upper: two optima compete where the branches overlap (section 6.2)");
-  const Text branch = s.input_text(9, 1, choices[static_cast<int>(request.branch)]);
-  static const char* branches[] = {"auto", "lower", "upper", nullptr};
+  static const char* branches[] = {"auto", "lower", "upper", nullptr};  // in the order of BranchChoice
+  const Text branch = s.input_text(9, 1, branches[static_cast<int>(request.branch)]);
   s.choices(9, 1, branches);
 
   // Which law each given follows, and its value in the table's material.
@@ -388,7 +390,7 @@ DesignResult write_design(lxw_workbook* book, const Formats& formats, const std:
   const char* columns[] = {"segment", "block", "c1", "p1", "q1", "c2", "p2", "q2", "D_ij", "ln(R/R0)", "ln(T/T0)", "X", "inside", "allowed", "preferred", "depth", "score", "amplification"};
   for (int k = 0; k < 18; ++k) s.heading(header, k, columns[k]);
   s.text(header - 1, 0, "Every segment of the table, solved (eq:ZiZj_RT); the highest score is the engine above.");
-  Column lr_col, lt_col, X_col, score_col, amp_col;
+  Column lr_col, lt_col, score_col, amp_col;
   const Expr sqrt26 = sqrt(num(26));
   const Expr automatic = is(branch, "auto");
   for (int r = 0; r < c.rows; ++r) {
@@ -417,9 +419,9 @@ DesignResult write_design(lxw_workbook* book, const Formats& formats, const std:
     const Expr depth = s.formula(row, 15, min(X - X_min, X_max - X));
     const Expr score = s.formula(row, 16, inside * allowed * (num(10) + num(5) * automatic * preferred + depth));
     const Expr amplification = s.formula(row, 17, max(abs(q2) + abs(q1), abs(p2) + abs(p1)) / abs(safe_det));
-    lr_col.v.push_back(lr.v), lt_col.v.push_back(lt.v), X_col.v.push_back(X.v), score_col.v.push_back(score.v), amp_col.v.push_back(amplification.v);
+    lr_col.v.push_back(lr.v), lt_col.v.push_back(lt.v), score_col.v.push_back(score.v), amp_col.v.push_back(amplification.v);
   }
-  lr_col.f = s.range(first, last, 9), lt_col.f = s.range(first, last, 10), X_col.f = s.range(first, last, 11);
+  lr_col.f = s.range(first, last, 9), lt_col.f = s.range(first, last, 10);
   score_col.f = s.range(first, last, 16), amp_col.f = s.range(first, last, 17);
 
   const Expr best = s.formula_row(16, "best score", largest(score_col), "", "0: no segment of the table holds the solution");
