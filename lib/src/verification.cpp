@@ -39,7 +39,9 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
     Vec2 end_velocity{vx, vy};
     if (air) {
       const auto end = fly({out.x, 0}, {vx, vy}, end_drop, drag_of(*air, engine.m), g);
-      if (!end) throw Error(ErrorKind::numerical, "the flight through air did not come down to its end; check the air's parameters");
+      if (!end)
+        throw Error(ErrorKind::numerical, "the flight through " + describe_air(*air, engine.m) +
+                                              " did not come down to its end; give the air, the wind and the projectile's density values of ordinary size");
       range = end->range, end_velocity = end->velocity;
     } else {
       range = vacuum_range({out.x, 0}, {vx, vy}, 0, g);
