@@ -18,6 +18,12 @@ std::string format_significant(double value, int significant) {
   return buffer;
 }
 
+std::string join(const std::vector<std::string>& texts, std::string_view separator) {
+  std::string joined;
+  for (std::size_t k = 0; k < texts.size(); ++k) joined += (k ? std::string(separator) : "") + texts[k];
+  return joined;
+}
+
 std::string format_fraction(double value) {
   for (int denominator = 1; denominator <= 1000; ++denominator) {
     const double numerator = std::round(value * denominator);

@@ -1,5 +1,6 @@
 #include "trebuchet/report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -120,26 +121,20 @@ std::vector<std::pair<std::string, double>> completed_values(const Engine& e) {
 }
 
 bool listed(const std::vector<std::string>& names, const std::string& name) {
-  for (const std::string& n : names)
-    if (n == name) return true;
-  return false;
+  return std::find(names.begin(), names.end(), name) != names.end();
 }
 
 }  // namespace
 
 std::string completion_table(const Completion& c, const ShotSettings& settings) {
-  auto join = [](const std::vector<std::string>& names) {
-    std::string text;
-    for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
-    return text.empty() ? std::string("none") : text;
-  };
+  auto listing = [](const std::vector<std::string>& names) { return names.empty() ? std::string("none") : join(names, ", "); };
   const ReleaseCriterion& criterion = settings.criterion;
   const std::string goal = criterion.release == Release::range ? "the longest range" : criterion.release == Release::efficiency ? "the highest eps" : "the highest Q";
   std::ostringstream out;
   out << "completed engine (" << c.simulations << " shots):\n"
-      << "  attested: " << join(c.attested) << "\n"
-      << "  implied:  " << join(c.implied) << "\n"
-      << "  chosen for " << goal << ": " << join(c.chosen) << "\n";
+      << "  attested: " << listing(c.attested) << "\n"
+      << "  implied:  " << listing(c.implied) << "\n"
+      << "  chosen for " << goal << ": " << listing(c.chosen) << "\n";
   out << verification_table(c.engine, settings, c.verification);
   if (c.calculator) {
     const OptimalEngine& o = *c.calculator;

@@ -51,12 +51,6 @@ std::vector<Field> design_fields(const OptimalEngine& d) {
   return fields;
 }
 
-// Warnings in one CSV cell.
-std::string joined_warnings(const std::vector<std::string>& warnings) {
-  std::string text;
-  for (const std::string& w : warnings) text += (text.empty() ? "" : "; ") + w;
-  return text;
-}
 
 }  // namespace
 
@@ -254,7 +248,7 @@ std::vector<std::string> design_csv_row(const OptimalEngine& design, int digits)
   require_finite(fields);
   std::vector<std::string> row;
   for (const Field& field : fields) row.push_back(csv_number(field.value, digits));
-  row.insert(row.end(), {std::string(branch_name(design.branch)), joined_warnings(design.warnings), "vacuum"});
+  row.insert(row.end(), {std::string(branch_name(design.branch)), join(design.warnings, "; "), "vacuum"});
   return row;
 }
 
@@ -323,7 +317,7 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
   const nlohmann::ordered_json assumed = assumptions_json(engine, settings);
   const std::string air = settings.air ? describe_air(*settings.air, engine.m) : "vacuum";
   row.insert(row.end(), {check ? (check->pass ? "yes" : "no") : "", air, assumed["release"].get<std::string>(),
-                         csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), joined_warnings(v.warnings)});
+                         csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), join(v.warnings, "; ")});
   return row;
 }
 
