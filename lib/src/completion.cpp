@@ -116,23 +116,23 @@ double objective_of(const Verification& v, const ReleaseCriterion& criterion) {
   return v.Q;
 }
 
-void require_positive(const std::optional<double>& value, const char* name) {
-  if (value && !(*value > 0))
-    throw Error(ErrorKind::bad_number, std::string("--") + name + " = " + format_significant(*value, 6) + " must be positive; give the attested value, or leave it out");
-}
 
 }  // namespace
 
 Completion complete_engine(const CompletionRequest& request) {
   const Attested& a = request.attested;
-  for (const auto& [value, name] : {std::pair{a.Lb, "Lb"}, {a.L1, "L1"}, {a.L2, "L2"}, {a.H, "H"}, {a.L4, "L4"}, {a.M, "M"}, {a.m, "m"},
-                                    {a.D, "D"}, {a.F, "F"}, {a.l, "l"}})
-    require_positive(value, name);
-  if (a.mb && !(*a.mb >= 0)) throw Error(ErrorKind::bad_number, "--mb = " + format_significant(*a.mb, 6) + " must not be negative");
   Completion out;
+  // Each attested value, positive (mb may be 0; theta_i is checked below with its range).
   for (const auto& [value, name] : {std::pair{a.Lb, "Lb"}, {a.L1, "L1"}, {a.L2, "L2"}, {a.H, "H"}, {a.L4, "L4"}, {a.M, "M"}, {a.m, "m"},
-                                    {a.mb, "mb"}, {a.D, "D"}, {a.l, "l"}, {a.theta_i_deg, "theta_i"}, {a.F, "F"}})
-    if (value) out.attested.push_back(name);
+                                    {a.mb, "mb"}, {a.D, "D"}, {a.l, "l"}, {a.theta_i_deg, "theta_i"}, {a.F, "F"}}) {
+    if (!value) continue;
+    const std::string key(name);
+    if (key == "mb" && !(*value >= 0))
+      throw Error(ErrorKind::bad_number, "--mb = " + format_significant(*value, 6) + " must not be negative");
+    if (key != "mb" && key != "theta_i" && !(*value > 0))
+      throw Error(ErrorKind::bad_number, "--" + key + " = " + format_significant(*value, 6) + " must be positive; give the attested value, or leave it out");
+    out.attested.push_back(key);
+  }
 
   Plan p;
   p.material = request.material;
@@ -215,11 +215,8 @@ Completion complete_engine(const CompletionRequest& request) {
     cost(x0);
     minimize_simplex(cost, x0, 0.1, 1e-5, 600);
     if (!(best > 0))
-      throw Error(ErrorKind::out_of_range, "no choice of " + [&] {
-        std::string names;
-        for (const std::string& n : out.chosen) names += (names.empty() ? "" : ", ") + n;
-        return names;
-      }() + " gives a working engine with these attested values; check them, or attest fewer");
+      throw Error(ErrorKind::out_of_range, "no choice of " + join(out.chosen, ", ") +
+                                               " gives a working engine with these attested values; check them, or attest fewer");
   }
 
   // The calculator's optimum for the same capacity, in vacuum at the base's level (section 6).
