@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <iterator>
 #include <sstream>
@@ -147,18 +148,19 @@ void run_gnuplot(const std::filesystem::path& folder, const std::string& script)
                                       (child >= 0 && WIFEXITED(status) && WEXITSTATUS(status) == 127 ? " (gnuplot is not installed; apt-get install gnuplot-nox)" : ""));
 }
 
-// --plot DIR: the pictures of the shot (pictures.hpp).
-void write_pictures(const std::string& dir, const Engine& engine, const ShotSettings& settings) {
+// --plot DIR: writes the picture files (pictures.hpp) into the folder, then runs gnuplot on
+// each of `scripts` there.
+void write_pictures(const std::string& dir, const std::vector<PictureFile>& files, const std::vector<std::string>& scripts) {
   const std::filesystem::path folder(dir);
   std::error_code ec;
   std::filesystem::create_directories(folder, ec);
   std::filesystem::remove(folder / "gnuplot.log", ec);
-  for (const PictureFile& file : shot_pictures(engine, settings)) {
+  for (const PictureFile& file : files) {
     std::ofstream out(folder / file.name);
     out << file.text;
     if (!out) throw Error(ErrorKind::usage, "--plot: cannot write " + (folder / file.name).string() + "; give a folder you can write to");
   }
-  for (const std::string& script : picture_scripts()) run_gnuplot(folder, script);
+  for (const std::string& script : scripts) run_gnuplot(folder, script);
 }
 
 // One design: read, optionally fitted to its capacity, shot, and checked against its capacity.
@@ -181,7 +183,7 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
   std::vector<TracePoint> trace;
   const double series_dt = o.series_dt.empty() ? 0 : parse_positive(o.series_dt, UnitDimension::time, "--series-dt");
   const Verification v = verify_engine(engine, settings, o.series.empty() ? nullptr : &trace, series_dt);
-  if (!o.plot.empty()) write_pictures(o.plot, engine, settings);
+  if (!o.plot.empty()) write_pictures(o.plot, shot_pictures(engine, settings), picture_scripts());
   std::optional<CapacityCheck> check;
   if (in.capacity) check = check_capacity(v, *in.capacity, tolerance);
   out.json = verification_json(v, check);
@@ -198,6 +200,16 @@ Outcome verify_one(const nlohmann::json& object, const std::string& where, const
   }
   if (check && !check->pass) out.code = exit_outside_tolerance;
   return out;
+}
+
+// The design given as flags (--L1 ... --theta, --psi-i), as the JSON object read_engine reads.
+nlohmann::json flags_design(const Options& o) {
+  nlohmann::json flags = nlohmann::json::object();
+  for (const auto& [key, text] : o.engine_flags)
+    if (!text.empty()) flags[key] = text;
+  if (!o.theta.empty()) flags["theta_i_deg"] = o.theta;
+  if (!o.psi_i.empty()) flags["psi_i_deg"] = o.psi_i;
+  return flags;
 }
 
 // complete's request from the options (completion.hpp).
@@ -244,36 +256,41 @@ std::vector<SpreadOption> spread_options(Options& o) {
   return all;
 }
 
-// The uncertain options of a run, each with its distribution.
-std::vector<std::pair<std::string, Spread>> spreads_of(const Options& o) {
+// An uncertain option of a run, with its distribution.
+struct Uncertain {
+  std::string name;
+  UnitDimension dimension;
+  Spread spread;
+};
+
+std::vector<Uncertain> spreads_of(const Options& o) {
   Options copy = o;
-  std::vector<std::pair<std::string, Spread>> spreads;
+  std::vector<Uncertain> spreads;
   for (const SpreadOption& option : spread_options(copy))
     if (!option.text->empty())
-      if (const auto spread = parse_spread(*option.text, option.dimension, option.name)) spreads.push_back({option.name, *spread});
+      if (const auto spread = parse_spread(*option.text, option.dimension, option.name))
+        spreads.push_back({option.name, option.dimension, *spread});
   return spreads;
-}
-
-// The SI unit an option's draws are in, for the report.
-std::string si_unit(const std::string& option) {
-  Options any;
-  for (const SpreadOption& o : spread_options(any))
-    if (o.name == option) switch (o.dimension) {
-        case UnitDimension::length: return " m";
-        case UnitDimension::mass: return " kg";
-        case UnitDimension::angle: return " deg";
-        case UnitDimension::speed: return " m/s";
-        case UnitDimension::density: return " kg/m3";
-        default: return "";
-      }
-  return "";
 }
 
 bool has_spreads(const Options& o) { return !spreads_of(o).empty(); }
 
-std::string describe_spread(const std::string& name, const Spread& s) {
-  return name + (s.kind == Spread::Kind::uniform ? " uniform " + format_significant(s.a, 6) + ".." + format_significant(s.b, 6)
-                                                 : " normal " + format_significant(s.a, 6) + "±" + format_significant(s.b, 6)) + si_unit(name);
+// The options with each uncertain one set to value(its spread), in SI units.
+Options with_values(const Options& o, const std::vector<Uncertain>& spreads, const std::function<double(const Spread&)>& value) {
+  Options set = o;
+  for (SpreadOption& option : spread_options(set))
+    for (const Uncertain& u : spreads)
+      if (u.name == option.name) *option.text = format_number(value(u.spread));
+  return set;
+}
+
+std::string describe_spread(const Uncertain& u) {
+  const Spread& s = u.spread;
+  const char* unit = u.dimension == UnitDimension::length ? " m" : u.dimension == UnitDimension::mass ? " kg"
+                     : u.dimension == UnitDimension::angle ? " deg" : u.dimension == UnitDimension::speed ? " m/s"
+                     : u.dimension == UnitDimension::density ? " kg/m3" : "";
+  return u.name + (s.kind == Spread::Kind::uniform ? " uniform " + format_significant(s.a, 6) + ".." + format_significant(s.b, 6)
+                                                   : " normal " + format_significant(s.a, 6) + "±" + format_significant(s.b, 6)) + unit;
 }
 
 // Monte Carlo over the uncertain options: each sample sets them to a draw (in SI units) and runs
@@ -285,29 +302,19 @@ int run_monte_carlo_of(const Options& o, bool complete) {
     throw Error(ErrorKind::usage, "--samples: " + std::to_string(o.samples) + " must be 1 to 1000000; 10000 give the 5 and 95 % to about 1 %");
   if (!o.series.empty()) throw Error(ErrorKind::usage, "--series writes the motion of one shot; a Monte Carlo run has many");
   const auto spreads = spreads_of(o);
-  const std::string title = [&] {
-    std::string text;
-    for (const auto& [name, spread] : spreads) text += (text.empty() ? "" : ", ") + describe_spread(name, spread);
-    return text;
-  }();
+  std::vector<std::string> described;
+  for (const Uncertain& u : spreads) described.push_back(describe_spread(u));
+  const std::string title = join(described, ", ");
   const auto start = std::chrono::steady_clock::now();
   const MonteCarloSummary summary = run_monte_carlo(o.samples, o.seed, o.threads, [&](std::mt19937_64& random) {
-    Options sample = o;
-    for (SpreadOption& option : spread_options(sample))
-      for (const auto& [name, spread] : spreads)
-        if (name == option.name) *option.text = format_number(draw(spread, random));
+    const Options sample = with_values(o, spreads, [&](const Spread& s) { return draw(s, random); });
     SampleOutcome outcome;
     try {
       Verification v;
       if (complete) {
         v = complete_engine(completion_request(sample)).verification;
       } else {
-        nlohmann::json flags = nlohmann::json::object();
-        for (const auto& [key, text] : sample.engine_flags)
-          if (!text.empty()) flags[key] = text;
-        if (!sample.theta.empty()) flags["theta_i_deg"] = sample.theta;
-        if (!sample.psi_i.empty()) flags["psi_i_deg"] = sample.psi_i;
-        Engine engine = read_engine(flags, "").engine;
+        Engine engine = read_engine(flags_design(sample), "").engine;
         engine.material = sizing_material(sample, engine.material);
         v = verify_engine(engine, shot_settings(sample));
       }
@@ -318,13 +325,8 @@ int run_monte_carlo_of(const Options& o, bool complete) {
     return outcome;
   });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const ShotSettings settings = [&] {
-    Options plain = o;
-    for (SpreadOption& option : spread_options(plain))
-      for (const auto& [name, spread] : spreads)
-        if (name == option.name) *option.text = format_number(spread.a);
-    return shot_settings(plain);
-  }();
+  // The assumptions of the run, with each uncertain option at a value of its spread.
+  const ShotSettings settings = shot_settings(with_values(o, spreads, [](const Spread& s) { return s.a; }));
   const std::string air = settings.air ? "air" : "vacuum";
   if (o.format == "json") {
     nlohmann::ordered_json out;
@@ -332,7 +334,7 @@ int run_monte_carlo_of(const Options& o, bool complete) {
     out["seed"] = o.seed;
     out["worked"] = summary.values.size();
     nlohmann::ordered_json uncertain = nlohmann::ordered_json::array();
-    for (const auto& [name, spread] : spreads)
+    for (const auto& [name, dimension, spread] : spreads)
       uncertain.push_back({{"option", name}, {"distribution", spread.kind == Spread::Kind::uniform ? "uniform" : "normal"},
                            {spread.kind == Spread::Kind::uniform ? "from" : "mean", spread.a}, {spread.kind == Spread::Kind::uniform ? "to" : "deviation", spread.b}});
     out["uncertain"] = uncertain;
@@ -369,17 +371,7 @@ int run_monte_carlo_of(const Options& o, bool complete) {
     for (const auto& [reason, count] : summary.failures) std::cout << "; " << count << " " << reason;
     std::cout << "\n";
   }
-  if (!o.plot.empty()) {
-    const std::filesystem::path folder(o.plot);
-    std::error_code ec;
-    std::filesystem::create_directories(folder, ec);
-    for (const PictureFile& file : histogram_pictures(summary, title)) {
-      std::ofstream out(folder / file.name);
-      out << file.text;
-      if (!out) throw Error(ErrorKind::usage, "--plot: cannot write " + (folder / file.name).string() + "; give a folder you can write to");
-    }
-    run_gnuplot(folder, "histogram.gp");
-  }
+  if (!o.plot.empty()) write_pictures(o.plot, histogram_pictures(summary, title), {"histogram.gp"});
   if (summary.values.empty()) throw Error(ErrorKind::numerical, "no sample worked; the first reason: " + summary.failures.front().first);
   return exit_success;
 }
@@ -442,12 +434,7 @@ int run_shot(const Options& o, bool fit) {
       throw Error(ErrorKind::usage, "--L3 and --F both fix the counterweight arm (L2 + L3 = F H); give one of them");
     if (!has_engine_flags)
       throw Error(ErrorKind::usage, "no design; give a JSON or CSV file (or - for stdin), or flags like --L1 6.13m --L2 1.08m --F 1 --L4 5.8m --M 14.3t --m 100kg --mb 660kg");
-    nlohmann::json flags = nlohmann::json::object();
-    for (const auto& [key, text] : o.engine_flags)
-      if (!text.empty()) flags[key] = text;
-    if (!o.theta.empty()) flags["theta_i_deg"] = o.theta;
-    if (!o.psi_i.empty()) flags["psi_i_deg"] = o.psi_i;
-    in.rows.push_back({0, flags, {}, ""});
+    in.rows.push_back({0, flags_design(o), {}, ""});
     in.where.push_back("");
   }
   const std::size_t count = in.rows.size();
