@@ -112,7 +112,6 @@ bool CsvReader::next(CsvRow& row) {
   while (read_line(line)) {
     if (skipped(line)) continue;
     row.line = line_number_;
-    row.cells.clear();
     const std::string where = source_ + " line " + std::to_string(line_number_);
     row.cells = split(line, separator_, where);
     if (row.cells.size() != header_.size())

@@ -335,7 +335,7 @@ MaterialFactors write_material(lxw_workbook* book, const Formats& formats, const
 // whose interval holds the solution's X (eq:Xi) chosen by a lookup. `fixed` says how many of the
 // givens' names are fixed (2 for R and T, 1 for R and one parameter, 0 for any pair).
 struct DesignResult {
-  Expr R, T, X, Y, L1, L2, L3, L4, D, M, m, mb, amplification;
+  Expr R, T, L1, L2, L3, L4, D, M, m, mb;  // what the model-scaling sheet takes from it
 };
 
 DesignResult write_design(lxw_workbook* book, const Formats& formats, const std::string& name, const std::string& heading,
@@ -440,8 +440,8 @@ DesignResult write_design(lxw_workbook* book, const Formats& formats, const std:
   };
   out.R = output("R", c.R0 * exp(lr), "m", "range in vacuum at the base level (eq:ZRT with Z = R)");
   out.T = output("T", c.T0 * exp(lt) * f.energy, "J", "energy at the target (eq:T), in your material");
-  out.X = output("X", (num(5) * lr - lt) / sqrt26, "", "eq:Xi: (5 ln(R/R0) - ln(T/T0))/sqrt(26)");
-  out.Y = output("Y", (lr + num(5) * lt) / sqrt26, "", "eq:XY_RT");
+  output("X", (num(5) * lr - lt) / sqrt26, "", "eq:Xi: (5 ln(R/R0) - ln(T/T0))/sqrt(26)");
+  output("Y", (lr + num(5) * lt) / sqrt26, "", "eq:XY_RT");
   out.L1 = output("L1", Z(Param::L1), "m", "long beam section (eq:ZRT)");
   out.L2 = output("L2", Z(Param::L2), "m", "short beam section (eq:ZRT)");
   out.L3 = output("L3", F * out.L1 * cos_deg(theta) - out.L2, "m", "counterweight arm: L2 + L3 = F H, H = L1 cos(theta_i) (section 2)");
@@ -450,7 +450,7 @@ DesignResult write_design(lxw_workbook* book, const Formats& formats, const std:
   out.M = output("M", Z(Param::M) * f.mass, "kg", "counterweight (eq:ZRT)");
   out.m = output("m", Z(Param::m) * f.mass, "kg", "projectile (eq:ZRT)");
   out.mb = output("mb", Z(Param::mb) * f.mass, "kg", "beam (eq:ZRT)");
-  out.amplification = output("amplification", amplification, "", "relative change of R or T per relative change of a given (eq:ZiZj_RT); above 10 ill-conditioned, above 50 refused");
+  output("amplification", amplification, "", "relative change of R or T per relative change of a given (eq:ZiZj_RT); above 10 ill-conditioned, above 50 refused");
   const Text status = choose(ok, choose(below(num(50), amplification), literal("refused: the pair barely fixes the capacity (amplification above 50)"),
                                         choose(at_most(out.L3, num(0)), literal("refused: no room for the counterweight arm (L3 <= 0)"), literal("ok"))),
                              literal("no segment of the table holds these givens: X lies outside every interval of this block"));
