@@ -184,7 +184,8 @@ SweepPart read_sweep_part(const nlohmann::json& j, const std::string& origin) {
     const nlohmann::json& material = j.at("reference_material");
     spec.material = {material.at("beta2").get<double>(), material.at("youngs_modulus").get<double>(),
                      material.at("wood_density").get<double>(), material.at("g").get<double>()};
-    spec.criterion = {parse_release(j.at("quality").get<std::string>(), "quality"), j.at("n").get<double>()};
+    spec.criterion.release = parse_release(j.at("quality").get<std::string>(), "quality");
+    spec.criterion.n = j.at("n").get<double>();
     part.shard = parse_shard(j.at("shard").get<std::string>());
     const nlohmann::json& points = j.at("points");
     for (std::size_t i = 0; i < points.size(); ++i) part.points.push_back(read_point(points.at(i), "points[" + std::to_string(i) + "]"));
