@@ -181,44 +181,59 @@ class PhaseRecord {
 };
 
 // The objective is smooth between the onsets of growth of the running extremes, where its slope
-// jumps. Each smooth piece is maximised, at the root of its slope when the maximum lies inside,
-// else at an end; the best of these candidates is the release. `estimate` is where the maximum
-// probably lies (the vertex of the parabola through the samples). The slope is the four-point
-// central difference with step 1e-5 (scaled time): truncation O(step^4) moves the root by
-// ~1e-20, round-off by ~1e-11, relative; a maximum within two steps of an onset is taken at the
-// onset, at most Q'' (2e-5)^2/2 below it. Checked against the independent reference on 500
-// random designs (tests/test_reference.cpp).
+// jumps. On each smooth piece of [lo, hi] the slope is scanned at `scan` (sorted times) and the
+// piece's ends; wherever it falls through zero between two scan points, a maximum lies between
+// them, at the root. The best of these and of the ends (onsets included) is the release. The
+// slope is the four-point central difference with step 1e-5 (scaled time): truncation
+// O(step^4) moves the root by ~1e-20, round-off by ~1e-11, relative; a maximum within two steps
+// of an onset is taken at the onset, at most Q'' (2e-5)^2/2 below it. Checked against the
+// independent reference (tests/test_reference.cpp).
+struct Candidate {
+  double t;
+  double value;
+  std::optional<ForceIndex> at_onset;
+};
 template <class Objective>
-std::pair<double, std::optional<ForceIndex>> release_time(const Objective& objective, double lo, double estimate, double hi,
-                                                          const std::vector<PhaseRecord::Onset>& onsets) {
+Candidate release_time(const Objective& objective, double lo, double hi, const std::vector<double>& scan,
+                       const std::vector<PhaseRecord::Onset>& onsets) {
   constexpr double slope_step = 1e-5;
-  const double near = (hi - lo) / 20;
   std::vector<double> ends{lo};
-  for (const auto& onset : onsets) ends.push_back(onset.t);
+  for (const auto& onset : onsets)
+    if (onset.t > lo && onset.t < hi) ends.push_back(onset.t);
   ends.push_back(hi);
-  double best_t = lo, best_value = objective(lo);
+  Candidate best{lo, objective(lo), std::nullopt};
   auto consider = [&](double t) {
     const double value = objective(t);
-    if (value > best_value) best_t = t, best_value = value;
+    if (value > best.value) best = {t, value, std::nullopt};
   };
+  // The slope, remembered at the scan points, where the root search evaluates it again.
+  std::vector<Point> slopes;
   const auto slope = [&](double t) {
-    return 8 * (objective(t + slope_step) - objective(t - slope_step)) - (objective(t + 2 * slope_step) - objective(t - 2 * slope_step));
+    for (const Point& known : slopes)
+      if (known.x == t) return known.f;
+    const double value = 8 * (objective(t + slope_step) - objective(t - slope_step)) - (objective(t + 2 * slope_step) - objective(t - 2 * slope_step));
+    slopes.push_back({t, value});
+    return value;
   };
   for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
     const double a = ends[i] + 2 * slope_step, b = ends[i + 1] - 2 * slope_step;
     consider(ends[i + 1]);
     if (!(a < b)) continue;
-    // A root is a maximum when the slope falls through zero; a minimum loses to the ends. It is
-    // sought first near the estimate, when that lies on this piece.
-    std::optional<double> root;
-    if (estimate > a && estimate < b) root = root_between(slope, std::max(a, estimate - near), std::min(b, estimate + near), 1e-11, 0);
-    if (!root) root = root_between(slope, a, b, 1e-11, 0);
-    if (root) consider(*root);
+    std::vector<double> points{a};
+    for (double t : scan)
+      if (t > a && t < b) points.push_back(t);
+    points.push_back(b);
+    double previous = slope(a);
+    for (std::size_t j = 1; j < points.size(); ++j) {
+      const double here = slope(points[j]);
+      if (previous > 0 && !(here > 0))
+        if (const auto root = root_between(slope, points[j - 1], points[j], 1e-11, 0)) consider(*root);
+      previous = here;
+    }
   }
-  std::optional<ForceIndex> at_onset;
   for (const auto& onset : onsets)
-    if (onset.t == best_t) at_onset = onset.force;
-  return {best_t, at_onset};
+    if (onset.t == best.t) best.at_onset = onset.force;
+  return best;
 }
 
 [[noreturn]] void fail(const std::string& reason) { throw Error(ErrorKind::numerical, reason); }
@@ -381,8 +396,9 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
     return release_point(e, criterion, time, s, dynamics.snapshot(Phase::lifted, s), phase2.extremes_before(time));
   };
   auto point_at = [&](double time) { return point_from(time, phase2.y_at(time)); };
-  std::size_t best = 0;
-  double best_quality = point_at(t).objective;
+  // The objective at every step end of phase II, in the order of the samples.
+  std::vector<double> sampled{point_at(t).objective};
+  double best_quality = sampled.front();
   h = 1e-3;
   while (true) {
     if (!lifted.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase II; tighten --rtol or choose another --stepper");
@@ -392,28 +408,56 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
     track_energy(snap);
     const double quality_here = release_point(e, criterion, t, s, snap, phase2.samples().back().extremes).objective;
     phase2.add(lifted.step_end(t, y, snap), snap);
-    if (quality_here > best_quality) {
-      best_quality = quality_here;
-      best = phase2.samples().size() - 1;
-    }
+    sampled.push_back(quality_here);
+    best_quality = std::max(best_quality, quality_here);
     // Past the maximum: the objective has fallen to half of it, or the beam has turned over.
     if ((best_quality > 0 && quality_here < 0.5 * best_quality) || s.theta > dynamics.theta_i() + 2 * M_PI || t >= settings.max_time) break;
   }
-  if (!(best_quality > 0)) fail("no release sends the projectile forward: over phase II it never flies toward the target");
+  const std::string no_forward_release = "no release sends the projectile forward: over phase II it never flies toward the target";
+  if (!(best_quality > 0)) fail(no_forward_release);
   if (result.energy_drift > settings.max_energy_drift)
     fail("energy drift " + format_significant(result.energy_drift, 3) + " of Delta U exceeds " +
          format_significant(settings.max_energy_drift, 3) + "; tighten --rtol or choose another --stepper");
 
-  // The maximum of the objective between the samples around the best one, on the interpolant;
-  // the state there is then integrated anew from the step start.
+  // The release search (docs/verifier.md, "Release"). The objective is smooth between the onsets
+  // of growth of the running extremes, so its maximum over phase II lies at an onset or at the
+  // maximum of a smooth piece. Every onset of phase II is located on the continuous solution. A
+  // smooth maximum lies within a step of a step end that is at least as high as both its
+  // neighbours, as long as no step holds both a minimum and a maximum of one smooth piece: the two
+  // steps beside each such step end are searched, their slope scanned every quarter step. An
+  // onset higher than every candidate so far is searched too, within its step.
   const auto& samples = phase2.samples();
-  const std::size_t before = best > 0 ? best - 1 : 0, after = std::min(best + 1, samples.size() - 1);
-  const double lo = samples[before].t, hi = samples[after].t;
   const auto objective = [&](double time) { return point_at(time).objective; };
-  const double estimate = parabola_vertex({lo, objective(lo)}, {samples[best].t, best_quality}, {hi, objective(hi)}).x;
-  const auto found = release_time(objective, lo, estimate, hi, phase2.growth_onsets(lo, hi));
-  const double t_release = found.first;
-  result.release_at_growth_of = found.second;
+  const std::size_t last = samples.size() - 1;
+  // The onsets of phase II; none is sought in a step whose ends both have the objective at 0,
+  // where the projectile would not fly forward.
+  std::vector<PhaseRecord::Onset> onsets_ii;
+  for (std::size_t j = 0; j < last; ++j)
+    if (sampled[j] > 0 || sampled[j + 1] > 0)
+      for (const auto& onset : phase2.growth_onsets(samples[j].t, samples[j + 1].t)) onsets_ii.push_back(onset);
+  constexpr int scans_per_step = 1;
+  Candidate found{samples.front().t, 0, std::nullopt};
+  auto search = [&](std::size_t first, std::size_t end) {
+    std::vector<double> scan;
+    for (std::size_t i = first; i < end; ++i)
+      for (int k = 1; k <= scans_per_step; ++k) scan.push_back(samples[i].t + (samples[i + 1].t - samples[i].t) * k / scans_per_step);
+    const Candidate c = release_time(objective, samples[first].t, samples[end].t, scan, onsets_ii);
+    if (c.value > found.value) found = c;
+  };
+  for (std::size_t i = 0; i <= last; ++i) {
+    const bool peak = (i == 0 || sampled[i] >= sampled[i - 1]) && (i == last || sampled[i] >= sampled[i + 1]);
+    if (peak && sampled[i] > 0) search(i > 0 ? i - 1 : 0, std::min(i + 1, last));
+  }
+  for (const auto& onset : onsets_ii) {
+    if (!(objective(onset.t) > found.value)) continue;
+    const auto after = std::upper_bound(samples.begin(), samples.end(), onset.t, [](double v, const StepEnd& s) { return v < s.t; });
+    const std::size_t step_start = static_cast<std::size_t>(after - samples.begin()) - 1;
+    search(step_start, std::min(step_start + 1, last));
+  }
+  // Sampled values within round-off of 0 can leave no candidate with the objective above it.
+  if (!(found.value > 0)) fail(no_forward_release);
+  const double t_release = found.t;
+  result.release_at_growth_of = found.at_onset;
   result.release = point_from(t_release, phase2.y_exact_at(t_release));
   // Only what happens before the release invalidates the shot.
   auto before_release = [&](const std::optional<double>& t) { return t && *t <= t_release ? t : std::nullopt; };

@@ -205,6 +205,7 @@ class Reference {
     run_phase_one();
     run_phase_two();
     refine_peaks();
+    build_running();
     return release();
   }
 
@@ -305,17 +306,28 @@ class Reference {
     std::sort(peaks_.begin(), peaks_.end(), [](const Peak& x, const Peak& y) { return x.t < y.t; });
   }
 
+  // The running maxima of the forces over the timeline and the refined peaks, in time order:
+  // running_[i] holds the maxima over every mark up to and including the i-th.
+  void build_running() {
+    std::vector<Mark> marks(timeline_);
+    for (const Peak& peak : peaks_) {
+      Forces f{};
+      f[peak.force] = peak.value;
+      marks.push_back({peak.t, f});
+    }
+    std::stable_sort(marks.begin(), marks.end(), [](const Mark& x, const Mark& y) { return x.t < y.t; });
+    Forces running{};  // 0: the engine at rest before the shot
+    for (const Mark& mark : marks) {
+      grow(running, mark.f);
+      running_.push_back({mark.t, running});
+    }
+  }
+
   // The running maximum of force k over [0, t]: 0 (the engine at rest before the shot), the
   // grid samples and the refined peaks up to t, and the force at t itself.
   double extreme_at(int k, double t, double now) const {
-    double e = std::max(0.0, now);
-    for (const auto& s : timeline_) {
-      if (s.t > t) break;
-      e = std::max(e, s.f[k]);
-    }
-    for (const Peak& peak : peaks_)
-      if (peak.t <= t && peak.force == k) e = std::max(e, peak.value);
-    return e;
+    const auto after = std::upper_bound(running_.begin(), running_.end(), t, [](double v, const Mark& m) { return v < m.t; });
+    return std::max({0.0, now, after == running_.begin() ? 0.0 : (after - 1)->f[k]});
   }
 
   struct Evaluation {
@@ -346,65 +358,57 @@ class Reference {
     return quality(p_, m.projectile, extremes).derivatives()(0);
   }
 
-  // The release: the best grid sample, then, between its neighbours, the onsets of growth of
-  // the running extremes (bisection on force - extreme) and the maximum of each smooth piece
-  // between them (bisection on the sign of dQ/dt); the best candidate wins.
+  // The release, sought over the whole of phase II, independently of where any sample is
+  // highest (issue 26): every onset of growth of a running extreme (a force below its extreme at
+  // one grid point that passes it by the next, or at a refined peak between them; bisection on
+  // force - extreme), and on each smooth piece between onsets every maximum where dQ/dt, scanned
+  // at every grid point, falls through zero (bisection on its sign). The best candidate wins.
   Shot release() {
-    std::size_t best = 0;
-    double best_q = -1;
-    for (std::size_t i = 0; i < two_.size(); ++i) {
-      std::array<double, force_count> extremes;
-      for (int k = 0; k < force_count; ++k) extremes[k] = extreme_at(k, two_[i].t, 0);
-      const double q = quality(p_, lifted_.motion_at(two_[i].y).projectile, extremes);
-      if (q > best_q) best_q = q, best = i;
-    }
-    const double lo = two_[best > 0 ? best - 1 : 0].t, hi = two_[std::min(best + 1, two_.size() - 1)].t;
-    constexpr int fine = 256;
-    std::vector<double> u(fine + 1);
-    std::vector<Forces> fu(fine + 1);
-    for (int j = 0; j <= fine; ++j) u[j] = lo + (hi - lo) * j / fine, fu[j] = forces_at(u[j]);
     std::vector<std::pair<double, int>> onsets;
-    for (int k = 0; k < force_count; ++k) {
-      const double start = extreme_at(k, lo, 0);
-      if (!(fu[0][k] < start)) continue;
-      for (int j = 1; j <= fine; ++j) {
-        double right = fu[j][k] > start ? u[j] : -1;
+    for (std::size_t j = 1; j < two_.size(); ++j) {
+      const double a = two_[j - 1].t, b = two_[j].t;
+      for (int k = 0; k < force_count; ++k) {
+        const double start = extreme_at(k, a, 0);
+        if (!(two_[j - 1].f[k] < start)) continue;
+        double right = two_[j].f[k] > start ? b : -1;
         for (const Peak& peak : peaks_)
-          if (peak.force == k && peak.t > u[j - 1] && peak.t <= u[j] && peak.value > start) right = right < 0 ? peak.t : std::min(right, peak.t);
+          if (peak.force == k && peak.t > a && peak.t <= b && peak.value > start) right = right < 0 ? peak.t : std::min(right, peak.t);
         if (right < 0) continue;
-        double a = u[j - 1], b = right;
+        double x = a, z = right;
         for (int n = 0; n < bisections; ++n) {
-          const double mid = (a + b) / 2;
-          (forces_at(mid)[k] > start ? b : a) = mid;
+          const double mid = (x + z) / 2;
+          (forces_at(mid)[k] > start ? z : x) = mid;
         }
-        onsets.push_back({b, k});
-        break;
+        onsets.push_back({z, k});
       }
     }
     std::sort(onsets.begin(), onsets.end());
-    std::vector<double> ends{lo};
+    std::vector<double> ends{t_liftoff_};
     for (const auto& onset : onsets) ends.push_back(onset.first);
-    ends.push_back(hi);
+    ends.push_back(two_.back().t);
     std::vector<double> candidates(ends);
     for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
       const double a = ends[i], b = ends[i + 1];
-      constexpr int scan = 32;
-      double previous_t = a + (b - a) * 1e-6, previous = slope_at(previous_t);
-      for (int j = 1; j <= scan; ++j) {
-        const double tj = j == scan ? b - (b - a) * 1e-6 : a + (b - a) * j / scan, sj = slope_at(tj);
+      std::vector<double> scan{a + (b - a) * 1e-6};
+      for (const Sample& s : two_)
+        if (s.t > scan.front() && s.t < b - (b - a) * 1e-6) scan.push_back(s.t);
+      scan.push_back(b - (b - a) * 1e-6);
+      double previous = slope_at(scan.front());
+      for (std::size_t j = 1; j < scan.size(); ++j) {
+        const double sj = slope_at(scan[j]);
         if (previous > 0 && sj <= 0) {
-          double x = previous_t, z = tj;
+          double x = scan[j - 1], z = scan[j];
           for (int n = 0; n < bisections; ++n) {
             const double mid = (x + z) / 2;
             (slope_at(mid) > 0 ? x : z) = mid;
           }
           candidates.push_back((x + z) / 2);
         }
-        previous_t = tj, previous = sj;
+        previous = sj;
       }
     }
-    double t_release = lo;
-    Evaluation at = evaluate(lo);
+    double t_release = t_liftoff_;
+    Evaluation at = evaluate(t_liftoff_);
     for (double t : candidates) {
       const Evaluation e = evaluate(t);
       if (e.q > at.q) t_release = t, at = e;
@@ -436,7 +440,7 @@ class Reference {
   Params p_;
   Flow trough_, lifted_;
   std::vector<Sample> one_, two_;
-  std::vector<Mark> timeline_;
+  std::vector<Mark> timeline_, running_;
   std::vector<Peak> peaks_;
   double t_liftoff_ = 0;
 };
