@@ -424,8 +424,9 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   // maximum of a smooth piece. Every onset of phase II is located on the continuous solution. A
   // smooth maximum lies within a step of a step end that is at least as high as both its
   // neighbours, as long as no step holds both a minimum and a maximum of one smooth piece: the two
-  // steps beside each such step end are searched, their slope scanned every quarter step. An
-  // onset higher than every candidate so far is searched too, within its step.
+  // steps beside each such step end are searched, each on its own (the slope is scanned at the
+  // step end between them). An onset higher than every candidate so far is searched too, within
+  // its step.
   const auto& samples = phase2.samples();
   const auto objective = [&](double time) { return point_at(time).objective; };
   const std::size_t last = samples.size() - 1;
@@ -435,12 +436,10 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   for (std::size_t j = 0; j < last; ++j)
     if (sampled[j] > 0 || sampled[j + 1] > 0)
       for (const auto& onset : phase2.growth_onsets(samples[j].t, samples[j + 1].t)) onsets_ii.push_back(onset);
-  constexpr int scans_per_step = 1;
   Candidate found{samples.front().t, 0, std::nullopt};
   auto search = [&](std::size_t first, std::size_t end) {
     std::vector<double> scan;
-    for (std::size_t i = first; i < end; ++i)
-      for (int k = 1; k <= scans_per_step; ++k) scan.push_back(samples[i].t + (samples[i + 1].t - samples[i].t) * k / scans_per_step);
+    for (std::size_t i = first + 1; i < end; ++i) scan.push_back(samples[i].t);
     const Candidate c = release_time(objective, samples[first].t, samples[end].t, scan, onsets_ii);
     if (c.value > found.value) found = c;
   };
