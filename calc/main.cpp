@@ -7,18 +7,19 @@
 #include <map>
 #include <optional>
 
-#include "trebuchet/batch.hpp"
+#include "trebuchet/app/batch.hpp"
 #include "trebuchet/calculator.hpp"
-#include "trebuchet/csv.hpp"
+#include "trebuchet/app/csv.hpp"
 #include "trebuchet/format.hpp"
 #include "program.hpp"
 #include "trebuchet/error.hpp"
-#include "trebuchet/report.hpp"
-#include "trebuchet/schema.hpp"
-#include "trebuchet/spreadsheet.hpp"
-#include "trebuchet/request.hpp"
+#include "trebuchet/app/report.hpp"
+#include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/spreadsheet.hpp"
+#include "trebuchet/app/request.hpp"
 #include "trebuchet/scaling_table.hpp"
-#include "trebuchet/units.hpp"
+#include "trebuchet/app/table_json.hpp"
+#include "trebuchet/app/units.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include "trebuchet/design.hpp"
 #include "trebuchet/engine.hpp"
-#include "trebuchet/units.hpp"
+#include "trebuchet/app/units.hpp"
 
 namespace trebuchet::testing {
 

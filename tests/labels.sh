@@ -7,7 +7,7 @@ root=$1
 table=$root/docs/paper_labels.md
 failures=0
 rows=$(grep -E '^\| (eq|tab):' "$table")
-for label in $(grep -ohE '(eq|tab):[A-Za-z0-9_]+' "$root"/lib/src/*.cpp "$root"/lib/include/trebuchet/*.hpp | sort -u); do
+for label in $(X | sort -u); do
   count=$(printf '%s\n' "$rows" | grep -c "^| $label |")
   if [ "$count" -ne 1 ]; then echo "labels.sh: $label has $count rows in docs/paper_labels.md, not 1" >&2; failures=$((failures + 1)); fi
 done

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "paper_rounding.hpp"
+#include "trebuchet/app/table_json.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/verification.hpp"
 #include "trebuchet/error.hpp"

@@ -1,4 +1,4 @@
-// The step-end interpolant and the odeiv2 wrapper of the shot (lib/src/ode.hpp).
+// The step-end interpolant and the odeiv2 wrapper of the shot (lib/core/src/ode.hpp).
 #include <catch2/catch.hpp>
 #include <array>
 #include <cmath>

@@ -11,9 +11,9 @@
 #include "exit_codes.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/error.hpp"
-#include "trebuchet/request.hpp"
-#include "trebuchet/schema.hpp"
-#include "trebuchet/units.hpp"
+#include "trebuchet/app/request.hpp"
+#include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/units.hpp"
 #include "trebuchet/verification.hpp"
 
 using namespace trebuchet;

@@ -6,6 +6,7 @@
 #include "paper_rounding.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/scaling_table.hpp"
+#include "trebuchet/app/table_json.hpp"
 
 using namespace trebuchet;
 using namespace trebuchet::testing;
@@ -84,7 +85,46 @@ TEST_CASE("a table whose constants break eq:ZRT, or with a doubled block, is ref
               "digits allow); correct p or q of L1");
   CHECK(table_error([](nlohmann::json& d) { d["blocks"].push_back(d["blocks"][2]); }) ==
         "spoiled.json: blocks[3]: a second block for theta_i = 40 deg, F = 2/3; give each (theta_i, F) once");
-  CHECK_NOTHROW(parse_scaling_table(builtin_scaling_table_json(), "paper"));
+  // The paper's (30 deg, 2/3) D pair itself: 0.0004 off, inside the 0.0006 its digits allow.
+  const ScalingTable paper = parse_scaling_table(builtin_scaling_table_json(), "paper");
+  double worst = 0;
+  for (const Segment& segment : paper.find_block(30, 2.0 / 3)->segments)
+    worst = std::max(worst, std::abs(segment.exponents(index(Param::D), 0) + 5 * segment.exponents(index(Param::D), 1) - 1.5));
+  CHECK(worst == Approx(0.0004).margin(1e-12));
+}
+
+// The core has tab:CPNC as C++, generated from data/cpnc.json when the project is configured
+// (cmake/builtin_table.cmake); the application layer parses the same file. Both must give the
+// same table, value for value (the generator writes each number to 17 digits, which read back
+// as the same double).
+TEST_CASE("the core's compiled-in tab:CPNC is the table that data/cpnc.json gives", "[table]") {
+  const ScalingTable& core = builtin_scaling_table();
+  const ScalingTable file = parse_scaling_table(builtin_scaling_table_json(), "data/cpnc.json");
+  CHECK(core.name == file.name);
+  CHECK(core.provenance == file.provenance);
+  CHECK(core.R0 == file.R0);
+  CHECK(core.T0 == file.T0);
+  CHECK(core.reference.beta2 == file.reference.beta2);
+  CHECK(core.reference.youngs_modulus == file.reference.youngs_modulus);
+  CHECK(core.reference.wood_density == file.reference.wood_density);
+  CHECK(core.reference.g == file.reference.g);
+  CHECK(core.n == file.n);
+  REQUIRE(core.blocks.size() == file.blocks.size());
+  for (std::size_t b = 0; b < core.blocks.size(); ++b) {
+    const TableBlock &x = core.blocks[b], &y = file.blocks[b];
+    CHECK(x.theta_i_deg == y.theta_i_deg);
+    CHECK(x.F == y.F);
+    CHECK(x.Z0 == y.Z0);
+    CHECK(x.branch_switch_X == y.branch_switch_X);
+    REQUIRE(x.segments.size() == y.segments.size());
+    for (std::size_t s = 0; s < x.segments.size(); ++s) {
+      CHECK(x.segments[s].X_min == y.segments[s].X_min);
+      CHECK(x.segments[s].X_max == y.segments[s].X_max);
+      CHECK(x.segments[s].branch == y.segments[s].branch);
+      CHECK(x.segments[s].a == y.segments[s].a);
+      CHECK(x.segments[s].exponents == y.segments[s].exponents);
+    }
+  }
 }
 
 TEST_CASE("a non-finite number or broken JSON is refused", "[table]") {

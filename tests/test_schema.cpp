@@ -5,7 +5,7 @@
 #include "engines.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/error.hpp"
-#include "trebuchet/schema.hpp"
+#include "trebuchet/app/schema.hpp"
 
 using namespace trebuchet;
 

@@ -4,6 +4,7 @@
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/uncertainty.hpp"
+#include "trebuchet/app/units.hpp"
 
 using namespace trebuchet;
 

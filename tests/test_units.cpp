@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "trebuchet/error.hpp"
-#include "trebuchet/units.hpp"
+#include "trebuchet/app/units.hpp"
 
 using namespace trebuchet;
 

@@ -2,7 +2,7 @@
 // verifies it ab initio: prints the calculator's T and the shot's R.
 #include <cstdio>
 
-#include "trebuchet/trebuchet.hpp"
+#include "trebuchet.hpp"
 
 int main() {
   using namespace trebuchet;

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "oracle.hpp"
-#include "trebuchet/batch.hpp"
+#include "trebuchet/app/batch.hpp"
 #include "trebuchet/error.hpp"
-#include "trebuchet/schema.hpp"
+#include "trebuchet/app/schema.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
   std::istringstream input(std::string(reinterpret_cast<const char*>(data), size));

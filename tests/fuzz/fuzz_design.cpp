@@ -8,8 +8,8 @@
 #include <string>
 
 #include "trebuchet/error.hpp"
-#include "trebuchet/schema.hpp"
-#include "trebuchet/text_input.hpp"
+#include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/text_input.hpp"
 
 namespace {
 

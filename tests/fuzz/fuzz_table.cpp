@@ -5,9 +5,10 @@
 #include <string>
 
 #include "oracle.hpp"
+#include "trebuchet/app/table_json.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/error.hpp"
-#include "trebuchet/schema.hpp"
+#include "trebuchet/app/schema.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
   try {

@@ -22,7 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "trebuchet/trebuchet.hpp"
+#include "trebuchet/app.hpp"
+#include "trebuchet/app/spreadsheet.hpp"
 
 namespace {
 

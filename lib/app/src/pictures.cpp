@@ -1,0 +1,346 @@
+#include "trebuchet/app/pictures.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "trebuchet/format.hpp"
+#include "trebuchet/quality.hpp"
+#include "trebuchet/app/report.hpp"
+#include "trebuchet/app/units.hpp"
+
+namespace trebuchet {
+namespace {
+
+std::string num(double x) { return format_significant(x, 6); }
+
+// Indices into the trace of the moments the pictures mark.
+struct Moments {
+  std::size_t start = 0, liftoff = 0, peak_reaction = 0, first_extreme = 0, second_extreme = 0, release = 0;
+};
+
+Moments moments_of(const std::vector<TracePoint>& trace) {
+  Moments m;
+  double largest = -1, most = -1e300, least = 1e300;
+  std::size_t most_at = 0, least_at = 0;
+  for (std::size_t i = 0; i < trace.size() && trace[i].phase != Phase::released; ++i) {
+    const Snapshot& s = trace[i].snapshot;
+    if (trace[i].phase == Phase::trough) m.liftoff = i;
+    m.release = i;
+    const double reaction = force_values(s)[pivot_reaction];
+    if (reaction > largest) largest = reaction, m.peak_reaction = i;
+    if (s.pivot_reaction.x > most) most = s.pivot_reaction.x, most_at = i;
+    if (s.pivot_reaction.x < least) least = s.pivot_reaction.x, least_at = i;
+  }
+  m.first_extreme = std::min(most_at, least_at), m.second_extreme = std::max(most_at, least_at);
+  return m;
+}
+
+// The engine at one moment as gnuplot commands: frame, beam, counterweight arm and weight,
+// sling and projectile, to scale in metres on the site (x toward the target, y above the base).
+std::string engine_commands(const Engine& engine, const Snapshot& s, bool projectile_on, bool labels) {
+  const double H = pivot_height(engine);
+  const SitePoint hinge = site_point(s.hinge, engine), cw = site_point(s.counterweight, engine), tip = site_point(s.tip, engine),
+                  pr = site_point(s.projectile, engine);
+  std::ostringstream g;
+  auto segment = [&](SitePoint a, SitePoint b, const char* style) {
+    g << "set arrow from " << num(a.x) << "," << num(a.y) << " to " << num(b.x) << "," << num(b.y) << " nohead " << style << "\n";
+  };
+  auto label = [&](const std::string& text, SitePoint at, const char* where) {
+    g << "set label \"" << text << "\" at " << num(at.x) << "," << num(at.y) << " " << where << " font \",13\"\n";
+  };
+  const double foot = 0.3 * H;
+  segment({-foot, 0}, {0, H}, "lw 3 lc rgb '#8b5a2b'");
+  segment({foot, 0}, {0, H}, "lw 3 lc rgb '#8b5a2b'");
+  segment(hinge, tip, "lw 5 lc rgb '#a0522d'");
+  segment(hinge, cw, "lw 2 lc rgb 'black'");
+  g << "set object circle at " << num(cw.x) << "," << num(cw.y) << " size " << num(0.12 * engine.L2 + 0.04 * H)
+    << " fc rgb '#555555' fs solid front\n";
+  g << "set object circle at 0," << num(H) << " size " << num(0.015 * H) << " fc rgb 'black' fs solid front\n";
+  if (projectile_on) {
+    segment(tip, pr, "lw 2 lc rgb '#1f5fbf' front");
+    g << "set object circle at " << num(pr.x) << "," << num(pr.y) << " size " << num(0.03 * H) << " fc rgb '#d62728' fs solid front\n";
+  }
+  if (labels) {
+    auto mid = [](SitePoint a, SitePoint b) { return SitePoint{(a.x + b.x) / 2, (a.y + b.y) / 2}; };
+    label("L_1", mid({0, H}, tip), "offset -2.2,0.3");
+    label("L_2", mid({0, H}, hinge), "offset -2.2,0.6");
+    label("L_3", mid(hinge, cw), "offset 1,0");
+    if (projectile_on) label("L_4", mid(tip, pr), "offset 2,0.8");
+    segment({0, 0}, {0, H}, "lw 1 dt 2 lc rgb 'gray40'");
+    label("H", {0, H / 2}, "offset 0.5,0");
+    label("θ", {0, H}, "offset -1.3,-2.2");
+  }
+  return g.str();
+}
+
+std::string header(const std::string& terminal_and_output) {
+  return "# Made by trebuchet-verify shot --plot; run with gnuplot in this folder.\n"
+         "set encoding utf8\nset datafile separator ','\n" + terminal_and_output + "\nset grid lc rgb '#dddddd'\nset key noenhanced\n";
+}
+
+}  // namespace
+
+std::vector<std::string> picture_scripts() { return {"engine.gp", "paths.gp", "forces.gp", "energy.gp", "release.gp", "animation.gp"}; }
+
+std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings) {
+  const ScaledDesign d = scaled_design(engine);
+  const double target_level = settings.target_level;
+  const double g = engine.material.g, H = pivot_height(engine);
+  const double mg_kN = engine.m * g / 1000, Mg_kN = engine.M * g / 1000, energy_kJ = engine.M * g * engine.L2 / 1000;
+  const double time_unit = std::sqrt(engine.L2 / g);  // section 3 [s]
+  const Verification v = verify_engine(engine, settings);
+  std::vector<TracePoint> trace, unreleased;
+  simulate_shot(d, settings.criterion, settings.integrator, &trace, v.t_release / time_unit / 200, &unreleased);
+  const Moments m = moments_of(trace);
+  auto seconds = [&](std::size_t i) { return trace[i].t * time_unit; };
+  std::vector<PictureFile> files;
+  files.push_back({"shot.csv", trace_csv(trace, engine)});
+
+  // The flight from the release to the target level, in vacuum.
+  const Snapshot& at_release = trace[m.release].snapshot;
+  const SitePoint p0 = site_point(at_release.projectile, engine);
+  const double vx = -at_release.projectile_velocity.x * std::sqrt(g * engine.L2), vy = at_release.projectile_velocity.y * std::sqrt(g * engine.L2);
+  const double drop = p0.y - target_level, flight = (vy + std::sqrt(vy * vy + 2 * g * drop)) / g;
+  std::ostringstream flight_csv;
+  flight_csv << "x_m,y_m\n";
+  for (int k = 0; k <= 100; ++k) {
+    const double t = flight * k / 100;
+    flight_csv << num(p0.x + vx * t) << "," << num(p0.y + vy * t - g * t * t / 2) << "\n";
+  }
+  files.push_back({"flight.csv", flight_csv.str()});
+
+  // Q(t), eps(t), R(t) over phase II, and the running extremes of eq:F, each over its value at the release.
+  std::ostringstream release_csv;
+  release_csv << "t_s,Q_over_Q_release,eps_over_eps_release,R_over_R_release,FS_perp,FR,FRh_max,FRh_min\n";
+  ForceExtremes running;
+  for (std::size_t i = 0; i <= m.release; ++i) running.add(force_values(trace[i].snapshot));
+  const ForceExtremes final_extremes = running;
+  running = ForceExtremes{};
+  std::vector<TracePoint> phase_two(trace.begin(), trace.begin() + m.release + 1);
+  phase_two.insert(phase_two.end(), unreleased.begin(), unreleased.end());
+  // Each moment as a release (shot.hpp), so that Q is the Q_n the shot maximised and R the
+  // range at level 0; each over its value at the release itself.
+  struct Row {
+    double t;
+    ReleasePoint r;
+    ForceValues extremes;
+  };
+  std::vector<Row> rows;
+  std::size_t release_row = 0;
+  for (std::size_t i = 0; i < phase_two.size(); ++i) {
+    const TracePoint& p = phase_two[i];
+    const ForceExtremes before = running;
+    running.add(force_values(p.snapshot));
+    if (p.phase != Phase::lifted) continue;
+    const ReleasePoint r = release_point(d, settings.criterion, p.t, p.state, p.snapshot, before);
+    if (!(r.range > 0)) continue;
+    if (i == m.release) release_row = rows.size();
+    rows.push_back({p.t * time_unit, r, running.max});
+  }
+  for (const Row& row : rows) {
+    const ReleasePoint& at = rows[release_row].r;
+    release_csv << num(row.t) << "," << num(row.r.quality / at.quality) << "," << num(row.r.efficiency / at.efficiency) << ","
+                << num(row.r.range / at.range);
+    for (int k = 0; k < force_count; ++k) release_csv << "," << num(row.extremes[k] / final_extremes.max[k]);
+    release_csv << "\n";
+  }
+  files.push_back({"release.csv", release_csv.str()});
+
+  // 1. The engine at four moments, to scale.
+  std::ostringstream engine_gp;
+  engine_gp << header("set terminal svg size 1100,900 dynamic font 'sans,12'\nset output 'engine.svg'") << "set size ratio -1\nset xrange ["
+            << num(-engine.L1 - engine.L4 - 0.5) << ":" << num(std::max(engine.L1, engine.L2 + engine.L3) + 0.5) << "]\nset yrange [-0.5:"
+            << num(H + engine.L1 + engine.L4 + 0.5) << "]\nset xlabel 'x toward the target [m]'\nset ylabel 'height above the base [m]'\n"
+            << "set multiplot layout 2,2 title \"The engine to scale: L1 = " << format_significant(engine.L1, 3) << " m, L2 = "
+            << format_significant(engine.L2, 3) << " m, L3 = " << format_significant(engine.L3, 3) << " m, L4 = " << format_significant(engine.L4, 3)
+            << " m, H = " << format_significant(H, 3) << " m\\nθ: beam from the downward vertical, ψ: counterweight arm from the vertical, φ: sling from the horizontal\" noenhanced\n";
+  const std::pair<std::size_t, std::string> panels[] = {{m.start, "at rest: theta_i = " + format_significant(engine.theta_i_deg, 3) + " deg"},
+                                                        {m.liftoff, "lift-off, t = " + format_significant(seconds(m.liftoff), 3) + " s"},
+                                                        {m.peak_reaction, "largest pivot force, t_m = " + format_significant(seconds(m.peak_reaction), 3) + " s"},
+                                                        {m.release, "release, t_r = " + format_significant(seconds(m.release), 3) + " s"}};
+  for (std::size_t k = 0; k < 4; ++k) {
+    const TracePoint& p = trace[panels[k].first];
+    engine_gp << "unset arrow\nunset label\nunset object\nset title '" << panels[k].second << "' noenhanced\n"
+              << engine_commands(engine, p.snapshot, true, k == 0);
+    if (k == 2) {
+      engine_gp << "set label 'θ = " << format_significant(degrees(p.state.theta), 3) << " deg' at graph 0.03,0.92 noenhanced\n"
+                << "set label 'ψ = " << format_significant(degrees(p.state.psi), 3) << " deg' at graph 0.03,0.85 noenhanced\n"
+                << "set label 'φ = " << format_significant(degrees(p.state.phi), 3) << " deg' at graph 0.03,0.78 noenhanced\n";
+    }
+    engine_gp << "plot 0 lc rgb '#6b8e23' lw 2 notitle\n";
+  }
+  engine_gp << "unset multiplot\n";
+  files.push_back({"engine.gp", engine_gp.str()});
+
+  // 2. The paths, then the flight to the target level; on the right the engine's part enlarged.
+  std::ostringstream paths;
+  const SitePoint impact{p0.x + vx * flight, target_level};
+  const std::string curves = "'shot.csv' every ::1 using (strcol(1) ne 'III' ? $17 : NaN):18 with lines lw 2 title 'counterweight', \\\n"
+                             "     '' every ::1 using (strcol(1) ne 'III' ? $19 : NaN):20 with lines lw 2 title 'beam tip', \\\n"
+                             "     '' every ::1 using 21:22 with lines lw 2 title 'projectile, phases I-II', \\\n"
+                             "     'flight.csv' every ::1 using 1:2 with lines lw 2 dt 2 title 'flight (vacuum)', \\\n"
+                             "     " + num(target_level) + " with lines lc rgb 'gray40' title 'target level'\n";
+  paths << header("set terminal svg size 1200,500 dynamic font 'sans,12'\nset output 'paths.svg'")
+        << "set xlabel 'x toward the target [m]'\nset ylabel 'height above the base [m]'\nset key top left\n"
+        << "set multiplot\nset size 0.62,1\nset origin 0,0\nset title 'The whole shot' noenhanced\n"
+        << "set arrow 1 from 0," << num(target_level - 0.02 * v.capacity.R) << " to " << num(impact.x) << "," << num(target_level - 0.02 * v.capacity.R)
+        << " heads lc rgb 'black'\nset label 1 'R = " << format_significant(v.capacity.R, 4) << " m' at " << num(impact.x / 2) << ","
+        << num(target_level - 0.02 * v.capacity.R) << " offset 0,-1 center\n"
+        << "set yrange [" << num(std::min(0.0, target_level) - 0.06 * v.capacity.R) << ":*]\nplot " << curves
+        << "unset arrow 1\nunset label 1\nset size 0.38,1\nset origin 0.62,0\nset size ratio -1\nset key off\n"
+        << "set title 'Phases I and II, enlarged' noenhanced\nset xrange [" << num(-engine.L1 - engine.L4 - 0.5) << ":"
+        << num(std::max(engine.L1 + engine.L4, engine.L2 + engine.L3) + 0.5) << "]\nset yrange [" << num(std::min(0.0, target_level) - 0.5) << ":"
+        << num(H + engine.L1 + engine.L4 + 0.5) << "]\nplot " << curves << "unset multiplot\n";
+  files.push_back({"paths.gp", paths.str()});
+
+  // 3. The forces against time, in kN, with multiples of M g on the right.
+  auto marks = [&](std::ostringstream& gp) {
+    const std::pair<std::size_t, const char*> at[] = {{m.liftoff, "lift-off"}, {m.first_extreme, "t_1"}, {m.peak_reaction, "t_m"},
+                                                      {m.second_extreme, "t_2"}, {m.release, "release"}};
+    int row = 0;
+    for (const auto& [i, name] : at) {
+      gp << "set arrow from " << num(seconds(i)) << ", graph 0 to " << num(seconds(i)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
+         << "set label '" << name << "' at " << num(seconds(i)) << ", graph " << (0.96 - 0.05 * (row++ % 3)) << " right offset -0.3,0 noenhanced\n";
+    }
+  };
+  std::ostringstream forces;
+  forces << header("set terminal svg size 1100,500 dynamic font 'sans,12'\nset output 'forces.svg'")
+         << "set xlabel 'time [s]'\nset ylabel 'force [kN]'\nset y2label 'force as a multiple of M·g (M = " << format_significant(engine.M / 1000, 3)
+         << " t, the counterweight)' noenhanced\nset y2tics\nset link y2 via y/" << num(Mg_kN) << " inverse y*" << num(Mg_kN)
+         << "\nset format y2 '%.1f'\nset key at graph 0.02,0.8 left top box opaque\nset xrange [0:" << num(seconds(m.release) * 1.02) << "]\n"
+         << "set title 'Forces up to the release: t_1 and t_2 the extremes of F_Rh, t_m the largest pivot force' noenhanced\n";
+  marks(forces);
+  forces << "plot 'shot.csv' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($9*" << num(mg_kN) << ") with lines lw 2 title 'F_S⊥ (sling, across the beam)', \\\n"
+         << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($10*" << num(Mg_kN) << ") with lines lw 2 title '|F_R| (pivot)', \\\n"
+         << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($11*" << num(Mg_kN) << ") with lines lw 2 title 'F_Rh (pivot, horizontal)', \\\n"
+         << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($13*" << num(Mg_kN) << ") with lines lw 2 title '|F_H| (hinge)', \\\n"
+         << "     '' every ::1 using (strcol(1) eq 'I' ? $2 : NaN):($14*" << num(mg_kN) << ") with lines lw 2 title 'N (trough on the projectile)'\n";
+  files.push_back({"forces.gp", forces.str()});
+
+  // 4. Where the energy goes: each body's energy over its value at rest, against Delta U; the
+  // projectile keeps what it took at the release.
+  std::ostringstream energy;
+  const double drop_kJ = d.energy_drop() * energy_kJ;
+  const Snapshot& rest = trace.front().snapshot;
+  const double cw0 = rest.energies.counterweight * energy_kJ, beam0 = rest.energies.beam * energy_kJ, pr0 = rest.energies.projectile_potential * energy_kJ;
+  const double taken_kJ = (at_release.energies.projectile_kinetic + at_release.energies.projectile_potential) * energy_kJ - pr0;
+  energy << header("set terminal svg size 1100,500 dynamic font 'sans,12'\nset output 'energy.svg'")
+         << "set xlabel 'time [s]'\nset ylabel 'energy gained since rest [kJ]'\nset key at graph 0.98,0.62 right top box opaque\n"
+         << "set title \"Where the energy goes\\nat the release the projectile holds ε = " << format_significant(100 * v.eps, 3)
+         << " % of ΔU; the gap, 1 − ε, stays in beam and counterweight\" noenhanced\n"
+         << "set arrow from " << num(seconds(m.release)) << ", graph 0 to " << num(seconds(m.release)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
+         << "set arrow from " << num(seconds(m.release)) << "," << num(taken_kJ) << " to " << num(seconds(m.release)) << "," << num(drop_kJ)
+         << " heads lw 2 lc rgb 'red' front\nset label '1 − ε' at " << num(seconds(m.release)) << "," << num((taken_kJ + drop_kJ) / 2)
+         << " offset 0.5,0 tc rgb 'red' noenhanced\nset label 'release' at " << num(seconds(m.release)) << ", graph 0.5 offset 0.3,0\n"
+         << "plot 'shot.csv' every ::1 using 2:($23/1000-(" << num(cw0) << ")) with lines lw 2 title 'counterweight', \\\n"
+         << "     '' every ::1 using 2:($24/1000-(" << num(beam0) << ")) with lines lw 2 title 'beam', \\\n"
+         << "     '' every ::1 using 2:(strcol(1) ne 'III' ? ($25+$26)/1000-(" << num(pr0) << ") : " << num(taken_kJ)
+         << ") with lines lw 2 title 'projectile (after the release: what it took)', \\\n"
+         << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($25/1000) with lines lw 1 dt 2 title 'of which kinetic', \\\n"
+         << "     '' every ::1 using 2:(($23+$24)/1000-(" << num(cw0 + beam0) << ")+(strcol(1) ne 'III' ? ($25+$26)/1000-(" << num(pr0) << ") : "
+         << num(taken_kJ) << ")) with lines lw 2 lc rgb 'black' title 'total (conserved)', \\\n"
+         << "     " << num(drop_kJ) << " with lines dt 2 lc rgb 'gray30' title 'ΔU (eq:DU)'\n";
+  files.push_back({"energy.gp", energy.str()});
+
+  // 5. Why the release is where it is.
+  std::ostringstream release;
+  release << header("set terminal svg size 1100,500 dynamic font 'sans,12'\nset output 'release.svg'")
+          << "set xlabel 'time [s]'\nset ylabel 'value over its value at the release'\nset key outside right top\nset yrange [0:1.3]\n"
+          << "set label 'release' at " << num(seconds(m.release)) << ", graph 0.95 offset 0.3,0\n"
+          << "set title \"Phase II, and on as if the projectile were kept: Q peaks at the release\\nthe running extremes of eq:F switch on as they grow\" noenhanced\n"
+          << "set arrow from " << num(seconds(m.release)) << ", graph 0 to " << num(seconds(m.release)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
+          << "plot 'release.csv' every ::1 using 1:2 with lines lw 3 lc rgb 'black' title 'Q', \\\n"
+          << "     '' every ::1 using 1:3 with lines lw 2 title 'eps', '' every ::1 using 1:4 with lines lw 2 title 'R', \\\n"
+          << "     '' every ::1 using 1:5 with lines lw 2 dt 2 title 'max F_S⊥ so far', '' every ::1 using 1:6 with lines lw 2 dt 2 title 'max |F_R| so far', \\\n"
+          << "     '' every ::1 using 1:7 with lines lw 2 dt 2 title 'max F_Rh so far', '' every ::1 using 1:8 with lines lw 2 dt 2 title 'max −F_Rh so far'\n";
+  files.push_back({"release.gp", release.str()});
+
+  // 6. The animation: one frame every second sample, played at 4 % of real speed or slower.
+  const std::size_t stride = 2;
+  const double frame_s = stride * (trace.size() > 1 ? seconds(1) - seconds(0) : 0.01);
+  const int delay = 8;  // [1/100 s] per frame
+  const double slowed = delay / 100.0 / frame_s;
+  std::ostringstream anim;
+  anim << "# Made by trebuchet-verify shot --plot; run with gnuplot in this folder.\n"
+       << "set encoding utf8\nset terminal gif animate delay " << delay << " size 800,600 font 'sans,11'\nset output 'shot.gif'\nset size ratio -1\n"
+       << "set xrange [" << num(-engine.L1 - engine.L4 - 1) << ":" << num(std::max(engine.L1 + engine.L4, engine.L2 + engine.L3) + 1) << "]\n"
+       << "set yrange [-0.5:" << num(H + engine.L1 + engine.L4 + 0.5) << "]\nset xlabel 'x toward the target [m]'\nset ylabel 'height [m]'\n";
+  for (std::size_t i = 0; i < trace.size(); i += stride) {
+    const bool on = trace[i].phase != Phase::released;
+    anim << "unset arrow\nunset label\nunset object\n" << engine_commands(engine, trace[i].snapshot, on, false)
+         << "set title 't = " << format_significant(seconds(i), 3) << " s  (" << (on ? trace[i].phase == Phase::trough ? "phase I" : "phase II" : "released")
+         << ", slowed " << format_significant(slowed, 2) << " times)' noenhanced\nplot 0 lc rgb '#6b8e23' lw 2 notitle\n";
+  }
+  files.push_back({"animation.gp", anim.str()});
+
+  // 7. One page that gathers them.
+  std::ostringstream html;
+  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>trebuchet shot</title>\n"
+       << "<style>body{font-family:sans-serif;max-width:1150px;margin:auto;padding:1em}img{max-width:100%}"
+          "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 8px;text-align:right}</style></head><body>\n"
+       << "<h1>One shot of a swinging-counterweight trebuchet</h1>\n"
+       << "<p>Made by <code>trebuchet-verify shot --plot</code>: the model of Horsdal, appendix A, in vacuum, released where "
+          "the chosen criterion peaks (<code>--quality</code>: the quality Q unless asked otherwise).</p>\n<table><tr><th>engine</th><th></th><th>shot</th><th></th></tr>\n";
+  auto four = [](double x) { return format_significant(x, 4); };
+  const std::pair<std::string, std::string> left[] = {{"L1 (long arm)", four(engine.L1) + " m"}, {"L2 (short arm)", four(engine.L2) + " m"},
+                                                      {"L3 (counterweight arm)", four(engine.L3) + " m"}, {"L4 (sling)", four(engine.L4) + " m"},
+                                                      {"H (pivot height)", four(H) + " m"}, {"M (counterweight)", four(engine.M) + " kg"},
+                                                      {"m (projectile)", four(engine.m) + " kg"}, {"mb (beam)", four(engine.mb) + " kg"}};
+  const std::pair<std::string, std::string> right[] = {{"range R", format_significant(v.capacity.R, 4) + " m"},
+                                                       {"energy at target T", format_significant(v.capacity.T / 1000, 4) + " kJ"},
+                                                       {"efficiency eps", format_significant(100 * v.eps, 3) + " %"},
+                                                       {"quality Q", format_significant(100 * v.Q, 3) + " %"},
+                                                       {"release speed v", format_significant(v.v, 3) + " m/s"},
+                                                       {"release time", format_significant(v.t_release, 3) + " s"},
+                                                       {"largest pivot force F_R", format_significant(v.FR_Mg * Mg_kN, 3) + " kN"},
+                                                       {"target level", num(target_level) + " m"}};
+  for (int k = 0; k < 8; ++k)
+    html << "<tr><td>" << left[k].first << "</td><td>" << left[k].second << "</td><td>" << right[k].first << "</td><td>" << right[k].second << "</td></tr>\n";
+  html << "</table>\n";
+  const std::pair<const char*, const char*> figures[] = {
+      {"engine.svg", "The engine drawn to scale at rest, at lift-off, at the largest pivot force and at the release."},
+      {"shot.gif", "The shot, slowed down."},
+      {"paths.svg", "The paths of the counterweight, the beam's tip and the projectile, then the flight to the target."},
+      {"forces.svg", "The forces against time, in kN and as multiples of M·g."},
+      {"energy.svg", "Where the energy goes."},
+      {"release.svg", "Why the release is where it is."}};
+  for (const auto& [file, caption] : figures) html << "<figure><img src=\"" << file << "\" alt=\"" << caption << "\"><figcaption>" << caption << "</figcaption></figure>\n";
+  html << "<p>The data: <a href=\"shot.csv\">shot.csv</a> (every sample), <a href=\"release.csv\">release.csv</a>, "
+          "<a href=\"flight.csv\">flight.csv</a>.</p>\n</body></html>\n";
+  files.push_back({"index.html", html.str()});
+  return files;
+}
+
+std::vector<PictureFile> histogram_pictures(const MonteCarloSummary& summary, const std::string& title) {
+  std::ostringstream data;
+  data << "# R [m], T [kJ] of each sample that worked\n";
+  for (const auto& v : summary.values) data << format_significant(v[0], 8) << " " << format_significant(v[1] / 1e3, 8) << "\n";
+  std::ostringstream gp;
+  const int bins = 40;
+  auto panel = [&](int column, const char* label, double scale, std::size_t index) {
+    const auto& p = summary.percentiles[index];
+    const double lo = p[0] / scale, hi = p[2] / scale, median = p[1] / scale;
+    // Bins over the central 90 % widened by half on each side; the rest is drawn at the edges.
+    const double from = lo - (hi - lo) / 2, to = hi + (hi - lo) / 2, width = std::max((to - from) / bins, 1e-12);
+    gp << "set xlabel '" << label << "'\nset xrange [" << from << ":" << to << "]\n"
+       << "set arrow 1 from " << lo << ", graph 0 to " << lo << ", graph 1 nohead dt 2 lc rgb '#555555'\n"
+       << "set arrow 2 from " << median << ", graph 0 to " << median << ", graph 1 nohead lw 2 lc rgb '#b22222'\n"
+       << "set arrow 3 from " << hi << ", graph 0 to " << hi << ", graph 1 nohead dt 2 lc rgb '#555555'\n"
+       << "set label 1 '5 %' at " << lo << ", graph 1.03 center\nset label 2 '50 %' at " << median << ", graph 1.03 center\n"
+       << "set label 3 '95 %' at " << hi << ", graph 1.03 center\n"
+       << "bin(x) = " << from << " + " << width << " * (floor((x - " << from << ") / " << width << ") + 0.5)\n"
+       << "clamp(x) = x < " << from << " ? " << from + width / 2 << " : (x > " << to << " ? " << to - width / 2 << " : x)\n"
+       << "plot 'histogram.dat' using (bin(clamp($" << column << "))):(1) smooth frequency with boxes fs solid 0.5 lc rgb '#4682b4' notitle\n";
+  };
+  gp << "set terminal svg size 1100,450 dynamic font 'sans,12'\nset output 'histogram.svg'\n"
+     << "set multiplot layout 1,2 title \"" << title << "\\n" << summary.values.size() << " of " << summary.samples
+     << " samples worked; dashed: 5 and 95 %, red: the median\"\n"
+     << "set ylabel 'samples'\nset yrange [0:*]\nset tmargin 5\nset boxwidth 1 relative\nset grid ytics\n";
+  panel(1, "range R [m]", 1, 0);
+  panel(2, "energy at the target T [kJ]", 1e3, 1);
+  gp << "unset multiplot\n";
+  return {{"histogram.dat", data.str()}, {"histogram.gp", gp.str()}};
+}
+
+}  // namespace trebuchet

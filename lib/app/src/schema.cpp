@@ -1,0 +1,372 @@
+#include "trebuchet/app/schema.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "trebuchet/app/csv.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/app/names.hpp"
+#include "trebuchet/app/units.hpp"
+
+namespace trebuchet {
+namespace {
+
+// A number in SI, or a string with a unit suffix.
+std::optional<double> read_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension,
+                                 const std::string& where) {
+  if (!object.contains(key) || object[key].is_null()) return std::nullopt;
+  const nlohmann::json& value = object[key];
+  const std::string name = engine_key_name(where, key);
+  if (value.is_number()) {
+    const double number = value.get<double>();
+    if (!std::isfinite(number)) throw Error(ErrorKind::bad_number, name + ": " + value.dump() + " is not a finite number");
+    return number;
+  }
+  if (value.is_string()) return parse_value(value.get<std::string>(), dimension, name);
+  throw Error(ErrorKind::bad_number, name + ": " + value.dump() + " is neither a number nor a value with a unit like \"6.13m\"");
+}
+
+double require_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension,
+                     const std::string& where, const std::string& hint) {
+  const auto value = read_value(object, key, dimension, where);
+  if (!value)
+    throw Error(ErrorKind::usage, (where.empty() ? "--" + key + " is missing" : where + ": key \"" + key + "\" is missing") + "; give " + hint);
+  return *value;
+}
+
+// A written number must be finite: JSON has no inf or nan, and neither has a spreadsheet. The
+// calculator rejects extreme inputs before this; an engine read back is checked here once more.
+void require_finite(const std::vector<Field>& fields) {
+  for (const Field& field : fields)
+    if (!std::isfinite(field.value))
+      throw Error(ErrorKind::bad_number, std::string("the engine's ") + field.key +
+                                             " is beyond the range of numbers (about 1e-308 to 1e308); give values of ordinary size");
+}
+
+std::vector<Field> design_fields(const OptimalEngine& d) {
+  std::vector<Field> fields = {{"R", d.capacity.R, "m"}, {"T", d.capacity.T, "J"}, {"X", d.coordinates.X}, {"Y", d.coordinates.Y}};
+  for (const Field& field : engine_fields(d.engine)) fields.push_back(field);
+  fields.push_back({"amplification", d.amplification});
+  return fields;
+}
+
+
+}  // namespace
+
+std::vector<Field> engine_fields(const Engine& e) {
+  const ScaledDesign s = scaled_design(e);
+  return {{"theta_i_deg", e.theta_i_deg},
+          {"F", s.F},
+          {"beta2", e.material.beta2},
+          {"L1", e.L1, "m"},
+          {"L2", e.L2, "m"},
+          {"L3", e.L3, "m"},
+          {"L4", e.L4, "m"},
+          {"D", e.D, "m"},
+          {"M", e.M, "kg"},
+          {"m", e.m, "kg"},
+          {"mb", e.mb, "kg"},
+          {"Lb", beam_length(e), "m"},
+          {"H", pivot_height(e), "m"},
+          {"l", s.l},
+          {"l4", s.l4},
+          {"L", e.L3 / e.L2},
+          {"mu", s.mu},
+          {"mu_b", s.mu_b},
+          {"K", s.K()},
+          {"DeltaU", potential_energy_drop(e), "J"},
+          {"youngs_modulus", e.material.youngs_modulus, "Pa"},
+          {"wood_density", e.material.wood_density, "kg_m3"},
+          {"g", e.material.g, "m_s2"}};
+}
+
+void write_engine(nlohmann::ordered_json& out, const Engine& engine) {
+  const std::vector<Field> fields = engine_fields(engine);
+  require_finite(fields);
+  for (const Field& field : fields) out[field.key] = field.value;
+  if (engine.psi_i_deg != 0) out["psi_i_deg"] = engine.psi_i_deg;  // only a propped engine carries it
+}
+
+EngineRecord read_engine(const nlohmann::json& object, const std::string& where) {
+  if (!object.is_object())
+    throw Error(ErrorKind::usage, (where.empty() ? std::string("input") : where) + ": expected a JSON object with keys L1, L2, L3 (or F), L4, M, m, mb, theta_i_deg");
+  EngineRecord in;
+  Engine& e = in.engine;
+  e.L1 = require_value(object, "L1", UnitDimension::length, where, "the long beam section, e.g. \"L1\": \"6.13m\"");
+  e.L2 = require_value(object, "L2", UnitDimension::length, where, "the short beam section, e.g. \"L2\": \"1.08m\"");
+  e.L4 = require_value(object, "L4", UnitDimension::length, where, "the sling length, e.g. \"L4\": \"5.80m\"");
+  e.M = require_value(object, "M", UnitDimension::mass, where, "the counterweight mass, e.g. \"M\": \"14.3t\"");
+  e.m = require_value(object, "m", UnitDimension::mass, where, "the projectile mass, e.g. \"m\": \"100kg\"");
+  e.mb = require_value(object, "mb", UnitDimension::mass, where, "the beam mass, e.g. \"mb\": \"660kg\"");
+  e.theta_i_deg = read_value(object, "theta_i_deg", UnitDimension::angle, where).value_or(standard_theta_i_deg);
+  e.psi_i_deg = read_value(object, "psi_i_deg", UnitDimension::angle, where).value_or(0);
+  e.D = read_value(object, "D", UnitDimension::length, where).value_or(0);
+  if (const auto L3 = read_value(object, "L3", UnitDimension::length, where)) {
+    e.L3 = *L3;
+  } else if (const auto F = read_value(object, "F", UnitDimension::dimensionless, where)) {
+    if (!(*F > 0))
+      throw Error(ErrorKind::bad_number, engine_key_name(where, "F") + " = " + format_significant(*F, 6) +
+                                             ": the counterweight arm fraction (L2 + L3)/H must be positive; the paper's are 1, 2/3 and 1/2");
+    e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, *F);
+    if (e.theta_i_deg > 0 && e.theta_i_deg < 90 && e.L1 > 0 && e.L2 > 0 && !(e.L3 > 0))
+      throw Error(ErrorKind::bad_number, (where.empty() ? std::string("flags") : where) + ": with F = " + format_significant(*F, 4) +
+                                             " and theta_i = " + format_significant(e.theta_i_deg, 4) + " deg, L2 + L3 = F L1 cos(theta_i) = " +
+                                             format_significant(*F * pivot_height(e), 4) + " m is not longer than L2 = " + format_significant(e.L2, 4) +
+                                             " m: no room for the counterweight arm; lower theta_i, raise F or lengthen L1");
+  } else {
+    throw Error(ErrorKind::usage, (where.empty() ? std::string("flags") : where) +
+                                      ": give the counterweight arm L3 in metres, or the fraction F = (L2 + L3)/H, e.g. F = 2/3");
+  }
+  Material& material = e.material;
+  material.beta2 = read_value(object, "beta2", UnitDimension::dimensionless, where).value_or(material.beta2);
+  material.youngs_modulus = read_value(object, "youngs_modulus", UnitDimension::pressure, where).value_or(material.youngs_modulus);
+  material.wood_density = read_value(object, "wood_density", UnitDimension::density, where).value_or(material.wood_density);
+  material.g = read_value(object, "g", UnitDimension::acceleration, where).value_or(material.g);
+  check_engine(e, where);
+  const auto R = read_value(object, "R", UnitDimension::length, where);
+  const auto T = read_value(object, "T", UnitDimension::energy, where);
+  if (R.has_value() != T.has_value())
+    throw Error(ErrorKind::usage, (where.empty() ? std::string("flags") : where) + ": a capacity needs both R and T; give both or neither");
+  if (R && !(*R > 0 && *T > 0))
+    throw Error(ErrorKind::bad_number, (where.empty() ? std::string("flags") : where) + ": R and T must be positive");
+  if (R) in.capacity = Capacity{*R, *T, 0};
+  return in;
+}
+
+DesignRows read_design_rows(std::istream& input, const std::string& source) {
+  const std::vector<std::string_view> engine_keys = {"L1", "L2", "L3", "F", "L4", "M", "m", "mb", "D", "theta_i_deg", "theta",
+                                                      "beta2", "youngs_modulus", "wood_density", "g", "R", "T"};
+  const std::vector<std::string_view> dropped = {"X", "Y", "Lb", "H", "l", "l4", "L", "mu", "mu_b", "K", "DeltaU", "amplification",
+                                                 "branch", "warnings", "air"};
+  CsvReader reader(input, source);
+  struct Column {
+    enum { engine, dropped, passed, error } role;
+    ColumnName name;
+  };
+  std::vector<Column> columns;
+  DesignRows out;
+  for (const std::string& header : reader.header()) {
+    if (const auto name = split_column_name(header, engine_keys)) {
+      columns.push_back({Column::engine, {name->key == "theta" ? "theta_i_deg" : name->key, name->unit}});
+    } else if (split_column_name(header, dropped)) {
+      columns.push_back({Column::dropped, {header, ""}});
+    } else if (header == "error") {
+      columns.push_back({Column::error, {header, ""}});
+    } else {
+      columns.push_back({Column::passed, {header, ""}});
+      out.passed_columns.push_back(header);
+    }
+  }
+  // A column every design needs is a fault of the file, not of each row.
+  auto has = [&](const char* key) {
+    return std::any_of(columns.begin(), columns.end(), [&](const Column& c) { return c.role == Column::engine && c.name.key == key; });
+  };
+  std::string missing;
+  for (const char* key : {"L1", "L2", "L4", "M", "m", "mb"})
+    if (!has(key)) missing += (missing.empty() ? "" : ", ") + std::string(key);
+  if (!has("L3") && !has("F")) missing += (missing.empty() ? "" : ", ") + std::string("L3 or F");
+  if (!missing.empty())
+    throw Error(ErrorKind::usage, source + " is neither JSON nor CSV of designs: its header lacks " + missing +
+                                      "; give a design object, an array of them, or CSV such as trebuchet-calc --batch writes");
+  while (true) {
+    DesignRows::Row row;
+    row.passed.assign(out.passed_columns.size(), "");
+    CsvRow cells;
+    try {
+      if (!reader.next(cells)) break;
+      row.line = cells.line;
+      row.design = nlohmann::json::object();
+      // The pass-through cells first, so that a bad value leaves them in the row.
+      for (std::size_t k = 0, p = 0; k < columns.size(); ++k) {
+        if (columns[k].role == Column::passed) row.passed[p++] = cells.cells[k];
+        if (columns[k].role == Column::error) row.error = cells.cells[k];
+      }
+      for (std::size_t k = 0; k < columns.size(); ++k)
+        if (columns[k].role == Column::engine && !cells.cells[k].empty())
+          row.design[columns[k].name.key] = cell_value(cells.cells[k], columns[k].name.unit, reader.header()[k]);
+    } catch (const Error& e) {
+      row.line = cells.line;
+      row.error = e.what();
+    }
+    out.rows.push_back(std::move(row));
+  }
+  return out;
+}
+
+nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings& settings) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  if (settings.air) {
+    const Air& air = *settings.air;
+    out["air"] = {{"density", air.density},
+                  {"drag_coefficient", air.drag_coefficient ? nlohmann::ordered_json(*air.drag_coefficient) : nlohmann::ordered_json("Cd(Re)")},
+                  {"projectile_density", air.projectile_density},
+                  {"projectile_diameter", sphere_diameter(engine.m, air.projectile_density)},
+                  {"wind", air.wind}};
+  } else {
+    out["air"] = "vacuum";
+  }
+  out["range_from"] = settings.range_from_release ? "release" : "pivot";
+  out["g"] = engine.material.g;
+  out["theta_i_deg"] = engine.theta_i_deg;
+  out["F"] = arm_fraction(engine);
+  out["release"] = release_name(settings.criterion.release);
+  out["n"] = settings.criterion.n;
+  out["target_level"] = settings.target_level;
+  return out;
+}
+
+nlohmann::ordered_json design_json(const OptimalEngine& design) {
+  const std::vector<Field> fields = design_fields(design);
+  require_finite(fields);
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const Field& field : fields) out[field.key] = field.value;
+  out["branch"] = branch_name(design.branch);
+  out["air"] = "vacuum";  // R and T: the paper's, in vacuum
+  if (design.scaled_from)
+    out["scaled_from"] = {{"factor", design.scaled_from->factor}, {"R", design.scaled_from->full_size.R}, {"T", design.scaled_from->full_size.T}};
+  if (design.branch_steps) {
+    nlohmann::ordered_json steps = nlohmann::ordered_json::object();
+    for (Param param : all_params) steps[std::string(param_name(param))] = (*design.branch_steps)[index(param)];
+    out["branch_steps"] = steps;
+  }
+  out["warnings"] = design.warnings;
+  return out;
+}
+
+std::string csv_column(const Field& field) { return *field.unit ? std::string(field.key) + "_" + field.unit : field.key; }
+
+std::vector<std::string> design_csv_header() {
+  std::vector<std::string> header;
+  for (const Field& field : design_fields(OptimalEngine{})) header.push_back(csv_column(field));
+  header.insert(header.end(), {"branch", "warnings", "air"});
+  return header;
+}
+
+std::vector<std::string> design_csv_row(const OptimalEngine& design, int digits) {
+  const std::vector<Field> fields = design_fields(design);
+  require_finite(fields);
+  std::vector<std::string> row;
+  for (const Field& field : fields) row.push_back(csv_number(field.value, digits));
+  row.insert(row.end(), {std::string(branch_name(design.branch)), join(design.warnings, "; "), "vacuum"});
+  return row;
+}
+
+std::string csv_line(const std::vector<std::string>& cells) {
+  std::string line;
+  for (std::size_t k = 0; k < cells.size(); ++k) line += (k ? "," : "") + csv_cell(cells[k]);
+  return line + "\n";
+}
+
+CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance) {
+  CapacityCheck c;
+  c.predicted = predicted, c.tolerance = tolerance;
+  c.deviation_R = v.capacity.R / predicted.R - 1;
+  c.deviation_T = v.capacity.T / predicted.T - 1;
+  c.pass = std::abs(c.deviation_R) <= tolerance && std::abs(c.deviation_T) <= tolerance;
+  return c;
+}
+
+namespace {
+
+// The figures of a shot, in the order of the JSON and CSV records. Throws Error(numerical) for
+// one that is not finite.
+std::vector<Field> verification_fields(const Verification& v) {
+  std::vector<Field> fields = {
+      {"R", v.capacity.R, "m"}, {"T", v.capacity.T, "J"}, {"R_vacuum", v.R_vacuum, "m"}, {"eps", v.eps}, {"Q", v.Q}, {"force_factor", v.force_factor},
+      {"v", v.v, "m_s"}, {"h", v.h, "m"}, {"x", v.x, "m"}, {"A_deg", v.A_deg}, {"t_release", v.t_release, "s"},
+      {"t_liftoff", v.t_liftoff, "s"}, {"FS_perp_mg", v.FS_perp_mg}, {"FR_Mg", v.FR_Mg}, {"dFRh_Mg", v.dFRh_Mg},
+      {"energy_drift", v.energy_drift}};
+  for (const Field& field : fields)
+    if (!std::isfinite(field.value))
+      throw Error(ErrorKind::numerical, std::string("the result ") + field.key + " is not finite; tighten --rtol");
+  return fields;
+}
+
+// The check against a predicted capacity, as CSV fields (empty when there is none).
+std::vector<Field> check_fields(const std::optional<CapacityCheck>& check) {
+  const CapacityCheck c = check.value_or(CapacityCheck{});
+  return {{"predicted_R", c.predicted.R, "m"}, {"predicted_T", c.predicted.T, "J"}, {"deviation_R", c.deviation_R}, {"deviation_T", c.deviation_T}};
+}
+
+// The forces in kN beside their multiples of m g and M g, so that "3.0 Mg" is not read as megagrams.
+std::vector<Field> force_fields(const Engine& engine, const Verification& v) {
+  const double mg_kN = engine.m * engine.material.g / 1e3, Mg_kN = engine.M * engine.material.g / 1e3;
+  return {{"FS_perp", v.FS_perp_mg * mg_kN, "kN"}, {"FR", v.FR_Mg * Mg_kN, "kN"}, {"dFRh", v.dFRh_Mg * Mg_kN, "kN"}};
+}
+
+}  // namespace
+
+std::vector<std::string> verification_csv_header() {
+  std::vector<std::string> header;
+  const Verification v{};
+  for (const auto& fields : {engine_fields(Engine{}), verification_fields(v), force_fields(Engine{}, v), check_fields(std::nullopt)})
+    for (const Field& field : fields) header.push_back(csv_column(field));
+  header.insert(header.end(), {"pass", "air", "release", "n", "target_level_m", "warnings"});
+  return header;
+}
+
+std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSettings& settings, const Verification& v,
+                                              const std::optional<CapacityCheck>& check, int digits) {
+  std::vector<Field> engine_part = engine_fields(engine);
+  require_finite(engine_part);
+  std::vector<std::string> row;
+  for (const auto& fields : {engine_part, verification_fields(v), force_fields(engine, v)})
+    for (const Field& field : fields) row.push_back(csv_number(field.value, digits));
+  for (const Field& field : check_fields(check)) row.push_back(check ? csv_number(field.value, digits) : "");
+  const nlohmann::ordered_json assumed = assumptions_json(engine, settings);
+  const std::string air = settings.air ? describe_air(*settings.air, engine.m) : "vacuum";
+  row.insert(row.end(), {check ? (check->pass ? "yes" : "no") : "", air, assumed["release"].get<std::string>(),
+                         csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), join(v.warnings, "; ")});
+  return row;
+}
+
+nlohmann::ordered_json verification_json(const Verification& v, const std::optional<CapacityCheck>& check) {
+  nlohmann::ordered_json out;
+  for (const Field& field : verification_fields(v)) out[field.key] = field.value;
+  out["warnings"] = v.warnings;
+  if (check) {
+    out["predicted"] = {{"R", check->predicted.R}, {"T", check->predicted.T}};
+    out["deviation"] = {{"R", check->deviation_R}, {"T", check->deviation_T}};
+    out["tolerance"] = check->tolerance;
+    out["pass"] = check->pass;
+  }
+  return out;
+}
+
+void require_finite_json(const nlohmann::ordered_json& json, const std::string& what) {
+  if (json.is_number_float() && !std::isfinite(json.get<double>()))
+    throw Error(ErrorKind::data_file, what + " holds a number that is not finite; nothing was written");
+  if (json.is_structured())
+    for (auto it = json.begin(); it != json.end(); ++it)
+      require_finite_json(*it, what + (json.is_object() ? "." + it.key() : "[" + std::to_string(std::distance(json.begin(), it)) + "]"));
+}
+
+nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s) {
+  nlohmann::ordered_json out;
+  write_engine(out, optimum.fit.engine);
+  out["start"] = optimum.start;
+  out["simulations"] = optimum.simulations;
+  out["iterations"] = optimum.iterations;
+  out["wall_time_s"] = wall_time_s;
+  const nlohmann::ordered_json shot = verification_json(optimum.fit.verification);
+  for (const auto& [key, value] : shot.items()) out[key] = value;
+  return out;
+}
+
+nlohmann::ordered_json completion_json(const Completion& c, const ShotSettings& settings) {
+  nlohmann::ordered_json out;
+  write_engine(out, c.engine);
+  out["attested"] = c.attested;
+  out["implied"] = c.implied;
+  out["chosen"] = c.chosen;
+  out["simulations"] = c.simulations;
+  const nlohmann::ordered_json shot = verification_json(c.verification);
+  for (const auto& [key, value] : shot.items()) out[key] = value;
+  out["assumptions"] = assumptions_json(c.engine, settings);
+  if (c.calculator) out["calculator"] = design_json(*c.calculator);
+  else out["calculator_note"] = c.calculator_note;
+  return out;
+}
+
+}  // namespace trebuchet

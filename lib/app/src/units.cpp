@@ -1,0 +1,167 @@
+#include "trebuchet/app/units.hpp"
+
+#include <array>
+#include <charconv>
+#include <cmath>
+
+#include "trebuchet/error.hpp"
+
+namespace trebuchet {
+namespace {
+
+struct Unit {
+  std::string_view suffix;
+  UnitDimension dimension;
+  double to_si;  // multiply by this to get SI base units (degrees for angles)
+};
+
+constexpr std::array<Unit, 25> units = {{
+    {"m", UnitDimension::length, 1.0},
+    {"cm", UnitDimension::length, 1e-2},
+    {"mm", UnitDimension::length, 1e-3},
+    {"km", UnitDimension::length, 1e3},
+    {"kg", UnitDimension::mass, 1.0},
+    {"g", UnitDimension::mass, 1e-3},
+    {"t", UnitDimension::mass, 1e3},
+    {"J", UnitDimension::energy, 1.0},
+    {"kJ", UnitDimension::energy, 1e3},
+    {"MJ", UnitDimension::energy, 1e6},
+    {"deg", UnitDimension::angle, 1.0},
+    {"m/s2", UnitDimension::acceleration, 1.0},
+    {"m/s^2", UnitDimension::acceleration, 1.0},
+    {"Pa", UnitDimension::pressure, 1.0},
+    {"kPa", UnitDimension::pressure, 1e3},
+    {"MPa", UnitDimension::pressure, 1e6},
+    {"GPa", UnitDimension::pressure, 1e9},
+    {"kg/m3", UnitDimension::density, 1.0},
+    {"kg/m^3", UnitDimension::density, 1.0},
+    {"t/m3", UnitDimension::density, 1e3},
+    {"%", UnitDimension::dimensionless, 1e-2},
+    {"s", UnitDimension::time, 1.0},
+    {"ms", UnitDimension::time, 1e-3},
+    {"m/s", UnitDimension::speed, 1.0},
+    {"km/h", UnitDimension::speed, 1 / 3.6},
+}};
+
+// How messages speak of each dimension.
+struct DimensionText {
+  std::string_view word;     // "a length"
+  std::string_view bare;     // unit of a bare number: "metres"
+  std::string_view example;  // a valid value: "150m"
+};
+
+DimensionText dimension_text(UnitDimension dimension) {
+  switch (dimension) {
+    case UnitDimension::length: return {"a length", "metres", "150m"};
+    case UnitDimension::mass: return {"a mass", "kilograms", "50kg"};
+    case UnitDimension::energy: return {"an energy", "joules", "40kJ"};
+    case UnitDimension::dimensionless: return {"a pure number", "a plain number", "2/3"};
+    case UnitDimension::angle: return {"an angle", "degrees", "30deg"};
+    case UnitDimension::acceleration: return {"an acceleration", "m/s^2", "9.81m/s2"};
+    case UnitDimension::pressure: return {"a pressure", "pascals", "12GPa"};
+    case UnitDimension::density: return {"a density", "kg/m^3", "700kg/m3"};
+    case UnitDimension::time: return {"a time", "seconds", "5ms"};
+    case UnitDimension::speed: return {"a speed", "m/s", "5m/s"};
+  }
+  return {"?", "?", "?"};
+}
+
+std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
+
+// Parses the longest leading number of `text`; returns the number of characters used (0: none).
+// A number beyond the range of a double is reported as such, naming `what`.
+std::size_t parse_number_prefix(std::string_view text, double& value, const std::string& what) {
+  const char* first = text.data();
+  const char* last = first + text.size();
+  if (first != last && *first == '+') ++first;  // from_chars rejects a leading '+'
+  auto [end, ec] = std::from_chars(first, last, value, std::chars_format::general);
+  if (ec == std::errc::result_out_of_range)
+    throw Error(ErrorKind::bad_number, what + " is beyond the range of numbers (about 1e-308 to 1e308); give a value of ordinary size");
+  if (ec != std::errc()) return 0;
+  return static_cast<std::size_t>(end - text.data());
+}
+
+}  // namespace
+
+UnitDimension unit_dimension(Dimension dimension) {
+  switch (dimension) {
+    case Dimension::length: return UnitDimension::length;
+    case Dimension::mass: return UnitDimension::mass;
+    case Dimension::energy: return UnitDimension::energy;
+    case Dimension::dimensionless: return UnitDimension::dimensionless;
+  }
+  return UnitDimension::dimensionless;
+}
+
+std::string unit_list(UnitDimension dimension) {
+  std::string list;
+  for (const Unit& unit : units) {
+    if (unit.dimension != dimension) continue;
+    if (!list.empty()) list += ", ";
+    list += unit.suffix;
+  }
+  return list.empty() ? "no suffix" : list;
+}
+
+double parse_value(std::string_view text, UnitDimension dimension, std::string_view name) {
+  const std::string fix = "write a number with an optional unit, e.g. " + std::string(dimension_text(dimension).example);
+  const std::string what = std::string(name) + ": " + quoted(text);
+
+  double value = 0;
+  std::size_t used = parse_number_prefix(text, value, what);
+  if (used == 0) throw Error(ErrorKind::bad_number, what + " is not a number; " + fix);
+  std::string_view rest = text.substr(used);
+
+  if (!rest.empty() && rest.front() == '/') {  // a fraction a/b, e.g. 2/3 or 1/300
+    double denominator = 0;
+    std::size_t used_denominator = parse_number_prefix(rest.substr(1), denominator, what);
+    if (used_denominator == 0 || denominator == 0)
+      throw Error(ErrorKind::bad_number, what + " is not a valid fraction; " + fix);
+    value /= denominator;
+    rest = rest.substr(1 + used_denominator);
+  }
+  if (!std::isfinite(value))
+    throw Error(ErrorKind::bad_number, what + " is not a finite number; " + fix);
+
+  if (rest.empty()) return value;
+  // "150 m" as spreadsheets and people write it: blanks between the number and its unit.
+  if (const auto unit_start = rest.find_first_not_of(" \t"); unit_start != 0 && unit_start != std::string_view::npos) rest = rest.substr(unit_start);
+  for (const Unit& unit : units) {
+    if (unit.suffix != rest) continue;
+    if (unit.dimension != dimension)
+      throw Error(ErrorKind::unknown_unit, what + " is " + std::string(dimension_text(unit.dimension).word) + ", but " +
+                                               std::string(name) + " is " + std::string(dimension_text(dimension).word) +
+                                               "; use " + unit_list(dimension) + " or a bare number in " +
+                                               std::string(dimension_text(dimension).bare));
+    return value * unit.to_si;
+  }
+  throw Error(ErrorKind::unknown_unit, what + " has the unknown unit " + quoted(rest) + "; use " +
+                                           unit_list(dimension) + " or a bare number in " +
+                                           std::string(dimension_text(dimension).bare));
+}
+
+double parse_positive(std::string_view text, UnitDimension dimension, std::string_view name) {
+  double value = parse_value(text, dimension, name);
+  if (!(value > 0))
+    throw Error(ErrorKind::bad_number, std::string(name) + ": " + quoted(text) + " must be positive; give a value > 0");
+  return value;
+}
+
+std::optional<Spread> parse_spread(std::string_view text, UnitDimension dimension, std::string_view name) {
+  const std::string what = std::string(name) + ": '" + std::string(text) + "'";
+  if (const auto dots = text.find(".."); dots != std::string_view::npos) {
+    const double a = parse_value(text.substr(0, dots), dimension, name), b = parse_value(text.substr(dots + 2), dimension, name);
+    if (!(a < b)) throw Error(ErrorKind::bad_number, what + " is not a range from low to high; write it as low..high, e.g. 2.5t..3.5t");
+    return Spread{Spread::Kind::uniform, a, b};
+  }
+  for (std::string_view sign : {std::string_view("\u00b1"), std::string_view("+-")}) {
+    const auto at = text.find(sign);
+    if (at == std::string_view::npos) continue;
+    const double mean = parse_value(text.substr(0, at), dimension, name), deviation = parse_value(text.substr(at + sign.size()), dimension, name);
+    if (!(deviation >= 0)) throw Error(ErrorKind::bad_number, what + " has a negative deviation; write mean±deviation, e.g. 3.5m±0.2m");
+    return Spread{Spread::Kind::normal, mean, deviation};
+  }
+  return std::nullopt;
+}
+
+}  // namespace trebuchet

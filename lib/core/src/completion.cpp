@@ -1,0 +1,240 @@
+#include "trebuchet/completion.hpp"
+
+#include <cmath>
+
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/angles.hpp"
+#include "simplex.hpp"
+
+namespace trebuchet {
+namespace {
+
+// Two values of one quantity agree to this, relative: the 1e-9 to which attested values are kept.
+constexpr double agreement = 1e-9;
+
+// Starting shape of the search, near the paper's optima (tab:CPNC): l = L1/L2, l4 = L4/L1,
+// mu = m/M, and K = (l + 1)/mu_b (eq:kMkD).
+constexpr double start_l = 4.7, start_l4 = 0.87, start_mu = 0.016, start_K = 100;
+
+std::string value_text(double value, const char* unit) { return format_significant(value, 6) + " " + unit; }
+
+// One quantity known from several sources: they must agree.
+struct Known {
+  std::optional<double> value;
+  std::string source;  // e.g. "L1 = 8 m" or "Lb - L2 = 8.2 m"
+
+  void add(double v, const std::string& how) {
+    if (value && std::abs(v - *value) > agreement * std::abs(*value))
+      throw Error(ErrorKind::usage, "the attested values conflict: " + source + ", but " + how + "; give only one of them, or values that agree");
+    if (!value) value = v, source = how;
+  }
+};
+
+// The resolved subset: what is fixed, and what the search chooses.
+struct Plan {
+  double theta_i_deg = standard_theta_i_deg, F = standard_F;
+  std::optional<double> L1, L2, Lb, L4, M, m;
+  std::optional<double> l;  // attested beam ratio, when neither section is known
+  std::optional<double> mb, D;  // attested beam
+  Material material;
+};
+
+// The beam of an engine: mb attested; or from an attested D by eq:BeamMass; or D from the
+// allowed bending (eq:bend_L2, beta2 = M g L2^2/(3 E I), I = pi D^4/64) and then mb.
+void set_beam(Engine& e, const Plan& p) {
+  const double Lb = e.L1 + e.L2, rho = p.material.wood_density;
+  if (p.mb) {
+    e.mb = *p.mb;
+    e.D = p.D.value_or(std::sqrt(4 * e.mb / (rho * M_PI * Lb)));
+    return;
+  }
+  e.D = p.D ? *p.D : std::pow(64 * e.M * p.material.g * e.L2 * e.L2 / (3 * M_PI * p.material.youngs_modulus * p.material.beta2), 0.25);
+  e.mb = rho * M_PI / 4 * e.D * e.D * Lb;  // eq:BeamMass
+}
+
+// The engine at log coordinates x of the free quantities, in the order of start().
+Engine build(const Plan& p, const std::vector<double>& x) {
+  std::size_t k = 0;
+  auto next = [&] { return std::exp(x.at(k++)); };
+  Engine e;
+  e.theta_i_deg = p.theta_i_deg;
+  e.material = p.material;
+  if (p.L1 && p.L2) {
+    e.L1 = *p.L1, e.L2 = *p.L2;
+  } else if (p.L1) {
+    e.L1 = *p.L1, e.L2 = e.L1 / next();
+  } else if (p.L2) {
+    e.L2 = *p.L2, e.L1 = e.L2 * next();
+  } else if (p.Lb) {
+    const double l = next();
+    e.L1 = *p.Lb * l / (l + 1), e.L2 = *p.Lb / (l + 1);
+  } else {
+    e.L2 = next();
+    e.L1 = e.L2 * (p.l ? *p.l : next());
+  }
+  e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, p.F);
+  e.L4 = p.L4 ? *p.L4 : e.L1 * next();
+  e.M = p.M ? *p.M : next();
+  e.m = p.m ? *p.m : e.M * next();
+  set_beam(e, p);
+  return e;
+}
+
+// The start of the search in the coordinates of build(), and the names of what it chooses.
+std::vector<double> start(const Plan& p, std::vector<std::string>& chosen) {
+  std::vector<double> x;
+  double L2 = p.L2.value_or(0);
+  if (p.L1 && p.L2) {
+  } else if (p.L1) {
+    x.push_back(std::log(start_l)), chosen.push_back("L2"), L2 = *p.L1 / start_l;
+  } else if (p.L2) {
+    x.push_back(std::log(start_l)), chosen.push_back("L1");
+  } else if (p.Lb) {
+    x.push_back(std::log(start_l)), chosen.insert(chosen.end(), {"L1", "L2"}), L2 = *p.Lb / (start_l + 1);
+  } else {
+    // The size from the counterweight by eq:ExtraScalings, M = K^2 (k_M/beta2) L2^4, else 1 m.
+    L2 = p.M ? std::pow(*p.M * p.material.beta2 / (start_K * start_K * k_M(p.material)), 0.25) : 1.0;
+    x.push_back(std::log(L2)), chosen.insert(chosen.end(), {"L1", "L2"});
+    if (!p.l) x.push_back(std::log(start_l));
+  }
+  if (!p.L4) x.push_back(std::log(start_l4)), chosen.push_back("L4");
+  if (!p.M) {
+    const double M = p.m ? *p.m / start_mu : start_K * start_K * k_M(p.material) / p.material.beta2 * std::pow(L2, 4);
+    x.push_back(std::log(M)), chosen.push_back("M");
+  }
+  if (!p.m) x.push_back(std::log(start_mu)), chosen.push_back("m");
+  return x;
+}
+
+double objective_of(const Verification& v, const ReleaseCriterion& criterion) {
+  switch (criterion.release) {
+    case Release::range: return v.capacity.R;
+    case Release::efficiency: return v.eps;
+    case Release::quality: break;
+  }
+  return v.Q;
+}
+
+
+}  // namespace
+
+Completion complete_engine(const CompletionRequest& request) {
+  const Attested& a = request.attested;
+  Completion out;
+  // Each attested value, positive (mb may be 0; theta_i is checked below with its range).
+  for (const auto& [value, name] : {std::pair{a.Lb, "Lb"}, {a.L1, "L1"}, {a.L2, "L2"}, {a.H, "H"}, {a.L4, "L4"}, {a.M, "M"}, {a.m, "m"},
+                                    {a.mb, "mb"}, {a.D, "D"}, {a.l, "l"}, {a.theta_i_deg, "theta_i"}, {a.F, "F"}}) {
+    if (!value) continue;
+    const std::string key(name);
+    if (key == "mb" && !(*value >= 0))
+      throw Error(ErrorKind::bad_number, "--mb = " + format_significant(*value, 6) + " must not be negative");
+    if (key != "mb" && key != "theta_i" && !(*value > 0))
+      throw Error(ErrorKind::bad_number, "--" + key + " = " + format_significant(*value, 6) + " must be positive; give the attested value, or leave it out");
+    out.attested.push_back(key);
+  }
+
+  Plan p;
+  p.material = request.material;
+  p.L4 = a.L4, p.M = a.M, p.m = a.m, p.mb = a.mb, p.D = a.D, p.Lb = a.Lb;
+  // L1 from itself, or from Lb - L2, before H: with H it fixes theta_i, or H fixes L1.
+  Known L1, L2;
+  bool theta_from_H = false;
+  if (a.L1) L1.add(*a.L1, "L1 = " + value_text(*a.L1, "m"));
+  if (a.Lb && a.L2) {
+    if (!(*a.Lb > *a.L2)) throw Error(ErrorKind::usage, "the attested values conflict: Lb = " + value_text(*a.Lb, "m") + " is not longer than L2 = " + value_text(*a.L2, "m"));
+    L1.add(*a.Lb - *a.L2, "Lb - L2 = " + value_text(*a.Lb - *a.L2, "m"));
+  }
+  if (a.theta_i_deg) {
+    if (!(*a.theta_i_deg > 0 && *a.theta_i_deg < 90))
+      throw Error(ErrorKind::bad_number, "--theta = " + format_significant(*a.theta_i_deg, 6) + " must lie between 0 and 90 degrees");
+    p.theta_i_deg = *a.theta_i_deg;
+  } else if (a.H && L1.value) {
+    theta_from_H = true;
+    if (!(*a.H < *L1.value))
+      throw Error(ErrorKind::usage, "the attested values conflict: the pivot height H = " + value_text(*a.H, "m") + " is not below the long arm's length, " + L1.source);
+    p.theta_i_deg = degrees(std::acos(*a.H / *L1.value));
+    out.implied.push_back("theta_i (from H and L1)");
+  }
+  if (a.H) L1.add(*a.H / std::cos(radians(p.theta_i_deg)), "H / cos(theta_i) = " + value_text(*a.H / std::cos(radians(p.theta_i_deg)), "m") +
+                                                               (a.theta_i_deg ? "" : " with the standard theta_i = 30 deg"));
+  if (a.l && a.Lb) L1.add(*a.Lb * *a.l / (*a.l + 1), "Lb l/(l + 1) = " + value_text(*a.Lb * *a.l / (*a.l + 1), "m"));
+  if (a.L2) L2.add(*a.L2, "L2 = " + value_text(*a.L2, "m"));
+  if (a.l && L1.value) L2.add(*L1.value / *a.l, "L1/l = " + value_text(*L1.value / *a.l, "m"));
+  if (a.l && L2.value && !L1.value) L1.add(*L2.value * *a.l, "l L2 = " + value_text(*L2.value * *a.l, "m"));
+  if (a.Lb && L1.value) {
+    if (!(*a.Lb > *L1.value)) throw Error(ErrorKind::usage, "the attested values conflict: Lb = " + value_text(*a.Lb, "m") + " is not longer than " + L1.source);
+    L2.add(*a.Lb - *L1.value, "Lb - L1 = " + value_text(*a.Lb - *L1.value, "m") + " (L1 from " + L1.source + ")");
+  }
+  p.L1 = L1.value, p.L2 = L2.value, p.l = a.l;
+  if (p.L1 && !a.L1) out.implied.push_back("L1 (" + L1.source + ")");
+  if (p.L2 && !a.L2) out.implied.push_back("L2 (" + L2.source + ")");
+  if (!a.theta_i_deg && !theta_from_H) out.implied.push_back("theta_i = 30 deg (the paper's standard)");
+  p.F = a.F.value_or(standard_F);
+  if (!a.F) out.implied.push_back("F = 2/3 (the paper's standard)");
+  // The beam: eq:BeamMass ties D, mb and Lb with the wood's density.
+  if (a.mb && a.D && p.L1 && p.L2) {
+    const double from_D = p.material.wood_density * M_PI / 4 * *a.D * *a.D * (*p.L1 + *p.L2);
+    if (std::abs(from_D - *a.mb) > agreement * *a.mb)
+      throw Error(ErrorKind::usage, "the attested values conflict: mb = " + value_text(*a.mb, "kg") + ", but D = " + value_text(*a.D, "m") +
+                                        " gives mb = " + value_text(from_D, "kg") + " by eq:BeamMass with wood of " +
+                                        format_significant(p.material.wood_density, 4) + " kg/m3; drop one of them, or give --wood-density");
+  }
+  if (!a.mb) out.implied.push_back(a.D ? "mb (from D, eq:BeamMass)" : "D and mb (from beta2 = " + format_fraction(p.material.beta2) +
+                                                                           " and the wood, eq:bend_L2 and eq:BeamMass)");
+  // Q does not fix the size: without a length it grows as the engine shrinks, and without M or
+  // m as the counterweight grows against the beam.
+  if (!(a.Lb || a.L1 || a.L2 || a.H || a.L4) || !(a.M || a.m))
+    throw Error(ErrorKind::usage, "complete needs an attested length (Lb, L1, L2, H or L4) and the counterweight M or the stone m: "
+                                  "without them the best engine has no size, e.g. --Lb 9.5m --m 50kg");
+  const ReleaseCriterion& criterion = request.settings.criterion;
+  if (criterion.release == Release::range && (!a.M || !a.m))
+    throw Error(ErrorKind::usage, "the range grows without bound with a heavier counterweight or a lighter stone: give M and m "
+                                  "for --quality range, or maximise Q (the default)");
+
+  const std::vector<double> x0 = start(p, out.chosen);
+  double best = -1;
+  auto cost = [&](const std::vector<double>& x) {
+    ++out.simulations;
+    try {
+      const Engine e = build(p, x);
+      check_engine(e, "");
+      const Verification v = verify_engine(e, request.settings);
+      const double objective = objective_of(v, criterion);
+      if (objective > best) best = objective, out.engine = e, out.verification = v;
+      return -objective;
+    } catch (const Error&) {
+      return 0.0;  // no working engine here: worse than any that works
+    }
+  };
+  if (x0.empty()) {
+    const Engine e = build(p, x0);
+    check_engine(e, "");
+    out.engine = e, out.verification = verify_engine(e, request.settings), out.simulations = 1;
+  } else {
+    cost(x0);
+    minimize_simplex(cost, x0, 0.1, 1e-5, 600);
+    if (!(best > 0))
+      throw Error(ErrorKind::out_of_range, "no choice of " + join(out.chosen, ", ") +
+                                               " gives a working engine with these attested values; check them, or attest fewer");
+  }
+
+  // The calculator's optimum for the same capacity, in vacuum at the base's level (section 6).
+  ShotSettings paper;
+  paper.integrator = request.settings.integrator;
+  const Verification vacuum = verify_engine(out.engine, paper);
+  DesignRequest same;
+  same.first = {Quantity::R, vacuum.capacity.R};
+  same.second = {Quantity::T, vacuum.capacity.T};
+  same.theta_i_deg = out.engine.theta_i_deg;
+  same.F = p.F;
+  same.material = p.material;
+  try {
+    out.calculator = design_optimal_engine(builtin_scaling_table(), same);
+  } catch (const Error& e) {
+    out.calculator_note = e.what();
+  }
+  return out;
+}
+
+}  // namespace trebuchet

@@ -1,0 +1,152 @@
+#include "trebuchet/optimizer.hpp"
+
+#include <gsl/gsl_errno.h>
+
+#include <cmath>
+#include <memory>
+
+#include "gsl_errors.hpp"
+#include "trebuchet/calculator.hpp"
+#include "trebuchet/error.hpp"
+#include "simplex.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/angles.hpp"
+
+namespace trebuchet {
+namespace {
+
+struct Start {
+  std::string name;
+  ScaledDesign shape;
+};
+
+// The calculator's optimum for the capacity on each branch it has, as starting shapes.
+std::vector<Start> starts_for(const OptimizeRequest& r) {
+  std::vector<Start> starts;
+  for (ScaledDesign shape : r.starts) {
+    shape.theta_i_deg = r.theta_i_deg, shape.F = r.F;
+    starts.push_back({"given shape " + std::to_string(starts.size() + 1), shape});
+  }
+  if (!starts.empty()) return starts;
+  for (BranchChoice branch : {BranchChoice::lower, BranchChoice::upper, BranchChoice::automatic}) {
+    DesignRequest d;
+    d.first = {Quantity::R, r.capacity.R};
+    d.second = r.projectile_mass ? Given{Quantity::m, *r.projectile_mass} : Given{Quantity::T, r.capacity.T};
+    d.theta_i_deg = r.theta_i_deg;
+    d.F = r.F;
+    d.branch = branch;
+    d.extrapolate = true;
+    try {
+      const OptimalEngine design = design_optimal_engine(builtin_scaling_table(), d);
+      const std::string name = branch == BranchChoice::automatic ? "calculator" : branch == BranchChoice::lower ? "calculator, lower branch" : "calculator, upper branch";
+      const ScaledDesign shape = scaled_design(design.engine);
+      bool seen = false;
+      for (const Start& s : starts) seen = seen || (std::abs(s.shape.l / shape.l - 1) < 1e-9 && std::abs(s.shape.l4 / shape.l4 - 1) < 1e-9);
+      if (!seen) starts.push_back({name, shape});
+    } catch (const Error&) {
+      // no block or branch here: the other starts, or the generic one, remain
+    }
+    if (branch == BranchChoice::upper && starts.size() == 2) break;  // both branches found
+  }
+  if (starts.empty()) starts.push_back({"generic shape", {5.5, 0.9, 0.045, 0, r.theta_i_deg, r.F}});
+  // A shape has a counterweight arm only for l > 1/(F cos theta_i) (L > 0, eq:Design): a start
+  // without one is moved to half as long again.
+  const double l_min = 1 / (r.F * std::cos(radians(r.theta_i_deg)));
+  for (Start& s : starts) {
+    s.shape.theta_i_deg = r.theta_i_deg, s.shape.F = r.F;
+    if (!(s.shape.L() > 0)) s.shape.l = 1.5 * l_min;
+  }
+  return starts;
+}
+
+struct Search {
+  const OptimizeRequest* request = nullptr;
+  int simulations = 0;
+  double best = -1;
+  CapacityFit best_fit;
+  std::string last_failure;  // why the last shape that could not deliver the capacity failed
+
+  // Minus the quality of the shape at log coordinates x, its mu fitted to the capacity; a
+  // shape that cannot deliver it, or fails, scores 0.
+  double cost(const std::vector<double>& x, double theta, double F) {
+    // mu starts from the best fit so far: the simplex moves in small steps, so its mu is close.
+    const double warm_mu = best > 0 ? best_fit.design.mu : 0;
+    const ScaledDesign shape{std::exp(x[0]), std::exp(x[1]), std::exp(x[2]), warm_mu, theta, F};
+    try {
+      const CapacityFit fit = request->projectile_mass
+                                  ? fit_range_and_mass(shape, request->capacity.R, *request->projectile_mass, request->material, request->settings)
+                                  : fit_capacity(shape, request->capacity, request->material, request->settings);
+      simulations += fit.simulations;
+      const double q = objective_of(fit.verification);
+      if (q > best) best = q, best_fit = fit;
+      return -q;
+    } catch (const Error& e) {
+      simulations += 1;
+      last_failure = e.what();
+      return 0;
+    }
+  }
+
+  double objective_of(const Verification& v) const {
+    return request->settings.criterion.release == Release::efficiency ? v.eps : v.Q;
+  }
+};
+
+Optimum search_from(const OptimizeRequest& request, const Start& start) {
+  Search search;
+  search.request = &request;
+  const ScaledDesign fixed = start.shape;
+  Optimum out;
+  out.start = start.name;
+  out.start_design = start.shape;
+  // 5 % steps in each shape parameter, in (log l, log l4, log mu_b).
+  out.iterations = minimize_simplex([&](const std::vector<double>& x) { return search.cost(x, fixed.theta_i_deg, fixed.F); },
+                                    {std::log(start.shape.l), std::log(start.shape.l4), std::log(start.shape.mu_b)}, 0.05,
+                                    request.shape_tolerance, 400);
+  if (!(search.best > 0))
+    throw Error(ErrorKind::out_of_range, "no shape near the " + start.name + " start delivers " +
+                                             format_significant(request.capacity.R, 4) + " m with " +
+                                             (request.projectile_mass ? format_significant(*request.projectile_mass, 4) + " kg stones"
+                                                                      : format_significant(request.capacity.T / 1e3, 4) + " kJ") +
+                                             " (the last shape tried: " +
+                                             search.last_failure + "); try another capacity, theta_i or F");
+  out.fit = search.best_fit;
+  out.objective = search.best;
+  out.simulations = search.simulations;
+  return out;
+}
+
+}  // namespace
+
+std::vector<Optimum> optimize(const OptimizeRequest& request) {
+  use_gsl_return_codes();
+  // L3 = F L1 cos(theta_i) - L2 > 0 needs l > 1/(F cos theta_i); the paper's engines, formal
+  // ones of appendix B included, have l < 60.
+  const double l_min = 1 / (request.F * std::cos(radians(request.theta_i_deg)));
+  if (!(request.F > 0 && request.theta_i_deg > 0 && request.theta_i_deg < 90) || !(l_min < max_beam_ratio))
+    throw Error(ErrorKind::out_of_range, "theta_i = " + format_significant(request.theta_i_deg, 4) + " deg with F = " +
+                                             format_significant(request.F, 4) + " leaves room for the counterweight arm (L2 + L3 = F L1 cos(theta_i) > L2) "
+                                             "only for a beam ratio l = L1/L2 above " + format_significant(l_min, 3) +
+                                             ", beyond any engine of the paper (l < " + format_number(max_beam_ratio) +
+                                             "); lower theta_i or raise F (the paper's are 30 or 40 deg and 1, 2/3 or 1/2)");
+  std::vector<Optimum> optima;
+  std::string reasons;
+  for (const Start& start : starts_for(request)) {
+    try {
+      optima.push_back(search_from(request, start));
+    } catch (const Error& e) {
+      reasons += (reasons.empty() ? "" : "; ") + std::string(e.what());
+    }
+  }
+  if (optima.empty()) throw Error(ErrorKind::out_of_range, reasons);
+  return optima;
+}
+
+Optimum best_optimum(const std::vector<Optimum>& optima) {
+  const Optimum* best = &optima.front();
+  for (const Optimum& o : optima)
+    if (o.objective > best->objective) best = &o;
+  return *best;
+}
+
+}  // namespace trebuchet

@@ -1,0 +1,481 @@
+#include "trebuchet/shot.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "gsl_errors.hpp"
+#include "ode.hpp"
+#include "solve_1d.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/angles.hpp"
+
+namespace trebuchet {
+namespace {
+
+// A shot whose accepted state passes cos phi = 0.02 (phi > 88.9 deg) in the trough is
+// abandoned, before the step control loses accuracy at the singularity of eq:EOM_I_1.
+constexpr double abandon_trough_cos_phi = 2 * refuse_trough_cos_phi;
+
+// Where the model stops holding (issue 12): the sling pushes instead of pulling, or the
+// counterweight or the beam's tip passes below the engine's base. Each is a continuous function
+// of time, negative when the condition fails; the first time each turns negative is kept.
+constexpr int condition_count = 3;
+using Conditions = std::array<double, condition_count>;
+// A condition fails below -1e-9 (scaled: M g for the tension, L2 for heights), so that round-off
+// cannot raise it where it holds with equality: an F = 1 counterweight hanging straight down
+// touches the base's level.
+constexpr double condition_slack = 1e-9;
+Conditions conditions_of(const Snapshot& s) {
+  return {s.sling_tension + condition_slack, s.counterweight_height + condition_slack, s.tip_height + condition_slack};
+}
+using Onsets = std::array<std::optional<double>, condition_count>;
+
+// The vertex of the parabola through three points with the middle one highest: where it
+// peaks, and its value; the middle point when they are not concave.
+Point parabola_vertex(Point a, Point b, Point c) {
+  const double d0 = (b.f - a.f) / (b.x - a.x), d1 = (c.f - b.f) / (c.x - b.x);
+  const double curvature = (d1 - d0) / (c.x - a.x);  // half the second derivative
+  if (!(curvature < 0)) return b;
+  const double slope_mid = d0 + curvature * (b.x - a.x);  // derivative at b
+  return {b.x - slope_mid / (2 * curvature), b.f - slope_mid * slope_mid / (4 * curvature)};
+}
+
+// The samples of one phase at the integrator's step ends, with the running force extremes
+// refined on the continuous solution: where a force has a local maximum at a step end, the
+// true peak lies within the two neighbouring steps and is found there by Brent's method.
+class PhaseRecord {
+ public:
+  struct Sample : StepEnd {
+    ForceValues forces;
+    ForceExtremes extremes;  // over [0, t], refined peaks included
+  };
+  struct Peak {
+    double t;
+    ForceValues forces;
+  };
+
+  PhaseRecord(PhaseIntegrator& integrator, ForceExtremes before, Onsets& onsets)
+      : integrator_(integrator), before_(before), onsets_(onsets) {
+    samples_.reserve(128);  // a phase takes 20 to 70 steps at the defaults
+  }
+
+  void add(const StepEnd& end, const Snapshot& snap) {
+    const ForceValues forces = force_values(snap);
+    ForceExtremes extremes = samples_.empty() ? before_ : samples_.back().extremes;
+    extremes.add(forces);
+    samples_.push_back({end, forces, extremes});
+    if (samples_.size() >= 3) refine_peaks();
+    record_onsets(conditions_of(snap));
+  }
+
+  const std::vector<Sample>& samples() const { return samples_; }
+
+  // The state at `time` from the interpolant between the samples around it.
+  OdeVector y_at(double time) const {
+    const std::size_t base = base_of(time);
+    if (time <= samples_[base].t || base + 1 == samples_.size()) return y_exact_at(time);
+    return hermite(samples_[base], samples_[base + 1], time, integrator_.dimension());
+  }
+
+  // The state at `time`, integrated anew from the last sample at or before it.
+  OdeVector y_exact_at(double time) const {
+    const Sample& base = samples_[base_of(time)];
+    return integrator_.at(base.t, base.y, time);
+  }
+
+  // Where a running extreme of eq:F starts to grow inside [lo, hi]: the instant when its force,
+  // below the extreme at the sample before, crosses it (the root of force - extreme on the
+  // continuous solution). The slope of Q jumps there; between such onsets Q is smooth.
+  struct Onset {
+    double t;
+    ForceIndex force;
+  };
+  std::vector<Onset> growth_onsets(double lo, double hi) const {
+    std::vector<Onset> out;
+    for (std::size_t i = base_of(lo); i + 1 < samples_.size() && samples_[i].t < hi; ++i) {
+      const Sample &a = samples_[i], &b = samples_[i + 1];
+      for (int k = 0; k < force_count; ++k) {
+        const double extreme = a.extremes.max[k];
+        if (!(a.forces[k] < extreme && b.extremes.max[k] > extreme)) continue;
+        // The force passes the extreme by the next sample, or at a refined peak before it.
+        double t_above = b.t;
+        if (!(b.forces[k] > extreme))
+          for (const Peak& p : peaks_)
+            if (p.t > a.t && p.t < b.t && p.forces[k] > extreme) t_above = std::min(t_above, p.t);
+        const double t = find_root([&](double time) { return forces_at(time)[k] - extreme; }, a.t, t_above, 1e-14, 0);
+        if (t > lo && t < hi) out.push_back({t, static_cast<ForceIndex>(k)});
+      }
+    }
+    std::sort(out.begin(), out.end(), [](const Onset& x, const Onset& y) { return x.t < y.t; });
+    return out;
+  }
+
+  // The running extremes over [0, time], without the value at `time` itself.
+  ForceExtremes extremes_before(double time) const {
+    const std::size_t base = base_of(time);
+    ForceExtremes out = samples_[base].extremes;
+    for (const Peak& p : peaks_)
+      if (p.t > samples_[base].t && p.t <= time) out.add(p.forces);
+    return out;
+  }
+
+ private:
+  // The last sample at or before `time` (the first one for earlier times); samples are in time order.
+  std::size_t base_of(double time) const {
+    const auto after = std::upper_bound(samples_.begin() + 1, samples_.end(), time,
+                                        [](double value, const Sample& sample) { return value < sample.t; });
+    return static_cast<std::size_t>(after - samples_.begin()) - 1;
+  }
+
+  Snapshot snapshot_at(double time) const { return integrator_.dynamics().snapshot(integrator_.phase(), integrator_.state(y_at(time))); }
+
+  ForceValues forces_at(double time) const { return force_values(snapshot_at(time)); }
+
+  // A condition that turns negative between the last two samples fails at the root of its
+  // value on the interpolant between them; one negative at the first sample fails there.
+  void record_onsets(const Conditions& now) {
+    for (int k = 0; k < condition_count; ++k) {
+      if (onsets_[k] || !(now[k] < 0)) continue;
+      const double t = samples_.back().t;
+      if (samples_.size() == 1 || !(previous_[k] >= 0)) {
+        onsets_[k] = t;
+      } else {
+        const double t0 = samples_[samples_.size() - 2].t;
+        onsets_[k] = find_root([&](double time) { return conditions_of(snapshot_at(time))[k]; }, t0, t, 1e-12, 0);
+      }
+    }
+    previous_ = now;
+  }
+
+  // A force peaking at the middle one of the last three samples peaks between the outer two.
+  // A peak that stays well below the running maximum before it cannot change any later
+  // maximum and is skipped: the parabola through the three samples estimates it, and 1 %
+  // covers that estimate's error (1e-3 at worst on the random designs of tests/test_reference).
+  // The peak is the root of the force's slope, central difference with step 1e-6 (scaled time),
+  // found to 1e-8: its value is then exact to f'' 1e-16 / 2.
+  void refine_peaks() {
+    const std::size_t mid = samples_.size() - 2;
+    const Sample &a = samples_[mid - 1], &b = samples_[mid], &c = samples_[mid + 1];
+    for (int k = 0; k < force_count; ++k) {
+      const double fa = a.forces[k], fb = b.forces[k], fc = c.forces[k];
+      if (!(fb > fa && fb >= fc)) continue;
+      const Point estimate = parabola_vertex({a.t, fa}, {b.t, fb}, {c.t, fc});
+      if (estimate.f < 0.99 * a.extremes.max[k]) continue;
+      const double t_peak = peak_between([&](double time) { return forces_at(time)[k]; }, a.t, estimate.x, c.t, 1e-6, 1e-8);
+      Peak peak{t_peak, forces_at(t_peak)};
+      if (!(peak.forces[k] >= fb)) peak = {b.t, b.forces};  // the slope's root was no peak
+      peaks_.push_back(peak);
+      for (std::size_t s = mid - 1; s < samples_.size(); ++s)
+        if (samples_[s].t >= t_peak) samples_[s].extremes.add(peak.forces);
+    }
+  }
+
+  PhaseIntegrator& integrator_;
+  ForceExtremes before_;
+  Onsets& onsets_;
+  Conditions previous_{};
+  std::vector<Sample> samples_;
+  std::vector<Peak> peaks_;
+};
+
+// The objective is smooth between the onsets of growth of the running extremes, where its slope
+// jumps. On each smooth piece of [lo, hi] the slope is scanned at `scan` (sorted times) and the
+// piece's ends; wherever it falls through zero between two scan points, a maximum lies between
+// them, at the root. The best of these and of the ends (onsets included) is the release. The
+// slope is the four-point central difference with step 1e-5 (scaled time): truncation
+// O(step^4) moves the root by ~1e-20, round-off by ~1e-11, relative; a maximum within two steps
+// of an onset is taken at the onset, at most Q'' (2e-5)^2/2 below it. Checked against the
+// independent reference (tests/test_reference.cpp).
+struct Candidate {
+  double t;
+  double value;
+  std::optional<ForceIndex> at_onset;
+};
+template <class Objective>
+Candidate release_time(const Objective& objective, double lo, double hi, const std::vector<double>& scan,
+                       const std::vector<PhaseRecord::Onset>& onsets) {
+  constexpr double slope_step = 1e-5;
+  std::vector<double> ends{lo};
+  for (const auto& onset : onsets)
+    if (onset.t > lo && onset.t < hi) ends.push_back(onset.t);
+  ends.push_back(hi);
+  Candidate best{lo, objective(lo), std::nullopt};
+  auto consider = [&](double t) {
+    const double value = objective(t);
+    if (value > best.value) best = {t, value, std::nullopt};
+  };
+  // The slope, remembered at the scan points, where the root search evaluates it again.
+  std::vector<Point> slopes;
+  const auto slope = [&](double t) {
+    for (const Point& known : slopes)
+      if (known.x == t) return known.f;
+    const double value = 8 * (objective(t + slope_step) - objective(t - slope_step)) - (objective(t + 2 * slope_step) - objective(t - 2 * slope_step));
+    slopes.push_back({t, value});
+    return value;
+  };
+  for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
+    const double a = ends[i] + 2 * slope_step, b = ends[i + 1] - 2 * slope_step;
+    consider(ends[i + 1]);
+    if (!(a < b)) continue;
+    std::vector<double> points{a};
+    for (double t : scan)
+      if (t > a && t < b) points.push_back(t);
+    points.push_back(b);
+    double previous = slope(a);
+    for (std::size_t j = 1; j < points.size(); ++j) {
+      const double here = slope(points[j]);
+      if (previous > 0 && !(here > 0))
+        if (const auto root = root_between(slope, points[j - 1], points[j], 1e-11, 0)) consider(*root);
+      previous = here;
+    }
+  }
+  for (const auto& onset : onsets)
+    if (onset.t == best.t) best.at_onset = onset.force;
+  return best;
+}
+
+[[noreturn]] void fail(const std::string& reason) { throw Error(ErrorKind::numerical, reason); }
+
+// The motion of one phase over [t_begin, t_end] for the series: the step ends in it, or with
+// dt > 0 the continuous solution at every multiple of dt after t_begin (at 0 too) and t_end.
+void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, const PhaseRecord& record, double t_begin,
+                  double t_end, double dt) {
+  if (!trace) return;
+  auto add = [&](double t, const OdeVector& y) {
+    const State s = integrator.state(y);
+    trace->push_back({integrator.phase(), t, s, integrator.dynamics().snapshot(integrator.phase(), s)});
+  };
+  if (!(dt > 0)) {
+    for (const auto& sample : record.samples())
+      if (sample.t >= t_begin && sample.t <= t_end) add(sample.t, sample.y);
+    return;
+  }
+  for (double k = std::ceil(t_begin / dt); k * dt < t_end; ++k)
+    if (k * dt > t_begin || t_begin == 0) add(k * dt, record.y_at(k * dt));
+  add(t_end, record.y_at(t_end));
+}
+
+// Phase III for the series: beam and counterweight without the projectile (mu = 0), from the
+// release for as long again as the shot took, so that the ringing of appendix B shows; at the
+// step ends, or every dt > 0.
+void trace_released(const Dynamics& dynamics, const IntegratorSettings& settings, const State& release, double t_release,
+                    double dt, std::vector<TracePoint>& trace) {
+  PhaseIntegrator released(dynamics, Phase::released, settings);
+  OdeVector y = {release.theta, release.psi, release.theta_dot, release.psi_dot, 0, 0};
+  double t = t_release, h = 1e-3;
+  double k = std::floor(t_release / dt) + 1;  // the next multiple of dt, when dt > 0
+  for (long steps = 0; t < 2 * t_release && steps < settings.max_steps; ++steps) {
+    if (dt > 0) {
+      y = released.at(t, y, k * dt);
+      t = k++ * dt;
+    } else if (!released.step(t, y.data(), 2 * t_release, h)) {
+      fail("integrator failure in phase III; tighten --rtol");
+    }
+    const State s = released.state(y);
+    trace.push_back({Phase::released, t, s, dynamics.snapshot(Phase::released, s)});
+  }
+}
+
+// The range the release maximises under Release::range: in vacuum from the pivot to level 0
+// (the paper's), else through the criterion's drag, or Denny's, from the release point to where
+// the flight dips below the release height (section 6.3); 0 where the flight never comes down.
+double objective_range(const ReleasePoint& r, const ReleaseCriterion& criterion) {
+  if (!criterion.drag && !criterion.range_from_release) return r.range;
+  const double drop = criterion.range_from_release ? 0 : r.height;
+  double range = 0;
+  if (criterion.drag) {
+    const auto end = fly(r.position, r.velocity, drop, *criterion.drag, 1);
+    if (!end) return 0;
+    range = end->range;
+  } else {
+    range = vacuum_range(r.position, r.velocity, drop, 1);
+  }
+  return criterion.range_from_release ? range + r.position.x : range;
+}
+
+}  // namespace
+
+ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criterion, double t, const State& s,
+                           const Snapshot& snap, ForceExtremes extremes) {
+  extremes.add(force_values(snap));
+  ReleasePoint r;
+  r.t = t;
+  r.state = s;
+  r.position = snap.projectile;
+  r.velocity = snap.projectile_velocity;
+  r.height = e.l * std::cos(radians(e.theta_i_deg)) + r.position.y;
+  if (r.velocity.x < 0 && r.height >= 0) r.range = vacuum_range(r.position, r.velocity, r.height, 1);  // toward the target, level 0
+  r.energy_at_target = energy_at_target(e.mu, r.velocity, r.height);
+  r.efficiency = efficiency(r.energy_at_target, e.energy_drop());
+  r.extremes = extremes;
+  r.force_factor = force_factor(extremes, e.mu);
+  if (r.range > 0) {
+    r.quality = quality(r.range, e.l, e.mu, r.efficiency, r.force_factor, criterion.n);
+    switch (criterion.release) {
+      case Release::quality: r.objective = r.quality; break;
+      case Release::efficiency: r.objective = r.efficiency; break;
+      case Release::range: r.objective = objective_range(r, criterion); break;  // tab:Denny, "Present" row
+    }
+  }
+  return r;
+}
+
+ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
+                         std::vector<TracePoint>* trace, double trace_dt, std::vector<TracePoint>* unreleased) {
+  use_gsl_return_codes();
+  if (!(e.L() > 0))
+    fail("no room for the counterweight arm: L3/L2 = F l cos(theta_i) - 1 = " + format_significant(e.L(), 4) +
+         " <= 0 (eq:Design); raise F or l, or lower theta_i");
+  const Dynamics dynamics(e);
+  if (!(1 - e.mu_b * (e.l - 1) / 2 > 0))
+    fail("the beam cannot turn: mu_b (l - 1)/2 = " + format_significant(e.mu_b * (e.l - 1) / 2, 4) +
+         " >= 1, its long arm outweighs the counterweight (eq:DU); lighten the beam or shorten L1");
+  ShotResult result;
+  const double energy_scale = e.energy_drop();
+  double energy0 = 0;
+  auto track_energy = [&](const Snapshot& s) { result.energy_drift = std::max(result.energy_drift, std::abs(s.energy - energy0) / energy_scale); };
+  auto count_step = [&](const char* phase) {
+    if (++result.steps > settings.max_steps)
+      fail("step budget of " + std::to_string(settings.max_steps) + " steps exceeded in " + phase +
+           "; loosen --rtol or choose a higher-order --stepper");
+  };
+
+  // Phase I: from rest (eq:InitialConditions: phi_i = 0, and psi_i = 0 unless propped) until
+  // the trough's normal force vanishes.
+  PhaseIntegrator trough(dynamics, Phase::trough, settings);
+  Onsets onsets;
+  PhaseRecord phase1(trough, ForceExtremes{}, onsets);
+  OdeVector y = {dynamics.theta_i(), radians(e.psi_i_deg), 0, 0, 0, 0};
+  double t = 0, h = 1e-3;
+  Snapshot snap = dynamics.snapshot(Phase::trough, trough.state(y));
+  // A counterweight propped forward can pull the short arm the wrong way: the shot never starts.
+  if (!(snap.theta_ddot > 0))
+    fail("the beam starts to turn away from the throw (the counterweight, propped at psi_i = " + format_significant(e.psi_i_deg, 4) +
+         " deg, pulls the short arm backwards); prop it less, or back (psi_i < 0)");
+  energy0 = snap.energy;
+  phase1.add(trough.step_end(t, y, snap), snap);
+  while (true) {
+    if (!trough.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase I; tighten --rtol or choose another --stepper");
+    count_step("phase I");
+    if (std::cos(trough.state(y).phi) < abandon_trough_cos_phi)
+      fail("the sling stands vertical in the trough (phi -> 90 deg) before lift-off; lengthen the sling L4 or lighten the projectile m");
+    snap = dynamics.snapshot(Phase::trough, trough.state(y));
+    if (snap.normal_force <= 0) {
+      // Lift-off inside this step: the root of the normal force on the interpolant, then the
+      // state there integrated anew from the step start.
+      const StepEnd& before = phase1.samples().back();
+      const StepEnd after = trough.step_end(t, y, snap);
+      auto normal_at = [&](double time) { return dynamics.snapshot(Phase::trough, trough.state(hermite(before, after, time, 4))).normal_force; };
+      result.t_liftoff = find_root(normal_at, before.t, t, 1e-13, 0);
+      y = trough.at(before.t, before.y, result.t_liftoff);
+      t = result.t_liftoff;
+      snap = dynamics.snapshot(Phase::trough, trough.state(y));
+      phase1.add(trough.step_end(t, y, snap), snap);
+      track_energy(snap);
+      break;
+    }
+    phase1.add(trough.step_end(t, y, snap), snap);
+    track_energy(snap);
+    if (y[0] >= M_PI || t >= settings.max_time)
+      fail("the projectile never lifts off: the trough still carries it when the beam is upright; "
+           "change the sling length L4 or the masses");
+  }
+  record_trace(trace, trough, phase1, 0, t, trace_dt);
+
+  // Phase II from the located lift-off state.
+  const State lift = trough.state(y);
+  PhaseIntegrator lifted(dynamics, Phase::lifted, settings);
+  PhaseRecord phase2(lifted, phase1.samples().back().extremes, onsets);
+  y = {lift.theta, lift.psi, lift.phi, lift.theta_dot, lift.psi_dot, lift.phi_dot};
+  const Snapshot lift_snapshot = dynamics.snapshot(Phase::lifted, lift);
+  phase2.add(lifted.step_end(t, y, lift_snapshot), lift_snapshot);
+  auto point_from = [&](double time, const OdeVector& state) {
+    const State s = lifted.state(state);
+    return release_point(e, criterion, time, s, dynamics.snapshot(Phase::lifted, s), phase2.extremes_before(time));
+  };
+  auto point_at = [&](double time) { return point_from(time, phase2.y_at(time)); };
+  // The objective at every step end of phase II, in the order of the samples.
+  std::vector<double> sampled{point_at(t).objective};
+  double best_quality = sampled.front();
+  h = 1e-3;
+  while (true) {
+    if (!lifted.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase II; tighten --rtol or choose another --stepper");
+    count_step("phase II");
+    const State s = lifted.state(y);
+    snap = dynamics.snapshot(Phase::lifted, s);
+    track_energy(snap);
+    const double quality_here = release_point(e, criterion, t, s, snap, phase2.samples().back().extremes).objective;
+    phase2.add(lifted.step_end(t, y, snap), snap);
+    sampled.push_back(quality_here);
+    best_quality = std::max(best_quality, quality_here);
+    // Past the maximum: the objective has fallen to half of it, or the beam has turned over.
+    if ((best_quality > 0 && quality_here < 0.5 * best_quality) || s.theta > dynamics.theta_i() + 2 * M_PI || t >= settings.max_time) break;
+  }
+  const std::string no_forward_release = "no release sends the projectile forward: over phase II it never flies toward the target";
+  if (!(best_quality > 0)) fail(no_forward_release);
+  if (result.energy_drift > settings.max_energy_drift)
+    fail("energy drift " + format_significant(result.energy_drift, 3) + " of Delta U exceeds " +
+         format_significant(settings.max_energy_drift, 3) + "; tighten --rtol or choose another --stepper");
+
+  // The release search (docs/verifier.md, "Release"). The objective is smooth between the onsets
+  // of growth of the running extremes, so its maximum over phase II lies at an onset or at the
+  // maximum of a smooth piece. Every onset of phase II is located on the continuous solution. A
+  // smooth maximum lies within a step of a step end that is at least as high as both its
+  // neighbours, as long as no step holds both a minimum and a maximum of one smooth piece: the two
+  // steps beside each such step end are searched, each on its own (the slope is scanned at the
+  // step end between them). An onset higher than every candidate so far is searched too, within
+  // its step.
+  const auto& samples = phase2.samples();
+  const auto objective = [&](double time) { return point_at(time).objective; };
+  const std::size_t last = samples.size() - 1;
+  // The onsets of phase II; none is sought in a step whose ends both have the objective at 0,
+  // where the projectile would not fly forward.
+  std::vector<PhaseRecord::Onset> onsets_ii;
+  for (std::size_t j = 0; j < last; ++j)
+    if (sampled[j] > 0 || sampled[j + 1] > 0)
+      for (const auto& onset : phase2.growth_onsets(samples[j].t, samples[j + 1].t)) onsets_ii.push_back(onset);
+  Candidate found{samples.front().t, 0, std::nullopt};
+  auto search = [&](std::size_t first, std::size_t end) {
+    std::vector<double> scan;
+    for (std::size_t i = first + 1; i < end; ++i) scan.push_back(samples[i].t);
+    const Candidate c = release_time(objective, samples[first].t, samples[end].t, scan, onsets_ii);
+    if (c.value > found.value) found = c;
+  };
+  for (std::size_t i = 0; i <= last; ++i) {
+    const bool peak = (i == 0 || sampled[i] >= sampled[i - 1]) && (i == last || sampled[i] >= sampled[i + 1]);
+    if (peak && sampled[i] > 0) search(i > 0 ? i - 1 : 0, std::min(i + 1, last));
+  }
+  for (const auto& onset : onsets_ii) {
+    if (!(objective(onset.t) > found.value)) continue;
+    const auto after = std::upper_bound(samples.begin(), samples.end(), onset.t, [](double v, const StepEnd& s) { return v < s.t; });
+    const std::size_t step_start = static_cast<std::size_t>(after - samples.begin()) - 1;
+    search(step_start, std::min(step_start + 1, last));
+  }
+  // Sampled values within round-off of 0 can leave no candidate with the objective above it.
+  if (!(found.value > 0)) fail(no_forward_release);
+  const double t_release = found.t;
+  result.release_at_growth_of = found.at_onset;
+  result.release = point_from(t_release, phase2.y_exact_at(t_release));
+  // Only what happens before the release invalidates the shot.
+  auto before_release = [&](const std::optional<double>& t) { return t && *t <= t_release ? t : std::nullopt; };
+  result.slack_sling = before_release(onsets[0]);
+  result.counterweight_below_base = before_release(onsets[1]);
+  result.tip_below_base = before_release(onsets[2]);
+  if (trace) {
+    record_trace(trace, lifted, phase2, result.t_liftoff, t_release, trace_dt);
+    if (!(trace_dt > 0))  // the continuous record ends on the release already
+      trace->push_back({Phase::lifted, t_release, result.release.state, dynamics.snapshot(Phase::lifted, result.release.state)});
+    trace_released(dynamics, settings, result.release.state, t_release, trace_dt, *trace);
+  }
+  if (unreleased) {  // phase II past the release, as far as the search looked
+    std::vector<TracePoint> all;
+    record_trace(&all, lifted, phase2, t_release, samples.back().t, trace_dt);
+    for (const TracePoint& p : all)
+      if (p.t > t_release) unreleased->push_back(p);
+  }
+  return result;
+}
+
+}  // namespace trebuchet

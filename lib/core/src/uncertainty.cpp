@@ -1,0 +1,62 @@
+#include "trebuchet/uncertainty.hpp"
+
+#include <gsl/gsl_statistics_double.h>
+
+#include <algorithm>
+#include <map>
+#include <regex>
+
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/parallel.hpp"
+
+namespace trebuchet {
+
+namespace {
+
+// A failure's reason without its numbers, so that samples failing alike count together:
+// "--L4 = -4.5: the sling length must be positive" is "--L4 = #: the sling length must be positive".
+std::string failure_reason(const std::string& message) {
+  // A number is not part of a name: L4 keeps its 4.
+  static const std::regex number("(^|[^A-Za-z0-9_.])[-+]?[0-9]+(\\.[0-9]*)?([eE][-+]?[0-9]+)?");
+  return std::regex_replace(message.substr(0, message.find(';')), number, "$1#");
+}
+
+}  // namespace
+
+double draw(const Spread& spread, std::mt19937_64& random) {
+  if (spread.kind == Spread::Kind::uniform) return std::uniform_real_distribution<double>(spread.a, spread.b)(random);
+  return std::normal_distribution<double>(spread.a, spread.b)(random);
+}
+
+MonteCarloSummary run_monte_carlo(int samples, std::uint64_t seed, int threads,
+                                  const std::function<SampleOutcome(std::mt19937_64& random)>& sample) {
+  std::vector<SampleOutcome> outcomes(static_cast<std::size_t>(samples));
+  for_each_index(outcomes.size(), threads, [&](std::size_t i) {
+    // Each sample's own generator: its draws do not depend on which thread runs it, or when.
+    std::seed_seq sequence{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32), static_cast<std::uint32_t>(i),
+                           static_cast<std::uint32_t>(i >> 32)};
+    std::mt19937_64 random(sequence);
+    outcomes[i] = sample(random);
+  });
+  MonteCarloSummary summary;
+  summary.samples = samples;
+  std::map<std::string, int> failures;
+  for (const SampleOutcome& o : outcomes) {
+    if (o.failure.empty()) summary.values.push_back(o.values);
+    else ++failures[failure_reason(o.failure)];
+  }
+  summary.failures.assign(failures.begin(), failures.end());
+  std::sort(summary.failures.begin(), summary.failures.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+  if (!summary.values.empty())
+    for (std::size_t k = 0; k < sample_names.size(); ++k) {
+      std::vector<double> column;
+      for (const auto& v : summary.values) column.push_back(v[k]);
+      std::sort(column.begin(), column.end());
+      for (int p = 0; p < 3; ++p)
+        summary.percentiles[k][static_cast<std::size_t>(p)] = gsl_stats_quantile_from_sorted_data(column.data(), 1, column.size(), std::array{0.05, 0.5, 0.95}[static_cast<std::size_t>(p)]);
+    }
+  return summary;
+}
+
+}  // namespace trebuchet

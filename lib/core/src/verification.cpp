@@ -1,0 +1,82 @@
+#include "trebuchet/verification.hpp"
+
+#include <cmath>
+
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/quality.hpp"
+#include "trebuchet/angles.hpp"
+
+namespace trebuchet {
+
+Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level, const std::optional<Air>& air,
+                             bool range_from_release) {
+  const ReleasePoint& r = shot.release;
+  const double L2 = engine.L2, g = engine.material.g;
+  const double speed_unit = std::sqrt(g * L2), time_unit = std::sqrt(L2 / g);  // section 3
+  Verification out;
+  const double vx = r.velocity.x * speed_unit, vy = r.velocity.y * speed_unit;
+  out.v = std::hypot(vx, vy);
+  out.h = r.height * L2;
+  out.x = r.position.x * L2;
+  out.A_deg = degrees(std::atan2(vy, -vx));
+  out.theta_release_deg = degrees(r.state.theta);
+  const double drop = out.h - target_level;  // release to target level [m]
+  const double apex = out.h + (vy > 0 ? vy * vy / (2 * g) : 0);  // highest point of the flight above the base [m]
+  if (!(target_level <= apex))
+    throw Error(ErrorKind::usage, "the target level " + format_significant(target_level, 4) + " m lies above the apex of the flight, " +
+                                      format_significant(apex, 4) + " m above the engine's base; give a target level below it");
+  out.R_vacuum = vacuum_range({out.x, 0}, {vx, vy}, drop, g);
+  out.capacity.R = out.R_vacuum;
+  // eq:T at the target level: the height above it is drop/L2, scaled; M g L2 turns tau_e into joules.
+  out.capacity.T = energy_at_target(engine.m / engine.M, r.velocity, drop / L2) * engine.M * g * L2;
+  out.capacity.target_level = range_from_release ? out.h : target_level;
+  if (air || range_from_release) {
+    // The flight's end: the target level, or back at the release height for Denny's range,
+    // which is measured from the release point (x behind the pivot) rather than the pivot.
+    const double end_drop = range_from_release ? 0 : drop;
+    double range = 0;
+    Vec2 end_velocity{vx, vy};
+    if (air) {
+      const auto end = fly({out.x, 0}, {vx, vy}, end_drop, drag_of(*air, engine.m), g);
+      if (!end)
+        throw Error(ErrorKind::numerical, "the flight through " + describe_air(*air, engine.m) +
+                                              " did not come down to its end; give the air, the wind and the projectile's density values of ordinary size");
+      range = end->range, end_velocity = end->velocity;
+    } else {
+      range = vacuum_range({out.x, 0}, {vx, vy}, 0, g);
+      end_velocity.y = -vy;
+    }
+    out.capacity.R = range_from_release ? range + out.x : range;
+    out.capacity.T = engine.m * (end_velocity.x * end_velocity.x + end_velocity.y * end_velocity.y) / 2;
+  }
+  out.eps = r.efficiency;
+  out.Q = r.quality;
+  out.force_factor = r.force_factor;
+  out.t_release = r.t * time_unit;
+  out.t_liftoff = shot.t_liftoff * time_unit;
+  out.FS_perp_mg = r.extremes.max[sling_perpendicular] / (engine.m / engine.M);
+  out.FR_Mg = r.extremes.max[pivot_reaction];
+  out.dFRh_Mg = r.extremes.max[pivot_horizontal] + r.extremes.max[pivot_horizontal_negated];
+  out.energy_drift = shot.energy_drift;
+  auto warn = [&](const std::optional<double>& t, const std::string& what) {
+    if (t) out.warnings.push_back(what + " at t = " + format_significant(*t * time_unit, 4) + " s, before the release at " +
+                                  format_significant(out.t_release, 4) + " s: the model no longer holds there, and the figures are not physical");
+  };
+  warn(shot.slack_sling, "the sling goes slack (it would push the projectile)");
+  warn(shot.counterweight_below_base, "the counterweight passes below the engine's base");
+  warn(shot.tip_below_base, "the beam's tip passes below the engine's base");
+  return out;
+}
+
+Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace, double trace_dt_s) {
+  const double time_unit = std::sqrt(engine.L2 / engine.material.g);  // section 3 [s]
+  // The release under Release::range maximises the range as the settings define it.
+  ReleaseCriterion criterion = settings.criterion;
+  if (settings.air) criterion.drag = scaled(drag_of(*settings.air, engine.m), engine.L2, engine.material.g);
+  criterion.range_from_release = settings.range_from_release;
+  const ShotResult shot = simulate_shot(scaled_design(engine), criterion, settings.integrator, trace, trace_dt_s / time_unit);
+  return verification_of(engine, shot, settings.target_level, settings.air, settings.range_from_release);
+}
+
+}  // namespace trebuchet
