@@ -57,6 +57,12 @@ void print(const OptimalEngine& design, const std::string& format, int digits) {
   else std::cout << design_table(design);
 }
 
+// The design with its warnings naming the options of this program (error.hpp).
+OptimalEngine in_option_words(OptimalEngine design) {
+  for (std::string& warning : design.warnings) warning = with_words(warning, option_word);
+  return design;
+}
+
 int run(const Options& options) {
   if (options.format != "table" && options.format != "csv" && options.format != "json")
     throw Error(ErrorKind::usage, "--format: '" + options.format + "' is not a format; use table, csv or json");
@@ -126,20 +132,20 @@ int run(const Options& options) {
           if (!json) std::cout << csv_line(header);
         },
         [&](const BatchRow& row) {
-          if (row.error) std::cerr << "trebuchet-calc: line " << row.line << ": " << row.error->what() << "\n";
+          if (row.error) std::cerr << "trebuchet-calc: line " << row.line << ": " << row.error->message(option_word) << "\n";
           if (json) {
             nlohmann::ordered_json out = {{"line", row.line}};
             for (std::size_t k = 0; k < passed_columns.size(); ++k) out[passed_columns[k]] = row.passed[k];
-            if (row.design) out.update(design_json(*row.design));
-            else out.update({{"error", row.error->what()}, {"exit_code", exit_code(Program::calc, row.error->kind())}});
+            if (row.design) out.update(design_json(in_option_words(*row.design)));
+            else out.update({{"error", row.error->message(option_word)}, {"exit_code", exit_code(Program::calc, row.error->kind())}});
             rows.push_back(out);
             return;
           }
           std::vector<std::string> cells = {std::to_string(row.line)};
           cells.insert(cells.end(), row.passed.begin(), row.passed.end());
-          const std::vector<std::string> design = row.design ? design_csv_row(*row.design, digits) : std::vector<std::string>(design_columns);
+          const std::vector<std::string> design = row.design ? design_csv_row(in_option_words(*row.design), digits) : std::vector<std::string>(design_columns);
           cells.insert(cells.end(), design.begin(), design.end());
-          cells.push_back(row.error ? row.error->what() : "");
+          cells.push_back(row.error ? row.error->message(option_word) : "");
           std::cout << csv_line(cells);
         });
     if (json) std::cout << rows.dump(2) << "\n";
@@ -156,7 +162,7 @@ int run(const Options& options) {
                                             "e.g. --R 150m --m 50kg");
   request.first = givens[0];
   request.second = givens[1];
-  print(design_optimal_engine(table, request), options.format, digits);
+  print(in_option_words(design_optimal_engine(table, request)), options.format, digits);
   return 0;
 }
 

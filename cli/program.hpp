@@ -4,6 +4,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
 #include <string>
 
@@ -11,6 +12,16 @@
 #include "trebuchet/error.hpp"
 
 namespace trebuchet {
+
+/// The option that sets what the library calls `name` in its messages (error.hpp): "--rtol",
+/// "--theta" for theta_i_deg, "--psi-i" for psi_i_deg, "--wood-density" for wood_density.
+inline std::string option_word(std::string_view name) {
+  if (name == "theta_i_deg") return "--theta";
+  if (name == "psi_i_deg") return "--psi-i";
+  std::string option = "--" + std::string(name);
+  std::replace(option.begin(), option.end(), '_', '-');
+  return option;
+}
 
 /// The first option of `app` or its parsed subcommands that was given an empty value
 /// (`--R ''`), or nullptr: an empty value is a mistake, never "not given".
@@ -45,7 +56,7 @@ int run_program(CLI::App& app, Program program, int argc, char** argv, Run run) 
   try {
     return run();
   } catch (const Error& e) {
-    std::cerr << name << ": " << e.what() << "\n";
+    std::cerr << name << ": " << e.message(option_word) << "\n";
     return exit_code(program, e.kind());
   }
 }

@@ -92,7 +92,7 @@ TEST_CASE("conflicting or unbounded subsets are named errors", "[complete]") {
   CHECK_THAT(message(a), Catch::Contains("mb = 100 kg, but D = 0.5 m gives mb = 1374.45 kg by eq:BeamMass"));
   a = Attested{};
   a.Lb = 10, a.m = 50;
-  CHECK_THAT(message(a, Release::range), Catch::Contains("give M and m for --quality range"));
+  CHECK_THAT(message(a, Release::range), Catch::Contains("give M and m for quality range"));
   a = Attested{};
   a.L1 = 5, a.H = 6, a.M = 3000, a.m = 50;
   CHECK_THAT(message(a), Catch::Contains("the pivot height H = 6 m is not below the long arm's length"));

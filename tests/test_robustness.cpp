@@ -55,7 +55,7 @@ TEST_CASE("10 000 random engines: a finite result or a named error each", "[robu
     INFO("engine " << k << ": L1 " << e.L1 << " L2 " << e.L2 << " L3 " << e.L3 << " L4 " << e.L4 << " M " << e.M << " m " << e.m
                    << " mb " << e.mb << " theta " << e.theta_i_deg);
     try {
-      check_engine(e, "random");
+      check_engine(e);
       const Verification v = verify_engine(e, ShotSettings{});
       verification_json(v, check_capacity(v, {100, 1e4}, 0.02));  // throws if any number is not finite
       ++outcomes["result"];

@@ -596,7 +596,8 @@ int run_complete(const Options& o) {
   check_format(o);
   if (has_spreads(o)) return run_monte_carlo_of(o, true);
   const CompletionRequest request = completion_request(o);
-  const Completion completion = complete_engine(request);
+  Completion completion = complete_engine(request);
+  completion.calculator_note = with_words(completion.calculator_note, option_word);
   if (o.format == "json") std::cout << completion_json(completion, request.settings).dump(2) << "\n";
   else std::cout << completion_table(completion, request.settings);
   return exit_success;

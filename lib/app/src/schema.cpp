@@ -12,6 +12,10 @@
 namespace trebuchet {
 namespace {
 
+// How messages name a key of a design: "{key}" for flags, which the program writes as its
+// option (error.hpp), or "where.key" in a file.
+std::string engine_key_name(const std::string& where, const std::string& key) { return where.empty() ? "{" + key + "}" : where + "." + key; }
+
 // A number in SI, or a string with a unit suffix.
 std::optional<double> read_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension,
                                  const std::string& where) {
@@ -31,7 +35,7 @@ double require_value(const nlohmann::json& object, const std::string& key, UnitD
                      const std::string& where, const std::string& hint) {
   const auto value = read_value(object, key, dimension, where);
   if (!value)
-    throw Error(ErrorKind::usage, (where.empty() ? "--" + key + " is missing" : where + ": key \"" + key + "\" is missing") + "; give " + hint);
+    throw Error(ErrorKind::usage, (where.empty() ? "{" + key + "} is missing" : where + ": key \"" + key + "\" is missing") + "; give " + hint);
   return *value;
 }
 
@@ -123,7 +127,11 @@ EngineRecord read_engine(const nlohmann::json& object, const std::string& where)
   material.youngs_modulus = read_value(object, "youngs_modulus", UnitDimension::pressure, where).value_or(material.youngs_modulus);
   material.wood_density = read_value(object, "wood_density", UnitDimension::density, where).value_or(material.wood_density);
   material.g = read_value(object, "g", UnitDimension::acceleration, where).value_or(material.g);
-  check_engine(e, where);
+  try {
+    check_engine(e);
+  } catch (const Error& error) {
+    throw Error(error.kind(), error.message([&](std::string_view key) { return engine_key_name(where, std::string(key)); }));
+  }
   const auto R = read_value(object, "R", UnitDimension::length, where);
   const auto T = read_value(object, "T", UnitDimension::energy, where);
   if (R.has_value() != T.has_value())
@@ -279,7 +287,7 @@ std::vector<Field> verification_fields(const Verification& v) {
       {"energy_drift", v.energy_drift}};
   for (const Field& field : fields)
     if (!std::isfinite(field.value))
-      throw Error(ErrorKind::numerical, std::string("the result ") + field.key + " is not finite; tighten --rtol");
+      throw Error(ErrorKind::numerical, std::string("the result ") + field.key + " is not finite; tighten {rtol}");
   return fields;
 }
 

@@ -7,12 +7,6 @@
 #include "trebuchet/angles.hpp"
 
 namespace trebuchet {
-std::string engine_key_name(const std::string& where, const std::string& key) {
-  if (where.empty()) return key == "theta_i_deg" ? "--theta" : key == "psi_i_deg" ? "--psi-i" : "--" + key;  // the flag is the short name
-  return where + "." + key;
-}
-
-
 ScaledDesign scaled_design(const Engine& engine) {  // eq:Design
   return {engine.L1 / engine.L2, engine.L4 / engine.L1, engine.mb / engine.M, engine.m / engine.M, engine.theta_i_deg,
           arm_fraction(engine), engine.psi_i_deg};
@@ -35,17 +29,17 @@ Engine engine_of(const ScaledDesign& design, double L2, const Material& material
   return e;
 }
 
-void check_engine(const Engine& e, const std::string& where) {
+void check_engine(const Engine& e) {
   auto positive = [&](double value, const char* key, const char* what) {
     if (!(value > 0))
-      throw Error(ErrorKind::bad_number, engine_key_name(where, key) + " = " + format_significant(value, 6) + ": the " + what +
+      throw Error(ErrorKind::bad_number, "{" + std::string(key) + "} = " + format_significant(value, 6) + ": the " + what +
                                              " must be positive");
   };
   if (!(e.theta_i_deg > 0 && e.theta_i_deg < 90))
-    throw Error(ErrorKind::bad_number, engine_key_name(where, "theta_i_deg") + " = " + format_significant(e.theta_i_deg, 6) +
+    throw Error(ErrorKind::bad_number, "{theta_i_deg} = " + format_significant(e.theta_i_deg, 6) +
                                            ": the initial beam angle must lie between 0 and 90 degrees");
   if (!(std::abs(e.psi_i_deg) < 90))
-    throw Error(ErrorKind::bad_number, engine_key_name(where, "psi_i_deg") + " = " + format_significant(e.psi_i_deg, 6) +
+    throw Error(ErrorKind::bad_number, "{psi_i_deg} = " + format_significant(e.psi_i_deg, 6) +
                                            ": the initial counterweight angle must lie between -90 and 90 degrees (0: hanging, unpropped)");
   positive(e.L1, "L1", "long beam section");
   positive(e.L2, "L2", "short beam section");
@@ -53,7 +47,7 @@ void check_engine(const Engine& e, const std::string& where) {
   positive(e.L4, "L4", "sling length");
   positive(e.M, "M", "counterweight mass");
   positive(e.m, "m", "projectile mass");
-  if (!(e.mb >= 0)) throw Error(ErrorKind::bad_number, engine_key_name(where, "mb") + " = " + format_significant(e.mb, 6) + ": the beam mass must not be negative");
+  if (!(e.mb >= 0)) throw Error(ErrorKind::bad_number, "{mb} = " + format_significant(e.mb, 6) + ": the beam mass must not be negative");
   positive(e.material.beta2, "beta2", "allowed bending");
   positive(e.material.youngs_modulus, "youngs_modulus", "Young's modulus");
   positive(e.material.wood_density, "wood_density", "wood density");

@@ -15,7 +15,7 @@ namespace trebuchet {
 namespace {
 
 // A failure's reason without its numbers, so that samples failing alike count together:
-// "--L4 = -4.5: the sling length must be positive" is "--L4 = #: the sling length must be positive".
+// "L4 = -4.5: the sling length must be positive" is "L4 = #: the sling length must be positive".
 std::string failure_reason(const std::string& message) {
   // A number is not part of a name: L4 keeps its 4.
   static const std::regex number("(^|[^A-Za-z0-9_.])[-+]?[0-9]+(\\.[0-9]*)?([eE][-+]?[0-9]+)?");

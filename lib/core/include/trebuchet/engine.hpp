@@ -34,11 +34,8 @@ Engine engine_of(const ScaledDesign& design, double L2, const Material& material
 
 /// The validation every engine passes, given or computed: lengths and masses positive (mb may
 /// be 0), theta_i in (0, 90) degrees, a positive material. Throws Error(bad_number) naming the
-/// parameter: "--L4" for an empty `where` (the command line), else "where.L4".
-void check_engine(const Engine& engine, const std::string& where);
-
-/// How check_engine and the readers name a key: "--key", or "where.key".
-std::string engine_key_name(const std::string& where, const std::string& key);
+/// parameter by its key, "{L4}" (error.hpp).
+void check_engine(const Engine& engine);
 
 double beam_length(const Engine& engine);    ///< Lb = L1 + L2 [m]
 double pivot_height(const Engine& engine);   ///< H = L1 cos(theta_i) [m]

@@ -1,0 +1,46 @@
+#include "trebuchet/error.hpp"
+
+#include <cctype>
+
+namespace trebuchet {
+namespace {
+
+// The length of the name of a reference "{name}" at text[at] (a letter or _, then letters,
+// digits, _ and -), or 0 where no reference starts: JSON in a message, "{\"L1\": ...}", is none.
+std::size_t reference_length(std::string_view text, std::size_t at) {
+  if (text[at] != '{' || at + 1 >= text.size()) return 0;
+  const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; };
+  if (!(std::isalpha(static_cast<unsigned char>(text[at + 1])) || text[at + 1] == '_')) return 0;
+  std::size_t end = at + 1;
+  while (end < text.size() && word(text[end])) ++end;
+  return end < text.size() && text[end] == '}' ? end - at - 1 : 0;
+}
+
+}  // namespace
+
+std::string with_words(std::string_view text, const std::function<std::string(std::string_view)>& word) {
+  std::string out;
+  for (std::size_t at = 0; at < text.size();) {
+    if (const std::size_t length = reference_length(text, at)) {
+      out += word(text.substr(at + 1, length));
+      at += length + 2;
+    } else {
+      out += text[at++];
+    }
+  }
+  return out;
+}
+
+Error::Error(ErrorKind kind, const std::string& message)
+    : std::runtime_error(with_words(message, [](std::string_view name) { return std::string(name); })), kind_(kind), text_(message) {}
+
+std::string Error::message(const std::function<std::string(std::string_view name)>& word) const { return with_words(text_, word); }
+
+std::vector<std::string> Error::names() const {
+  std::vector<std::string> out;
+  for (std::size_t at = 0; at < text_.size(); ++at)
+    if (const std::size_t length = reference_length(text_, at)) out.emplace_back(text_.substr(at + 1, length));
+  return out;
+}
+
+}  // namespace trebuchet
