@@ -4,6 +4,9 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <unistd.h>
+
+#include <functional>
 #include <algorithm>
 #include <iostream>
 #include <string>
@@ -21,6 +24,17 @@ inline std::string option_word(std::string_view name) {
   std::string option = "--" + std::string(name);
   std::replace(option.begin(), option.end(), '_', '-');
   return option;
+}
+
+/// A progress bar on stderr, "[####    ] 3/8 X points", drawn only when stderr is a terminal
+/// (pipes and logs stay clean); empty otherwise.
+inline std::function<void(int, int)> progress_bar(std::string what) {
+  if (!isatty(STDERR_FILENO)) return {};
+  return [what](int done, int total) {
+    const int width = 30, filled = width * done / total;
+    std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, ' ') << "] " << done << "/" << total << " " << what
+              << (done == total ? "\n" : "") << std::flush;
+  };
 }
 
 /// The first option of `app` or its parsed subcommands that was given an empty value
@@ -48,6 +62,9 @@ int run_program(CLI::App& app, Program program, int argc, char** argv, Run run) 
   } catch (const CLI::ParseError& e) {
     std::cerr << name << ": " << e.what() << "; see " << name << " --help\n";
     return exit_code(program, ErrorKind::usage);
+  } catch (const Error& e) {  // an option's value, parsed as it is read
+    std::cerr << name << ": " << e.message(option_word) << "\n";
+    return exit_code(program, e.kind());
   }
   if (const CLI::Option* empty = option_with_empty_value(app)) {
     std::cerr << name << ": " << empty->get_name() << " was given an empty value; give a value after it, or leave it out\n";

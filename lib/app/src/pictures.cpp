@@ -1,9 +1,18 @@
 #include "trebuchet/app/pictures.hpp"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
+#include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/quality.hpp"
 #include "trebuchet/app/report.hpp"
@@ -341,6 +350,40 @@ std::vector<PictureFile> histogram_pictures(const MonteCarloSummary& summary, co
   panel(2, "energy at the target T [kJ]", 1e3, 1);
   gp << "unset multiplot\n";
   return {{"histogram.dat", data.str()}, {"histogram.gp", gp.str()}};
+}
+
+namespace {
+
+// Runs gnuplot on `script` inside `folder`; an error names what failed and how to fix it.
+void run_gnuplot(const std::filesystem::path& folder, const std::string& script) {
+  // What is printed so far must not be copied into the child, whose freopen would flush it again.
+  std::cout.flush();
+  std::fflush(stdout);
+  const pid_t child = fork();
+  if (child == 0) {
+    if (chdir(folder.c_str()) == 0 && std::freopen("gnuplot.log", "a", stderr) && std::freopen("gnuplot.log", "a", stdout))
+      execlp("gnuplot", "gnuplot", script.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  if (child < 0 || waitpid(child, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw Error(ErrorKind::usage, "{plot}: gnuplot failed on " + (folder / script).string() + ", see gnuplot.log there" +
+                                      (child >= 0 && WIFEXITED(status) && WEXITSTATUS(status) == 127 ? " (gnuplot is not installed; apt-get install gnuplot-nox)" : ""));
+}
+
+}  // namespace
+
+void write_picture_folder(const std::string& dir, const std::vector<PictureFile>& files, const std::vector<std::string>& scripts) {
+  const std::filesystem::path folder(dir);
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  std::filesystem::remove(folder / "gnuplot.log", ec);
+  for (const PictureFile& file : files) {
+    std::ofstream out(folder / file.name);
+    out << file.text;
+    if (!out) throw Error(ErrorKind::usage, "{plot}: cannot write " + (folder / file.name).string() + "; give a folder you can write to");
+  }
+  for (const std::string& script : scripts) run_gnuplot(folder, script);
 }
 
 }  // namespace trebuchet

@@ -31,9 +31,8 @@ std::optional<double> read_value(const nlohmann::json& object, const std::string
   throw Error(ErrorKind::bad_number, name + ": " + value.dump() + " is neither a number nor a value with a unit like \"6.13m\"");
 }
 
-double require_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension,
-                     const std::string& where, const std::string& hint) {
-  const auto value = read_value(object, key, dimension, where);
+// A value a design must have; the hint says what it is, with an example.
+double required(const std::optional<double>& value, const std::string& key, const std::string& where, const std::string& hint) {
   if (!value)
     throw Error(ErrorKind::usage, (where.empty() ? "{" + key + "} is missing" : where + ": key \"" + key + "\" is missing") + "; give " + hint);
   return *value;
@@ -92,54 +91,78 @@ void write_engine(nlohmann::ordered_json& out, const Engine& engine) {
   if (engine.psi_i_deg != 0) out["psi_i_deg"] = engine.psi_i_deg;  // only a propped engine carries it
 }
 
-EngineRecord read_engine(const nlohmann::json& object, const std::string& where) {
+DesignValues read_design_values(const nlohmann::json& object, const std::string& where) {
   if (!object.is_object())
     throw Error(ErrorKind::usage, (where.empty() ? std::string("input") : where) + ": expected a JSON object with keys L1, L2, L3 (or F), L4, M, m, mb, theta_i_deg");
+  DesignValues v;
+  const std::pair<std::optional<double> DesignValues::*, std::pair<const char*, UnitDimension>> keys[] = {
+      {&DesignValues::L1, {"L1", UnitDimension::length}},       {&DesignValues::L2, {"L2", UnitDimension::length}},
+      {&DesignValues::L3, {"L3", UnitDimension::length}},       {&DesignValues::F, {"F", UnitDimension::dimensionless}},
+      {&DesignValues::L4, {"L4", UnitDimension::length}},       {&DesignValues::M, {"M", UnitDimension::mass}},
+      {&DesignValues::m, {"m", UnitDimension::mass}},           {&DesignValues::mb, {"mb", UnitDimension::mass}},
+      {&DesignValues::D, {"D", UnitDimension::length}},         {&DesignValues::theta_i_deg, {"theta_i_deg", UnitDimension::angle}},
+      {&DesignValues::psi_i_deg, {"psi_i_deg", UnitDimension::angle}},
+      {&DesignValues::beta2, {"beta2", UnitDimension::dimensionless}},
+      {&DesignValues::youngs_modulus, {"youngs_modulus", UnitDimension::pressure}},
+      {&DesignValues::wood_density, {"wood_density", UnitDimension::density}},
+      {&DesignValues::g, {"g", UnitDimension::acceleration}},   {&DesignValues::R, {"R", UnitDimension::length}},
+      {&DesignValues::T, {"T", UnitDimension::energy}}};
+  for (const auto& [member, key] : keys) v.*member = read_value(object, key.first, key.second, where);
+  return v;
+}
+
+EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   EngineRecord in;
   Engine& e = in.engine;
-  e.L1 = require_value(object, "L1", UnitDimension::length, where, "the long beam section, e.g. \"L1\": \"6.13m\"");
-  e.L2 = require_value(object, "L2", UnitDimension::length, where, "the short beam section, e.g. \"L2\": \"1.08m\"");
-  e.L4 = require_value(object, "L4", UnitDimension::length, where, "the sling length, e.g. \"L4\": \"5.80m\"");
-  e.M = require_value(object, "M", UnitDimension::mass, where, "the counterweight mass, e.g. \"M\": \"14.3t\"");
-  e.m = require_value(object, "m", UnitDimension::mass, where, "the projectile mass, e.g. \"m\": \"100kg\"");
-  e.mb = require_value(object, "mb", UnitDimension::mass, where, "the beam mass, e.g. \"mb\": \"660kg\"");
-  e.theta_i_deg = read_value(object, "theta_i_deg", UnitDimension::angle, where).value_or(standard_theta_i_deg);
-  e.psi_i_deg = read_value(object, "psi_i_deg", UnitDimension::angle, where).value_or(0);
-  e.D = read_value(object, "D", UnitDimension::length, where).value_or(0);
-  if (const auto L3 = read_value(object, "L3", UnitDimension::length, where)) {
-    e.L3 = *L3;
-  } else if (const auto F = read_value(object, "F", UnitDimension::dimensionless, where)) {
+  e.L1 = required(v.L1, "L1", where, "the long beam section, e.g. \"L1\": \"6.13m\"");
+  e.L2 = required(v.L2, "L2", where, "the short beam section, e.g. \"L2\": \"1.08m\"");
+  e.L4 = required(v.L4, "L4", where, "the sling length, e.g. \"L4\": \"5.80m\"");
+  e.M = required(v.M, "M", where, "the counterweight mass, e.g. \"M\": \"14.3t\"");
+  e.m = required(v.m, "m", where, "the projectile mass, e.g. \"m\": \"100kg\"");
+  e.mb = required(v.mb, "mb", where, "the beam mass, e.g. \"mb\": \"660kg\"");
+  e.theta_i_deg = v.theta_i_deg.value_or(standard_theta_i_deg);
+  e.psi_i_deg = v.psi_i_deg.value_or(0);
+  e.D = v.D.value_or(0);
+  const std::string named = where.empty() ? std::string("flags") : where;
+  if (v.L3) {
+    e.L3 = *v.L3;
+    // Both, as the programs write them: they must agree to the rounding of the values written
+    // (6 significant digits in CSV move F by at most ~2e-5).
+    if (v.F && e.theta_i_deg > 0 && e.theta_i_deg < 90 && !(std::abs(arm_fraction(e) / *v.F - 1) <= 1e-4))
+      throw Error(ErrorKind::usage, named + ": L3 = " + format_significant(e.L3, 6) + " m gives F = (L2 + L3)/H = " +
+                                        format_significant(arm_fraction(e), 6) + ", not F = " + format_significant(*v.F, 6) +
+                                        "; both fix the counterweight arm, give one of them");
+  } else if (const auto F = v.F) {
     if (!(*F > 0))
       throw Error(ErrorKind::bad_number, engine_key_name(where, "F") + " = " + format_significant(*F, 6) +
                                              ": the counterweight arm fraction (L2 + L3)/H must be positive; the paper's are 1, 2/3 and 1/2");
     e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, *F);
     if (e.theta_i_deg > 0 && e.theta_i_deg < 90 && e.L1 > 0 && e.L2 > 0 && !(e.L3 > 0))
-      throw Error(ErrorKind::bad_number, (where.empty() ? std::string("flags") : where) + ": with F = " + format_significant(*F, 4) +
+      throw Error(ErrorKind::bad_number, named + ": with F = " + format_significant(*F, 4) +
                                              " and theta_i = " + format_significant(e.theta_i_deg, 4) + " deg, L2 + L3 = F L1 cos(theta_i) = " +
                                              format_significant(*F * pivot_height(e), 4) + " m is not longer than L2 = " + format_significant(e.L2, 4) +
                                              " m: no room for the counterweight arm; lower theta_i, raise F or lengthen L1");
   } else {
-    throw Error(ErrorKind::usage, (where.empty() ? std::string("flags") : where) +
-                                      ": give the counterweight arm L3 in metres, or the fraction F = (L2 + L3)/H, e.g. F = 2/3");
+    throw Error(ErrorKind::usage, named + ": give the counterweight arm L3 in metres, or the fraction F = (L2 + L3)/H, e.g. F = 2/3");
   }
   Material& material = e.material;
-  material.beta2 = read_value(object, "beta2", UnitDimension::dimensionless, where).value_or(material.beta2);
-  material.youngs_modulus = read_value(object, "youngs_modulus", UnitDimension::pressure, where).value_or(material.youngs_modulus);
-  material.wood_density = read_value(object, "wood_density", UnitDimension::density, where).value_or(material.wood_density);
-  material.g = read_value(object, "g", UnitDimension::acceleration, where).value_or(material.g);
+  material.beta2 = v.beta2.value_or(material.beta2);
+  material.youngs_modulus = v.youngs_modulus.value_or(material.youngs_modulus);
+  material.wood_density = v.wood_density.value_or(material.wood_density);
+  material.g = v.g.value_or(material.g);
   try {
     check_engine(e);
   } catch (const Error& error) {
     throw Error(error.kind(), error.message([&](std::string_view key) { return engine_key_name(where, std::string(key)); }));
   }
-  const auto R = read_value(object, "R", UnitDimension::length, where);
-  const auto T = read_value(object, "T", UnitDimension::energy, where);
-  if (R.has_value() != T.has_value())
-    throw Error(ErrorKind::usage, (where.empty() ? std::string("flags") : where) + ": a capacity needs both R and T; give both or neither");
-  if (R && !(*R > 0 && *T > 0))
-    throw Error(ErrorKind::bad_number, (where.empty() ? std::string("flags") : where) + ": R and T must be positive");
-  if (R) in.capacity = Capacity{*R, *T, 0};
+  if (v.R.has_value() != v.T.has_value()) throw Error(ErrorKind::usage, named + ": a capacity needs both R and T; give both or neither");
+  if (v.R && !(*v.R > 0 && *v.T > 0)) throw Error(ErrorKind::bad_number, named + ": R and T must be positive");
+  if (v.R) in.capacity = Capacity{*v.R, *v.T, 0};
   return in;
+}
+
+EngineRecord read_engine(const nlohmann::json& object, const std::string& where) {
+  return engine_record(read_design_values(object, where), where);
 }
 
 DesignRows read_design_rows(std::istream& input, const std::string& source) {
@@ -264,15 +287,6 @@ std::string csv_line(const std::vector<std::string>& cells) {
   std::string line;
   for (std::size_t k = 0; k < cells.size(); ++k) line += (k ? "," : "") + csv_cell(cells[k]);
   return line + "\n";
-}
-
-CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance) {
-  CapacityCheck c;
-  c.predicted = predicted, c.tolerance = tolerance;
-  c.deviation_R = v.capacity.R / predicted.R - 1;
-  c.deviation_T = v.capacity.T / predicted.T - 1;
-  c.pass = std::abs(c.deviation_R) <= tolerance && std::abs(c.deviation_T) <= tolerance;
-  return c;
 }
 
 namespace {

@@ -79,4 +79,13 @@ Verification verify_engine(const Engine& engine, const ShotSettings& settings, s
   return verification_of(engine, shot, settings.target_level, settings.air, settings.range_from_release);
 }
 
+CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance) {
+  CapacityCheck c;
+  c.predicted = predicted, c.tolerance = tolerance;
+  c.deviation_R = v.capacity.R / predicted.R - 1;
+  c.deviation_T = v.capacity.T / predicted.T - 1;
+  c.pass = std::abs(c.deviation_R) <= tolerance && std::abs(c.deviation_T) <= tolerance;
+  return c;
+}
+
 }  // namespace trebuchet

@@ -58,4 +58,15 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
 Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace = nullptr,
                            double trace_dt_s = 0);
 
+/// A predicted capacity (from the calculator) against the simulated one.
+struct CapacityCheck {
+  Capacity predicted;           ///< [m], [J]
+  double deviation_R = 0;       ///< simulated/predicted - 1
+  double deviation_T = 0;
+  double tolerance = 0;         ///< relative
+  bool pass = false;            ///< both deviations within the tolerance
+};
+
+CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance);
+
 }  // namespace trebuchet

@@ -1,6 +1,6 @@
 // Pictures of one shot for a class or a report (issue 13): the engine drawn to scale, the
 // paths, the forces, the energies, the release and an animation, as gnuplot scripts with their
-// data, and an index.html that gathers them. The library writes the text; a program runs gnuplot.
+// data, and an index.html that gathers them; write_picture_folder writes them and runs gnuplot.
 #pragma once
 
 #include <string>
@@ -32,5 +32,10 @@ std::vector<std::string> picture_scripts();
 /// with their 5, 50 and 95 % percentiles marked; `title` says what was uncertain. The script
 /// histogram.gp writes histogram.svg.
 std::vector<PictureFile> histogram_pictures(const MonteCarloSummary& summary, const std::string& title);
+
+/// Writes `files` into the folder `dir` (made if missing), then runs gnuplot on each of
+/// `scripts` there; gnuplot's own messages go to gnuplot.log in the folder. Throws Error(usage)
+/// naming what failed and the fix (a folder that cannot be written, gnuplot missing or failing).
+void write_picture_folder(const std::string& dir, const std::vector<PictureFile>& files, const std::vector<std::string>& scripts);
 
 }  // namespace trebuchet

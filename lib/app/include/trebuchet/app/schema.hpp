@@ -44,6 +44,23 @@ struct EngineRecord {
   std::optional<Capacity> capacity;  ///< "R" and "T", both or neither (level 0)
 };
 
+/// The values of a design as given (a JSON object, a CSV row or a program's options), in SI
+/// units, angles in degrees; a value not given is empty.
+struct DesignValues {
+  std::optional<double> L1, L2, L3, F, L4, M, m, mb, D, theta_i_deg, psi_i_deg;
+  std::optional<double> beta2, youngs_modulus, wood_density, g;  ///< the material; eq:kMkD's where empty
+  std::optional<double> R, T;                                     ///< a capacity to check: both or neither
+};
+
+/// The values of a JSON design object, each an SI number or a string with a unit ("6.13m").
+/// Throws Error(bad_number | unknown_unit | usage) naming the key.
+DesignValues read_design_values(const nlohmann::json& object, const std::string& where);
+
+/// The engine of a design's values: L3, or F = (L2 + L3)/H, theta_i 30 deg unless given, the
+/// material of eq:kMkD where not given; checked (check_engine). `where` names the design in
+/// messages ("design[2]"; empty: a program's options, named "{L4}" as error.hpp says).
+EngineRecord engine_record(const DesignValues& values, const std::string& where);
+
 /// Reads an engine: L1, L2, L4, M, m, mb; L3, or F = (L2 + L3)/H; optional theta_i_deg
 /// (default 30), D, the material keys (default eq:kMkD's) and R with T. Values are SI numbers
 /// or strings with a unit ("6.13m"); other keys are ignored, so that every writer's output
@@ -82,17 +99,6 @@ nlohmann::ordered_json design_json(const OptimalEngine& design);
 /// design's cells with `digits` significant digits.
 std::vector<std::string> design_csv_header();
 std::vector<std::string> design_csv_row(const OptimalEngine& design, int digits);
-
-/// A predicted capacity (from the calculator) against the simulated one.
-struct CapacityCheck {
-  Capacity predicted;           ///< [m], [J]
-  double deviation_R = 0;       ///< simulated/predicted - 1
-  double deviation_T = 0;
-  double tolerance = 0;         ///< relative
-  bool pass = false;            ///< both deviations within the tolerance
-};
-
-CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance);
 
 /// Keys R, T, eps, Q, force_factor, v, h, x, A_deg, t_release, t_liftoff, FS_perp_mg, FR_Mg,
 /// dFRh_Mg, energy_drift; with a check, also predicted, deviation, tolerance and pass.

@@ -1,0 +1,90 @@
+// What the verifier does for its users, apart from parsing their options: reads the designs of
+// a run (a JSON object or array, or CSV rows), checks one design and reports it in each format,
+// and reports a Monte Carlo run over uncertain inputs.
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "trebuchet/uncertainty.hpp"
+#include "trebuchet/verification.hpp"
+#include "trebuchet/app/csv.hpp"
+#include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/units.hpp"
+
+namespace trebuchet {
+
+/// The designs of a run: a JSON object, a JSON array, or CSV rows (docs/csv.md).
+struct DesignInputs {
+  std::vector<std::string> passed_columns;  ///< CSV columns that pass through, e.g. site
+  std::vector<DesignRows::Row> rows;
+  std::vector<std::string> where;           ///< how messages name each row: "design[2]", "line 3"
+  bool single = true;                       ///< one object: an error ends the run
+};
+
+/// The designs in `text`, read from `path` ("-": standard input): JSON if the file is named
+/// .json, parses as JSON or opens like it (then its error is JSON's), else CSV. Throws
+/// Error(usage) for text that holds no design.
+DesignInputs read_design_inputs(const std::string& text, const std::string& path);
+
+/// The material of a run over a design's own: eq:kMkD's wood, beta2 and g where given.
+struct MaterialOverrides {
+  std::optional<double> beta2, wood_density, g;  ///< scaled; [kg/m^3]; [m/s^2]
+  Material over(Material base) const;
+};
+
+/// How each design of a run is checked and reported.
+struct DesignCheck {
+  ShotSettings settings;
+  MaterialOverrides material;
+  double tolerance = 0.02;              ///< relative, on a predicted R and T
+  bool fit = false;                     ///< fit the design's shape to its capacity first
+  bool csv = false;                     ///< also the CSV cells of each design
+  int csv_digits = default_csv_digits;
+  std::string series_path;              ///< write the motion here (CSV) when not empty
+  double series_dt_s = 0;               ///< [s]; 0: at the integrator's steps
+  std::string plot_dir;                 ///< draw the shot into this folder when not empty
+};
+
+/// One design checked: its record as JSON, as a table and (with check.csv) as CSV cells, and whether a capacity
+/// it carries was met within the tolerance.
+struct DesignReport {
+  nlohmann::ordered_json json;
+  std::string table;
+  std::vector<std::string> csv;
+  bool outside_tolerance = false;
+};
+
+/// Shoots the design (fitted to its capacity first with check.fit), checks its capacity, and
+/// writes the series and the pictures it asks for.
+DesignReport check_design(const EngineRecord& record, const DesignCheck& check);
+
+/// An uncertain input of a Monte Carlo run, named as its user gave it ("--M").
+struct UncertainInput {
+  std::string name;
+  UnitDimension dimension;
+  Spread spread;
+};
+
+/// "--M uniform 2500..3500 kg", "--L4 normal 3.55±0.2 m".
+std::string describe_uncertain(const UncertainInput& input);
+
+/// What a Monte Carlo run reports: its samples, seed, inputs, percentiles and failures; `air`
+/// describes the flight ("vacuum" or describe_air), `subject` what was sampled ("the shot").
+struct MonteCarloReport {
+  const MonteCarloSummary& summary;
+  const std::vector<UncertainInput>& inputs;
+  std::uint64_t seed;
+  std::string subject;
+  std::string air;
+  bool in_air;
+  double seconds;
+  int threads;
+};
+nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& report);
+std::string monte_carlo_table(const MonteCarloReport& report);
+
+}  // namespace trebuchet

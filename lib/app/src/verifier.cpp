@@ -1,0 +1,148 @@
+#include "trebuchet/app/verifier.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "trebuchet/capacity_fit.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/app/pictures.hpp"
+#include "trebuchet/app/report.hpp"
+#include "trebuchet/app/text_input.hpp"
+
+namespace trebuchet {
+
+DesignInputs read_design_inputs(const std::string& text, const std::string& path) {
+  DesignInputs in;
+  const std::string expected = "a design object like {\"L1\": \"6.13m\", ...}, an array of them, or CSV with a header (docs/csv.md)";
+  const std::size_t start = text.find_first_not_of(" \t\r\n", text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0);
+  const bool named_json = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
+  const bool csv = !named_json && start != std::string::npos && text[start] != '{' && text[start] != '[' && !nlohmann::json::accept(text);
+  if (csv) {
+    std::istringstream stream(text);
+    DesignRows rows = read_design_rows(stream, source_name(path));
+    in.passed_columns = std::move(rows.passed_columns);
+    in.rows = std::move(rows.rows);
+    for (const auto& row : in.rows) in.where.push_back("line " + std::to_string(row.line));
+    in.single = false;
+    return in;
+  }
+  nlohmann::json json = parse_json(text, source_name(path), expected);
+  if (!json.is_object() && !json.is_array())
+    throw Error(ErrorKind::usage, source_name(path) + " holds " + json.dump() + ", not a design; give " + expected);
+  in.single = json.is_object();
+  // Moved, not copied: a copy of deeply nested input would recurse as deep as it nests.
+  for (std::size_t i = 0; i < (in.single ? 1 : json.size()); ++i) {
+    in.rows.push_back({0, in.single ? std::move(json) : std::move(json[i]), {}, ""});
+    in.where.push_back(in.single ? "design" : "design[" + std::to_string(i) + "]");
+  }
+  return in;
+}
+
+Material MaterialOverrides::over(Material base) const {
+  base.beta2 = beta2.value_or(base.beta2);
+  base.wood_density = wood_density.value_or(base.wood_density);
+  base.g = g.value_or(base.g);
+  return base;
+}
+
+DesignReport check_design(const EngineRecord& record, const DesignCheck& check) {
+  Engine engine = record.engine;
+  engine.material = check.material.over(engine.material);
+  DesignReport out;
+  nlohmann::ordered_json simulated;
+  std::string fitted_table;
+  if (check.fit) {
+    if (!record.capacity) throw Error(ErrorKind::usage, "fit needs a capacity; give {R} and {T}, or \"R\" and \"T\" in the input");
+    const CapacityFit result = fit_capacity(scaled_design(engine), *record.capacity, engine.material, check.settings);
+    engine = result.engine;
+    simulated["simulations"] = result.simulations;
+    fitted_table = "fitted engine (" + std::to_string(result.simulations) + " shots):\n" + engine_table(engine);
+  }
+  std::vector<TracePoint> trace;
+  const Verification v = verify_engine(engine, check.settings, check.series_path.empty() ? nullptr : &trace, check.series_dt_s);
+  if (!check.plot_dir.empty()) write_picture_folder(check.plot_dir, shot_pictures(engine, check.settings), picture_scripts());
+  std::optional<CapacityCheck> capacity;
+  if (record.capacity) capacity = check_capacity(v, *record.capacity, check.tolerance);
+  out.json = verification_json(v, capacity);
+  out.table = fitted_table + verification_table(engine, check.settings, v, capacity);
+  if (check.csv) out.csv = verification_csv_row(engine, check.settings, v, capacity, check.csv_digits);
+  // The engine simulated (for fit, the fitted one, with its shots) and what the shot assumed.
+  nlohmann::ordered_json engine_json;
+  write_engine(engine_json, engine);
+  if (check.fit) engine_json.update(simulated);
+  out.json["engine"] = engine_json;
+  out.json["assumptions"] = assumptions_json(engine, check.settings);
+  if (!check.series_path.empty()) {
+    std::ofstream file(check.series_path);
+    file << trace_csv(trace, engine);
+    if (!file) throw Error(ErrorKind::usage, "{series}: cannot write '" + check.series_path + "'");
+  }
+  out.outside_tolerance = capacity && !capacity->pass;
+  return out;
+}
+
+std::string describe_uncertain(const UncertainInput& u) {
+  const Spread& s = u.spread;
+  const char* unit = u.dimension == UnitDimension::length ? " m" : u.dimension == UnitDimension::mass ? " kg"
+                     : u.dimension == UnitDimension::angle ? " deg" : u.dimension == UnitDimension::speed ? " m/s"
+                     : u.dimension == UnitDimension::density ? " kg/m3" : "";
+  return u.name + (s.kind == Spread::Kind::uniform ? " uniform " + format_significant(s.a, 6) + ".." + format_significant(s.b, 6)
+                                                   : " normal " + format_significant(s.a, 6) + "±" + format_significant(s.b, 6)) + unit;
+}
+
+nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
+  const MonteCarloSummary& summary = r.summary;
+  nlohmann::ordered_json out;
+  out["samples"] = summary.samples;
+  out["seed"] = r.seed;
+  out["worked"] = summary.values.size();
+  nlohmann::ordered_json uncertain = nlohmann::ordered_json::array();
+  for (const auto& [name, dimension, spread] : r.inputs) {
+    const bool uniform = spread.kind == Spread::Kind::uniform;
+    uncertain.push_back({{"option", name}, {"distribution", uniform ? "uniform" : "normal"}, {uniform ? "from" : "mean", spread.a},
+                         {uniform ? "to" : "deviation", spread.b}});
+  }
+  out["uncertain"] = uncertain;
+  for (std::size_t k = 0; k < sample_names.size(); ++k)
+    if (!summary.values.empty())
+      out["percentiles"][sample_names[k]] = {{"p5", summary.percentiles[k][0]}, {"p50", summary.percentiles[k][1]}, {"p95", summary.percentiles[k][2]}};
+  nlohmann::ordered_json failures = nlohmann::ordered_json::array();
+  for (const auto& [reason, count] : summary.failures) failures.push_back({{"reason", reason}, {"count", count}});
+  out["failures"] = failures;
+  out["air"] = r.in_air ? "air" : "vacuum";
+  out["wall_time_s"] = r.seconds;
+  return out;
+}
+
+std::string monte_carlo_table(const MonteCarloReport& r) {
+  const MonteCarloSummary& summary = r.summary;
+  std::vector<std::string> described;
+  for (const UncertainInput& u : r.inputs) described.push_back(describe_uncertain(u));
+  std::ostringstream out;
+  out << "Monte Carlo: " << summary.samples << " samples (--seed " << r.seed << ") of " << r.subject << ", "
+      << format_significant(r.seconds, 3) << " s on " << r.threads << " thread(s)\n"
+      << "uncertain: " << join(described, ", ") << "\n"
+      << "ranges in " << r.air << "\n";
+  if (!summary.values.empty()) {
+    const char* labels[] = {"R [m]", "T [kJ]", "eps [%]", "v [m/s]"};
+    const double scales[] = {1, 1e-3, 100, 1};
+    out << "           5 %        50 %       95 %\n";
+    for (std::size_t k = 0; k < sample_names.size(); ++k) {
+      std::string line = labels[k];
+      line.resize(9, ' ');
+      for (double p : summary.percentiles[k]) {
+        std::string cell = format_significant(p * scales[k], 4);
+        cell.resize(11, ' ');
+        line += cell;
+      }
+      out << line.substr(0, line.find_last_not_of(' ') + 1) << "\n";
+    }
+  }
+  out << "failed: " << summary.samples - static_cast<int>(summary.values.size()) << " samples";
+  for (const auto& [reason, count] : summary.failures) out << "; " << count << " " << reason;
+  out << "\n";
+  return out.str();
+}
+
+}  // namespace trebuchet

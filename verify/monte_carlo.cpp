@@ -1,0 +1,63 @@
+// A shot or a completion whose values are given as ranges or spreads: each sample sets them to a
+// draw (in SI units, on the typed options) and runs; the percentiles of R, T, eps and v, the
+// failures by reason, and with --plot a histogram.
+#include <chrono>
+#include <iostream>
+
+#include "program.hpp"
+#include "run.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/parallel.hpp"
+#include "trebuchet/app/pictures.hpp"
+
+namespace trebuchet::verify {
+
+int run_monte_carlo(const Options& o, bool complete) {
+  if (!o.input.empty()) throw Error(ErrorKind::usage, "ranges and spreads are for values given as flags; drop the file '" + o.input + "'");
+  if (!o.series.empty()) throw Error(ErrorKind::usage, "--series writes the motion of one shot; a Monte Carlo run has many");
+  // The run's assumptions are those of each uncertain value at its first number (a range's low
+  // end, a spread's mean). A design that is bad input there is refused before the run, with the
+  // exit code of bad input: a range must hold only values that make an engine.
+  const Options first = with_values(o, [](const Spread& s) { return s.a; });
+  const ShotSettings settings = shot_settings(first);
+  // One sample's engine: the flags' design over its material.
+  auto engine_of = [](const Options& sample) {
+    Engine engine = engine_record(sample.design, "").engine;
+    engine.material = sample.material.over(engine.material);
+    return engine;
+  };
+  if (!complete) {
+    if (first.design.L3 && first.design.F)
+      throw Error(ErrorKind::usage, "--L3 and --F both fix the counterweight arm (L2 + L3 = F H); give one of them");
+    engine_of(first);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const MonteCarloSummary summary = trebuchet::run_monte_carlo(o.samples, o.seed, o.threads, [&](std::mt19937_64& random) {
+    const Options sample = with_values(o, [&](const Spread& s) { return draw(s, random); });
+    SampleOutcome outcome;
+    try {
+      const Verification v = complete ? complete_engine(completion_request(sample)).verification
+                                      : verify_engine(engine_of(sample), shot_settings(sample));
+      outcome.values = {v.capacity.R, v.capacity.T, v.eps, v.v};
+    } catch (const Error& e) {
+      outcome.failure = e.message(option_word);
+    }
+    return outcome;
+  });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::vector<UncertainInput> inputs;
+  for (const Uncertain& u : o.uncertain) inputs.push_back(u.input);
+  const MonteCarloReport report{summary, inputs, o.seed, complete ? "the completed engine" : "the shot",
+                                settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"), settings.air.has_value(), seconds,
+                                thread_count(o.threads, static_cast<std::size_t>(summary.samples))};
+  std::cout << (o.format == Format::json ? monte_carlo_json(report).dump(2) + "\n" : monte_carlo_table(report));
+  if (!o.plot.empty()) {
+    std::vector<std::string> described;
+    for (const UncertainInput& u : inputs) described.push_back(describe_uncertain(u));
+    write_picture_folder(o.plot, histogram_pictures(summary, join(described, ", ")), {"histogram.gp"});
+  }
+  if (summary.values.empty()) throw Error(ErrorKind::numerical, "no sample worked; the first reason: " + summary.failures.front().first);
+  return exit_success;
+}
+
+}  // namespace trebuchet::verify

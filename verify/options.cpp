@@ -1,0 +1,304 @@
+#include "options.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <iterator>
+#include <cstdio>
+#include <thread>
+
+#include "program.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/app/names.hpp"
+#include "trebuchet/app/request.hpp"
+#include "trebuchet/app/table_json.hpp"
+#include "trebuchet/app/units.hpp"
+
+namespace trebuchet::verify {
+namespace {
+
+using Slot = std::function<std::optional<double>&(Options&)>;
+
+// An option whose text CLI11 hands to `parse` as soon as it reads it; an empty value is refused.
+CLI::Option* parsed_option(CLI::App* app, const std::string& name, const std::function<void(const std::string&)>& parse,
+                           const std::string& help) {
+  return app->add_option_function<std::string>(name, [name, parse](const std::string& text) {
+    if (text.empty()) throw Error(ErrorKind::usage, name + " was given an empty value; give a value after it, or leave it out");
+    parse(text);
+  }, help);
+}
+
+// The order in which uncertain values are drawn and listed, whatever the order they were given
+// in: the same command draws the same numbers.
+int draw_rank(const std::string& name) {
+  static const char* const order[] = {"--L1", "--L2", "--L3", "--F", "--L4", "--M", "--m", "--mb", "--theta", "--psi-i",
+                                      "--target-level", "--wind", "--air-density", "--Lb", "--H", "--D", "--l"};
+  return static_cast<int>(std::find(std::begin(order), std::end(order), name) - std::begin(order));
+}
+
+// A value with a unit into `slot` (strictly positive with `positive`). With `spreads`, it may be a
+// range or a spread (uncertainty.hpp): the slot then holds its first number, and the spread is
+// kept for the Monte Carlo run.
+CLI::Option* value_option(CLI::App* app, Options& o, const std::string& name, Slot slot, UnitDimension dimension,
+                          const std::string& help, bool spreads = false, bool positive = false) {
+  return parsed_option(app, name, [&o, name, slot, dimension, spreads, positive](const std::string& text) {
+    const auto spread = parse_spread(text, dimension, name);
+    if (spread && !spreads)
+      throw Error(ErrorKind::usage, name + ": '" + text + "' is a range or a spread; they are for shot and complete, give one value");
+    slot(o) = spread ? spread->a : positive ? parse_positive(text, dimension, name) : parse_value(text, dimension, name);
+    if (!spread) return;
+    const auto after = std::find_if(o.uncertain.begin(), o.uncertain.end(), [&](const Uncertain& u) { return draw_rank(u.input.name) > draw_rank(name); });
+    o.uncertain.insert(after, {{name, dimension, *spread}, slot});
+  }, help + (dimension == UnitDimension::dimensionless || dimension == UnitDimension::angle ? "" : " [" + unit_list(dimension) + "]"));
+}
+
+// A strictly positive value with a unit into a double.
+CLI::Option* positive_option(CLI::App* app, const std::string& name, double& target, UnitDimension dimension, const std::string& help) {
+  return parsed_option(app, name, [&target, name, dimension](const std::string& text) { target = parse_positive(text, dimension, name); }, help);
+}
+
+void engine_options(CLI::App* app, Options& o, bool spreads) {
+  app->add_option("input", o.input, "JSON file with a design or an array of designs, or CSV with a design a row (docs/csv.md); - for stdin");
+  const std::tuple<const char*, Slot, UnitDimension, const char*> keys[] = {
+      {"--L1", [](Options& x) -> auto& { return x.design.L1; }, UnitDimension::length, "long beam section"},
+      {"--L2", [](Options& x) -> auto& { return x.design.L2; }, UnitDimension::length, "short beam section"},
+      {"--L3", [](Options& x) -> auto& { return x.design.L3; }, UnitDimension::length, "counterweight arm (or --F)"},
+      {"--F", [](Options& x) -> auto& { return x.design.F; }, UnitDimension::dimensionless, "arm fraction (L2+L3)/H, instead of --L3"},
+      {"--L4", [](Options& x) -> auto& { return x.design.L4; }, UnitDimension::length, "sling length"},
+      {"--M", [](Options& x) -> auto& { return x.design.M; }, UnitDimension::mass, "counterweight mass"},
+      {"--m", [](Options& x) -> auto& { return x.design.m; }, UnitDimension::mass, "projectile mass"},
+      {"--mb", [](Options& x) -> auto& { return x.design.mb; }, UnitDimension::mass, "beam mass"}};
+  for (const auto& [name, slot, dimension, help] : keys) value_option(app, o, name, slot, dimension, help, spreads);
+  value_option(app, o, "--theta", [](Options& x) -> auto& { return x.design.theta_i_deg; }, UnitDimension::angle,
+               "initial beam angle theta_i [deg] (default 30)", spreads);
+  value_option(app, o, "--psi-i", [](Options& x) -> auto& { return x.design.psi_i_deg; }, UnitDimension::angle,
+               "initial counterweight angle psi_i [deg] of a propped counterweight (default 0, hanging; negative: held back, "
+               "the sense opposite to the beam's turn)", spreads);
+  value_option(app, o, "--R", [](Options& x) -> auto& { return x.design.R; }, UnitDimension::length, "the predicted range to check (or to fit)");
+  value_option(app, o, "--T", [](Options& x) -> auto& { return x.design.T; }, UnitDimension::energy, "the predicted energy to check (or to fit)");
+  positive_option(app, "--tol", o.tolerance, UnitDimension::dimensionless, "relative tolerance on the predicted R and T (default 0.02)");
+  app->add_option("--series", o.series, "write the time series of the shot (angles, forces, positions, energies) to this CSV file");
+  positive_option(app, "--series-dt", o.series_dt_s, UnitDimension::time,
+                  "sample the series every this many seconds (e.g. 5ms) instead of at the integrator's steps");
+  app->add_option("--plot", o.plot, "draw the shot into this folder: SVG pictures, an animated GIF and index.html (needs gnuplot)");
+}
+
+void target_level_option(CLI::App* app, Options& o, bool spreads) {
+  value_option(app, o, "--target-level", [](Options& x) -> auto& { return x.target_level; }, UnitDimension::length,
+               "target height relative to the engine's base, e.g. -54m (default 0)", spreads);
+}
+
+// A whole number from `lowest` to `highest` into `target`; the message names the option and the range.
+template <class Integer>
+void integer_option(CLI::App* app, const std::string& name, Integer& target, Integer lowest, Integer highest, const std::string& range,
+                    const std::string& help) {
+  parsed_option(app, name, [&target, name, lowest, highest, range](const std::string& text) {
+    long long value = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || end != text.data() + text.size())
+      throw Error(ErrorKind::usage, name + ": '" + text + "' is not a whole number; give " + range);
+    if (value < static_cast<long long>(lowest) || (highest > 0 && static_cast<unsigned long long>(value) > static_cast<unsigned long long>(highest)))
+      throw Error(ErrorKind::usage, name + ": " + text + " must be " + range);
+    target = static_cast<Integer>(value);
+  }, help);
+}
+
+void release_options(CLI::App* app, Options& o) {
+  parsed_option(app, "--quality", [&o](const std::string& text) { o.settings.criterion.release = parse_release(text, "--quality"); },
+                "what the release maximises: Q (eq:Q, eq:Q_n), eps (appendix B) or range (Denny) (default Q)");
+  parsed_option(app, "--n", [&o](const std::string& text) {
+    o.settings.criterion.n = parse_value(text, UnitDimension::dimensionless, "--n");
+    if (!(o.settings.criterion.n >= 0)) throw Error(ErrorKind::bad_number, "--n: '" + text + "' must be 0 or more (eq:Q_n)");
+  }, "exponent of eps in eq:Q_n (default 1)");
+}
+
+void integrator_options(CLI::App* app, Options& o) {
+  parsed_option(app, "--stepper", [&o](const std::string& text) { o.settings.integrator.stepper = parse_stepper(text, "--stepper"); },
+                "GSL odeiv2 stepper: " + stepper_names() + " (default " + stepper_name(IntegratorSettings{}.stepper) + ")");
+  positive_option(app, "--rtol", o.settings.integrator.rtol, UnitDimension::dimensionless, "relative tolerance per step (default 1e-11)");
+  positive_option(app, "--atol", o.settings.integrator.atol, UnitDimension::dimensionless, "absolute tolerance per step, scaled units (default 1e-11)");
+}
+
+void format_option(CLI::App* app, Options& o, bool csv_too) {
+  parsed_option(app, "--format", [&o, csv_too](const std::string& text) {
+    if (text == "table") o.format = Format::table;
+    else if (text == "json") o.format = Format::json;
+    else if (text == "csv" && csv_too) o.format = Format::csv;
+    else throw Error(ErrorKind::usage, "--format: '" + text + "' is not a format; use table" + (csv_too ? ", json or csv" : " or json"));
+  }, csv_too ? "table, json or csv (default table)" : "table or json (default table)");
+  if (csv_too)
+    parsed_option(app, "--digits", [&o](const std::string& text) { o.digits = parse_digits(text, "--digits"); },
+                  "significant digits of CSV numbers (default " + std::to_string(default_csv_digits) + "; 17: exact)");
+}
+
+void material_options(CLI::App* app, Options& o, const std::string& what, bool beta2) {
+  auto optional_positive = [&o](CLI::App* sub, const std::string& name, std::optional<double> MaterialOverrides::*member, UnitDimension dimension,
+                                const std::string& help) {
+    parsed_option(sub, name, [&o, name, member, dimension](const std::string& text) { o.material.*member = parse_positive(text, dimension, name); }, help);
+  };
+  optional_positive(app, "--g", &MaterialOverrides::g, UnitDimension::acceleration,
+                    "gravitational acceleration (default: the input's, else " + format_number(Material{}.g) + "m/s2)");
+  if (beta2)
+    optional_positive(app, "--beta2", &MaterialOverrides::beta2, UnitDimension::dimensionless,
+                      "allowed beam bending u2/L2 that sizes " + what + " (default: " + what + "'s own, else 1/300)");
+}
+
+void block_options(CLI::App* app, Options& o) {
+  parsed_option(app, "--theta", [&o](const std::string& text) { o.design.theta_i_deg = parse_theta(text, "--theta"); },
+                "initial beam angle theta_i [deg] (default 30)");
+  parsed_option(app, "--F", [&o](const std::string& text) { o.design.F = parse_positive(text, UnitDimension::dimensionless, "--F"); },
+                "counterweight arm fraction (L2+L3)/H (default 2/3)");
+}
+
+void threads_option(CLI::App* app, Options& o, const std::string& help) {
+  integer_option(app, "--threads", o.threads, 1, 1 << 16, "1 or more (at most 65536)", help);
+}
+
+// The air, and Monte Carlo: shot's and complete's.
+void air_and_sampling_options(CLI::App* app, Options& o) {
+  // A million shots take about a minute on two cores; more is not a question worth asking here.
+  integer_option(app, "--samples", o.samples, 1, 1000000, "1 to 1000000; 10000 give the 5 and 95 % to about 1 %",
+                 "Monte Carlo samples, when a value is a range (2.5t..3.5t) or a spread (3.5m±0.2m) (default 10000)");
+  integer_option(app, "--seed", o.seed, std::uint64_t{0}, std::uint64_t{0}, "0 or more",
+                 "seed of the Monte Carlo draws: the same seed, the same result (default 1)");
+  app->add_flag("--air", o.air, "fly through air (quadratic drag on a sphere) instead of vacuum; with --quality range the release maximises the range in air");
+  value_option(app, o, "--air-density", [](Options& x) -> auto& { return x.air_density; }, UnitDimension::density,
+               "density of the air (default 1.2kg/m3)", true, true);
+  parsed_option(app, "--cd", [&o](const std::string& text) {
+    if (text == "Re") o.drag_of_reynolds = true;
+    else o.drag_coefficient = parse_positive(text, UnitDimension::dimensionless, "--cd");
+  }, "drag coefficient of the sphere (default 0.47), or Re for Cd(Re) of a smooth sphere");
+  parsed_option(app, "--projectile", [&o](const std::string& text) {
+    o.projectile_density = text == "stone" ? 2500 : text == "iron" ? 7870 : parse_positive(text, UnitDimension::density, "--projectile");
+  }, "stone (2500kg/m3, the default), iron (7870kg/m3) or a density: gives the sphere's size");
+  value_option(app, o, "--wind", [](Options& x) -> auto& { return x.wind; }, UnitDimension::speed,
+               "horizontal wind toward the target, e.g. 5m/s or -20km/h (against)", true);
+  parsed_option(app, "--range-from", [&o](const std::string& text) {
+    if (text != "pivot" && text != "release")
+      throw Error(ErrorKind::usage, "--range-from: '" + text + "' is not a range; use pivot (the paper's) or release (Denny's)");
+    o.settings.range_from_release = text == "release";
+  }, "pivot (the paper's: to the target level, the default) or release (Denny's: from the release point back to its height)");
+}
+
+}  // namespace
+
+Subcommands declare_subcommands(CLI::App& app, Options& o) {
+  o.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  Subcommands s;
+  s.shot = app.add_subcommand("shot", "range, energy, efficiency, forces and quality at the best release of a design "
+                                      "(a JSON file, - for stdin, or flags), checked against a predicted capacity");
+  s.fit = app.add_subcommand("fit", "keep a design's shape (l, l4, mu_b, theta_i, F); fit mu and the size to --R and --T, then shoot");
+  s.optimize = app.add_subcommand("optimize", "the ab-initio optimum for --R and --T (or --R and --m) at --theta and --F (section 5)");
+  s.derive_table = app.add_subcommand("derive-table", "re-derive tab:CPNC for --theta and --F: optimise along --X and fit eq:f_ZX "
+                                                      "(JSON for the calculator's --table)");
+  s.merge = app.add_subcommand("merge", "join the parts written by derive-table --shard into one table");
+  s.complete = app.add_subcommand("complete", "complete an engine from what a source attests (any of --Lb --L1 --L2 --H --L4 --M --m --mb --D "
+                                              "--theta --F): keep those, choose the rest for the highest Q (or --quality range)");
+
+  for (CLI::App* sub : {s.shot, s.fit}) {
+    const bool shot = sub == s.shot;
+    engine_options(sub, o, shot);
+    target_level_option(sub, o, shot);
+    threads_option(sub, o, "threads for an array of designs (default: the cores); the output is the same on any number");
+    release_options(sub, o);
+    integrator_options(sub, o);
+    format_option(sub, o, true);
+    material_options(sub, o, "the design", !shot);
+  }
+  air_and_sampling_options(s.shot, o);
+
+  CLI::App* c = s.complete;
+  air_and_sampling_options(c, o);
+  const std::tuple<const char*, Slot, UnitDimension, const char*> attested[] = {
+      {"--Lb", [](Options& x) -> auto& { return x.Lb; }, UnitDimension::length, "beam length L1 + L2"},
+      {"--H", [](Options& x) -> auto& { return x.H; }, UnitDimension::length, "pivot height L1 cos(theta_i)"},
+      {"--D", [](Options& x) -> auto& { return x.design.D; }, UnitDimension::length, "beam diameter (instead of beta2)"},
+      {"--l", [](Options& x) -> auto& { return x.l; }, UnitDimension::dimensionless, "beam ratio L1/L2"},
+      {"--L1", [](Options& x) -> auto& { return x.design.L1; }, UnitDimension::length, "attested L1"},
+      {"--L2", [](Options& x) -> auto& { return x.design.L2; }, UnitDimension::length, "attested L2"},
+      {"--L4", [](Options& x) -> auto& { return x.design.L4; }, UnitDimension::length, "attested L4"},
+      {"--M", [](Options& x) -> auto& { return x.design.M; }, UnitDimension::mass, "attested M"},
+      {"--m", [](Options& x) -> auto& { return x.design.m; }, UnitDimension::mass, "attested m"},
+      {"--mb", [](Options& x) -> auto& { return x.design.mb; }, UnitDimension::mass, "attested mb"},
+      {"--F", [](Options& x) -> auto& { return x.design.F; }, UnitDimension::dimensionless, "attested F (default 2/3)"},
+      {"--theta", [](Options& x) -> auto& { return x.design.theta_i_deg; }, UnitDimension::angle,
+       "attested initial beam angle theta_i [deg] (default 30, or from H and L1)"}};
+  for (const auto& [name, slot, dimension, help] : attested) value_option(c, o, name, slot, dimension, help, true);
+  target_level_option(c, o, true);
+  threads_option(c, o, "threads for a Monte Carlo run (default: the cores)");
+  c->add_option("--plot", o.plot, "with ranges or spreads: write the histogram of R and T into this folder (needs gnuplot)");
+  parsed_option(c, "--wood-density", [&o](const std::string& text) {
+    o.material.wood_density = parse_positive(text, UnitDimension::density, "--wood-density");
+  }, "density of the beam's wood (default 700kg/m3), for D and mb");
+  material_options(c, o, "the beam", true);
+  release_options(c, o);
+  integrator_options(c, o);
+  format_option(c, o, false);
+
+  CLI::App* opt = s.optimize;
+  const std::tuple<const char*, std::optional<double> DesignValues::*, UnitDimension, const char*> capacity[] = {
+      {"--R", &DesignValues::R, UnitDimension::length, "range [m]"},
+      {"--T", &DesignValues::T, UnitDimension::energy, "energy at the target [J]"},
+      {"--m", &DesignValues::m, UnitDimension::mass, "projectile mass, instead of --T: the optimum for R with this stone, T free [kg]"}};
+  for (const auto& [name, member, dimension, help] : capacity)
+    parsed_option(opt, name, [&o, name = std::string(name), member = member, dimension = dimension](const std::string& text) {
+      o.design.*member = parse_positive(text, dimension, name);
+    }, help);
+  for (CLI::App* sub : {s.optimize, s.derive_table}) {
+    block_options(sub, o);
+    material_options(sub, o, "the engines", true);
+    release_options(sub, o);
+  }
+  integrator_options(opt, o);
+  format_option(opt, o, false);
+
+  CLI::App* derive = s.derive_table;
+  parsed_option(derive, "--X", [&o](const std::string& text) {
+    char c1 = 0, c2 = 0, rest = 0;
+    if (std::sscanf(text.c_str(), "%lf%c%lf%c%lf%c", &o.sweep.X_from, &c1, &o.sweep.X_to, &c2, &o.sweep.X_step, &rest) != 5 || c1 != ':' || c2 != ':')
+      throw Error(ErrorKind::usage, "--X: '" + text + "' is not from:to:step; e.g. --X -0.55:0.55:0.05");
+  }, "X points, from:to:step (eq:Xi) (default -0.55:0.55:0.05)");
+  threads_option(derive, o, "threads (default: the cores)");
+  parsed_option(derive, "--shard", [&o](const std::string& text) { o.shard = parse_shard(text); },
+                "run part k of N of the X points, e.g. 2/8, for merge");
+  s.merge->add_option("parts", o.parts, "the files written by derive-table --shard k/N")->required();
+  return s;
+}
+
+ShotSettings shot_settings(const Options& o) {
+  ShotSettings settings = o.settings;
+  settings.target_level = o.target_level.value_or(0);
+  const bool air_details = o.air_density || o.drag_coefficient || o.drag_of_reynolds || o.projectile_density || o.wind;
+  if (air_details && !o.air)
+    throw Error(ErrorKind::usage, "--air-density, --cd, --projectile and --wind describe the air; add --air to fly through it (vacuum is the default)");
+  if (o.air) {
+    Air air;
+    air.density = o.air_density.value_or(air.density);
+    if (o.air_density && !(*o.air_density > 0))
+      throw Error(ErrorKind::bad_number, "--air-density: " + format_significant(*o.air_density, 6) + " kg/m3 must be positive");
+    if (o.drag_of_reynolds) air.drag_coefficient.reset();
+    else if (o.drag_coefficient) air.drag_coefficient = o.drag_coefficient;
+    air.projectile_density = o.projectile_density.value_or(air.projectile_density);
+    air.wind = o.wind.value_or(0);
+    settings.air = air;
+  }
+  return settings;
+}
+
+CompletionRequest completion_request(const Options& o) {
+  CompletionRequest request;
+  Attested& a = request.attested;
+  const DesignValues& d = o.design;
+  a.Lb = o.Lb, a.L1 = d.L1, a.L2 = d.L2, a.H = o.H, a.L4 = d.L4, a.M = d.M, a.m = d.m, a.mb = d.mb, a.D = d.D, a.l = o.l;
+  a.theta_i_deg = d.theta_i_deg, a.F = d.F;
+  request.material = o.material.over(Material{});
+  request.settings = shot_settings(o);
+  return request;
+}
+
+Options with_values(const Options& o, const std::function<double(const Spread&)>& value) {
+  Options set = o;
+  for (const Uncertain& u : o.uncertain) u.slot(set) = value(u.input.spread);
+  return set;
+}
+
+}  // namespace trebuchet::verify

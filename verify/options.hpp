@@ -1,0 +1,71 @@
+// trebuchet-verify's options, declared once per subcommand and parsed into typed values as
+// CLI11 reads them (a value with a unit, a range or a spread, a name): after parsing, nothing
+// is text any more but the paths of files.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "trebuchet/completion.hpp"
+#include "trebuchet/sweep.hpp"
+#include "trebuchet/verification.hpp"
+#include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/verifier.hpp"
+
+namespace trebuchet::verify {
+
+enum class Format { table, json, csv };
+
+struct Options;
+
+/// A value given as a range or a spread: what it is, and where a Monte Carlo sample puts its draw.
+struct Uncertain {
+  UncertainInput input;
+  std::function<std::optional<double>&(Options&)> slot;
+};
+
+struct Options {
+  std::string input;                     ///< a design file, "-" for stdin; empty: the flags
+  DesignValues design;                   ///< the engine's flags (--L1 ... --psi-i), --R and --T
+  std::optional<double> Lb, H, l;        ///< complete: attested beside the engine's keys [m], [m], scaled
+  double tolerance = 0.02;               ///< on a predicted R and T, relative
+  std::optional<double> target_level;    ///< [m], relative to the engine's base; 0 when not given
+  ShotSettings settings;                 ///< all but the target level and the air, which shot_settings() adds
+  bool air = false;
+  std::optional<double> air_density, drag_coefficient, projectile_density, wind;  ///< [kg/m^3], -, [kg/m^3], [m/s]
+  bool drag_of_reynolds = false;         ///< --cd Re
+  MaterialOverrides material;            ///< --beta2, --wood-density, --g
+  Format format = Format::table;
+  int digits = default_csv_digits;
+  std::string series, plot;              ///< output paths
+  double series_dt_s = 0;                ///< [s]
+  int threads = 1;
+  SweepSpec sweep;                       ///< derive-table: its X grid (the rest from the other options)
+  std::optional<Shard> shard;
+  std::vector<std::string> parts;        ///< merge
+  int samples = 10000;                   ///< Monte Carlo
+  std::uint64_t seed = 1;
+  std::vector<Uncertain> uncertain;      ///< the values given as ranges or spreads, in the order given
+};
+
+/// The subcommands, each with its options declared on it.
+struct Subcommands {
+  CLI::App *shot, *fit, *optimize, *derive_table, *merge, *complete;
+};
+Subcommands declare_subcommands(CLI::App& app, Options& options);
+
+/// The settings of a shot with its air: --air and what describes it (--air-density, --cd,
+/// --projectile, --wind), which need --air. Throws Error(usage) otherwise.
+ShotSettings shot_settings(const Options& options);
+
+/// complete's request from the options.
+CompletionRequest completion_request(const Options& options);
+
+/// The options with each uncertain value set by value(its spread).
+Options with_values(const Options& options, const std::function<double(const Spread&)>& value);
+
+}  // namespace trebuchet::verify

@@ -1,0 +1,124 @@
+// shot and fit: the design from a file, stdin or flags; many designs (a JSON array or CSV rows)
+// are checked on every core, each in its place.
+#include <iostream>
+#include <optional>
+
+#include "program.hpp"
+#include "run.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/parallel.hpp"
+#include "trebuchet/app/text_input.hpp"
+
+namespace trebuchet::verify {
+namespace {
+
+DesignCheck design_check(const Options& o, bool fit) {
+  DesignCheck check;
+  check.settings = shot_settings(o);
+  check.material = o.material;
+  check.tolerance = o.tolerance;
+  check.fit = fit;
+  check.csv = o.format == Format::csv;
+  check.csv_digits = o.digits;
+  check.series_path = o.series;
+  check.series_dt_s = o.series_dt_s;
+  check.plot_dir = o.plot;
+  return check;
+}
+
+bool has_engine_flags(const DesignValues& d) {
+  for (const auto& value : {d.L1, d.L2, d.L3, d.F, d.L4, d.M, d.m, d.mb, d.theta_i_deg, d.psi_i_deg})
+    if (value) return true;
+  return false;
+}
+
+// Many designs: every one is tried, on every core; a failing one is reported in its place, the
+// others kept. Each design's report goes to its own slot, and all are printed in input order, so
+// the output is the same on any number of threads.
+int run_many(const Options& o, const DesignInputs& in, const DesignCheck& check) {
+  const std::size_t count = in.rows.size();
+  std::vector<DesignReport> reports(count);
+  std::vector<std::optional<Error>> errors(count);
+  for_each_index(count, o.threads, [&](std::size_t i) {
+    try {
+      // Unreadable, or failed upstream (the calculator's "error" column).
+      if (!in.rows[i].error.empty()) throw Error(ErrorKind::usage, in.rows[i].error);
+      reports[i] = check_design(read_engine(in.rows[i].design, in.where[i]), check);
+    } catch (const Error& e) {
+      errors[i] = e;
+    }
+  });
+  std::vector<std::string> header = in.passed_columns;
+  for (const std::string& column : verification_csv_header()) header.push_back(column);
+  header.push_back("error");
+  if (o.format == Format::csv) std::cout << csv_line(header);
+  nlohmann::ordered_json results = nlohmann::ordered_json::array();
+  int code = exit_success;
+  for (std::size_t i = 0; i < count; ++i) {
+    const DesignRows::Row& row = in.rows[i];
+    nlohmann::ordered_json record = nlohmann::ordered_json::object();
+    for (std::size_t k = 0; k < in.passed_columns.size(); ++k) record[in.passed_columns[k]] = row.passed[k];
+    std::vector<std::string> cells = row.passed;
+    // Messages name the row by its input line and its pass-through cells, "line 3 (site Saone)".
+    std::vector<std::string> described;
+    for (std::size_t k = 0; k < in.passed_columns.size(); ++k)
+      if (in.passed_columns[k] != "line") described.push_back(in.passed_columns[k] + " " + row.passed[k]);
+    const std::string name = in.where[i] + (described.empty() ? "" : " (" + join(described, ", ") + ")");
+    if (const auto& e = errors[i]) {
+      const int error_code = exit_code(Program::verify, e->kind());
+      const std::string message = e->message(option_word);
+      std::cerr << "trebuchet-verify: " << (message.rfind(in.where[i], 0) == 0 ? "" : name + ": ") << message << "\n";
+      record.update({{"error", message}, {"exit_code", error_code}});
+      cells.resize(header.size() - 1);
+      cells.push_back(message);
+      code = std::max(code, error_code);
+    } else {
+      record.update(reports[i].json);
+      cells.insert(cells.end(), reports[i].csv.begin(), reports[i].csv.end());
+      cells.push_back("");
+      if (o.format == Format::table) std::cout << name << "\n" << reports[i].table << "\n";
+      if (reports[i].outside_tolerance) code = std::max(code, exit_outside_tolerance);
+    }
+    results.push_back(record);
+    if (o.format == Format::csv) std::cout << csv_line(cells);
+  }
+  if (o.format == Format::json) std::cout << results.dump(2) << "\n";
+  return code;
+}
+
+}  // namespace
+
+int run_shot(const Options& o, bool fit) {
+  const DesignCheck check = design_check(o, fit);
+  DesignInputs in;
+  if (!o.input.empty()) {
+    if (has_engine_flags(o.design))
+      throw Error(ErrorKind::usage, "the engine comes from '" + o.input + "'; drop the engine flags (--L1 ... --theta), or drop the file");
+    in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}, an array of them, or CSV with a header (docs/csv.md)"),
+                            o.input);
+  } else if (o.design.L3 && o.design.F) {
+    throw Error(ErrorKind::usage, "--L3 and --F both fix the counterweight arm (L2 + L3 = F H); give one of them");
+  } else if (!has_engine_flags(o.design)) {
+    throw Error(ErrorKind::usage, "no design; give a JSON or CSV file (or - for stdin), or flags like --L1 6.13m --L2 1.08m --F 1 --L4 5.8m --M 14.3t --m 100kg --mb 660kg");
+  }
+  const std::size_t count = o.input.empty() ? 1 : in.rows.size();
+  // --R/--T on the command line give the capacity of a single design.
+  if (!o.input.empty() && !in.single && (o.design.R || o.design.T))
+    throw Error(ErrorKind::usage, "--R and --T give the capacity of one design, but " + source_name(o.input) + " holds " +
+                                      std::to_string(count) + "; give R and T in each design instead");
+  if (!o.series.empty() && count != 1)
+    throw Error(ErrorKind::usage, "--series writes the motion of one design; the input holds " + std::to_string(count));
+  if (!o.plot.empty() && count != 1) throw Error(ErrorKind::usage, "--plot draws one design; the input holds " + std::to_string(count));
+  if (!o.input.empty() && !in.single) return run_many(o, in, check);
+
+  DesignValues values = o.input.empty() ? o.design : read_design_values(in.rows.front().design, in.where.front());
+  if (o.design.R) values.R = o.design.R;
+  if (o.design.T) values.T = o.design.T;
+  const DesignReport report = check_design(engine_record(values, o.input.empty() ? "" : in.where.front()), check);
+  if (o.format == Format::json) std::cout << report.json.dump(2) << "\n";
+  else if (o.format == Format::csv) std::cout << csv_line(verification_csv_header()) << csv_line(report.csv);
+  else std::cout << report.table;
+  return report.outside_tolerance ? exit_outside_tolerance : exit_success;
+}
+
+}  // namespace trebuchet::verify

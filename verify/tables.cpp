@@ -1,0 +1,92 @@
+// optimize, derive-table and merge: the ab-initio optimum for a capacity, and tab:CPNC derived
+// from optima along X, whole or in shards that merge joins.
+#include <chrono>
+#include <iostream>
+
+#include "program.hpp"
+#include "run.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/optimizer.hpp"
+#include "trebuchet/parallel.hpp"
+#include "trebuchet/app/report.hpp"
+#include "trebuchet/app/table_json.hpp"
+#include "trebuchet/app/text_input.hpp"
+
+namespace trebuchet::verify {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Prints a table or sweep part; each X without an optimum is named on stderr and gives exit 3.
+int print_derived(const nlohmann::ordered_json& json, const std::vector<double>& failed) {
+  require_finite_json(json, "the table");
+  std::cout << json.dump(2) << "\n";
+  for (double X : failed)
+    std::cerr << "trebuchet-verify: no optimum at X = " << format_number(X) << "; its reason is in the output, the fit used the other points\n";
+  return failed.empty() ? exit_success : exit_code(Program::verify, ErrorKind::numerical);
+}
+
+}  // namespace
+
+int run_optimize(const Options& o) {
+  const DesignValues& d = o.design;
+  if (!d.R || d.T.has_value() == d.m.has_value())
+    throw Error(ErrorKind::usage, "optimize needs a capacity: --R with --T, or --R with the stone's --m; e.g. --R 425m --T 224kJ, or --R 450m --m 100kg");
+  OptimizeRequest request;
+  request.capacity = {*d.R, d.T.value_or(0), 0};
+  request.projectile_mass = d.m;
+  request.theta_i_deg = d.theta_i_deg.value_or(standard_theta_i_deg);
+  request.F = d.F.value_or(standard_F);
+  request.material = o.material.over(Material{});
+  request.settings = shot_settings(o);
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<Optimum> optima = optimize(request);
+  const double seconds = seconds_since(start);
+  nlohmann::ordered_json all = nlohmann::ordered_json::array();
+  for (const Optimum& optimum : optima) {
+    all.push_back(optimum_json(optimum, seconds));
+    if (o.format == Format::table) std::cout << optimum_table(optimum, request.settings) << "\n";
+  }
+  if (o.format == Format::json) std::cout << all.dump(2) << "\n";
+  else std::cout << "wall time " << format_significant(seconds, 3) << " s\n";
+  return exit_success;
+}
+
+int run_derive_table(const Options& o) {
+  SweepPart part;
+  part.origin = "the sweep";
+  SweepSpec& spec = part.spec;
+  spec = o.sweep;
+  spec.theta_i_deg = o.design.theta_i_deg.value_or(standard_theta_i_deg);
+  spec.F = o.design.F.value_or(standard_F);
+  spec.material = o.material.over(Material{});
+  spec.criterion = o.settings.criterion;
+  if (o.shard) part.shard = *o.shard;
+  const auto start = std::chrono::steady_clock::now();
+  part.points = run_sweep(spec, part.shard, o.threads, progress_bar("X points"));
+  int shots = 0;
+  std::vector<double> failed;
+  for (const SweepPoint& p : part.points) {
+    shots += p.simulations;
+    if (!p.error.empty()) failed.push_back(p.X);
+  }
+  std::cerr << "trebuchet-verify: " << part.points.size() << " X points, " << shots << " shots, " << format_significant(seconds_since(start), 3)
+            << " s on " << thread_count(o.threads, part.points.size()) << " threads\n";
+  if (o.shard) return print_derived(sweep_part_json(part), failed);
+  const DerivedTable table = derive_table({part});
+  return print_derived(derived_table_json(table), failed_points(table));
+}
+
+int run_merge(const Options& o) {
+  std::vector<SweepPart> parts;
+  for (const std::string& path : o.parts) {
+    const std::string expected = "a part written by derive-table --shard k/N";
+    parts.push_back(read_sweep_part(parse_json(read_text(path, expected), source_name(path), expected), "'" + path + "'"));
+  }
+  const DerivedTable table = derive_table(parts);
+  return print_derived(derived_table_json(table), failed_points(table));
+}
+
+}  // namespace trebuchet::verify
