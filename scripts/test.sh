@@ -1,22 +1,32 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds everything, and runs the whole test suite (Catch2 unit
-# tests and the command-line tests) through CTest -- twice: once in the Release build, once
-# built with AddressSanitizer and UndefinedBehaviorSanitizer (build-sanitize/), where any
-# memory error or undefined behaviour aborts the test that hit it. In between, it fuzzes each
-# reader of user text for a minute with libFuzzer under the same sanitizers (build-fuzz/).
+# The README's test command, and CI's (.ci/run): installs what is missing, then
+#   1. the Release build, warnings as errors, and every tier of the suite (docs/testing.md);
+#   2. one clang build under AddressSanitizer and UndefinedBehaviorSanitizer, instrumented for
+#      libFuzzer: the four fuzz targets run at once for a minute each, then the tiers that run
+#      the code on inputs (unit, cli, robustness; every 10th reference design) run again under
+#      the sanitizers, where any memory error or undefined behaviour aborts the test that hit it.
+# Each stage prints its time. TREBUCHET_FUZZ_SECONDS changes the fuzzing time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+jobs=$(nproc)
+start=$SECONDS
+stage() { echo "== $1 (at $((SECONDS - start)) s) =="; }
+
+stage "installing what is missing"
 bash scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)"
-ctest --test-dir build --output-on-failure -j"$(nproc)"
-echo "== fuzzing: libFuzzer under AddressSanitizer and UndefinedBehaviorSanitizer, ${TREBUCHET_FUZZ_SECONDS:-60} s per target =="
-CXX=clang++-14 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTREBUCHET_FUZZ=ON -DTREBUCHET_BUILD_TESTS=OFF \
-  -DTREBUCHET_BUILD_PROGRAMS=OFF >/dev/null
-cmake --build build-fuzz -j"$(nproc)"
-bash tests/fuzz/run.sh build-fuzz "${TREBUCHET_FUZZ_SECONDS:-60}"
-echo "== the same suite under AddressSanitizer and UndefinedBehaviorSanitizer =="
-cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTREBUCHET_SANITIZE=ON >/dev/null
-cmake --build build-sanitize -j"$(nproc)" --target unit-tests trebuchet-calc trebuchet-verify golden-compare check-spreadsheet
-ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
-  ctest --test-dir build-sanitize --output-on-failure -j"$(nproc)"
+
+stage "Release build"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTREBUCHET_WERROR=ON >/dev/null
+cmake --build build -j"$jobs"
+stage "the suite, every tier"
+ctest --test-dir build --output-on-failure -j"$jobs" --timeout 600
+
+stage "sanitizer and fuzzer build (clang)"
+CXX=clang++-14 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTREBUCHET_SANITIZE=ON -DTREBUCHET_FUZZ=ON >/dev/null
+cmake --build build-sanitize -j"$jobs" --target unit-tests trebuchet-calc trebuchet-verify fuzz-units fuzz-design fuzz-batch fuzz-table
+stage "fuzzing: the four targets at once, ${TREBUCHET_FUZZ_SECONDS:-60} s each"
+bash tests/fuzz/run.sh build-sanitize "${TREBUCHET_FUZZ_SECONDS:-60}"
+stage "unit, cli and robustness tiers under the sanitizers"
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 TREBUCHET_REFERENCE_STRIDE=10 \
+  ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -L "unit|cli|robustness" --timeout 900
+stage "done"

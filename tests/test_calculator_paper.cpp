@@ -185,7 +185,8 @@ TEST_CASE("section 6.2: expansions of l4 near X_d on both branches", "[calculato
     return (std::log(l4_at(table, X_d + h, branch)) - std::log(l4_at(table, X_d - h, branch))) / (2 * h);
   };
   std::printf("section 6.2 l4 near X_d\n");
-  for (auto [branch, value, slope] : {std::tuple{BranchChoice::lower, "0.965", "0.119"}, std::tuple{BranchChoice::upper, "1.075", "-0.024"}}) {
+  for (auto [choice, value, slope] : {std::tuple{BranchChoice::lower, "0.965", "0.119"}, std::tuple{BranchChoice::upper, "1.075", "-0.024"}}) {
+    const BranchChoice branch = choice;  // a lambda may not capture a structured binding before C++20 in clang 14
     const std::string name = branch == BranchChoice::lower ? "lower" : "upper";
     check_printed(name + " l4(X_d)", l4_at(builtin_scaling_table(), X_d, branch), value,
                   table_rounding_effect(30, 1, [&](const ScalingTable& t) { return l4_at(t, X_d, branch); }));

@@ -280,8 +280,9 @@ TEST_CASE("loose integration of the stiff engine is an error or a right number",
   const Engine engine = large_eff_17();
   const Verification reference = verify_engine(engine, settings);
   int refused = 0, accepted = 0;
+  bool loosest_refused = false;
   for (Stepper stepper : {Stepper::rk2, Stepper::rk4, Stepper::rkf45, Stepper::rkck, Stepper::rk8pd, Stepper::msadams, Stepper::rk2imp})
-    for (double tol : {1e-2, 1e-3, 1e-4, 1e-5, 1e-6}) {
+    for (double tol : {1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-9}) {
       ShotSettings loose = settings;
       loose.integrator.stepper = stepper;
       loose.integrator.rtol = tol;
@@ -297,10 +298,14 @@ TEST_CASE("loose integration of the stiff engine is an error or a right number",
       } catch (const Error& e) {
         ++refused;
         CHECK(e.kind() == ErrorKind::numerical);
+        loosest_refused = loosest_refused || (stepper == Stepper::rk2 && tol == 1e-2);
       }
     }
-  std::printf("stiff engine, 35 loose settings: %d refused with a named error, %d accepted and right\n", refused, accepted);
-  CHECK(refused > 20);
+  std::printf("stiff engine, 42 loose settings: %d refused with a named error, %d accepted and right\n", refused, accepted);
+  // Both paths are exercised; and the second-order method at 1e-2 per step, whose error over a
+  // shot of ~10^2 steps is far above the 1e-8 of Delta U the drift monitor allows, is refused.
+  CHECK(accepted > 0);
+  CHECK(loosest_refused);
 }
 
 // Issue 12, part 4: the open point on Q, closed with the optimizer. For every optimised row of

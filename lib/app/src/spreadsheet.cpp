@@ -489,7 +489,8 @@ void write_derived(lxw_workbook* book, const Formats& formats, const Engine& e, 
   const Expr mu_b = output("mu_b", mb / M, "", "mu_b = mb/M (eq:Design)");
   output("K", (l + num(1)) / mu_b, "", "K = (l + 1)/mu_b (eq:kMkD)");
   output("DeltaU", (num(1) - mu_b * (l - num(1)) / num(2)) * (num(1) + cos_deg(theta)) * M * g * L2, "J",
-         "potential energy released by a shot (eq:DU): (1 - mu_b (l - 1)/2)(1 + cos theta_i) M g L2");
+         "potential energy released by a shot (eq:DU) of an unpropped counterweight (psi_i = 0, as every design here): "
+         "(1 - mu_b (l - 1)/2)(1 + cos theta_i) M g L2; a propped one adds L (1 - cos psi_i) M g L2 (trebuchet-verify --psi-i)");
 }
 
 // An optimal engine at lambda times its size stays optimal: X is unchanged (eq:ExtraScalings).

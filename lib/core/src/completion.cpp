@@ -41,16 +41,16 @@ struct Plan {
 };
 
 // The beam of an engine: mb attested; or from an attested D by eq:BeamMass; or D from the
-// allowed bending (eq:bend_L2, beta2 = M g L2^2/(3 E I), I = pi D^4/64) and then mb.
+// allowed bending (eq:bend_L2) and then mb.
 void set_beam(Engine& e, const Plan& p) {
-  const double Lb = e.L1 + e.L2, rho = p.material.wood_density;
+  const double Lb = e.L1 + e.L2;
   if (p.mb) {
     e.mb = *p.mb;
-    e.D = p.D.value_or(std::sqrt(4 * e.mb / (rho * M_PI * Lb)));
+    e.D = p.D.value_or(beam_diameter(e.mb, Lb, p.material));
     return;
   }
-  e.D = p.D ? *p.D : std::pow(64 * e.M * p.material.g * e.L2 * e.L2 / (3 * M_PI * p.material.youngs_modulus * p.material.beta2), 0.25);
-  e.mb = rho * M_PI / 4 * e.D * e.D * Lb;  // eq:BeamMass
+  e.D = p.D ? *p.D : bending_diameter(e.M, e.L2, p.material);
+  e.mb = beam_mass(e.D, Lb, p.material);
 }
 
 // The engine at log coordinates x of the free quantities, in the order of start().
@@ -93,14 +93,14 @@ std::vector<double> start(const Plan& p, std::vector<std::string>& chosen) {
   } else if (p.Lb) {
     x.push_back(std::log(start_l)), chosen.insert(chosen.end(), {"L1", "L2"}), L2 = *p.Lb / (start_l + 1);
   } else {
-    // The size from the counterweight by eq:ExtraScalings, M = K^2 (k_M/beta2) L2^4, else 1 m.
-    L2 = p.M ? std::pow(*p.M * p.material.beta2 / (start_K * start_K * k_M(p.material)), 0.25) : 1.0;
+    // The size from the counterweight by eq:ExtraScalings, else 1 m.
+    L2 = p.M ? short_arm_for(*p.M, start_K, p.material) : 1.0;
     x.push_back(std::log(L2)), chosen.insert(chosen.end(), {"L1", "L2"});
     if (!p.l) x.push_back(std::log(start_l));
   }
   if (!p.L4) x.push_back(std::log(start_l4)), chosen.push_back("L4");
   if (!p.M) {
-    const double M = p.m ? *p.m / start_mu : start_K * start_K * k_M(p.material) / p.material.beta2 * std::pow(L2, 4);
+    const double M = p.m ? *p.m / start_mu : extra_scalings(start_K, L2, p.material).M;
     x.push_back(std::log(M)), chosen.push_back("M");
   }
   if (!p.m) x.push_back(std::log(start_mu)), chosen.push_back("m");
@@ -174,7 +174,7 @@ Completion complete_engine(const CompletionRequest& request) {
   if (!a.F) out.implied.push_back("F = 2/3 (the paper's standard)");
   // The beam: eq:BeamMass ties D, mb and Lb with the wood's density.
   if (a.mb && a.D && p.L1 && p.L2) {
-    const double from_D = p.material.wood_density * M_PI / 4 * *a.D * *a.D * (*p.L1 + *p.L2);
+    const double from_D = beam_mass(*a.D, *p.L1 + *p.L2, p.material);
     if (std::abs(from_D - *a.mb) > agreement * *a.mb)
       throw Error(ErrorKind::usage, "the attested values conflict: mb = " + value_text(*a.mb, "kg") + ", but D = " + value_text(*a.D, "m") +
                                         " gives mb = " + value_text(from_D, "kg") + " by eq:BeamMass with wood of " +

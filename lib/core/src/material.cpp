@@ -22,4 +22,20 @@ SizeFactors size_factors(double L2_from, const Material& from, double L2_to, con
   return {L2_to / L2_from, b.M / a.M, b.D / a.D, b.energy_unit / a.energy_unit};
 }
 
+double short_arm_for(double M, double K, const Material& material) {  // eq:ExtraScalings, solved for L2
+  return std::pow(M * material.beta2 / (K * K * k_M(material)), 0.25);
+}
+
+double bending_diameter(double M, double L2, const Material& material) {  // eq:bend_L2
+  return std::pow(64 * M * material.g * L2 * L2 / (3 * M_PI * material.youngs_modulus * material.beta2), 0.25);
+}
+
+double beam_mass(double D, double Lb, const Material& material) {  // eq:BeamMass
+  return material.wood_density * M_PI / 4 * D * D * Lb;
+}
+
+double beam_diameter(double mb, double Lb, const Material& material) {  // eq:BeamMass, solved for D
+  return std::sqrt(4 * mb / (material.wood_density * M_PI * Lb));
+}
+
 }  // namespace trebuchet

@@ -30,6 +30,19 @@ struct ExtraScalings {
 
 ExtraScalings extra_scalings(double K, double L2, const Material& material);
 
+/// The short arm L2 [m] at which eq:ExtraScalings gives a counterweight of `M` [kg] for K: its inverse.
+double short_arm_for(double M, double K, const Material& material);
+
+/// The beam diameter [m] that bends the short section by beta2 under the counterweight `M` [kg]
+/// at short arm `L2` [m]: eq:bend_L2, beta2 = M g L2^2/(3 E I) with I = pi D^4/64. At the
+/// optimum's M it is eq:ExtraScalings' D.
+double bending_diameter(double M, double L2, const Material& material);
+
+/// eq:BeamMass: the mass [kg] of a round beam of diameter `D` [m] and length `Lb` [m] in the
+/// material's wood, rho_d (pi/4) D^2 Lb; and its inverse, the diameter of a beam of mass `mb` [kg].
+double beam_mass(double D, double Lb, const Material& material);
+double beam_diameter(double mb, double Lb, const Material& material);
+
 /// Factors that carry an optimal engine from one size and material to another at the same
 /// scaled design, by eq:ExtraScalings: lengths and R with the length ratio, masses with the
 /// ratio of M, D with that of D, energies with that of M g L2. Section 7: beta2 from 1/300 to
