@@ -53,7 +53,7 @@ Material material_from(const Options& options, const Material& reference) {
 
 void print(const OptimalEngine& design, const std::string& format, int digits) {
   if (format == "json") std::cout << design_json(design).dump(2) << "\n";
-  else if (format == "csv") std::cout << csv_line(design_csv_header()) << csv_line(design_csv_row(design, digits));
+  else if (format == "csv") std::cout << csv_line(design_csv_header()) << design_csv_text(design, digits) << "\n";
   else std::cout << design_table(design);
 }
 
@@ -141,12 +141,12 @@ int run(const Options& options) {
             rows.push_back(out);
             return;
           }
-          std::vector<std::string> cells = {std::to_string(row.line)};
-          cells.insert(cells.end(), row.passed.begin(), row.passed.end());
-          const std::vector<std::string> design = row.design ? design_csv_row(in_option_words(*row.design), digits) : std::vector<std::string>(design_columns);
-          cells.insert(cells.end(), design.begin(), design.end());
-          cells.push_back(row.error ? row.error->message(option_word) : "");
-          std::cout << csv_line(cells);
+          std::string line = std::to_string(row.line);
+          for (const std::string& cell : row.passed) line += "," + csv_cell(cell);
+          line += ",";
+          line += row.design ? design_csv_text(in_option_words(*row.design), digits) : std::string(design_columns - 1, ',');
+          line += "," + csv_cell(row.error ? row.error->message(option_word) : "") + "\n";
+          std::cout << line;
         });
     if (json) std::cout << rows.dump(2) << "\n";
     if (failures > 0) {

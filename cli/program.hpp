@@ -54,6 +54,9 @@ inline const CLI::Option* option_with_empty_value(const CLI::App& app) {
 template <class Run>
 int run_program(CLI::App& app, Program program, int argc, char** argv, Run run) {
   const std::string name = app.get_name();
+  // The programs write through std::cout and std::cerr only: unsynchronised with C's stdio,
+  // they buffer output themselves (a large batch writes ~10^7 bytes).
+  std::ios::sync_with_stdio(false);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {

@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev     # Eigen 3.4
   libgsl-dev        # GSL 2.7: odeiv2, roots, minimisation
   nlohmann-json3-dev
+  libfmt-dev        # {fmt} 9: numbers in CSV (header-only)
   catch2            # Catch2 2.13 with CTest discovery
   libcli11-dev
   pkg-config libxlsxwriter-dev  # trebuchet-calc --spreadsheet writes .xlsx with it

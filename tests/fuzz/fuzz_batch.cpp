@@ -16,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t siz
     trebuchet::run_batch(input, trebuchet::builtin_scaling_table(), trebuchet::DesignRequest{},
                          [](const std::vector<std::string>&) {},
                          [](const trebuchet::BatchRow& row) {
-                           if (row.design) require_writes([&] { trebuchet::design_csv_row(*row.design, 17); });
+                           if (row.design) require_writes([&] { trebuchet::design_csv_text(*row.design, 17); });
                          });
   } catch (const trebuchet::Error&) {
   }

@@ -274,19 +274,32 @@ std::vector<std::string> design_csv_header() {
   return header;
 }
 
-std::vector<std::string> design_csv_row(const OptimalEngine& design, int digits) {
+std::string design_csv_text(const OptimalEngine& design, int digits) {
   const std::vector<Field> fields = design_fields(design);
   require_finite(fields);
-  std::vector<std::string> row;
-  for (const Field& field : fields) row.push_back(csv_number(field.value, digits));
-  row.insert(row.end(), {std::string(branch_name(design.branch)), join(design.warnings, "; "), "vacuum"});
-  return row;
+  std::string text;
+  text.reserve(16 * fields.size() + 64);
+  for (const Field& field : fields) {
+    append_csv_number(text, field.value, digits);
+    text += ',';
+  }
+  text += csv_cell(branch_name(design.branch));
+  text += ',';
+  text += csv_cell(join(design.warnings, "; "));
+  text += ",vacuum";
+  return text;
 }
 
 std::string csv_line(const std::vector<std::string>& cells) {
   std::string line;
-  for (std::size_t k = 0; k < cells.size(); ++k) line += (k ? "," : "") + csv_cell(cells[k]);
-  return line + "\n";
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    if (k) line += ',';
+    const std::string& cell = cells[k];
+    const bool plain = std::none_of(cell.begin(), cell.end(), [](char c) { return c == ',' || c == '"' || c == '\n' || c == '\r'; });
+    line += plain ? cell : csv_cell(cell);  // the common case without a copy
+  }
+  line += '\n';
+  return line;
 }
 
 namespace {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <Eigen/Dense>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "trebuchet/error.hpp"
@@ -217,13 +218,14 @@ std::optional<Candidate> seam_candidate(const std::vector<Candidate>& candidates
 // Every number of a design is finite, and lengths and masses are positive: extreme givens, a
 // material far from wood or a huge scale factor can push one out of the range of doubles, and
 // that is the input's fault, named with `cause`.
-void require_representable(const OptimalEngine& d, const std::string& cause) {
+// `cause` gives the start of the message, built only when one is thrown (the calculator's hot path).
+void require_representable(const OptimalEngine& d, const std::function<std::string()>& cause) {
   const Engine& e = d.engine;
   const std::pair<const char*, double> positive[] = {{"R", d.capacity.R}, {"T", d.capacity.T}, {"L1", e.L1}, {"L2", e.L2}, {"L3", e.L3},
                                                      {"L4", e.L4}, {"D", e.D}, {"M", e.M}, {"m", e.m}, {"mb", e.mb},
                                                      {"Delta U", potential_energy_drop(e)}};
   auto fail = [&](const char* name, const char* how) {
-    throw Error(ErrorKind::bad_number, cause + " gives an engine whose " + name + " is " + how +
+    throw Error(ErrorKind::bad_number, cause() + " gives an engine whose " + name + " is " + how +
                                            " for a number (beyond about 1e-308 to 1e308); give values of ordinary size");
   };
   for (const auto& [name, value] : positive) {
@@ -503,7 +505,7 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
                                             ", above the limit of " + format_significant(max_amplification, 2) +
                                             "; give a better-conditioned pair such as R and m, or M and m");
   if (chosen.amplification > warn_amplification) result.warnings.push_back("ill-conditioned pair: " + conditioning());
-  require_representable(result, "the request " + pair());
+  require_representable(result, [&] { return "the request " + pair(); });
 
   if (segment.branch != Branch::none) {
     double overlap_lo = -std::numeric_limits<double>::infinity(), overlap_hi = -overlap_lo;
@@ -544,7 +546,7 @@ OptimalEngine scale_optimal_engine(const OptimalEngine& design, double lambda) {
   // The capacity moves along a line of constant X (section 6.1): X stays, Y grows.
   const CapacityCoordinates shift = capacity_coordinates(std::log(factors.length), std::log(factors.energy));
   scaled.coordinates.Y += shift.Y;
-  require_representable(scaled, "scaling by " + format_significant(lambda, 3));
+  require_representable(scaled, [&] { return "scaling by " + format_significant(lambda, 3); });
   return scaled;
 }
 

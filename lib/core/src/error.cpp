@@ -19,6 +19,7 @@ std::size_t reference_length(std::string_view text, std::size_t at) {
 }  // namespace
 
 std::string with_words(std::string_view text, const std::function<std::string(std::string_view)>& word) {
+  if (text.find('{') == std::string_view::npos) return std::string(text);
   std::string out;
   for (std::size_t at = 0; at < text.size();) {
     if (const std::size_t length = reference_length(text, at)) {

@@ -59,6 +59,8 @@ std::string csv_cell(std::string_view text, char separator = ',');
 
 /// A number for CSV output with `digits` significant digits (17: every double round-trips).
 std::string csv_number(double value, int digits);
+/// csv_number appended to `out`, without a string of its own (a batch writes ~10^6 of them).
+void append_csv_number(std::string& out, double value, int digits);
 
 /// The default significant digits of CSV numbers, and the range --digits accepts.
 inline constexpr int default_csv_digits = 6;

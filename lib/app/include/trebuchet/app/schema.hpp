@@ -96,9 +96,10 @@ nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings
 nlohmann::ordered_json design_json(const OptimalEngine& design);
 
 /// The design's CSV columns, keys with units (R_m, T_J, ...), branch, warnings and air (vacuum), and one
-/// design's cells with `digits` significant digits.
+/// design's cells with `digits` significant digits, quoted where they must be and joined by commas
+/// (no line feed): a batch appends them to a row.
 std::vector<std::string> design_csv_header();
-std::vector<std::string> design_csv_row(const OptimalEngine& design, int digits);
+std::string design_csv_text(const OptimalEngine& design, int digits);
 
 /// Keys R, T, eps, Q, force_factor, v, h, x, A_deg, t_release, t_liftoff, FS_perp_mg, FR_Mg,
 /// dFRh_Mg, energy_drift; with a check, also predicted, deviation, tolerance and pass.
