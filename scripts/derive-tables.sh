@@ -6,7 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTREBUCHET_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build build -j"$(nproc)" --target trebuchet-verify compare-tables
 parts=$(mktemp -d)
 trap 'rm -rf "$parts"' EXIT

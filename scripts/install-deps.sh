@@ -17,6 +17,7 @@ packages=(
   libxml2-utils     # xmllint: the pictures' SVG is checked well-formed
   librsvg2-bin      # rsvg-convert: SVG pictures rendered to PNG to look at (scripts/figures.sh)
   clang-14 libclang-rt-14-dev  # libFuzzer for the fuzz targets of tests/fuzz
+  parallel slurm-wlm munge     # tab:CPNC derived in shards under GNU parallel and Slurm (tests/scale)
 )
 
 missing=()

@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTREBUCHET_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build build -j"$(nproc)" --target bench-shot
 taskset -c 1 build/tests/bench-shot "${1:-0.2}" > docs/work_precision.csv
 gnuplot docs/work_precision.gp

@@ -1,15 +1,30 @@
 #include "trebuchet/format.hpp"
 
-#include <charconv>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 
 namespace trebuchet {
 
+// The fewest significant digits that read back as the same double, written fixed ("150",
+// "0.001") or in scientific notation ("3.1e-05"), whichever is shorter, as std::to_chars writes
+// it. By C's printf: messages only (the application layer writes data with {fmt}), and portable
+// to builds whose library has no floating-point std::to_chars, such as a browser's.
 std::string format_number(double value) {
-  char buffer[32];
-  auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return ec == std::errc() ? std::string(buffer, end) : std::string("?");
+  if (!std::isfinite(value)) return value != value ? "nan" : value > 0 ? "inf" : "-inf";
+  char scientific[40];
+  int digits = 1;
+  for (; digits < 17; ++digits) {
+    std::snprintf(scientific, sizeof scientific, "%.*e", digits - 1, value);
+    if (std::strtod(scientific, nullptr) == value) break;
+  }
+  std::snprintf(scientific, sizeof scientific, "%.*e", digits - 1, value);
+  const int exponent = std::atoi(std::strchr(scientific, 'e') + 1);
+  char fixed[400];
+  std::snprintf(fixed, sizeof fixed, "%.*f", std::max(0, digits - 1 - exponent), value);
+  return std::strlen(fixed) <= std::strlen(scientific) ? fixed : scientific;
 }
 
 std::string format_significant(double value, int significant) {
