@@ -36,7 +36,7 @@ std::string cell(const std::string& label, const std::string& value) {
 }  // namespace
 
 std::string design_table(const OptimalEngine& design) {
-  design_json(design);  // the same finiteness check as JSON
+  require_finite(design);
   const Engine& e = design.engine;
   const ScaledDesign s = scaled_design(e);
   std::string t;
@@ -73,7 +73,7 @@ std::string design_table(const OptimalEngine& design) {
 
 std::string verification_table(const Engine& engine, const ShotSettings& settings, const Verification& v,
                                const std::optional<CapacityCheck>& check) {
-  verification_json(v, check);  // the same finiteness check as JSON
+  require_finite(v);
   auto sig = [](double x, int digits = 5) { return format_significant(x, digits); };
   const double g = engine.material.g, mg_kN = engine.m * g / 1e3, Mg_kN = engine.M * g / 1e3;
   const ReleaseCriterion& c = settings.criterion;

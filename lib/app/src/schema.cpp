@@ -247,6 +247,8 @@ nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings
   return out;
 }
 
+void require_finite(const OptimalEngine& design) { require_finite(design_fields(design)); }
+
 nlohmann::ordered_json design_json(const OptimalEngine& design) {
   const std::vector<Field> fields = design_fields(design);
   require_finite(fields);
@@ -355,6 +357,8 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
                          csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), join(v.warnings, "; ")});
   return row;
 }
+
+void require_finite(const Verification& v) { verification_fields(v); }
 
 nlohmann::ordered_json verification_json(const Verification& v, const std::optional<CapacityCheck>& check) {
   nlohmann::ordered_json out;

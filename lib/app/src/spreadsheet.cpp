@@ -77,14 +77,15 @@ struct Column {
   std::string f;
   std::vector<double> v;
 };
-Expr index(const Column& column, const Expr& k) {
+// The k-th element (from 1) of a column: INDEX(column, k).
+Expr element(const Column& column, const Expr& k) {
   return {"INDEX(" + column.f + "," + k.f + ")", column.v.at(static_cast<std::size_t>(k.v) - 1)};
 }
 struct TextColumn {
   std::string f;
   std::vector<std::string> v;
 };
-Text index(const TextColumn& column, const Expr& k) {
+Text element(const TextColumn& column, const Expr& k) {
   return {"INDEX(" + column.f + "," + k.f + ")", column.v.at(static_cast<std::size_t>(k.v) - 1)};
 }
 // MATCH(MAX(range), range, 0): the first row holding the largest value, from 1.
@@ -399,7 +400,7 @@ DesignResult write_design(lxw_workbook* book, const Formats& formats, const std:
   for (int r = 0; r < c.rows; ++r) {
     const int row = first + r;
     const Expr k = s.number(row, 0, r + 1);
-    const Expr block = s.formula(row, 1, equal(theta, index(c.theta, k)) * below(abs(F - index(c.F, k)), num(1e-9)));
+    const Expr block = s.formula(row, 1, equal(theta, element(c.theta, k)) * below(abs(F - element(c.F, k)), num(1e-9)));
     // c, p or q (j = 0, 1, 2) of a given's law in this segment: column 3 (k - 1) + j + 1 of the laws.
     auto law = [&](int given, int j) {
       const std::size_t q = static_cast<std::size_t>(k_of[given].v) - 1;
@@ -413,11 +414,11 @@ DesignResult write_design(lxw_workbook* book, const Formats& formats, const std:
     const Expr lr = s.formula(row, 9, (b1 * q2 - q1 * b2) / safe_det);
     const Expr lt = s.formula(row, 10, (p1 * b2 - b1 * p2) / safe_det);
     const Expr X = s.formula(row, 11, (num(5) * lr - lt) / sqrt26);  // eq:XY_RT
-    const Expr X_min = index(c.X_min, k), X_max = index(c.X_max, k);
+    const Expr X_min = element(c.X_min, k), X_max = element(c.X_max, k);
     const Expr inside = s.formula(row, 12, block * at_most(X_min - num(1e-12), X) * at_most(X, X_max + num(1e-12)) * (num(1) - below(abs(det), num(1e-12))));
-    const Text segment_branch = index(c.branch, k);
+    const Text segment_branch = element(c.branch, k);
     const Expr allowed = s.formula(row, 13, either(either(is(segment_branch, "none"), automatic), same(segment_branch, branch)));
-    const Expr X_d = index(c.X_d, k);
+    const Expr X_d = element(c.X_d, k);
     const Expr preferred = s.formula(row, 14, choose(is(segment_branch, "lower"), below(X, X_d), choose(is(segment_branch, "upper"), at_most(X_d, X), num(1))));
     const Expr depth = s.formula(row, 15, min(X - X_min, X_max - X));
     const Expr score = s.formula(row, 16, inside * allowed * (num(10) + num(5) * automatic * preferred + depth));
@@ -429,12 +430,12 @@ DesignResult write_design(lxw_workbook* book, const Formats& formats, const std:
 
   const Expr best = s.formula_row(16, "best score", largest(score_col), "", "0: no segment of the table holds the solution");
   const Expr k = s.formula_row(17, "segment", first_largest(score_col), "", "the row below with the best score: the segment whose interval holds X");
-  const Expr lr = index(lr_col, k), lt = index(lt_col, k);
-  const Expr amplification = index(amp_col, k);
+  const Expr lr = element(lr_col, k), lt = element(lt_col, k);
+  const Expr amplification = element(amp_col, k);
   const Expr ok = at_most(num(10), best);
   auto Z = [&](Param param) {  // eq:ZRT
     const int z = index(param);
-    return index(c.a[z], k) * index(c.Z0[z], k) * exp(index(c.p[z], k) * lr + index(c.q[z], k) * lt);
+    return element(c.a[z], k) * element(c.Z0[z], k) * exp(element(c.p[z], k) * lr + element(c.q[z], k) * lt);
   };
   DesignResult out;
   int row = 19;
@@ -458,7 +459,7 @@ DesignResult write_design(lxw_workbook* book, const Formats& formats, const std:
                                         choose(at_most(out.L3, num(0)), literal("refused: no room for the counterweight arm (L3 <= 0)"), literal("ok"))),
                              literal("no segment of the table holds these givens: X lies outside every interval of this block"));
   s.text_row(row++, "status", status, "what the calculator would say");
-  s.text_row(row++, "segment branch", index(c.branch, k), "the branch of the chosen segment (section 6.2)");
+  s.text_row(row++, "segment branch", element(c.branch, k), "the branch of the chosen segment (section 6.2)");
   return out;
 }
 

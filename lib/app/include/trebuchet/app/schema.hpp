@@ -87,6 +87,11 @@ struct DesignRows {
 /// are dropped; any other column passes through. Throws Error(usage) for an input without a header.
 DesignRows read_design_rows(std::istream& input, const std::string& source);
 
+/// Throw Error(bad_number | numerical) naming the first figure of the record that is not finite,
+/// as its writers do: for a report that prints the record in another form.
+void require_finite(const OptimalEngine& design);
+void require_finite(const Verification& verification);
+
 /// The calculator's design: R, T, X, Y, the engine's keys, amplification, branch, warnings and,
 /// near X_d, branch_steps.
 /// What a shot assumed: "air" ("vacuum"), g [m/s^2], theta_i_deg, the arm fraction F, the
