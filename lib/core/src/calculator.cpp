@@ -397,7 +397,8 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
       const BeamLengthSolutions solved = invert_with_beam_length(
           *block, segment, first_is_Lb ? *law_j : *law_i, first_is_Lb ? log_j : log_i, first_is_Lb ? log_i : log_j);
       candidates.insert(candidates.end(), solved.found.begin(), solved.found.end());
-      if (solved.Lb_max > 0)
+      // A span beyond the range of numbers (an extreme l) says nothing; the message then names the inversion.
+      if (solved.Lb_max > 0 && std::isfinite(solved.Lb_min) && std::isfinite(solved.Lb_max))
         beam_length_spans += std::string(beam_length_spans.empty() ? "" : ", ") + format_significant(solved.Lb_min, 3) +
                              " to " + format_significant(solved.Lb_max, 3) + " m in segment " +
                              describe_interval(segment.X_min, segment.X_max);
