@@ -1,8 +1,11 @@
 // complete: the best engine that keeps what a source attests (completion.hpp).
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "program.hpp"
 #include "run.hpp"
+#include "trebuchet/format.hpp"
 #include "trebuchet/app/report.hpp"
 
 namespace trebuchet::verify {
@@ -12,7 +15,17 @@ int run_complete(const Options& o) {
     throw Error(ErrorKind::usage, "--plot draws the histogram of a Monte Carlo run; give a value as a range or a spread, or drop --plot");
   const CompletionRequest request = completion_request(o);
   Completion completion = complete_engine(request);
-  completion.calculator_note = with_words(completion.calculator_note, option_word);
+  // The calculator's note and warnings speak of its options; those only it has are said to be its.
+  const auto in_calculator_words = [](std::string& text) {
+    std::vector<std::string> only_calculator;
+    for (const char* name : {"scale", "extrapolate", "branch"})
+      if (text.find("{{" + std::string(name) + "}}") != std::string::npos) only_calculator.push_back(option_word(name));
+    text = with_words(text, option_word);
+    if (!only_calculator.empty()) text += " (" + join(only_calculator, " and ") + (only_calculator.size() > 1 ? " are options" : " is an option") + " of trebuchet-calc)";
+  };
+  in_calculator_words(completion.calculator_note);
+  if (completion.calculator)
+    for (std::string& warning : completion.calculator->warnings) in_calculator_words(warning);
   if (o.format == Format::json) std::cout << completion_json(completion, request.settings).dump(2) << "\n";
   else std::cout << completion_table(completion, request.settings);
   return exit_success;

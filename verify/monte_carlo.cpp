@@ -30,6 +30,12 @@ int run_monte_carlo(const Options& o, bool complete) {
     if (first.design.L3 && first.design.F)
       throw Error(ErrorKind::usage, "--L3 and --F both fix the counterweight arm (L2 + L3 = F H); give one of them");
     engine_of(first);
+  } else {
+    try {  // one completion more: bad input is refused before the run; a numerical failure is a sample's
+      complete_engine(completion_request(first));
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::numerical) throw;
+    }
   }
   const auto start = std::chrono::steady_clock::now();
   const MonteCarloSummary summary = trebuchet::run_monte_carlo(o.samples, o.seed, o.threads, [&](std::mt19937_64& random) {

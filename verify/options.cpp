@@ -5,6 +5,7 @@
 #include <iterator>
 #include <cstdio>
 #include <thread>
+#include <type_traits>
 
 #include "program.hpp"
 #include "trebuchet/format.hpp"
@@ -43,7 +44,8 @@ CLI::Option* value_option(CLI::App* app, Options& o, const std::string& name, Sl
   return parsed_option(app, name, [&o, name, slot, dimension, spreads, positive](const std::string& text) {
     const auto spread = parse_spread(text, dimension, name);
     if (spread && !spreads)
-      throw Error(ErrorKind::usage, name + ": '" + text + "' is a range or a spread; they are for shot and complete, give one value");
+      throw Error(ErrorKind::usage, name + ": '" + text + "' is a range or a spread; give one value (ranges and spreads are for the "
+                                                          "engine's values, --theta, --psi-i, --target-level and the air, in shot and complete)");
     slot(o) = spread ? spread->a : positive ? parse_positive(text, dimension, name) : parse_value(text, dimension, name);
     if (!spread) return;
     const auto after = std::find_if(o.uncertain.begin(), o.uncertain.end(), [&](const Uncertain& u) { return draw_rank(u.input.name) > draw_rank(name); });
@@ -92,12 +94,15 @@ template <class Integer>
 void integer_option(CLI::App* app, const std::string& name, Integer& target, Integer lowest, Integer highest, const std::string& range,
                     const std::string& help) {
   parsed_option(app, name, [&target, name, lowest, highest, range](const std::string& text) {
-    long long value = 0;
+    // Read as a wider integer of the same signedness: a negative seed is refused, not wrapped.
+    using Wide = std::conditional_t<std::is_signed_v<Integer>, long long, unsigned long long>;
+    Wide value = 0;
+    const bool negative = !text.empty() && text.front() == '-';
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if ((negative && std::is_unsigned_v<Integer>) || (ec == std::errc() && end == text.data() + text.size() && (value < lowest || (highest > 0 && value > highest))))
+      throw Error(ErrorKind::usage, name + ": " + text + " must be " + range);
     if (ec != std::errc() || end != text.data() + text.size())
       throw Error(ErrorKind::usage, name + ": '" + text + "' is not a whole number; give " + range);
-    if (value < static_cast<long long>(lowest) || (highest > 0 && static_cast<unsigned long long>(value) > static_cast<unsigned long long>(highest)))
-      throw Error(ErrorKind::usage, name + ": " + text + " must be " + range);
     target = static_cast<Integer>(value);
   }, help);
 }

@@ -38,7 +38,7 @@ std::string release_name(Release release) { return name_in(release_names, releas
 Release parse_release(std::string_view name, std::string_view option) {
   if (const Release* release = value_in(release_names, name)) return *release;
   throw Error(ErrorKind::usage, std::string(option) + ": '" + std::string(name) +
-                                    "' is not a release criterion; use Q (eq:Q, eq:Q_n with {n}), eps or range");
+                                    "' is not a release criterion; use Q (eq:Q, eq:Q_n with {{n}}), eps or range");
 }
 
 std::string stepper_name(Stepper stepper) { return name_in(stepper_table, stepper); }

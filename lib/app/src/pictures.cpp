@@ -367,7 +367,7 @@ void run_gnuplot(const std::filesystem::path& folder, const std::string& script)
   }
   int status = 0;
   if (child < 0 || waitpid(child, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw Error(ErrorKind::usage, "{plot}: gnuplot failed on " + (folder / script).string() + ", see gnuplot.log there" +
+    throw Error(ErrorKind::usage, "{{plot}}: gnuplot failed on " + (folder / script).string() + ", see gnuplot.log there" +
                                       (child >= 0 && WIFEXITED(status) && WEXITSTATUS(status) == 127 ? " (gnuplot is not installed; apt-get install gnuplot-nox)" : ""));
 }
 
@@ -381,7 +381,7 @@ void write_picture_folder(const std::string& dir, const std::vector<PictureFile>
   for (const PictureFile& file : files) {
     std::ofstream out(folder / file.name);
     out << file.text;
-    if (!out) throw Error(ErrorKind::usage, "{plot}: cannot write " + (folder / file.name).string() + "; give a folder you can write to");
+    if (!out) throw Error(ErrorKind::usage, "{{plot}}: cannot write " + (folder / file.name).string() + "; give a folder you can write to");
   }
   for (const std::string& script : scripts) run_gnuplot(folder, script);
 }

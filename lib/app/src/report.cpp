@@ -24,7 +24,7 @@ std::string energy_text(double joules) {
 
 // The series is computed: a number that is not finite means the integration failed.
 double finite_or_error(double value) {
-  if (!std::isfinite(value)) throw Error(ErrorKind::numerical, "the result in the series is not finite; tighten {rtol}");
+  if (!std::isfinite(value)) throw Error(ErrorKind::numerical, "the result in the series is not finite; tighten {{rtol}}");
   return value;
 }
 

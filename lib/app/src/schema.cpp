@@ -12,9 +12,9 @@
 namespace trebuchet {
 namespace {
 
-// How messages name a key of a design: "{key}" for flags, which the program writes as its
+// How messages name a key of a design: "{{key}}" for flags, which the program writes as its
 // option (error.hpp), or "where.key" in a file.
-std::string engine_key_name(const std::string& where, const std::string& key) { return where.empty() ? "{" + key + "}" : where + "." + key; }
+std::string engine_key_name(const std::string& where, const std::string& key) { return where.empty() ? "{{" + key + "}}" : where + "." + key; }
 
 // A number in SI, or a string with a unit suffix.
 std::optional<double> read_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension,
@@ -34,7 +34,7 @@ std::optional<double> read_value(const nlohmann::json& object, const std::string
 // A value a design must have; the hint says what it is, with an example.
 double required(const std::optional<double>& value, const std::string& key, const std::string& where, const std::string& hint) {
   if (!value)
-    throw Error(ErrorKind::usage, (where.empty() ? "{" + key + "} is missing" : where + ": key \"" + key + "\" is missing") + "; give " + hint);
+    throw Error(ErrorKind::usage, (where.empty() ? "{{" + key + "}} is missing" : where + ": key \"" + key + "\" is missing") + "; give " + hint);
   return *value;
 }
 
@@ -126,12 +126,6 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   const std::string named = where.empty() ? std::string("flags") : where;
   if (v.L3) {
     e.L3 = *v.L3;
-    // Both, as the programs write them: they must agree to the rounding of the values written
-    // (6 significant digits in CSV move F by at most ~2e-5).
-    if (v.F && e.theta_i_deg > 0 && e.theta_i_deg < 90 && !(std::abs(arm_fraction(e) / *v.F - 1) <= 1e-4))
-      throw Error(ErrorKind::usage, named + ": L3 = " + format_significant(e.L3, 6) + " m gives F = (L2 + L3)/H = " +
-                                        format_significant(arm_fraction(e), 6) + ", not F = " + format_significant(*v.F, 6) +
-                                        "; both fix the counterweight arm, give one of them");
   } else if (const auto F = v.F) {
     if (!(*F > 0))
       throw Error(ErrorKind::bad_number, engine_key_name(where, "F") + " = " + format_significant(*F, 6) +
@@ -155,6 +149,12 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   } catch (const Error& error) {
     throw Error(error.kind(), error.message([&](std::string_view key) { return engine_key_name(where, std::string(key)); }));
   }
+  // L3 and F both, as the programs write them: L3 is used, and F must agree with it to the
+  // rounding of values written to 3 significant digits or more (2e-3, with room to spare).
+  if (v.L3 && v.F && !(std::abs(arm_fraction(e) / *v.F - 1) <= 2e-2))
+    throw Error(ErrorKind::usage, named + ": L3 = " + format_significant(e.L3, 6) + " m gives F = (L2 + L3)/H = " +
+                                      format_significant(arm_fraction(e), 6) + ", not F = " + format_significant(*v.F, 6) +
+                                      "; both fix the counterweight arm, give one of them");
   if (v.R.has_value() != v.T.has_value()) throw Error(ErrorKind::usage, named + ": a capacity needs both R and T; give both or neither");
   if (v.R && !(*v.R > 0 && *v.T > 0)) throw Error(ErrorKind::bad_number, named + ": R and T must be positive");
   if (v.R) in.capacity = Capacity{*v.R, *v.T, 0};
@@ -316,7 +316,7 @@ std::vector<Field> verification_fields(const Verification& v) {
       {"energy_drift", v.energy_drift}};
   for (const Field& field : fields)
     if (!std::isfinite(field.value))
-      throw Error(ErrorKind::numerical, std::string("the result ") + field.key + " is not finite; tighten {rtol}");
+      throw Error(ErrorKind::numerical, std::string("the result ") + field.key + " is not finite; tighten {{rtol}}");
   return fields;
 }
 

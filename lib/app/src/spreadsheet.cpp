@@ -585,9 +585,9 @@ void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& input
                                             "instead, or design with Lb in trebuchet-calc itself");
   // libxlsxwriter finds an unwritable path only when it closes the file: try it first.
   if (!std::ofstream(path, std::ios::binary | std::ios::app))
-    throw Error(ErrorKind::usage, "{spreadsheet}: cannot write '" + path + "'; give a file you can write to");
+    throw Error(ErrorKind::usage, "{{spreadsheet}}: cannot write '" + path + "'; give a file you can write to");
   lxw_workbook* book = workbook_new(path.c_str());
-  if (!book) throw Error(ErrorKind::usage, "{spreadsheet}: cannot write '" + path + "'; give a file you can write to");
+  if (!book) throw Error(ErrorKind::usage, "{{spreadsheet}}: cannot write '" + path + "'; give a file you can write to");
   Formats formats{};
   formats.title = workbook_add_format(book);
   format_set_bold(formats.title);
@@ -610,7 +610,7 @@ void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& input
   write_model_scaling(book, formats, capacity, inputs.model_scale);
   write_glossary(book, formats);
   if (workbook_close(book) != LXW_NO_ERROR)
-    throw Error(ErrorKind::usage, "{spreadsheet}: cannot write '" + path + "'; give a file you can write to");
+    throw Error(ErrorKind::usage, "{{spreadsheet}}: cannot write '" + path + "'; give a file you can write to");
 }
 
 }  // namespace trebuchet

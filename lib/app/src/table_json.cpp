@@ -314,7 +314,7 @@ Shard parse_shard(const std::string& text) {
   const std::string_view view(text);
   if (slash == std::string::npos || !whole(view.substr(0, slash), shard.k) || !whole(view.substr(slash + 1), shard.n) ||
       shard.n < 1 || shard.k < 1 || shard.k > shard.n)
-    throw Error(ErrorKind::usage, "{shard}: '" + text + "' is not a part; give k/N with 1 <= k <= N <= " +
+    throw Error(ErrorKind::usage, "{{shard}}: '" + text + "' is not a part; give k/N with 1 <= k <= N <= " +
                                       std::to_string(std::numeric_limits<int>::max()) + ", e.g. 2/8");
   return shard;
 }
@@ -324,7 +324,7 @@ namespace {
 const char* const part_kind = "trebuchet sweep part";
 
 [[noreturn]] void fail(const std::string& origin, const std::string& problem) {
-  throw Error(ErrorKind::data_file, origin + ": " + problem + "; give the parts that derive-table writes with {shard} k/N");
+  throw Error(ErrorKind::data_file, origin + ": " + problem + "; give the parts that derive-table writes with {{shard}} k/N");
 }
 
 }  // namespace

@@ -53,7 +53,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   nlohmann::ordered_json simulated;
   std::string fitted_table;
   if (check.fit) {
-    if (!record.capacity) throw Error(ErrorKind::usage, "fit needs a capacity; give {R} and {T}, or \"R\" and \"T\" in the input");
+    if (!record.capacity) throw Error(ErrorKind::usage, "fit needs a capacity; give {{R}} and {{T}}, or \"R\" and \"T\" in the input");
     const CapacityFit result = fit_capacity(scaled_design(engine), *record.capacity, engine.material, check.settings);
     engine = result.engine;
     simulated["simulations"] = result.simulations;
@@ -76,7 +76,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   if (!check.series_path.empty()) {
     std::ofstream file(check.series_path);
     file << trace_csv(trace, engine);
-    if (!file) throw Error(ErrorKind::usage, "{series}: cannot write '" + check.series_path + "'");
+    if (!file) throw Error(ErrorKind::usage, "{{series}}: cannot write '" + check.series_path + "'");
   }
   out.outside_tolerance = capacity && !capacity->pass;
   return out;

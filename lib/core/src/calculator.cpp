@@ -270,10 +270,10 @@ Candidate choose(const std::vector<Candidate>& inside, const TableBlock& block, 
                 "the " + std::string(choice == BranchChoice::lower ? "lower" : "upper") +
                     " branch has no optimum for these givens (the solution lies at X = " +
                     format_significant(other.X(), 3) + " on the " + std::string(branch_name(other.segment->branch)) +
-                    " branch); use {branch} auto or {branch} " + std::string(branch_name(other.segment->branch)));
+                    " branch); use {{branch}} auto or {{branch}} " + std::string(branch_name(other.segment->branch)));
   }
   if (choice != BranchChoice::automatic && allowed.front().segment->branch == Branch::none)
-    warnings.push_back("{branch} " + std::string(choice == BranchChoice::lower ? "lower" : "upper") +
+    warnings.push_back("{{branch}} " + std::string(choice == BranchChoice::lower ? "lower" : "upper") +
                        " ignored: only one optimal branch exists at X = " + format_significant(allowed.front().X(), 3));
 
   // In the overlap, auto takes the branch with the higher Q: lower below X_d, upper above (section 6.2).
@@ -296,7 +296,7 @@ Candidate choose(const std::vector<Candidate>& inside, const TableBlock& block, 
     if (std::abs(c.X() - best.front().X()) < 1e-6 && std::abs(c.lt - best.front().lt) < 1e-6) continue;
     warnings.push_back("another optimal engine also matches these givens: X = " + format_significant(c.X(), 3) +
                        (c.segment->branch == Branch::none ? "" : " on the " + std::string(branch_name(c.segment->branch)) + " branch") +
-                       "; it is not shown (use {branch} or other givens to select it)");
+                       "; it is not shown (use {{branch}} or other givens to select it)");
   }
   return best.front();
 }
@@ -363,7 +363,7 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
   const Given& gj = request.second;
   if (gi.quantity == gj.quantity)
     throw Error(ErrorKind::given_count, "both givens are " + std::string(quantity_name(gi.quantity)) +
-                                            "; give two different quantities, e.g. {R} 150m {m} 50kg");
+                                            "; give two different quantities, e.g. {{R}} 150m {{m}} 50kg");
   for (const Given& g : {gi, gj})
     if (!(g.value > 0) || !std::isfinite(g.value))
       throw Error(ErrorKind::bad_number, describe_given(g) + " must be a positive finite number");
@@ -372,7 +372,7 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
   if (!block)
     throw Error(ErrorKind::out_of_range, "tab:CPNC has no constants for theta_i = " + format_number(request.theta_i_deg) +
                                              " deg with F = " + format_fraction(request.F) + "; it has " +
-                                             table.block_list() + " ({theta_i_deg}, {F})");
+                                             table.block_list() + " ({{theta_i_deg}}, {{F}})");
 
   const SizeFactors scaling = size_factors(1, table.reference, 1, request.material);
   const Material& m = request.material;
@@ -450,9 +450,9 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
                                (gj.quantity == Quantity::R && gj.value < 0.25 * table.R0);
       if (short_range)
         message += "; for a small model of a full-size engine, design the full-size one and scale it, e.g. "
-                   "{R} 425m {T} 224kJ {scale} 80/425 (tab:Denny's 80 m model)";
-      message += request.extrapolate ? "; even {extrapolate} finds no segment that solves the pair"
-                                     : "; or add {extrapolate} to use the nearest segment beyond its interval";
+                   "{{R}} 425m {{T}} 224kJ {{scale}} 80/425 (tab:Denny's 80 m model)";
+      message += request.extrapolate ? "; even {{extrapolate}} finds no segment that solves the pair"
+                                     : "; or add {{extrapolate}} to use the nearest segment beyond its interval";
       throw Error(ErrorKind::out_of_range, message);
     }
     std::vector<Candidate> allowed;
@@ -528,7 +528,7 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
                                   describe_interval(overlap_lo, overlap_hi) + "; this is the " +
                                   std::string(branch_name(segment.branch)) + " branch. At X_d = " +
                                   format_number(*block->branch_switch_X) + " the optimum jumps by " + steps +
-                                  " (eq:ZiZj_vs_X); {branch} lower|upper selects one");
+                                  " (eq:ZiZj_vs_X); {{branch}} lower|upper selects one");
       }
     }
   }

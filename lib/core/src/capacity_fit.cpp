@@ -86,11 +86,11 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
   try {
     check_engine(fit.engine);
   } catch (const Error& e) {
-    throw Error(e.kind(), "the fitted engine: " + std::string(e.what()));
+    throw Error(e.kind(), "the fitted engine: " + e.named_message());
   }
   if (!(fit.verification.eps <= 1))
     throw Error(ErrorKind::numerical, "the fitted engine has eps = " + format_significant(fit.verification.eps, 4) +
-                                          " > 1: energy is not conserved (eq:Aux); tighten {rtol}");
+                                          " > 1: energy is not conserved (eq:Aux); tighten {{rtol}}");
   if (!(std::abs(found.value / target - 1) <= rtol))
     throw Error(ErrorKind::numerical, "the fit reached R = " + format_significant(fit.verification.capacity.R, 8) + " m with " +
                                           (matched == Matched::energy ? "T = " + format_significant(found.value, 8) + " J"

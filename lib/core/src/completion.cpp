@@ -128,9 +128,9 @@ Completion complete_engine(const CompletionRequest& request) {
     if (!value) continue;
     const std::string key(name);
     if (key == "mb" && !(*value >= 0))
-      throw Error(ErrorKind::bad_number, "{mb} = " + format_significant(*value, 6) + " must not be negative");
+      throw Error(ErrorKind::bad_number, "{{mb}} = " + format_significant(*value, 6) + " must not be negative");
     if (key != "mb" && key != "theta_i" && !(*value > 0))
-      throw Error(ErrorKind::bad_number, "{" + key + "} = " + format_significant(*value, 6) + " must be positive; give the attested value, or leave it out");
+      throw Error(ErrorKind::bad_number, "{{" + key + "}} = " + format_significant(*value, 6) + " must be positive; give the attested value, or leave it out");
     out.attested.push_back(key);
   }
 
@@ -147,7 +147,7 @@ Completion complete_engine(const CompletionRequest& request) {
   }
   if (a.theta_i_deg) {
     if (!(*a.theta_i_deg > 0 && *a.theta_i_deg < 90))
-      throw Error(ErrorKind::bad_number, "{theta_i_deg} = " + format_significant(*a.theta_i_deg, 6) + " must lie between 0 and 90 degrees");
+      throw Error(ErrorKind::bad_number, "{{theta_i_deg}} = " + format_significant(*a.theta_i_deg, 6) + " must lie between 0 and 90 degrees");
     p.theta_i_deg = *a.theta_i_deg;
   } else if (a.H && L1.value) {
     theta_from_H = true;
@@ -178,7 +178,7 @@ Completion complete_engine(const CompletionRequest& request) {
     if (std::abs(from_D - *a.mb) > agreement * *a.mb)
       throw Error(ErrorKind::usage, "the attested values conflict: mb = " + value_text(*a.mb, "kg") + ", but D = " + value_text(*a.D, "m") +
                                         " gives mb = " + value_text(from_D, "kg") + " by eq:BeamMass with wood of " +
-                                        format_significant(p.material.wood_density, 4) + " kg/m3; drop one of them, or give {wood_density}");
+                                        format_significant(p.material.wood_density, 4) + " kg/m3; drop one of them, or give {{wood_density}}");
   }
   if (!a.mb) out.implied.push_back(a.D ? "mb (from D, eq:BeamMass)" : "D and mb (from beta2 = " + format_fraction(p.material.beta2) +
                                                                            " and the wood, eq:bend_L2 and eq:BeamMass)");
@@ -186,11 +186,11 @@ Completion complete_engine(const CompletionRequest& request) {
   // m as the counterweight grows against the beam.
   if (!(a.Lb || a.L1 || a.L2 || a.H || a.L4) || !(a.M || a.m))
     throw Error(ErrorKind::usage, "complete needs an attested length (Lb, L1, L2, H or L4) and the counterweight M or the stone m: "
-                                  "without them the best engine has no size, e.g. {Lb} 9.5m {m} 50kg");
+                                  "without them the best engine has no size, e.g. {{Lb}} 9.5m {{m}} 50kg");
   const ReleaseCriterion& criterion = request.settings.criterion;
   if (criterion.release == Release::range && (!a.M || !a.m))
     throw Error(ErrorKind::usage, "the range grows without bound with a heavier counterweight or a lighter stone: give M and m "
-                                  "for {quality} range, or maximise Q (the default)");
+                                  "for {{quality}} range, or maximise Q (the default)");
 
   const std::vector<double> x0 = start(p, out.chosen);
   double best = -1;
@@ -232,7 +232,7 @@ Completion complete_engine(const CompletionRequest& request) {
   try {
     out.calculator = design_optimal_engine(builtin_scaling_table(), same);
   } catch (const Error& e) {
-    out.calculator_note = e.message([](std::string_view name) { return "{" + std::string(name) + "}"; });  // names kept for the program
+    out.calculator_note = e.named_message();  // names kept for the program
   }
   return out;
 }

@@ -32,14 +32,14 @@ Engine engine_of(const ScaledDesign& design, double L2, const Material& material
 void check_engine(const Engine& e) {
   auto positive = [&](double value, const char* key, const char* what) {
     if (!(value > 0))
-      throw Error(ErrorKind::bad_number, "{" + std::string(key) + "} = " + format_significant(value, 6) + ": the " + what +
+      throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + format_significant(value, 6) + ": the " + what +
                                              " must be positive");
   };
   if (!(e.theta_i_deg > 0 && e.theta_i_deg < 90))
-    throw Error(ErrorKind::bad_number, "{theta_i_deg} = " + format_significant(e.theta_i_deg, 6) +
+    throw Error(ErrorKind::bad_number, "{{theta_i_deg}} = " + format_significant(e.theta_i_deg, 6) +
                                            ": the initial beam angle must lie between 0 and 90 degrees");
   if (!(std::abs(e.psi_i_deg) < 90))
-    throw Error(ErrorKind::bad_number, "{psi_i_deg} = " + format_significant(e.psi_i_deg, 6) +
+    throw Error(ErrorKind::bad_number, "{{psi_i_deg}} = " + format_significant(e.psi_i_deg, 6) +
                                            ": the initial counterweight angle must lie between -90 and 90 degrees (0: hanging, unpropped)");
   positive(e.L1, "L1", "long beam section");
   positive(e.L2, "L2", "short beam section");
@@ -47,7 +47,7 @@ void check_engine(const Engine& e) {
   positive(e.L4, "L4", "sling length");
   positive(e.M, "M", "counterweight mass");
   positive(e.m, "m", "projectile mass");
-  if (!(e.mb >= 0)) throw Error(ErrorKind::bad_number, "{mb} = " + format_significant(e.mb, 6) + ": the beam mass must not be negative");
+  if (!(e.mb >= 0)) throw Error(ErrorKind::bad_number, "{{mb}} = " + format_significant(e.mb, 6) + ": the beam mass must not be negative");
   positive(e.material.beta2, "beta2", "allowed bending");
   positive(e.material.youngs_modulus, "youngs_modulus", "Young's modulus");
   positive(e.material.wood_density, "wood_density", "wood density");

@@ -5,26 +5,27 @@
 namespace trebuchet {
 namespace {
 
-// The length of the name of a reference "{name}" at text[at] (a letter or _, then letters,
-// digits, _ and -), or 0 where no reference starts: JSON in a message, "{\"L1\": ...}", is none.
+// A reference to a name is "{{name}}": a letter or _, then letters, digits, _ and -, in double
+// braces, which text a user types (a path, a value) does not hold by chance. The length of the
+// name of the reference at text[at], or 0 where none starts there.
 std::size_t reference_length(std::string_view text, std::size_t at) {
-  if (text[at] != '{' || at + 1 >= text.size()) return 0;
+  if (text.compare(at, 2, "{{") != 0 || at + 2 >= text.size()) return 0;
   const auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; };
-  if (!(std::isalpha(static_cast<unsigned char>(text[at + 1])) || text[at + 1] == '_')) return 0;
-  std::size_t end = at + 1;
+  if (!(std::isalpha(static_cast<unsigned char>(text[at + 2])) || text[at + 2] == '_')) return 0;
+  std::size_t end = at + 2;
   while (end < text.size() && word(text[end])) ++end;
-  return end < text.size() && text[end] == '}' ? end - at - 1 : 0;
+  return text.compare(end, 2, "}}") == 0 ? end - at - 2 : 0;
 }
 
 }  // namespace
 
 std::string with_words(std::string_view text, const std::function<std::string(std::string_view)>& word) {
-  if (text.find('{') == std::string_view::npos) return std::string(text);
+  if (text.find("{{") == std::string_view::npos) return std::string(text);
   std::string out;
   for (std::size_t at = 0; at < text.size();) {
     if (const std::size_t length = reference_length(text, at)) {
-      out += word(text.substr(at + 1, length));
-      at += length + 2;
+      out += word(text.substr(at + 2, length));
+      at += length + 4;
     } else {
       out += text[at++];
     }
@@ -40,7 +41,7 @@ std::string Error::message(const std::function<std::string(std::string_view name
 std::vector<std::string> Error::names() const {
   std::vector<std::string> out;
   for (std::size_t at = 0; at < text_.size(); ++at)
-    if (const std::size_t length = reference_length(text_, at)) out.emplace_back(text_.substr(at + 1, length));
+    if (const std::size_t length = reference_length(text_, at)) out.emplace_back(text_.substr(at + 2, length));
   return out;
 }
 

@@ -188,7 +188,7 @@ OdeVector PhaseIntegrator::at(double t0, const OdeVector& y0, double t1) {
   static_cast<ControlState*>(evaluating_->c->state)->h_previous = 0;  // a new interval: no trend yet
   double t = t0;
   if (gsl_odeiv2_driver_apply(evaluating_.get(), &t, t1, y.data()) != GSL_SUCCESS)
-    throw Error(ErrorKind::numerical, "integrator failure while evaluating between steps; tighten {rtol}");
+    throw Error(ErrorKind::numerical, "integrator failure while evaluating between steps; tighten {{rtol}}");
   return y;
 }
 
@@ -213,7 +213,7 @@ State PhaseIntegrator::state(const OdeVector& y) const { return state_of(context
 OdeVector PhaseIntegrator::derivative(const OdeVector& y) {
   OdeVector dy{};
   if (equations(0, y.data(), dy.data(), &context_) != GSL_SUCCESS)
-    throw Error(ErrorKind::numerical, "the equations of motion failed at an accepted state; tighten {rtol}");
+    throw Error(ErrorKind::numerical, "the equations of motion failed at an accepted state; tighten {{rtol}}");
   return dy;
 }
 

@@ -82,7 +82,7 @@ struct Search {
       return -q;
     } catch (const Error& e) {
       simulations += 1;
-      last_failure = e.what();
+      last_failure = e.named_message();
       return 0;
     }
   }
@@ -135,7 +135,7 @@ std::vector<Optimum> optimize(const OptimizeRequest& request) {
     try {
       optima.push_back(search_from(request, start));
     } catch (const Error& e) {
-      reasons += (reasons.empty() ? "" : "; ") + std::string(e.what());
+      reasons += (reasons.empty() ? "" : "; ") + e.named_message();
     }
   }
   if (optima.empty()) throw Error(ErrorKind::out_of_range, reasons);

@@ -271,7 +271,7 @@ void trace_released(const Dynamics& dynamics, const IntegratorSettings& settings
       y = released.at(t, y, k * dt);
       t = k++ * dt;
     } else if (!released.step(t, y.data(), 2 * t_release, h)) {
-      fail("integrator failure in phase III; tighten {rtol}");
+      fail("integrator failure in phase III; tighten {{rtol}}");
     }
     const State s = released.state(y);
     trace.push_back({Phase::released, t, s, dynamics.snapshot(Phase::released, s)});
@@ -339,7 +339,7 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   auto count_step = [&](const char* phase) {
     if (++result.steps > settings.max_steps)
       fail("step budget of " + std::to_string(settings.max_steps) + " steps exceeded in " + phase +
-           "; loosen {rtol} or choose a higher-order {stepper}");
+           "; loosen {{rtol}} or choose a higher-order {{stepper}}");
   };
 
   // Phase I: from rest (eq:InitialConditions: phi_i = 0, and psi_i = 0 unless propped) until
@@ -357,7 +357,7 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   energy0 = snap.energy;
   phase1.add(trough.step_end(t, y, snap), snap);
   while (true) {
-    if (!trough.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase I; tighten {rtol} or choose another {stepper}");
+    if (!trough.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase I; tighten {{rtol}} or choose another {{stepper}}");
     count_step("phase I");
     if (std::cos(trough.state(y).phi) < abandon_trough_cos_phi)
       fail("the sling stands vertical in the trough (phi -> 90 deg) before lift-off; lengthen the sling L4 or lighten the projectile m");
@@ -401,7 +401,7 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   double best_quality = sampled.front();
   h = 1e-3;
   while (true) {
-    if (!lifted.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase II; tighten {rtol} or choose another {stepper}");
+    if (!lifted.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase II; tighten {{rtol}} or choose another {{stepper}}");
     count_step("phase II");
     const State s = lifted.state(y);
     snap = dynamics.snapshot(Phase::lifted, s);
@@ -417,7 +417,7 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   if (!(best_quality > 0)) fail(no_forward_release);
   if (result.energy_drift > settings.max_energy_drift)
     fail("energy drift " + format_significant(result.energy_drift, 3) + " of Delta U exceeds " +
-         format_significant(settings.max_energy_drift, 3) + "; tighten {rtol} or choose another {stepper}");
+         format_significant(settings.max_energy_drift, 3) + "; tighten {{rtol}} or choose another {{stepper}}");
 
   // The release search (docs/verifier.md, "Release"). The objective is smooth between the onsets
   // of growth of the running extremes, so its maximum over phase II lies at an onset or at the

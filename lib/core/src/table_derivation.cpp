@@ -150,7 +150,7 @@ bool same_grid_and_criterion(const SweepSpec& a, const SweepSpec& b) {
 }  // namespace
 
 DerivedTable derive_table(const std::vector<SweepPart>& parts) {
-  if (parts.empty()) throw Error(ErrorKind::data_file, "no sweep parts to merge; give the parts of every shard ({shard} k/N)");
+  if (parts.empty()) throw Error(ErrorKind::data_file, "no sweep parts to merge; give the parts of every shard ({{shard}} k/N)");
   std::map<std::pair<double, double>, Block> blocks;  // by (theta_i, F)
   const SweepPart& first = parts.front();
   for (const SweepPart& part : parts) {
@@ -163,7 +163,7 @@ DerivedTable derive_table(const std::vector<SweepPart>& parts) {
     }
     if (!same_grid_and_criterion(part.spec, block.spec))
       fail(part.origin, "its X grid or quality differs from that of " + block.first_origin + " for the same " +
-                            block_name(part.spec) + "; run every shard with the same {X} and {quality}");
+                            block_name(part.spec) + "; run every shard with the same {{X}} and {{quality}}");
     for (const SweepPoint& point : part.points) {
       if (!block.points.emplace(point.X, point).second)
         fail(part.origin, block_name(part.spec) + ": X = " + format_number(point.X) + " is also in " + block.origin_of[point.X] +

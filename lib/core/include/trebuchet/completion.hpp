@@ -41,7 +41,7 @@ struct Completion {
   /// The calculator's optimum for the engine's own capacity in vacuum at the base's level, to
   /// show how far the chosen values sit from an optimal engine; or why there is none.
   std::optional<OptimalEngine> calculator;
-  std::string calculator_note;  ///< why there is none, naming settings as "{name}" (error.hpp)
+  std::string calculator_note;  ///< why there is none, naming settings as "{{name}}" (error.hpp)
 };
 
 /// Completes the engine. Throws Error(usage) for a subset that conflicts (naming the

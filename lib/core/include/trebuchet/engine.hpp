@@ -34,7 +34,7 @@ Engine engine_of(const ScaledDesign& design, double L2, const Material& material
 
 /// The validation every engine passes, given or computed: lengths and masses positive (mb may
 /// be 0), theta_i in (0, 90) degrees, a positive material. Throws Error(bad_number) naming the
-/// parameter by its key, "{L4}" (error.hpp).
+/// parameter by its key, "{{L4}}" (error.hpp).
 void check_engine(const Engine& engine);
 
 double beam_length(const Engine& engine);    ///< Lb = L1 + L2 [m]

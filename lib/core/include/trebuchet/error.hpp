@@ -21,20 +21,24 @@ enum class ErrorKind {
   numerical,     ///< the numerical method failed or lost accuracy (named in the message)
 };
 
-/// `text` with each {name} in it written as word(name) (what Error::message does); for the
+/// `text` with each {{name}} in it written as word(name) (what Error::message does); for the
 /// warnings of a result, which name settings the same way.
 std::string with_words(std::string_view text, const std::function<std::string(std::string_view name)>& word);
 
 /// An error with a message that names the bad value and says how to fix it. The core names the
-/// inputs and settings it speaks of by their names in the API, in braces: "{L4} = -1: the sling
-/// length must be positive", "tighten {rtol}". what() writes each bare ("L4", "rtol"); a program
-/// writes its own word for it with message(word): a flag, a CSV column, a JSON key.
+/// inputs and settings it speaks of by their names in the API, in double braces: "{{L4}} = -1:
+/// the sling length must be positive", "tighten {{rtol}}". what() writes each bare ("L4",
+/// "rtol"); a program writes its own word for it with message(word): a flag, a CSV column, a
+/// JSON key. Double braces, because text a user typed and a message quotes ('{dir}/x.json') holds
+/// single braces.
 class Error : public std::runtime_error {
  public:
   Error(ErrorKind kind, const std::string& message);
   ErrorKind kind() const { return kind_; }
-  /// The message with each {name} written as word(name).
+  /// The message with each {{name}} written as word(name).
   std::string message(const std::function<std::string(std::string_view name)>& word) const;
+  /// The message with its {{name}} references as they are: to build another message from.
+  const std::string& named_message() const { return text_; }
   /// The names the message speaks of, in order.
   std::vector<std::string> names() const;
 

@@ -58,7 +58,7 @@ DesignValues read_design_values(const nlohmann::json& object, const std::string&
 
 /// The engine of a design's values: L3, or F = (L2 + L3)/H, theta_i 30 deg unless given, the
 /// material of eq:kMkD where not given; checked (check_engine). `where` names the design in
-/// messages ("design[2]"; empty: a program's options, named "{L4}" as error.hpp says).
+/// messages ("design[2]"; empty: a program's options, named "{{L4}}" as error.hpp says).
 EngineRecord engine_record(const DesignValues& values, const std::string& where);
 
 /// Reads an engine: L1, L2, L4, M, m, mb; L3, or F = (L2 + L3)/H; optional theta_i_deg
