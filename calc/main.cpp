@@ -142,10 +142,15 @@ int run(const Options& options) {
             return;
           }
           std::string line = std::to_string(row.line);
-          for (const std::string& cell : row.passed) line += "," + csv_cell(cell);
-          line += ",";
+          for (const std::string& cell : row.passed) {
+            line += ',';
+            append_csv_cell(line, cell);
+          }
+          line += ',';
           line += row.design ? design_csv_text(in_option_words(*row.design), digits) : std::string(design_columns - 1, ',');
-          line += "," + csv_cell(row.error ? row.error->message(option_word) : "") + "\n";
+          line += ',';
+          append_csv_cell(line, row.error ? row.error->message(option_word) : "");
+          line += '\n';
           std::cout << line;
         });
     if (json) std::cout << rows.dump(2) << "\n";

@@ -27,8 +27,6 @@ int run_monte_carlo(const Options& o, bool complete) {
     return engine;
   };
   if (!complete) {
-    if (first.design.L3 && first.design.F)
-      throw Error(ErrorKind::usage, "--L3 and --F both fix the counterweight arm (L2 + L3 = F H); give one of them");
     engine_of(first);
   } else {
     try {  // one completion more: bad input is refused before the run; a numerical failure is a sample's

@@ -96,8 +96,6 @@ int run_shot(const Options& o, bool fit) {
       throw Error(ErrorKind::usage, "the engine comes from '" + o.input + "'; drop the engine flags (--L1 ... --theta), or drop the file");
     in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}, an array of them, or CSV with a header (docs/csv.md)"),
                             o.input);
-  } else if (o.design.L3 && o.design.F) {
-    throw Error(ErrorKind::usage, "--L3 and --F both fix the counterweight arm (L2 + L3 = F H); give one of them");
   } else if (!has_engine_flags(o.design)) {
     throw Error(ErrorKind::usage, "no design; give a JSON or CSV file (or - for stdin), or flags like --L1 6.13m --L2 1.08m --F 1 --L4 5.8m --M 14.3t --m 100kg --mb 660kg");
   }

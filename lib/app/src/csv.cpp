@@ -167,12 +167,24 @@ std::string cell_value(std::string_view cell, const std::string& unit, std::stri
   return bare ? text + unit : text;
 }
 
-std::string csv_cell(std::string_view text, char separator) {
+void append_csv_cell(std::string& out, std::string_view text, char separator) {
   const char special[] = {separator, '"', '\n', '\r'};
-  if (text.find_first_of(std::string_view(special, sizeof special)) == std::string_view::npos) return std::string(text);
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
+  if (text.find_first_of(std::string_view(special, sizeof special)) == std::string_view::npos) {
+    out += text;
+    return;
+  }
+  out += '"';
+  for (char c : text) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  out += '"';
+}
+
+std::string csv_cell(std::string_view text, char separator) {
+  std::string out;
+  append_csv_cell(out, text, separator);
+  return out;
 }
 
 // With {fmt}: printf's %.*g, and the shortest text that reads back (as std::to_chars gives it),

@@ -124,6 +124,9 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   e.psi_i_deg = v.psi_i_deg.value_or(0);
   e.D = v.D.value_or(0);
   const std::string named = where.empty() ? std::string("flags") : where;
+  // A program's options give one of them; a file may carry both, as the programs write them (below).
+  if (where.empty() && v.L3 && v.F)
+    throw Error(ErrorKind::usage, "{{L3}} and {{F}} both fix the counterweight arm (L2 + L3 = F H); give one of them");
   if (v.L3) {
     e.L3 = *v.L3;
   } else if (const auto F = v.F) {
@@ -285,9 +288,9 @@ std::string design_csv_text(const OptimalEngine& design, int digits) {
     append_csv_number(text, field.value, digits);
     text += ',';
   }
-  text += csv_cell(branch_name(design.branch));
+  append_csv_cell(text, branch_name(design.branch));
   text += ',';
-  text += csv_cell(join(design.warnings, "; "));
+  append_csv_cell(text, join(design.warnings, "; "));
   text += ",vacuum";
   return text;
 }
@@ -296,9 +299,7 @@ std::string csv_line(const std::vector<std::string>& cells) {
   std::string line;
   for (std::size_t k = 0; k < cells.size(); ++k) {
     if (k) line += ',';
-    const std::string& cell = cells[k];
-    const bool plain = std::none_of(cell.begin(), cell.end(), [](char c) { return c == ',' || c == '"' || c == '\n' || c == '\r'; });
-    line += plain ? cell : csv_cell(cell);  // the common case without a copy
+    append_csv_cell(line, cells[k]);
   }
   line += '\n';
   return line;

@@ -112,6 +112,13 @@ class PhaseRecord {
     return out;
   }
 
+  // The last sample at or before `time` (the first one for earlier times); samples are in time order.
+  std::size_t base_of(double time) const {
+    const auto after = std::upper_bound(samples_.begin() + 1, samples_.end(), time,
+                                        [](double value, const Sample& sample) { return value < sample.t; });
+    return static_cast<std::size_t>(after - samples_.begin()) - 1;
+  }
+
   // The running extremes over [0, time], without the value at `time` itself.
   ForceExtremes extremes_before(double time) const {
     const std::size_t base = base_of(time);
@@ -122,12 +129,6 @@ class PhaseRecord {
   }
 
  private:
-  // The last sample at or before `time` (the first one for earlier times); samples are in time order.
-  std::size_t base_of(double time) const {
-    const auto after = std::upper_bound(samples_.begin() + 1, samples_.end(), time,
-                                        [](double value, const Sample& sample) { return value < sample.t; });
-    return static_cast<std::size_t>(after - samples_.begin()) - 1;
-  }
 
   Snapshot snapshot_at(double time) const { return integrator_.dynamics().snapshot(integrator_.phase(), integrator_.state(y_at(time))); }
 
@@ -449,8 +450,7 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   }
   for (const auto& onset : onsets_ii) {
     if (!(objective(onset.t) > found.value)) continue;
-    const auto after = std::upper_bound(samples.begin(), samples.end(), onset.t, [](double v, const StepEnd& s) { return v < s.t; });
-    const std::size_t step_start = static_cast<std::size_t>(after - samples.begin()) - 1;
+    const std::size_t step_start = phase2.base_of(onset.t);
     search(step_start, std::min(step_start + 1, last));
   }
   // Sampled values within round-off of 0 can leave no candidate with the objective above it.

@@ -56,6 +56,8 @@ std::string cell_value(std::string_view cell, const std::string& unit, std::stri
 
 /// A cell for output: quoted when it holds the separator, a quote or a line end.
 std::string csv_cell(std::string_view text, char separator = ',');
+/// csv_cell appended to `out`, without a string of its own.
+void append_csv_cell(std::string& out, std::string_view text, char separator = ',');
 
 /// A number for CSV output with `digits` significant digits (17: every double round-trips).
 std::string csv_number(double value, int digits);
