@@ -19,6 +19,14 @@ namespace {
 
 using Slot = std::function<std::optional<double>&(Options&)>;
 
+// Where a value of the design (--L1, --theta, ...) or another option (--Lb, --wind, ...) goes.
+Slot design_slot(std::optional<double> DesignValues::*member) {
+  return [member](Options& x) -> std::optional<double>& { return x.design.*member; };
+}
+Slot option_slot(std::optional<double> Options::*member) {
+  return [member](Options& x) -> std::optional<double>& { return x.*member; };
+}
+
 // An option whose text CLI11 hands to `parse` as soon as it reads it; an empty value is refused.
 CLI::Option* parsed_option(CLI::App* app, const std::string& name, const std::function<void(const std::string&)>& parse,
                            const std::string& help) {
@@ -61,22 +69,22 @@ CLI::Option* positive_option(CLI::App* app, const std::string& name, double& tar
 void engine_options(CLI::App* app, Options& o, bool spreads) {
   app->add_option("input", o.input, "JSON file with a design or an array of designs, or CSV with a design a row (docs/csv.md); - for stdin");
   const std::tuple<const char*, Slot, UnitDimension, const char*> keys[] = {
-      {"--L1", [](Options& x) -> auto& { return x.design.L1; }, UnitDimension::length, "long beam section"},
-      {"--L2", [](Options& x) -> auto& { return x.design.L2; }, UnitDimension::length, "short beam section"},
-      {"--L3", [](Options& x) -> auto& { return x.design.L3; }, UnitDimension::length, "counterweight arm (or --F)"},
-      {"--F", [](Options& x) -> auto& { return x.design.F; }, UnitDimension::dimensionless, "arm fraction (L2+L3)/H, instead of --L3"},
-      {"--L4", [](Options& x) -> auto& { return x.design.L4; }, UnitDimension::length, "sling length"},
-      {"--M", [](Options& x) -> auto& { return x.design.M; }, UnitDimension::mass, "counterweight mass"},
-      {"--m", [](Options& x) -> auto& { return x.design.m; }, UnitDimension::mass, "projectile mass"},
-      {"--mb", [](Options& x) -> auto& { return x.design.mb; }, UnitDimension::mass, "beam mass"}};
+      {"--L1", design_slot(&DesignValues::L1), UnitDimension::length, "long beam section"},
+      {"--L2", design_slot(&DesignValues::L2), UnitDimension::length, "short beam section"},
+      {"--L3", design_slot(&DesignValues::L3), UnitDimension::length, "counterweight arm (or --F)"},
+      {"--F", design_slot(&DesignValues::F), UnitDimension::dimensionless, "arm fraction (L2+L3)/H, instead of --L3"},
+      {"--L4", design_slot(&DesignValues::L4), UnitDimension::length, "sling length"},
+      {"--M", design_slot(&DesignValues::M), UnitDimension::mass, "counterweight mass"},
+      {"--m", design_slot(&DesignValues::m), UnitDimension::mass, "projectile mass"},
+      {"--mb", design_slot(&DesignValues::mb), UnitDimension::mass, "beam mass"}};
   for (const auto& [name, slot, dimension, help] : keys) value_option(app, o, name, slot, dimension, help, spreads);
-  value_option(app, o, "--theta", [](Options& x) -> auto& { return x.design.theta_i_deg; }, UnitDimension::angle,
+  value_option(app, o, "--theta", design_slot(&DesignValues::theta_i_deg), UnitDimension::angle,
                "initial beam angle theta_i [deg] (default 30)", spreads);
-  value_option(app, o, "--psi-i", [](Options& x) -> auto& { return x.design.psi_i_deg; }, UnitDimension::angle,
+  value_option(app, o, "--psi-i", design_slot(&DesignValues::psi_i_deg), UnitDimension::angle,
                "initial counterweight angle psi_i [deg] of a propped counterweight (default 0, hanging; negative: held back, "
                "the sense opposite to the beam's turn)", spreads);
-  value_option(app, o, "--R", [](Options& x) -> auto& { return x.design.R; }, UnitDimension::length, "the predicted range to check (or to fit)");
-  value_option(app, o, "--T", [](Options& x) -> auto& { return x.design.T; }, UnitDimension::energy, "the predicted energy to check (or to fit)");
+  value_option(app, o, "--R", design_slot(&DesignValues::R), UnitDimension::length, "the predicted range to check (or to fit)");
+  value_option(app, o, "--T", design_slot(&DesignValues::T), UnitDimension::energy, "the predicted energy to check (or to fit)");
   positive_option(app, "--tol", o.tolerance, UnitDimension::dimensionless, "relative tolerance on the predicted R and T (default 0.02)");
   app->add_option("--series", o.series, "write the time series of the shot (angles, forces, positions, energies) to this CSV file");
   positive_option(app, "--series-dt", o.series_dt_s, UnitDimension::time,
@@ -85,7 +93,7 @@ void engine_options(CLI::App* app, Options& o, bool spreads) {
 }
 
 void target_level_option(CLI::App* app, Options& o, bool spreads) {
-  value_option(app, o, "--target-level", [](Options& x) -> auto& { return x.target_level; }, UnitDimension::length,
+  value_option(app, o, "--target-level", option_slot(&Options::target_level), UnitDimension::length,
                "target height relative to the engine's base, e.g. -54m (default 0)", spreads);
 }
 
@@ -166,7 +174,7 @@ void air_and_sampling_options(CLI::App* app, Options& o) {
   integer_option(app, "--seed", o.seed, std::uint64_t{0}, std::uint64_t{0}, "0 or more",
                  "seed of the Monte Carlo draws: the same seed, the same result (default 1)");
   app->add_flag("--air", o.air, "fly through air (quadratic drag on a sphere) instead of vacuum; with --quality range the release maximises the range in air");
-  value_option(app, o, "--air-density", [](Options& x) -> auto& { return x.air_density; }, UnitDimension::density,
+  value_option(app, o, "--air-density", option_slot(&Options::air_density), UnitDimension::density,
                "density of the air (default 1.2kg/m3)", true, true);
   parsed_option(app, "--cd", [&o](const std::string& text) {
     if (text == "Re") o.drag_of_reynolds = true;
@@ -175,7 +183,7 @@ void air_and_sampling_options(CLI::App* app, Options& o) {
   parsed_option(app, "--projectile", [&o](const std::string& text) {
     o.projectile_density = text == "stone" ? 2500 : text == "iron" ? 7870 : parse_positive(text, UnitDimension::density, "--projectile");
   }, "stone (2500kg/m3, the default), iron (7870kg/m3) or a density: gives the sphere's size");
-  value_option(app, o, "--wind", [](Options& x) -> auto& { return x.wind; }, UnitDimension::speed,
+  value_option(app, o, "--wind", option_slot(&Options::wind), UnitDimension::speed,
                "horizontal wind toward the target, e.g. 5m/s or -20km/h (against)", true);
   parsed_option(app, "--range-from", [&o](const std::string& text) {
     if (text != "pivot" && text != "release")
@@ -214,18 +222,18 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
   CLI::App* c = s.complete;
   air_and_sampling_options(c, o);
   const std::tuple<const char*, Slot, UnitDimension, const char*> attested[] = {
-      {"--Lb", [](Options& x) -> auto& { return x.Lb; }, UnitDimension::length, "beam length L1 + L2"},
-      {"--H", [](Options& x) -> auto& { return x.H; }, UnitDimension::length, "pivot height L1 cos(theta_i)"},
-      {"--D", [](Options& x) -> auto& { return x.design.D; }, UnitDimension::length, "beam diameter (instead of beta2)"},
-      {"--l", [](Options& x) -> auto& { return x.l; }, UnitDimension::dimensionless, "beam ratio L1/L2"},
-      {"--L1", [](Options& x) -> auto& { return x.design.L1; }, UnitDimension::length, "attested L1"},
-      {"--L2", [](Options& x) -> auto& { return x.design.L2; }, UnitDimension::length, "attested L2"},
-      {"--L4", [](Options& x) -> auto& { return x.design.L4; }, UnitDimension::length, "attested L4"},
-      {"--M", [](Options& x) -> auto& { return x.design.M; }, UnitDimension::mass, "attested M"},
-      {"--m", [](Options& x) -> auto& { return x.design.m; }, UnitDimension::mass, "attested m"},
-      {"--mb", [](Options& x) -> auto& { return x.design.mb; }, UnitDimension::mass, "attested mb"},
-      {"--F", [](Options& x) -> auto& { return x.design.F; }, UnitDimension::dimensionless, "attested F (default 2/3)"},
-      {"--theta", [](Options& x) -> auto& { return x.design.theta_i_deg; }, UnitDimension::angle,
+      {"--Lb", option_slot(&Options::Lb), UnitDimension::length, "beam length L1 + L2"},
+      {"--H", option_slot(&Options::H), UnitDimension::length, "pivot height L1 cos(theta_i)"},
+      {"--D", design_slot(&DesignValues::D), UnitDimension::length, "beam diameter (instead of beta2)"},
+      {"--l", option_slot(&Options::l), UnitDimension::dimensionless, "beam ratio L1/L2"},
+      {"--L1", design_slot(&DesignValues::L1), UnitDimension::length, "attested L1"},
+      {"--L2", design_slot(&DesignValues::L2), UnitDimension::length, "attested L2"},
+      {"--L4", design_slot(&DesignValues::L4), UnitDimension::length, "attested L4"},
+      {"--M", design_slot(&DesignValues::M), UnitDimension::mass, "attested M"},
+      {"--m", design_slot(&DesignValues::m), UnitDimension::mass, "attested m"},
+      {"--mb", design_slot(&DesignValues::mb), UnitDimension::mass, "attested mb"},
+      {"--F", design_slot(&DesignValues::F), UnitDimension::dimensionless, "attested F (default 2/3)"},
+      {"--theta", design_slot(&DesignValues::theta_i_deg), UnitDimension::angle,
        "attested initial beam angle theta_i [deg] (default 30, or from H and L1)"}};
   for (const auto& [name, slot, dimension, help] : attested) value_option(c, o, name, slot, dimension, help, true);
   target_level_option(c, o, true);
