@@ -7,6 +7,7 @@
 #include <map>
 #include <optional>
 
+#include "trebuchet/app/text_input.hpp"
 #include "trebuchet/app/batch.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/app/csv.hpp"
@@ -52,7 +53,7 @@ Material material_from(const Options& options, const Material& reference) {
 }
 
 void print(const OptimalEngine& design, const std::string& format, int digits) {
-  if (format == "json") std::cout << design_json(design).dump(2) << "\n";
+  if (format == "json") std::cout << pretty_json(design_json(design));
   else if (format == "csv") std::cout << csv_line(design_csv_header()) << design_csv_text(design, digits) << "\n";
   else std::cout << design_table(design);
 }
@@ -153,7 +154,7 @@ int run(const Options& options) {
           line += '\n';
           std::cout << line;
         });
-    if (json) std::cout << rows.dump(2) << "\n";
+    if (json) std::cout << pretty_json(rows);
     if (failures > 0) {
       std::cerr << "trebuchet-calc: " << failures << " row(s) failed; the other rows are in the output\n";
       return exit_code(Program::calc, ErrorKind::batch_rows);

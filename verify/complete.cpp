@@ -5,6 +5,7 @@
 
 #include "program.hpp"
 #include "run.hpp"
+#include "trebuchet/app/text_input.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/app/report.hpp"
 
@@ -26,7 +27,7 @@ int run_complete(const Options& o) {
   in_calculator_words(completion.calculator_note);
   if (completion.calculator)
     for (std::string& warning : completion.calculator->warnings) in_calculator_words(warning);
-  if (o.format == Format::json) std::cout << completion_json(completion, request.settings).dump(2) << "\n";
+  if (o.format == Format::json) std::cout << pretty_json(completion_json(completion, request.settings));
   else std::cout << completion_table(completion, request.settings);
   return exit_success;
 }

@@ -6,6 +6,7 @@
 
 #include "program.hpp"
 #include "run.hpp"
+#include "trebuchet/app/text_input.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/parallel.hpp"
 #include "trebuchet/app/pictures.hpp"
@@ -54,7 +55,7 @@ int run_monte_carlo(const Options& o, bool complete) {
   const MonteCarloReport report{summary, inputs, o.seed, complete ? "the completed engine" : "the shot",
                                 settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"), settings.air.has_value(), seconds,
                                 thread_count(o.threads, static_cast<std::size_t>(summary.samples))};
-  std::cout << (o.format == Format::json ? monte_carlo_json(report).dump(2) + "\n" : monte_carlo_table(report));
+  std::cout << (o.format == Format::json ? pretty_json(monte_carlo_json(report)) : monte_carlo_table(report));
   if (!o.plot.empty()) {
     std::vector<std::string> described;
     for (const UncertainInput& u : inputs) described.push_back(describe_uncertain(u));

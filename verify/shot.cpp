@@ -82,7 +82,7 @@ int run_many(const Options& o, const DesignInputs& in, const DesignCheck& check)
     results.push_back(record);
     if (o.format == Format::csv) std::cout << csv_line(cells);
   }
-  if (o.format == Format::json) std::cout << results.dump(2) << "\n";
+  if (o.format == Format::json) std::cout << pretty_json(results);
   return code;
 }
 
@@ -113,7 +113,7 @@ int run_shot(const Options& o, bool fit) {
   if (o.design.R) values.R = o.design.R;
   if (o.design.T) values.T = o.design.T;
   const DesignReport report = check_design(engine_record(values, o.input.empty() ? "" : in.where.front()), check);
-  if (o.format == Format::json) std::cout << report.json.dump(2) << "\n";
+  if (o.format == Format::json) std::cout << pretty_json(report.json);
   else if (o.format == Format::csv) std::cout << csv_line(verification_csv_header()) << csv_line(report.csv);
   else std::cout << report.table;
   return report.outside_tolerance ? exit_outside_tolerance : exit_success;

@@ -22,7 +22,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 // Prints a table or sweep part; each X without an optimum is named on stderr and gives exit 3.
 int print_derived(const nlohmann::ordered_json& json, const std::vector<double>& failed) {
   require_finite_json(json, "the table");
-  std::cout << json.dump(2) << "\n";
+  std::cout << pretty_json(json);
   for (double X : failed)
     std::cerr << "trebuchet-verify: no optimum at X = " << format_number(X) << "; its reason is in the output, the fit used the other points\n";
   return failed.empty() ? exit_success : exit_code(Program::verify, ErrorKind::numerical);
@@ -49,7 +49,7 @@ int run_optimize(const Options& o) {
     all.push_back(optimum_json(optimum, seconds));
     if (o.format == Format::table) std::cout << optimum_table(optimum, request.settings) << "\n";
   }
-  if (o.format == Format::json) std::cout << all.dump(2) << "\n";
+  if (o.format == Format::json) std::cout << pretty_json(all);
   else std::cout << "wall time " << format_significant(seconds, 3) << " s\n";
   return exit_success;
 }

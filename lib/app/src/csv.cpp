@@ -10,6 +10,7 @@
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
+#include "trebuchet/app/text_input.hpp"
 
 namespace trebuchet {
 namespace {
@@ -108,6 +109,7 @@ bool CsvReader::read_line(std::string& line) {
     line += static_cast<char>(c);
   }
   if (!line.empty() && line.back() == '\r') line.pop_back();
+  line = as_utf8(line);  // a line saved as Windows-1252 ("Sa\xf4ne") is read as it was meant: UTF-8 from here on
   return true;
 }
 

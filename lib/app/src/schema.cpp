@@ -7,6 +7,7 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/app/names.hpp"
+#include "trebuchet/app/text_input.hpp"
 #include "trebuchet/app/units.hpp"
 
 namespace trebuchet {
@@ -24,11 +25,11 @@ std::optional<double> read_value(const nlohmann::json& object, const std::string
   const std::string name = engine_key_name(where, key);
   if (value.is_number()) {
     const double number = value.get<double>();
-    if (!std::isfinite(number)) throw Error(ErrorKind::bad_number, name + ": " + value.dump() + " is not a finite number");
+    if (!std::isfinite(number)) throw Error(ErrorKind::bad_number, name + ": " + brief_json(value) + " is not a finite number");
     return number;
   }
   if (value.is_string()) return parse_value(value.get<std::string>(), dimension, name);
-  throw Error(ErrorKind::bad_number, name + ": " + value.dump() + " is neither a number nor a value with a unit like \"6.13m\"");
+  throw Error(ErrorKind::bad_number, name + ": " + brief_json(value) + " is neither a number nor a value with a unit like \"6.13m\"");
 }
 
 // A value a design must have; the hint says what it is, with an example.

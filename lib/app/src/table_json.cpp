@@ -215,6 +215,9 @@ TableBlock parse_block(const Reader& reader, const json& object, const std::stri
 }  // namespace
 
 ScalingTable parse_scaling_table(std::string_view json_text, const std::string& origin) {  // tab:CPNC and its re-derivations
+  if (json_depth(json_text) > max_json_depth)
+    throw Error(ErrorKind::data_file, origin + ": arrays or objects nest more than " + std::to_string(max_json_depth) +
+                                          " levels deep; give a table in the schema of data/cpnc.json");
   json document;
   try {
     document = json::parse(json_text);

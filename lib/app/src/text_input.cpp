@@ -1,5 +1,6 @@
 #include "trebuchet/app/text_input.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -69,6 +70,78 @@ std::string quote_huge_numbers(const std::string& text) {
 
 }  // namespace
 
+std::size_t json_depth(std::string_view text) {
+  std::size_t depth = 0, deepest = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      deepest = std::max(deepest, ++depth);
+      if (deepest > max_json_depth) return deepest;  // enough to refuse; the rest is not read
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return deepest;
+}
+
+std::string brief_json(const nlohmann::json& value) {
+  constexpr std::size_t shown = 60;
+  std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  if (text.size() > shown) text = text.substr(0, shown) + "...";
+  return text;
+}
+
+bool is_utf8(std::string_view text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    // The length of the sequence a lead byte starts, and the lowest code point it may encode
+    // (an overlong form is invalid); 0: not a lead byte.
+    const std::size_t length = byte < 0x80 ? 1 : (byte >> 5) == 0x6 ? 2 : (byte >> 4) == 0xE ? 3 : (byte >> 3) == 0x1E ? 4 : 0;
+    if (length == 0 || i + length > text.size()) return false;
+    char32_t code = length == 1 ? byte : length == 2 ? byte & 0x1F : length == 3 ? byte & 0x0F : byte & 0x07;
+    for (std::size_t k = 1; k < length; ++k) {
+      const auto next = static_cast<unsigned char>(text[i + k]);
+      if ((next >> 6) != 0x2) return false;
+      code = (code << 6) | (next & 0x3F);
+    }
+    const char32_t lowest[] = {0, 0, 0x80, 0x800, 0x10000};
+    if (code < lowest[length] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return false;
+    i += length;
+  }
+  return true;
+}
+
+std::string as_utf8(std::string_view text) {
+  if (is_utf8(text)) return std::string(text);
+  // Windows-1252 where it differs from Latin-1 (0x80 to 0x9F); its five unused bytes become U+FFFD.
+  static const char16_t windows_1252[32] = {0x20AC, 0xFFFD, 0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021, 0x02C6, 0x2030, 0x0160,
+                                            0x2039, 0x0152, 0xFFFD, 0x017D, 0xFFFD, 0xFFFD, 0x2018, 0x2019, 0x201C, 0x201D, 0x2022,
+                                            0x2013, 0x2014, 0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, 0xFFFD, 0x017E, 0x0178};
+  std::string out;
+  out.reserve(text.size() + text.size() / 4);
+  for (char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    const char32_t code = byte >= 0x80 && byte < 0xA0 ? windows_1252[byte - 0x80] : byte;
+    if (code < 0x80) {
+      out += static_cast<char>(code);
+    } else if (code < 0x800) {
+      out += static_cast<char>(0xC0 | (code >> 6));
+      out += static_cast<char>(0x80 | (code & 0x3F));
+    } else {
+      out += static_cast<char>(0xE0 | (code >> 12));
+      out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+      out += static_cast<char>(0x80 | (code & 0x3F));
+    }
+  }
+  return out;
+}
+
 std::string source_name(const std::string& path) { return path == "-" ? std::string("stdin") : "'" + path + "'"; }
 
 std::string read_text(const std::string& path, std::string_view expected) {
@@ -91,6 +164,9 @@ std::string read_text(const std::string& path, std::string_view expected) {
 nlohmann::json parse_json(const std::string& text, const std::string& source, std::string_view expected) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos)
     throw Error(ErrorKind::usage, source + " is empty; give " + std::string(expected));
+  if (json_depth(text) > max_json_depth)
+    throw Error(ErrorKind::usage, source + " nests arrays or objects more than " + std::to_string(max_json_depth) +
+                                      " levels deep; give " + std::string(expected));
   try {
     return nlohmann::json::parse(quote_huge_numbers(text));
   } catch (const nlohmann::json::exception& e) {

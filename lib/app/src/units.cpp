@@ -81,6 +81,20 @@ std::size_t parse_number_prefix(std::string_view text, double& value, const std:
   return static_cast<std::size_t>(end - text.data());
 }
 
+// The unit written after the number of `text` ("t" of "4t", "" of "4" or "2/3"); "" when the text is not a number.
+std::string unit_of(std::string_view text, std::string_view name) {
+  double value = 0;
+  std::size_t used = parse_number_prefix(text, value, std::string(name));
+  if (used < text.size() && text[used] == '/') {
+    double denominator = 0;
+    const std::size_t more = parse_number_prefix(text.substr(used + 1), denominator, std::string(name));
+    if (more > 0) used += 1 + more;
+  }
+  if (used == 0) return "";
+  const auto start = text.find_first_not_of(" \t", used);
+  return start == std::string_view::npos ? "" : std::string(text.substr(start));
+}
+
 }  // namespace
 
 UnitDimension unit_dimension(Dimension dimension) {
@@ -133,7 +147,10 @@ double parse_value(std::string_view text, UnitDimension dimension, std::string_v
                                                std::string(name) + " is " + std::string(dimension_text(dimension).word) +
                                                "; use " + unit_list(dimension) + " or a bare number in " +
                                                std::string(dimension_text(dimension).bare));
-    return value * unit.to_si;
+    const double si = value * unit.to_si;
+    if (!std::isfinite(si) || (si == 0 && value != 0))
+      throw Error(ErrorKind::bad_number, what + " is beyond the range of numbers in SI units (about 1e-308 to 1e308); give a value of ordinary size");
+    return si;
   }
   throw Error(ErrorKind::unknown_unit, what + " has the unknown unit " + quoted(rest) + "; use " +
                                            unit_list(dimension) + " or a bare number in " +
@@ -150,14 +167,24 @@ double parse_positive(std::string_view text, UnitDimension dimension, std::strin
 std::optional<Spread> parse_spread(std::string_view text, UnitDimension dimension, std::string_view name) {
   const std::string what = std::string(name) + ": '" + std::string(text) + "'";
   if (const auto dots = text.find(".."); dots != std::string_view::npos) {
-    const double a = parse_value(text.substr(0, dots), dimension, name), b = parse_value(text.substr(dots + 2), dimension, name);
+    // A unit written at one end only is the unit of both: 3..4t is 3 t to 4 t.
+    std::string low(text.substr(0, dots)), high(text.substr(dots + 2));
+    const std::string low_unit = unit_of(low, name), high_unit = unit_of(high, name);
+    if (low_unit.empty() && !high_unit.empty()) low += high_unit;
+    if (high_unit.empty() && !low_unit.empty()) high += low_unit;
+    const double a = parse_value(low, dimension, name), b = parse_value(high, dimension, name);
     if (!(a < b)) throw Error(ErrorKind::bad_number, what + " is not a range from low to high; write it as low..high, e.g. 2.5t..3.5t");
     return Spread{Spread::Kind::uniform, a, b};
   }
   for (std::string_view sign : {std::string_view("\u00b1"), std::string_view("+-")}) {
     const auto at = text.find(sign);
     if (at == std::string_view::npos) continue;
-    const double mean = parse_value(text.substr(0, at), dimension, name), deviation = parse_value(text.substr(at + sign.size()), dimension, name);
+    // As for a range: 3.5±0.2m is 3.5 m ± 0.2 m.
+    std::string mean_text(text.substr(0, at)), deviation_text(text.substr(at + sign.size()));
+    const std::string mean_unit = unit_of(mean_text, name), deviation_unit = unit_of(deviation_text, name);
+    if (mean_unit.empty() && !deviation_unit.empty()) mean_text += deviation_unit;
+    if (deviation_unit.empty() && !mean_unit.empty()) deviation_text += mean_unit;
+    const double mean = parse_value(mean_text, dimension, name), deviation = parse_value(deviation_text, dimension, name);
     if (!(deviation >= 0)) throw Error(ErrorKind::bad_number, what + " has a negative deviation; write mean±deviation, e.g. 3.5m±0.2m");
     return Spread{Spread::Kind::normal, mean, deviation};
   }

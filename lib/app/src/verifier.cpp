@@ -29,7 +29,7 @@ DesignInputs read_design_inputs(const std::string& text, const std::string& path
   }
   nlohmann::json json = parse_json(text, source_name(path), expected);
   if (!json.is_object() && !json.is_array())
-    throw Error(ErrorKind::usage, source_name(path) + " holds " + json.dump() + ", not a design; give " + expected);
+    throw Error(ErrorKind::usage, source_name(path) + " holds " + brief_json(json) + ", not a design; give " + expected);
   in.single = json.is_object();
   // Moved, not copied: a copy of deeply nested input would recurse as deep as it nests.
   for (std::size_t i = 0; i < (in.single ? 1 : json.size()); ++i) {

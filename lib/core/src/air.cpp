@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "gsl_errors.hpp"
 #include "solve_1d.hpp"
@@ -46,6 +47,15 @@ double drag_coefficient_of(double re) {
   // drag curve of a smooth sphere, with the drag crisis near Re = 3e5.
   const double a = re / 5, b = re / 263000, c = re / 1e6;
   return 24 / re + 2.6 * a / (1 + std::pow(a, 1.52)) + 0.411 * std::pow(b, -7.94) / (1 + std::pow(b, -8)) + 0.25 * c / (1 + c);
+}
+
+void check_air(const Air& air) {
+  // From thin air to far denser than water, from cork to beyond osmium, winds far past any
+  // storm's: beyond them the flight is no longer a flight.
+  check_ordinary(air.density, 1e-6, 1e4, "air_density", "kg/m3", "density of the air");
+  check_ordinary(air.projectile_density, 1, 1e5, "projectile", "kg/m3", "projectile's density");
+  if (air.drag_coefficient) check_ordinary(*air.drag_coefficient, 1e-3, 1e2, "cd", "", "drag coefficient");
+  check_ordinary(std::abs(air.wind), 0, 1e3, "wind", "m/s", "wind's speed");
 }
 
 Drag drag_of(const Air& air, double mass) {

@@ -1,6 +1,7 @@
 #include "trebuchet/engine.hpp"
 
 #include <cmath>
+#include <tuple>
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
@@ -52,6 +53,29 @@ void check_engine(const Engine& e) {
   positive(e.material.youngs_modulus, "youngs_modulus", "Young's modulus");
   positive(e.material.wood_density, "wood_density", "wood density");
   positive(e.material.g, "g", "gravitational acceleration");
+  // Sizes and proportions of ordinary range: within them every product the physics and its SI
+  // outputs form (M g L2, sqrt(g L2), L1/L2 ...) stays finite, and the integrator sees an engine.
+  for (const auto& [value, key, what] : {std::tuple{e.L1, "L1", "long beam section"}, {e.L2, "L2", "short beam section"},
+                                         {e.L3, "L3", "counterweight arm"}, {e.L4, "L4", "sling length"}})
+    check_ordinary(value, 1e-6, 1e6, key, "m", what);
+  for (const auto& [value, key, what] : {std::tuple{e.M, "M", "counterweight mass"}, {e.m, "m", "projectile mass"}})
+    check_ordinary(value, 1e-9, 1e12, key, "kg", what);
+  if (e.mb > 0) check_ordinary(e.mb, 1e-9, 1e12, "mb", "kg", "beam mass");
+  check_ordinary(e.material.g, 1e-6, 1e6, "g", "m/s2", "gravitational acceleration");
+  check_ordinary(e.material.beta2, 1e-9, 1, "beta2", "", "allowed bending u2/L2");
+  check_ordinary(e.material.youngs_modulus, 1e3, 1e15, "youngs_modulus", "Pa", "Young's modulus");
+  check_ordinary(e.material.wood_density, 1, 1e5, "wood_density", "kg/m3", "wood density");
+  const auto proportion = [](double a, const char* key_a, double b, const char* key_b) {
+    constexpr double widest = 1e6;
+    if (!(a <= widest * b && b <= widest * a))
+      throw Error(ErrorKind::bad_number, "{{" + std::string(key_a) + "}} = " + format_significant(a, 6) + " and {{" + key_b + "}} = " +
+                                             format_significant(b, 6) + " differ by more than a factor 10^6; give an engine of ordinary proportions");
+  };
+  proportion(e.L1, "L1", e.L2, "L2");
+  proportion(e.L4, "L4", e.L1, "L1");
+  proportion(e.L3, "L3", e.L2, "L2");
+  proportion(e.m, "m", e.M, "M");
+  if (e.mb > 0) proportion(e.mb, "mb", e.M, "M");
 }
 
 double beam_length(const Engine& engine) { return engine.L1 + engine.L2; }

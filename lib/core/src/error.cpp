@@ -2,6 +2,8 @@
 
 #include <cctype>
 
+#include "trebuchet/format.hpp"
+
 namespace trebuchet {
 namespace {
 
@@ -43,6 +45,13 @@ std::vector<std::string> Error::names() const {
   for (std::size_t at = 0; at < text_.size(); ++at)
     if (const std::size_t length = reference_length(text_, at)) out.emplace_back(text_.substr(at + 2, length));
   return out;
+}
+
+void check_ordinary(double value, double lowest, double highest, const std::string& key, const std::string& unit, const std::string& what) {
+  if (value >= lowest && value <= highest) return;
+  const std::string space = unit.empty() ? "" : " " + unit;
+  throw Error(ErrorKind::bad_number, "{{" + key + "}} = " + format_significant(value, 6) + space + " is not of ordinary size for the " + what +
+                                         "; give one from " + format_significant(lowest, 6) + " to " + format_significant(highest, 6) + space);
 }
 
 }  // namespace trebuchet

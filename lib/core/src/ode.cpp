@@ -167,7 +167,15 @@ PhaseIntegrator::PhaseIntegrator(const Dynamics& dynamics, Phase phase, const In
       stepping_(make(settings), gsl_odeiv2_driver_free),
       evaluating_(make(settings), gsl_odeiv2_driver_free) {}
 
+void check_integrator(const IntegratorSettings& settings) {
+  // Below 1e-15 a step's error cannot be told from the round-off of doubles (2.2e-16), and the
+  // step shrinks until the step budget is spent; above 1e-2 the motion is not the engine's.
+  check_ordinary(settings.rtol, 1e-15, 1e-2, "rtol", "", "relative tolerance per step");
+  check_ordinary(settings.atol, 1e-15, 1e-2, "atol", "", "absolute tolerance per step");
+}
+
 gsl_odeiv2_driver* PhaseIntegrator::make(const IntegratorSettings& settings) {
+  check_integrator(settings);
   gsl_odeiv2_driver* d = gsl_odeiv2_driver_alloc_y_new(&system_, stepper_type(settings.stepper), 1e-3, settings.atol, settings.rtol);
   gsl_odeiv2_control_free(d->c);
   d->c = gsl_odeiv2_control_alloc(&predictive_control);

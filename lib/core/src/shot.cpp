@@ -269,8 +269,9 @@ void trace_released(const Dynamics& dynamics, const IntegratorSettings& settings
   double k = std::floor(t_release / dt) + 1;  // the next multiple of dt, when dt > 0
   for (long steps = 0; t < 2 * t_release && steps < settings.max_steps; ++steps) {
     if (dt > 0) {
-      y = released.at(t, y, k * dt);
-      t = k++ * dt;
+      const double next = std::min(k++ * dt, 2 * t_release);
+      y = released.at(t, y, next);
+      t = next;
     } else if (!released.step(t, y.data(), 2 * t_release, h)) {
       fail("integrator failure in phase III; tighten {{rtol}}");
     }

@@ -69,12 +69,28 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   return out;
 }
 
+void check_shot_settings(const ShotSettings& settings) {
+  check_integrator(settings.integrator);
+  if (settings.air) check_air(*settings.air);
+  check_ordinary(std::abs(settings.target_level), 0, 1e6, "target_level", "m", "target level's distance from the engine's base");
+}
+
 Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace, double trace_dt_s) {
+  check_shot_settings(settings);
   const double time_unit = std::sqrt(engine.L2 / engine.material.g);  // section 3 [s]
   // The release under Release::range maximises the range as the settings define it.
   ReleaseCriterion criterion = settings.criterion;
   if (settings.air) criterion.drag = scaled(drag_of(*settings.air, engine.m), engine.L2, engine.material.g);
   criterion.range_from_release = settings.range_from_release;
+  if (trace && trace_dt_s > 0) {
+    // The series runs to twice the release (shot.hpp); its size is known before it is written.
+    const double duration_s = 2 * simulate_shot(scaled_design(engine), criterion, settings.integrator).release.t * time_unit;
+    if (!(duration_s / trace_dt_s <= max_series_points))
+      throw Error(ErrorKind::bad_number, "{{series_dt}} = " + format_significant(trace_dt_s, 6) + " s would cut the " +
+                                             format_significant(duration_s, 4) + " s of the series into more than " +
+                                             std::to_string(static_cast<long>(max_series_points)) + " points; give at least " +
+                                             format_significant(duration_s / max_series_points, 2) + " s");
+  }
   const ShotResult shot = simulate_shot(scaled_design(engine), criterion, settings.integrator, trace, trace_dt_s / time_unit);
   return verification_of(engine, shot, settings.target_level, settings.air, settings.range_from_release);
 }

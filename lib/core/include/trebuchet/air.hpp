@@ -19,6 +19,11 @@ struct Air {
   double wind = 0;                     ///< horizontal wind toward the target (against it: < 0) [m/s]
 };
 
+/// Refuses (Error(bad_number), naming {{air_density}}, {{projectile}}, {{cd}} or {{wind}}) air
+/// or a projectile outside the ordinary: air 1e-6 to 1e4 kg/m^3, projectile 1 to 1e5 kg/m^3,
+/// Cd 1e-3 to 100, wind up to 1000 m/s either way.
+void check_air(const Air& air);
+
 /// The diameter of a sphere of `mass` [kg] and `density` [kg/m^3] [m].
 double sphere_diameter(double mass, double density);
 

@@ -23,4 +23,7 @@ struct IntegratorSettings {
   double max_time = 200;           ///< scaled; phase II is abandoned after this
 };
 
+/// Refuses (Error(bad_number), naming {{rtol}} or {{atol}}) a tolerance outside 1e-15 to 1e-2.
+void check_integrator(const IntegratorSettings& settings);
+
 }  // namespace trebuchet

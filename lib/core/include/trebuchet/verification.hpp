@@ -23,6 +23,11 @@ struct ShotSettings {
   bool range_from_release = false;
 };
 
+/// Refuses settings no shot can run under: check_integrator, check_air, and a target level
+/// beyond 1e6 m either way ({{target_level}}). Searches that try many shots call it first, so
+/// that bad settings are reported as such, not as engines that failed.
+void check_shot_settings(const ShotSettings& settings);
+
 /// What trebuchet-verify reports, in SI units (angles in degrees).
 struct Verification {
   Capacity capacity;       ///< range and energy (eq:T) at the end of the flight, under the settings' air and range definition
@@ -52,9 +57,13 @@ struct Verification {
 Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level,
                              const std::optional<Air>& air = std::nullopt, bool range_from_release = false);
 
+/// The most points a series sampled every trace_dt_s may hold (about 100 MB of CSV).
+inline constexpr double max_series_points = 1e6;
+
 /// Simulates one shot of `engine` under its own g. Throws Error(numerical) as simulate_shot
 /// does. With `trace`, the motion is appended to it (scaled, see simulate_shot): at the step
-/// ends, or every trace_dt_s seconds.
+/// ends, or every trace_dt_s seconds; a trace_dt_s that gives more than max_series_points is
+/// refused (Error(bad_number), {{series_dt}}) before the series is drawn.
 Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace = nullptr,
                            double trace_dt_s = 0);
 
