@@ -7,10 +7,10 @@
 #include <map>
 #include <optional>
 
-#include "trebuchet/app/text_input.hpp"
 #include "trebuchet/app/batch.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/app/csv.hpp"
+#include "trebuchet/app/output_files.hpp"
 #include "trebuchet/format.hpp"
 #include "program.hpp"
 #include "trebuchet/error.hpp"
@@ -20,6 +20,7 @@
 #include "trebuchet/app/request.hpp"
 #include "trebuchet/scaling_table.hpp"
 #include "trebuchet/app/table_json.hpp"
+#include "trebuchet/app/text_input.hpp"
 #include "trebuchet/app/units.hpp"
 
 namespace {
@@ -64,10 +65,11 @@ OptimalEngine in_option_words(OptimalEngine design) {
   return design;
 }
 
-int run(const Options& options) {
+int run(const Options& options, bool format_given) {
   if (options.format != "table" && options.format != "csv" && options.format != "json")
     throw Error(ErrorKind::usage, "--format: '" + options.format + "' is not a format; use table, csv or json");
   const int digits = options.digits.empty() ? default_csv_digits : parse_digits(options.digits, "--digits");
+  if (!options.spreadsheet.empty()) refuse_output_over_input(options.spreadsheet, "spreadsheet", {options.table_file, options.batch});
   const ScalingTable table_from_file =
       options.table_file.empty() ? ScalingTable{} : load_scaling_table(options.table_file);
   const ScalingTable& table = options.table_file.empty() ? builtin_scaling_table() : table_from_file;
@@ -85,10 +87,15 @@ int run(const Options& options) {
     if (!text.empty()) givens.push_back(parse_given(quantity_name(quantity), text));
 
   if (!options.spreadsheet.empty()) {
+    if (!options.batch.empty())
+      throw Error(ErrorKind::usage, "--spreadsheet writes the calculator as a workbook and --batch designs the rows of a file; give one of them");
+    if (format_given || !options.digits.empty())
+      throw Error(ErrorKind::usage, std::string(format_given ? "--format" : "--digits") + " sets what is printed; --spreadsheet writes an .xlsx workbook, drop it");
     // The workbook opens on the paper's examples, or on the givens: R and T on the capacity
     // sheet, R and another on the sheet for R and one parameter, any other pair on the last.
     SpreadsheetInputs inputs;
     inputs.material = request.material;
+    if (!options.scale.empty()) inputs.model_scale = request.scale;  // the sheet "model scaling" opens on it
     for (DesignRequest* sheet : {&inputs.capacity, &inputs.range_and_one, &inputs.any_pair})
       sheet->theta_i_deg = request.theta_i_deg, sheet->F = request.F, sheet->branch = request.branch, sheet->material = request.material;
     if (givens.size() == 2) {
@@ -202,5 +209,5 @@ int main(int argc, char** argv) {
   app.add_option("--spreadsheet", options.spreadsheet, "write the calculator as a workbook with live formulas (.xlsx), opened on the paper's examples or on the givens");
   app.add_option("--table", options.table_file, "constants file in the schema of data/cpnc.json");
 
-  return run_program(app, Program::calc, argc, argv, [&] { return run(options); });
+  return run_program(app, Program::calc, argc, argv, [&] { return run(options, app.count("--format") > 0); });
 }

@@ -7,6 +7,7 @@
 #include "run.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/parallel.hpp"
+#include "trebuchet/app/output_files.hpp"
 #include "trebuchet/app/text_input.hpp"
 
 namespace trebuchet::verify {
@@ -107,6 +108,8 @@ int run_shot(const Options& o, bool fit) {
   if (!o.series.empty() && count != 1)
     throw Error(ErrorKind::usage, "--series writes the motion of one design; the input holds " + std::to_string(count));
   if (!o.plot.empty() && count != 1) throw Error(ErrorKind::usage, "--plot draws one design; the input holds " + std::to_string(count));
+  if (!o.series.empty()) refuse_output_over_input(o.series, "series", {o.input});
+  if (!o.plot.empty()) refuse_output_over_input(o.plot, "plot", {o.input, o.series}, true);
   if (!o.input.empty() && !in.single) return run_many(o, in, check);
 
   DesignValues values = o.input.empty() ? o.design : read_design_values(in.rows.front().design, in.where.front());

@@ -1,11 +1,13 @@
 #include "trebuchet/app/batch.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "trebuchet/app/csv.hpp"
 #include "trebuchet/app/request.hpp"
+#include "trebuchet/app/schema.hpp"
 #include "trebuchet/app/units.hpp"
 
 namespace trebuchet {
@@ -58,6 +60,12 @@ std::vector<Column> parse_header(const std::vector<std::string>& names) {
                                             "; name exactly two of R, T, L1, L2, L4, D, M, m, mb, Lb, l (e.g. 'R,m' or 'R_m,m_kg')" +
                                             (passed_names.empty() ? "" : "; " + passed_names + " would pass through, not as givens"));
   }
+  // A column passed through must not take the name of one the calculator writes (in CSV or JSON).
+  const std::vector<std::string> written = design_output_names();
+  for (const Column& column : columns)
+    if (column.role == ColumnRole::passed && std::find(written.begin(), written.end(), column.key) != written.end())
+      throw Error(ErrorKind::usage, "batch header: the column '" + column.key + "' would pass through, but the output has a column '" +
+                                        column.key + "' of its own; rename it, e.g. '" + column.key + "_input'");
   return columns;
 }
 

@@ -15,6 +15,7 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/quality.hpp"
+#include "trebuchet/app/output_files.hpp"
 #include "trebuchet/app/report.hpp"
 #include "trebuchet/app/units.hpp"
 
@@ -366,24 +367,30 @@ void run_gnuplot(const std::filesystem::path& folder, const std::string& script)
     _exit(127);
   }
   int status = 0;
-  if (child < 0 || waitpid(child, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw Error(ErrorKind::usage, "{{plot}}: gnuplot failed on " + (folder / script).string() + ", see gnuplot.log there" +
-                                      (child >= 0 && WIFEXITED(status) && WEXITSTATUS(status) == 127 ? " (gnuplot is not installed; apt-get install gnuplot-nox)" : ""));
+  if (child < 0 || waitpid(child, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    // The folder is removed with the failure, so gnuplot's last words go into the message.
+    std::ifstream log(folder / "gnuplot.log");
+    std::string said((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+    if (said.size() > 400) said = "..." + said.substr(said.size() - 400);
+    throw Error(ErrorKind::usage, "{{plot}}: gnuplot failed on " + script +
+                                      (child >= 0 && WIFEXITED(status) && WEXITSTATUS(status) == 127 ? " (gnuplot is not installed; apt-get install gnuplot-nox)"
+                                                                                                     : said.empty() ? "" : ": " + said));
+  }
 }
 
 }  // namespace
 
 void write_picture_folder(const std::string& dir, const std::vector<PictureFile>& files, const std::vector<std::string>& scripts) {
-  const std::filesystem::path folder(dir);
-  std::error_code ec;
-  std::filesystem::create_directories(folder, ec);
-  std::filesystem::remove(folder / "gnuplot.log", ec);
+  // Drawn in a folder of its own beside `dir`, and moved in only when every picture is drawn.
+  PendingOutput output(dir, "plot", true);
+  const std::filesystem::path folder(output.temporary());
   for (const PictureFile& file : files) {
     std::ofstream out(folder / file.name);
     out << file.text;
-    if (!out) throw Error(ErrorKind::usage, "{{plot}}: cannot write " + (folder / file.name).string() + "; give a folder you can write to");
+    if (!out) throw Error(ErrorKind::usage, "{{plot}}: cannot write " + (std::filesystem::path(dir) / file.name).string() + "; give a folder you can write to");
   }
   for (const std::string& script : scripts) run_gnuplot(folder, script);
+  output.commit();
 }
 
 }  // namespace trebuchet

@@ -171,7 +171,7 @@ EngineRecord read_engine(const nlohmann::json& object, const std::string& where)
 
 DesignRows read_design_rows(std::istream& input, const std::string& source) {
   const std::vector<std::string_view> engine_keys = {"L1", "L2", "L3", "F", "L4", "M", "m", "mb", "D", "theta_i_deg", "theta",
-                                                      "beta2", "youngs_modulus", "wood_density", "g", "R", "T"};
+                                                      "psi_i_deg", "psi_i", "beta2", "youngs_modulus", "wood_density", "g", "R", "T"};
   const std::vector<std::string_view> dropped = {"X", "Y", "Lb", "H", "l", "l4", "L", "mu", "mu_b", "K", "DeltaU", "amplification",
                                                  "branch", "warnings", "air"};
   CsvReader reader(input, source);
@@ -183,7 +183,8 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
   DesignRows out;
   for (const std::string& header : reader.header()) {
     if (const auto name = split_column_name(header, engine_keys)) {
-      columns.push_back({Column::engine, {name->key == "theta" ? "theta_i_deg" : name->key, name->unit}});
+      const std::string key = name->key == "theta" ? "theta_i_deg" : name->key == "psi_i" ? "psi_i_deg" : name->key;
+      columns.push_back({Column::engine, {key, name->unit}});
     } else if (split_column_name(header, dropped)) {
       columns.push_back({Column::dropped, {header, ""}});
     } else if (header == "error") {
@@ -280,6 +281,13 @@ std::vector<std::string> design_csv_header() {
   return header;
 }
 
+std::vector<std::string> design_output_names() {
+  std::vector<std::string> names = design_csv_header();
+  for (const Field& field : design_fields(OptimalEngine{})) names.push_back(field.key);
+  names.insert(names.end(), {"scaled_from", "branch_steps", "line", "error", "exit_code"});
+  return names;
+}
+
 std::string design_csv_text(const OptimalEngine& design, int digits) {
   const std::vector<Field> fields = design_fields(design);
   require_finite(fields);
@@ -358,6 +366,13 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
   row.insert(row.end(), {check ? (check->pass ? "yes" : "no") : "", air, assumed["release"].get<std::string>(),
                          csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), join(v.warnings, "; ")});
   return row;
+}
+
+std::vector<std::string> verification_output_names() {
+  std::vector<std::string> names = verification_csv_header();
+  for (const Field& field : verification_fields(Verification{})) names.push_back(field.key);
+  names.insert(names.end(), {"predicted", "deviation", "tolerance", "engine", "assumptions", "error", "exit_code"});
+  return names;
 }
 
 void require_finite(const Verification& v) { verification_fields(v); }

@@ -12,6 +12,7 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/quantity.hpp"
+#include "trebuchet/app/output_files.hpp"
 #include "trebuchet/app/units.hpp"
 
 namespace trebuchet {
@@ -578,15 +579,19 @@ Engine SpreadsheetInputs::alcala_ca() {
 }
 
 void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& inputs, const std::string& path) {
-  for (const DesignRequest* sheet : {&inputs.capacity, &inputs.range_and_one, &inputs.any_pair})
+  for (const DesignRequest* sheet : {&inputs.capacity, &inputs.range_and_one, &inputs.any_pair}) {
+    table.block(sheet->theta_i_deg, sheet->F);  // the calculator's refusal of a (theta_i, F) the table lacks
     for (const Given& given : {sheet->first, sheet->second})
       if (given.quantity == Quantity::Lb)
         throw Error(ErrorKind::given_count, "the workbook's pairs are log-linear (eq:RT_ZiZj), and Lb = L1 + L2 is not; give l = L1/L2 "
                                             "instead, or design with Lb in trebuchet-calc itself");
-  // libxlsxwriter finds an unwritable path only when it closes the file: try it first.
-  if (!std::ofstream(path, std::ios::binary | std::ios::app))
+  }
+  // Written under a temporary name and moved into place when closed: a failure leaves no half workbook.
+  PendingOutput output(path, "spreadsheet");
+  // libxlsxwriter finds an unwritable path only when it closes the file, and says so on stderr: try it first.
+  if (!std::ofstream(output.temporary(), std::ios::binary))
     throw Error(ErrorKind::usage, "{{spreadsheet}}: cannot write '" + path + "'; give a file you can write to");
-  lxw_workbook* book = workbook_new(path.c_str());
+  lxw_workbook* book = workbook_new(output.temporary().c_str());
   if (!book) throw Error(ErrorKind::usage, "{{spreadsheet}}: cannot write '" + path + "'; give a file you can write to");
   Formats formats{};
   formats.title = workbook_add_format(book);
@@ -611,6 +616,7 @@ void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& input
   write_glossary(book, formats);
   if (workbook_close(book) != LXW_NO_ERROR)
     throw Error(ErrorKind::usage, "{{spreadsheet}}: cannot write '" + path + "'; give a file you can write to");
+  output.commit();
 }
 
 }  // namespace trebuchet

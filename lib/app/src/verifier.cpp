@@ -1,5 +1,6 @@
 #include "trebuchet/app/verifier.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -8,6 +9,7 @@
 #include "trebuchet/format.hpp"
 #include "trebuchet/app/pictures.hpp"
 #include "trebuchet/app/report.hpp"
+#include "trebuchet/app/output_files.hpp"
 #include "trebuchet/app/text_input.hpp"
 
 namespace trebuchet {
@@ -21,6 +23,12 @@ DesignInputs read_design_inputs(const std::string& text, const std::string& path
   if (csv) {
     std::istringstream stream(text);
     DesignRows rows = read_design_rows(stream, source_name(path));
+    // A column passed through must not take the name of one the verifier writes (in CSV or JSON).
+    const std::vector<std::string> written = verification_output_names();
+    for (const std::string& column : rows.passed_columns)
+      if (std::find(written.begin(), written.end(), column) != written.end())
+        throw Error(ErrorKind::usage, source_name(path) + ": the column '" + column + "' would pass through, but the output has a column '" +
+                                          column + "' of its own; rename it, e.g. '" + column + "_input'");
     in.passed_columns = std::move(rows.passed_columns);
     in.rows = std::move(rows.rows);
     for (const auto& row : in.rows) in.where.push_back("line " + std::to_string(row.line));
@@ -73,11 +81,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   if (check.fit) engine_json.update(simulated);
   out.json["engine"] = engine_json;
   out.json["assumptions"] = assumptions_json(engine, check.settings);
-  if (!check.series_path.empty()) {
-    std::ofstream file(check.series_path);
-    file << trace_csv(trace, engine);
-    if (!file) throw Error(ErrorKind::usage, "{{series}}: cannot write '" + check.series_path + "'");
-  }
+  if (!check.series_path.empty()) write_output_file(check.series_path, trace_csv(trace, engine), "series");
   out.outside_tolerance = capacity && !capacity->pass;
   return out;
 }

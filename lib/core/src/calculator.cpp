@@ -368,11 +368,7 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
     if (!(g.value > 0) || !std::isfinite(g.value))
       throw Error(ErrorKind::bad_number, describe_given(g) + " must be a positive finite number");
 
-  const TableBlock* block = table.find_block(request.theta_i_deg, request.F);
-  if (!block)
-    throw Error(ErrorKind::out_of_range, "tab:CPNC has no constants for theta_i = " + format_number(request.theta_i_deg) +
-                                             " deg with F = " + format_fraction(request.F) + "; it has " +
-                                             table.block_list() + " ({{theta_i_deg}}, {{F}})");
+  const TableBlock* block = &table.block(request.theta_i_deg, request.F);
 
   const SizeFactors scaling = size_factors(1, table.reference, 1, request.material);
   const Material& m = request.material;

@@ -7,6 +7,7 @@
 #include "trebuchet/app/batch.hpp"
 #include "trebuchet/app/csv.hpp"
 #include "trebuchet/app/names.hpp"
+#include "trebuchet/app/output_files.hpp"
 #include "trebuchet/app/pictures.hpp"
 #include "trebuchet/app/report.hpp"
 #include "trebuchet/app/request.hpp"

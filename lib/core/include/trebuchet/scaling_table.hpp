@@ -65,6 +65,9 @@ struct ScalingTable {
 
   /// The block for (theta_i, F), or nullptr.
   const TableBlock* find_block(double theta_i_deg, double F) const;
+  /// The block for (theta_i, F); Error(out_of_range) naming {{theta_i_deg}}, {{F}} and the
+  /// blocks there are, when the table has none.
+  const TableBlock& block(double theta_i_deg, double F) const;
   /// "30 deg/F=1, 30 deg/F=2/3, ..." for messages.
   std::string block_list() const;
 };

@@ -104,6 +104,9 @@ nlohmann::ordered_json design_json(const OptimalEngine& design);
 /// design's cells with `digits` significant digits, quoted where they must be and joined by commas
 /// (no line feed): a batch appends them to a row.
 std::vector<std::string> design_csv_header();
+/// Every name the calculator's outputs use (CSV columns, JSON keys, a batch's line and error):
+/// a column of a batch passed through must not take one of them.
+std::vector<std::string> design_output_names();
 std::string design_csv_text(const OptimalEngine& design, int digits);
 
 /// Keys R, T, eps, Q, force_factor, v, h, x, A_deg, t_release, t_liftoff, FS_perp_mg, FR_Mg,
@@ -115,6 +118,9 @@ nlohmann::ordered_json verification_json(const Verification& v, const std::optio
 /// kN, the check (predicted_R_m ... pass, empty without a prediction), the assumptions and the
 /// warnings; and one shot's cells with `digits` significant digits.
 std::vector<std::string> verification_csv_header();
+/// Every name the verifier's outputs use (CSV columns, JSON keys, error): a column of a CSV of
+/// designs passed through must not take one of them.
+std::vector<std::string> verification_output_names();
 std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSettings& settings, const Verification& v,
                                               const std::optional<CapacityCheck>& check, int digits);
 

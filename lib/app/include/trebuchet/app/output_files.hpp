@@ -1,0 +1,41 @@
+// Outputs the user names (--series, --plot, --spreadsheet) are written whole or not at all: to a
+// temporary name beside them, renamed into place once complete. A file given as input is never
+// an output.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace trebuchet {
+
+/// A file or folder being written under a temporary name beside `path` ("x.csv.part-1234"),
+/// moved onto `path` by commit(). Destroyed without commit() (a failure), it removes what was
+/// written, so a failed run leaves nothing behind. `option` names the output in messages
+/// ("series": {{series}}).
+class PendingOutput {
+ public:
+  PendingOutput(std::string path, std::string option, bool folder = false);
+  PendingOutput(const PendingOutput&) = delete;
+  PendingOutput& operator=(const PendingOutput&) = delete;
+  ~PendingOutput();
+  /// Where to write meanwhile: a file's temporary name, or a temporary folder (made here).
+  const std::string& temporary() const { return temporary_; }
+  /// Moves the output into place: a file replaces `path`; a folder's files go into `path` (made
+  /// if missing), each replacing its namesake, other files there kept. Error(usage) on failure.
+  void commit();
+
+ private:
+  std::string path_, option_, temporary_;
+  bool folder_ = false, committed_ = false;
+};
+
+/// `text` written to `path` whole or not at all (PendingOutput).
+void write_output_file(const std::string& path, std::string_view text, const std::string& option);
+
+/// Refuses (Error(usage)) an output that would overwrite one of `inputs` ("-" is stdin and
+/// skipped): the same file, or for a folder output a folder that holds one of them.
+void refuse_output_over_input(const std::string& output, const std::string& option, const std::vector<std::string>& inputs,
+                              bool folder = false);
+
+}  // namespace trebuchet
