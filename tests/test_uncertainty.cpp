@@ -30,18 +30,24 @@ TEST_CASE("a Monte Carlo run is the same on any number of threads, and new with 
   auto sample = [&](std::mt19937_64& random) {
     SampleOutcome o;
     o.values = {draw(uniform, random), draw(normal, random), 0.9, 40};
-    if (o.values[0] > 195) o.failure = "too far: beyond 195 m";
+    if (o.values[0] > 195) o.failure = "too far: beyond " + std::to_string(o.values[0]) + " m", o.failure_kind = ErrorKind::out_of_range;
     return o;
   };
   const MonteCarloSummary one = run_monte_carlo(10000, 7, 1, sample), two = run_monte_carlo(10000, 7, 2, sample);
   CHECK(one.values == two.values);
-  CHECK(one.failures == two.failures);
+  REQUIRE(one.failures.size() == two.failures.size());
+  for (std::size_t k = 0; k < one.failures.size(); ++k)
+    CHECK((one.failures[k].reason == two.failures[k].reason && one.failures[k].count == two.failures[k].count &&
+           one.failures[k].first == two.failures[k].first));
   CHECK(run_monte_carlo(10000, 8, 2, sample).values != one.values);
   // The failures are counted by reason: about 5 % of a uniform 100..200 lies above 195. The
   // count is binomial, sd sqrt(10000 0.05 0.95) = 22: 4 sd is 87.
   REQUIRE(one.failures.size() == 1);
-  CHECK(one.failures.front().first == "too far: beyond # m");
-  CHECK(std::abs(one.failures.front().second - 500) < 87);
+  CHECK(one.failures.front().reason == "too far: beyond # m");
+  CHECK(std::abs(one.failures.front().count - 500) < 87);
+  // The first failing sample's own message, numbers and all, and its kind, are kept.
+  CHECK_THAT(one.failures.front().first, Catch::Matches("too far: beyond 19[5-9]\\.[0-9]+ m"));
+  CHECK(one.failures.front().kind == ErrorKind::out_of_range);
   // Percentiles of what worked (uniform on 100..195, normal 50 ± 5), each to 4 standard errors
   // of a quantile, sqrt(p (1 - p)/N)/density with N = 9500: 0.49 m for the uniform's median
   // (density 1/95 per m), 0.064 for the normal's (density 0.080), 0.109 at 5 and 95 % (0.021).

@@ -46,6 +46,7 @@ int run_monte_carlo(const Options& o, bool complete) {
       outcome.values = {v.capacity.R, v.capacity.T, v.eps, v.v};
     } catch (const Error& e) {
       outcome.failure = e.message(option_word);
+      outcome.failure_kind = e.kind();
     }
     return outcome;
   });
@@ -55,13 +56,27 @@ int run_monte_carlo(const Options& o, bool complete) {
   const MonteCarloReport report{summary, inputs, o.seed, complete ? "the completed engine" : "the shot",
                                 settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"), settings.air.has_value(), seconds,
                                 thread_count(o.threads, static_cast<std::size_t>(summary.samples))};
-  std::cout << (o.format == Format::json ? pretty_json(monte_carlo_json(report)) : monte_carlo_table(report));
+  if (o.format == Format::json) {
+    std::cout << pretty_json(monte_carlo_json(report));
+  } else if (o.format == Format::csv) {
+    // CSV holds the percentiles; what the table says around them goes to stderr.
+    std::cout << monte_carlo_csv(report, o.digits);
+    std::cerr << monte_carlo_table(report);
+  } else {
+    std::cout << monte_carlo_table(report);
+  }
   if (!o.plot.empty()) {
     std::vector<std::string> described;
     for (const UncertainInput& u : inputs) described.push_back(describe_uncertain(u));
     write_picture_folder(o.plot, histogram_pictures(summary, join(described, ", ")), {"histogram.gp"});
   }
-  if (summary.values.empty()) throw Error(ErrorKind::numerical, "no sample worked; the first reason: " + summary.failures.front().first);
+  // With no sample left, the run fails as its most frequent failure did: bad input (a range
+  // that holds no engine) or a numerical failure, with that sample's numbers.
+  if (summary.values.empty()) {
+    const SampleFailures& most = summary.failures.front();
+    throw Error(most.kind, "no sample worked; the most frequent reason (" + std::to_string(most.count) + " of " +
+                               std::to_string(summary.samples) + "), in its first sample: " + most.first);
+  }
   return exit_success;
 }
 

@@ -9,6 +9,7 @@
 #include "trebuchet/format.hpp"
 #include "trebuchet/app/pictures.hpp"
 #include "trebuchet/app/report.hpp"
+#include "trebuchet/app/csv.hpp"
 #include "trebuchet/app/output_files.hpp"
 #include "trebuchet/app/text_input.hpp"
 
@@ -112,10 +113,25 @@ nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
     if (!summary.values.empty())
       out["percentiles"][sample_names[k]] = {{"p5", summary.percentiles[k][0]}, {"p50", summary.percentiles[k][1]}, {"p95", summary.percentiles[k][2]}};
   nlohmann::ordered_json failures = nlohmann::ordered_json::array();
-  for (const auto& [reason, count] : summary.failures) failures.push_back({{"reason", reason}, {"count", count}});
+  for (const SampleFailures& f : summary.failures) failures.push_back({{"reason", f.reason}, {"count", f.count}, {"first", f.first}});
   out["failures"] = failures;
   out["air"] = r.in_air ? "air" : "vacuum";
   out["wall_time_s"] = r.seconds;
+  return out;
+}
+
+std::string monte_carlo_csv(const MonteCarloReport& r, int digits) {
+  std::string out = "quantity,p5,p50,p95\n";
+  if (r.summary.values.empty()) return out;
+  const char* columns[] = {"R_m", "T_J", "eps", "v_m_s"};
+  for (std::size_t k = 0; k < sample_names.size(); ++k) {
+    out += columns[k];
+    for (double p : r.summary.percentiles[k]) {
+      out += ',';
+      append_csv_number(out, p, digits);
+    }
+    out += '\n';
+  }
   return out;
 }
 
@@ -144,7 +160,7 @@ std::string monte_carlo_table(const MonteCarloReport& r) {
     }
   }
   out << "failed: " << summary.samples - static_cast<int>(summary.values.size()) << " samples";
-  for (const auto& [reason, count] : summary.failures) out << "; " << count << " " << reason;
+  for (const SampleFailures& f : summary.failures) out << "; " << f.count << " " << f.reason;
   out << "\n";
   return out.str();
 }

@@ -41,13 +41,19 @@ MonteCarloSummary run_monte_carlo(int samples, std::uint64_t seed, int threads,
   });
   MonteCarloSummary summary;
   summary.samples = samples;
-  std::map<std::string, int> failures;
+  std::map<std::string, std::size_t> reasons;  // each reason's place in summary.failures
   for (const SampleOutcome& o : outcomes) {
-    if (o.failure.empty()) summary.values.push_back(o.values);
-    else ++failures[failure_reason(o.failure)];
+    if (o.failure.empty()) {
+      summary.values.push_back(o.values);
+      continue;
+    }
+    const std::string reason = failure_reason(o.failure);
+    const auto [at, first] = reasons.emplace(reason, summary.failures.size());
+    if (first) summary.failures.push_back({reason, 0, o.failure, o.failure_kind});
+    ++summary.failures[at->second].count;
   }
-  summary.failures.assign(failures.begin(), failures.end());
-  std::sort(summary.failures.begin(), summary.failures.end(), [](const auto& a, const auto& b) { return a.second > b.second; });
+  // The most frequent first; alike counts in the order they first failed.
+  std::stable_sort(summary.failures.begin(), summary.failures.end(), [](const auto& a, const auto& b) { return a.count > b.count; });
   if (!summary.values.empty())
     for (std::size_t k = 0; k < sample_names.size(); ++k) {
       std::vector<double> column;

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "trebuchet/error.hpp"
 
 namespace trebuchet {
 
@@ -27,6 +28,15 @@ double draw(const Spread& spread, std::mt19937_64& random);
 struct SampleOutcome {
   std::array<double, 4> values{};
   std::string failure;  ///< empty when the sample worked
+  ErrorKind failure_kind = ErrorKind::numerical;  ///< what kind of failure (error.hpp): bad input or numerical
+};
+
+/// The samples that failed for one reason.
+struct SampleFailures {
+  std::string reason;  ///< the message to its first ';', its numbers written # so that alike failures count together
+  int count = 0;
+  std::string first;   ///< the whole message of the first sample that failed so, numbers and all
+  ErrorKind kind = ErrorKind::numerical;  ///< that sample's
 };
 
 inline constexpr std::array<const char*, 4> sample_names = {"R", "T", "eps", "v"};
@@ -35,7 +45,7 @@ struct MonteCarloSummary {
   int samples = 0;
   std::vector<std::array<double, 4>> values;            ///< of the samples that worked, in sample order
   std::array<std::array<double, 3>, 4> percentiles{};   ///< 5, 50 and 95 % of R, T, eps, v
-  std::vector<std::pair<std::string, int>> failures;    ///< each reason (its message to the first ';', numbers as #) and its count
+  std::vector<SampleFailures> failures;                 ///< by reason, the most frequent first
 };
 
 /// Runs `sample` for samples 0 .. n - 1 on `threads` threads. Sample i draws from its own

@@ -85,6 +85,9 @@ struct MonteCarloReport {
   int threads;
 };
 nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& report);
+/// The percentiles as CSV: a row for each of R_m, T_J, eps, v_m_s with p5, p50, p95 in SI
+/// units and `digits` significant digits (no rows when no sample worked).
+std::string monte_carlo_csv(const MonteCarloReport& report, int digits);
 std::string monte_carlo_table(const MonteCarloReport& report);
 
 }  // namespace trebuchet
