@@ -127,6 +127,8 @@ int run(const Options& options, bool format_given) {
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
     std::vector<std::string> passed_columns;
     const std::size_t design_columns = design_csv_header().size();
+    const auto progress = progress_bar("rows");  // a file's rows are not counted ahead: no total
+    std::size_t rows_done = 0;
     // A row is printed only once it is whole, so that a failure cannot leave half a row. A
     // failed row keeps its place, with its pass-through cells and the message under "error".
     const int failures = run_batch(
@@ -140,6 +142,7 @@ int run(const Options& options, bool format_given) {
           if (!json) std::cout << csv_line(header);
         },
         [&](const BatchRow& row) {
+          if (progress) progress(++rows_done, 0);
           if (row.error) std::cerr << "trebuchet-calc: line " << row.line << ": " << row.error->message(option_word) << "\n";
           if (json) {
             nlohmann::ordered_json out = {{"line", row.line}};
@@ -161,6 +164,7 @@ int run(const Options& options, bool format_given) {
           line += '\n';
           std::cout << line;
         });
+    if (progress) progress(rows_done, rows_done);
     if (json) std::cout << pretty_json(rows);
     if (failures > 0) {
       std::cerr << "trebuchet-calc: " << failures << " row(s) failed; the other rows are in the output\n";

@@ -6,9 +6,12 @@
 #include <CLI/CLI.hpp>
 #include <unistd.h>
 
-#include <functional>
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
 #include <iostream>
+#include <memory>
 #include <string>
 
 #include "exit_codes.hpp"
@@ -26,14 +29,38 @@ inline std::string option_word(std::string_view name) {
   return option;
 }
 
-/// A progress bar on stderr, "[####    ] 3/8 X points", drawn only when stderr is a terminal
-/// (pipes and logs stay clean); empty otherwise.
-inline std::function<void(int, int)> progress_bar(std::string what) {
+/// Progress of long work on stderr: "[#########      ] 412/1000 samples, 130/s, 5 s left", or
+/// without a total (0) "41200 rows, 30000/s". Drawn only when stderr is a terminal (pipes and
+/// logs stay clean), once the work has run for half a second, at most five times a second;
+/// empty otherwise. Callable from any thread, one at a time (for_each_index's progress).
+inline std::function<void(std::size_t, std::size_t)> progress_bar(std::string what) {
   if (!isatty(STDERR_FILENO)) return {};
-  return [what](int done, int total) {
-    const int width = 30, filled = width * done / total;
-    std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, ' ') << "] " << done << "/" << total << " " << what
-              << (done == total ? "\n" : "") << std::flush;
+  using Clock = std::chrono::steady_clock;
+  struct State {
+    Clock::time_point start = Clock::now(), last{};
+    bool drawn = false;
+  };
+  auto state = std::make_shared<State>();
+  return [what, state](std::size_t done, std::size_t total) {
+    const Clock::time_point now = Clock::now();
+    const double elapsed = std::chrono::duration<double>(now - state->start).count();
+    const bool finished = total > 0 && done == total;
+    if (finished ? !state->drawn : (elapsed < 0.5 || now - state->last < std::chrono::milliseconds(200))) return;
+    state->last = now, state->drawn = true;
+    const double rate = done / std::max(elapsed, 1e-9);
+    char speed[64];
+    std::snprintf(speed, sizeof speed, "%.*f/s", rate >= 10 ? 0 : 1, rate);
+    std::string line = "\r";
+    if (total > 0) {
+      const std::size_t width = 30, filled = width * done / total;
+      line += "[" + std::string(filled, '#') + std::string(width - filled, ' ') + "] " + std::to_string(done) + "/" + std::to_string(total);
+    } else {
+      line += std::to_string(done);
+    }
+    line += " " + what + ", " + speed;
+    if (total > 0 && !finished && rate > 0) line += ", " + std::to_string(static_cast<long>((total - done) / rate + 0.5)) + " s left";
+    line += finished ? "\n" : "   ";
+    std::cerr << line << std::flush;
   };
 }
 

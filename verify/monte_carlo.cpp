@@ -27,17 +27,23 @@ int run_monte_carlo(const Options& o, bool complete) {
     engine.material = sample.material.over(engine.material);
     return engine;
   };
+  // The work, decided before the run: a completion's shots are those of the trial (or, when it
+  // fails numerically, 300, twice what the completions of bench-completion take).
+  long shots_per_sample = 1;
   if (!complete) {
     engine_of(first);
   } else {
     try {  // one completion more: bad input is refused before the run; a numerical failure is a sample's
-      complete_engine(completion_request(first));
+      shots_per_sample = complete_engine(completion_request(first)).simulations;
     } catch (const Error& e) {
       if (e.kind() != ErrorKind::numerical) throw;
+      shots_per_sample = 300;
     }
   }
+  const int samples = o.samples.value_or(complete ? default_completion_samples : default_shot_samples);
+  check_monte_carlo_work(samples, shots_per_sample, complete ? "completions" : "shots");
   const auto start = std::chrono::steady_clock::now();
-  const MonteCarloSummary summary = trebuchet::run_monte_carlo(o.samples, o.seed, o.threads, [&](std::mt19937_64& random) {
+  const MonteCarloSummary summary = trebuchet::run_monte_carlo(samples, o.seed, o.threads, [&](std::mt19937_64& random) {
     const Options sample = with_values(o, [&](const Spread& s) { return draw(s, random); });
     SampleOutcome outcome;
     try {
@@ -49,7 +55,7 @@ int run_monte_carlo(const Options& o, bool complete) {
       outcome.failure_kind = e.kind();
     }
     return outcome;
-  });
+  }, progress_bar(complete ? "completions" : "shots"));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<UncertainInput> inputs;
   for (const Uncertain& u : o.uncertain) inputs.push_back(u.input);

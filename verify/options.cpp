@@ -98,8 +98,8 @@ void target_level_option(CLI::App* app, Options& o, bool spreads) {
 }
 
 // A whole number from `lowest` to `highest` into `target`; the message names the option and the range.
-template <class Integer>
-void integer_option(CLI::App* app, const std::string& name, Integer& target, Integer lowest, Integer highest, const std::string& range,
+template <class Integer, class Target>
+void integer_option(CLI::App* app, const std::string& name, Target& target, Integer lowest, Integer highest, const std::string& range,
                     const std::string& help) {
   parsed_option(app, name, [&target, name, lowest, highest, range](const std::string& text) {
     // Read as a wider integer of the same signedness: a negative seed is refused, not wrapped.
@@ -168,9 +168,10 @@ void threads_option(CLI::App* app, Options& o, const std::string& help) {
 
 // The air, and Monte Carlo: shot's and complete's.
 void air_and_sampling_options(CLI::App* app, Options& o) {
-  // A million shots take about a minute on two cores; more is not a question worth asking here.
-  integer_option(app, "--samples", o.samples, 1, 1000000, "1 to 1000000; 10000 give the 5 and 95 % to about 1 %",
-                 "Monte Carlo samples, when a value is a range (2.5t..3.5t) or a spread (3.5m±0.2m) (default 10000)");
+  // The run's work is checked against its budget once the shots of a sample are known (check_monte_carlo_work).
+  integer_option(app, "--samples", o.samples, 1, static_cast<int>(max_monte_carlo_shots), "1 to " + std::to_string(max_monte_carlo_shots),
+                 "Monte Carlo samples, when a value is a range (2.5t..3.5t) or a spread (3.5m±0.2m) (default " +
+                     std::to_string(default_shot_samples) + " for a shot, " + std::to_string(default_completion_samples) + " for complete)");
   integer_option(app, "--seed", o.seed, std::uint64_t{0}, std::uint64_t{0}, "0 or more",
                  "seed of the Monte Carlo draws: the same seed, the same result (default 1)");
   app->add_flag("--air", o.air, "fly through air (quadratic drag on a sphere) instead of vacuum; with --quality range the release maximises the range in air");

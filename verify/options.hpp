@@ -47,7 +47,7 @@ struct Options {
   SweepSpec sweep;                       ///< derive-table: its X grid (the rest from the other options)
   std::optional<Shard> shard;
   std::vector<std::string> parts;        ///< merge
-  int samples = 10000;                   ///< Monte Carlo
+  std::optional<int> samples;            ///< Monte Carlo; not given: default_shot_samples or default_completion_samples
   std::uint64_t seed = 1;
   std::vector<Uncertain> uncertain;      ///< the values given as ranges or spreads, in the order given
 };

@@ -48,7 +48,7 @@ int run_many(const Options& o, const DesignInputs& in, const DesignCheck& check)
     } catch (const Error& e) {
       errors[i] = e;
     }
-  });
+  }, progress_bar("designs"));
   std::vector<std::string> header = in.passed_columns;
   for (const std::string& column : verification_csv_header()) header.push_back(column);
   header.push_back("error");

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
@@ -70,19 +69,12 @@ SweepPoint optimize_point(const SweepSpec& spec, double X) {
 
 }  // namespace
 
-std::vector<SweepPoint> run_sweep(const SweepSpec& spec, Shard shard, int threads, const std::function<void(int, int)>& progress) {
+std::vector<SweepPoint> run_sweep(const SweepSpec& spec, Shard shard, int threads, const Progress& progress) {
   const std::vector<double> grid = sweep_grid(spec);
   std::vector<double> mine;
   for (std::size_t i = shard.k - 1; i < grid.size(); i += shard.n) mine.push_back(grid[i]);
   std::vector<SweepPoint> points(mine.size());
-  std::mutex report;
-  int done = 0;
-  for_each_index(mine.size(), threads, [&](std::size_t i) {
-    points[i] = optimize_point(spec, mine[i]);
-    const std::lock_guard<std::mutex> lock(report);
-    ++done;
-    if (progress) progress(done, static_cast<int>(mine.size()));
-  });
+  for_each_index(mine.size(), threads, [&](std::size_t i) { points[i] = optimize_point(spec, mine[i]); }, progress);
   return points;
 }
 

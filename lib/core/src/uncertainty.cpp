@@ -30,7 +30,7 @@ double draw(const Spread& spread, std::mt19937_64& random) {
 }
 
 MonteCarloSummary run_monte_carlo(int samples, std::uint64_t seed, int threads,
-                                  const std::function<SampleOutcome(std::mt19937_64& random)>& sample) {
+                                  const std::function<SampleOutcome(std::mt19937_64& random)>& sample, const Progress& progress) {
   std::vector<SampleOutcome> outcomes(static_cast<std::size_t>(samples));
   for_each_index(outcomes.size(), threads, [&](std::size_t i) {
     // Each sample's own generator: its draws do not depend on which thread runs it, or when.
@@ -38,7 +38,7 @@ MonteCarloSummary run_monte_carlo(int samples, std::uint64_t seed, int threads,
                            static_cast<std::uint32_t>(i >> 32)};
     std::mt19937_64 random(sequence);
     outcomes[i] = sample(random);
-  });
+  }, progress);
   MonteCarloSummary summary;
   summary.samples = samples;
   std::map<std::string, std::size_t> reasons;  // each reason's place in summary.failures

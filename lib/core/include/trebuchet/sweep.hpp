@@ -10,6 +10,7 @@
 
 #include "trebuchet/capacity.hpp"
 #include "trebuchet/engine.hpp"
+#include "trebuchet/parallel.hpp"
 #include "trebuchet/quality.hpp"
 #include "trebuchet/verification.hpp"
 
@@ -48,11 +49,9 @@ struct SweepPoint {
   int optima_found = 0;         ///< distinct optima from the starts (two where branches compete)
 };
 
-/// Optimises every point of the shard, thread_count(threads, points) at a time (parallel.hpp);
-/// `progress(done, total)` is called
-/// after each point, from one thread at a time. Results are in grid order.
-std::vector<SweepPoint> run_sweep(const SweepSpec& spec, Shard shard, int threads,
-                                  const std::function<void(int, int)>& progress = {});
+/// Optimises every point of the shard, thread_count(threads, points) at a time (parallel.hpp),
+/// telling `progress` of each point done. Results are in grid order.
+std::vector<SweepPoint> run_sweep(const SweepSpec& spec, Shard shard, int threads, const Progress& progress = {});
 
 /// A shard's points with the spec that made them, and where they were read from.
 struct SweepPart {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "trebuchet/error.hpp"
+#include "trebuchet/parallel.hpp"
 
 namespace trebuchet {
 
@@ -50,7 +51,8 @@ struct MonteCarloSummary {
 
 /// Runs `sample` for samples 0 .. n - 1 on `threads` threads. Sample i draws from its own
 /// generator, seeded from (seed, i), so the result is the same on any number of threads.
+/// `progress` hears of every sample done.
 MonteCarloSummary run_monte_carlo(int samples, std::uint64_t seed, int threads,
-                                  const std::function<SampleOutcome(std::mt19937_64& random)>& sample);
+                                  const std::function<SampleOutcome(std::mt19937_64& random)>& sample, const Progress& progress = {});
 
 }  // namespace trebuchet
