@@ -3,7 +3,7 @@
 #   1. the Release build with the benchmarks, warnings as errors, and every tier of the suite
 #      (docs/testing.md);
 #   2. one clang build under AddressSanitizer and UndefinedBehaviorSanitizer, instrumented for
-#      libFuzzer: the four fuzz targets run at once for a minute each, then the tiers that run
+#      libFuzzer: the five fuzz targets run at once for a minute each, then the tiers that run
 #      the code on inputs (unit, cli, robustness; every 10th reference design) run again under
 #      the sanitizers, where any memory error or undefined behaviour aborts the test that hit it.
 # Each stage prints its time. TREBUCHET_FUZZ_SECONDS changes the fuzzing time.
@@ -24,8 +24,8 @@ ctest --test-dir build --output-on-failure -j"$jobs" --timeout 600
 
 stage "sanitizer and fuzzer build (clang)"
 CXX=clang++-14 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTREBUCHET_SANITIZE=ON -DTREBUCHET_FUZZ=ON >/dev/null
-cmake --build build-sanitize -j"$jobs" --target unit-tests trebuchet-calc trebuchet-verify fuzz-units fuzz-design fuzz-batch fuzz-table
-stage "fuzzing: the four targets at once, ${TREBUCHET_FUZZ_SECONDS:-60} s each"
+cmake --build build-sanitize -j"$jobs" --target unit-tests trebuchet-calc trebuchet-verify fuzz-units fuzz-design fuzz-batch fuzz-table fuzz-part
+stage "fuzzing: the five targets at once, ${TREBUCHET_FUZZ_SECONDS:-60} s each"
 bash tests/fuzz/run.sh build-sanitize "${TREBUCHET_FUZZ_SECONDS:-60}"
 stage "unit, cli and robustness tiers under the sanitizers"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 TREBUCHET_REFERENCE_STRIDE=10 \

@@ -21,6 +21,7 @@ int run_monte_carlo(const Options& o, bool complete) {
   // exit code of bad input: a range must hold only values that make an engine.
   const Options first = with_values(o, [](const Spread& s) { return s.a; });
   const ShotSettings settings = shot_settings(first);
+  check_shot_settings(settings);
   // One sample's engine: the flags' design over its material.
   auto engine_of = [](const Options& sample) {
     Engine engine = engine_record(sample.design, "").engine;

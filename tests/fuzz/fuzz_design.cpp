@@ -1,7 +1,8 @@
 // Fuzz target: the design readers, as the verifier reads a file: parse_json, then read_engine
 // on the object or on each member of an array; and the same bytes as CSV (read_design_rows),
-// then read_engine on each row. A design read must be finite and must write and read back as
-// itself.
+// then read_engine on each row; and read_design_inputs, which tells JSON from CSV, checks the
+// columns passed through and reads text that is not UTF-8. A design read must be finite and must
+// write and read back as itself; every cell passed through must be UTF-8.
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/app/schema.hpp"
 #include "trebuchet/app/text_input.hpp"
+#include "trebuchet/app/verifier.hpp"
 
 namespace {
 
@@ -35,6 +37,13 @@ extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t siz
     } else {
       read_one(input, "design");
     }
+  } catch (const trebuchet::Error&) {
+  }
+  try {
+    const trebuchet::DesignInputs in = trebuchet::read_design_inputs(text, "fuzz.csv");
+    for (const auto& row : in.rows)
+      for (const std::string& cell : row.passed)
+        if (!trebuchet::is_utf8(cell)) std::abort();
   } catch (const trebuchet::Error&) {
   }
   try {

@@ -15,12 +15,13 @@ seeds_units=("$here/seeds/units")
 seeds_design=("$tests/cli" "$tests/robustness/inputs" "$tests/golden/expected")
 seeds_batch=("$tests/cli" "$tests/robustness/inputs")
 seeds_table=("$(dirname "$tests")/data" "$tests/robustness/inputs")
-# The four targets run at once, each in the background, and are awaited in turn.
+seeds_part=("$here/seeds/part" "$tests/robustness/inputs")
+# The five targets run at once, each in the background, and are awaited in turn.
 run_target() {
   local target=$1 corpus seeds max_len=4096 log status
   corpus=$(mktemp -d)
   seeds="seeds_$target[@]"
-  [ "$target" = table ] && max_len=16384
+  [ "$target" = table ] || [ "$target" = part ] && max_len=16384
   log=$artifacts/$target.log
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 "$build/tests/fuzz/fuzz-$target" "$corpus" "${!seeds}" \
     -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=$max_len -print_final_stats=1 \
@@ -30,11 +31,11 @@ run_target() {
   return $status
 }
 declare -A pid
-for target in units design batch table; do
+for target in units design batch table part; do
   run_target "$target" &
   pid[$target]=$!
 done
-for target in units design batch table; do
+for target in units design batch table part; do
   log=$artifacts/$target.log
   if wait "${pid[$target]}"; then
     runs=$(grep -oE 'stat::number_of_executed_units: *[0-9]+' "$log" | grep -oE '[0-9]+$')
@@ -45,5 +46,5 @@ for target in units design batch table; do
     grep -E 'ERROR|SUMMARY|runtime error|terminate' "$log" | head -5
   fi
 done
-echo "fuzz targets: $((4 - failed)) of 4 ran clean"
+echo "fuzz targets: $((5 - failed)) of 5 ran clean"
 [ "$failed" -eq 0 ]

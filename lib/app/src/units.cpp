@@ -138,6 +138,8 @@ double parse_value(std::string_view text, UnitDimension dimension, std::string_v
     throw Error(ErrorKind::bad_number, what + " is not a finite number; " + fix);
 
   if (rest.empty()) return value;
+  if (text.find("..") != std::string_view::npos || text.find("\u00b1") != std::string_view::npos || text.find("+-") != std::string_view::npos)
+    throw Error(ErrorKind::bad_number, what + " is a range or a spread, and " + std::string(name) + " takes one value; " + fix);
   // "150 m" as spreadsheets and people write it: blanks between the number and its unit.
   if (const auto unit_start = rest.find_first_not_of(" \t"); unit_start != 0 && unit_start != std::string_view::npos) rest = rest.substr(unit_start);
   for (const Unit& unit : units) {

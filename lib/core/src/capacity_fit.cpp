@@ -16,6 +16,7 @@ enum class Matched { energy, mass };
 CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, double target, const Material& material,
                       const ShotSettings& settings, double rtol) {
   check_shot_settings(settings);
+  check_material(material);
   CapacityFit fit;
   ScaledDesign design = shape;
   // One shot of the design with ratio mu gives the L2 that lands at R; eq:ExtraScalings then

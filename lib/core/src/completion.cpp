@@ -122,6 +122,7 @@ double objective_of(const Verification& v, const ReleaseCriterion& criterion) {
 
 Completion complete_engine(const CompletionRequest& request) {
   check_shot_settings(request.settings);
+  check_material(request.material);
   const Attested& a = request.attested;
   Completion out;
   // Each attested value, positive (mb may be 0; theta_i is checked below with its range).

@@ -61,10 +61,7 @@ void check_engine(const Engine& e) {
   for (const auto& [value, key, what] : {std::tuple{e.M, "M", "counterweight mass"}, {e.m, "m", "projectile mass"}})
     check_ordinary(value, 1e-9, 1e12, key, "kg", what);
   if (e.mb > 0) check_ordinary(e.mb, 1e-9, 1e12, "mb", "kg", "beam mass");
-  check_ordinary(e.material.g, 1e-6, 1e6, "g", "m/s2", "gravitational acceleration");
-  check_ordinary(e.material.beta2, 1e-9, 1, "beta2", "", "allowed bending u2/L2");
-  check_ordinary(e.material.youngs_modulus, 1e3, 1e15, "youngs_modulus", "Pa", "Young's modulus");
-  check_ordinary(e.material.wood_density, 1, 1e5, "wood_density", "kg/m3", "wood density");
+  check_material(e.material);
   const auto proportion = [](double a, const char* key_a, double b, const char* key_b) {
     constexpr double widest = 1e6;
     if (!(a <= widest * b && b <= widest * a))

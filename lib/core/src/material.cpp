@@ -2,7 +2,16 @@
 
 #include <cmath>
 
+#include "trebuchet/error.hpp"
+
 namespace trebuchet {
+
+void check_material(const Material& m) {
+  check_ordinary(m.beta2, 1e-9, 1, "beta2", "", "allowed bending u2/L2");
+  check_ordinary(m.youngs_modulus, 1e3, 1e15, "youngs_modulus", "Pa", "Young's modulus");
+  check_ordinary(m.wood_density, 1, 1e5, "wood_density", "kg/m3", "wood density");
+  check_ordinary(m.g, 1e-6, 1e6, "g", "m/s2", "gravitational acceleration");
+}
 
 double k_M(const Material& material) {  // eq:kMkD
   return 4.0 * M_PI / 3.0 * material.g * material.wood_density * material.wood_density / material.youngs_modulus;

@@ -121,6 +121,7 @@ Optimum search_from(const OptimizeRequest& request, const Start& start) {
 std::vector<Optimum> optimize(const OptimizeRequest& request) {
   use_gsl_return_codes();
   check_shot_settings(request.settings);
+  check_material(request.material);
   // L3 = F L1 cos(theta_i) - L2 > 0 needs l > 1/(F cos theta_i); the paper's engines, formal
   // ones of appendix B included, have l < 60.
   const double l_min = 1 / (request.F * std::cos(radians(request.theta_i_deg)));

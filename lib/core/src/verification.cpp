@@ -76,6 +76,7 @@ void check_shot_settings(const ShotSettings& settings) {
 }
 
 Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace, double trace_dt_s) {
+  check_engine(engine);  // as given, its material too: a caller may have changed either since it was read
   check_shot_settings(settings);
   const double time_unit = std::sqrt(engine.L2 / engine.material.g);  // section 3 [s]
   // The release under Release::range maximises the range as the settings define it.

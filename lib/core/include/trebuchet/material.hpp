@@ -13,6 +13,11 @@ struct Material {
   double g = 9.81;               ///< gravitational acceleration [m/s^2]
 };
 
+/// Refuses (Error(bad_number), naming {{beta2}}, {{youngs_modulus}}, {{wood_density}} or {{g}})
+/// a material outside the ordinary: beta2 1e-9 to 1, E 1e3 to 1e15 Pa, wood 1 to 1e5 kg/m^3, g
+/// 1e-6 to 1e6 m/s^2. Within them every factor of eq:kMkD and eq:ExtraScalings is finite.
+void check_material(const Material& material);
+
 /// k_M = (4 pi / 3) g rho_d^2 / M_e of eq:kMkD [kg/m^4].
 double k_M(const Material& material);
 
