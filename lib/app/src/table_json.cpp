@@ -388,7 +388,9 @@ nlohmann::ordered_json sweep_part_json(const SweepPart& part) {
 }
 
 SweepPart read_sweep_part(const nlohmann::json& j, const std::string& origin) {
-  if (!j.is_object() || j.value("kind", "") != part_kind) fail(origin, "not a sweep part");
+  // "kind" may be any JSON at all: compared only when it is a string.
+  if (!j.is_object() || !j.contains("kind") || !j["kind"].is_string() || j["kind"].get<std::string>() != part_kind)
+    fail(origin, "not a sweep part");
   SweepPart part;
   part.origin = origin;
   try {
