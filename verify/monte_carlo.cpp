@@ -72,17 +72,17 @@ int run_monte_carlo(const Options& o, bool complete) {
   } else {
     std::cout << monte_carlo_table(report);
   }
-  if (!o.plot.empty()) {
-    std::vector<std::string> described;
-    for (const UncertainInput& u : inputs) described.push_back(describe_uncertain(u));
-    write_picture_folder(o.plot, histogram_pictures(summary, join(described, ", ")), {"histogram.gp"});
-  }
   // With no sample left, the run fails as its most frequent failure did: bad input (a range
-  // that holds no engine) or a numerical failure, with that sample's numbers.
+  // that holds no engine) or a numerical failure, with that sample's numbers; no histogram.
   if (summary.values.empty()) {
     const SampleFailures& most = summary.failures.front();
     throw Error(most.kind, "no sample worked; the most frequent reason (" + std::to_string(most.count) + " of " +
                                std::to_string(summary.samples) + "), in its first sample: " + most.first);
+  }
+  if (!o.plot.empty()) {
+    std::vector<std::string> described;
+    for (const UncertainInput& u : inputs) described.push_back(describe_uncertain(u));
+    write_picture_folder(o.plot, histogram_pictures(summary, join(described, ", ")), {"histogram.gp"});
   }
   return exit_success;
 }

@@ -169,7 +169,7 @@ void threads_option(CLI::App* app, Options& o, const std::string& help) {
 // The air, and Monte Carlo: shot's and complete's.
 void air_and_sampling_options(CLI::App* app, Options& o) {
   // The run's work is checked against its budget once the shots of a sample are known (check_monte_carlo_work).
-  integer_option(app, "--samples", o.samples, 1, static_cast<int>(max_monte_carlo_shots), "1 to " + std::to_string(max_monte_carlo_shots),
+  integer_option(app, "--samples", o.samples, 1, static_cast<int>(max_run_shots), "1 to " + std::to_string(max_run_shots),
                  "Monte Carlo samples, when a value is a range (2.5t..3.5t) or a spread (3.5m±0.2m) (default " +
                      std::to_string(default_shot_samples) + " for a shot, " + std::to_string(default_completion_samples) + " for complete)");
   integer_option(app, "--seed", o.seed, std::uint64_t{0}, std::uint64_t{0}, "0 or more",

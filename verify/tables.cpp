@@ -64,6 +64,13 @@ int run_derive_table(const Options& o) {
   spec.material = o.material.over(Material{});
   spec.criterion = o.settings.criterion;
   if (o.shard) part.shard = *o.shard;
+  // The work, decided before the run: the shard's X points at about 800 shots each (an optimum).
+  const long points = (static_cast<long>(sweep_grid(spec).size()) - part.shard.k + part.shard.n) / part.shard.n;
+  if (points * shots_per_sweep_point > max_run_shots)
+    throw Error(ErrorKind::usage, "--X gives " + std::to_string(points) + " X points to this run, about " +
+                                      std::to_string(points * shots_per_sweep_point) + " shots, more than the " + std::to_string(max_run_shots) +
+                                      " a run may take (about 30 s on two cores); give at most " + std::to_string(max_run_shots / shots_per_sweep_point) +
+                                      " points a run: a coarser --X, or --shard k/N over several runs (docs/table_derivation.md)");
   const auto start = std::chrono::steady_clock::now();
   part.points = run_sweep(spec, part.shard, o.threads, progress_bar("X points"));
   int shots = 0;

@@ -88,11 +88,11 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
 }
 
 void check_monte_carlo_work(long samples, long shots_per_sample, const std::string& sampled) {
-  if (samples * shots_per_sample <= max_monte_carlo_shots) return;
+  if (samples * shots_per_sample <= max_run_shots) return;
   throw Error(ErrorKind::usage, "{{samples}} " + std::to_string(samples) + " of " + sampled + " at " + std::to_string(shots_per_sample) +
                                     " shot(s) each would take " + std::to_string(samples * shots_per_sample) + " shots, more than the " +
-                                    std::to_string(max_monte_carlo_shots) + " a run may take (about 30 s on two cores); give {{samples}} " +
-                                    std::to_string(std::max(1L, max_monte_carlo_shots / shots_per_sample)) + " or fewer");
+                                    std::to_string(max_run_shots) + " a run may take (about 30 s on two cores); give {{samples}} " +
+                                    std::to_string(std::max(1L, max_run_shots / shots_per_sample)) + " or fewer");
 }
 
 std::string describe_uncertain(const UncertainInput& u) {
