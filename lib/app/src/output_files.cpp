@@ -12,7 +12,10 @@ namespace fs = std::filesystem;
 
 PendingOutput::PendingOutput(std::string path, std::string option, bool folder)
     : path_(std::move(path)), option_(std::move(option)), folder_(folder) {
-  temporary_ = path_ + ".part-" + std::to_string(::getpid());
+  // Beside the output, never inside it: "pictures/" is drawn in "pictures.part-<pid>".
+  std::string base = path_;
+  while (base.size() > 1 && base.back() == '/') base.pop_back();
+  temporary_ = base + ".part-" + std::to_string(::getpid());
   std::error_code ec;
   fs::remove_all(temporary_, ec);
   if (folder_ && !fs::create_directories(temporary_, ec))
