@@ -16,6 +16,9 @@ namespace trebuchet::verify {
 int run_monte_carlo(const Options& o, bool complete) {
   if (!o.input.empty()) throw Error(ErrorKind::usage, "ranges and spreads are for values given as flags; drop the file '" + o.input + "'");
   if (!o.series.empty()) throw Error(ErrorKind::usage, "--series writes the motion of one shot; a Monte Carlo run has many");
+  if (o.design.R || o.design.T)
+    throw Error(ErrorKind::usage, "--R and --T check one shot against a predicted capacity; a Monte Carlo run reports the spread of R "
+                                  "and T instead: drop them, or give each value as one number");
   // The run's assumptions are those of each uncertain value at its first number (a range's low
   // end, a spread's mean). A design that is bad input there is refused before the run, with the
   // exit code of bad input: a range must hold only values that make an engine.

@@ -44,7 +44,7 @@ std::vector<Column> parse_header(const std::vector<std::string>& names) {
       }
     }
     for (const Column& seen : columns)
-      if (seen.role != ColumnRole::passed && seen.role == column.role && seen.key == column.key)
+      if (seen.role != ColumnRole::passed && seen.role == column.role && (seen.key == column.key || column.role != ColumnRole::given))
         throw Error(ErrorKind::usage, "batch header: column '" + name + "' names " + column.key + " a second time; keep one");
     givens += column.role == ColumnRole::given;
     columns.push_back(column);

@@ -84,6 +84,10 @@ std::vector<std::string> split(std::string_view line, char separator, const std:
 }  // namespace
 
 CsvReader::CsvReader(std::istream& input, std::string source) : input_(input), source_(std::move(source)) {
+  // UTF-16, as "Unicode text" from a spreadsheet, is told by its byte-order mark.
+  const int first = input_.rdbuf()->sgetc();
+  if (first == 0xFF || first == 0xFE)
+    throw Error(ErrorKind::usage, source_ + " is UTF-16 (Unicode text); save it as CSV UTF-8, or CSV, and give that");
   std::string line;
   while (read_line(line)) {
     // Excel's "CSV UTF-8" starts with a byte-order mark; it is not part of the first column's name.
@@ -96,26 +100,46 @@ CsvReader::CsvReader(std::istream& input, std::string source) : input_(input), s
   throw Error(ErrorKind::usage, source_ + " is empty; its first line must name the columns, e.g. 'R,m'");
 }
 
+// A line ends at LF, CRLF or a lone CR (as old Mac files end them).
 bool CsvReader::read_line(std::string& line) {
   line.clear();
   std::streambuf* buffer = input_.rdbuf();
+  constexpr int eof = std::char_traits<char>::eof();
+  if (ended_) return false;
   int c = buffer->sbumpc();
-  if (c == std::char_traits<char>::eof()) return false;
+  if (c == eof) return false;
   ++line_number_;
-  for (; c != std::char_traits<char>::eof() && c != '\n'; c = buffer->sbumpc()) {
-    if (line.size() == max_line_bytes)
-      throw Error(ErrorKind::usage, source_ + " line " + std::to_string(line_number_) + " is longer than " +
-                                        std::to_string(max_line_bytes >> 10) + " KiB; give a CSV file, one row a line");
-    line += static_cast<char>(c);
+  std::size_t length = 0;
+  bool nul = false;
+  // A line too long is read to its end, so that the next starts where it should; but no
+  // further than an input may be long (/dev/zero has no end), and then the input ends here.
+  for (; c != eof && c != '\n' && c != '\r'; c = buffer->sbumpc()) {
+    nul |= c == 0;
+    if (++length <= max_line_bytes) line += static_cast<char>(c);
+    else if (length > max_input_bytes) break;
   }
-  if (!line.empty() && line.back() == '\r') line.pop_back();
+  if (c == '\r' && buffer->sgetc() == '\n') buffer->sbumpc();
+  const std::string where = source_ + " line " + std::to_string(line_number_);
+  if (length > max_input_bytes) {
+    ended_ = true;
+    throw Error(ErrorKind::usage, where + " has no end within " + std::to_string(max_input_bytes >> 20) + " MiB; give a CSV file, one row a line");
+  }
+  if (length > max_line_bytes)
+    throw Error(ErrorKind::usage, where + " is longer than " + std::to_string(max_line_bytes >> 10) + " KiB; give a CSV file, one row a line");
+  if (nul) throw Error(ErrorKind::usage, where + " holds a NUL byte; give text, saved as UTF-8 (\"CSV UTF-8\")");
   line = as_utf8(line);  // a line saved as Windows-1252 ("Sa\xf4ne") is read as it was meant: UTF-8 from here on
   return true;
 }
 
 bool CsvReader::next(CsvRow& row) {
   std::string line;
-  while (read_line(line)) {
+  while (true) {
+    try {
+      if (!read_line(line)) break;
+    } catch (const Error&) {
+      row.line = line_number_;  // the caller reports the row in its place, and reads on
+      throw;
+    }
     if (skipped(line)) continue;
     row.line = line_number_;
     const std::string where = source_ + " line " + std::to_string(line_number_);

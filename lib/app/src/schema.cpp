@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 #include "trebuchet/app/csv.hpp"
 #include "trebuchet/error.hpp"
@@ -109,6 +110,14 @@ DesignValues read_design_values(const nlohmann::json& object, const std::string&
       {&DesignValues::g, {"g", UnitDimension::acceleration}},   {&DesignValues::R, {"R", UnitDimension::length}},
       {&DesignValues::T, {"T", UnitDimension::energy}}};
   for (const auto& [member, key] : keys) v.*member = read_value(object, key.first, key.second, where);
+  // The short names the flags and CSV columns use are read too; a value given under both names is refused.
+  for (const auto& [member, name, alias] : {std::tuple{&DesignValues::theta_i_deg, "theta_i_deg", "theta"}, {&DesignValues::psi_i_deg, "psi_i_deg", "psi_i"}}) {
+    const std::optional<double> short_name = read_value(object, alias, UnitDimension::angle, where);
+    if (!short_name) continue;
+    if (v.*member)
+      throw Error(ErrorKind::usage, engine_key_name(where, name) + " and " + engine_key_name(where, alias) + " are one value given twice; keep one");
+    v.*member = short_name;
+  }
   return v;
 }
 
@@ -123,6 +132,10 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   e.mb = required(v.mb, "mb", where, "the beam mass, e.g. \"mb\": \"660kg\"");
   e.theta_i_deg = v.theta_i_deg.value_or(standard_theta_i_deg);
   e.psi_i_deg = v.psi_i_deg.value_or(0);
+  // D = 0 is how the outputs write "not given" (they read back); below 0 it is a mistake.
+  if (v.D && !(*v.D >= 0))
+    throw Error(ErrorKind::bad_number, engine_key_name(where, "D") + " = " + format_significant(*v.D, 6) +
+                                           ": the beam diameter must not be negative; give it, or leave it out (0: not given)");
   e.D = v.D.value_or(0);
   const std::string named = where.empty() ? std::string("flags") : where;
   // A program's options give one of them; a file may carry both, as the programs write them (below).
@@ -184,6 +197,9 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
   for (const std::string& header : reader.header()) {
     if (const auto name = split_column_name(header, engine_keys)) {
       const std::string key = name->key == "theta" ? "theta_i_deg" : name->key == "psi_i" ? "psi_i_deg" : name->key;
+      for (std::size_t k = 0; k < columns.size(); ++k)
+        if (columns[k].role == Column::engine && columns[k].name.key == key)
+          throw Error(ErrorKind::usage, source + ": the columns '" + reader.header()[k] + "' and '" + header + "' both give " + key + "; keep one");
       columns.push_back({Column::engine, {key, name->unit}});
     } else if (split_column_name(header, dropped)) {
       columns.push_back({Column::dropped, {header, ""}});

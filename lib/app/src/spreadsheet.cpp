@@ -139,11 +139,20 @@ class Sheet {
     validation.value_list = const_cast<char**>(list);  // libxlsxwriter only reads it
     worksheet_data_validation_cell(sheet_, row, col, &validation);
   }
+  // Every number the workbook caches is finite: a value beyond the range of doubles would be
+  // cached as INF or NAN, which no spreadsheet reads as the formula's result.
+  void require_finite(int row, int col, double value) const {
+    if (!std::isfinite(value))
+      throw Error(ErrorKind::bad_number, "with these inputs the workbook's cell " + ref(row, col) +
+                                             " would be beyond the range of numbers; give values of ordinary size");
+  }
   Expr number(int row, int col, double value) {
+    require_finite(row, col, value);
     worksheet_write_number(sheet_, row, col, value, nullptr);
     return {ref(row, col), value};
   }
   Expr input(int row, int col, double value) {
+    require_finite(row, col, value);
     worksheet_write_number(sheet_, row, col, value, formats_.input);
     return {ref(row, col), value};
   }
@@ -156,6 +165,7 @@ class Sheet {
     return {ref(row, col), value};
   }
   Expr formula(int row, int col, const Expr& e) {
+    require_finite(row, col, e.v);
     worksheet_write_formula_num(sheet_, row, col, local(e.f).c_str(), nullptr, e.v);
     return {ref(row, col), e.v};
   }
@@ -579,6 +589,7 @@ Engine SpreadsheetInputs::alcala_ca() {
 }
 
 void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& inputs, const std::string& path) {
+  check_material(inputs.material);
   for (const DesignRequest* sheet : {&inputs.capacity, &inputs.range_and_one, &inputs.any_pair}) {
     table.block(sheet->theta_i_deg, sheet->F);  // the calculator's refusal of a (theta_i, F) the table lacks
     for (const Given& given : {sheet->first, sheet->second})

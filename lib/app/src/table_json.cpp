@@ -218,6 +218,8 @@ ScalingTable parse_scaling_table(std::string_view json_text, const std::string& 
   if (json_depth(json_text) > max_json_depth)
     throw Error(ErrorKind::data_file, origin + ": arrays or objects nest more than " + std::to_string(max_json_depth) +
                                           " levels deep; give a table in the schema of data/cpnc.json");
+  if (const auto key = duplicate_key(json_text))
+    throw Error(ErrorKind::data_file, origin + ": the key \"" + *key + "\" is given twice in one object; keep one");
   json document;
   try {
     document = json::parse(json_text);

@@ -6,6 +6,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
+#include <set>
+#include <vector>
 
 #include "trebuchet/error.hpp"
 
@@ -90,6 +93,48 @@ std::size_t json_depth(std::string_view text) {
   return deepest;
 }
 
+namespace {
+
+// A SAX reader that finds the first key given twice in one object: nlohmann keeps the last
+// silently, and a design's "L1" given twice is a mistake to name, not to guess at.
+class DuplicateKeys : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  std::optional<std::string> found;
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(number_integer_t) override { return true; }
+  bool number_unsigned(number_unsigned_t) override { return true; }
+  bool number_float(number_float_t, const string_t&) override { return true; }
+  bool string(string_t&) override { return true; }
+  bool binary(binary_t&) override { return true; }
+  bool start_object(std::size_t) override {
+    keys_.emplace_back();
+    return true;
+  }
+  bool key(string_t& key) override {
+    if (!keys_.back().insert(key).second) found = key;
+    return !found;  // stop at the first
+  }
+  bool end_object() override {
+    keys_.pop_back();
+    return true;
+  }
+  bool start_array(std::size_t) override { return true; }
+  bool end_array() override { return true; }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+
+ private:
+  std::vector<std::set<std::string>> keys_;
+};
+
+}  // namespace
+
+std::optional<std::string> duplicate_key(std::string_view text) {
+  DuplicateKeys reader;
+  nlohmann::json::sax_parse(text, &reader, nlohmann::json::input_format_t::json, false);
+  return reader.found;
+}
+
 std::string brief_json(const nlohmann::json& value) {
   constexpr std::size_t shown = 60;
   std::string text = value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
@@ -167,6 +212,8 @@ nlohmann::json parse_json(const std::string& text, const std::string& source, st
   if (json_depth(text) > max_json_depth)
     throw Error(ErrorKind::usage, source + " nests arrays or objects more than " + std::to_string(max_json_depth) +
                                       " levels deep; give " + std::string(expected));
+  if (const auto key = duplicate_key(text))
+    throw Error(ErrorKind::usage, source + " gives the key \"" + *key + "\" twice in one object; keep one");
   try {
     return nlohmann::json::parse(quote_huge_numbers(text));
   } catch (const nlohmann::json::exception& e) {

@@ -81,6 +81,34 @@ std::size_t parse_number_prefix(std::string_view text, double& value, const std:
   return static_cast<std::size_t>(end - text.data());
 }
 
+// `text` without the blanks it starts with: spaces, tabs, U+00A0 and U+202F.
+std::string_view skip_blanks(std::string_view text) {
+  while (true) {
+    if (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
+    else if (text.rfind("\u00a0", 0) == 0) text.remove_prefix(2);
+    else if (text.rfind("\u202f", 0) == 0) text.remove_prefix(3);
+    else return text;
+  }
+}
+
+// Whether `text` is a finite number and nothing else (blanks around it aside): "4", "2/3".
+bool bare_number(std::string_view text) {
+  text = skip_blanks(text);
+  double value = 0;
+  std::size_t used = 0;
+  try {
+    used = parse_number_prefix(text, value, "");
+  } catch (const Error&) {
+    return false;
+  }
+  if (used < text.size() && text[used] == '/') {
+    double denominator = 0;
+    const std::size_t more = parse_number_prefix(text.substr(used + 1), denominator, "");
+    used = more > 0 ? used + 1 + more : 0;
+  }
+  return used > 0 && std::isfinite(value) && skip_blanks(text.substr(used)).empty();
+}
+
 // The unit written after the number of `text` ("t" of "4t", "" of "4" or "2/3"); "" when the text is not a number.
 std::string unit_of(std::string_view text, std::string_view name) {
   double value = 0;
@@ -91,8 +119,7 @@ std::string unit_of(std::string_view text, std::string_view name) {
     if (more > 0) used += 1 + more;
   }
   if (used == 0) return "";
-  const auto start = text.find_first_not_of(" \t", used);
-  return start == std::string_view::npos ? "" : std::string(text.substr(start));
+  return std::string(skip_blanks(text.substr(used)));
 }
 
 }  // namespace
@@ -140,8 +167,10 @@ double parse_value(std::string_view text, UnitDimension dimension, std::string_v
   if (rest.empty()) return value;
   if (text.find("..") != std::string_view::npos || text.find("\u00b1") != std::string_view::npos || text.find("+-") != std::string_view::npos)
     throw Error(ErrorKind::bad_number, what + " is a range or a spread, and " + std::string(name) + " takes one value; " + fix);
-  // "150 m" as spreadsheets and people write it: blanks between the number and its unit.
-  if (const auto unit_start = rest.find_first_not_of(" \t"); unit_start != 0 && unit_start != std::string_view::npos) rest = rest.substr(unit_start);
+  // "150 m" as spreadsheets and people write it: blanks between the number and its unit, the
+  // no-break spaces of French and other locales (U+00A0, U+202F) too.
+  rest = skip_blanks(rest);
+  if (rest.empty()) return value;  // "150 "
   for (const Unit& unit : units) {
     if (unit.suffix != rest) continue;
     if (unit.dimension != dimension)
@@ -168,25 +197,37 @@ double parse_positive(std::string_view text, UnitDimension dimension, std::strin
 
 std::optional<Spread> parse_spread(std::string_view text, UnitDimension dimension, std::string_view name) {
   const std::string what = std::string(name) + ": '" + std::string(text) + "'";
-  if (const auto dots = text.find(".."); dots != std::string_view::npos) {
-    // A unit written at one end only is the unit of both: 3..4t is 3 t to 4 t.
-    std::string low(text.substr(0, dots)), high(text.substr(dots + 2));
-    const std::string low_unit = unit_of(low, name), high_unit = unit_of(high, name);
-    if (low_unit.empty() && !high_unit.empty()) low += high_unit;
-    if (high_unit.empty() && !low_unit.empty()) high += low_unit;
-    const double a = parse_value(low, dimension, name), b = parse_value(high, dimension, name);
+  // The two sides of a range or spread, each a value; a unit written at one side only is the
+  // unit of both (3..4t is 3 t to 4 t, 3.5±0.2m is 3.5 m ± 0.2 m). A side's error quotes the whole text.
+  const auto sides = [&](std::string_view separator, const char* form) {
+    const auto at = text.find(separator);
+    const auto trimmed = [](std::string_view side) {
+      side = skip_blanks(side);
+      while (!side.empty() && (side.back() == ' ' || side.back() == '\t')) side.remove_suffix(1);
+      return std::string(side);
+    };
+    std::string first = trimmed(text.substr(0, at)), second = trimmed(text.substr(at + separator.size()));
+    if (second.find(separator) != std::string::npos || text.find(separator == ".." ? "\u00b1" : "..") != std::string_view::npos)
+      throw Error(ErrorKind::bad_number, what + " has more than one '..' or '±'; write " + form);
+    if (first.empty() || second.empty())
+      throw Error(ErrorKind::bad_number, what + " lacks a side; write " + form);
+    const std::string first_unit = unit_of(first, name), second_unit = unit_of(second, name);
+    if (bare_number(first) && !second_unit.empty()) first += second_unit;
+    if (bare_number(second) && !first_unit.empty()) second += first_unit;
+    try {
+      return std::pair{parse_value(first, dimension, name), parse_value(second, dimension, name)};
+    } catch (const Error& e) {
+      throw Error(e.kind(), std::string(e.named_message()) + " (in " + what + ")");
+    }
+  };
+  if (text.find("..") != std::string_view::npos) {
+    const auto [a, b] = sides("..", "low..high, e.g. 2.5t..3.5t");
     if (!(a < b)) throw Error(ErrorKind::bad_number, what + " is not a range from low to high; write it as low..high, e.g. 2.5t..3.5t");
     return Spread{Spread::Kind::uniform, a, b};
   }
   for (std::string_view sign : {std::string_view("\u00b1"), std::string_view("+-")}) {
-    const auto at = text.find(sign);
-    if (at == std::string_view::npos) continue;
-    // As for a range: 3.5±0.2m is 3.5 m ± 0.2 m.
-    std::string mean_text(text.substr(0, at)), deviation_text(text.substr(at + sign.size()));
-    const std::string mean_unit = unit_of(mean_text, name), deviation_unit = unit_of(deviation_text, name);
-    if (mean_unit.empty() && !deviation_unit.empty()) mean_text += deviation_unit;
-    if (deviation_unit.empty() && !mean_unit.empty()) deviation_text += mean_unit;
-    const double mean = parse_value(mean_text, dimension, name), deviation = parse_value(deviation_text, dimension, name);
+    if (text.find(sign) == std::string_view::npos) continue;
+    const auto [mean, deviation] = sides(sign, "mean±deviation, e.g. 3.5m±0.2m");
     if (!(deviation >= 0)) throw Error(ErrorKind::bad_number, what + " has a negative deviation; write mean±deviation, e.g. 3.5m±0.2m");
     return Spread{Spread::Kind::normal, mean, deviation};
   }

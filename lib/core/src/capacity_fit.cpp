@@ -1,6 +1,7 @@
 #include "trebuchet/capacity_fit.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include "solve_1d.hpp"
 #include "trebuchet/error.hpp"
@@ -49,11 +50,16 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
   // way: outward in steps that double from 1 % (warm) or 5 % in mu, up to a factor 20, to the
   // first sign change of the error; shots that fail on the way are stepped over.
   const double first_step = warm ? 0.01 : 0.05, reach = 3.0;
+  bool any_shot = false;               // a shot on the walk ran
+  std::optional<Error> numerical_failure;  // the last shot whose integration failed
   auto error_or_nan = [&](double log_mu) {
     if (log_mu < std::log(1e-6) || log_mu > 0) return std::nan("");
     try {
-      return log_error(log_mu);
-    } catch (const Error&) {
+      const double error = log_error(log_mu);
+      any_shot = true;
+      return error;
+    } catch (const Error& e) {
+      if (integration_failed(e)) numerical_failure = e;
       return std::nan("");
     }
   };
@@ -76,6 +82,9 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
   }
   const std::string goal = matched == Matched::energy ? "deliver " + format_significant(target / 1e3, 4) + " kJ at " + format_significant(R, 4) + " m"
                                                       : "throw " + format_significant(target, 4) + " kg to " + format_significant(R, 4) + " m";
+  // Every shot's integration failed: the integrator is at fault, not the capacity.
+  if (!bracketed && !any_shot && numerical_failure)
+    throw Error(ErrorKind::numerical, "every shot of the fit failed: " + numerical_failure->named_message());
   if (!bracketed)
     throw Error(ErrorKind::out_of_range, "no projectile mass within a factor 20 of " +
                                              (warm ? "the starting m/M = " + format_significant(shape.mu, 3)

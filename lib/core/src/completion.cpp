@@ -197,25 +197,31 @@ Completion complete_engine(const CompletionRequest& request) {
 
   const std::vector<double> x0 = start(p, out.chosen);
   double best = -1;
-  // The search's shots at a tolerance of 1e-8 (or the request's, when looser): its Q is within
-  // 1e-9 of the default's (docs/work_precision.csv), far below the change of Q across the final
-  // simplex, 1e-5 in log coordinates; the winner is shot again under the request's settings, which
-  // also check the energy to their own bound. A third less time (bench-completion).
+  // The search's shots with the default stepper at a tolerance of 1e-8, whatever the request's
+  // integrator: their Q is within 1e-9 of the default's (docs/work_precision.csv), far below the
+  // change of Q across the final simplex, 1e-5 in log coordinates, and a third faster
+  // (bench-completion). The winner is shot again under the request's own settings.
   ShotSettings search = request.settings;
-  search.integrator.rtol = std::max(search.integrator.rtol, 1e-8);
-  search.integrator.atol = std::max(search.integrator.atol, 1e-8);
-  search.integrator.max_energy_drift = std::max(search.integrator.max_energy_drift, 1e-6);
+  search.integrator = IntegratorSettings{};
+  search.integrator.rtol = search.integrator.atol = 1e-8;
+  search.integrator.max_energy_drift = 1e-6;
+  // An engine works when its shot runs and the model holds up to the release (no warning: the
+  // sling pulls, the counterweight and the tip stay above the base); else it costs 0, worse
+  // than any that works, and the last reason is kept for the message.
+  std::optional<Error> last_failure;
   auto cost = [&](const std::vector<double>& x) {
     ++out.simulations;
     try {
       const Engine e = build(p, x);
       check_engine(e);
       const Verification v = verify_engine(e, search);
+      if (!v.warnings.empty()) throw Error(ErrorKind::out_of_range, v.warnings.front());
       const double objective = objective_of(v, criterion);
       if (objective > best) best = objective, out.engine = e, out.verification = v;
       return -objective;
-    } catch (const Error&) {
-      return 0.0;  // no working engine here: worse than any that works
+    } catch (const Error& e) {
+      last_failure = e;
+      return 0.0;
     }
   };
   if (x0.empty()) {
@@ -226,8 +232,9 @@ Completion complete_engine(const CompletionRequest& request) {
     cost(x0);
     minimize_simplex(cost, x0, 0.1, 1e-5, 600);
     if (!(best > 0))
-      throw Error(ErrorKind::out_of_range, "no choice of " + join(out.chosen, ", ") +
-                                               " gives a working engine with these attested values; check them, or attest fewer");
+      throw Error(last_failure && integration_failed(*last_failure) ? ErrorKind::numerical : ErrorKind::out_of_range,
+                  "no choice of " + join(out.chosen, ", ") + " gives a working engine with these attested values" +
+                      (last_failure ? " (the last tried: " + last_failure->named_message() + ")" : "") + "; check them, or attest fewer");
     out.verification = verify_engine(out.engine, request.settings);
     ++out.simulations;
   }

@@ -174,6 +174,13 @@ void check_integrator(const IntegratorSettings& settings) {
   check_ordinary(settings.atol, 1e-15, 1e-2, "atol", "", "absolute tolerance per step");
 }
 
+bool integration_failed(const Error& error) {
+  if (error.kind() != ErrorKind::numerical) return false;
+  for (const std::string& name : error.names())
+    if (name == "rtol" || name == "atol" || name == "stepper") return true;
+  return false;
+}
+
 gsl_odeiv2_driver* PhaseIntegrator::make(const IntegratorSettings& settings) {
   check_integrator(settings);
   gsl_odeiv2_driver* d = gsl_odeiv2_driver_alloc_y_new(&system_, stepper_type(settings.stepper), 1e-3, settings.atol, settings.rtol);

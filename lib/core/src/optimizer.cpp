@@ -65,6 +65,7 @@ struct Search {
   double best = -1;
   CapacityFit best_fit;
   std::string last_failure;  // why the last shape that could not deliver the capacity failed
+  ErrorKind last_kind = ErrorKind::out_of_range;
 
   // Minus the quality of the shape at log coordinates x, its mu fitted to the capacity; a
   // shape that cannot deliver it, or fails, scores 0.
@@ -77,12 +78,16 @@ struct Search {
                                   ? fit_range_and_mass(shape, request->capacity.R, *request->projectile_mass, request->material, request->settings)
                                   : fit_capacity(shape, request->capacity, request->material, request->settings);
       simulations += fit.simulations;
+      // The model must hold up to the release (no warning: the sling pulls, the counterweight
+      // and the tip stay above the base); an optimum outside it is no engine.
+      if (!fit.verification.warnings.empty()) throw Error(ErrorKind::out_of_range, fit.verification.warnings.front());
       const double q = objective_of(fit.verification);
       if (q > best) best = q, best_fit = fit;
       return -q;
     } catch (const Error& e) {
       simulations += 1;
       last_failure = e.named_message();
+      last_kind = integration_failed(e) ? ErrorKind::numerical : ErrorKind::out_of_range;
       return 0;
     }
   }
@@ -103,8 +108,9 @@ Optimum search_from(const OptimizeRequest& request, const Start& start) {
   out.iterations = minimize_simplex([&](const std::vector<double>& x) { return search.cost(x, fixed.theta_i_deg, fixed.F); },
                                     {std::log(start.shape.l), std::log(start.shape.l4), std::log(start.shape.mu_b)}, 0.05,
                                     request.shape_tolerance, 400);
+  // A search whose last shape failed in its integration is a numerical failure, named by it.
   if (!(search.best > 0))
-    throw Error(ErrorKind::out_of_range, "no shape near the " + start.name + " start delivers " +
+    throw Error(search.last_kind == ErrorKind::numerical ? ErrorKind::numerical : ErrorKind::out_of_range, "no shape near the " + start.name + " start delivers " +
                                              format_significant(request.capacity.R, 4) + " m with " +
                                              (request.projectile_mass ? format_significant(*request.projectile_mass, 4) + " kg stones"
                                                                       : format_significant(request.capacity.T / 1e3, 4) + " kJ") +
@@ -133,14 +139,16 @@ std::vector<Optimum> optimize(const OptimizeRequest& request) {
                                              "); lower theta_i or raise F (the paper's are 30 or 40 deg and 1, 2/3 or 1/2)");
   std::vector<Optimum> optima;
   std::string reasons;
+  bool all_numerical = true;
   for (const Start& start : starts_for(request)) {
     try {
       optima.push_back(search_from(request, start));
     } catch (const Error& e) {
       reasons += (reasons.empty() ? "" : "; ") + e.named_message();
+      all_numerical = all_numerical && e.kind() == ErrorKind::numerical;
     }
   }
-  if (optima.empty()) throw Error(ErrorKind::out_of_range, reasons);
+  if (optima.empty()) throw Error(all_numerical ? ErrorKind::numerical : ErrorKind::out_of_range, reasons);
   return optima;
 }
 

@@ -4,6 +4,8 @@
 
 #include <array>
 
+#include "trebuchet/error.hpp"
+
 namespace trebuchet {
 
 /// The GSL odeiv2 steppers: explicit Runge-Kutta, Adams, and implicit ones, which get a
@@ -25,5 +27,10 @@ struct IntegratorSettings {
 
 /// Refuses (Error(bad_number), naming {{rtol}} or {{atol}}) a tolerance outside 1e-15 to 1e-2.
 void check_integrator(const IntegratorSettings& settings);
+
+/// Whether `error` is a failure of the integration (energy drift, step budget, a failed step),
+/// whose fix is a setting of the integrator, which its message names ({{rtol}}, {{stepper}}):
+/// not a degenerate engine (a beam that cannot turn), which no setting mends.
+bool integration_failed(const Error& error);
 
 }  // namespace trebuchet

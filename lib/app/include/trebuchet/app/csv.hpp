@@ -20,7 +20,10 @@ struct CsvRow {
 
 /// Reads a CSV file line by line. The header is the first line that is neither blank nor a
 /// comment ('#'); its separator (';' or tab if the header has one outside quotes and no comma,
-/// else ',') is the file's. Lines longer than 64 KiB are refused, so an endless input ends.
+/// else ',') is the file's. Lines end at LF, CRLF or CR. A line longer than 64 KiB is refused
+/// and the next read after it; one without an end within max_input_bytes ends the input, so an
+/// endless input ends. UTF-16 and NUL bytes are refused; a line not in UTF-8 is read as
+/// Windows-1252 (as_utf8).
 class CsvReader {
  public:
   /// Reads up to the header. Throws Error(usage) naming `source` for an input without one.
@@ -37,6 +40,7 @@ class CsvReader {
   std::string source_;
   int line_number_ = 0;
   char separator_ = ',';
+  bool ended_ = false;  ///< a line without an end within max_input_bytes ended the input
   std::vector<std::string> header_;
 };
 

@@ -12,7 +12,8 @@ namespace trebuchet {
 /// A file or folder being written under a temporary name beside `path` ("x.csv.part-1234"),
 /// moved onto `path` by commit(). Destroyed without commit() (a failure), it removes what was
 /// written, so a failed run leaves nothing behind. `option` names the output in messages
-/// ("series": {{series}}).
+/// ("series": {{series}}). A symbolic link is written through; a device or a pipe (/dev/null,
+/// a FIFO) is written into directly, since a rename would replace it.
 class PendingOutput {
  public:
   PendingOutput(std::string path, std::string option, bool folder = false);
@@ -27,14 +28,14 @@ class PendingOutput {
 
  private:
   std::string path_, option_, temporary_;
-  bool folder_ = false, committed_ = false;
+  bool folder_ = false, committed_ = false, direct_ = false;  // direct_: a device or pipe, written into
 };
 
 /// `text` written to `path` whole or not at all (PendingOutput).
 void write_output_file(const std::string& path, std::string_view text, const std::string& option);
 
-/// Refuses (Error(usage)) an output that would overwrite one of `inputs` ("-" is stdin and
-/// skipped): the same file, or for a folder output a folder that holds one of them.
+/// Refuses (Error(usage)) an output that would overwrite one of `inputs`: the same file (for
+/// "-", the file stdin is redirected from), or for a folder output a folder that holds one.
 void refuse_output_over_input(const std::string& output, const std::string& option, const std::vector<std::string>& inputs,
                               bool folder = false);
 

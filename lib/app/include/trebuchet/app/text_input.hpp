@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -19,6 +20,9 @@ inline constexpr std::size_t max_json_depth = 32;
 /// The deepest nesting of arrays and objects in JSON text, counted outside strings; the count
 /// stops once it passes max_json_depth.
 std::size_t json_depth(std::string_view text);
+
+/// The first key given twice in one object of JSON text, if any (nlohmann would keep the last).
+std::optional<std::string> duplicate_key(std::string_view text);
 
 /// A JSON value for a message: its text, cut after 60 characters ("...").
 std::string brief_json(const nlohmann::json& value);
@@ -45,7 +49,7 @@ std::string pretty_json(const Json& value) {
   return value.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
-/// Parses JSON text. Nesting deeper than max_json_depth is refused. A number beyond the range of a double (1e400) becomes a string of its own
+/// Parses JSON text. Nesting deeper than max_json_depth and a key given twice in one object are refused. A number beyond the range of a double (1e400) becomes a string of its own
 /// text, so that the reader of that one member reports it and the others are kept. Throws
 /// Error(usage) naming `source` and what it should hold for text that is not JSON.
 nlohmann::json parse_json(const std::string& text, const std::string& source, std::string_view expected);
