@@ -179,10 +179,18 @@ void air_and_sampling_options(CLI::App* app, Options& o) {
                "density of the air (default 1.2kg/m3)", true, true);
   parsed_option(app, "--cd", [&o](const std::string& text) {
     if (text == "Re") o.drag_of_reynolds = true;
+    else if (text.find_first_of("0123456789") == std::string::npos)
+      throw Error(ErrorKind::usage, "--cd: '" + text + "' is not a drag coefficient; give a number, e.g. 0.47, or Re for Cd(Re)");
     else o.drag_coefficient = parse_positive(text, UnitDimension::dimensionless, "--cd");
   }, "drag coefficient of the sphere (default 0.47), or Re for Cd(Re) of a smooth sphere");
   parsed_option(app, "--projectile", [&o](const std::string& text) {
-    o.projectile_density = text == "stone" ? 2500 : text == "iron" ? 7870 : parse_positive(text, UnitDimension::density, "--projectile");
+    if (text == "stone" || text == "iron") {
+      o.projectile_density = text == "stone" ? 2500 : 7870;
+      return;
+    }
+    if (text.find_first_of("0123456789") == std::string::npos)
+      throw Error(ErrorKind::usage, "--projectile: '" + text + "' is not a projectile; give stone, iron or a density, e.g. 7870kg/m3");
+    o.projectile_density = parse_positive(text, UnitDimension::density, "--projectile");
   }, "stone (2500kg/m3, the default), iron (7870kg/m3) or a density: gives the sphere's size");
   value_option(app, o, "--wind", option_slot(&Options::wind), UnitDimension::speed,
                "horizontal wind toward the target, e.g. 5m/s or -20km/h (against)", true);

@@ -82,7 +82,8 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
                                                               : "where the range peaks (Denny's criterion)";
   std::ostringstream out;
   out << "engine simulated:\n" << engine_table(engine) << "  theta_i = " << sig(engine.theta_i_deg, 4)
-      << " deg, arm fraction (L2 + L3)/H = " << sig(arm_fraction(engine), 4) << "\n"
+      << " deg, arm fraction (L2 + L3)/H = " << sig(arm_fraction(engine), 4)
+      << (engine.psi_i_deg != 0 ? ", counterweight propped at psi_i = " + sig(engine.psi_i_deg, 4) + " deg" : std::string()) << "\n"
       << "assumptions: " << (settings.air ? describe_air(*settings.air, engine.m) : std::string("vacuum (no air drag)")) << ", g = " << sig(g, 4)
       << " m/s2, release " << rule << ", "
       << (settings.range_from_release ? std::string("range from the release point to where the flight dips below the release height (Denny's)")

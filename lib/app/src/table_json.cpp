@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <map>
 
@@ -108,6 +109,9 @@ class Reader {
 
   double number(const json& object, const std::string& path, const std::string& key) const {
     const json& value = member(object, path, key);
+    // parse_json keeps a number beyond a double (1e400) as its text.
+    if (value.is_string() && std::isinf(std::strtod(value.get<std::string>().c_str(), nullptr)))
+      fail(join(path, key), value.get<std::string>() + " is beyond the range of numbers");
     if (!value.is_number()) fail(join(path, key), "expected a number, got " + std::string(value.type_name()));
     double x = value.get<double>();
     if (!std::isfinite(x)) fail(join(path, key), "not a finite number");
@@ -118,6 +122,12 @@ class Reader {
     double x = number(object, path, key);
     if (!(x > 0)) fail(join(path, key), "must be positive, got " + format_number(x));
     return x;
+  }
+
+  std::string text(const json& object, const std::string& path, const std::string& key) const {
+    const json& value = member(object, path, key);
+    if (!value.is_string()) fail(join(path, key), "expected a string, got " + std::string(value.type_name()));
+    return value.get<std::string>();
   }
 
   const json& array(const json& object, const std::string& path, const std::string& key) const {
@@ -351,21 +361,22 @@ nlohmann::ordered_json sweep_point_json(const SweepPoint& p) {
 
 namespace {
 
-SweepPoint read_point(const nlohmann::json& j, const std::string& where) {
+SweepPoint read_point(const Reader& reader, const nlohmann::json& j, const std::string& where) {
   SweepPoint p;
-  p.X = j.at("X").get<double>();
-  p.capacity = {j.at("R").get<double>(), j.at("T").get<double>(), 0};
-  if (j.contains("error")) {
-    p.error = j.at("error").get<std::string>();
+  p.X = reader.number(j, where, "X");
+  p.capacity = {reader.positive(j, where, "R"), reader.positive(j, where, "T"), 0};
+  if (j.is_object() && j.contains("error")) {
+    p.error = reader.text(j, where, "error");
+    if (p.error.empty()) reader.fail(Reader::join(where, "error"), "empty; a failed point says why it failed");
     return p;
   }
   p.engine = read_engine(j, where).engine;
   p.shot.capacity = p.capacity;
-  p.shot.Q = j.at("Q").get<double>(), p.shot.eps = j.at("eps").get<double>();
-  p.shot.force_factor = j.at("force_factor").get<double>();
-  p.shot.theta_release_deg = j.at("theta_release_deg").get<double>();
-  p.optima_found = j.at("optima_found").get<int>();
-  p.simulations = j.at("simulations").get<int>();
+  p.shot.Q = reader.positive(j, where, "Q"), p.shot.eps = reader.positive(j, where, "eps");
+  p.shot.force_factor = reader.number(j, where, "force_factor");
+  p.shot.theta_release_deg = reader.number(j, where, "theta_release_deg");
+  p.optima_found = static_cast<int>(reader.number(j, where, "optima_found"));
+  p.simulations = static_cast<int>(reader.number(j, where, "simulations"));
   return p;
 }
 
@@ -393,26 +404,27 @@ SweepPart read_sweep_part(const nlohmann::json& j, const std::string& origin) {
   // "kind" may be any JSON at all: compared only when it is a string.
   if (!j.is_object() || !j.contains("kind") || !j["kind"].is_string() || j["kind"].get<std::string>() != part_kind)
     fail(origin, "not a sweep part");
+  const Reader reader(origin);
   SweepPart part;
   part.origin = origin;
   try {
     SweepSpec& spec = part.spec;
-    spec.theta_i_deg = j.at("theta_i_deg").get<double>();
-    spec.F = j.at("F").get<double>();
-    spec.X_from = j.at("X_from").get<double>(), spec.X_to = j.at("X_to").get<double>(), spec.X_step = j.at("X_step").get<double>();
-    spec.R0 = j.at("R0").get<double>(), spec.T0 = j.at("T0").get<double>();
-    const nlohmann::json& material = j.at("reference_material");
-    spec.material = {material.at("beta2").get<double>(), material.at("youngs_modulus").get<double>(),
-                     material.at("wood_density").get<double>(), material.at("g").get<double>()};
-    spec.criterion.release = parse_release(j.at("quality").get<std::string>(), "quality");
-    spec.criterion.n = j.at("n").get<double>();
-    part.shard = parse_shard(j.at("shard").get<std::string>());
-    const nlohmann::json& points = j.at("points");
-    for (std::size_t i = 0; i < points.size(); ++i) part.points.push_back(read_point(points.at(i), "points[" + std::to_string(i) + "]"));
-  } catch (const nlohmann::json::exception& e) {
-    fail(origin, std::string("malformed sweep part (") + e.what() + ")");
+    spec.theta_i_deg = reader.positive(j, "", "theta_i_deg");
+    spec.F = reader.positive(j, "", "F");
+    spec.X_from = reader.number(j, "", "X_from"), spec.X_to = reader.number(j, "", "X_to"), spec.X_step = reader.positive(j, "", "X_step");
+    spec.R0 = reader.positive(j, "", "R0"), spec.T0 = reader.positive(j, "", "T0");
+    const json& material = reader.member(j, "", "reference_material");
+    spec.material = {reader.positive(material, "reference_material", "beta2"), reader.positive(material, "reference_material", "youngs_modulus"),
+                     reader.positive(material, "reference_material", "wood_density"), reader.positive(material, "reference_material", "g")};
+    spec.criterion.release = parse_release(reader.text(j, "", "quality"), "quality");
+    spec.criterion.n = reader.number(j, "", "n");
+    part.shard = parse_shard(reader.text(j, "", "shard"));
+    const json& points = reader.member(j, "", "points");
+    if (!points.is_array()) reader.fail("points", "expected an array");
+    for (std::size_t i = 0; i < points.size(); ++i) part.points.push_back(read_point(reader, points[i], "points[" + std::to_string(i) + "]"));
   } catch (const Error& e) {
-    fail(origin, std::string("malformed sweep part (") + e.what() + ")");
+    if (e.kind() == ErrorKind::data_file) throw;  // the reader's own: the file, the key's path and the problem
+    fail(origin, std::string("malformed sweep part (") + e.named_message() + ")");
   }
   return part;
 }

@@ -355,7 +355,8 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   // A counterweight propped forward can pull the short arm the wrong way: the shot never starts.
   if (!(snap.theta_ddot > 0))
     fail("the beam starts to turn away from the throw (the counterweight, propped at psi_i = " + format_significant(e.psi_i_deg, 4) +
-         " deg, pulls the short arm backwards); prop it less, or back (psi_i < 0)");
+         " deg, pulls the short arm backwards); " +
+         (e.psi_i_deg > 0 ? std::string("prop it less, or back ({{psi_i_deg}} < 0)") : std::string("hold it back less ({{psi_i_deg}} nearer 0)")));
   energy0 = snap.energy;
   phase1.add(trough.step_end(t, y, snap), snap);
   while (true) {
