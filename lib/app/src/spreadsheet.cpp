@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <vector>
 
 #include "trebuchet/error.hpp"
@@ -602,7 +603,9 @@ void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& input
   // libxlsxwriter finds an unwritable path only when it closes the file, and says so on stderr: try it first.
   if (!std::ofstream(output.temporary(), std::ios::binary))
     throw Error(ErrorKind::usage, "{{spreadsheet}}: cannot write '" + path + "'; give a file you can write to");
-  lxw_workbook* book = workbook_new(output.temporary().c_str());
+  // Freed unwritten if a sheet throws; workbook_close writes and frees it otherwise.
+  std::unique_ptr<lxw_workbook, decltype(&lxw_workbook_free)> owned(workbook_new(output.temporary().c_str()), lxw_workbook_free);
+  lxw_workbook* book = owned.get();
   if (!book) throw Error(ErrorKind::usage, "{{spreadsheet}}: cannot write '" + path + "'; give a file you can write to");
   Formats formats{};
   formats.title = workbook_add_format(book);
@@ -625,7 +628,7 @@ void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& input
   write_derived(book, formats, inputs.engine, factors.g);
   write_model_scaling(book, formats, capacity, inputs.model_scale);
   write_glossary(book, formats);
-  if (workbook_close(book) != LXW_NO_ERROR)
+  if (workbook_close(owned.release()) != LXW_NO_ERROR)
     throw Error(ErrorKind::usage, "{{spreadsheet}}: cannot write '" + path + "'; give a file you can write to");
   output.commit();
 }
