@@ -143,7 +143,7 @@ int run(const Options& options, bool format_given) {
         },
         [&](const BatchRow& row) {
           if (progress) progress(++rows_done, 0);
-          if (row.error) std::cerr << "trebuchet-calc: line " << row.line << ": " << row.error->message(option_word) << "\n";
+          if (row.error) std::cerr << message_start() << "trebuchet-calc: line " << row.line << ": " << row.error->message(option_word) << "\n";
           if (json) {
             nlohmann::ordered_json out = {{"line", row.line}};
             for (std::size_t k = 0; k < passed_columns.size(); ++k) out[passed_columns[k]] = row.passed[k];

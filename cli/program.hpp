@@ -64,6 +64,10 @@ inline std::function<void(std::size_t, std::size_t)> progress_bar(std::string wh
   };
 }
 
+/// What precedes a message on stderr: on a terminal, a clearing of the line, where a progress
+/// bar may stand unfinished.
+inline const char* message_start() { return isatty(STDERR_FILENO) ? "\r\033[K" : ""; }
+
 /// The first option of `app` or its parsed subcommands that was given an empty value
 /// (`--R ''`), or nullptr: an empty value is a mistake, never "not given".
 inline const CLI::Option* option_with_empty_value(const CLI::App& app) {
@@ -103,7 +107,7 @@ int run_program(CLI::App& app, Program program, int argc, char** argv, Run run) 
   try {
     return run();
   } catch (const Error& e) {
-    std::cerr << name << ": " << e.message(option_word) << "\n";
+    std::cerr << message_start() << name << ": " << e.message(option_word) << "\n";
     return exit_code(program, e.kind());
   }
 }

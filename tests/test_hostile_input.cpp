@@ -109,8 +109,10 @@ TEST_CASE("engines, materials, air and tolerances of ordinary size, and not beyo
   CHECK_NOTHROW(check_engine(with([](Engine& e) { e.material.g = 1e6; })));
   CHECK_THROWS_WITH(check_engine(with([](Engine& e) { e.material.g = 1.01e6; })), Catch::Contains("g = 1.01e+06 m/s2 is not of ordinary size"));
   CHECK_THROWS_WITH(check_engine(with([](Engine& e) { e.L2 = 1e-310; })), Catch::Contains("L2 = "));
+  CHECK_NOTHROW(check_engine(with([](Engine& e) { e.M = 1e12, e.m = 1e6, e.mb = 1e6; })));
   CHECK_THROWS_WITH(check_engine(with([](Engine& e) { e.M = 2e12; })), Catch::Contains("M = "));
   // Proportions: L1/L2 at 10^6 passes, beyond it is refused, naming both.
+  CHECK_NOTHROW(check_engine(with([](Engine& e) { e.L2 = e.L1 / 0.99e6, e.L3 = e.L2; })));  // within 10^6 (L3 follows L2 here)
   CHECK_THROWS_WITH(check_engine(with([](Engine& e) { e.L2 = e.L1 / 1.1e6; })), Catch::Contains("L1 = ") && Catch::Contains("L2 = "));
   CHECK_THROWS_WITH(check_engine(with([](Engine& e) { e.m = e.M * 1e-7; })), Catch::Contains("differ by more than a factor 10^6"));
   CHECK_THROWS_WITH(check_material(Material{1.0 / 300, 12e9, 1e-300, 9.81}), Catch::Contains("wood_density = "));
@@ -139,9 +141,16 @@ TEST_CASE("a series sampled too finely is refused before it is drawn, one too co
   std::vector<TracePoint> trace;
   CHECK_THROWS_WITH(verify_engine(alcala, ShotSettings{}, &trace, 1e-12), Catch::Contains("more than 1000000 points"));
   CHECK(trace.empty());
-  verify_engine(alcala, ShotSettings{}, &trace, 1e308);
-  // Phase I and II are recorded at 0 and at their ends; phase III at its end only: at most 5 points.
-  CHECK(trace.size() <= 5);
+  // A step longer than the shot (about 2 s to twice the release): the multiples of it within
+  // the shot are 0 alone, so the series is t = 0 and the end of each phase, I, II (the
+  // release) and III (twice the release).
+  verify_engine(alcala, ShotSettings{}, &trace, 1e3);
+  REQUIRE(trace.size() == 4);
+  CHECK(trace.front().t == 0);
+  CHECK(trace.back().t == Approx(2 * trace[2].t).epsilon(1e-12));
+  trace.clear();
+  verify_engine(alcala, ShotSettings{}, &trace, 1e308);  // ends, where it ran without end before
+  CHECK(trace.size() <= 4);
 }
 
 TEST_CASE("an output is written whole or not at all, and never over an input", "[hostile]") {
@@ -156,12 +165,45 @@ TEST_CASE("an output is written whole or not at all, and never over an input", "
   CHECK_FALSE(fs::exists(file));
   CHECK(fs::is_empty(folder));
   write_output_file(file, "whole\n", "series");
-  std::ifstream in(file);
-  std::string text;
-  std::getline(in, text);
-  CHECK(text == "whole");
+  auto first_line = [](const fs::path& path) {
+    std::ifstream in(path);
+    std::string text;
+    std::getline(in, text);
+    return text;
+  };
+  CHECK(first_line(file) == "whole");
   CHECK_THROWS_WITH(refuse_output_over_input(file, "series", {file}), Catch::Contains("would overwrite the input"));
-  CHECK_THROWS_WITH(refuse_output_over_input(folder.string(), "plot", {file}, true), Catch::Contains("is the folder of the input"));
   CHECK_NOTHROW(refuse_output_over_input((folder / "other.csv").string(), "series", {file, "-"}));
+  // Through a link: the file it points at is written, the link stays a link.
+  const fs::path link = folder / "link.csv";
+  fs::create_symlink(file, link);
+  write_output_file(link.string(), "through\n", "series");
+  CHECK(fs::is_symlink(link));
+  CHECK(first_line(file) == "through");
+  CHECK_THROWS_WITH(refuse_output_over_input(link.string(), "series", {file}), Catch::Contains("would overwrite the input"));
+  // A device is written into, never replaced by a file.
+  write_output_file("/dev/null", "gone\n", "series");
+  CHECK(fs::is_character_file("/dev/null"));
+  // A picture folder: its files may not replace an input inside it; nothing moves then.
+  const fs::path pictures = folder / "pictures";
+  fs::create_directories(pictures);
+  std::ofstream(pictures / "shot.csv") << "input\n";
+  {
+    PendingOutput output(pictures.string(), "plot", true, {(pictures / "shot.csv").string()});
+    std::ofstream(fs::path(output.temporary()) / "a.svg") << "a";
+    std::ofstream(fs::path(output.temporary()) / "shot.csv") << "series";
+    CHECK_THROWS_WITH(output.commit(), Catch::Contains("would overwrite the input"));
+  }
+  CHECK(first_line(pictures / "shot.csv") == "input");
+  CHECK_FALSE(fs::exists(pictures / "a.svg"));
+  // Without that input, the files move in and the folder's other files stay.
+  {
+    PendingOutput output(pictures.string(), "plot", true);
+    std::ofstream(fs::path(output.temporary()) / "a.svg") << "a";
+    output.commit();
+  }
+  CHECK(fs::exists(pictures / "a.svg"));
+  CHECK(fs::exists(pictures / "shot.csv"));
+  for (const auto& entry : fs::directory_iterator(folder)) CHECK(entry.path().filename().string().find(".part-") == std::string::npos);
   fs::remove_all(folder);
 }

@@ -1,5 +1,6 @@
 // shot and fit: the design from a file, stdin or flags; many designs (a JSON array or CSV rows)
 // are checked on every core, each in its place.
+#include <filesystem>
 #include <iostream>
 #include <optional>
 
@@ -24,6 +25,7 @@ DesignCheck design_check(const Options& o, bool fit) {
   check.series_path = o.series;
   check.series_dt_s = o.series_dt_s;
   check.plot_dir = o.plot;
+  check.inputs = {o.input};
   return check;
 }
 
@@ -68,7 +70,7 @@ int run_many(const Options& o, const DesignInputs& in, const DesignCheck& check)
     if (const auto& e = errors[i]) {
       const int error_code = exit_code(Program::verify, e->kind());
       const std::string message = e->message(option_word);
-      std::cerr << "trebuchet-verify: " << (message.rfind(in.where[i], 0) == 0 ? "" : name + ": ") << message << "\n";
+      std::cerr << message_start() << "trebuchet-verify: " << (message.rfind(in.where[i], 0) == 0 ? "" : name + ": ") << message << "\n";
       record.update({{"error", message}, {"exit_code", error_code}});
       cells.resize(header.size() - 1);
       cells.push_back(message);
@@ -109,7 +111,8 @@ int run_shot(const Options& o, bool fit) {
     throw Error(ErrorKind::usage, "--series writes the motion of one design; the input holds " + std::to_string(count));
   if (!o.plot.empty() && count != 1) throw Error(ErrorKind::usage, "--plot draws one design; the input holds " + std::to_string(count));
   if (!o.series.empty()) refuse_output_over_input(o.series, "series", {o.input});
-  if (!o.plot.empty()) refuse_output_over_input(o.plot, "plot", {o.input, o.series}, true);
+  if (!o.series.empty() && !o.plot.empty() && std::filesystem::weakly_canonical(o.series) == std::filesystem::weakly_canonical(o.plot))
+    throw Error(ErrorKind::usage, "--series and --plot name the same path '" + o.plot + "'; give the series a file and the pictures a folder of their own");
   if (!o.input.empty() && !in.single) return run_many(o, in, check);
 
   DesignValues values = o.input.empty() ? o.design : read_design_values(in.rows.front().design, in.where.front());

@@ -64,7 +64,7 @@ int run_derive_table(const Options& o) {
   spec.material = o.material.over(Material{});
   spec.criterion = o.settings.criterion;
   if (o.shard) part.shard = *o.shard;
-  // The work, decided before the run: the shard's X points at about 800 shots each (an optimum).
+  // The work, decided before the run: the shard's X points at about 1100 shots each (an optimum).
   const long points = (static_cast<long>(sweep_grid(spec).size()) - part.shard.k + part.shard.n) / part.shard.n;
   if (points * shots_per_sweep_point > max_run_shots)
     throw Error(ErrorKind::usage, "--X gives " + std::to_string(points) + " X points to this run, about " +

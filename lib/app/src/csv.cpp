@@ -84,10 +84,6 @@ std::vector<std::string> split(std::string_view line, char separator, const std:
 }  // namespace
 
 CsvReader::CsvReader(std::istream& input, std::string source) : input_(input), source_(std::move(source)) {
-  // UTF-16, as "Unicode text" from a spreadsheet, is told by its byte-order mark.
-  const int first = input_.rdbuf()->sgetc();
-  if (first == 0xFF || first == 0xFE)
-    throw Error(ErrorKind::usage, source_ + " is UTF-16 (Unicode text); save it as CSV UTF-8, or CSV, and give that");
   std::string line;
   while (read_line(line)) {
     // Excel's "CSV UTF-8" starts with a byte-order mark; it is not part of the first column's name.
@@ -120,6 +116,9 @@ bool CsvReader::read_line(std::string& line) {
   }
   if (c == '\r' && buffer->sgetc() == '\n') buffer->sbumpc();
   const std::string where = source_ + " line " + std::to_string(line_number_);
+  // UTF-16, as "Unicode text" from a spreadsheet, is told by its byte-order mark.
+  if (line_number_ == 1 && (line.rfind("\xFF\xFE", 0) == 0 || line.rfind("\xFE\xFF", 0) == 0))
+    throw Error(ErrorKind::usage, source_ + " is UTF-16 (Unicode text); save it as CSV UTF-8, or CSV, and give that");
   if (length > max_input_bytes) {
     ended_ = true;
     throw Error(ErrorKind::usage, where + " has no end within " + std::to_string(max_input_bytes >> 20) + " MiB; give a CSV file, one row a line");

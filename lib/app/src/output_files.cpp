@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -11,25 +12,53 @@
 namespace trebuchet {
 namespace fs = std::filesystem;
 
-PendingOutput::PendingOutput(std::string path, std::string option, bool folder)
-    : path_(std::move(path)), option_(std::move(option)), folder_(folder) {
-  std::error_code ec;
-  // A link is written through: the file it points at is the output, the link stays.
-  if (fs::is_symlink(path_, ec)) path_ = fs::weakly_canonical(path_, ec).string();
-  // A device or a pipe (/dev/null, a FIFO) is written straight into: renaming onto it would
-  // replace it with a file, and it cannot hold half an output anyway.
-  if (!folder_ && fs::exists(path_, ec) && !fs::is_regular_file(path_, ec) && !fs::is_directory(path_, ec)) {
+namespace {
+
+// Whether `path` names the file the program prints to (stdout or stderr redirected into it).
+bool is_program_output(const std::string& path) {
+  struct stat target {};
+  if (stat(path.c_str(), &target) != 0) return false;
+  for (int fd : {STDOUT_FILENO, STDERR_FILENO}) {
+    struct stat stream {};
+    if (fstat(fd, &stream) == 0 && stream.st_dev == target.st_dev && stream.st_ino == target.st_ino) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+PendingOutput::PendingOutput(std::string path, std::string option, bool folder, std::vector<std::string> inputs)
+    : path_(std::move(path)), shown_(path_), option_(std::move(option)), inputs_(std::move(inputs)), folder_(folder) {
+  const std::string fail = "{{" + option_ + "}}: cannot write '" + shown_ + "'";
+  struct stat target {};
+  const bool exists = stat(path_.c_str(), &target) == 0;  // follows links
+  // A device or a pipe (/dev/null, a FIFO, /dev/stdout into a pipe) is written straight into:
+  // renaming onto it would replace it with a file, and it cannot hold half an output anyway.
+  if (!folder_ && exists && !S_ISREG(target.st_mode) && !S_ISDIR(target.st_mode)) {
     temporary_ = path_;
     direct_ = true;
     return;
   }
-  // Beside the output, never inside it: "pictures/" is drawn in "pictures.part-<pid>".
+  if (!folder_ && exists && is_program_output(path_))
+    throw Error(ErrorKind::usage, "{{" + option_ + "}}: '" + shown_ + "' is the file the program prints to; give the output a file of its own");
+  // A link is written through: the file it points at is the output, the link stays.
+  if (char* resolved = exists ? realpath(path_.c_str(), nullptr) : nullptr) {
+    path_ = resolved;
+    std::free(resolved);
+  }
+  // Beside the output, never inside it ("pictures/" is drawn in "pictures.part-XXXXXX"), under a
+  // name no other run can hold.
   std::string base = path_;
   while (base.size() > 1 && base.back() == '/') base.pop_back();
-  temporary_ = base + ".part-" + std::to_string(::getpid());
-  fs::remove_all(temporary_, ec);
-  if (folder_ && !fs::create_directories(temporary_, ec))
-    throw Error(ErrorKind::usage, "{{" + option_ + "}}: cannot make a folder beside '" + path_ + "'; give a folder you can write to");
+  std::string name = base + ".part-XXXXXX";
+  if (folder_) {
+    if (!mkdtemp(name.data())) throw Error(ErrorKind::usage, fail + ": cannot make a folder beside it; give a folder you can write to");
+  } else {
+    const int fd = mkstemp(name.data());
+    if (fd < 0) throw Error(ErrorKind::usage, fail + "; give a file you can write to");
+    close(fd);
+  }
+  temporary_ = name;
 }
 
 PendingOutput::~PendingOutput() {
@@ -41,19 +70,29 @@ PendingOutput::~PendingOutput() {
 void PendingOutput::commit() {
   if (direct_) return;
   std::error_code ec;
-  const std::string fail = "{{" + option_ + "}}: cannot write '" + path_ + "'";
+  const std::string fail = "{{" + option_ + "}}: cannot write '" + shown_ + "'";
   if (!folder_) {
     fs::rename(temporary_, path_, ec);
     if (ec) throw Error(ErrorKind::usage, fail + " (" + ec.message() + "); give a file you can write to");
-  } else {
-    fs::create_directories(path_, ec);
-    if (!fs::is_directory(path_)) throw Error(ErrorKind::usage, fail + ": it is not a folder; give a folder you can write to");
-    for (const fs::directory_entry& entry : fs::directory_iterator(temporary_, ec)) {
-      fs::rename(entry.path(), fs::path(path_) / entry.path().filename(), ec);
-      if (ec) throw Error(ErrorKind::usage, fail + " (" + ec.message() + "); give a folder you can write to");
-    }
-    fs::remove_all(temporary_, ec);
+    committed_ = true;
+    return;
   }
+  fs::create_directories(path_, ec);
+  if (!fs::is_directory(path_, ec)) throw Error(ErrorKind::usage, fail + ": it is not a folder; give a folder you can write to");
+  // Every file is checked before any moves: one that would replace an input stops them all.
+  std::vector<fs::path> names;
+  for (fs::directory_iterator it(temporary_, ec), end; !ec && it != end; it.increment(ec)) names.push_back(it->path().filename());
+  if (ec) throw Error(ErrorKind::usage, fail + " (" + ec.message() + "); give a folder you can write to");
+  for (const fs::path& name : names)
+    for (const std::string& input : inputs_)
+      if (input != "-" && !input.empty() && fs::exists(fs::path(path_) / name, ec) && fs::equivalent(fs::path(path_) / name, input, ec))
+        throw Error(ErrorKind::usage, "{{" + option_ + "}}: '" + (fs::path(shown_) / name).string() + "' would overwrite the input '" + input +
+                                          "'; give another folder");
+  for (const fs::path& name : names) {
+    fs::rename(fs::path(temporary_) / name, fs::path(path_) / name, ec);
+    if (ec) throw Error(ErrorKind::usage, fail + " (" + ec.message() + "); give a folder you can write to");
+  }
+  fs::remove_all(temporary_, ec);
   committed_ = true;
 }
 
@@ -66,7 +105,7 @@ void write_output_file(const std::string& path, std::string_view text, const std
   output.commit();
 }
 
-void refuse_output_over_input(const std::string& output, const std::string& option, const std::vector<std::string>& inputs, bool folder) {
+void refuse_output_over_input(const std::string& output, const std::string& option, const std::vector<std::string>& inputs) {
   std::error_code ec;
   for (const std::string& input : inputs) {
     if (input == "-") {  // stdin redirected from a file: that file is the input
@@ -76,14 +115,8 @@ void refuse_output_over_input(const std::string& output, const std::string& opti
         throw Error(ErrorKind::usage, "{{" + option + "}}: '" + output + "' would overwrite the input, which stdin reads; give the output another name");
       continue;
     }
-    if (input.empty() || !fs::exists(input, ec)) continue;
-    const bool same = fs::exists(output, ec) && fs::equivalent(output, input, ec);
-    if (same)
+    if (!input.empty() && fs::exists(input, ec) && fs::exists(output, ec) && fs::equivalent(output, input, ec))
       throw Error(ErrorKind::usage, "{{" + option + "}}: '" + output + "' would overwrite the input '" + input + "'; give the output another name");
-    if (!folder || !fs::is_directory(output, ec)) continue;
-    // The pictures would be written beside the input.
-    const fs::path folder_path = fs::canonical(output, ec), input_path = fs::canonical(input, ec);
-    if (!ec && input_path.parent_path() == folder_path) throw Error(ErrorKind::usage, "{{" + option + "}}: '" + output + "' is the folder of the input '" + input + "'; give another folder");
   }
 }
 

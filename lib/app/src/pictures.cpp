@@ -380,9 +380,10 @@ void run_gnuplot(const std::filesystem::path& folder, const std::string& script)
 
 }  // namespace
 
-void write_picture_folder(const std::string& dir, const std::vector<PictureFile>& files, const std::vector<std::string>& scripts) {
+void write_picture_folder(const std::string& dir, const std::vector<PictureFile>& files, const std::vector<std::string>& scripts,
+                          const std::vector<std::string>& inputs) {
   // Drawn in a folder of its own beside `dir`, and moved in only when every picture is drawn.
-  PendingOutput output(dir, "plot", true);
+  PendingOutput output(dir, "plot", true, inputs);
   const std::filesystem::path folder(output.temporary());
   for (const PictureFile& file : files) {
     std::ofstream out(folder / file.name);

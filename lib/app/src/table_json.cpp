@@ -124,6 +124,13 @@ class Reader {
     return x;
   }
 
+  int count(const json& object, const std::string& path, const std::string& key) const {
+    const double x = number(object, path, key);
+    if (!(x >= 0 && x <= std::numeric_limits<int>::max() && x == std::floor(x)))
+      fail(join(path, key), "expected a whole number from 0 to " + std::to_string(std::numeric_limits<int>::max()) + ", got " + format_number(x));
+    return static_cast<int>(x);
+  }
+
   std::string text(const json& object, const std::string& path, const std::string& key) const {
     const json& value = member(object, path, key);
     if (!value.is_string()) fail(join(path, key), "expected a string, got " + std::string(value.type_name()));
@@ -375,8 +382,8 @@ SweepPoint read_point(const Reader& reader, const nlohmann::json& j, const std::
   p.shot.Q = reader.positive(j, where, "Q"), p.shot.eps = reader.positive(j, where, "eps");
   p.shot.force_factor = reader.number(j, where, "force_factor");
   p.shot.theta_release_deg = reader.number(j, where, "theta_release_deg");
-  p.optima_found = static_cast<int>(reader.number(j, where, "optima_found"));
-  p.simulations = static_cast<int>(reader.number(j, where, "simulations"));
+  p.optima_found = reader.count(j, where, "optima_found");
+  p.simulations = reader.count(j, where, "simulations");
   return p;
 }
 

@@ -212,10 +212,11 @@ nlohmann::json parse_json(const std::string& text, const std::string& source, st
   if (json_depth(text) > max_json_depth)
     throw Error(ErrorKind::usage, source + " nests arrays or objects more than " + std::to_string(max_json_depth) +
                                       " levels deep; give " + std::string(expected));
-  if (const auto key = duplicate_key(text))
+  const std::string quoted = quote_huge_numbers(text);  // so that no number stops the search for keys either
+  if (const auto key = duplicate_key(quoted))
     throw Error(ErrorKind::usage, source + " gives the key \"" + *key + "\" twice in one object; keep one");
   try {
-    return nlohmann::json::parse(quote_huge_numbers(text));
+    return nlohmann::json::parse(quoted);
   } catch (const nlohmann::json::exception& e) {
     throw Error(ErrorKind::usage, source + " is not valid JSON (" + e.what() + "); give " + std::string(expected));
   }

@@ -70,7 +70,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   }
   std::vector<TracePoint> trace;
   const Verification v = verify_engine(engine, check.settings, check.series_path.empty() ? nullptr : &trace, check.series_dt_s);
-  if (!check.plot_dir.empty()) write_picture_folder(check.plot_dir, shot_pictures(engine, check.settings), picture_scripts());
+  if (!check.plot_dir.empty()) write_picture_folder(check.plot_dir, shot_pictures(engine, check.settings), picture_scripts(), check.inputs);
   std::optional<CapacityCheck> capacity;
   if (record.capacity) capacity = check_capacity(v, *record.capacity, check.tolerance);
   out.json = verification_json(v, capacity);

@@ -209,6 +209,7 @@ Completion complete_engine(const CompletionRequest& request) {
   // sling pulls, the counterweight and the tip stay above the base); else it costs 0, worse
   // than any that works, and the last reason is kept for the message.
   std::optional<Error> last_failure;
+  bool only_integration_failed = true;  // every engine tried failed in its integration
   auto cost = [&](const std::vector<double>& x) {
     ++out.simulations;
     try {
@@ -221,6 +222,7 @@ Completion complete_engine(const CompletionRequest& request) {
       return -objective;
     } catch (const Error& e) {
       last_failure = e;
+      only_integration_failed = only_integration_failed && integration_failed(e);
       return 0.0;
     }
   };
@@ -232,7 +234,7 @@ Completion complete_engine(const CompletionRequest& request) {
     cost(x0);
     minimize_simplex(cost, x0, 0.1, 1e-5, 600);
     if (!(best > 0))
-      throw Error(last_failure && integration_failed(*last_failure) ? ErrorKind::numerical : ErrorKind::out_of_range,
+      throw Error(last_failure && only_integration_failed ? ErrorKind::numerical : ErrorKind::out_of_range,
                   "no choice of " + join(out.chosen, ", ") + " gives a working engine with these attested values" +
                       (last_failure ? " (the last tried: " + last_failure->named_message() + ")" : "") + "; check them, or attest fewer");
     out.verification = verify_engine(out.engine, request.settings);

@@ -65,7 +65,7 @@ struct Search {
   double best = -1;
   CapacityFit best_fit;
   std::string last_failure;  // why the last shape that could not deliver the capacity failed
-  ErrorKind last_kind = ErrorKind::out_of_range;
+  bool only_integration_failed = true;  // every shape tried failed in its integration
 
   // Minus the quality of the shape at log coordinates x, its mu fitted to the capacity; a
   // shape that cannot deliver it, or fails, scores 0.
@@ -87,7 +87,7 @@ struct Search {
     } catch (const Error& e) {
       simulations += 1;
       last_failure = e.named_message();
-      last_kind = integration_failed(e) ? ErrorKind::numerical : ErrorKind::out_of_range;
+      only_integration_failed = only_integration_failed && integration_failed(e);
       return 0;
     }
   }
@@ -108,9 +108,9 @@ Optimum search_from(const OptimizeRequest& request, const Start& start) {
   out.iterations = minimize_simplex([&](const std::vector<double>& x) { return search.cost(x, fixed.theta_i_deg, fixed.F); },
                                     {std::log(start.shape.l), std::log(start.shape.l4), std::log(start.shape.mu_b)}, 0.05,
                                     request.shape_tolerance, 400);
-  // A search whose last shape failed in its integration is a numerical failure, named by it.
+  // A search in which every shape failed in its integration is a numerical failure, named by the last.
   if (!(search.best > 0))
-    throw Error(search.last_kind == ErrorKind::numerical ? ErrorKind::numerical : ErrorKind::out_of_range, "no shape near the " + start.name + " start delivers " +
+    throw Error(search.only_integration_failed ? ErrorKind::numerical : ErrorKind::out_of_range, "no shape near the " + start.name + " start delivers " +
                                              format_significant(request.capacity.R, 4) + " m with " +
                                              (request.projectile_mass ? format_significant(*request.projectile_mass, 4) + " kg stones"
                                                                       : format_significant(request.capacity.T / 1e3, 4) + " kJ") +

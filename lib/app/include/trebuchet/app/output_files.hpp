@@ -9,34 +9,37 @@
 
 namespace trebuchet {
 
-/// A file or folder being written under a temporary name beside `path` ("x.csv.part-1234"),
-/// moved onto `path` by commit(). Destroyed without commit() (a failure), it removes what was
-/// written, so a failed run leaves nothing behind. `option` names the output in messages
-/// ("series": {{series}}). A symbolic link is written through; a device or a pipe (/dev/null,
-/// a FIFO) is written into directly, since a rename would replace it.
+/// A file or folder being written under a temporary name beside `path` ("x.csv.part-XXXXXX",
+/// unique), moved onto `path` by commit(). Destroyed without commit() (a failure), it removes
+/// what was written, so a failed run leaves nothing behind. `option` names the output in
+/// messages ("series": {{series}}). A symbolic link is written through; a device or a pipe
+/// (/dev/null, a FIFO, /dev/stdout into a pipe) is written into directly, since a rename would
+/// replace it; the file stdout or stderr is redirected into is refused. A folder's files may not
+/// replace any of `inputs`.
 class PendingOutput {
  public:
-  PendingOutput(std::string path, std::string option, bool folder = false);
+  PendingOutput(std::string path, std::string option, bool folder = false, std::vector<std::string> inputs = {});
   PendingOutput(const PendingOutput&) = delete;
   PendingOutput& operator=(const PendingOutput&) = delete;
   ~PendingOutput();
   /// Where to write meanwhile: a file's temporary name, or a temporary folder (made here).
   const std::string& temporary() const { return temporary_; }
   /// Moves the output into place: a file replaces `path`; a folder's files go into `path` (made
-  /// if missing), each replacing its namesake, other files there kept. Error(usage) on failure.
+  /// if missing), each replacing its namesake, other files there kept. Error(usage) on failure,
+  /// before any file moves when one would replace an input.
   void commit();
 
  private:
-  std::string path_, option_, temporary_;
+  std::string path_, shown_, option_, temporary_;  // shown_: the path as the user gave it
+  std::vector<std::string> inputs_;
   bool folder_ = false, committed_ = false, direct_ = false;  // direct_: a device or pipe, written into
 };
 
 /// `text` written to `path` whole or not at all (PendingOutput).
 void write_output_file(const std::string& path, std::string_view text, const std::string& option);
 
-/// Refuses (Error(usage)) an output that would overwrite one of `inputs`: the same file (for
-/// "-", the file stdin is redirected from), or for a folder output a folder that holds one.
-void refuse_output_over_input(const std::string& output, const std::string& option, const std::vector<std::string>& inputs,
-                              bool folder = false);
+/// Refuses (Error(usage)) an output file that would overwrite one of `inputs`: the same file,
+/// through any link, or for "-" the file stdin is redirected from.
+void refuse_output_over_input(const std::string& output, const std::string& option, const std::vector<std::string>& inputs);
 
 }  // namespace trebuchet

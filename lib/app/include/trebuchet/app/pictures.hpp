@@ -36,6 +36,8 @@ std::vector<PictureFile> histogram_pictures(const MonteCarloSummary& summary, co
 /// Writes `files` into the folder `dir` (made if missing), then runs gnuplot on each of
 /// `scripts` there; gnuplot's own messages go to gnuplot.log in the folder. Throws Error(usage)
 /// naming what failed and the fix (a folder that cannot be written, gnuplot missing or failing).
-void write_picture_folder(const std::string& dir, const std::vector<PictureFile>& files, const std::vector<std::string>& scripts);
+/// Nothing is moved into the folder when one of its files would replace one of `inputs`.
+void write_picture_folder(const std::string& dir, const std::vector<PictureFile>& files, const std::vector<std::string>& scripts,
+                          const std::vector<std::string>& inputs = {});
 
 }  // namespace trebuchet

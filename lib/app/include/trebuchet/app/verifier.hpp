@@ -47,6 +47,7 @@ struct DesignCheck {
   std::string series_path;              ///< write the motion here (CSV) when not empty
   double series_dt_s = 0;               ///< [s]; 0: at the integrator's steps
   std::string plot_dir;                 ///< draw the shot into this folder when not empty
+  std::vector<std::string> inputs;      ///< the run's input files, which no picture may replace
 };
 
 /// One design checked: its record as JSON, as a table and (with check.csv) as CSV cells, and whether a capacity
@@ -74,7 +75,7 @@ struct UncertainInput {
 /// derive-table's X points times about shots_per_sweep_point, at most max_run_shots: about 30 s on
 /// two cores of the reference machine (docs/stability.md).
 inline constexpr long max_run_shots = 500000;
-inline constexpr long shots_per_sweep_point = 800;
+inline constexpr long shots_per_sweep_point = 1100;
 /// The samples of a run unless {{samples}} is given: 10000 shots (about 1 s), 1000 completions
 /// (about 4 s); either puts the 5 and 95 % to a few percent of their spread.
 inline constexpr int default_shot_samples = 10000, default_completion_samples = 1000;
