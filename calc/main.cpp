@@ -191,6 +191,7 @@ int main(int argc, char** argv) {
       "projectile mass, or for any two engine parameters, from the scaling laws of Horsdal's tab:CPNC.\n"
       "Values take SI suffixes (150m, 3.1t, 40kJ); bare numbers are SI base units.",
       "trebuchet-calc"};
+  app.set_version_flag("--version", version_text("trebuchet-calc"));
   Options options;
   for (Quantity quantity : all_quantities) {
     const std::string name(quantity_name(quantity));

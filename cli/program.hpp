@@ -15,6 +15,7 @@
 #include <string>
 
 #include "exit_codes.hpp"
+#include "trebuchet_version.hpp"
 #include "trebuchet/error.hpp"
 
 namespace trebuchet {
@@ -68,6 +69,14 @@ inline std::function<void(std::size_t, std::size_t)> progress_bar(std::string wh
 /// bar may stand unfinished.
 inline const char* message_start() { return isatty(STDERR_FILENO) ? "\r\033[K" : ""; }
 
+/// What --version prints: the program, its version and the commit it is built from, and how
+/// to cite it with the paper whose physics and tables it implements.
+inline std::string version_text(const std::string& program) {
+  return program + " " TREBUCHET_VERSION " (commit " TREBUCHET_COMMIT ")\n"
+         "To cite: E. Horsdal, \"The swinging counterweight trebuchet - on scaling and optimization\"; computed with trebuchet " TREBUCHET_VERSION
+         ", commit " TREBUCHET_COMMIT ".";
+}
+
 /// The first option of `app` or its parsed subcommands that was given an empty value
 /// (`--R ''`), or nullptr: an empty value is a mistake, never "not given".
 inline const CLI::Option* option_with_empty_value(const CLI::App& app) {
@@ -92,6 +101,9 @@ int run_program(CLI::App& app, Program program, int argc, char** argv, Run run) 
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
     std::cout << app.help();
+    return exit_success;
+  } catch (const CLI::CallForVersion& version) {
+    std::cout << version.what() << "\n";
     return exit_success;
   } catch (const CLI::ParseError& e) {
     std::cerr << name << ": " << e.what() << "; see " << name << " --help\n";

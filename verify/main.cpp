@@ -16,13 +16,13 @@ namespace {
 const char* const subcommand_names[] = {"shot", "fit", "optimize", "derive-table", "merge", "complete"};
 
 // `trebuchet-verify design.json` means `trebuchet-verify shot design.json`: the subcommand
-// `shot` is inserted unless argv names a subcommand or asks for the overall help.
+// `shot` is inserted unless argv names a subcommand or asks for the overall help or the version.
 std::vector<char*> with_default_subcommand(int argc, char** argv) {
   std::vector<char*> args(argv, argv + argc);
   static char shot[] = "shot";
   const std::string first = argc > 1 ? argv[1] : "";
   const bool named = std::find(std::begin(subcommand_names), std::end(subcommand_names), first) != std::end(subcommand_names);
-  if (!named && first != "--help" && first != "-h") args.insert(args.begin() + 1, shot);
+  if (!named && first != "--help" && first != "-h" && first != "--version") args.insert(args.begin() + 1, shot);
   return args;
 }
 
@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
       "Values take SI suffixes (6.13m, 14.3t, 224kJ). Exit codes: 0 pass, 1 outside --tol, 2 bad input,\n"
       "3 numerical failure (docs/exit_codes.md). Without a subcommand, shot is meant.",
       "trebuchet-verify"};
+  app.set_version_flag("--version", version_text("trebuchet-verify"));
   app.require_subcommand(1);
   Options options;
   const Subcommands sub = declare_subcommands(app, options);
