@@ -105,6 +105,14 @@ int run_program(CLI::App& app, Program program, int argc, char** argv, Run run) 
   } catch (const CLI::CallForVersion& version) {
     std::cout << version.what() << "\n";
     return exit_success;
+  } catch (const CLI::ArgumentMismatch& e) {
+    // CLI11 says "--R: At Most 1 required but received 2" for a flag given twice.
+    const std::string text = e.what(), twice = ": At Most 1 required but received ";
+    if (const auto at = text.find(twice); at != std::string::npos)
+      std::cerr << name << ": " << text.substr(0, at) << " was given " << text.substr(at + twice.size()) << " times; give it once\n";
+    else
+      std::cerr << name << ": " << text << "; see " << name << " --help\n";
+    return exit_code(program, ErrorKind::usage);
   } catch (const CLI::ParseError& e) {
     std::cerr << name << ": " << e.what() << "; see " << name << " --help\n";
     return exit_code(program, ErrorKind::usage);
