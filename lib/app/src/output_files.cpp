@@ -14,15 +14,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Whether `path` names the file the program prints to (stdout or stderr redirected into it).
-bool is_program_output(const std::string& path) {
-  struct stat target {};
-  if (stat(path.c_str(), &target) != 0) return false;
-  for (int fd : {STDOUT_FILENO, STDERR_FILENO}) {
-    struct stat stream {};
-    if (fstat(fd, &stream) == 0 && stream.st_dev == target.st_dev && stream.st_ino == target.st_ino) return true;
-  }
-  return false;
+// Whether the open file `fd` is the file at `path` (through any link).
+bool same_file(int fd, const std::string& path) {
+  struct stat open {}, named {};
+  return fstat(fd, &open) == 0 && stat(path.c_str(), &named) == 0 && open.st_dev == named.st_dev && open.st_ino == named.st_ino;
 }
 
 }  // namespace
@@ -39,7 +34,7 @@ PendingOutput::PendingOutput(std::string path, std::string option, bool folder, 
     direct_ = true;
     return;
   }
-  if (!folder_ && exists && is_program_output(path_))
+  if (!folder_ && exists && (same_file(STDOUT_FILENO, path_) || same_file(STDERR_FILENO, path_)))
     throw Error(ErrorKind::usage, "{{" + option_ + "}}: '" + shown_ + "' is the file the program prints to; give the output a file of its own");
   // A link is written through: the file it points at is the output, the link stays.
   if (char* resolved = exists ? realpath(path_.c_str(), nullptr) : nullptr) {
@@ -109,9 +104,7 @@ void refuse_output_over_input(const std::string& output, const std::string& opti
   std::error_code ec;
   for (const std::string& input : inputs) {
     if (input == "-") {  // stdin redirected from a file: that file is the input
-      struct stat in {}, out {};
-      if (fstat(STDIN_FILENO, &in) == 0 && S_ISREG(in.st_mode) && stat(output.c_str(), &out) == 0 && in.st_dev == out.st_dev &&
-          in.st_ino == out.st_ino)
+      if (same_file(STDIN_FILENO, output))
         throw Error(ErrorKind::usage, "{{" + option + "}}: '" + output + "' would overwrite the input, which stdin reads; give the output another name");
       continue;
     }

@@ -91,35 +91,40 @@ std::string_view skip_blanks(std::string_view text) {
   }
 }
 
+// The number `text` starts with, a fraction a/b included ("2/3"), and how many characters it
+// takes (0: none). A '/' takes the number after it when there is one; the fraction is
+// malformed when there is none, or it is 0.
+struct LeadingNumber {
+  double value = 0;
+  std::size_t length = 0;
+  bool malformed_fraction = false;
+};
+LeadingNumber leading_number(std::string_view text, const std::string& what) {
+  LeadingNumber n;
+  n.length = parse_number_prefix(text, n.value, what);
+  if (n.length == 0 || n.length >= text.size() || text[n.length] != '/') return n;
+  double denominator = 0;
+  const std::size_t more = parse_number_prefix(text.substr(n.length + 1), denominator, what);
+  n.malformed_fraction = more == 0 || denominator == 0;
+  if (more > 0) n.value /= denominator, n.length += 1 + more;
+  return n;
+}
+
 // Whether `text` is a finite number and nothing else (blanks around it aside): "4", "2/3".
 bool bare_number(std::string_view text) {
   text = skip_blanks(text);
-  double value = 0;
-  std::size_t used = 0;
   try {
-    used = parse_number_prefix(text, value, "");
+    const LeadingNumber n = leading_number(text, "");
+    return n.length > 0 && !n.malformed_fraction && std::isfinite(n.value) && skip_blanks(text.substr(n.length)).empty();
   } catch (const Error&) {
     return false;
   }
-  if (used < text.size() && text[used] == '/') {
-    double denominator = 0;
-    const std::size_t more = parse_number_prefix(text.substr(used + 1), denominator, "");
-    used = more > 0 ? used + 1 + more : 0;
-  }
-  return used > 0 && std::isfinite(value) && skip_blanks(text.substr(used)).empty();
 }
 
 // The unit written after the number of `text` ("t" of "4t", "" of "4" or "2/3"); "" when the text is not a number.
 std::string unit_of(std::string_view text, std::string_view name) {
-  double value = 0;
-  std::size_t used = parse_number_prefix(text, value, std::string(name));
-  if (used < text.size() && text[used] == '/') {
-    double denominator = 0;
-    const std::size_t more = parse_number_prefix(text.substr(used + 1), denominator, std::string(name));
-    if (more > 0) used += 1 + more;
-  }
-  if (used == 0) return "";
-  return std::string(skip_blanks(text.substr(used)));
+  const LeadingNumber n = leading_number(text, std::string(name));
+  return n.length == 0 ? "" : std::string(skip_blanks(text.substr(n.length)));
 }
 
 }  // namespace
@@ -148,19 +153,11 @@ double parse_value(std::string_view text, UnitDimension dimension, std::string_v
   const std::string fix = "write a number with an optional unit, e.g. " + std::string(dimension_text(dimension).example);
   const std::string what = std::string(name) + ": " + quoted(text);
 
-  double value = 0;
-  std::size_t used = parse_number_prefix(text, value, what);
-  if (used == 0) throw Error(ErrorKind::bad_number, what + " is not a number; " + fix);
-  std::string_view rest = text.substr(used);
-
-  if (!rest.empty() && rest.front() == '/') {  // a fraction a/b, e.g. 2/3 or 1/300
-    double denominator = 0;
-    std::size_t used_denominator = parse_number_prefix(rest.substr(1), denominator, what);
-    if (used_denominator == 0 || denominator == 0)
-      throw Error(ErrorKind::bad_number, what + " is not a valid fraction; " + fix);
-    value /= denominator;
-    rest = rest.substr(1 + used_denominator);
-  }
+  const LeadingNumber number = leading_number(text, what);  // a fraction a/b too, e.g. 2/3 or 1/300
+  if (number.length == 0) throw Error(ErrorKind::bad_number, what + " is not a number; " + fix);
+  if (number.malformed_fraction) throw Error(ErrorKind::bad_number, what + " is not a valid fraction; " + fix);
+  const double value = number.value;
+  std::string_view rest = text.substr(number.length);
   if (!std::isfinite(value))
     throw Error(ErrorKind::bad_number, what + " is not a finite number; " + fix);
 

@@ -214,8 +214,7 @@ Completion complete_engine(const CompletionRequest& request) {
     ++out.simulations;
     try {
       const Engine e = build(p, x);
-      check_engine(e);
-      const Verification v = verify_engine(e, search);
+      const Verification v = verify_engine(e, search);  // checks the engine first
       if (!v.warnings.empty()) throw Error(ErrorKind::out_of_range, v.warnings.front());
       const double objective = objective_of(v, criterion);
       if (objective > best) best = objective, out.engine = e, out.verification = v;
@@ -228,7 +227,6 @@ Completion complete_engine(const CompletionRequest& request) {
   };
   if (x0.empty()) {
     const Engine e = build(p, x0);
-    check_engine(e);
     out.engine = e, out.verification = verify_engine(e, request.settings), out.simulations = 1;
   } else {
     cost(x0);

@@ -47,11 +47,13 @@ std::vector<std::string> Error::names() const {
   return out;
 }
 
-void check_ordinary(double value, double lowest, double highest, const std::string& key, const std::string& unit, const std::string& what) {
+void check_ordinary(double value, double lowest, double highest, std::string_view key, std::string_view unit, std::string_view what) {
   if (value >= lowest && value <= highest) return;
-  const std::string space = unit.empty() ? "" : " " + unit;
-  throw Error(ErrorKind::bad_number, "{{" + key + "}} = " + format_significant(value, 6) + space + " is not of ordinary size for the " + what +
-                                         "; give one from " + format_significant(lowest, 6) + " to " + format_significant(highest, 6) + space);
+  // Called for every shot: the text is built only when the value is refused.
+  const std::string space = unit.empty() ? "" : " " + std::string(unit);
+  throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + format_significant(value, 6) + space + " is not of ordinary size for the " +
+                                         std::string(what) + "; give one from " + format_significant(lowest, 6) + " to " +
+                                         format_significant(highest, 6) + space);
 }
 
 }  // namespace trebuchet

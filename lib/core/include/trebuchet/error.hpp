@@ -50,6 +50,6 @@ class Error : public std::runtime_error {
 /// Refuses, as Error(bad_number), a value outside [lowest, highest] in `unit`: "{{g}} = 1e+308
 /// m/s2 is not of ordinary size for the gravitational acceleration; give one from 1e-06 to 1e+06
 /// m/s2". The windows are wide; they keep every product of inputs the physics forms finite.
-void check_ordinary(double value, double lowest, double highest, const std::string& key, const std::string& unit, const std::string& what);
+void check_ordinary(double value, double lowest, double highest, std::string_view key, std::string_view unit, std::string_view what);
 
 }  // namespace trebuchet
