@@ -16,6 +16,7 @@ packages=(
   gnuplot-nox       # charts and trebuchet-verify shot --plot, without X11
   libxml2-utils     # xmllint: the pictures' SVG is checked well-formed
   librsvg2-bin      # rsvg-convert: SVG pictures rendered to PNG to look at (scripts/figures.sh)
+  units             # GNU units: tests/test_units.cpp checks every conversion factor against it
   clang-14 libclang-rt-14-dev  # libFuzzer for the fuzz targets of tests/fuzz
   parallel slurm-wlm munge     # tab:CPNC derived in shards under GNU parallel and Slurm (tests/scale)
 )

@@ -1,5 +1,6 @@
 // The ab-initio shot against analytic results, conservation laws, scaling and the paper.
 #include <catch2/catch.hpp>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -250,4 +251,61 @@ TEST_CASE("a slack sling is warned at the time its tension changes sign", "[shot
   }
   CHECK(last_before >= -1e-9);
   CHECK(first_after < 0);
+}
+
+// The bending moment at the pivot is computed from the short section's balance (dynamics.cpp).
+// The long section, a rod of l L2 from the pivot to the tip, must balance it too: the moment it
+// takes is I_long th'' - (moment of the sling's pull at the tip) - (its weight's moment), with
+// I_long = (mu_b/(l + 1)) l^3/3. Both follow from the equations of motion, which conserve the
+// beam's angular momentum about the pivot only if they agree: round-off (1e-13 of M g L2).
+TEST_CASE("the beam's bending moment at the pivot balances both sections", "[shot][physics]") {
+  for (const Engine& engine : {alcala_ca(), denny_standard(), alcala_ma_480()}) {
+    std::vector<TracePoint> trace;
+    simulate_shot(scaled_design(engine), ReleaseCriterion{}, IntegratorSettings{}, &trace);
+    const ScaledDesign d = scaled_design(engine);
+    const double per_length = d.mu_b / (d.l + 1), I_long = per_length * d.l * d.l * d.l / 3;
+    double worst = 0;
+    for (const TracePoint& p : trace) {
+      if (p.phase == Phase::released) continue;
+      const Snapshot& s = p.snapshot;
+      const double st = std::sin(p.state.theta);
+      const double sling_moment = s.tip.x * s.sling_on_tip.y - s.tip.y * s.sling_on_tip.x;
+      const double weight_moment = -per_length * d.l * d.l * st / 2;
+      const double long_side = I_long * s.theta_ddot - sling_moment - weight_moment;
+      worst = std::max(worst, std::abs(long_side - s.beam_moment));
+    }
+    INFO("L1 = " << engine.L1 << ": worst disagreement " << worst << " M g L2");
+    CHECK(worst < 1e-12);
+  }
+}
+
+// The peak of each load is searched on the continuous solution. It must be at least every
+// value of a dense series (every 1e-4 of the shot; the series is the interpolant, good to
+// ~1e-10), and above the series' largest by no more than a smooth peak can rise between two
+// samples, (dt/2)^2 |f''| / 2 = |second difference| / 8, taken twice over. The pivot force's
+// peak is also F_R of eq:F, found by the running extremes: the two searches agree to 1e-9.
+TEST_CASE("a builder's load peaks are the largest values up to the release", "[shot][physics]") {
+  for (const Engine& engine : {alcala_ca(), denny_standard()}) {
+    const Verification v = verify_engine(engine, ShotSettings{});
+    std::vector<TracePoint> trace;
+    verify_engine(engine, ShotSettings{}, &trace, v.t_release / 1e4);
+    const double time_unit = std::sqrt(engine.L2 / engine.material.g);
+    std::vector<std::array<double, load_count>> series;
+    for (const TracePoint& p : trace)
+      if (p.phase != Phase::released && p.t * time_unit <= v.t_release) series.push_back(load_values(p.snapshot));
+    const double Mg = engine.M * engine.material.g, unit[load_count] = {Mg, Mg, Mg, Mg * engine.L2};
+    for (int k = 0; k < load_count; ++k) {
+      std::size_t top = 0;
+      for (std::size_t i = 0; i < series.size(); ++i)
+        if (series[i][k] > series[top][k]) top = i;
+      const double largest = series[top][k];
+      const double rise = top > 0 && top + 1 < series.size() ? std::abs(series[top - 1][k] - 2 * largest + series[top + 1][k]) / 8 : 0;
+      const double peak = v.loads[k].value / unit[k];
+      INFO("load " << k << ": peak " << peak << " at " << v.loads[k].t << " s, dense series " << largest << ", rise allowed " << rise);
+      CHECK(peak >= largest * (1 - 1e-9));
+      CHECK(peak <= largest * (1 + 1e-9) + 2 * rise);
+      CHECK(v.loads[k].t <= v.t_release);
+    }
+    CHECK(std::abs(v.loads[pivot_load].value / v.FR - 1) < 1e-9);
+  }
 }

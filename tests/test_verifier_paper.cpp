@@ -53,7 +53,7 @@ double pick(const Verification& v, const std::string& key) {
   if (key == "Q") return 100 * v.Q;
   if (key == "v") return v.v;
   if (key == "h") return v.h;
-  if (key == "x") return v.x;
+  if (key == "x") return -v.x;  // the paper's "6.0 m behind the pivot"; x runs toward the target
   return v.A_deg;
 }
 
@@ -404,5 +404,57 @@ TEST_CASE("tab:SketchBook-II rows 6 and 7: the printed L1 against Lb and l", "[v
     std::printf("tab:SketchBook-II %s: |R, T, eps - printed| with L1 = %.2f m: %.2f m, %.2f kJ, %.2f %%; with L1 = %.3f m: %.2f m, %.2f kJ, %.2f %%\n", row.name,
                 row.L1_printed, printed_miss[0], printed_miss[1], printed_miss[2], from_bold, bold_miss[0], bold_miss[1], bold_miss[2]);
     for (int k = 0; k < 3; ++k) CHECK(printed_miss[k] < bold_miss[k]);
+  }
+}
+
+// Section 4's beam. eq:Strain: S = (3D/(2 L2)) beta2, so "D/L2 = 1/3 ... S^max = 1/600 for
+// beta2 = 1/300" holds exactly for a beam sized by eq:bend_L2 (bending_diameter) at that D/L2.
+TEST_CASE("section 4: a beam with D/L2 = 1/3 at beta2 = 1/300 has a strain of 1/600", "[verifier][paper]") {
+  const Material wood;  // eq:kMkD
+  const double L2 = 1.2, D = L2 / 3;
+  // The counterweight that bends this beam by beta2 = 1/300: eq:bend_L2 solved for M.
+  const double M = 3 * wood.youngs_modulus * (M_PI / 64 * std::pow(D, 4)) * wood.beta2 / (wood.g * L2 * L2);
+  CHECK(std::abs(bending_diameter(M, L2, wood) / D - 1) < 1e-14);
+  const BeamStrength beam = beam_strength(D, L2, M, 0, wood);
+  std::printf("section 4: beta2 %.6g (1/300), strain at rest %.6g (1/600)\n", beam.beta2, beam.strain_at_rest);
+  CHECK(std::abs(beam.beta2 * 300 - 1) < 1e-13);
+  CHECK(std::abs(beam.strain_at_rest * 600 - 1) < 1e-13);
+  // The moment that loads it at rest, M g L2 (eq:Strain), gives the same stress as the peak.
+  CHECK(std::abs(beam_strength(D, L2, M, M * wood.g * L2, wood).stress_peak / beam.stress_at_rest - 1) < 1e-14);
+}
+
+// tab:Denny prints beta2 in % for its engines: the bending that the counterweight gives the
+// beam of mass mb (eq:BeamMass, rho_d = 700 kg/m3) by eq:bend_L2. beta2 ~ M L2^2 / D^4 and
+// D^4 ~ (mb/Lb)^2, so the printed 3 digits of Lb, H (L2 = Lb - H/cos theta_i, a difference),
+// M and mb carry into it: Denny's engine is given exactly (bold), the Max Q rows to their
+// rounding, worked out below as the first-order sum over the printed inputs.
+TEST_CASE("tab:Denny beta2 from the engines' own beams", "[verifier][paper]") {
+  struct Row {
+    const char* name;
+    double theta, Lb, H, M_t, mb;
+    const char* beta2_percent;
+  };
+  const Row rows[] = {{"Present", 45, 12, 6.15, 10, 2000, "0.66"},
+                      {"Max Q 45", 45, 8.67, 5.25, 13.3, 629, "0.66"},
+                      {"Max Q 30 F 1", 30, 7.15, 5.23, 13.3, 647, "0.33"},
+                      {"Max Q 30 F 2/3", 30, 7.06, 5.30, 15.7, 591, "0.33"}};
+  const Material wood;
+  for (const Row& r : rows) {
+    auto beta2 = [&](double Lb, double H, double M, double mb) {
+      const double L2 = Lb - H / std::cos(radians(r.theta));
+      return 100 * beam_strength(beam_diameter(mb, Lb, wood), L2, M, 0, wood).beta2;
+    };
+    const bool exact = std::string(r.name) == "Present";
+    const double value = beta2(r.Lb, r.H, r.M_t * 1000, r.mb);
+    double rounding = 0;
+    if (!exact) {
+      rounding += std::abs(beta2(r.Lb + 0.005, r.H, r.M_t * 1000, r.mb) - value);
+      rounding += std::abs(beta2(r.Lb, r.H + 0.005, r.M_t * 1000, r.mb) - value);
+      rounding += std::abs(beta2(r.Lb, r.H, r.M_t * 1000 + 50, r.mb) - value);
+      rounding += std::abs(beta2(r.Lb, r.H, r.M_t * 1000, r.mb + 0.5) - value);
+    } else {
+      rounding += std::abs(beta2(r.Lb, r.H + 0.005, r.M_t * 1000, r.mb) - value);  // H = 6.15 is printed, not given
+    }
+    check_printed(std::string("tab:Denny ") + r.name + " beta2 [%]", value, r.beta2_percent, rounding);
   }
 }

@@ -33,10 +33,14 @@ std::optional<double> read_value(const nlohmann::json& object, const std::string
   throw Error(ErrorKind::bad_number, name + ": " + brief_json(value) + " is neither a number nor a value with a unit like \"6.13m\"");
 }
 
-// A value a design must have; the hint says what it is, with an example.
-double required(const std::optional<double>& value, const std::string& key, const std::string& where, const std::string& hint) {
+// A value a design must have: the message says what it is, with an example written as a flag
+// ("--mb 660kg") or as a key ("mb": "660kg"), as the design was given.
+double required(const std::optional<double>& value, const std::string& key, const std::string& where, const std::string& what,
+                const std::string& example, const std::string& alternative = "") {
   if (!value)
-    throw Error(ErrorKind::usage, (where.empty() ? "{{" + key + "}} is missing" : where + ": key \"" + key + "\" is missing") + "; give " + hint);
+    throw Error(ErrorKind::usage, (where.empty() ? "{{" + key + "}} is missing; give " + what + ", e.g. {{" + key + "}} " + example
+                                                 : where + ": key \"" + key + "\" is missing; give " + what + ", e.g. \"" + key + "\": \"" + example + "\"") +
+                                      alternative);
   return *value;
 }
 
@@ -124,12 +128,13 @@ DesignValues read_design_values(const nlohmann::json& object, const std::string&
 EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   EngineRecord in;
   Engine& e = in.engine;
-  e.L1 = required(v.L1, "L1", where, "the long beam section, e.g. \"L1\": \"6.13m\"");
-  e.L2 = required(v.L2, "L2", where, "the short beam section, e.g. \"L2\": \"1.08m\"");
-  e.L4 = required(v.L4, "L4", where, "the sling length, e.g. \"L4\": \"5.80m\"");
-  e.M = required(v.M, "M", where, "the counterweight mass, e.g. \"M\": \"14.3t\"");
-  e.m = required(v.m, "m", where, "the projectile mass, e.g. \"m\": \"100kg\"");
-  e.mb = required(v.mb, "mb", where, "the beam mass, e.g. \"mb\": \"660kg\"");
+  e.L1 = required(v.L1, "L1", where, "the long beam section", "6.13m");
+  e.L2 = required(v.L2, "L2", where, "the short beam section", "1.08m");
+  e.L4 = required(v.L4, "L4", where, "the sling length", "5.80m");
+  e.M = required(v.M, "M", where, "the counterweight mass", "14.3t");
+  e.m = required(v.m, "m", where, "the projectile mass", "100kg");
+  // Without mb, a beam diameter gives it from the wood (eq:BeamMass), below.
+  if (v.mb || !v.D) e.mb = required(v.mb, "mb", where, "the beam mass", "660kg", where.empty() ? ", or the beam's diameter {{D}}, from which it follows" : ", or \"D\", the beam's diameter");
   e.theta_i_deg = v.theta_i_deg.value_or(standard_theta_i_deg);
   e.psi_i_deg = v.psi_i_deg.value_or(0);
   // D = 0 is how the outputs write "not given" (they read back); below 0 it is a mistake.
@@ -161,6 +166,10 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   material.youngs_modulus = v.youngs_modulus.value_or(material.youngs_modulus);
   material.wood_density = v.wood_density.value_or(material.wood_density);
   material.g = v.g.value_or(material.g);
+  if (v.D && !v.mb) {  // eq:BeamMass: a round beam of the material's wood
+    if (!(e.D > 0)) throw Error(ErrorKind::bad_number, engine_key_name(where, "D") + " = 0 gives no beam; give the beam's diameter, or its mass " + engine_key_name(where, "mb"));
+    e.mb = beam_mass(e.D, beam_length(e), material);
+  }
   try {
     check_engine(e);
   } catch (const Error& error) {
@@ -339,7 +348,18 @@ std::vector<Field> verification_fields(const Verification& v) {
       {"R", v.capacity.R, "m"}, {"T", v.capacity.T, "J"}, {"R_vacuum", v.R_vacuum, "m"}, {"eps", v.eps}, {"Q", v.Q}, {"force_factor", v.force_factor},
       {"v", v.v, "m_s"}, {"h", v.h, "m"}, {"x", v.x, "m"}, {"A_deg", v.A_deg}, {"t_release", v.t_release, "s"},
       {"t_liftoff", v.t_liftoff, "s"}, {"FS_perp_mg", v.FS_perp_mg}, {"FR_Mg", v.FR_Mg}, {"dFRh_Mg", v.dFRh_Mg},
-      {"energy_drift", v.energy_drift}};
+      {"FS_perp", v.FS_perp, "N"}, {"FR", v.FR, "N"}, {"dFRh", v.dFRh, "N"}};
+  // The builder's loads (verification.hpp), each with its time; the beam's strength, 0 without a beam.
+  const char* load_names[load_count][2] = {{"sling_tension", "t_sling_tension"}, {"hinge_force", "t_hinge_force"},
+                                           {"pivot_force", "t_pivot_force"}, {"beam_moment", "t_beam_moment"}};
+  for (int k = 0; k < load_count; ++k) {
+    fields.push_back({load_names[k][0], v.loads[k].value, k == beam_moment_load ? "N_m" : "N"});
+    fields.push_back({load_names[k][1], v.loads[k].t, "s"});
+  }
+  const BeamStrength beam = v.beam.value_or(BeamStrength{});
+  fields.insert(fields.end(), {{"beam_D", beam.D, "m"}, {"beta2_implied", beam.beta2}, {"strain_at_rest", beam.strain_at_rest},
+                               {"strain_peak", beam.strain_peak}, {"stress_at_rest", beam.stress_at_rest, "Pa"},
+                               {"stress_peak", beam.stress_peak, "Pa"}, {"rupture_margin", beam.margin}, {"energy_drift", v.energy_drift}});
   for (const Field& field : fields)
     if (!std::isfinite(field.value))
       throw Error(ErrorKind::numerical, std::string("the result ") + field.key + " is not finite; tighten {{rtol}}");
@@ -352,18 +372,12 @@ std::vector<Field> check_fields(const std::optional<CapacityCheck>& check) {
   return {{"predicted_R", c.predicted.R, "m"}, {"predicted_T", c.predicted.T, "J"}, {"deviation_R", c.deviation_R}, {"deviation_T", c.deviation_T}};
 }
 
-// The forces in kN beside their multiples of m g and M g, so that "3.0 Mg" is not read as megagrams.
-std::vector<Field> force_fields(const Engine& engine, const Verification& v) {
-  const double mg_kN = engine.m * engine.material.g / 1e3, Mg_kN = engine.M * engine.material.g / 1e3;
-  return {{"FS_perp", v.FS_perp_mg * mg_kN, "kN"}, {"FR", v.FR_Mg * Mg_kN, "kN"}, {"dFRh", v.dFRh_Mg * Mg_kN, "kN"}};
-}
-
 }  // namespace
 
 std::vector<std::string> verification_csv_header() {
   std::vector<std::string> header;
   const Verification v{};
-  for (const auto& fields : {engine_fields(Engine{}), verification_fields(v), force_fields(Engine{}, v), check_fields(std::nullopt)})
+  for (const auto& fields : {engine_fields(Engine{}), verification_fields(v), check_fields(std::nullopt)})
     for (const Field& field : fields) header.push_back(csv_column(field));
   header.insert(header.end(), {"pass", "air", "release", "n", "target_level_m", "warnings"});
   return header;
@@ -374,7 +388,7 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
   std::vector<Field> engine_part = engine_fields(engine);
   require_finite(engine_part);
   std::vector<std::string> row;
-  for (const auto& fields : {engine_part, verification_fields(v), force_fields(engine, v)})
+  for (const auto& fields : {engine_part, verification_fields(v)})
     for (const Field& field : fields) row.push_back(csv_number(field.value, digits));
   for (const Field& field : check_fields(check)) row.push_back(check ? csv_number(field.value, digits) : "");
   const nlohmann::ordered_json assumed = assumptions_json(engine, settings);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
 
 namespace trebuchet {
 namespace {
@@ -15,32 +16,56 @@ struct Unit {
   double to_si;  // multiply by this to get SI base units (degrees for angles)
 };
 
-constexpr std::array<Unit, 25> units = {{
+// The imperial units are those of the international yard and pound (1959): the foot is
+// 0.3048 m and the pound 0.45359237 kg exactly; the pound-force is a pound under standard
+// gravity, 9.80665 m/s^2. tests/test_units.cpp checks every factor against GNU units.
+constexpr double foot = 0.3048, pound = 0.45359237, pound_force = pound * 9.80665;
+constexpr std::array<Unit, 45> units = {{
     {"m", UnitDimension::length, 1.0},
     {"cm", UnitDimension::length, 1e-2},
     {"mm", UnitDimension::length, 1e-3},
     {"km", UnitDimension::length, 1e3},
+    {"ft", UnitDimension::length, foot},
+    {"in", UnitDimension::length, foot / 12},
+    {"yd", UnitDimension::length, 3 * foot},
+    {"mi", UnitDimension::length, 5280 * foot},
     {"kg", UnitDimension::mass, 1.0},
     {"g", UnitDimension::mass, 1e-3},
     {"t", UnitDimension::mass, 1e3},
+    {"tonne", UnitDimension::mass, 1e3},
+    {"tonnes", UnitDimension::mass, 1e3},
+    {"lb", UnitDimension::mass, pound},
+    {"lbs", UnitDimension::mass, pound},
+    {"oz", UnitDimension::mass, pound / 16},
     {"J", UnitDimension::energy, 1.0},
     {"kJ", UnitDimension::energy, 1e3},
     {"MJ", UnitDimension::energy, 1e6},
+    {"ft*lbf", UnitDimension::energy, foot * pound_force},
+    {"ftlbf", UnitDimension::energy, foot * pound_force},
     {"deg", UnitDimension::angle, 1.0},
     {"m/s2", UnitDimension::acceleration, 1.0},
     {"m/s^2", UnitDimension::acceleration, 1.0},
+    {"ft/s2", UnitDimension::acceleration, foot},
     {"Pa", UnitDimension::pressure, 1.0},
     {"kPa", UnitDimension::pressure, 1e3},
     {"MPa", UnitDimension::pressure, 1e6},
     {"GPa", UnitDimension::pressure, 1e9},
+    {"psi", UnitDimension::pressure, pound_force / (foot / 12 * foot / 12)},
     {"kg/m3", UnitDimension::density, 1.0},
     {"kg/m^3", UnitDimension::density, 1.0},
     {"t/m3", UnitDimension::density, 1e3},
+    {"lb/ft3", UnitDimension::density, pound / (foot * foot * foot)},
     {"%", UnitDimension::dimensionless, 1e-2},
     {"s", UnitDimension::time, 1.0},
     {"ms", UnitDimension::time, 1e-3},
     {"m/s", UnitDimension::speed, 1.0},
     {"km/h", UnitDimension::speed, 1 / 3.6},
+    {"ft/s", UnitDimension::speed, foot},
+    {"mph", UnitDimension::speed, 5280 * foot / 3600},
+    {"N", UnitDimension::force, 1.0},
+    {"kN", UnitDimension::force, 1e3},
+    {"lbf", UnitDimension::force, pound_force},
+    {"N*m", UnitDimension::moment, 1.0},
 }};
 
 // How messages speak of each dimension.
@@ -62,6 +87,8 @@ DimensionText dimension_text(UnitDimension dimension) {
     case UnitDimension::density: return {"a density", "kg/m^3", "700kg/m3"};
     case UnitDimension::time: return {"a time", "seconds", "5ms"};
     case UnitDimension::speed: return {"a speed", "m/s", "5m/s"};
+    case UnitDimension::force: return {"a force", "newtons", "30kN"};
+    case UnitDimension::moment: return {"a moment", "N m", "300N*m"};
   }
   return {"?", "?", "?"};
 }
@@ -229,6 +256,82 @@ std::optional<Spread> parse_spread(std::string_view text, UnitDimension dimensio
     return Spread{Spread::Kind::normal, mean, deviation};
   }
   return std::nullopt;
+}
+
+std::vector<UnitFactor> unit_factors() {
+  std::vector<UnitFactor> out;
+  for (const Unit& unit : units) out.push_back({std::string(unit.suffix), unit.dimension, unit.to_si});
+  return out;
+}
+
+bool is_unit_word(std::string_view text) {
+  for (const Unit& unit : units)
+    if (unit.suffix == text) return true;
+  return false;
+}
+
+namespace {
+
+// The unit a report prints a value in: its suffix and size in SI, chosen so that the number
+// reads plainly (22.4 J, not 0.0224 kJ).
+struct PrintUnit {
+  const char* suffix;
+  double to_si;
+};
+
+PrintUnit print_unit(double si, UnitDimension dimension, UnitSystem system) {
+  const double size = std::abs(si);
+  // SI: the largest of the dimension's units the value reaches 1 of (the smallest below them all).
+  auto largest_reached = [&](std::initializer_list<PrintUnit> ladder) {
+    PrintUnit chosen = *ladder.begin();
+    for (const PrintUnit& unit : ladder)
+      if (size >= unit.to_si) chosen = unit;
+    return chosen;
+  };
+  if (system == UnitSystem::imperial) {
+    switch (dimension) {
+      case UnitDimension::length: return size < foot ? PrintUnit{"in", foot / 12} : PrintUnit{"ft", foot};
+      case UnitDimension::mass: return size < pound ? PrintUnit{"oz", pound / 16} : PrintUnit{"lb", pound};
+      case UnitDimension::energy:
+      case UnitDimension::moment: return {"ft·lbf", foot * pound_force};
+      case UnitDimension::force: return {"lbf", pound_force};
+      case UnitDimension::pressure: return {"psi", pound_force / (foot / 12 * foot / 12)};
+      case UnitDimension::speed: return {"ft/s", foot};
+      case UnitDimension::density: return {"lb/ft3", pound / (foot * foot * foot)};
+      case UnitDimension::acceleration: return {"ft/s2", foot};
+      default: break;
+    }
+  }
+  switch (dimension) {
+    case UnitDimension::length: return size >= 1e-2 ? PrintUnit{"m", 1} : PrintUnit{"mm", 1e-3};  // metres down to a centimetre
+    case UnitDimension::mass: return largest_reached({{"g", 1e-3}, {"kg", 1}, {"t", 1e3}});
+    case UnitDimension::energy: return largest_reached({{"J", 1}, {"kJ", 1e3}, {"MJ", 1e6}, {"GJ", 1e9}});
+    case UnitDimension::force: return largest_reached({{"N", 1}, {"kN", 1e3}, {"MN", 1e6}});
+    case UnitDimension::moment: return largest_reached({{"N m", 1}, {"kN m", 1e3}, {"MN m", 1e6}});
+    case UnitDimension::pressure: return largest_reached({{"Pa", 1}, {"kPa", 1e3}, {"MPa", 1e6}, {"GPa", 1e9}});
+    case UnitDimension::speed: return {"m/s", 1};
+    case UnitDimension::density: return {"kg/m3", 1};
+    case UnitDimension::acceleration: return {"m/s2", 1};
+    case UnitDimension::time: return {"s", 1};
+    case UnitDimension::angle: return {"deg", 1};
+    case UnitDimension::dimensionless: return {"", 1};
+  }
+  return {"", 1};
+}
+
+}  // namespace
+
+std::string quantity_text(double si, UnitDimension dimension, UnitSystem system, int digits) {
+  auto in = [&](UnitSystem s) {
+    const PrintUnit unit = print_unit(si, dimension, s);
+    std::string text = format_significant(si / unit.to_si, digits);
+    if (*unit.suffix) text += std::string(" ") + unit.suffix;
+    return text;
+  };
+  const std::string si_text = in(UnitSystem::si);
+  if (system == UnitSystem::si) return si_text;
+  const std::string imperial = in(UnitSystem::imperial);
+  return imperial == si_text ? si_text : imperial + " (" + si_text + ")";
 }
 
 }  // namespace trebuchet

@@ -26,9 +26,9 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
     ShotResult shot;
     double L2, value;  // [m]; T [J] or m [kg]
   };
-  auto trial = [&](double mu) {
+  auto trial = [&](double mu, bool find_loads = false) {
     design.mu = mu;
-    Trial out{simulate_shot(design, settings.criterion, settings.integrator), 0, 0};
+    Trial out{simulate_shot(design, settings.criterion, settings.integrator, nullptr, 0, nullptr, find_loads), 0, 0};
     ++fit.simulations;
     out.L2 = R / out.shot.release.range;
     const ExtraScalings sizes = extra_scalings(design.K(), out.L2, material);  // eq:ExtraScalings
@@ -90,7 +90,7 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
                                              (warm ? "the starting m/M = " + format_significant(shape.mu, 3)
                                                    : "m = 2T/(gR) = " + format_significant(m_guess, 3) + " kg") +
                                              " lets this shape " + goal + "; change the shape (l, l4, mu_b) or the capacity");
-  const Trial found = trial(std::exp(find_root(log_error, lo, hi, 0.1 * rtol, 0)));
+  const Trial found = trial(std::exp(find_root(log_error, lo, hi, 0.1 * rtol, 0)), settings.loads);
   fit.design = design;
   fit.engine = engine_of(design, found.L2, material);  // the one conversion to SI
   fit.verification = verification_of(fit.engine, found.shot, 0);

@@ -205,6 +205,7 @@ Completion complete_engine(const CompletionRequest& request) {
   search.integrator = IntegratorSettings{};
   search.integrator.rtol = search.integrator.atol = 1e-8;
   search.integrator.max_energy_drift = 1e-6;
+  search.loads = false;
   // An engine works when its shot runs and the model holds up to the release (no warning: the
   // sling pulls, the counterweight and the tip stay above the base); else it costs 0, worse
   // than any that works, and the last reason is kept for the message.

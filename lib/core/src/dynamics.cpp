@@ -152,6 +152,13 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   out.pivot_reaction = {e.mu_b * cm_acc.x + out.hinge_force.x - out.sling_on_tip.x,
                         e.mu_b * (cm_acc.y + 1) + out.hinge_force.y - out.sling_on_tip.y};
 
+  // The short section, a rod of mass mu_b/(l + 1) per L2 from the pivot to the hinge, turns
+  // about the pivot: I_short th'' = moment of the arm's pull at the hinge (-F_H) + its weight
+  // at its middle - the moment the long section takes. tests/test_shot.cpp checks the long
+  // section's own balance against it.
+  const double per_length = e.mu_b / (e.l + 1);
+  out.beam_moment = st * out.hinge_force.y + ct * out.hinge_force.x + per_length * st / 2 - per_length / 3 * a.theta;
+
   // Energy of each body, potential from the pivot's level: beam rotation, counterweight,
   // projectile (on the trough in phase I, absent in III).
   const double I = e.I;

@@ -1,5 +1,6 @@
 #include "trebuchet/material.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "trebuchet/error.hpp"
@@ -11,6 +12,7 @@ void check_material(const Material& m) {
   check_ordinary(m.youngs_modulus, 1e3, 1e15, "youngs_modulus", "Pa", "Young's modulus");
   check_ordinary(m.wood_density, 1, 1e5, "wood_density", "kg/m3", "wood density");
   check_ordinary(m.g, 1e-6, 1e6, "g", "m/s2", "gravitational acceleration");
+  check_ordinary(m.modulus_of_rupture, 1e3, 1e13, "rupture", "Pa", "modulus of rupture");
 }
 
 double k_M(const Material& material) {  // eq:kMkD
@@ -45,6 +47,19 @@ double beam_mass(double D, double Lb, const Material& material) {  // eq:BeamMas
 
 double beam_diameter(double mb, double Lb, const Material& material) {  // eq:BeamMass, solved for D
   return std::sqrt(4 * mb / (material.wood_density * M_PI * Lb));
+}
+
+BeamStrength beam_strength(double D, double L2, double M, double peak_moment, const Material& material) {
+  BeamStrength out;
+  out.D = D;
+  const double second_moment = M_PI / 64 * std::pow(D, 4);                                            // I of eq:bend_L2 [m^4]
+  out.beta2 = M * material.g * L2 * L2 / (3 * material.youngs_modulus * second_moment);               // eq:bend_L2
+  out.strain_at_rest = 3 * D / (2 * L2) * out.beta2;                                                   // eq:Strain
+  out.stress_at_rest = material.youngs_modulus * out.strain_at_rest;
+  out.stress_peak = peak_moment * (D / 2) / second_moment;
+  out.strain_peak = out.stress_peak / material.youngs_modulus;
+  out.margin = material.modulus_of_rupture / std::max(out.stress_at_rest, out.stress_peak);
+  return out;
 }
 
 }  // namespace trebuchet

@@ -50,6 +50,7 @@ class PhaseRecord {
   struct Sample : StepEnd {
     ForceValues forces;
     ForceExtremes extremes;  // over [0, t], refined peaks included
+    std::array<double, load_count> loads;
   };
   struct Peak {
     double t;
@@ -65,7 +66,7 @@ class PhaseRecord {
     const ForceValues forces = force_values(snap);
     ForceExtremes extremes = samples_.empty() ? before_ : samples_.back().extremes;
     extremes.add(forces);
-    samples_.push_back({end, forces, extremes});
+    samples_.push_back({end, forces, extremes, load_values(snap)});
     if (samples_.size() >= 3) refine_peaks();
     record_onsets(conditions_of(snap));
   }
@@ -112,6 +113,27 @@ class PhaseRecord {
     return out;
   }
 
+  // The values of load k at the samples before t_end, then `at_end` at t_end: where its largest
+  // value is sought (load_peaks).
+  std::vector<Point> load_points(int k, double t_end, double at_end) const {
+    std::vector<Point> points;
+    for (const Sample& sample : samples_)
+      if (sample.t < t_end) points.push_back({sample.t, sample.loads[k]});
+    points.push_back({t_end, at_end});
+    return points;
+  }
+
+  // The largest value of load k near points[top] of load_points: between its neighbours, as a
+  // peak of force is refined (refine_peaks), when it has two.
+  LoadPeak refined_load_peak(int k, const std::vector<Point>& points, std::size_t top) const {
+    LoadPeak peak{points[top].f, points[top].x};
+    if (top == 0 || top + 1 == points.size()) return peak;
+    const Point estimate = parabola_vertex(points[top - 1], points[top], points[top + 1]);
+    const double t = peak_between([&](double time) { return loads_at(time)[k]; }, points[top - 1].x, estimate.x, points[top + 1].x, 1e-6, 1e-8);
+    const double value = loads_at(t)[k];
+    return value > peak.value ? LoadPeak{value, t} : peak;
+  }
+
   // The last sample at or before `time` (the first one for earlier times); samples are in time order.
   std::size_t base_of(double time) const {
     const auto after = std::upper_bound(samples_.begin() + 1, samples_.end(), time,
@@ -133,6 +155,8 @@ class PhaseRecord {
   Snapshot snapshot_at(double time) const { return integrator_.dynamics().snapshot(integrator_.phase(), integrator_.state(y_at(time))); }
 
   ForceValues forces_at(double time) const { return force_values(snapshot_at(time)); }
+
+  std::array<double, load_count> loads_at(double time) const { return load_values(snapshot_at(time)); }
 
   // A condition that turns negative between the last two samples fails at the root of its
   // value on the interpolant between them; one negative at the first sample fails there.
@@ -299,6 +323,10 @@ double objective_range(const ReleasePoint& r, const ReleaseCriterion& criterion)
 
 }  // namespace
 
+std::array<double, load_count> load_values(const Snapshot& s) {
+  return {s.sling_tension, std::hypot(s.hinge_force.x, s.hinge_force.y), std::hypot(s.pivot_reaction.x, s.pivot_reaction.y), std::abs(s.beam_moment)};
+}
+
 ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criterion, double t, const State& s,
                            const Snapshot& snap, ForceExtremes extremes) {
   extremes.add(force_values(snap));
@@ -325,7 +353,7 @@ ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criter
 }
 
 ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
-                         std::vector<TracePoint>* trace, double trace_dt, std::vector<TracePoint>* unreleased) {
+                         std::vector<TracePoint>* trace, double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads) {
   use_gsl_return_codes();
   if (!(e.L() > 0))
     fail("no room for the counterweight arm: L3/L2 = F l cos(theta_i) - 1 = " + format_significant(e.L(), 4) +
@@ -465,6 +493,19 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   result.slack_sling = before_release(onsets[0]);
   result.counterweight_below_base = before_release(onsets[1]);
   result.tip_below_base = before_release(onsets[2]);
+  // The builder's loads: the largest sampled value of each over both phases (phase I ends on
+  // its lift-off sample, phase II on the release), refined once, in its phase.
+  const auto at_release = load_values(dynamics.snapshot(Phase::lifted, result.release.state));
+  for (int k = 0; k < (find_loads ? load_count : 0); ++k) {
+    const auto trough_points = phase1.load_points(k, result.t_liftoff, phase1.samples().back().loads[k]);
+    const auto lifted_points = phase2.load_points(k, t_release, at_release[k]);
+    const auto highest = [](const std::vector<Point>& points) {
+      return static_cast<std::size_t>(std::max_element(points.begin(), points.end(), [](const Point& a, const Point& b) { return a.f < b.f; }) - points.begin());
+    };
+    const std::size_t top_trough = highest(trough_points), top_lifted = highest(lifted_points);
+    result.loads[k] = lifted_points[top_lifted].f > trough_points[top_trough].f ? phase2.refined_load_peak(k, lifted_points, top_lifted)
+                                                                                : phase1.refined_load_peak(k, trough_points, top_trough);
+  }
   if (trace) {
     record_trace(trace, lifted, phase2, result.t_liftoff, t_release, trace_dt);
     if (!(trace_dt > 0))  // the continuous record ends on the release already

@@ -18,7 +18,8 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   const double vx = r.velocity.x * speed_unit, vy = r.velocity.y * speed_unit;
   out.v = std::hypot(vx, vy);
   out.h = r.height * L2;
-  out.x = r.position.x * L2;
+  const double behind = r.position.x * L2;  // in the frame of the shot, where the target lies toward -x [m]
+  out.x = -behind;
   out.A_deg = degrees(std::atan2(vy, -vx));
   out.theta_release_deg = degrees(r.state.theta);
   const double drop = out.h - target_level;  // release to target level [m]
@@ -26,7 +27,7 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   if (!(target_level <= apex))
     throw Error(ErrorKind::usage, "the target level " + format_significant(target_level, 4) + " m lies above the apex of the flight, " +
                                       format_significant(apex, 4) + " m above the engine's base; give a target level below it");
-  out.R_vacuum = vacuum_range({out.x, 0}, {vx, vy}, drop, g);
+  out.R_vacuum = vacuum_range({behind, 0}, {vx, vy}, drop, g);
   out.capacity.R = out.R_vacuum;
   // eq:T at the target level: the height above it is drop/L2, scaled; M g L2 turns tau_e into joules.
   out.capacity.T = energy_at_target(engine.m / engine.M, r.velocity, drop / L2) * engine.M * g * L2;
@@ -38,16 +39,16 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
     double range = 0;
     Vec2 end_velocity{vx, vy};
     if (air) {
-      const auto end = fly({out.x, 0}, {vx, vy}, end_drop, drag_of(*air, engine.m), g);
+      const auto end = fly({behind, 0}, {vx, vy}, end_drop, drag_of(*air, engine.m), g);
       if (!end)
         throw Error(ErrorKind::numerical, "the flight through " + describe_air(*air, engine.m) +
                                               " did not come down to its end; give the air, the wind and the projectile's density values of ordinary size");
       range = end->range, end_velocity = end->velocity;
     } else {
-      range = vacuum_range({out.x, 0}, {vx, vy}, 0, g);
+      range = vacuum_range({behind, 0}, {vx, vy}, 0, g);
       end_velocity.y = -vy;
     }
-    out.capacity.R = range_from_release ? range + out.x : range;
+    out.capacity.R = range_from_release ? range + behind : range;
     out.capacity.T = engine.m * (end_velocity.x * end_velocity.x + end_velocity.y * end_velocity.y) / 2;
   }
   out.eps = r.efficiency;
@@ -59,6 +60,12 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   out.FR_Mg = r.extremes.max[pivot_reaction];
   out.dFRh_Mg = r.extremes.max[pivot_horizontal] + r.extremes.max[pivot_horizontal_negated];
   out.energy_drift = shot.energy_drift;
+  const double Mg = engine.M * g;
+  out.FS_perp = out.FS_perp_mg * engine.m * g, out.FR = out.FR_Mg * Mg, out.dFRh = out.dFRh_Mg * Mg;
+  const double load_unit[load_count] = {Mg, Mg, Mg, Mg * L2};  // LoadIndex, scaled in M g and M g L2
+  for (int k = 0; k < load_count; ++k) out.loads[k] = {shot.loads[k].value * load_unit[k], shot.loads[k].t * time_unit};
+  const double D = engine.D > 0 ? engine.D : engine.mb > 0 ? beam_diameter(engine.mb, beam_length(engine), engine.material) : 0;
+  if (D > 0) out.beam = beam_strength(D, L2, engine.M, out.loads[beam_moment_load].value, engine.material);
   auto warn = [&](const std::optional<double>& t, const std::string& what) {
     if (t) out.warnings.push_back(what + " at t = " + format_significant(*t * time_unit, 4) + " s, before the release at " +
                                   format_significant(out.t_release, 4) + " s: the model no longer holds there, and the figures are not physical");
@@ -92,7 +99,7 @@ Verification verify_engine(const Engine& engine, const ShotSettings& settings, s
                                              std::to_string(static_cast<long>(max_series_points)) + " points; give at least " +
                                              format_significant(duration_s / max_series_points, 2) + " s");
   }
-  const ShotResult shot = simulate_shot(scaled_design(engine), criterion, settings.integrator, trace, trace_dt_s / time_unit);
+  const ShotResult shot = simulate_shot(scaled_design(engine), criterion, settings.integrator, trace, trace_dt_s / time_unit, nullptr, settings.loads);
   return verification_of(engine, shot, settings.target_level, settings.air, settings.range_from_release);
 }
 

@@ -11,11 +11,13 @@ struct Material {
   double youngs_modulus = 12e9;  ///< Young's modulus of the beam's wood [Pa]
   double wood_density = 700;     ///< density of the beam's wood [kg/m^3]
   double g = 9.81;               ///< gravitational acceleration [m/s^2]
+  /// The stress beyond which the wood breaks [Pa]; section 4: "often near 1 % of M_e".
+  double modulus_of_rupture = 120e6;
 };
 
-/// Refuses (Error(bad_number), naming {{beta2}}, {{youngs_modulus}}, {{wood_density}} or {{g}})
-/// a material outside the ordinary: beta2 1e-9 to 1, E 1e3 to 1e15 Pa, wood 1 to 1e5 kg/m^3, g
-/// 1e-6 to 1e6 m/s^2. Within them every factor of eq:kMkD and eq:ExtraScalings is finite.
+/// Refuses (Error(bad_number), naming {{beta2}}, {{youngs_modulus}}, {{wood_density}}, {{g}} or
+/// {{rupture}}) a material outside the ordinary: beta2 1e-9 to 1, E 1e3 to 1e15 Pa, wood 1 to
+/// 1e5 kg/m^3, g 1e-6 to 1e6 m/s^2, the modulus of rupture 1e3 to 1e13 Pa. Within them every factor of eq:kMkD and eq:ExtraScalings is finite.
 void check_material(const Material& material);
 
 /// k_M = (4 pi / 3) g rho_d^2 / M_e of eq:kMkD [kg/m^4].
@@ -48,6 +50,21 @@ double bending_diameter(double M, double L2, const Material& material);
 double beam_mass(double D, double Lb, const Material& material);
 double beam_diameter(double mb, double Lb, const Material& material);
 
+/// How hard the counterweight bends a round beam of diameter D (section 4), and how close the
+/// wood comes to breaking.
+struct BeamStrength {
+  double D = 0;               ///< beam diameter [m]
+  double beta2 = 0;           ///< u2/L2 of eq:bend_L2 that the counterweight gives it, scaled
+  double strain_at_rest = 0;  ///< eq:Strain at the pivot, beam level and loaded at rest, scaled
+  double stress_at_rest = 0;  ///< M_e times it [Pa]
+  double strain_peak = 0;     ///< from the largest bending moment at the pivot during the shot, scaled
+  double stress_peak = 0;     ///< [Pa]
+  double margin = 0;          ///< the modulus of rupture over the larger stress, scaled
+};
+/// The strength of a beam of diameter `D` [m] at short arm `L2` [m] under a counterweight `M`
+/// [kg], whose largest bending moment at the pivot in the shot is `peak_moment` [N m]: the
+/// stress of a moment is its moment over the section modulus pi D^3/32.
+BeamStrength beam_strength(double D, double L2, double M, double peak_moment, const Material& material);
 /// Factors that carry an optimal engine from one size and material to another at the same
 /// scaled design, by eq:ExtraScalings: lengths and R with the length ratio, masses with the
 /// ratio of M, D with that of D, energies with that of M g L2. Section 7: beta2 from 1/300 to

@@ -3,6 +3,7 @@
 // of the quality function over phase II (section 5). Everything here is scaled (dynamics.hpp).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -36,11 +37,25 @@ struct ReleasePoint {
 ReleasePoint release_point(const ScaledDesign& design, const ReleaseCriterion& criterion, double t, const State& s,
                            const Snapshot& snapshot, ForceExtremes extremes_before);
 
+/// What a builder sizes the parts for, scaled: the sling's tension (ropes), the force at the
+/// counterweight's hinge (its pin), the pivot force (the axle and the frame), all in M g, and
+/// the bending moment in the beam at the pivot, in M g L2 (the beam, eq:Strain).
+enum LoadIndex { sling_tension_load, hinge_load, pivot_load, beam_moment_load };
+inline constexpr int load_count = 4;
+std::array<double, load_count> load_values(const Snapshot& snapshot);  ///< each as a magnitude, the tension as it is
+
+/// The largest value of one load over phases I and II up to the release, found on the
+/// continuous solution, and its scaled time.
+struct LoadPeak {
+  double value = 0, t = 0;
+};
+
 struct ShotResult {
   double t_liftoff = 0;         ///< scaled
   ReleasePoint release;
   double energy_drift = 0;      ///< max |E(t) - E(0)| / Delta U over phases I and II
   long steps = 0;               ///< accepted steps, both phases
+  std::array<LoadPeak, load_count> loads;  ///< by LoadIndex; all 0 unless asked for (simulate_shot)
   /// The release sits at the instant this running extreme of eq:F starts to grow (a kink of
   /// the objective); none when it sits at a smooth maximum.
   std::optional<ForceIndex> release_at_growth_of;
@@ -66,7 +81,10 @@ struct TracePoint {
 /// or with trace_dt > 0 (scaled) at every multiple of trace_dt on the continuous solution.
 /// `unreleased` gets phase II past the release, had the projectile not been let go, as far as
 /// the release search looked (the objective down to half its best), sampled alike.
+/// With `find_loads`, the builder's loads (ShotResult::loads) are found: about 10 % of a shot,
+/// which searches that only rank engines save.
 ShotResult simulate_shot(const ScaledDesign& design, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
-                         std::vector<TracePoint>* trace = nullptr, double trace_dt = 0, std::vector<TracePoint>* unreleased = nullptr);
+                         std::vector<TracePoint>* trace = nullptr, double trace_dt = 0, std::vector<TracePoint>* unreleased = nullptr,
+                         bool find_loads = false);
 
 }  // namespace trebuchet

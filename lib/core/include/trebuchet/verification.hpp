@@ -2,6 +2,7 @@
 // turned back into metres, joules and newtons with L2, M and the engine's g (section 3).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,6 +22,9 @@ struct ShotSettings {
   /// Denny's range (section 6.3): from the release point to where the flight dips below the
   /// release height, instead of from the pivot to the target level.
   bool range_from_release = false;
+  /// Find the builder's loads (Verification::loads and the beam's peak stress); searches that
+  /// only rank engines leave them out, and report them for the engine they find.
+  bool loads = true;
 };
 
 /// Refuses settings no shot can run under: check_integrator, check_air, and a target level
@@ -37,7 +41,7 @@ struct Verification {
   double force_factor = 0; ///< F of eq:F, scaled
   double v = 0;            ///< release speed [m/s]
   double h = 0;            ///< release height above the base [m]
-  double x = 0;            ///< release position along the throw, from the pivot: > 0 behind it [m]
+  double x = 0;            ///< release position from the pivot toward the target, as on the site (report.hpp): < 0 behind the pivot [m]
   double A_deg = 0;        ///< initial climb [deg]
   double theta_release_deg = 0;  ///< beam angle at release from the downward vertical [deg]; 180 is upright (section 6.2: below it, lower branch)
   double t_release = 0;    ///< [s]
@@ -45,7 +49,19 @@ struct Verification {
   double FS_perp_mg = 0;   ///< largest perpendicular sling force on the beam / (m g), scaled
   double FR_Mg = 0;        ///< largest |pivot reaction| / (M g), scaled
   double dFRh_Mg = 0;      ///< largest minus smallest horizontal pivot reaction / (M g), scaled
+  double FS_perp = 0, FR = 0, dFRh = 0;  ///< the same three forces [N]
   double energy_drift = 0; ///< max |E(t) - E(0)| / Delta U over phases I and II, scaled
+  /// The largest loads a builder sizes parts for (shot.hpp: LoadIndex), over phases I and II up
+  /// to the release, with their times: the sling's tension, the force on the counterweight's
+  /// hinge pin and on the axle at the pivot [N], the bending moment in the beam at the pivot [N m].
+  struct Load {
+    double value = 0;  ///< [N] or [N m]
+    double t = 0;      ///< [s]
+  };
+  std::array<Load, load_count> loads;
+  /// The beam's bending and stress (material.hpp), with D as given or, failing that, from mb by
+  /// eq:BeamMass; none for a beam of no mass.
+  std::optional<BeamStrength> beam;
   /// Where the model stops holding before the release (a slack sling, the counterweight or the
   /// beam's tip below the base), each with its time: the figures are then not physical.
   std::vector<std::string> warnings;

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "trebuchet/angles.hpp"
 #include "trebuchet/quantity.hpp"
@@ -13,7 +14,7 @@
 namespace trebuchet {
 
 /// Dimensions of option values; the first four are those of Quantity.
-enum class UnitDimension { length, mass, energy, dimensionless, angle, acceleration, pressure, density, time, speed };
+enum class UnitDimension { length, mass, energy, dimensionless, angle, acceleration, pressure, density, time, speed, force, moment };
 
 UnitDimension unit_dimension(Dimension dimension);
 
@@ -34,5 +35,24 @@ std::string unit_list(UnitDimension dimension);
 /// unit, a bare number in SI units), or nullopt for a plain value. Throws Error(bad_number) for
 /// an empty or reversed range or a negative deviation, naming `name`.
 std::optional<Spread> parse_spread(std::string_view text, UnitDimension dimension, std::string_view name);
+
+/// One accepted suffix and its size in SI base units (degrees for angles).
+struct UnitFactor {
+  std::string suffix;
+  UnitDimension dimension;
+  double to_si;
+};
+std::vector<UnitFactor> unit_factors();
+
+/// Whether `text` is one of the accepted suffixes ("t", "tonnes", "ft").
+bool is_unit_word(std::string_view text);
+
+/// How the text reports print values: SI, or imperial with SI beside (--units imperial).
+enum class UnitSystem { si, imperial };
+
+/// `si` (in SI base units) with `digits` significant digits in a unit that reads plainly: SI
+/// prefixed so that the number is at least 1 ("22.4 J", "30.6 N", "3.11 t", "4.5 mm", "0.88 m"
+/// down to a centimetre); imperial "12.3 ft (3.75 m)": ft or in, lb or oz, lbf, ft·lbf, psi, ft/s.
+std::string quantity_text(double si, UnitDimension dimension, UnitSystem system = UnitSystem::si, int digits = 4);
 
 }  // namespace trebuchet
