@@ -21,6 +21,7 @@
 #include "trebuchet/scaling_table.hpp"
 #include "trebuchet/app/table_json.hpp"
 #include "trebuchet/app/text_input.hpp"
+#include "trebuchet/app/names.hpp"
 #include "trebuchet/app/units.hpp"
 
 namespace {
@@ -40,6 +41,7 @@ struct Options {
   std::string table_file;
   std::string digits;  // empty: default_csv_digits
   std::string spreadsheet;
+  std::string units = "si";
 };
 
 Material material_from(const Options& options, const Material& reference) {
@@ -53,10 +55,10 @@ Material material_from(const Options& options, const Material& reference) {
   return material;
 }
 
-void print(const OptimalEngine& design, const std::string& format, int digits) {
+void print(const OptimalEngine& design, const std::string& format, int digits, UnitSystem units) {
   if (format == "json") std::cout << pretty_json(design_json(design));
   else if (format == "csv") std::cout << csv_line(design_csv_header()) << design_csv_text(design, digits) << "\n";
-  else std::cout << design_table(design);
+  else std::cout << design_table(design, units);
 }
 
 // The design with its warnings naming the options of this program (error.hpp).
@@ -179,7 +181,7 @@ int run(const Options& options, bool format_given) {
                                             "e.g. --R 150m --m 50kg");
   request.first = givens[0];
   request.second = givens[1];
-  print(in_option_words(design_optimal_engine(table, request)), options.format, digits);
+  print(in_option_words(design_optimal_engine(table, request)), options.format, digits, parse_unit_system(options.units, "--units"));
   return 0;
 }
 
@@ -189,7 +191,7 @@ int main(int argc, char** argv) {
   CLI::App app{
       "trebuchet-calc: the optimal swinging-counterweight trebuchet for a capacity (R, T), for R and a\n"
       "projectile mass, or for any two engine parameters, from the scaling laws of Horsdal's tab:CPNC.\n"
-      "Values take SI suffixes (150m, 3.1t, 40kJ); bare numbers are SI base units.",
+      "Values take unit suffixes (150m, 3.1t, 40kJ, 500ft, 220lb); bare numbers are SI base units.",
       "trebuchet-calc"};
   app.set_version_flag("--version", version_text("trebuchet-calc"));
   Options options;
@@ -209,6 +211,8 @@ int main(int argc, char** argv) {
   app.add_flag("--extrapolate", options.extrapolate, "allow X outside the table's intervals, with a warning");
   app.add_option("--scale", options.scale, "print the same design scaled by this factor (a model)");
   app.add_option("--format", options.format, "table, csv or json")->capture_default_str();
+  app.add_option("--units", options.units, "si or imperial: how the table prints values (imperial: ft, lb, ft·lbf, with SI beside; JSON and CSV stay SI)")
+      ->capture_default_str();
   app.add_option("--batch", options.batch, "CSV file of requests (- for stdin): the header names two givens, other columns pass through (docs/csv.md)");
   app.add_option("--digits", options.digits, "significant digits of CSV numbers (default " + std::to_string(default_csv_digits) + "; 17: exact)");
   app.add_option("--spreadsheet", options.spreadsheet, "write the calculator as a workbook with live formulas (.xlsx), opened on the paper's examples or on the givens");

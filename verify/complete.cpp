@@ -1,5 +1,6 @@
 // complete: the best engine that keeps what a source attests (completion.hpp).
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,8 +28,22 @@ int run_complete(const Options& o) {
   in_calculator_words(completion.calculator_note);
   if (completion.calculator)
     for (std::string& warning : completion.calculator->warnings) in_calculator_words(warning);
-  if (o.format == Format::json) std::cout << pretty_json(completion_json(completion, request.settings));
-  else std::cout << completion_table(completion, request.settings);
+  // "Could it throw that far?" wants the longest range beside the best-balanced engine: the
+  // same attested values, completed for the range.
+  std::optional<Completion> longest;
+  std::string longest_note;
+  if (request.settings.criterion.release != Release::range) {
+    CompletionRequest for_range = request;
+    for_range.settings.criterion.release = Release::range;
+    try {
+      longest = complete_engine(for_range);
+    } catch (const Error& e) {
+      longest_note = e.message(option_word);
+    }
+  }
+  const Completion* alternative = longest ? &*longest : nullptr;
+  if (o.format == Format::json) std::cout << pretty_json(completion_json(completion, request.settings, alternative, longest_note));
+  else std::cout << completion_table(completion, request.settings, o.units, alternative, longest_note);
   return exit_success;
 }
 

@@ -76,7 +76,8 @@ void engine_options(CLI::App* app, Options& o, bool spreads) {
       {"--L4", design_slot(&DesignValues::L4), UnitDimension::length, "sling length"},
       {"--M", design_slot(&DesignValues::M), UnitDimension::mass, "counterweight mass"},
       {"--m", design_slot(&DesignValues::m), UnitDimension::mass, "projectile mass"},
-      {"--mb", design_slot(&DesignValues::mb), UnitDimension::mass, "beam mass"}};
+      {"--mb", design_slot(&DesignValues::mb), UnitDimension::mass, "beam mass (or --D)"},
+      {"--D", design_slot(&DesignValues::D), UnitDimension::length, "beam diameter: the beam's stress; without --mb, mb = rho_d (pi/4) D^2 Lb (eq:BeamMass)"}};
   for (const auto& [name, slot, dimension, help] : keys) value_option(app, o, name, slot, dimension, help, spreads);
   value_option(app, o, "--theta", design_slot(&DesignValues::theta_i_deg), UnitDimension::angle,
                "initial beam angle theta_i [deg] (default 30)", spreads);
@@ -132,6 +133,8 @@ void integrator_options(CLI::App* app, Options& o) {
 }
 
 void format_option(CLI::App* app, Options& o, bool csv_too) {
+  parsed_option(app, "--units", [&o](const std::string& text) { o.units = parse_unit_system(text, "--units"); },
+                "si or imperial: how tables print values (imperial: ft, lb, lbf, ft·lbf, psi, with SI beside; JSON and CSV stay SI)");
   parsed_option(app, "--format", [&o, csv_too](const std::string& text) {
     if (text == "table") o.format = Format::table;
     else if (text == "json") o.format = Format::json;
@@ -150,6 +153,10 @@ void material_options(CLI::App* app, Options& o, const std::string& what, bool b
   };
   optional_positive(app, "--g", &MaterialOverrides::g, UnitDimension::acceleration,
                     "gravitational acceleration (default: the input's, else " + format_number(Material{}.g) + "m/s2)");
+  optional_positive(app, "--youngs-modulus", &MaterialOverrides::youngs_modulus, UnitDimension::pressure,
+                    "Young's modulus of the beam's wood (default: the input's, else 12GPa)");
+  optional_positive(app, "--rupture", &MaterialOverrides::modulus_of_rupture, UnitDimension::pressure,
+                    "modulus of rupture of the beam's wood, the stress it breaks at (default 120MPa, 1 % of 12GPa, section 4)");
   if (beta2)
     optional_positive(app, "--beta2", &MaterialOverrides::beta2, UnitDimension::dimensionless,
                       "allowed beam bending u2/L2 that sizes " + what + " (default: " + what + "'s own, else 1/300)");

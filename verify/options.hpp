@@ -38,7 +38,8 @@ struct Options {
   bool air = false;
   std::optional<double> air_density, drag_coefficient, projectile_density, wind;  ///< [kg/m^3], -, [kg/m^3], [m/s]
   bool drag_of_reynolds = false;         ///< --cd Re
-  MaterialOverrides material;            ///< --beta2, --wood-density, --g
+  MaterialOverrides material;            ///< --beta2, --wood-density, --youngs-modulus, --rupture, --g
+  UnitSystem units = UnitSystem::si;     ///< --units: how tables print values
   Format format = Format::table;
   int digits = default_csv_digits;
   std::string series, plot;              ///< output paths

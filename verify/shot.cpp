@@ -26,6 +26,7 @@ DesignCheck design_check(const Options& o, bool fit) {
   check.series_dt_s = o.series_dt_s;
   check.plot_dir = o.plot;
   check.inputs = {o.input};
+  check.units = o.units;
   return check;
 }
 

@@ -47,7 +47,7 @@ int run_optimize(const Options& o) {
   nlohmann::ordered_json all = nlohmann::ordered_json::array();
   for (const Optimum& optimum : optima) {
     all.push_back(optimum_json(optimum, seconds));
-    if (o.format == Format::table) std::cout << optimum_table(optimum, request.settings) << "\n";
+    if (o.format == Format::table) std::cout << optimum_table(optimum, request.settings, o.units) << "\n";
   }
   if (o.format == Format::json) std::cout << pretty_json(all);
   else std::cout << "wall time " << format_significant(seconds, 3) << " s\n";

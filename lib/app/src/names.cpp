@@ -41,6 +41,12 @@ Release parse_release(std::string_view name, std::string_view option) {
                                     "' is not a release criterion; use Q (eq:Q, eq:Q_n with {{n}}), eps or range");
 }
 
+UnitSystem parse_unit_system(std::string_view name, std::string_view option) {
+  if (name == "si" || name == "SI") return UnitSystem::si;
+  if (name == "imperial") return UnitSystem::imperial;
+  throw Error(ErrorKind::usage, std::string(option) + ": '" + std::string(name) + "' is not a system of units; use si or imperial");
+}
+
 std::string stepper_name(Stepper stepper) { return name_in(stepper_table, stepper); }
 
 std::string stepper_names() {

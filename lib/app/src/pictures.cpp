@@ -18,6 +18,7 @@
 #include "trebuchet/app/output_files.hpp"
 #include "trebuchet/app/report.hpp"
 #include "trebuchet/app/units.hpp"
+#include "trebuchet/angles.hpp"
 
 namespace trebuchet {
 namespace {
@@ -48,7 +49,9 @@ Moments moments_of(const std::vector<TracePoint>& trace) {
 
 // The engine at one moment as gnuplot commands: frame, beam, counterweight arm and weight,
 // sling and projectile, to scale in metres on the site (x toward the target, y above the base).
-std::string engine_commands(const Engine& engine, const Snapshot& s, bool projectile_on, bool labels) {
+// With `angles`, the angles theta, psi and phi are drawn as arcs with their values.
+std::string engine_commands(const Engine& engine, const TracePoint& p, bool projectile_on, bool labels, bool angles) {
+  const Snapshot& s = p.snapshot;
   const double H = pivot_height(engine);
   const SitePoint hinge = site_point(s.hinge, engine), cw = site_point(s.counterweight, engine), tip = site_point(s.tip, engine),
                   pr = site_point(s.projectile, engine);
@@ -57,7 +60,7 @@ std::string engine_commands(const Engine& engine, const Snapshot& s, bool projec
     g << "set arrow from " << num(a.x) << "," << num(a.y) << " to " << num(b.x) << "," << num(b.y) << " nohead " << style << "\n";
   };
   auto label = [&](const std::string& text, SitePoint at, const char* where) {
-    g << "set label \"" << text << "\" at " << num(at.x) << "," << num(at.y) << " " << where << " font \",13\"\n";
+    g << "set label \"" << text << "\" at " << num(at.x) << "," << num(at.y) << " " << where << " font \",12\" front\n";
   };
   const double foot = 0.3 * H;
   segment({-foot, 0}, {0, H}, "lw 3 lc rgb '#8b5a2b'");
@@ -76,10 +79,26 @@ std::string engine_commands(const Engine& engine, const Snapshot& s, bool projec
     label("L_1", mid({0, H}, tip), "offset -2.2,0.3");
     label("L_2", mid({0, H}, hinge), "offset -2.2,0.6");
     label("L_3", mid(hinge, cw), "offset 1,0");
-    if (projectile_on) label("L_4", mid(tip, pr), "offset 2,0.8");
+    if (projectile_on) label("L_4", mid(tip, pr), "offset 0,0.8 center");
     segment({0, 0}, {0, H}, "lw 1 dt 2 lc rgb 'gray40'");
     label("H", {0, H / 2}, "offset 0.5,0");
-    label("θ", {0, H}, "offset -1.3,-2.2");
+  }
+  if (angles) {
+    // Each angle from its reference line (dashed) to its part, as an arc; site angles in degrees
+    // from +x, counterclockwise: the long arm points at 270 - theta, the counterweight's arm at
+    // 270 - psi, the sling at -phi (dynamics.hpp's positions on the site).
+    const double theta = degrees(p.state.theta), psi = degrees(p.state.psi), phi = degrees(p.state.phi);
+    auto arc = [&](SitePoint at, double radius, double from, double to, SitePoint reference_end, const std::string& text, const char* colour) {
+      segment(at, reference_end, (std::string("lw 1 dt 2 lc rgb '") + colour + "' front").c_str());
+      g << "set object circle at " << num(at.x) << "," << num(at.y) << " size " << num(radius) << " arc [" << num(std::min(from, to)) << ":"
+        << num(std::max(from, to)) << "] nowedge fs empty border lc rgb '" << colour << "' lw 2 front\n";
+      const double middle = radians((from + to) / 2);
+      label(text, {at.x + 1.35 * radius * std::cos(middle), at.y + 1.35 * radius * std::sin(middle)}, (std::string("center tc rgb '") + colour + "'").c_str());
+    };
+    const double r = 0.22 * std::min(engine.L1, H);
+    arc({0, H}, r, 270 - theta, 270, {0, H - 1.3 * r}, "θ = " + format_significant(theta, 3) + "°", "#b22222");
+    arc(hinge, 0.6 * engine.L3, 270 - psi, 270, {hinge.x, hinge.y - 0.8 * engine.L3}, "ψ = " + format_significant(psi, 3) + "°", "#1f7a1f");
+    arc(tip, 0.35 * engine.L4, -phi, 0, {tip.x + 0.5 * engine.L4, tip.y}, "φ = " + format_significant(phi, 3) + "°", "#1f5fbf");
   }
   return g.str();
 }
@@ -87,6 +106,45 @@ std::string engine_commands(const Engine& engine, const Snapshot& s, bool projec
 std::string header(const std::string& terminal_and_output) {
   return "# Made by trebuchet-verify shot --plot; run with gnuplot in this folder.\n"
          "set encoding utf8\nset datafile separator ','\n" + terminal_and_output + "\nset grid lc rgb '#dddddd'\nset key noenhanced\n";
+}
+
+// Text inside a gnuplot double-quoted string.
+std::string gnuplot_quoted(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+// Where the model stops holding, in red across a picture's frame: "NOT PHYSICAL" large, and
+// each warning on an opaque box at the top of the frame (or, `at_foot`, at the foot of the
+// picture, for pictures of several small frames), so that a non-physical shot never looks like
+// a normal one.
+std::string warning_labels(const Verification& v, bool at_foot = false) {
+  if (v.warnings.empty()) return "";
+  std::string g = "set style textbox opaque noborder\nset label 89 'NOT PHYSICAL' at graph 0.5, graph 0.5 center tc rgb '#66cc0000' font '," +
+                  std::string(at_foot ? "24" : "40") + "' front\n";
+  for (std::size_t k = 0; k < v.warnings.size(); ++k)
+    g += "set label " + std::to_string(90 + k) + " \"" + gnuplot_quoted(v.warnings[k]) + "\" at " +
+         (at_foot ? "screen 0.01, screen " + num(0.012 + 0.03 * k) : "graph 0.01, graph " + num(0.96 - 0.06 * k)) +
+         " left tc rgb '#cc0000' font ',10' noenhanced boxed front\n";
+  return g;
+}
+
+// The shot that was computed, for every picture's title: air or vacuum, the release, the target.
+std::string scene_of(const ShotSettings& settings) {
+  const ReleaseCriterion& c = settings.criterion;
+  const std::string release = c.release == Release::quality ? (c.n == 1 ? "release where Q peaks" : "release where Q_n peaks (n = " + num(c.n) + ")")
+                              : c.release == Release::efficiency ? "release where ε peaks"
+                                                                 : "release where the range peaks";
+  const std::string air = settings.air ? "in air (Cd " + (settings.air->drag_coefficient ? format_significant(*settings.air->drag_coefficient, 3) : std::string("of Re")) +
+                                             (settings.air->wind != 0 ? ", wind " + format_significant(settings.air->wind, 3) + " m/s" : std::string()) + ")"
+                                       : std::string("in vacuum");
+  return air + ", " + release + ", " +
+         (settings.range_from_release ? std::string("range from the release point back to its height (Denny's)")
+                                      : "target level " + format_significant(settings.target_level, 4) + " m");
 }
 
 }  // namespace
@@ -101,24 +159,34 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   const double time_unit = std::sqrt(engine.L2 / g);  // section 3 [s]
   const Verification v = verify_engine(engine, settings);
   std::vector<TracePoint> trace, unreleased;
-  simulate_shot(d, settings.criterion, settings.integrator, &trace, v.t_release / time_unit / 200, &unreleased);
+  simulate_shot(d, release_criterion(engine, settings), settings.integrator, &trace, v.t_release / time_unit / 200, &unreleased);
   const Moments m = moments_of(trace);
   auto seconds = [&](std::size_t i) { return trace[i].t * time_unit; };
+  const std::string scene = scene_of(settings), warnings = warning_labels(v);
   std::vector<PictureFile> files;
   files.push_back({"shot.csv", trace_csv(trace, engine)});
 
-  // The flight from the release to the target level, in vacuum.
-  const Snapshot& at_release = trace[m.release].snapshot;
-  const SitePoint p0 = site_point(at_release.projectile, engine);
-  const double vx = -at_release.projectile_velocity.x * std::sqrt(g * engine.L2), vy = at_release.projectile_velocity.y * std::sqrt(g * engine.L2);
-  const double drop = p0.y - target_level, flight = (vy + std::sqrt(vy * vy + 2 * g * drop)) / g;
+  // The flight the shot computed, from the release to its end (the target level, or back at the
+  // release height for Denny's range), in vacuum or through the settings' air.
+  const double A = radians(v.A_deg);
+  const Drag drag = settings.air ? drag_of(*settings.air, engine.m) : Drag{};
+  const double flight_drop = settings.range_from_release ? 0 : v.h - target_level;
+  std::vector<Vec2> path;  // in the frame of the shot (target toward -x), height from the release [m]
+  const auto end = fly({-v.x, 0}, {-v.v * std::cos(A), v.v * std::sin(A)}, flight_drop, drag, g, &path, 201);
+  if (!end) throw Error(ErrorKind::numerical, "the flight of the picture did not come down; tighten {{rtol}}");
+  std::vector<SitePoint> flight;
+  for (const Vec2& p : path) flight.push_back({-p.x, v.h + p.y});
   std::ostringstream flight_csv;
   flight_csv << "x_m,y_m\n";
-  for (int k = 0; k <= 100; ++k) {
-    const double t = flight * k / 100;
-    flight_csv << num(p0.x + vx * t) << "," << num(p0.y + vy * t - g * t * t / 2) << "\n";
-  }
+  for (const SitePoint& p : flight) flight_csv << num(p.x) << "," << num(p.y) << "\n";
   files.push_back({"flight.csv", flight_csv.str()});
+  // The stone on its flight `after` seconds past the release (at the end once it has landed).
+  auto stone_at = [&](double after) {
+    const double k = std::clamp(after / end->time, 0.0, 1.0) * (flight.size() - 1);
+    const std::size_t i = std::min(static_cast<std::size_t>(k), flight.size() - 2);
+    const double f = k - i;
+    return SitePoint{flight[i].x + f * (flight[i + 1].x - flight[i].x), flight[i].y + f * (flight[i + 1].y - flight[i].y)};
+  };
 
   // Q(t), eps(t), R(t) over phase II, and the running extremes of eq:F, each over its value at the release.
   std::ostringstream release_csv;
@@ -157,71 +225,84 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   }
   files.push_back({"release.csv", release_csv.str()});
 
-  // 1. The engine at four moments, to scale.
-  std::ostringstream engine_gp;
-  engine_gp << header("set terminal svg size 1100,900 dynamic font 'sans,12'\nset output 'engine.svg'") << "set size ratio -1\nset xrange ["
-            << num(-engine.L1 - engine.L4 - 0.5) << ":" << num(std::max(engine.L1, engine.L2 + engine.L3) + 0.5) << "]\nset yrange [-0.5:"
-            << num(H + engine.L1 + engine.L4 + 0.5) << "]\nset xlabel 'x toward the target [m]'\nset ylabel 'height above the base [m]'\n"
-            << "set multiplot layout 2,2 title \"The engine to scale: L1 = " << format_significant(engine.L1, 3) << " m, L2 = "
-            << format_significant(engine.L2, 3) << " m, L3 = " << format_significant(engine.L3, 3) << " m, L4 = " << format_significant(engine.L4, 3)
-            << " m, H = " << format_significant(H, 3) << " m\\nθ: beam from the downward vertical, ψ: counterweight arm from the vertical, φ: sling from the horizontal\" noenhanced\n";
-  const std::pair<std::size_t, std::string> panels[] = {{m.start, "at rest: theta_i = " + format_significant(engine.theta_i_deg, 3) + " deg"},
+  // 1. The engine at four moments, to scale, in one frame that holds all four with a margin.
+  const std::pair<std::size_t, std::string> panels[] = {{m.start, "at rest: θ_i = " + format_significant(engine.theta_i_deg, 3) + "°"},
                                                         {m.liftoff, "lift-off, t = " + format_significant(seconds(m.liftoff), 3) + " s"},
                                                         {m.peak_reaction, "largest pivot force, t_m = " + format_significant(seconds(m.peak_reaction), 3) + " s"},
                                                         {m.release, "release, t_r = " + format_significant(seconds(m.release), 3) + " s"}};
+  double x_lo = -0.3 * H, x_hi = 0.3 * H, y_lo = 0, y_hi = H;
+  for (const auto& [i, title] : panels) {
+    const Snapshot& s = trace[i].snapshot;
+    for (const Vec2& point : {s.hinge, s.counterweight, s.tip, s.projectile}) {
+      const SitePoint p = site_point(point, engine);
+      x_lo = std::min(x_lo, p.x), x_hi = std::max(x_hi, p.x), y_lo = std::min(y_lo, p.y), y_hi = std::max(y_hi, p.y);
+    }
+  }
+  const double margin = 0.08 * std::max(x_hi - x_lo, y_hi - y_lo);
+  std::ostringstream engine_gp;
+  engine_gp << header("set terminal svg size 1100,950 dynamic font 'sans,12'\nset output 'engine.svg'") << "set size ratio -1\nset xrange ["
+            << num(x_lo - margin) << ":" << num(x_hi + margin) << "]\nset yrange [" << num(y_lo - margin) << ":" << num(y_hi + margin)
+            << "]\nset xlabel 'x toward the target [m]'\nset ylabel 'height above the base [m]'\n"
+            << "set multiplot layout 2,2 title \"The engine to scale: L1 = " << format_significant(engine.L1, 3) << " m, L2 = "
+            << format_significant(engine.L2, 3) << " m, L3 = " << format_significant(engine.L3, 3) << " m, L4 = " << format_significant(engine.L4, 3)
+            << " m, H = " << format_significant(H, 3) << " m; " << gnuplot_quoted(scene)
+            << "\\nθ: beam from the downward vertical, ψ: counterweight arm from the vertical, φ: sling from the horizontal\" noenhanced"
+            << " margins 0.08,0.97,0.1,0.9 spacing 0.1,0.1\n";
   for (std::size_t k = 0; k < 4; ++k) {
     const TracePoint& p = trace[panels[k].first];
     engine_gp << "unset arrow\nunset label\nunset object\nset title '" << panels[k].second << "' noenhanced\n"
-              << engine_commands(engine, p.snapshot, true, k == 0);
-    if (k == 2) {
-      engine_gp << "set label 'θ = " << format_significant(degrees(p.state.theta), 3) << " deg' at graph 0.03,0.92 noenhanced\n"
-                << "set label 'ψ = " << format_significant(degrees(p.state.psi), 3) << " deg' at graph 0.03,0.85 noenhanced\n"
-                << "set label 'φ = " << format_significant(degrees(p.state.phi), 3) << " deg' at graph 0.03,0.78 noenhanced\n";
-    }
+              << engine_commands(engine, p, true, k == 0, k == 2);
+    engine_gp << warning_labels(v, true);
     engine_gp << "plot 0 lc rgb '#6b8e23' lw 2 notitle\n";
   }
   engine_gp << "unset multiplot\n";
   files.push_back({"engine.gp", engine_gp.str()});
 
-  // 2. The paths, then the flight to the target level; on the right the engine's part enlarged.
+  // 2. The paths, then the flight to its end; on the right the engine's part enlarged.
   std::ostringstream paths;
-  const SitePoint impact{p0.x + vx * flight, target_level};
+  const SitePoint impact = flight.back();
+  const double from_x = settings.range_from_release ? v.x : 0;  // R runs from the pivot, or from the release point (Denny's)
+  const double arrow_y = impact.y - 0.02 * v.capacity.R;
+  const std::string flight_title = settings.air ? "flight (air)" : "flight (vacuum)";
   const std::string curves = "'shot.csv' every ::1 using (strcol(1) ne 'III' ? $17 : NaN):18 with lines lw 2 title 'counterweight', \\\n"
                              "     '' every ::1 using (strcol(1) ne 'III' ? $19 : NaN):20 with lines lw 2 title 'beam tip', \\\n"
                              "     '' every ::1 using 21:22 with lines lw 2 title 'projectile, phases I-II', \\\n"
-                             "     'flight.csv' every ::1 using 1:2 with lines lw 2 dt 2 title 'flight (vacuum)', \\\n"
-                             "     " + num(target_level) + " with lines lc rgb 'gray40' title 'target level'\n";
-  paths << header("set terminal svg size 1200,500 dynamic font 'sans,12'\nset output 'paths.svg'")
-        << "set xlabel 'x toward the target [m]'\nset ylabel 'height above the base [m]'\nset key top left\n"
-        << "set multiplot\nset size 0.62,1\nset origin 0,0\nset title 'The whole shot' noenhanced\n"
-        << "set arrow 1 from 0," << num(target_level - 0.02 * v.capacity.R) << " to " << num(impact.x) << "," << num(target_level - 0.02 * v.capacity.R)
-        << " heads lc rgb 'black'\nset label 1 'R = " << format_significant(v.capacity.R, 4) << " m' at " << num(impact.x / 2) << ","
-        << num(target_level - 0.02 * v.capacity.R) << " offset 0,-1 center\n"
-        << "set yrange [" << num(std::min(0.0, target_level) - 0.06 * v.capacity.R) << ":*]\nplot " << curves
-        << "unset arrow 1\nunset label 1\nset size 0.38,1\nset origin 0.62,0\nset size ratio -1\nset key off\n"
+                             "     'flight.csv' every ::1 using 1:2 with lines lw 2 dt 2 title '" + flight_title + "', \\\n"
+                             "     " + num(impact.y) + " with lines lc rgb 'gray40' title '" +
+                             (settings.range_from_release ? "release height" : "target level") + "'\n";
+  paths << header("set terminal svg size 1200,540 dynamic font 'sans,12'\nset output 'paths.svg'")
+        << "set xlabel 'x toward the target [m]'\nset ylabel 'height above the base [m]'\nset key below\n" << warnings
+        << "set multiplot title \"" << gnuplot_quoted(scene) << "\" noenhanced\nset size 0.62,0.95\nset origin 0,0\nset title 'The whole shot' noenhanced\n"
+        << "set arrow 1 from " << num(from_x) << "," << num(arrow_y) << " to " << num(impact.x) << "," << num(arrow_y) << " heads lc rgb 'black'\n"
+        << "set label 1 'R = " << format_significant(v.capacity.R, 4) << " m" << (settings.range_from_release ? " (from the release point)" : "")
+        << "' at " << num((from_x + impact.x) / 2) << "," << num(arrow_y) << " offset 0,-1 center\n"
+        << "set yrange [" << num(std::min(0.0, impact.y) - 0.06 * v.capacity.R) << ":*]\nplot " << curves
+        << "unset arrow 1\nunset label 1\nset size 0.38,0.95\nset origin 0.62,0\nset size ratio -1\nset key off\n"
         << "set title 'Phases I and II, enlarged' noenhanced\nset xrange [" << num(-engine.L1 - engine.L4 - 0.5) << ":"
-        << num(std::max(engine.L1 + engine.L4, engine.L2 + engine.L3) + 0.5) << "]\nset yrange [" << num(std::min(0.0, target_level) - 0.5) << ":"
+        << num(std::max(engine.L1 + engine.L4, engine.L2 + engine.L3) + 0.5) << "]\nset yrange [-0.5:"
         << num(H + engine.L1 + engine.L4 + 0.5) << "]\nplot " << curves << "unset multiplot\n";
   files.push_back({"paths.gp", paths.str()});
 
-  // 3. The forces against time, in kN, with multiples of M g on the right.
+  // 3. The forces against time, in kN, with multiples of M g on the right; the marks' names
+  // stand above the frame, in two rows, clear of the curves and of each other.
   auto marks = [&](std::ostringstream& gp) {
     const std::pair<std::size_t, const char*> at[] = {{m.liftoff, "lift-off"}, {m.first_extreme, "t_1"}, {m.peak_reaction, "t_m"},
                                                       {m.second_extreme, "t_2"}, {m.release, "release"}};
     int row = 0;
-    for (const auto& [i, name] : at) {
+    for (const auto& [i, name] : at)
       gp << "set arrow from " << num(seconds(i)) << ", graph 0 to " << num(seconds(i)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
-         << "set label '" << name << "' at " << num(seconds(i)) << ", graph " << (0.96 - 0.05 * (row++ % 3)) << " right offset -0.3,0 noenhanced\n";
-    }
+         << "set label '" << name << "' at " << num(seconds(i)) << ", graph " << (row++ % 2 ? "1.08" : "1.03") << " center tc rgb 'gray30' noenhanced\n";
   };
   std::ostringstream forces;
-  forces << header("set terminal svg size 1100,500 dynamic font 'sans,12'\nset output 'forces.svg'")
-         << "set xlabel 'time [s]'\nset ylabel 'force [kN]'\nset y2label 'force as a multiple of M·g (M = " << format_significant(engine.M / 1000, 3)
-         << " t, the counterweight)' noenhanced\nset y2tics\nset link y2 via y/" << num(Mg_kN) << " inverse y*" << num(Mg_kN)
-         << "\nset format y2 '%.1f'\nset key at graph 0.02,0.8 left top box opaque\nset xrange [0:" << num(seconds(m.release) * 1.02) << "]\n"
-         << "set title 'Forces up to the release: t_1 and t_2 the extremes of F_Rh, t_m the largest pivot force' noenhanced\n";
+  forces << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'forces.svg'")
+         << "set xlabel 'time [s]'\nset ylabel 'force [kN]'\nset y2label \"force as a multiple of M·g (M = "
+         << gnuplot_quoted(quantity_text(engine.M, UnitDimension::mass, UnitSystem::si, 3)) << ", the counterweight)\" noenhanced\nset y2tics\nset link y2 via y/" << num(Mg_kN)
+         << " inverse y*" << num(Mg_kN) << "\nset format y2 '%.1f'\nset key below\nset tmargin 6\nset xrange [0:" << num(seconds(m.release) * 1.02) << "]\n"
+         << "set title \"Forces up to the release: t_1 and t_2 the extremes of F_Rh, t_m the largest pivot force\\n" << gnuplot_quoted(scene) << "\" noenhanced\n"
+         << warnings;
   marks(forces);
   forces << "plot 'shot.csv' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($9*" << num(mg_kN) << ") with lines lw 2 title 'F_S⊥ (sling, across the beam)', \\\n"
+         << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($27*" << num(mg_kN) << ") with lines lw 2 dt 4 title 'sling tension', \\\n"
          << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($10*" << num(Mg_kN) << ") with lines lw 2 title '|F_R| (pivot)', \\\n"
          << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($11*" << num(Mg_kN) << ") with lines lw 2 title 'F_Rh (pivot, horizontal)', \\\n"
          << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($13*" << num(Mg_kN) << ") with lines lw 2 title '|F_H| (hinge)', \\\n"
@@ -231,18 +312,19 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   // 4. Where the energy goes: each body's energy over its value at rest, against Delta U; the
   // projectile keeps what it took at the release.
   std::ostringstream energy;
+  const Snapshot& at_release = trace[m.release].snapshot;
   const double drop_kJ = d.energy_drop() * energy_kJ;
   const Snapshot& rest = trace.front().snapshot;
   const double cw0 = rest.energies.counterweight * energy_kJ, beam0 = rest.energies.beam * energy_kJ, pr0 = rest.energies.projectile_potential * energy_kJ;
   const double taken_kJ = (at_release.energies.projectile_kinetic + at_release.energies.projectile_potential) * energy_kJ - pr0;
-  energy << header("set terminal svg size 1100,500 dynamic font 'sans,12'\nset output 'energy.svg'")
-         << "set xlabel 'time [s]'\nset ylabel 'energy gained since rest [kJ]'\nset key at graph 0.98,0.62 right top box opaque\n"
+  energy << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'energy.svg'")
+         << "set xlabel 'time [s]'\nset ylabel 'energy gained since rest [kJ]'\nset key below\n" << warnings
          << "set title \"Where the energy goes\\nat the release the projectile holds ε = " << format_significant(100 * v.eps, 3)
-         << " % of ΔU; the gap, 1 − ε, stays in beam and counterweight\" noenhanced\n"
+         << " % of ΔU; the gap, 1 − ε, stays in beam and counterweight\\n" << gnuplot_quoted(scene) << "\" noenhanced\n"
          << "set arrow from " << num(seconds(m.release)) << ", graph 0 to " << num(seconds(m.release)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
          << "set arrow from " << num(seconds(m.release)) << "," << num(taken_kJ) << " to " << num(seconds(m.release)) << "," << num(drop_kJ)
          << " heads lw 2 lc rgb 'red' front\nset label '1 − ε' at " << num(seconds(m.release)) << "," << num((taken_kJ + drop_kJ) / 2)
-         << " offset 0.5,0 tc rgb 'red' noenhanced\nset label 'release' at " << num(seconds(m.release)) << ", graph 0.5 offset 0.3,0\n"
+         << " offset 0.5,0 tc rgb 'red' noenhanced\nset label 'release' at " << num(seconds(m.release)) << ", graph 0.5 rotate by 90 center offset -0.8,0\n"
          << "plot 'shot.csv' every ::1 using 2:($23/1000-(" << num(cw0) << ")) with lines lw 2 title 'counterweight', \\\n"
          << "     '' every ::1 using 2:($24/1000-(" << num(beam0) << ")) with lines lw 2 title 'beam', \\\n"
          << "     '' every ::1 using 2:(strcol(1) ne 'III' ? ($25+$26)/1000-(" << num(pr0) << ") : " << num(taken_kJ)
@@ -254,68 +336,123 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   files.push_back({"energy.gp", energy.str()});
 
   // 5. Why the release is where it is.
+  const std::string objective = settings.criterion.release == Release::quality ? "Q" : settings.criterion.release == Release::efficiency ? "ε" : "R";
   std::ostringstream release;
-  release << header("set terminal svg size 1100,500 dynamic font 'sans,12'\nset output 'release.svg'")
-          << "set xlabel 'time [s]'\nset ylabel 'value over its value at the release'\nset key outside right top\nset yrange [0:1.3]\n"
-          << "set label 'release' at " << num(seconds(m.release)) << ", graph 0.95 offset 0.3,0\n"
-          << "set title \"Phase II, and on as if the projectile were kept: Q peaks at the release\\nthe running extremes of eq:F switch on as they grow\" noenhanced\n"
+  release << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'release.svg'")
+          << "set xlabel 'time [s]'\nset ylabel 'value over its value at the release'\nset key below\nset yrange [0:1.3]\n"
+          << warnings << "set label 'release' at " << num(seconds(m.release)) << ", graph 0.95 offset 0.3,0\n"
+          << "set title \"Phase II, and on as if the projectile were kept: " << objective
+          << " peaks at the release; the running extremes of eq:F switch on as they grow\\n" << gnuplot_quoted(scene) << "; Q, ε and R here at level 0 in vacuum\" noenhanced\n"
           << "set arrow from " << num(seconds(m.release)) << ", graph 0 to " << num(seconds(m.release)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
           << "plot 'release.csv' every ::1 using 1:2 with lines lw 3 lc rgb 'black' title 'Q', \\\n"
-          << "     '' every ::1 using 1:3 with lines lw 2 title 'eps', '' every ::1 using 1:4 with lines lw 2 title 'R', \\\n"
+          << "     '' every ::1 using 1:3 with lines lw 2 title 'ε', '' every ::1 using 1:4 with lines lw 2 title 'R', \\\n"
           << "     '' every ::1 using 1:5 with lines lw 2 dt 2 title 'max F_S⊥ so far', '' every ::1 using 1:6 with lines lw 2 dt 2 title 'max |F_R| so far', \\\n"
           << "     '' every ::1 using 1:7 with lines lw 2 dt 2 title 'max F_Rh so far', '' every ::1 using 1:8 with lines lw 2 dt 2 title 'max −F_Rh so far'\n";
   files.push_back({"release.gp", release.str()});
 
-  // 6. The animation: one frame every second sample, played at 4 % of real speed or slower.
+  // 6. The animation: one frame every second sample of the engine, played at 4 % of real speed
+  // or slower, the stone flying on after the release; then the whole flight to its end, zoomed
+  // out, at about real speed.
   const std::size_t stride = 2;
   const double frame_s = stride * (trace.size() > 1 ? seconds(1) - seconds(0) : 0.01);
   const int delay = 8;  // [1/100 s] per frame
   const double slowed = delay / 100.0 / frame_s;
+  const double t_release = seconds(m.release);
   std::ostringstream anim;
   anim << "# Made by trebuchet-verify shot --plot; run with gnuplot in this folder.\n"
-       << "set encoding utf8\nset terminal gif animate delay " << delay << " size 800,600 font 'sans,11'\nset output 'shot.gif'\nset size ratio -1\n"
+       << "set encoding utf8\nset datafile separator ','\nset terminal gif animate delay " << delay << " size 800,600 font 'sans,11'\nset output 'shot.gif'\nset size ratio -1\n"
        << "set xrange [" << num(-engine.L1 - engine.L4 - 1) << ":" << num(std::max(engine.L1 + engine.L4, engine.L2 + engine.L3) + 1) << "]\n"
-       << "set yrange [-0.5:" << num(H + engine.L1 + engine.L4 + 0.5) << "]\nset xlabel 'x toward the target [m]'\nset ylabel 'height [m]'\n";
+       << "set yrange [" << num(std::min(-0.5, H - engine.L2 - engine.L3 - 0.5)) << ":" << num(H + engine.L1 + engine.L4 + 0.5)
+       << "]\nset xlabel 'x toward the target [m]'\nset ylabel 'height [m]'\nset bmargin 5\n";
+  auto stone = [&](SitePoint at, double size) {
+    anim << "set object circle at " << num(at.x) << "," << num(at.y) << " size " << num(size) << " fc rgb '#d62728' fs solid front\n";
+  };
   for (std::size_t i = 0; i < trace.size(); i += stride) {
     const bool on = trace[i].phase != Phase::released;
-    anim << "unset arrow\nunset label\nunset object\n" << engine_commands(engine, trace[i].snapshot, on, false)
-         << "set title 't = " << format_significant(seconds(i), 3) << " s  (" << (on ? trace[i].phase == Phase::trough ? "phase I" : "phase II" : "released")
+    anim << "unset arrow\nunset label\nunset object\n" << engine_commands(engine, trace[i], on, false, false) << warning_labels(v, true);
+    if (!on) stone(stone_at(seconds(i) - t_release), 0.03 * H);
+    anim << "set title 't = " << format_significant(seconds(i), 3) << " s  (" << (on ? trace[i].phase == Phase::trough ? "phase I" : "phase II" : "released")
          << ", slowed " << format_significant(slowed, 2) << " times)' noenhanced\nplot 0 lc rgb '#6b8e23' lw 2 notitle\n";
+  }
+  const double flight_lo = std::min(-engine.L1 - engine.L4, impact.x) - 2, flight_hi = std::max(impact.x, engine.L1) + 2;
+  double top = H + engine.L1;
+  for (const SitePoint& p : flight) top = std::max(top, p.y);
+  anim << "unset arrow\nunset label\nunset object\nset xrange [" << num(flight_lo) << ":" << num(flight_hi) << "]\nset yrange ["
+       << num(std::min(0.0, impact.y) - 2) << ":" << num(top + 2) << "]\nset size noratio\n";
+  const int flight_frames = 60;
+  const double flight_step = end->time / flight_frames;
+  for (int k = 0; k <= flight_frames; ++k) {
+    const double after = k * flight_step;
+    anim << "unset object\nunset label\n" << warning_labels(v, true);
+    stone(stone_at(after), 0.008 * (flight_hi - flight_lo));
+    anim << "set title 'the flight: " << format_significant(after, 3) << " s after the release (" << (settings.air ? "air" : "vacuum") << ", "
+         << format_significant(delay / 100.0 / flight_step, 2) << " × real speed)' noenhanced\n"
+         << "plot 'flight.csv' every ::1 using 1:2 with lines lc rgb '#bbbbbb' dt 2 notitle, 0 lc rgb '#6b8e23' lw 2 notitle, " << num(impact.y)
+         << " lc rgb 'gray40' notitle\n";
   }
   files.push_back({"animation.gp", anim.str()});
 
-  // 7. One page that gathers them.
+  // 7. One page that gathers them, with the words of docs/pictures.md.
   std::ostringstream html;
+  auto escaped = [](const std::string& text) {
+    std::string out;
+    for (char c : text) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
+    return out;
+  };
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>trebuchet shot</title>\n"
-       << "<style>body{font-family:sans-serif;max-width:1150px;margin:auto;padding:1em}img{max-width:100%}"
-          "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 8px;text-align:right}</style></head><body>\n"
+       << "<style>body{font-family:sans-serif;max-width:1150px;margin:auto;padding:1em;line-height:1.4}img{max-width:100%}"
+          "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 8px;text-align:right}"
+          ".warning{background:#fde8e8;border:2px solid #cc0000;padding:0.5em 1em;color:#800}figcaption{color:#333}</style></head><body>\n"
        << "<h1>One shot of a swinging-counterweight trebuchet</h1>\n"
-       << "<p>Made by <code>trebuchet-verify shot --plot</code>: the model of Horsdal, appendix A, in vacuum, released where "
-          "the chosen criterion peaks (<code>--quality</code>: the quality Q unless asked otherwise).</p>\n<table><tr><th>engine</th><th></th><th>shot</th><th></th></tr>\n";
+       << "<p>Made by <code>trebuchet-verify shot --plot</code>: the model of Horsdal, appendix A. This shot: <b>" << escaped(describe_assumptions(engine, settings))
+       << "</b>.</p>\n";
+  if (!v.warnings.empty()) {
+    html << "<div class=\"warning\"><b>Not physical.</b> The model stops holding before the release, so the figures below are not those of a real engine:<ul>\n";
+    for (const std::string& w : v.warnings) html << "<li>" << escaped(w) << "</li>\n";
+    html << "</ul></div>\n";
+  }
+  html << "<table><tr><th>engine</th><th></th><th>shot</th><th></th></tr>\n";
   auto four = [](double x) { return format_significant(x, 4); };
   const std::pair<std::string, std::string> left[] = {{"L1 (long arm)", four(engine.L1) + " m"}, {"L2 (short arm)", four(engine.L2) + " m"},
                                                       {"L3 (counterweight arm)", four(engine.L3) + " m"}, {"L4 (sling)", four(engine.L4) + " m"},
-                                                      {"H (pivot height)", four(H) + " m"}, {"M (counterweight)", four(engine.M) + " kg"},
-                                                      {"m (projectile)", four(engine.m) + " kg"}, {"mb (beam)", four(engine.mb) + " kg"}};
-  const std::pair<std::string, std::string> right[] = {{"range R", format_significant(v.capacity.R, 4) + " m"},
-                                                       {"energy at target T", format_significant(v.capacity.T / 1000, 4) + " kJ"},
-                                                       {"efficiency eps", format_significant(100 * v.eps, 3) + " %"},
+                                                      {"H (pivot height)", four(H) + " m"}, {"M (counterweight)", quantity_text(engine.M, UnitDimension::mass)},
+                                                      {"m (projectile)", quantity_text(engine.m, UnitDimension::mass)},
+                                                      {"mb (beam)", quantity_text(engine.mb, UnitDimension::mass)},
+                                                      {"θi (beam at rest)", four(engine.theta_i_deg) + "°"}};
+  const std::pair<std::string, std::string> right[] = {{std::string("range R") + (settings.air ? " (air)" : " (vacuum)"), four(v.capacity.R) + " m"},
+                                                       {"energy at the end T", quantity_text(v.capacity.T, UnitDimension::energy)},
+                                                       {"efficiency ε", format_significant(100 * v.eps, 3) + " %"},
                                                        {"quality Q", format_significant(100 * v.Q, 3) + " %"},
                                                        {"release speed v", format_significant(v.v, 3) + " m/s"},
                                                        {"release time", format_significant(v.t_release, 3) + " s"},
-                                                       {"largest pivot force F_R", format_significant(v.FR_Mg * Mg_kN, 3) + " kN"},
-                                                       {"target level", num(target_level) + " m"}};
-  for (int k = 0; k < 8; ++k)
-    html << "<tr><td>" << left[k].first << "</td><td>" << left[k].second << "</td><td>" << right[k].first << "</td><td>" << right[k].second << "</td></tr>\n";
-  html << "</table>\n";
-  const std::pair<const char*, const char*> figures[] = {
-      {"engine.svg", "The engine drawn to scale at rest, at lift-off, at the largest pivot force and at the release."},
-      {"shot.gif", "The shot, slowed down."},
-      {"paths.svg", "The paths of the counterweight, the beam's tip and the projectile, then the flight to the target."},
-      {"forces.svg", "The forces against time, in kN and as multiples of M·g."},
-      {"energy.svg", "Where the energy goes."},
-      {"release.svg", "Why the release is where it is."}};
-  for (const auto& [file, caption] : figures) html << "<figure><img src=\"" << file << "\" alt=\"" << caption << "\"><figcaption>" << caption << "</figcaption></figure>\n";
+                                                       {"largest pivot force", quantity_text(v.loads[pivot_load].value, UnitDimension::force)},
+                                                       {"largest sling tension", quantity_text(v.loads[sling_tension_load].value, UnitDimension::force)},
+                                                       {settings.range_from_release ? "range measured" : "target level",
+                                                        settings.range_from_release ? "from the release point" : num(target_level) + " m"}};
+  for (int k = 0; k < 9; ++k)
+    html << "<tr><td>" << escaped(left[k].first) << "</td><td>" << escaped(left[k].second) << "</td><td>" << escaped(right[k].first) << "</td><td>"
+         << escaped(right[k].second) << "</td></tr>\n";
+  html << "</table>\n<p>Everything is on the site: x from the pivot toward the target, height above the engine's base.</p>\n";
+  const std::pair<const char*, std::string> figures[] = {
+      {"engine.svg", "The engine drawn to scale at rest, at lift-off, at t_m (the largest pivot force) and at the release. L1 is the long "
+                     "beam section, L2 the short one, L3 the counterweight's arm (L2 + L3 = F H), L4 the sling, H = L1 cos θi the pivot's "
+                     "height. θ is the beam's long arm from the downward vertical, ψ the counterweight's arm from the vertical, φ the "
+                     "sling from the horizontal; the third panel draws them."},
+      {"shot.gif", "The shot, slowed down, then the stone's whole flight " + std::string(settings.air ? "through air" : "in vacuum") + "."},
+      {"paths.svg", "The counterweight, the beam's tip and the projectile through phases I and II, then the projectile's flight " +
+                        std::string(settings.air ? "through air" : "in vacuum") + (settings.range_from_release ? " back to the release height. R runs from the release point." : " to the target level. R runs from the pivot to the impact.")},
+      {"forces.svg", "The forces in kN: F_S⊥, the sling's pull across the beam; the sling's tension; |F_R|, the pivot's force on the beam, and "
+                     "F_Rh, its horizontal part; |F_H|, the hinge's force; N, the trough's push on the projectile in phase I. The right axis "
+                     "gives multiples of M·g, the counterweight's weight. The marks are at lift-off, t_1 and t_2 (the extremes of F_Rh, eq:F), "
+                     "t_m and the release."},
+      {"energy.svg", "Each body's energy as gained since rest. The counterweight falls and gives up its energy; the beam takes a little; "
+                     "the projectile takes the most. At the release the projectile holds ε of ΔU (eq:DU); the red gap, 1 − ε, stays in "
+                     "the beam and the counterweight. The total stays constant: the model has no friction."},
+      {"release.svg", "Over phase II, and on past the release as if the projectile were kept, Q, ε and R and the running extremes of eq:F, "
+                      "each over its value at the release. The release is where the chosen criterion peaks (section 5). An extreme's "
+                      "dashed line is flat while its force stays below the extreme so far, and rises once the force passes it."}};
+  for (const auto& [file, caption] : figures)
+    html << "<figure><img src=\"" << file << "\" alt=\"" << file << "\"><figcaption>" << escaped(caption) << "</figcaption></figure>\n";
   html << "<p>The data: <a href=\"shot.csv\">shot.csv</a> (every sample), <a href=\"release.csv\">release.csv</a>, "
           "<a href=\"flight.csv\">flight.csv</a>.</p>\n</body></html>\n";
   files.push_back({"index.html", html.str()});

@@ -169,6 +169,7 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   if (v.D && !v.mb) {  // eq:BeamMass: a round beam of the material's wood
     if (!(e.D > 0)) throw Error(ErrorKind::bad_number, engine_key_name(where, "D") + " = 0 gives no beam; give the beam's diameter, or its mass " + engine_key_name(where, "mb"));
     e.mb = beam_mass(e.D, beam_length(e), material);
+    in.mb_from_D = true;
   }
   try {
     check_engine(e);
@@ -345,7 +346,7 @@ namespace {
 // one that is not finite.
 std::vector<Field> verification_fields(const Verification& v) {
   std::vector<Field> fields = {
-      {"R", v.capacity.R, "m"}, {"T", v.capacity.T, "J"}, {"R_vacuum", v.R_vacuum, "m"}, {"eps", v.eps}, {"Q", v.Q}, {"force_factor", v.force_factor},
+      {"R", v.capacity.R, "m"}, {"T", v.capacity.T, "J"}, {"R_vacuum", v.R_vacuum, "m"}, {"T_vacuum", v.T_vacuum, "J"}, {"eps", v.eps}, {"Q", v.Q}, {"force_factor", v.force_factor},
       {"v", v.v, "m_s"}, {"h", v.h, "m"}, {"x", v.x, "m"}, {"A_deg", v.A_deg}, {"t_release", v.t_release, "s"},
       {"t_liftoff", v.t_liftoff, "s"}, {"FS_perp_mg", v.FS_perp_mg}, {"FR_Mg", v.FR_Mg}, {"dFRh_Mg", v.dFRh_Mg},
       {"FS_perp", v.FS_perp, "N"}, {"FR", v.FR, "N"}, {"dFRh", v.dFRh, "N"}};
@@ -440,7 +441,7 @@ nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s) 
   return out;
 }
 
-nlohmann::ordered_json completion_json(const Completion& c, const ShotSettings& settings) {
+nlohmann::ordered_json completion_json(const Completion& c, const ShotSettings& settings, const Completion* longest, const std::string& longest_note) {
   nlohmann::ordered_json out;
   write_engine(out, c.engine);
   out["attested"] = c.attested;
@@ -452,6 +453,15 @@ nlohmann::ordered_json completion_json(const Completion& c, const ShotSettings& 
   out["assumptions"] = assumptions_json(c.engine, settings);
   if (c.calculator) out["calculator"] = design_json(*c.calculator);
   else out["calculator_note"] = c.calculator_note;
+  if (longest) {
+    nlohmann::ordered_json alternative;
+    write_engine(alternative, longest->engine);
+    alternative["chosen"] = longest->chosen;
+    alternative.update(verification_json(longest->verification));
+    out["longest_range"] = alternative;
+  } else if (!longest_note.empty()) {
+    out["longest_range_note"] = longest_note;
+  }
   return out;
 }
 

@@ -324,7 +324,9 @@ PrintUnit print_unit(double si, UnitDimension dimension, UnitSystem system) {
 std::string quantity_text(double si, UnitDimension dimension, UnitSystem system, int digits) {
   auto in = [&](UnitSystem s) {
     const PrintUnit unit = print_unit(si, dimension, s);
-    std::string text = format_significant(si / unit.to_si, digits);
+    // Rounded to `digits`, written without an exponent below 10^7: "17260 lbf", not "1.726e+04 lbf".
+    const double value = std::stod(format_significant(si / unit.to_si, digits));
+    std::string text = format_significant(value, std::abs(value) >= 1 && std::abs(value) < 1e7 ? 7 : digits);
     if (*unit.suffix) text += std::string(" ") + unit.suffix;
     return text;
   };

@@ -51,6 +51,8 @@ DesignInputs read_design_inputs(const std::string& text, const std::string& path
 Material MaterialOverrides::over(Material base) const {
   base.beta2 = beta2.value_or(base.beta2);
   base.wood_density = wood_density.value_or(base.wood_density);
+  base.youngs_modulus = youngs_modulus.value_or(base.youngs_modulus);
+  base.modulus_of_rupture = modulus_of_rupture.value_or(base.modulus_of_rupture);
   base.g = g.value_or(base.g);
   return base;
 }
@@ -58,6 +60,7 @@ Material MaterialOverrides::over(Material base) const {
 DesignReport check_design(const EngineRecord& record, const DesignCheck& check) {
   Engine engine = record.engine;
   engine.material = check.material.over(engine.material);
+  if (record.mb_from_D) engine.mb = beam_mass(engine.D, beam_length(engine), engine.material);  // in the wood of the run
   DesignReport out;
   nlohmann::ordered_json simulated;
   std::string fitted_table;
@@ -66,7 +69,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
     const CapacityFit result = fit_capacity(scaled_design(engine), *record.capacity, engine.material, check.settings);
     engine = result.engine;
     simulated["simulations"] = result.simulations;
-    fitted_table = "fitted engine (" + std::to_string(result.simulations) + " shots):\n" + engine_table(engine);
+    fitted_table = "fitted engine (" + std::to_string(result.simulations) + " shots):\n" + engine_table(engine, check.units);
   }
   std::vector<TracePoint> trace;
   const Verification v = verify_engine(engine, check.settings, check.series_path.empty() ? nullptr : &trace, check.series_dt_s);
@@ -74,7 +77,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   std::optional<CapacityCheck> capacity;
   if (record.capacity) capacity = check_capacity(v, *record.capacity, check.tolerance);
   out.json = verification_json(v, capacity);
-  out.table = fitted_table + verification_table(engine, check.settings, v, capacity);
+  out.table = fitted_table + verification_table(engine, check.settings, v, capacity, check.units);
   if (check.csv) out.csv = verification_csv_row(engine, check.settings, v, capacity, check.csv_digits);
   // The engine simulated (for fit, the fitted one, with its shots) and what the shot assumed.
   nlohmann::ordered_json engine_json;

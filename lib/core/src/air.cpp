@@ -77,7 +77,7 @@ Drag scaled(const Drag& drag, double L2, double g) {
   return out;
 }
 
-std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Drag& drag, double g) {
+std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Drag& drag, double g, std::vector<Vec2>* path, int path_points) {
   use_gsl_return_codes();
   FlightParameters parameters{drag, g};
   gsl_odeiv2_system system{flight_rhs, nullptr, 4, &parameters};
@@ -110,6 +110,11 @@ std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Dr
           },
           t_a, t_b, 0, 1e-15);
       integrate(t_a, a, t_end, end);
+      for (int k = 0; path && k < path_points; ++k) {
+        double at[4];
+        integrate(0, y0, t_end * k / (path_points - 1), at);
+        path->push_back({at[0], at[1]});
+      }
       return FlightEnd{-end[0], t_end, {end[2], end[3]}};
     }
     for (int k = 0; k < 4; ++k) a[k] = b[k];

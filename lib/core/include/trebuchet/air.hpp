@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "trebuchet/dynamics.hpp"
 
@@ -56,8 +57,10 @@ struct FlightEnd {
 /// The flight from `position` with `velocity` until it comes down through the level `drop`
 /// below the start (drop 0: back at the release height, Denny's range), under gravity g and
 /// the drag, in the units of both. nullopt when it never comes down there (it climbs past the
-/// time limit) or the integrator fails.
-std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Drag& drag, double g);
+/// time limit) or the integrator fails. With `path`, the flight's positions at `path_points`
+/// equal steps of time from the start to the end are appended to it (for pictures).
+std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Drag& drag, double g, std::vector<Vec2>* path = nullptr,
+                             int path_points = 101);
 
 /// "air (Cd 0.47, air 1.2 kg/m3, a sphere of 2500 kg/m3, d = 0.43 m, no wind)" for outputs; the
 /// diameter only for a mass > 0.

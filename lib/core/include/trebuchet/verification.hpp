@@ -36,6 +36,7 @@ void check_shot_settings(const ShotSettings& settings);
 struct Verification {
   Capacity capacity;       ///< range and energy (eq:T) at the end of the flight, under the settings' air and range definition
   double R_vacuum = 0;     ///< the paper's range: in vacuum, from the pivot to the target level [m]
+  double T_vacuum = 0;     ///< the paper's energy at the target level, in vacuum (eq:T) [J]
   double eps = 0;          ///< efficiency T/Delta U at level 0, eq:Aux
   double Q = 0;            ///< quality at the release, eq:Q or eq:Q_n (with the n of the settings)
   double force_factor = 0; ///< F of eq:F, scaled
@@ -73,6 +74,10 @@ struct Verification {
 Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level,
                              const std::optional<Air>& air = std::nullopt, bool range_from_release = false);
 
+/// The release criterion of a shot of `engine` under `settings`: under Release::range it
+/// maximises the range as the settings define it, in their air and from where they measure.
+ReleaseCriterion release_criterion(const Engine& engine, const ShotSettings& settings);
+
 /// The most points a series sampled every trace_dt_s may hold (about 100 MB of CSV).
 inline constexpr double max_series_points = 1e6;
 
@@ -83,7 +88,8 @@ inline constexpr double max_series_points = 1e6;
 Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace = nullptr,
                            double trace_dt_s = 0);
 
-/// A predicted capacity (from the calculator) against the simulated one.
+/// A predicted capacity (from the calculator, in vacuum as the paper's) against the shot's own
+/// in vacuum (R_vacuum, T_vacuum), whatever air the shot flew through.
 struct CapacityCheck {
   Capacity predicted;           ///< [m], [J]
   double deviation_R = 0;       ///< simulated/predicted - 1

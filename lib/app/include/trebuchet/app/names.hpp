@@ -8,6 +8,7 @@
 
 #include "trebuchet/integrator.hpp"
 #include "trebuchet/quality.hpp"
+#include "trebuchet/app/units.hpp"
 
 namespace trebuchet {
 
@@ -16,6 +17,9 @@ std::string release_name(Release release);
 
 /// The release criterion of a name; Error(usage) names `option`, the text and the choices.
 Release parse_release(std::string_view name, std::string_view option);
+
+/// "si" or "imperial"; Error(usage) names `option` and the choices.
+UnitSystem parse_unit_system(std::string_view name, std::string_view option);
 
 /// "rk8pd", ...: GSL's own names of its odeiv2 steppers.
 std::string stepper_name(Stepper stepper);

@@ -9,37 +9,48 @@
 
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/units.hpp"
 #include "trebuchet/shot.hpp"
 #include "trebuchet/verification.hpp"
 
 namespace trebuchet {
 
 /// The calculator's design. Throws Error(numerical) if a number is not finite.
-std::string design_table(const OptimalEngine& design);
+std::string design_table(const OptimalEngine& design, UnitSystem units = UnitSystem::si);
 
 /// A shot's figures, and the check of a predicted capacity when there is one. It begins with the
 /// engine simulated and every assumption (vacuum, g, the release rule, the target level); forces
 /// are in kN with their multiples of m·g or M·g, and the force factor of eq:F is named so, apart
 /// from the arm fraction F = (L2 + L3)/H.
+/// Then the builder's loads with their times and the beam's strength; the capacity check
+/// compares the prediction with the shot in vacuum. Values in `units` (imperial: SI beside).
 std::string verification_table(const Engine& engine, const ShotSettings& settings, const Verification& v,
-                               const std::optional<CapacityCheck>& check = std::nullopt);
+                               const std::optional<CapacityCheck>& check = std::nullopt, UnitSystem units = UnitSystem::si);
+
+/// What a shot assumed, in one line: the air or vacuum, g, the release rule and the target level
+/// (or Denny's range).
+std::string describe_assumptions(const Engine& engine, const ShotSettings& settings);
 
 /// Two indented lines with units: Lb, H and the lengths; the masses and D.
-std::string engine_table(const Engine& engine);
+std::string engine_table(const Engine& engine, UnitSystem units = UnitSystem::si);
 
 /// An optimum: where its search started and what it cost, its engine and its shot.
-std::string optimum_table(const Optimum& optimum, const ShotSettings& settings);
+std::string optimum_table(const Optimum& optimum, const ShotSettings& settings, UnitSystem units = UnitSystem::si);
 
 /// A completed engine: each quantity attested, implied or chosen, the shot, and how far the
 /// chosen values sit from the calculator's optimum for the same capacity.
-std::string completion_table(const Completion& completion, const ShotSettings& settings);
+/// With `longest`, the engine of the longest range for the same attested values follows, and how
+/// much further it throws; or why there is none (`longest_note`).
+std::string completion_table(const Completion& completion, const ShotSettings& settings, UnitSystem units = UnitSystem::si,
+                             const Completion* longest = nullptr, const std::string& longest_note = "");
 
 /// One CSV row per trace point: phase, time [s], angles [deg], angular speeds [rad/s],
 /// forces (F_S_perp/(m g), F_R and its components/(M g), F_H/(M g), normal/(m g)),
 /// energy [J] and its drift relative to Delta U (in phase III, from the energy at release,
 /// the projectile having left), the positions of counterweight, beam tip and projectile
-/// (site_point, [m]) and each body's energy [J] (potential from the pivot's level). After the
-/// release, phi, its rate and the projectile's position are empty.
+/// (site_point, [m]), each body's energy [J] (potential from the pivot's level), the sling's
+/// tension/(m g) and the beam's bending moment at the pivot/(M g L2). After the release, phi,
+/// its rate, the projectile's position and the sling's tension are empty.
 std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine);
 
 /// A point on the site: x [m] from the pivot toward the target, y [m] above the engine's base.

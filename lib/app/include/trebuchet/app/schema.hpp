@@ -42,6 +42,7 @@ void write_engine(nlohmann::ordered_json& out, const Engine& engine);
 struct EngineRecord {
   Engine engine;
   std::optional<Capacity> capacity;  ///< "R" and "T", both or neither (level 0)
+  bool mb_from_D = false;            ///< mb was not given: it follows from D and the wood (eq:BeamMass)
 };
 
 /// The values of a design as given (a JSON object, a CSV row or a program's options), in SI
@@ -135,6 +136,9 @@ nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s);
 /// A completed engine: the engine's keys, attested, implied and chosen (names), simulations,
 /// the shot's keys, the assumptions, and the calculator's optimum for the same capacity
 /// (its design, or calculator_note).
-nlohmann::ordered_json completion_json(const Completion& completion, const ShotSettings& settings);
+/// A completion, and beside it (`longest`) the engine of the longest range for the same attested
+/// values under "longest_range", or why there is none (`longest_note`).
+nlohmann::ordered_json completion_json(const Completion& completion, const ShotSettings& settings, const Completion* longest = nullptr,
+                                       const std::string& longest_note = "");
 
 }  // namespace trebuchet

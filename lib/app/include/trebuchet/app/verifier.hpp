@@ -32,7 +32,7 @@ DesignInputs read_design_inputs(const std::string& text, const std::string& path
 
 /// The material of a run over a design's own: eq:kMkD's wood, beta2 and g where given.
 struct MaterialOverrides {
-  std::optional<double> beta2, wood_density, g;  ///< scaled; [kg/m^3]; [m/s^2]
+  std::optional<double> beta2, wood_density, youngs_modulus, modulus_of_rupture, g;  ///< scaled; [kg/m^3]; [Pa]; [Pa]; [m/s^2]
   Material over(Material base) const;
 };
 
@@ -48,6 +48,7 @@ struct DesignCheck {
   double series_dt_s = 0;               ///< [s]; 0: at the integrator's steps
   std::string plot_dir;                 ///< draw the shot into this folder when not empty
   std::vector<std::string> inputs;      ///< the run's input files, which no picture may replace
+  UnitSystem units = UnitSystem::si;    ///< of the table
 };
 
 /// One design checked: its record as JSON, as a table and (with check.csv) as CSV cells, and whether a capacity
