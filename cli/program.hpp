@@ -4,6 +4,9 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cctype>
+#include <string_view>
+#include <vector>
 #include <unistd.h>
 
 #include <algorithm>
@@ -15,6 +18,7 @@
 #include <string>
 
 #include "exit_codes.hpp"
+#include "trebuchet/app/units.hpp"
 #include "trebuchet_version.hpp"
 #include "trebuchet/error.hpp"
 
@@ -88,6 +92,69 @@ inline const CLI::Option* option_with_empty_value(const CLI::App& app) {
   return nullptr;
 }
 
+/// The distance between two words in single-letter edits, letters compared without case.
+inline std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
+      const std::size_t next = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+      diagonal = row[j];
+      row[j] = next;
+    }
+  }
+  return row[b.size()];
+}
+
+/// " (did you mean --plot?)" for a word near an option or a subcommand of `app` (or of the
+/// subcommands given): at most 2 edits away, or the same but for the case or the dashes;
+/// empty when none is near.
+inline std::string did_you_mean(const CLI::App& app, std::string_view word) {
+  std::string bare(word);
+  bare.erase(0, bare.find_first_not_of('-'));
+  // A value ("150m", "x") is not taken for a misspelt name; a word of three letters or more,
+  // or one written as an option, is.
+  const bool letters = std::all_of(bare.begin(), bare.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '-' || c == '_'; });
+  if (bare.empty() || !letters || (word.rfind("-", 0) != 0 && bare.size() < 3)) return "";
+  std::vector<std::string> names;
+  std::vector<const CLI::App*> apps{&app};
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    names.push_back(sub->get_name());
+    if (sub->parsed()) apps.push_back(sub);
+  }
+  for (const CLI::App* a : apps)
+    for (const CLI::Option* option : a->get_options())
+      for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+  std::string best;
+  std::size_t best_distance = 3;
+  for (const std::string& name : names) {
+    std::string name_bare = name;
+    name_bare.erase(0, name_bare.find_first_not_of('-'));
+    const std::size_t distance = edit_distance(bare, name_bare);
+    if (distance < best_distance && distance < std::max<std::size_t>(name_bare.size(), 2)) best = name, best_distance = distance;
+  }
+  return best.empty() || best == word ? "" : " (did you mean " + best + "?)";
+}
+
+/// The arguments with a unit written apart from its number joined to it: `--M 3.11 tonnes`
+/// reads as `--M '3.11 tonnes'`, where the unit would otherwise be taken for a file name.
+inline std::vector<std::string> with_units_joined(int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  for (std::size_t i = 2; i < args.size(); ++i) {
+    const std::string& number = args[i - 1];
+    const bool is_number = !number.empty() && (std::isdigit(static_cast<unsigned char>(number[0])) || number[0] == '.' ||
+                                               ((number[0] == '-' || number[0] == '+') && number.size() > 1 && std::isdigit(static_cast<unsigned char>(number[1]))));
+    if (is_unit_word(args[i]) && is_number && args[i - 2].rfind("--", 0) == 0 && args[i - 2].find('=') == std::string::npos) {
+      args[i - 1] += " " + args[i];
+      args.erase(args.begin() + static_cast<std::ptrdiff_t>(i));
+    }
+  }
+  return args;
+}
+
 /// Parses argv into `app`, then returns run(); --help prints and exits 0. A parse error exits
 /// with the code of ErrorKind::usage, an Error with that of its kind; both are printed as
 /// "program: message".
@@ -98,7 +165,9 @@ int run_program(CLI::App& app, Program program, int argc, char** argv, Run run) 
   // they buffer output themselves (a large batch writes ~10^7 bytes).
   std::ios::sync_with_stdio(false);
   try {
-    app.parse(argc, argv);
+    std::vector<std::string> args = with_units_joined(argc, argv);
+    std::reverse(args.begin(), args.end());  // CLI11 takes them last first
+    app.parse(std::move(args));
   } catch (const CLI::CallForHelp&) {
     std::cout << app.help();
     return exit_success;
@@ -112,6 +181,22 @@ int run_program(CLI::App& app, Program program, int argc, char** argv, Run run) 
       std::cerr << name << ": " << text.substr(0, at) << " was given " << text.substr(at + twice.size()) << " times; give it once\n";
     else
       std::cerr << name << ": " << text << "; see " << name << " --help\n";
+    return exit_code(program, ErrorKind::usage);
+  } catch (const CLI::ExtrasError& e) {
+    // "The following arguments were not expected: --plto": each with the nearest name.
+    std::string text = e.what();
+    if (const auto colon = text.find(": "); colon != std::string::npos) {
+      std::string words = text.substr(colon + 2), said = text.substr(0, colon + 2);
+      std::size_t at = 0;
+      while (at < words.size()) {
+        const std::size_t end = std::min(words.find(' ', at), words.size());
+        const std::string word = words.substr(at, end - at);
+        said += (at ? " " : "") + word + did_you_mean(app, word);
+        at = end + 1;
+      }
+      text = said;
+    }
+    std::cerr << name << ": " << text << "; see " << name << " --help\n";
     return exit_code(program, ErrorKind::usage);
   } catch (const CLI::ParseError& e) {
     std::cerr << name << ": " << e.what() << "; see " << name << " --help\n";

@@ -4,6 +4,7 @@
 // and the re-derivation of tab:CPNC. The options are declared and parsed in options.cpp, each
 // subcommand runs in a file of its own (run.hpp). Exit codes: cli/exit_codes.hpp, docs/exit_codes.md.
 #include <algorithm>
+#include <filesystem>
 #include <iterator>
 #include <string>
 #include <vector>
@@ -33,7 +34,7 @@ int main(int argc, char** argv) {
   using namespace trebuchet::verify;
   CLI::App app{
       "trebuchet-verify: the ab-initio physics of a swinging-counterweight trebuchet (Horsdal, appendix A).\n"
-      "Values take SI suffixes (6.13m, 14.3t, 224kJ). Exit codes: 0 pass, 1 outside --tol, 2 bad input,\n"
+      "Values take unit suffixes (6.13m, 14.3t, 224kJ, 20ft, 220lb). Exit codes: 0 pass, 1 outside --tol, 2 bad input,\n"
       "3 numerical failure (docs/exit_codes.md). Without a subcommand, shot is meant.",
       "trebuchet-verify"};
   app.set_version_flag("--version", version_text("trebuchet-verify"));
@@ -42,6 +43,10 @@ int main(int argc, char** argv) {
   const Subcommands sub = declare_subcommands(app, options);
   std::vector<char*> args = with_default_subcommand(argc, argv);
   return run_program(app, Program::verify, static_cast<int>(args.size()), args.data(), [&] {
+    // A word that is no file but near an option or a subcommand was meant as one: `plot`, `optimise`.
+    if (!options.input.empty() && options.input != "-" && !std::filesystem::exists(options.input))
+      if (const std::string hint = did_you_mean(app, options.input); !hint.empty())
+        throw Error(ErrorKind::usage, "there is no file '" + options.input + "' to read" + hint);
     // --samples and --seed mean something only to a Monte Carlo run.
     for (CLI::App* s : {sub.shot, sub.complete})
       if (s->parsed() && options.uncertain.empty() && (s->count("--samples") > 0 || s->count("--seed") > 0))
