@@ -1,7 +1,9 @@
 // A shot or a completion whose values are given as ranges or spreads: each sample sets them to a
 // draw (in SI units, on the typed options) and runs; the percentiles of R, T, eps and v, the
 // failures by reason, and with --plot a histogram.
+#include <algorithm>
 #include <chrono>
+#include <tuple>
 #include <iostream>
 
 #include "program.hpp"
@@ -10,6 +12,7 @@
 #include "trebuchet/format.hpp"
 #include "trebuchet/parallel.hpp"
 #include "trebuchet/app/pictures.hpp"
+#include "trebuchet/app/report.hpp"
 
 namespace trebuchet::verify {
 
@@ -64,7 +67,20 @@ int run_monte_carlo(const Options& o, bool complete) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<UncertainInput> inputs;
   for (const Uncertain& u : o.uncertain) inputs.push_back(u.input);
-  const MonteCarloReport report{summary, inputs, o.seed, complete ? "the completed engine" : "the shot",
+  // The values held fixed: those given, less the uncertain.
+  std::vector<FixedInput> fixed;
+  const std::tuple<const char*, std::optional<double>, UnitDimension> given[] = {
+      {"Lb", o.Lb, UnitDimension::length}, {"H", o.H, UnitDimension::length}, {"l", o.l, UnitDimension::dimensionless},
+      {"L1", o.design.L1, UnitDimension::length}, {"L2", o.design.L2, UnitDimension::length}, {"L3", o.design.L3, UnitDimension::length},
+      {"F", o.design.F, UnitDimension::dimensionless}, {"L4", o.design.L4, UnitDimension::length}, {"M", o.design.M, UnitDimension::mass},
+      {"m", o.design.m, UnitDimension::mass}, {"mb", o.design.mb, UnitDimension::mass}, {"D", o.design.D, UnitDimension::length},
+      {"theta_i_deg", o.design.theta_i_deg, UnitDimension::angle}, {"psi_i_deg", o.design.psi_i_deg, UnitDimension::angle}};
+  for (const auto& [name, value, dimension] : given) {
+    const std::string flag = option_word(name);
+    const bool uncertain = std::any_of(inputs.begin(), inputs.end(), [&](const UncertainInput& u) { return u.name == flag; });
+    if (value && !uncertain) fixed.push_back({name, dimension, *value});
+  }
+  const MonteCarloReport report{summary, inputs, fixed, describe_release(settings), o.seed, complete ? "the completed engine" : "the shot",
                                 settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"), settings.air.has_value(), seconds,
                                 thread_count(o.threads, static_cast<std::size_t>(summary.samples))};
   if (o.format == Format::json) {

@@ -27,7 +27,7 @@ expected_sites=$'Alcala la Vieja Ca\na bad row\nSaone\nthousands?\nVillard'
 [ "$(tail -n +2 "$dir/verify.csv" | cut -d, -f2)" = "$expected_sites" ] || fail "verify: the sites are not in their places"
 [ "$(head -1 "$dir/verify.csv" | cut -d, -f1-3)" = "line,site,note" ] || fail "verify: the pass-through columns do not lead"
 head -1 "$dir/calc.csv" | grep -q '^line,site,note,R_m,T_J,' || fail "calc: header without units"
-head -1 "$dir/verify.csv" | grep -q ',R_m,T_J,R_vacuum_m,eps,Q,' || fail "verify: header without units"
+head -1 "$dir/verify.csv" | grep -q ',R_m,T_J,R_vacuum_m,T_vacuum_J,eps,Q,' || fail "verify: header without units"
 head -1 "$dir/verify.csv" | grep -q ',error$' || fail "verify: no error column"
 
 # The bad rows keep their place with the reason; the good rows have no error.

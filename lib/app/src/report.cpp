@@ -25,15 +25,19 @@ std::string cell(const std::string& label, const std::string& value) {
 
 }  // namespace
 
-std::string describe_assumptions(const Engine& engine, const ShotSettings& settings) {
+std::string describe_release(const ShotSettings& settings) {
   const ReleaseCriterion& c = settings.criterion;
   const std::string rule = c.release == Release::quality ? (c.n == 1 ? "where Q peaks (eq:Q)" : "where Q_n peaks (eq:Q_n, n = " + format_significant(c.n, 3) + ")")
                            : c.release == Release::efficiency ? "where eps peaks (Q_eps, appendix B)"
                                                               : "where the range peaks (Denny's criterion)";
-  return (settings.air ? describe_air(*settings.air, engine.m) : std::string("vacuum (no air drag)")) + ", g = " +
-         format_significant(engine.material.g, 4) + " m/s2, release " + rule + ", " +
+  return "release " + rule + ", " +
          (settings.range_from_release ? std::string("range from the release point to where the flight dips below the release height (Denny's)")
                                       : "target level " + format_significant(settings.target_level, 4) + " m");
+}
+
+std::string describe_assumptions(const Engine& engine, const ShotSettings& settings) {
+  return (settings.air ? describe_air(*settings.air, engine.m) : std::string("vacuum (no air drag)")) + ", g = " +
+         format_significant(engine.material.g, 4) + " m/s2, " + describe_release(settings);
 }
 
 std::string design_table(const OptimalEngine& design, UnitSystem units) {
@@ -111,8 +115,9 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
       const double rupture = engine.material.modulus_of_rupture;
       out << "beam: D = " << q(b->D, UnitDimension::length, 3) << (engine.D > 0 ? "" : " (from mb and the wood, eq:BeamMass)")
           << ", bent by the counterweight at rest beta2 = u2/L2 = " << sig(100 * b->beta2, 3) << " % (eq:bend_L2; the paper sizes for 1/300 = 0.33 %)\n"
-          << "  strain at the pivot: level under the counterweight " << sig(b->strain_at_rest, 3) << " = 1/" << sig(1 / b->strain_at_rest, 3)
-          << " (eq:Strain), in the shot " << sig(b->strain_peak, 3) << " = 1/" << sig(1 / b->strain_peak, 3) << "\n"
+          << "  strain at the pivot: level under the counterweight " << sig(b->strain_at_rest, 3) << " = 1/"
+          << quantity_text(1 / b->strain_at_rest, UnitDimension::dimensionless, units, 3) << " (eq:Strain), in the shot " << sig(b->strain_peak, 3)
+          << " = 1/" << quantity_text(1 / b->strain_peak, UnitDimension::dimensionless, units, 3) << "\n"
           << "  stress: level " << q(b->stress_at_rest, UnitDimension::pressure, 3) << ", in the shot " << q(b->stress_peak, UnitDimension::pressure, 3)
           << ", against a modulus of rupture of " << q(rupture, UnitDimension::pressure, 3) << ": "
           << (b->margin >= 1 ? "margin " + sig(b->margin, 3) + " (the modulus of rupture over the larger stress)"

@@ -120,6 +120,10 @@ nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
                          {uniform ? "to" : "deviation", spread.b}});
   }
   out["uncertain"] = uncertain;
+  nlohmann::ordered_json fixed = nlohmann::ordered_json::object();
+  for (const FixedInput& f : r.fixed) fixed[f.name] = f.value;
+  out["fixed"] = fixed;
+  out["assumptions"] = r.assumptions;
   for (std::size_t k = 0; k < sample_names.size(); ++k)
     if (!summary.values.empty())
       out["percentiles"][sample_names[k]] = {{"p5", summary.percentiles[k][0]}, {"p50", summary.percentiles[k][1]}, {"p95", summary.percentiles[k][2]}};
@@ -150,10 +154,18 @@ std::string monte_carlo_table(const MonteCarloReport& r) {
   const MonteCarloSummary& summary = r.summary;
   std::vector<std::string> described;
   for (const UncertainInput& u : r.inputs) described.push_back(describe_uncertain(u));
+  std::vector<std::string> fixed;
+  for (const FixedInput& f : r.fixed) {
+    const std::string name = f.name.size() > 4 && f.name.substr(f.name.size() - 4) == "_deg" ? f.name.substr(0, f.name.size() - 4) : f.name;
+    fixed.push_back(name + " " + quantity_text(f.value, f.dimension, UnitSystem::si, 6));
+  }
+  if (fixed.empty()) fixed.push_back("none");
   std::ostringstream out;
   out << "Monte Carlo: " << summary.samples << " samples (--seed " << r.seed << ") of " << r.subject << ", "
       << format_significant(r.seconds, 3) << " s on " << r.threads << " thread(s)\n"
       << "uncertain: " << join(described, ", ") << "\n"
+      << "fixed: " << join(fixed, ", ") << "\n"
+      << "assumptions: " << r.assumptions << "\n"
       << "ranges in " << r.air << "\n";
   if (!summary.values.empty()) {
     const char* labels[] = {"R [m]", "T [kJ]", "eps [%]", "v [m/s]"};

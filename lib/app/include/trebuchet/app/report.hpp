@@ -30,6 +30,8 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
 /// What a shot assumed, in one line: the air or vacuum, g, the release rule and the target level
 /// (or Denny's range).
 std::string describe_assumptions(const Engine& engine, const ShotSettings& settings);
+/// Its release rule and target level (or Denny's range) alone.
+std::string describe_release(const ShotSettings& settings);
 
 /// Two indented lines with units: Lb, H and the lengths; the masses and D.
 std::string engine_table(const Engine& engine, UnitSystem units = UnitSystem::si);

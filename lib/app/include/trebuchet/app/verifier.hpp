@@ -87,11 +87,21 @@ void check_monte_carlo_work(long samples, long shots_per_sample, const std::stri
 /// "--M uniform 2500..3500 kg", "--L4 normal 3.55±0.2 m".
 std::string describe_uncertain(const UncertainInput& input);
 
-/// What a Monte Carlo run reports: its samples, seed, inputs, percentiles and failures; `air`
-/// describes the flight ("vacuum" or describe_air), `subject` what was sampled ("the shot").
+/// A value a Monte Carlo run holds fixed, as its user gave it: "L1" 4.13 m.
+struct FixedInput {
+  std::string name;
+  UnitDimension dimension;
+  double value;  ///< SI; degrees for angles
+};
+
+/// What a Monte Carlo run reports: its samples, seed, inputs (the uncertain and the fixed),
+/// percentiles and failures; `air` describes the flight ("vacuum" or describe_air),
+/// `assumptions` the release and the target level, `subject` what was sampled ("the shot").
 struct MonteCarloReport {
   const MonteCarloSummary& summary;
   const std::vector<UncertainInput>& inputs;
+  const std::vector<FixedInput>& fixed;
+  std::string assumptions;
   std::uint64_t seed;
   std::string subject;
   std::string air;
