@@ -123,3 +123,20 @@ TEST_CASE("Denny's engine in air: the paper's 380 m and Denny's own range", "[ai
             << " m, x = " << denny_range.x << " m\n";
   CHECK(std::abs(denny_range.capacity.R - 366) <= 1.5);
 }
+
+// Morrison's Cd(Re) was fitted up to Re = 1e6. Denny's 100 kg stone leaves at 64 m/s, a
+// sphere of 0.42 m: Re = 1.2 * 0.42 * 64 / 1.81e-5 = 1.8e6, beyond it, and the shot says so in a
+// note (not a warning: the shot is physical, its drag is extrapolated). A fixed Cd needs no
+// Re, and a slower, smaller stone stays below 1e6 (Alcala Ca's 50 kg at 38 m/s: 8.5e5).
+TEST_CASE("a flight beyond the Reynolds numbers of Cd(Re) is noted", "[air]") {
+  ShotSettings settings;
+  settings.air = Air{};
+  settings.air->drag_coefficient = std::nullopt;
+  const Verification denny = verify_engine(testing::denny_standard(), settings);
+  REQUIRE(denny.notes.size() == 1);
+  CHECK(denny.notes.front().find("Re = 1.8e+06") != std::string::npos);
+  CHECK(denny.warnings.empty());
+  CHECK(verify_engine(testing::alcala_ca(), settings).notes.empty());
+  settings.air->drag_coefficient = 0.47;
+  CHECK(verify_engine(testing::denny_standard(), settings).notes.empty());
+}

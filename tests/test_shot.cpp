@@ -309,3 +309,22 @@ TEST_CASE("a builder's load peaks are the largest values up to the release", "[s
     CHECK(std::abs(v.loads[pivot_load].value / v.FR - 1) < 1e-9);
   }
 }
+
+// Section 7, Malvecino: "The potential energy stored in the engine before the shot is
+// 111kJ/0.925=120kJ" for the row Ma 426 m engine: Delta U of eq:DU from the printed engine,
+// within half a unit of "120" and the rounding of the printed engine.
+TEST_CASE("section 7: the Malvecino engine stores 120 kJ", "[shot][paper]") {
+  std::printf("section 7, Malvecino (row Ma 426 m)\n");
+  const Engine e = alcala_ma_426();
+  check_printed("Delta U [kJ]", potential_energy_drop(e) / 1e3, "120", input_rounding(e, [](const Engine& x) { return potential_energy_drop(x) / 1e3; }));
+}
+
+// Section 7, Saone: the row Sa engine's 50 kg stones "arriving at ~185 km/h": the speed at the
+// target level from the shot's T = m v^2/2, within half a unit of "185" and the rounding of the
+// printed engine.
+TEST_CASE("section 7: Saone's stones arrive at 185 km/h", "[shot][paper]") {
+  std::printf("section 7, Saone (row Sa)\n");
+  auto arrival_km_h = [](const Engine& x) { return std::sqrt(2 * verify_engine(x, ShotSettings{}).capacity.T / x.m) * 3.6; };
+  const Engine e = alcala_sa();
+  check_printed("arrival speed [km/h]", arrival_km_h(e), "185", input_rounding(e, arrival_km_h));
+}

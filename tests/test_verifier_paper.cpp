@@ -118,8 +118,10 @@ ShotSettings at_max_efficiency() {
 Engine large_eff_17() { return fit_capacity(large_eff_shape({17, 0.800, 0.673, 270, 14.7}), {450, 232e3}, Material{}, at_max_efficiency()).engine; }
 
 struct ReleaseAngles {
+  Engine engine;
   Verification v;
   double theta_minus_180, psi, phi_minus_180;  // [deg], as tab:Large_Eff prints them
+  double counterweight_fall;                   // from rest to the release [m]
 };
 
 ReleaseAngles fitted_release(const std::vector<double>& x) {
@@ -129,17 +131,25 @@ ReleaseAngles fitted_release(const std::vector<double>& x) {
   const Verification v = verify_engine(fit.engine, settings, &trace);
   const auto release = std::find_if(trace.rbegin(), trace.rend(), [](const TracePoint& p) { return p.phase == Phase::lifted; });
   const State& s = release->state;  // the last point of phase II is the release
-  return {v, degrees(s.theta) - 180, degrees(s.psi), std::remainder(degrees(s.phi), 360) + 180};
+  const double fall = (trace.front().snapshot.counterweight.y - release->snapshot.counterweight.y) * fit.engine.L2;
+  return {fit.engine, v, degrees(s.theta) - 180, degrees(s.psi), std::remainder(degrees(s.phi), 360) + 180, fall};
 }
 
 }  // namespace
 
+// Besides the angles, the table's absolute engine (L2 and m follow from the fit to the
+// capacity) and appendix B's words: the release "from a low position ~2 m" (l = 17) and "a high
+// position ~40 m" (l = 59), read to the unit of their last digit; "the 270 ton counterweight
+// falls only ~9 cm" and "the 71 ton counterweight now falls about 1/2 m" up to the release,
+// read as 9 +- 1 cm and 0.5 +- 0.1 m.
 TEST_CASE("tab:Large_Eff with Q_eps: efficiencies near 99.5 % and the angles at release", "[verify][paper][stiff]") {
   const std::vector<std::pair<std::vector<std::string>, std::vector<Expected>>> rows = {
       {{"17", "0.800", "0.673", "270", "14.7"},
-       {{"eps", "99.53"}, {"theta", "-1.95"}, {"psi", "-1.98"}, {"phi", "45.1"}, {"A", "44.9"}}},
+       {{"eps", "99.53"}, {"theta", "-1.95"}, {"psi", "-1.98"}, {"phi", "45.1"}, {"A", "44.9"}, {"L1", "0.800"}, {"L2", "0.047"},
+        {"L4", "0.673"}, {"M", "270"}, {"m", "104", 1.5}, {"mb", "14.7"}, {"h", "2", 0.5}, {"fall", "0.09", 0.01}}},
       {{"59", "14.9", "18.2", "71.5", "729"},
-       {{"eps", "99.50"}, {"theta", "-1.22"}, {"psi", "-0.91"}, {"phi", "47.6"}, {"A", "42.6"}}},
+       {{"eps", "99.50"}, {"theta", "-1.22"}, {"psi", "-0.91"}, {"phi", "47.6"}, {"A", "42.6"}, {"L1", "14.9"}, {"L2", "0.25"},
+        {"L4", "18.2"}, {"M", "71.5"}, {"m", "93.5"}, {"mb", "729"}, {"h", "40", 5}, {"fall", "0.5", 0.1}}},
   };
   for (const auto& [inputs, expected] : rows) {
     std::vector<double> x;
@@ -149,18 +159,35 @@ TEST_CASE("tab:Large_Eff with Q_eps: efficiencies near 99.5 % and the angles at 
       if (key == "theta") return r.theta_minus_180;
       if (key == "psi") return r.psi;
       if (key == "phi") return r.phi_minus_180;
+      if (key == "L1") return r.engine.L1;
+      if (key == "L2") return r.engine.L2;
+      if (key == "L4") return r.engine.L4;
+      if (key == "M") return r.engine.M / 1e3;
+      if (key == "m") return r.engine.m;
+      if (key == "mb") return r.engine.mb;
+      if (key == "h") return r.v.h;
+      if (key == "fall") return r.counterweight_fall;
       return r.v.A_deg;
     };
     const ReleaseAngles ours = fitted_release(x);
     std::printf("tab:Large_Eff l = %s (shape fitted to 450 m, 232 kJ): F_R = %.2f Mg, F_S_perp = %.0f mg\n", inputs[0].c_str(),
                 ours.v.FR_Mg, ours.v.FS_perp_mg);
+    const double sling_tension_mg = ours.v.loads[sling_tension_load].value / (ours.engine.m * ours.engine.material.g);
+    std::printf("  sling tension up to the release %.0f mg, release height %.2f m, counterweight fall %.3f m\n", sling_tension_mg, ours.v.h,
+                ours.counterweight_fall);
     if (inputs[0] == "17") {
-      // Appendix B on the l = 17 engine: a fulcrum force "near 10 Mg" and a sling tension of
-      // "a few hundred mg" (read as 8-12 Mg and 200-900 mg).
+      // Appendix B on the l = 17 engine: the fulcrum's force "reaches nearly 10 Mg" (read as
+      // 8-10 Mg) and the sling's tension "rises to 350 mg" (the slips test pins it to rounding).
       CHECK(ours.v.FR_Mg > 8);
-      CHECK(ours.v.FR_Mg < 12);
-      CHECK(ours.v.FS_perp_mg > 200);
-      CHECK(ours.v.FS_perp_mg < 900);
+      CHECK(ours.v.FR_Mg < 10);
+      CHECK(sling_tension_mg > 300);
+      CHECK(sling_tension_mg < 400);
+    } else {
+      // On the l = 59 engine the force "rises only a little above Mg" (read as 1-1.5 Mg) and
+      // "the sling tension stays below 20 mg".
+      CHECK(ours.v.FR_Mg > 1);
+      CHECK(ours.v.FR_Mg < 1.5);
+      CHECK(sling_tension_mg < 20);
     }
     for (const Expected& e : expected) {
       // Rounding of the printed shape, first order, each input in turn.
@@ -170,7 +197,13 @@ TEST_CASE("tab:Large_Eff with Q_eps: efficiencies near 99.5 % and the angles at 
         moved[k] += printed(inputs[k]).half_unit;
         rounding += std::abs(value(fitted_release(moved), e.key) - value(ours, e.key));
       }
-      check_printed(std::string("tab:Large_Eff l = ") + inputs[0] + " " + e.key, value(ours, e.key), e.text, rounding);
+      // Appendix B's "~2 m", "~40 m", "~9 cm" and "about 1/2 m": read as +- the width given in
+      // the row's third field, on top of the rounding.
+      // Elsewhere a third field above 1 is a documented difference (docs/verifier.md, "Known
+      // differences"), allowed that multiple of the tolerance.
+      const bool words = std::string(e.key) == "h" || std::string(e.key) == "fall";
+      const double extra = words ? rounding + e.known : e.known * rounding + (e.known - 1) * printed(e.text).half_unit;
+      check_printed(std::string("tab:Large_Eff l = ") + inputs[0] + " " + e.key, value(ours, e.key), e.text, extra);
     }
   }
 }

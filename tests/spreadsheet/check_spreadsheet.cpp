@@ -110,6 +110,9 @@ void check_design(const Cells& sheet, const ScalingTable& table, const DesignReq
   if (!design) {
     ++refusals;
     if (status == "ok") fail(where + ": the sheet says ok, the calculator refuses: " + refusal);
+    // A refused request shows no engine: every result is blank (issue 22).
+    for (const char* label : {"R", "T", "T in kJ", "L1", "L2", "L3", "L4", "D", "M", "M in t", "m", "mb"})
+      if (!value_of(sheet, label).empty()) fail(where + ": refused, yet " + label + " shows '" + value_of(sheet, label) + "'");
     return;
   }
   ++designs;
@@ -119,6 +122,8 @@ void check_design(const Cells& sheet, const ScalingTable& table, const DesignReq
       {"R", design->capacity.R}, {"T", design->capacity.T}, {"L1", e.L1}, {"L2", e.L2}, {"L3", e.L3}, {"L4", e.L4},
       {"D", e.D}, {"M", e.M}, {"m", e.m}, {"mb", e.mb}, {"amplification", design->amplification}};
   for (const auto& [label, value] : outputs) close_to(sheet, label, value, where);
+  close_to(sheet, "T in kJ", design->capacity.T / 1e3, where);
+  close_to(sheet, "M in t", e.M / 1e3, where);
   // X and Y pass through 0: compared absolutely, on their scale of about 1.
   for (const auto& [label, value] : {std::pair{"X", design->coordinates.X}, std::pair{"Y", design->coordinates.Y}}) {
     const auto x = number(value_of(sheet, label));

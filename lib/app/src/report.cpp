@@ -127,6 +127,7 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
   }
   out << "energy drift: " << sig(v.energy_drift, 2) << " of Delta U\n";
   for (const std::string& w : v.warnings) out << "warning: " << w << "\n";
+  for (const std::string& n : v.notes) out << "note: " << n << "\n";
   if (check) {
     out << "predicted, in vacuum: R = " << q(check->predicted.R, UnitDimension::length, 5) << " ("
         << (check->deviation_R >= 0 ? "+" : "") << sig(100 * check->deviation_R, 3) << " %), T = " << q(check->predicted.T, UnitDimension::energy, 5)

@@ -380,7 +380,7 @@ std::vector<std::string> verification_csv_header() {
   const Verification v{};
   for (const auto& fields : {engine_fields(Engine{}), verification_fields(v), check_fields(std::nullopt)})
     for (const Field& field : fields) header.push_back(csv_column(field));
-  header.insert(header.end(), {"pass", "air", "release", "n", "target_level_m", "warnings"});
+  header.insert(header.end(), {"pass", "air", "release", "n", "target_level_m", "warnings", "notes"});
   return header;
 }
 
@@ -395,7 +395,7 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
   const nlohmann::ordered_json assumed = assumptions_json(engine, settings);
   const std::string air = settings.air ? describe_air(*settings.air, engine.m) : "vacuum";
   row.insert(row.end(), {check ? (check->pass ? "yes" : "no") : "", air, assumed["release"].get<std::string>(),
-                         csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), join(v.warnings, "; ")});
+                         csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), join(v.warnings, "; "), join(v.notes, "; ")});
   return row;
 }
 
@@ -412,6 +412,7 @@ nlohmann::ordered_json verification_json(const Verification& v, const std::optio
   nlohmann::ordered_json out;
   for (const Field& field : verification_fields(v)) out[field.key] = field.value;
   out["warnings"] = v.warnings;
+  out["notes"] = v.notes;
   if (check) {
     out["predicted"] = {{"R", check->predicted.R}, {"T", check->predicted.T}};
     out["deviation"] = {{"R", check->deviation_R}, {"T", check->deviation_T}};

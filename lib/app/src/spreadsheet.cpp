@@ -7,7 +7,9 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "trebuchet/error.hpp"
@@ -100,22 +102,46 @@ Expr largest(const Column& column) {
 }
 
 struct Formats {
+  lxw_workbook* book;
   lxw_format* title;
   lxw_format* heading;
   lxw_format* input;   // cells the user types into
   lxw_format* note;
+  std::map<std::pair<int, bool>, lxw_format*> shown;  // a number shown to 4 significant digits, by its decimals and whether it is an input
+
+  // The format that shows `value` to 4 significant digits ("0.000" for 1.234, "#,##0" for
+  // 12345), on the inputs' colour for an input; the cell keeps every digit, and exports at
+  // full precision.
+  lxw_format* four_digits(double value, bool is_input = false) {
+    // A whole number (30 deg, 425 m, the 5th segment) is shown whole.
+    const int decimals = !std::isfinite(value) || (value == std::round(value) && std::abs(value) < 1e15)
+                             ? 0
+                             : std::clamp(3 - static_cast<int>(std::floor(std::log10(std::abs(value)))), 0, 9);
+    lxw_format*& format = shown[{decimals, is_input}];
+    if (!format) {
+      format = workbook_add_format(book);
+      format_set_num_format(format, decimals == 0 ? "#,##0" : ("0." + std::string(static_cast<std::size_t>(decimals), '0')).c_str());
+      if (is_input) format_set_bg_color(format, input_colour);
+    }
+    return format;
+  }
+  static constexpr lxw_color_t input_colour = 0xFFF2AB;
 };
 
 // A worksheet whose rows are label | value | unit | equation and note. Formulas refer to other
 // sheets by name; references to the sheet itself are written without it.
 class Sheet {
  public:
-  Sheet(lxw_workbook* book, const std::string& name, const Formats& formats)
+  Sheet(lxw_workbook* book, const std::string& name, Formats& formats)
       : sheet_(workbook_add_worksheet(book, name.c_str())), prefix_("'" + name + "'!"), formats_(formats) {
     worksheet_set_column(sheet_, 0, 0, 26, nullptr);
     worksheet_set_column(sheet_, 1, 1, 18, nullptr);
     worksheet_set_column(sheet_, 2, 2, 13, nullptr);
     worksheet_set_column(sheet_, 3, 3, 70, nullptr);
+    // Printed across, one page wide, on A4.
+    worksheet_set_landscape(sheet_);
+    worksheet_set_paper(sheet_, 9);
+    worksheet_fit_to_pages(sheet_, 1, 0);
   }
   lxw_worksheet* raw() const { return sheet_; }
 
@@ -154,8 +180,24 @@ class Sheet {
   }
   Expr input(int row, int col, double value) {
     require_finite(row, col, value);
-    worksheet_write_number(sheet_, row, col, value, formats_.input);
+    worksheet_write_number(sheet_, row, col, value, formats_.four_digits(value, true));
     return {ref(row, col), value};
+  }
+  // An input that takes a number greater than `above` (and below `below` if given): anything
+  // else, "250 m" typed with its unit too, is refused on typing with `hint`.
+  Expr number_input(int row, int col, double value, const std::string& hint, double above = 0, std::optional<double> below = std::nullopt) {
+    const Expr e = input(row, col, value);
+    lxw_data_validation validation{};
+    validation.validate = LXW_VALIDATION_TYPE_DECIMAL;
+    validation.criteria = below ? LXW_VALIDATION_CRITERIA_BETWEEN : LXW_VALIDATION_CRITERIA_GREATER_THAN;
+    validation.value_number = above;
+    validation.minimum_number = above;
+    validation.maximum_number = below.value_or(0);
+    std::string title = "A number only", message = hint;
+    validation.error_title = title.data();
+    validation.error_message = message.data();
+    worksheet_data_validation_cell(sheet_, row, col, &validation);
+    return e;
   }
   Text text_cell(int row, int col, const std::string& value) {
     worksheet_write_string(sheet_, row, col, value.c_str(), nullptr);
@@ -165,9 +207,21 @@ class Sheet {
     worksheet_write_string(sheet_, row, col, value.c_str(), formats_.input);
     return {ref(row, col), value};
   }
-  Expr formula(int row, int col, const Expr& e) {
+  Expr formula(int row, int col, const Expr& e, lxw_format* format = nullptr) {
     require_finite(row, col, e.v);
-    worksheet_write_formula_num(sheet_, row, col, local(e.f).c_str(), nullptr, e.v);
+    worksheet_write_formula_num(sheet_, row, col, local(e.f).c_str(), format, e.v);
+    return {ref(row, col), e.v};
+  }
+  // A result shown to 4 significant digits where `valid` is 1, and left blank where it is 0:
+  // a refused request must not look like a result.
+  Expr result(int row, int col, const Expr& valid, const Expr& e) {
+    const std::string text = local("IF(" + valid.f + "," + e.f + ",\"\")");
+    if (valid.v != 0) {
+      require_finite(row, col, e.v);
+      worksheet_write_formula_num(sheet_, row, col, text.c_str(), formats_.four_digits(e.v), e.v);
+    } else {
+      worksheet_write_formula_str(sheet_, row, col, text.c_str(), formats_.four_digits(e.v), "");
+    }
     return {ref(row, col), e.v};
   }
   Text formula(int row, int col, const Text& t) {
@@ -186,7 +240,11 @@ class Sheet {
   }
   Expr formula_row(int row, const std::string& label, const Expr& e, const std::string& unit, const std::string& note) {
     describe(row, label, unit, note);
-    return formula(row, 1, e);
+    return formula(row, 1, e, formats_.four_digits(e.v));
+  }
+  Expr result_row(int row, const std::string& label, const Expr& valid, const Expr& e, const std::string& unit, const std::string& note) {
+    describe(row, label, unit, note);
+    return result(row, 1, valid, e);
   }
   Text text_row(int row, const std::string& label, const Text& t, const std::string& note) {
     describe(row, label, "", note);
@@ -201,7 +259,7 @@ class Sheet {
   }
   lxw_worksheet* sheet_;
   std::string prefix_;
-  const Formats& formats_;
+  Formats& formats_;
 };
 
 // The quantities a design sheet takes, in the order of the constants sheet's laws: R, T, the
@@ -232,7 +290,7 @@ struct ConstantsSheet {
 
 std::string describe_material_note() { return "the table's material: its masses and T are rescaled to yours on the material sheet"; }
 
-ConstantsSheet write_constants(lxw_workbook* book, const Formats& formats, const ScalingTable& table) {
+ConstantsSheet write_constants(lxw_workbook* book, Formats& formats, const ScalingTable& table) {
   Sheet s(book, "constants", formats);
   s.title("Constants of " + table.name + " (eq:ZRT): Z/Z0 = a_Z (R/R0)^p_Z (T/T0)^q_Z",
           "Each row is one X-segment of one (theta_i, F) block. Edit the numbers to use another table; every sheet follows.");
@@ -324,7 +382,7 @@ ConstantsSheet write_constants(lxw_workbook* book, const Formats& formats, const
 }
 
 // eq:kMkD's k_M and k_D, and the factors of section 7 from the table's material to the user's.
-MaterialFactors write_material(lxw_workbook* book, const Formats& formats, const ConstantsSheet& c, const Material& material) {
+MaterialFactors write_material(lxw_workbook* book, Formats& formats, const ConstantsSheet& c, const Material& material) {
   Sheet s(book, "material", formats);
   s.title("Material, allowed bending and gravity (section 4, section 7)",
           "Type your wood, beta2 and g; the design sheets rescale the table's masses, D and T by the factors below (eq:ExtraScalings).");
@@ -351,10 +409,11 @@ MaterialFactors write_material(lxw_workbook* book, const Formats& formats, const
 // whose interval holds the solution's X (eq:Xi) chosen by a lookup. `fixed` says how many of the
 // givens' names are fixed (2 for R and T, 1 for R and one parameter, 0 for any pair).
 struct DesignResult {
+  Expr valid;                              // 1 when the request gives an engine, else 0
   Expr R, T, L1, L2, L3, L4, D, M, m, mb;  // what the model-scaling sheet takes from it
 };
 
-DesignResult write_design(lxw_workbook* book, const Formats& formats, const std::string& name, const std::string& heading,
+DesignResult write_design(lxw_workbook* book, Formats& formats, const std::string& name, const std::string& heading,
                           const ConstantsSheet& c, const MaterialFactors& f, const DesignRequest& request, int fixed) {
   Sheet s(book, name, formats);
   s.title(heading, "Type the yellow cells. The rows below solve eq:ZiZj_RT in every segment of the table and keep the one whose "
@@ -370,11 +429,13 @@ DesignResult write_design(lxw_workbook* book, const Formats& formats, const std:
     names[k] = k < fixed ? s.text_cell(row, 1, quantity) : s.input_text(row, 1, quantity);
     static const char* quantities[] = {"R", "T", "L1", "L2", "L4", "D", "M", "m", "mb", "l", nullptr};
     if (k >= fixed) s.choices(row, 1, quantities);
-    s.describe(row + 1, which + " value", "", "in SI base units, as the unit beside it says");
-    values[k] = s.input(row + 1, 1, givens[k].value);
+    s.describe(row + 1, which + " value", "", "a number in SI base units, as the unit beside it says: 250 for 250 m, 3110 for 3.11 t");
+    values[k] = s.number_input(row + 1, 1, givens[k].value, "Type a number alone, in the unit shown beside it (m, J or kg): 250 for 250 m, 3110 for 3.11 t.");
   }
-  const Expr theta = s.input_row(7, "theta_i", request.theta_i_deg, "deg", "initial beam angle; the table has the blocks on the constants sheet");
-  const Expr F = s.input_row(8, "F", request.F, "", "(L2 + L3)/H; type =2/3 for two thirds");
+  s.describe(7, "theta_i", "deg", "initial beam angle; the table has the blocks on the constants sheet");
+  const Expr theta = s.number_input(7, 1, request.theta_i_deg, "Type the angle in degrees, a number from 0 to 90: 30 for 30 deg.", 0, 90);
+  s.describe(8, "F", "", "(L2 + L3)/H; type =2/3 for two thirds");
+  const Expr F = s.number_input(8, 1, request.F, "Type a positive number, or =2/3 for two thirds.");
   s.describe(9, "branch", "", "auto, lower or upper: two optima compete where the branches overlap (section 6.2)");
   static const char* branches[] = {"auto", "lower", "upper", nullptr};  // in the order of BranchChoice
   const Text branch = s.input_text(9, 1, branches[static_cast<int>(request.branch)]);
@@ -449,34 +510,42 @@ DesignResult write_design(lxw_workbook* book, const Formats& formats, const std:
     const int z = index(param);
     return element(c.a[z], k) * element(c.Z0[z], k) * exp(element(c.p[z], k) * lr + element(c.q[z], k) * lt);
   };
+  // The status first: a refused request leaves every result blank, so that it never looks like one.
+  const Expr L1 = Z(Param::L1), L2 = Z(Param::L2), L3 = F * L1 * cos_deg(theta) - L2;
+  const Text status = choose(ok, choose(below(num(50), amplification), literal("refused: the pair barely fixes the capacity (amplification above 50)"),
+                                        choose(at_most(L3, num(0)), literal("refused: no room for the counterweight arm (L3 <= 0)"), literal("ok"))),
+                             literal("no segment of the table holds these givens: X lies outside every interval of this block"));
+  s.text_row(19, "status", status, "what the calculator would say; the results below are blank unless it is ok");
   DesignResult out;
-  int row = 19;
+  out.valid = s.formula_row(20, "valid", ok * (num(1) - below(num(50), amplification)) * below(num(0), L3), "",
+                            "1 when the status is ok, else 0");
+  s.text_row(21, "segment branch", element(c.branch, k), "the branch of the chosen segment (section 6.2)");
+  s.heading(22, 0, "the optimal engine");
+  int row = 23;
   auto output = [&](const std::string& label, const Expr& e, const std::string& unit, const std::string& note) {
-    return s.formula_row(row++, label, e, unit, note);
+    return s.result_row(row++, label, out.valid, e, unit, note);
   };
   out.R = output("R", c.R0 * exp(lr), "m", "range in vacuum at the base level (eq:ZRT with Z = R)");
   out.T = output("T", c.T0 * exp(lt) * f.energy, "J", "energy at the target (eq:T), in your material");
+  output("T in kJ", out.T / num(1000), "kJ", "the same energy in kilojoules");
   output("X", (num(5) * lr - lt) / sqrt26, "", "eq:Xi: (5 ln(R/R0) - ln(T/T0))/sqrt(26)");
   output("Y", (lr + num(5) * lt) / sqrt26, "", "eq:XY_RT");
-  out.L1 = output("L1", Z(Param::L1), "m", "long beam section (eq:ZRT)");
-  out.L2 = output("L2", Z(Param::L2), "m", "short beam section (eq:ZRT)");
+  out.L1 = output("L1", L1, "m", "long beam section (eq:ZRT)");
+  out.L2 = output("L2", L2, "m", "short beam section (eq:ZRT)");
   out.L3 = output("L3", F * out.L1 * cos_deg(theta) - out.L2, "m", "counterweight arm: L2 + L3 = F H, H = L1 cos(theta_i) (section 2)");
   out.L4 = output("L4", Z(Param::L4), "m", "sling (eq:ZRT)");
   out.D = output("D", Z(Param::D) * f.diameter, "m", "beam diameter (eq:ZRT, eq:bend_L2)");
   out.M = output("M", Z(Param::M) * f.mass, "kg", "counterweight (eq:ZRT)");
+  output("M in t", out.M / num(1000), "t", "the same counterweight in tonnes");
   out.m = output("m", Z(Param::m) * f.mass, "kg", "projectile (eq:ZRT)");
   out.mb = output("mb", Z(Param::mb) * f.mass, "kg", "beam (eq:ZRT)");
   output("amplification", amplification, "", "relative change of R or T per relative change of a given (eq:ZiZj_RT); above 10 ill-conditioned, above 50 refused");
-  const Text status = choose(ok, choose(below(num(50), amplification), literal("refused: the pair barely fixes the capacity (amplification above 50)"),
-                                        choose(at_most(out.L3, num(0)), literal("refused: no room for the counterweight arm (L3 <= 0)"), literal("ok"))),
-                             literal("no segment of the table holds these givens: X lies outside every interval of this block"));
-  s.text_row(row++, "status", status, "what the calculator would say");
-  s.text_row(row++, "segment branch", element(c.branch, k), "the branch of the chosen segment (section 6.2)");
+  worksheet_print_area(s.raw(), 0, 0, static_cast<lxw_row_t>(row), 3);
   return out;
 }
 
 // The quantities that follow from an engine (section 2, eq:Design, eq:kMkD, eq:DU).
-void write_derived(lxw_workbook* book, const Formats& formats, const Engine& e, const Expr& g) {
+void write_derived(lxw_workbook* book, Formats& formats, const Engine& e, const Expr& g) {
   Sheet s(book, "derived", formats);
   s.title("Derived quantities of an engine (section 2, eq:Design, eq:kMkD, eq:DU)",
           "Type an engine in the yellow cells (it opens on the optimum for Alcala la Vieja, site Ca: 150 m, 50 kg); g is the material sheet's.");
@@ -507,10 +576,10 @@ void write_derived(lxw_workbook* book, const Formats& formats, const Engine& e, 
 }
 
 // An optimal engine at lambda times its size stays optimal: X is unchanged (eq:ExtraScalings).
-void write_model_scaling(lxw_workbook* book, const Formats& formats, const DesignResult& full, double scale) {
+void write_model_scaling(lxw_workbook* book, Formats& formats, const DesignResult& full, double scale) {
   Sheet s(book, "model scaling", formats);
   s.title("A model of the optimal engine (eq:ExtraScalings)",
-          "The full-size engine is the one on the sheet 'from R and T'. Lengths and R scale with lambda, D with lambda^1.5, masses with lambda^4, T with lambda^5.");
+          "The full-size engine is the one on the sheet 'from R and T' (blank here when that sheet refuses its request). Lengths and R scale with lambda, D with lambda^1.5, masses with lambda^4, T with lambda^5.");
   const Expr lambda = s.input_row(3, "lambda", scale, "", "size of the model over the full size; it opens on the 80 m model of Denny's table of the 425 m engine (80/425)");
   s.heading(5, 0, "quantity");
   s.heading(5, 1, "model");
@@ -523,28 +592,28 @@ void write_model_scaling(lxw_workbook* book, const Formats& formats, const Desig
   for (const auto& [label, value] : rows) {
     const auto& [full_size, exponent] = value;
     const char* unit = label[0] == 'T' ? "J" : (label[0] == 'M' || label[0] == 'm') ? "kg" : "m";
-    s.formula_row(row, label, full_size * power(lambda, exponent), unit, "");
-    s.formula(row, 4, full_size);
+    s.result_row(row, label, full.valid, full_size * power(lambda, exponent), unit, "");
+    s.result(row, 4, full.valid, full_size);
     s.text(row, 3, "full size (column E) times lambda^" + number_text(exponent));
     ++row;
   }
 }
 
-void write_glossary(lxw_workbook* book, const Formats& formats) {
+void write_glossary(lxw_workbook* book, Formats& formats) {
   Sheet s(book, "glossary", formats);
   s.title("Glossary", "The symbols of the workbook, as in Horsdal's paper (section and equation labels in brackets).");
   const std::array<std::array<const char*, 3>, 28> entries = {{
       {"R", "range: from the pivot to where the projectile comes down at the target level, in vacuum", "m"},
       {"T", "kinetic energy of the projectile at the target level (eq:T)", "J"},
       {"R0, T0", "reference capacity of the table", "m, J"},
-      {"X", "eq:Xi: (5 ln(R/R0) - ln(T/T0))/sqrt(26); optimal engines of equal X are scaled copies", "scaled"},
-      {"Y", "eq:XY_RT: (ln(R/R0) + 5 ln(T/T0))/sqrt(26), the size along X = const", "scaled"},
+      {"X", "eq:Xi: (5 ln(R/R0) - ln(T/T0))/sqrt(26); optimal engines of equal X are scaled copies", "dimensionless"},
+      {"Y", "eq:XY_RT: (ln(R/R0) + 5 ln(T/T0))/sqrt(26), the size along X = const", "dimensionless"},
       {"segment", "an X interval of a (theta_i, F) block with its own constants a, p, q (tab:CPNC)", ""},
       {"branch", "where two optima compete (section 6.2): lower below X_d, upper above; none elsewhere", ""},
-      {"X_d", "the X where the lower and upper branch are equally good", "scaled"},
-      {"a, p, q", "the fitted constants of eq:ZRT: Z/Z0 = a (R/R0)^p (T/T0)^q", "scaled"},
-      {"D_ij", "determinant of the pair's exponents (eq:ZiZj_RT); near 0 the pair barely fixes the capacity", "scaled"},
-      {"amplification", "largest relative change of R or T per relative change of a given", "scaled"},
+      {"X_d", "the X where the lower and upper branch are equally good", "dimensionless"},
+      {"a, p, q", "the fitted constants of eq:ZRT: Z/Z0 = a (R/R0)^p (T/T0)^q", "dimensionless"},
+      {"D_ij", "determinant of the pair's exponents (eq:ZiZj_RT); near 0 the pair barely fixes the capacity", "dimensionless"},
+      {"amplification", "largest relative change of R or T per relative change of a given", "dimensionless"},
       {"L1", "long beam section, pivot to spigot", "m"},
       {"L2", "short beam section, pivot to hinge", "m"},
       {"L3", "counterweight arm, hinge to the counterweight's centre: L2 + L3 = F H", "m"},
@@ -554,13 +623,13 @@ void write_glossary(lxw_workbook* book, const Formats& formats) {
       {"D", "beam diameter, from the allowed bending (eq:bend_L2)", "m"},
       {"M, m, mb", "counterweight, projectile and beam masses", "kg"},
       {"theta_i", "initial angle of the long beam section from the downward vertical", "deg"},
-      {"F", "arm fraction (L2 + L3)/H of the design (section 2); not the force factor of eq:F", "scaled"},
-      {"l, l4, L", "L1/L2, L4/L1, L3/L2 (eq:Design)", "scaled"},
-      {"mu, mu_b", "m/M and mb/M (eq:Design)", "scaled"},
-      {"K", "(l + 1)/mu_b (eq:kMkD)", "scaled"},
+      {"F", "arm fraction (L2 + L3)/H of the design (section 2); not the force factor of eq:F", "dimensionless"},
+      {"l, l4, L", "L1/L2, L4/L1, L3/L2 (eq:Design)", "dimensionless"},
+      {"mu, mu_b", "m/M and mb/M (eq:Design)", "dimensionless"},
+      {"K", "(l + 1)/mu_b (eq:kMkD)", "dimensionless"},
       {"DeltaU", "potential energy released by a shot (eq:DU)", "J"},
-      {"Q, eps", "quality and efficiency of a shot (eq:Q, eq:Aux); the verifier computes them", "scaled"},
-      {"beta2", "allowed bending u2/L2 of the short beam section (eq:bend_L2)", "scaled"},
+      {"Q, eps", "quality and efficiency of a shot (eq:Q, eq:Aux); the verifier computes them", "dimensionless"},
+      {"beta2", "allowed bending u2/L2 of the short beam section (eq:bend_L2)", "dimensionless"},
       {"k_M, k_D", "material constants of eq:kMkD: (4 pi/3) g rho^2/E and (16/3) g rho/E", "kg/m4, 1/m"},
   }};
   s.heading(3, 0, "symbol");
@@ -608,19 +677,21 @@ void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& input
   lxw_workbook* book = owned.get();
   if (!book) throw Error(ErrorKind::usage, "{{spreadsheet}}: cannot write '" + path + "'; give a file you can write to");
   Formats formats{};
+  formats.book = book;
   formats.title = workbook_add_format(book);
   format_set_bold(formats.title);
   format_set_font_size(formats.title, 13);
   formats.heading = workbook_add_format(book);
   format_set_bold(formats.heading);
   formats.input = workbook_add_format(book);
-  format_set_bg_color(formats.input, 0xFFF2AB);
+  format_set_bg_color(formats.input, Formats::input_colour);
   formats.note = workbook_add_format(book);
   format_set_font_color(formats.note, 0x555555);
   const ConstantsSheet constants = write_constants(book, formats, table);
   const MaterialFactors factors = write_material(book, formats, constants, inputs.material);
   const DesignResult capacity =
       write_design(book, formats, "from R and T", "The optimal engine for a capacity (R, T) (eq:ZRT)", constants, factors, inputs.capacity, 2);
+  worksheet_activate(workbook_get_worksheet_by_name(book, "from R and T"));  // it opens on the first design, not on the constants
   write_design(book, formats, "from R and one", "The optimal engine for R and one parameter (eq:RT_ZiZj with Z_i = R)", constants, factors,
                inputs.range_and_one, 1);
   write_design(book, formats, "from any pair", "The optimal engine for any two givens (eq:RT_ZiZj, eq:ZiZj_RT)", constants, factors,

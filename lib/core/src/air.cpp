@@ -43,8 +43,12 @@ double sphere_diameter(double mass, double density) { return std::cbrt(6 * mass 
 
 double drag_coefficient_of(double re) {
   if (!(re > 0)) return 0;
-  // Morrison, "An introduction to fluid mechanics" (2013), eq. 8.83: a fit to the standard
-  // drag curve of a smooth sphere, with the drag crisis near Re = 3e5.
+  // F. A. Morrison, An Introduction to Fluid Mechanics (Cambridge University Press, 2013), as
+  // given in her note "Data Correlation for Drag Coefficient for Sphere" (Michigan Technological
+  // University, 10 November 2016): a fit to the standard drag curve of a smooth sphere, with
+  // the drag crisis near Re = 3e5, not recommended above Re = 1e6 (max_fitted_reynolds). Its
+  // last term, 0.25 (Re/1e6)/(1 + Re/1e6), levels off; the note's 2010 version ends instead in
+  // Re^0.8/461000, which keeps rising (docs/verifier.md, "Air").
   const double a = re / 5, b = re / 263000, c = re / 1e6;
   return 24 / re + 2.6 * a / (1 + std::pow(a, 1.52)) + 0.411 * std::pow(b, -7.94) / (1 + std::pow(b, -8)) + 0.25 * c / (1 + c);
 }

@@ -45,6 +45,16 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
         throw Error(ErrorKind::numerical, "the flight through " + describe_air(*air, engine.m) +
                                               " did not come down to its end; give the air, the wind and the projectile's density values of ordinary size");
       range = end->range, end_velocity = end->velocity;
+      if (!air->drag_coefficient) {
+        // The fastest the flight meets the air is at one of its ends (drag slows the stone
+        // toward its terminal speed, and gravity speeds it toward the same).
+        const Drag drag = drag_of(*air, engine.m);
+        const double fastest = std::max(std::hypot(vx + air->wind, vy), std::hypot(end_velocity.x + air->wind, end_velocity.y));
+        const double reynolds = drag.reynolds_per_speed * fastest;
+        if (reynolds > max_fitted_reynolds)
+          out.notes.push_back("the flight reaches Re = " + format_significant(reynolds, 2) + ", beyond the 1e6 to which Morrison's Cd(Re) was fitted: "
+                              "the range in air is an extrapolation there (a fixed drag coefficient is another choice)");
+      }
     } else {
       range = vacuum_range({behind, 0}, {vx, vy}, 0, g);
       end_velocity.y = -vy;

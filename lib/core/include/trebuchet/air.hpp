@@ -28,8 +28,10 @@ void check_air(const Air& air);
 /// The diameter of a sphere of `mass` [kg] and `density` [kg/m^3] [m].
 double sphere_diameter(double mass, double density);
 
-/// Cd(Re) of a smooth sphere, by Morrison's correlation (2013), for 0.1 < Re < 1e6 and beyond.
+/// Cd(Re) of a smooth sphere, by Morrison's correlation (2013; air.cpp cites the form), fitted
+/// up to Re = max_fitted_reynolds; beyond it the value is an extrapolation.
 double drag_coefficient_of(double reynolds);
+inline constexpr double max_fitted_reynolds = 1e6;
 
 /// Drag in the units of a flight: SI, or scaled by L2 and sqrt(L2/g) (section 3). The drag
 /// acceleration is -Cd per_length |u| u, u the velocity through the air.

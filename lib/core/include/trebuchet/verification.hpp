@@ -66,6 +66,9 @@ struct Verification {
   /// Where the model stops holding before the release (a slack sling, the counterweight or the
   /// beam's tip below the base), each with its time: the figures are then not physical.
   std::vector<std::string> warnings;
+  /// What makes a figure less certain without making it unphysical: Cd(Re) used beyond the
+  /// Reynolds numbers it was fitted to.
+  std::vector<std::string> notes;
 };
 
 /// The SI figures of a shot of `engine` (of scaled design scaled_design(engine)), its flight in
