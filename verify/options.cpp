@@ -272,6 +272,8 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
     parsed_option(opt, name, [&o, name = std::string(name), member = member, dimension = dimension](const std::string& text) {
       o.design.*member = parse_positive(text, dimension, name);
     }, help);
+  parsed_option(opt, "--l", [&o](const std::string& text) { o.l = parse_positive(text, UnitDimension::dimensionless, "--l"); },
+                "hold the beam ratio L1/L2 and search the sling and the beam's mass alone, from both sides of l4 = 1 (appendix B; with --quality eps)");
   for (CLI::App* sub : {s.optimize, s.derive_table}) {
     block_options(sub, o);
     material_options(sub, o, "the engines", true);

@@ -41,6 +41,12 @@ int run_optimize(const Options& o) {
   request.F = d.F.value_or(standard_F);
   request.material = o.material.over(Material{});
   request.settings = shot_settings(o);
+  if (o.l) {
+    if (!(*o.l < max_beam_ratio))
+      throw Error(ErrorKind::usage, "--l " + format_significant(*o.l, 4) + " is beyond the optimizer's beam ratios (below " + format_number(max_beam_ratio) +
+                                        ", appendix B's largest is 59); give a smaller --l");
+    request.fixed_l = o.l;
+  }
   const auto start = std::chrono::steady_clock::now();
   const std::vector<Optimum> optima = optimize(request);
   const double seconds = seconds_since(start);

@@ -154,6 +154,7 @@ std::string optimum_table(const Optimum& optimum, const ShotSettings& settings, 
                      std::to_string(optimum.iterations) + " simplex iterations):\n" +
                      verification_table(optimum.fit.engine, settings, optimum.fit.verification, std::nullopt, units);
   text += "the search started from " + shape(from) + " and ended at " + shape(to) + ".";
+  if (!optimum.note.empty()) text += " Note: " + optimum.note + ".";
   if (optimum.start.rfind("calculator", 0) == 0)
     text += " trebuchet-calc gives the start's engine: the optimum of the table fitted to the paper's optima (tab:CPNC); this one is "
             "the ab-initio optimum for the same capacity. Q is flat near its top, so the two can differ by several % in length at a "

@@ -437,6 +437,7 @@ nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s) 
   out["simulations"] = optimum.simulations;
   out["iterations"] = optimum.iterations;
   out["wall_time_s"] = wall_time_s;
+  if (!optimum.note.empty()) out["note"] = optimum.note;
   const nlohmann::ordered_json shot = verification_json(optimum.fit.verification);
   for (const auto& [key, value] : shot.items()) out[key] = value;
   return out;

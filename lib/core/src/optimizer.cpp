@@ -20,9 +20,19 @@ struct Start {
   ScaledDesign shape;
 };
 
+// The lightest beam of a fixed-l search's grid, mu_b = mb/M.
+constexpr double least_searched_mu_b = 1e-6;
+
 // The calculator's optimum for the capacity on each branch it has, as starting shapes.
 std::vector<Start> starts_for(const OptimizeRequest& r) {
   std::vector<Start> starts;
+  if (r.fixed_l) {
+    // Appendix B: at a fixed l the efficiency has one maximum with l4 < 1 and one with l4 > 1;
+    // each search keeps to its side, from the best point of a grid there (search_from).
+    starts.push_back({"smaller-l4 branch", {*r.fixed_l, 0.85, 1e-3, 0, r.theta_i_deg, r.F}});
+    starts.push_back({"larger-l4 branch", {*r.fixed_l, 1.2, 1e-3, 0, r.theta_i_deg, r.F}});
+    return starts;
+  }
   for (ScaledDesign shape : r.starts) {
     shape.theta_i_deg = r.theta_i_deg, shape.F = r.F;
     starts.push_back({"given shape " + std::to_string(starts.size() + 1), shape});
@@ -64,15 +74,22 @@ struct Search {
   int simulations = 0;
   double best = -1;
   CapacityFit best_fit;
+  bool branch_below_one = true;  // with a fixed l: the side of l4 = 1 this search keeps to
   std::string last_failure;  // why the last shape that could not deliver the capacity failed
   bool only_integration_failed = true;  // every shape tried failed in its integration
 
   // Minus the quality of the shape at log coordinates x, its mu fitted to the capacity; a
   // shape that cannot deliver it, or fails, scores 0.
-  double cost(const std::vector<double>& x, double theta, double F) {
+  double cost(const std::vector<double>& x, double theta, double F, bool warm = true) {
     // mu starts from the best fit so far: the simplex moves in small steps, so its mu is close.
-    const double warm_mu = best > 0 ? best_fit.design.mu : 0;
-    const ScaledDesign shape{std::exp(x[0]), std::exp(x[1]), std::exp(x[2]), warm_mu, theta, F};
+    // A grid's far points start cold, as the fit would on its own.
+    const double warm_mu = warm && best > 0 ? best_fit.design.mu : 0;
+    // With a fixed l the simplex moves in (log l4, log mu_b) alone.
+    const std::size_t at = request->fixed_l ? 0 : 1;
+    const double l = request->fixed_l ? *request->fixed_l : std::exp(x[0]);
+    const ScaledDesign shape{l, std::exp(x[at]), std::exp(x[at + 1]), warm_mu, theta, F};
+    // Each branch keeps its side of l4 = 1 (appendix B): a step across it scores nothing.
+    if (request->fixed_l && (shape.l4 < 1) != (branch_below_one)) return 0;
     try {
       const CapacityFit fit = request->projectile_mass
                                   ? fit_range_and_mass(shape, request->capacity.R, *request->projectile_mass, request->material, request->settings)
@@ -105,9 +122,29 @@ Optimum search_from(const OptimizeRequest& request, const Start& start) {
   out.start = start.name;
   out.start_design = start.shape;
   // 5 % steps in each shape parameter, in (log l, log l4, log mu_b).
-  out.iterations = minimize_simplex([&](const std::vector<double>& x) { return search.cost(x, fixed.theta_i_deg, fixed.F); },
-                                    {std::log(start.shape.l), std::log(start.shape.l4), std::log(start.shape.mu_b)}, 0.05,
-                                    request.shape_tolerance, 400);
+  search.branch_below_one = start.shape.l4 < 1;
+  std::vector<double> x{std::log(start.shape.l4), std::log(start.shape.mu_b)};
+  if (!request.fixed_l) x.insert(x.begin(), std::log(start.shape.l));
+  if (request.fixed_l) {
+    // With a fixed l, in (log l4, log mu_b). The maxima's beams span decades (tab:Large_Eff:
+    // mu_b = 5.4e-5 at l = 17, 0.01 at l = 59) and sit on narrow ridges, between shapes that
+    // cannot deliver the capacity at all (the release jumps from one maximum to another as
+    // mu changes). A grid over the branch's side finds the ridge to climb: l4 from 0.70 to 0.95
+    // or 1.05 to 1.40, mu_b from 1e-6 to 0.1 in quarter decades.
+    std::vector<double> best_point = x;
+    double best_cost = 0;
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j <= 20; ++j) {
+        const std::vector<double> point{std::log(search.branch_below_one ? 0.70 + 0.05 * i : 1.05 + 0.07 * i),
+                                        std::log(least_searched_mu_b) + j * std::log(10) / 4};
+        const double c = search.cost(point, fixed.theta_i_deg, fixed.F, false);
+        if (c < best_cost) best_cost = c, best_point = point;
+      }
+    x = best_point;
+    out.start_design.l4 = std::exp(x[0]), out.start_design.mu_b = std::exp(x[1]);
+  }
+  out.iterations = minimize_simplex([&](const std::vector<double>& point) { return search.cost(point, fixed.theta_i_deg, fixed.F); }, x,
+                                    0.05, request.shape_tolerance, 400);
   // A search in which every shape failed in its integration is a numerical failure, named by the last.
   if (!(search.best > 0))
     throw Error(search.only_integration_failed ? ErrorKind::numerical : ErrorKind::out_of_range, "no shape near the " + start.name + " start delivers " +
@@ -119,6 +156,14 @@ Optimum search_from(const OptimizeRequest& request, const Start& start) {
   out.fit = search.best_fit;
   out.objective = search.best;
   out.simulations = search.simulations;
+  if (request.fixed_l) {
+    const ScaledDesign& found = out.fit.design;
+    if (std::abs(found.l4 - 1) < 0.01)
+      out.note = "the best shape on this side lies at its edge, l4 = 1: the objective grows toward the other side, and this side has no maximum of its own";
+    else if (found.mu_b < 2 * least_searched_mu_b)
+      out.note = "the best shape lies at the lightest beam searched, mu_b = " + format_significant(found.mu_b, 2) +
+                 ": the objective still grows toward a beam of no mass";
+  }
   return out;
 }
 

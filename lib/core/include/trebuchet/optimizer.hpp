@@ -24,6 +24,9 @@ struct OptimizeRequest {
   ShotSettings settings{};        ///< release criterion (Q, Q_n or Q_eps) and integrator
   double shape_tolerance = 1e-4;  ///< simplex size in log shape at which a search stops, scaled
   std::vector<ScaledDesign> starts;  ///< when given, searches start at these shapes instead of the calculator's designs
+  /// Appendix B: hold the beam ratio l = L1/L2 at this value and search (l4, mu_b) alone, on
+  /// each side of l4 = 1, where the paper finds the efficiency's two maxima.
+  std::optional<double> fixed_l;
 };
 
 struct Optimum {
@@ -33,6 +36,9 @@ struct Optimum {
   double objective = 0;         ///< the maximised quality
   int simulations = 0;          ///< shots over the whole search
   int iterations = 0;           ///< simplex iterations
+  /// With a fixed l: where the best shape found is no interior maximum of its side, why (it
+  /// lies at l4 = 1, the side's edge, or at the least mu_b searched); empty otherwise.
+  std::string note;
 };
 
 /// One search per start; each result delivers (R, T) to 1e-6. Starts are the request's, else the
