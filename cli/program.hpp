@@ -15,6 +15,7 @@
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include "exit_codes.hpp"
@@ -92,64 +93,79 @@ inline const CLI::Option* option_with_empty_value(const CLI::App& app) {
   return nullptr;
 }
 
-/// The distance between two words in single-letter edits, letters compared without case.
+/// The distance between two words in single-letter edits (insert, delete, replace, or swap two
+/// neighbours: "plto" is one from "plot"), letters compared without case.
 inline std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
+  auto same = [](char x, char y) { return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y)); };
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
     for (std::size_t j = 1; j <= b.size(); ++j) {
-      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) == std::tolower(static_cast<unsigned char>(b[j - 1]));
-      const std::size_t next = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
-      diagonal = row[j];
-      row[j] = next;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (same(a[i - 1], b[j - 1]) ? 0 : 1)});
+      if (i > 1 && j > 1 && same(a[i - 1], b[j - 2]) && same(a[i - 2], b[j - 1])) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
-  }
-  return row[b.size()];
+  return d[a.size()][b.size()];
 }
 
-/// " (did you mean --plot?)" for a word near an option or a subcommand of `app` (or of the
-/// subcommands given): at most 2 edits away, or the same but for the case or the dashes;
-/// empty when none is near.
+/// " (did you mean --plot?)" for a word near a name of `app`: a word written as an option
+/// (`--plto`) near an option of `app` or of the subcommands given, a bare word (`optimise`,
+/// `plot`) near a subcommand or, failing that, an option. Near is the same but for the case for
+/// names of one or two letters (`--r`: `--R`), one edit for names of up to 4 letters, two for
+/// longer ones; empty when none is near.
 inline std::string did_you_mean(const CLI::App& app, std::string_view word) {
+  const bool as_option = word.rfind("--", 0) == 0;
   std::string bare(word);
   bare.erase(0, bare.find_first_not_of('-'));
-  // A value ("150m", "x") is not taken for a misspelt name; a word of three letters or more,
-  // or one written as an option, is.
+  // A value ("150m", "x") is not taken for a misspelt name.
   const bool letters = std::all_of(bare.begin(), bare.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '-' || c == '_'; });
-  if (bare.empty() || !letters || (word.rfind("-", 0) != 0 && bare.size() < 3)) return "";
-  std::vector<std::string> names;
+  if (bare.empty() || !letters || (!as_option && bare.size() < 3)) return "";
+  std::vector<std::string> subcommands, options;
   std::vector<const CLI::App*> apps{&app};
   for (const CLI::App* sub : app.get_subcommands({})) {
-    names.push_back(sub->get_name());
+    subcommands.push_back(sub->get_name());
     if (sub->parsed()) apps.push_back(sub);
   }
   for (const CLI::App* a : apps)
     for (const CLI::Option* option : a->get_options())
-      for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
-  std::string best;
-  std::size_t best_distance = 3;
-  for (const std::string& name : names) {
-    std::string name_bare = name;
-    name_bare.erase(0, name_bare.find_first_not_of('-'));
-    const std::size_t distance = edit_distance(bare, name_bare);
-    if (distance < best_distance && distance < std::max<std::size_t>(name_bare.size(), 2)) best = name, best_distance = distance;
-  }
+      for (const std::string& name : option->get_lnames()) options.push_back("--" + name);
+  auto nearest = [&](const std::vector<std::string>& names) {
+    std::string best;
+    std::size_t best_distance = 0;
+    for (const std::string& name : names) {
+      std::string name_bare = name;
+      name_bare.erase(0, name_bare.find_first_not_of('-'));
+      const std::size_t allowed = name_bare.size() <= 2 ? 0 : name_bare.size() <= 4 ? 1 : 2, distance = edit_distance(bare, name_bare);
+      if (distance <= allowed && (best.empty() || distance < best_distance)) best = name, best_distance = distance;
+    }
+    return best;
+  };
+  std::string best = as_option ? nearest(options) : nearest(subcommands);
+  if (best.empty() && !as_option) best = nearest(options);
   return best.empty() || best == word ? "" : " (did you mean " + best + "?)";
 }
 
 /// The arguments with a unit written apart from its number joined to it: `--M 3.11 tonnes`
-/// reads as `--M '3.11 tonnes'`, where the unit would otherwise be taken for a file name.
+/// reads as `--M '3.11 tonnes'`, and `--R=400 m` as `--R='400 m'`, where the unit would
+/// otherwise be taken for a file name. Nothing after a bare `--` is joined.
 inline std::vector<std::string> with_units_joined(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
-  for (std::size_t i = 2; i < args.size(); ++i) {
-    const std::string& number = args[i - 1];
-    const bool is_number = !number.empty() && (std::isdigit(static_cast<unsigned char>(number[0])) || number[0] == '.' ||
-                                               ((number[0] == '-' || number[0] == '+') && number.size() > 1 && std::isdigit(static_cast<unsigned char>(number[1]))));
-    if (is_unit_word(args[i]) && is_number && args[i - 2].rfind("--", 0) == 0 && args[i - 2].find('=') == std::string::npos) {
+  auto is_number = [](std::string_view text) {
+    return !text.empty() && (std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '.' ||
+                             ((text[0] == '-' || text[0] == '+') && text.size() > 1 && std::isdigit(static_cast<unsigned char>(text[1]))));
+  };
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    if (args[i - 1] == "--") break;
+    if (!is_unit_word(args[i])) continue;
+    const std::string& before = args[i - 1];
+    const auto equals = before.find('=');
+    const bool option_equals_number = before.rfind("--", 0) == 0 && equals != std::string::npos && is_number(std::string_view(before).substr(equals + 1));
+    const bool option_then_number = i >= 2 && is_number(before) && args[i - 2].rfind("--", 0) == 0 && args[i - 2] != "--" &&
+                                    args[i - 2].find('=') == std::string::npos;
+    if (option_equals_number || option_then_number) {
       args[i - 1] += " " + args[i];
       args.erase(args.begin() + static_cast<std::ptrdiff_t>(i));
+      --i;
     }
   }
   return args;
@@ -184,16 +200,14 @@ int run_program(CLI::App& app, Program program, int argc, char** argv, Run run) 
     return exit_code(program, ErrorKind::usage);
   } catch (const CLI::ExtrasError& e) {
     // "The following arguments were not expected: --plto": each with the nearest name.
+    // CLI11 lists them last first (it was given the arguments reversed): put back in order.
     std::string text = e.what();
     if (const auto colon = text.find(": "); colon != std::string::npos) {
-      std::string words = text.substr(colon + 2), said = text.substr(0, colon + 2);
-      std::size_t at = 0;
-      while (at < words.size()) {
-        const std::size_t end = std::min(words.find(' ', at), words.size());
-        const std::string word = words.substr(at, end - at);
-        said += (at ? " " : "") + word + did_you_mean(app, word);
-        at = end + 1;
-      }
+      std::vector<std::string> words;
+      std::istringstream listed(text.substr(colon + 2));
+      for (std::string word; listed >> word;) words.push_back(word);
+      std::string said = text.substr(0, colon + 2);
+      for (auto word = words.rbegin(); word != words.rend(); ++word) said += (word == words.rbegin() ? "" : " ") + *word + did_you_mean(app, *word);
       text = said;
     }
     std::cerr << name << ": " << text << "; see " << name << " --help\n";

@@ -174,7 +174,7 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   const double flight_drop = settings.range_from_release ? 0 : v.h - target_level;
   std::vector<Vec2> path;  // in the frame of the shot (target toward -x), height from the release [m]
   const auto end = fly({-v.x, 0}, {-v.v * std::cos(A), v.v * std::sin(A)}, flight_drop, drag, g, &path, 201);
-  if (!end) throw Error(ErrorKind::numerical, "the flight of the picture did not come down; tighten {{rtol}}");
+  if (!end) throw Error(ErrorKind::numerical, "the flight drawn did not come down where the shot's did (an internal error; please report it with the command)");
   std::vector<SitePoint> flight;
   for (const Vec2& p : path) flight.push_back({-p.x, v.h + p.y});
   std::ostringstream flight_csv;

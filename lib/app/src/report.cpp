@@ -212,8 +212,9 @@ std::string completion_table(const Completion& c, const ShotSettings& settings, 
         << format_significant(100 * gain, 3) << " % against the engine of highest Q above, at Q = " << format_significant(100 * longest->verification.Q, 3)
         << " % (against " << format_significant(100 * c.verification.Q, 3) << " %), eps = " << format_significant(100 * longest->verification.eps, 3)
         << " %; it chooses:\n" << engine_table(longest->engine, units)
-        << "the engine of highest Q balances range against the forces on the frame (eq:Q); in this model (the paper's ideal engine, "
-           "no friction) no engine with these values throws further than the longest\n";
+        << "the engine of highest Q balances range against the forces on the frame (eq:Q); the longest range is the farthest "
+           "the search found with these values, in this model (the paper's ideal engine, no friction)"
+        << (gain < 0 ? "; here it found no engine throwing further than the one of highest Q" : "") << "\n";
   } else if (!longest_note.empty()) {
     out << "\nno longest range for comparison: " << longest_note << "\n";
   }

@@ -174,7 +174,11 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   try {
     check_engine(e);
   } catch (const Error& error) {
-    throw Error(error.kind(), error.message([&](std::string_view key) { return engine_key_name(where, std::string(key)); }));
+    const std::string said = error.message([&](std::string_view key) { return engine_key_name(where, std::string(key)); });
+    throw Error(error.kind(), in.mb_from_D && said.find(engine_key_name(where, "mb")) != std::string::npos
+                                  ? said + " (mb = " + format_significant(e.mb, 4) + " kg follows from " + engine_key_name(where, "D") + " = " +
+                                        format_significant(e.D, 4) + " m by eq:BeamMass; give another " + engine_key_name(where, "D") + ")"
+                                  : said);
   }
   // L3 and F both, as the programs write them: L3 is used, and F must agree with it to the
   // rounding of values written to 3 significant digits or more (2e-3, with room to spare).
@@ -183,7 +187,9 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
                                       format_significant(arm_fraction(e), 6) + ", not F = " + format_significant(*v.F, 6) +
                                       "; both fix the counterweight arm, give one of them");
   if (v.R.has_value() != v.T.has_value()) throw Error(ErrorKind::usage, named + ": a capacity needs both R and T; give both or neither");
-  if (v.R && !(*v.R > 0 && *v.T > 0)) throw Error(ErrorKind::bad_number, named + ": R and T must be positive");
+  if (v.R && !(*v.R > 0 && *v.T > 0))
+    throw Error(ErrorKind::bad_number, named + ": R = " + format_significant(*v.R, 6) + " m, T = " + format_significant(*v.T, 6) +
+                                           " J: R and T must be positive; give the predicted range and energy, e.g. R = 150 m and T = 40 kJ");
   if (v.R) in.capacity = Capacity{*v.R, *v.T, 0};
   return in;
 }

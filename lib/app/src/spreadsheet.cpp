@@ -107,20 +107,21 @@ struct Formats {
   lxw_format* heading;
   lxw_format* input;   // cells the user types into
   lxw_format* note;
-  std::map<std::pair<int, bool>, lxw_format*> shown;  // a number shown to 4 significant digits, by its decimals and whether it is an input
+  std::map<std::pair<int, bool>, lxw_format*> shown;  // by kind (below) and whether it is an input
 
-  // The format that shows `value` to 4 significant digits ("0.000" for 1.234, "#,##0" for
-  // 12345), on the inputs' colour for an input; the cell keeps every digit, and exports at
-  // full precision.
+  // How a number is shown. The format is fixed when the cell is written, but the value follows
+  // the inputs, so it must read well at any size: a whole number (a count, a given) in
+  // General; a tiny constant in scientific notation; any other result by its size, to 3 to 5
+  // significant digits, never rounding a value above 5e-5 to 0: "[>=1000]#,##0;[>=10]0.0#;0.0###"
+  // (negatives take the last form). An input shows what was typed (General). Every cell keeps
+  // every digit, and exports at full precision.
   lxw_format* four_digits(double value, bool is_input = false) {
-    // A whole number (30 deg, 425 m, the 5th segment) is shown whole.
-    const int decimals = !std::isfinite(value) || (value == std::round(value) && std::abs(value) < 1e15)
-                             ? 0
-                             : std::clamp(3 - static_cast<int>(std::floor(std::log10(std::abs(value)))), 0, 9);
-    lxw_format*& format = shown[{decimals, is_input}];
+    const int kind = is_input || (value == std::round(value) && std::abs(value) < 1e15) ? 0 : std::abs(value) < 1e-3 ? 1 : 2;
+    lxw_format*& format = shown[{kind, is_input}];
     if (!format) {
       format = workbook_add_format(book);
-      format_set_num_format(format, decimals == 0 ? "#,##0" : ("0." + std::string(static_cast<std::size_t>(decimals), '0')).c_str());
+      if (kind == 1) format_set_num_format(format, "0.000E+00");
+      if (kind == 2) format_set_num_format(format, "[>=1000]#,##0;[>=10]0.0#;0.0###");
       if (is_input) format_set_bg_color(format, input_colour);
     }
     return format;

@@ -77,6 +77,15 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   for (int k = 0; k < load_count; ++k) out.loads[k] = {shot.loads[k].value * load_unit[k], shot.loads[k].t * time_unit};
   const double D = engine.D > 0 ? engine.D : engine.mb > 0 ? beam_diameter(engine.mb, beam_length(engine), engine.material) : 0;
   if (D > 0) out.beam = beam_strength(D, L2, engine.M, out.loads[beam_moment_load].value, engine.material);
+  if (engine.D > 0 && engine.mb > 0) {
+    // The beam's mass moves the engine, its diameter carries the stress: a pair that disagrees
+    // with the wood (eq:BeamMass) by more than 10 % is said to, with the density it implies.
+    const double implied_density = engine.mb / beam_mass(engine.D, beam_length(engine), engine.material) * engine.material.wood_density;
+    if (std::abs(implied_density / engine.material.wood_density - 1) > 0.1)
+      out.notes.push_back("D = " + format_significant(engine.D, 3) + " m and mb = " + format_significant(engine.mb, 4) + " kg make a wood of " +
+                          format_significant(implied_density, 3) + " kg/m3 (eq:BeamMass), not " + format_significant(engine.material.wood_density, 3) +
+                          ": the motion uses mb, the stress D");
+  }
   auto warn = [&](const std::optional<double>& t, const std::string& what) {
     if (t) out.warnings.push_back(what + " at t = " + format_significant(*t * time_unit, 4) + " s, before the release at " +
                                   format_significant(out.t_release, 4) + " s: the model no longer holds there, and the figures are not physical");

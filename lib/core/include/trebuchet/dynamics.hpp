@@ -48,8 +48,9 @@ struct Snapshot {
   double counterweight_height = 0; ///< of the counterweight above the engine's base (< 0: below it)
   double tip_height = 0;           ///< of the beam's tip above the engine's base (< 0: below it)
   /// Bending moment in the beam at the pivot, in M g L2: what the short section passes to the
-  /// long one, > 0 turning the long arm up. At rest with the beam level it is the M g L2 of
-  /// eq:Strain; the beam's rigid turn adds its inertia.
+  /// long one, > 0 turning the long arm up. Held at rest with the beam level it is the M g L2 of
+  /// eq:Strain plus the short section's own weight, mu_b/(2(l + 1)); in the shot the beam's
+  /// rigid turn adds its inertia.
   double beam_moment = 0;
   BodyEnergies energies;           ///< phase III: the projectile's are 0
   double energy = 0;               ///< kinetic + potential of all bodies, scaled; conserved

@@ -55,7 +55,7 @@ double beam_diameter(double mb, double Lb, const Material& material);
 struct BeamStrength {
   double D = 0;               ///< beam diameter [m]
   double beta2 = 0;           ///< u2/L2 of eq:bend_L2 that the counterweight gives it, scaled
-  double strain_at_rest = 0;  ///< eq:Strain at the pivot, the beam level under the counterweight (being cocked), scaled
+  double strain_at_rest = 0;  ///< eq:Strain at the pivot, the beam level under the counterweight (being cocked; the beam's own weight left out, as there), scaled
   double stress_at_rest = 0;  ///< M_e times it [Pa]
   double strain_peak = 0;     ///< from the largest bending moment at the pivot during the shot, scaled
   double stress_peak = 0;     ///< [Pa]
