@@ -102,7 +102,9 @@ int run_monte_carlo(const Options& o, bool complete) {
   if (!o.plot.empty()) {
     std::vector<std::string> described;
     for (const UncertainInput& u : inputs) described.push_back(describe_uncertain(u));
-    write_picture_folder(o.plot, histogram_pictures(summary, join(described, ", ")), {"histogram.gp"});
+    // The title says what was sampled and how each shot flew and was released; a backslash and n break its line in gnuplot.
+    const std::string scene = (settings.air ? describe_air(*settings.air, 0) : std::string("in vacuum")) + ", " + describe_release(settings);
+    write_picture_folder(o.plot, histogram_pictures(summary, join(described, ", ") + "\\n" + scene), {"histogram.gp"});
   }
   return exit_success;
 }

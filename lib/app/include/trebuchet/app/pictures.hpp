@@ -29,7 +29,8 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
 std::vector<std::string> picture_scripts();
 
 /// The histograms of a Monte Carlo run (uncertainty.hpp): R and T of the samples that worked,
-/// with their 5, 50 and 95 % percentiles marked; `title` says what was uncertain. The script
+/// with their 5, 50 and 95 % percentiles marked; `title` says what was uncertain and how the
+/// shots flew (gnuplot text: a backslash and n between lines, no double quotes). The script
 /// histogram.gp writes histogram.svg.
 std::vector<PictureFile> histogram_pictures(const MonteCarloSummary& summary, const std::string& title);
 
