@@ -52,6 +52,7 @@ Material material_from(const Options& options, const Material& reference) {
   if (!options.wood_density.empty())
     material.wood_density = parse_positive(options.wood_density, UnitDimension::density, "--wood-density");
   if (!options.g.empty()) material.g = parse_positive(options.g, UnitDimension::acceleration, "--g");
+  check_material(material);  // a material beyond the ordinary is named as such, not as a capacity out of range
   return material;
 }
 
@@ -71,6 +72,7 @@ int run(const Options& options, bool format_given) {
   if (options.format != "table" && options.format != "csv" && options.format != "json")
     throw Error(ErrorKind::usage, "--format: '" + options.format + "' is not a format; use table, csv or json");
   const int digits = options.digits.empty() ? default_csv_digits : parse_digits(options.digits, "--digits");
+  const UnitSystem units = parse_unit_system(options.units, "--units");  // read first, whatever the mode
   if (!options.spreadsheet.empty()) refuse_output_over_input(options.spreadsheet, "spreadsheet", {options.table_file, options.batch});
   const ScalingTable table_from_file =
       options.table_file.empty() ? ScalingTable{} : load_scaling_table(options.table_file);
@@ -181,7 +183,7 @@ int run(const Options& options, bool format_given) {
                                             "e.g. --R 150m --m 50kg");
   request.first = givens[0];
   request.second = givens[1];
-  print(in_option_words(design_optimal_engine(table, request)), options.format, digits, parse_unit_system(options.units, "--units"));
+  print(in_option_words(design_optimal_engine(table, request)), options.format, digits, units);
   return 0;
 }
 

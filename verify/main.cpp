@@ -43,7 +43,8 @@ int main(int argc, char** argv) {
   const Subcommands sub = declare_subcommands(app, options);
   // A first word that is no subcommand, option or file but near a subcommand was meant as it
   // (`complet --Lb 10m`), not as a design file for shot.
-  if (argc > 1 && argv[1][0] != '-' && !std::filesystem::exists(argv[1]) &&
+  std::error_code unreadable;  // a name too long or a loop of links is no file either, never an abort
+  if (argc > 1 && argv[1][0] != '-' && !std::filesystem::exists(argv[1], unreadable) &&
       std::find(std::begin(subcommand_names), std::end(subcommand_names), std::string(argv[1])) == std::end(subcommand_names))
     if (const std::string hint = did_you_mean(app, argv[1]); !hint.empty()) {
       std::cerr << "trebuchet-verify: '" << argv[1] << "' is no subcommand and no file" << hint << "\n";
@@ -52,7 +53,8 @@ int main(int argc, char** argv) {
   std::vector<char*> args = with_default_subcommand(argc, argv);
   return run_program(app, Program::verify, static_cast<int>(args.size()), args.data(), [&] {
     // A word that is no file but near an option or a subcommand was meant as one: `plot`, `optimise`.
-    if (!options.input.empty() && options.input != "-" && !std::filesystem::exists(options.input))
+    std::error_code unreadable_input;
+    if (!options.input.empty() && options.input != "-" && !std::filesystem::exists(options.input, unreadable_input))
       if (const std::string hint = did_you_mean(app, options.input); !hint.empty())
         throw Error(ErrorKind::usage, "there is no file '" + options.input + "' to read" + hint);
     // --samples and --seed mean something only to a Monte Carlo run.

@@ -51,6 +51,12 @@ PendingOutput::PendingOutput(std::string path, std::string option, bool folder, 
   } else {
     const int fd = mkstemp(name.data());
     if (fd < 0) throw Error(ErrorKind::usage, fail + "; give a file you can write to");
+    // mkstemp makes it private (0600); the output gets the mode a new file would get, or the
+    // mode of the file it replaces.
+    const mode_t mask = umask(0);
+    umask(mask);
+    struct stat replaced {};
+    fchmod(fd, exists && stat(path_.c_str(), &replaced) == 0 ? (replaced.st_mode & 07777) : (0666 & ~mask));
     close(fd);
   }
   temporary_ = name;

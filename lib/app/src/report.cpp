@@ -209,12 +209,12 @@ std::string completion_table(const Completion& c, const ShotSettings& settings, 
     const double gain = longest->verification.capacity.R / c.verification.capacity.R - 1;
     out << "\nthe longest range with the same attested values (--quality range): R = "
         << quantity_text(longest->verification.capacity.R, UnitDimension::length, units, 4) << ", " << (gain >= 0 ? "+" : "")
-        << format_significant(100 * gain, 3) << " % against the engine of highest Q above, at Q = " << format_significant(100 * longest->verification.Q, 3)
+        << format_significant(100 * gain, 3) << " % against the engine of " << goal.substr(4) << " above, at Q = " << format_significant(100 * longest->verification.Q, 3)
         << " % (against " << format_significant(100 * c.verification.Q, 3) << " %), eps = " << format_significant(100 * longest->verification.eps, 3)
         << " %; it chooses:\n" << engine_table(longest->engine, units)
-        << "the engine of highest Q balances range against the forces on the frame (eq:Q); the longest range is the farthest "
-           "the search found with these values, in this model (the paper's ideal engine, no friction)"
-        << (gain < 0 ? "; here it found no engine throwing further than the one of highest Q" : "") << "\n";
+        << (criterion.release == Release::quality ? "the engine of highest Q balances range against the forces on the frame (eq:Q); " : "")
+        << "the longest range is the farthest the search found with these values, in this model (the paper's ideal engine, no friction)"
+        << (gain < 0 ? "; here it found no engine throwing further than the one of " + goal.substr(4) : std::string()) << "\n";
   } else if (!longest_note.empty()) {
     out << "\nno longest range for comparison: " << longest_note << "\n";
   }

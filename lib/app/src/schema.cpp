@@ -168,6 +168,9 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   material.g = v.g.value_or(material.g);
   if (v.D && !v.mb) {  // eq:BeamMass: a round beam of the material's wood
     if (!(e.D > 0)) throw Error(ErrorKind::bad_number, engine_key_name(where, "D") + " = 0 gives no beam; give the beam's diameter, or its mass " + engine_key_name(where, "mb"));
+    if (!(e.D <= 1e6))
+      throw Error(ErrorKind::bad_number, engine_key_name(where, "D") + " = " + format_significant(e.D, 6) +
+                                             " m is not of ordinary size for the beam diameter; give one from 1e-06 to 1e+06 m");
     e.mb = beam_mass(e.D, beam_length(e), material);
     in.mb_from_D = true;
   }
@@ -231,8 +234,9 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
     return std::any_of(columns.begin(), columns.end(), [&](const Column& c) { return c.role == Column::engine && c.name.key == key; });
   };
   std::string missing;
-  for (const char* key : {"L1", "L2", "L4", "M", "m", "mb"})
+  for (const char* key : {"L1", "L2", "L4", "M", "m"})
     if (!has(key)) missing += (missing.empty() ? "" : ", ") + std::string(key);
+  if (!has("mb") && !has("D")) missing += (missing.empty() ? "" : ", ") + std::string("mb or D");
   if (!has("L3") && !has("F")) missing += (missing.empty() ? "" : ", ") + std::string("L3 or F");
   if (!missing.empty())
     throw Error(ErrorKind::usage, source + " is neither JSON nor CSV of designs: its header lacks " + missing +

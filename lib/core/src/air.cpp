@@ -105,7 +105,10 @@ std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Dr
   for (int n = 0; n < 4096; ++n) {
     const double t_b = t_a + chunk;
     if (!integrate(t_a, a, t_b, b)) return std::nullopt;
+    // Down through the level within this chunk; a flight that never rose to it (a target above
+    // its apex in air) never comes down there.
     if (b[1] <= -drop && b[3] < 0) {
+      if (!(a[1] > -drop)) return std::nullopt;
       double end[4];
       const double t_end = find_root(
           [&](double t) {

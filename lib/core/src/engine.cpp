@@ -30,6 +30,16 @@ Engine engine_of(const ScaledDesign& design, double L2, const Material& material
   return e;
 }
 
+namespace {
+// A beam diameter within a factor 10^3 of the beam's length either way.
+void proportion_of_beam(const Engine& e) {
+  const double Lb = e.L1 + e.L2;
+  if (!(e.D <= 1e3 * Lb && Lb <= 1e3 * e.D))
+    throw Error(ErrorKind::bad_number, "{{D}} = " + format_significant(e.D, 6) + " m and the beam's length L1 + L2 = " + format_significant(Lb, 6) +
+                                           " m differ by more than a factor 10^3; give the beam's diameter in its own unit, e.g. {{D}} 25cm");
+}
+}  // namespace
+
 void check_engine(const Engine& e) {
   auto positive = [&](double value, const char* key, const char* what) {
     if (!(value > 0))
@@ -61,6 +71,10 @@ void check_engine(const Engine& e) {
   for (const auto& [value, key, what] : {std::tuple{e.M, "M", "counterweight mass"}, {e.m, "m", "projectile mass"}})
     check_ordinary(value, 1e-9, 1e12, key, "kg", what);
   if (e.mb > 0) check_ordinary(e.mb, 1e-9, 1e12, "mb", "kg", "beam mass");
+  if (e.D > 0) {  // the beam's diameter carries its stress: within the sizes, and a beam, not a plank or a tower
+    check_ordinary(e.D, 1e-6, 1e6, "D", "m", "beam diameter");
+    proportion_of_beam(e);
+  }
   check_material(e.material);
   const auto proportion = [](double a, const char* key_a, double b, const char* key_b) {
     constexpr double widest = 1e6;

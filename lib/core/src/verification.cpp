@@ -42,8 +42,11 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
     if (air) {
       const auto end = fly({behind, 0}, {vx, vy}, end_drop, drag_of(*air, engine.m), g);
       if (!end)
-        throw Error(ErrorKind::numerical, "the flight through " + describe_air(*air, engine.m) +
-                                              " did not come down to its end; give the air, the wind and the projectile's density values of ordinary size");
+        throw Error(end_drop < 0 ? ErrorKind::usage : ErrorKind::numerical,
+                    "the flight through " + describe_air(*air, engine.m) + " did not come down to its end" +
+                        (end_drop < 0 ? ": the target level " + format_significant(target_level, 4) +
+                                            " m lies above the apex of the flight in air (drag lowers it); give a lower target level"
+                                      : "; give the air, the wind and the projectile's density values of ordinary size"));
       range = end->range, end_velocity = end->velocity;
       if (!air->drag_coefficient) {
         // The fastest the flight meets the air is at one of its ends (drag slows the stone
