@@ -114,7 +114,7 @@ class PhaseRecord {
   }
 
   // The values of load k at the samples before t_end, then `at_end` at t_end: where its largest
-  // value is sought (load_peaks).
+  // value is sought (simulate_shot, the builder's loads).
   std::vector<Point> load_points(int k, double t_end, double at_end) const {
     std::vector<Point> points;
     for (const Sample& sample : samples_)
