@@ -16,7 +16,9 @@ int run_complete(const Options& o) {
   if (!o.plot.empty())
     throw Error(ErrorKind::usage, "--plot draws the histogram of a Monte Carlo run; give a value as a range or a spread, or drop --plot");
   const CompletionRequest request = completion_request(o);
-  Completion completion = complete_engine(request);
+  // "Could it reach that far?" wants the longest range beside the best-balanced engine.
+  CompletionReport report = complete_with_longest(request, option_word);
+  Completion& completion = report.completion;
   // The calculator's note and warnings speak of its options; those only it has are said to be its.
   const auto in_calculator_words = [](std::string& text) {
     std::vector<std::string> only_calculator;
@@ -28,20 +30,8 @@ int run_complete(const Options& o) {
   in_calculator_words(completion.calculator_note);
   if (completion.calculator)
     for (std::string& warning : completion.calculator->warnings) in_calculator_words(warning);
-  // "Could it throw that far?" wants the longest range beside the best-balanced engine: the
-  // same attested values, completed for the range.
-  std::optional<Completion> longest;
-  std::string longest_note;
-  if (request.settings.criterion.release != Release::range) {
-    CompletionRequest for_range = request;
-    for_range.settings.criterion.release = Release::range;
-    try {
-      longest = complete_engine(for_range);
-    } catch (const Error& e) {
-      longest_note = e.message(option_word);
-    }
-  }
-  const Completion* alternative = longest ? &*longest : nullptr;
+  const Completion* alternative = report.longest ? &*report.longest : nullptr;
+  const std::string& longest_note = report.longest_note;
   if (o.format == Format::json) std::cout << pretty_json(completion_json(completion, request.settings, alternative, longest_note));
   else std::cout << completion_table(completion, request.settings, o.units, alternative, longest_note);
   return exit_success;

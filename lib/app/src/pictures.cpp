@@ -152,61 +152,40 @@ std::string scene_of(const ShotSettings& settings) {
 
 std::vector<std::string> picture_scripts() { return {"engine.gp", "paths.gp", "forces.gp", "energy.gp", "release.gp", "animation.gp"}; }
 
-std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings) {
+ShotSeries shot_series(const Engine& engine, const ShotSettings& settings) {
+  ShotSeries series;
   const ScaledDesign d = scaled_design(engine);
-  const double target_level = settings.target_level;
-  const double g = engine.material.g, H = pivot_height(engine);
-  const double mg_kN = engine.m * g / 1000, Mg_kN = engine.M * g / 1000, energy_kJ = engine.M * g * engine.L2 / 1000;
+  const double g = engine.material.g;
   const double time_unit = std::sqrt(engine.L2 / g);  // section 3 [s]
-  const Verification v = verify_engine(engine, settings);
-  std::vector<TracePoint> trace, unreleased;
+  series.time_unit = time_unit;
+  const Verification& v = series.verification = verify_engine(engine, settings);
+  std::vector<TracePoint>& trace = series.trace;
+  std::vector<TracePoint> unreleased;
   simulate_shot(d, release_criterion(engine, settings), settings.integrator, &trace, v.t_release / time_unit / 200, &unreleased);
   const Moments m = moments_of(trace);
-  auto seconds = [&](std::size_t i) { return trace[i].t * time_unit; };
-  const std::string scene = scene_of(settings), warnings = warning_labels(v);
-  std::vector<PictureFile> files;
-  files.push_back({"shot.csv", trace_csv(trace, engine)});
+  series.liftoff = m.liftoff, series.peak_reaction = m.peak_reaction, series.first_extreme = m.first_extreme,
+  series.second_extreme = m.second_extreme, series.release = m.release;
 
   // The flight the shot computed, from the release to its end (the target level, or back at the
   // release height for Denny's range), in vacuum or through the settings' air.
   const double A = radians(v.A_deg);
   const Drag drag = settings.air ? drag_of(*settings.air, engine.m) : Drag{};
-  const double flight_drop = settings.range_from_release ? 0 : v.h - target_level;
+  const double flight_drop = settings.range_from_release ? 0 : v.h - settings.target_level;
   std::vector<Vec2> path;  // in the frame of the shot (target toward -x), height from the release [m]
   const auto end = fly({-v.x, 0}, {-v.v * std::cos(A), v.v * std::sin(A)}, flight_drop, drag, g, &path, 201);
   if (!end) throw Error(ErrorKind::numerical, "the flight drawn did not come down where the shot's did (an internal error; please report it with the command)");
-  std::vector<SitePoint> flight;
-  for (const Vec2& p : path) flight.push_back({-p.x, v.h + p.y});
-  std::ostringstream flight_csv;
-  flight_csv << "x_m,y_m\n";
-  for (const SitePoint& p : flight) flight_csv << num(p.x) << "," << num(p.y) << "\n";
-  files.push_back({"flight.csv", flight_csv.str()});
-  // The stone on its flight `after` seconds past the release (at the end once it has landed).
-  auto stone_at = [&](double after) {
-    const double k = std::clamp(after / end->time, 0.0, 1.0) * (flight.size() - 1);
-    const std::size_t i = std::min(static_cast<std::size_t>(k), flight.size() - 2);
-    const double f = k - i;
-    return SitePoint{flight[i].x + f * (flight[i + 1].x - flight[i].x), flight[i].y + f * (flight[i + 1].y - flight[i].y)};
-  };
+  for (const Vec2& p : path) series.flight.push_back({-p.x, v.h + p.y});
+  series.flight_time = end->time;
 
-  // Q(t), eps(t), R(t) over phase II, and the running extremes of eq:F, each over its value at the release.
-  std::ostringstream release_csv;
-  release_csv << "t_s,Q_over_Q_release,eps_over_eps_release,R_over_R_release,FS_perp,FR,FRh_max,FRh_min\n";
+  // Q(t), eps(t), R(t) over phase II, and the running extremes of eq:F.
   ForceExtremes running;
   for (std::size_t i = 0; i <= m.release; ++i) running.add(force_values(trace[i].snapshot));
-  const ForceExtremes final_extremes = running;
+  series.final_extremes = running.max;
   running = ForceExtremes{};
   std::vector<TracePoint> phase_two(trace.begin(), trace.begin() + m.release + 1);
   phase_two.insert(phase_two.end(), unreleased.begin(), unreleased.end());
   // Each moment as a release (shot.hpp), so that Q is the Q_n the shot maximised and R the
-  // range at level 0; each over its value at the release itself.
-  struct Row {
-    double t;
-    ReleasePoint r;
-    ForceValues extremes;
-  };
-  std::vector<Row> rows;
-  std::size_t release_row = 0;
+  // range at level 0.
   for (std::size_t i = 0; i < phase_two.size(); ++i) {
     const TracePoint& p = phase_two[i];
     const ForceExtremes before = running;
@@ -214,14 +193,99 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
     if (p.phase != Phase::lifted) continue;
     const ReleasePoint r = release_point(d, settings.criterion, p.t, p.state, p.snapshot, before);
     if (!(r.range > 0)) continue;
-    if (i == m.release) release_row = rows.size();
-    rows.push_back({p.t * time_unit, r, running.max});
+    if (i == m.release) series.release_row = series.phase_two.size();
+    series.phase_two.push_back({p.t * time_unit, r.quality, r.efficiency, r.range, running.max});
   }
-  for (const Row& row : rows) {
-    const ReleasePoint& at = rows[release_row].r;
-    release_csv << num(row.t) << "," << num(row.r.quality / at.quality) << "," << num(row.r.efficiency / at.efficiency) << ","
-                << num(row.r.range / at.range);
-    for (int k = 0; k < force_count; ++k) release_csv << "," << num(row.extremes[k] / final_extremes.max[k]);
+  return series;
+}
+
+SitePoint ShotSeries::stone_at(double after) const {
+  const double k = std::clamp(after / flight_time, 0.0, 1.0) * static_cast<double>(flight.size() - 1);
+  const std::size_t i = std::min(static_cast<std::size_t>(k), flight.size() - 2);
+  const double f = k - static_cast<double>(i);
+  return SitePoint{flight[i].x + f * (flight[i + 1].x - flight[i].x), flight[i].y + f * (flight[i + 1].y - flight[i].y)};
+}
+
+nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& engine) {
+  const double Mg = engine.M * engine.material.g;  // [N]: the scaled forces' unit
+  const double energy_unit = Mg * engine.L2;        // [J], and the beam moment's [N m]
+  using json = nlohmann::ordered_json;
+  json frames = json::object();
+  // After the release the sling and projectile are gone: their values are null.
+  const char* columns[] = {"t", "theta_deg", "psi_deg", "phi_deg", "hinge_x", "hinge_y", "counterweight_x", "counterweight_y", "tip_x", "tip_y",
+                           "projectile_x", "projectile_y", "FS_perp", "sling_tension", "FR", "FRh", "FRv", "FH", "normal", "beam_moment",
+                           "E_counterweight", "E_beam", "E_projectile_kinetic", "E_projectile_potential"};
+  for (const char* column : columns) frames[column] = json::array();
+  frames["phase"] = json::array();
+  for (const TracePoint& p : series.trace) {
+    const Snapshot& s = p.snapshot;
+    const bool gone = p.phase == Phase::released;
+    const SitePoint hinge = site_point(s.hinge, engine), cw = site_point(s.counterweight, engine), tip = site_point(s.tip, engine),
+                    pr = site_point(s.projectile, engine);
+    const std::optional<double> values[] = {p.t * series.time_unit, degrees(p.state.theta), degrees(p.state.psi),
+                                            gone ? std::nullopt : std::optional(degrees(p.state.phi)), hinge.x, hinge.y, cw.x, cw.y, tip.x, tip.y,
+                                            gone ? std::nullopt : std::optional(pr.x), gone ? std::nullopt : std::optional(pr.y),
+                                            s.sling_perpendicular * Mg, gone ? std::nullopt : std::optional(s.sling_tension * Mg),
+                                            force_values(s)[pivot_reaction] * Mg, s.pivot_reaction.x * Mg, s.pivot_reaction.y * Mg,
+                                            std::hypot(s.hinge_force.x, s.hinge_force.y) * Mg, s.normal_force * Mg, s.beam_moment * energy_unit,
+                                            s.energies.counterweight * energy_unit, s.energies.beam * energy_unit,
+                                            s.energies.projectile_kinetic * energy_unit, s.energies.projectile_potential * energy_unit};
+    for (std::size_t k = 0; k < std::size(columns); ++k) frames[columns[k]].push_back(values[k] ? json(*values[k]) : json(nullptr));
+    frames["phase"].push_back(p.phase == Phase::trough ? "I" : p.phase == Phase::lifted ? "II" : "III");
+  }
+  json flight = {{"x", json::array()}, {"y", json::array()}, {"time", series.flight_time}};
+  for (const SitePoint& p : series.flight) flight["x"].push_back(p.x), flight["y"].push_back(p.y);
+  // Phase II as releases, each over its value at the release (as release.svg draws them).
+  const ShotSeries::Moment& at = series.phase_two[series.release_row];
+  json phase_two = json::object();
+  for (const char* column : {"t", "Q", "eps", "R", "FS_perp", "FR", "FRh_max", "FRh_min"}) phase_two[column] = json::array();
+  for (const ShotSeries::Moment& row : series.phase_two) {
+    phase_two["t"].push_back(row.t);
+    phase_two["Q"].push_back(row.quality / at.quality);
+    phase_two["eps"].push_back(row.efficiency / at.efficiency);
+    phase_two["R"].push_back(row.range / at.range);
+    const char* extremes[] = {"FS_perp", "FR", "FRh_max", "FRh_min"};
+    for (int k = 0; k < force_count; ++k) phase_two[extremes[k]].push_back(row.running_max[k] / series.final_extremes[k]);
+  }
+  return {{"pivot_height", pivot_height(engine)},
+          {"energy_drop", potential_energy_drop(engine)},
+          {"moments", {{"liftoff", series.liftoff}, {"t1", series.first_extreme}, {"tm", series.peak_reaction}, {"t2", series.second_extreme},
+                       {"release", series.release}}},
+          {"frames", frames},
+          {"flight", flight},
+          {"phase_two", phase_two},
+          {"release_row", series.release_row}};
+}
+
+std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings) {
+  const ShotSeries series = shot_series(engine, settings);
+  const double target_level = settings.target_level;
+  const double g = engine.material.g, H = pivot_height(engine);
+  const double mg_kN = engine.m * g / 1000, Mg_kN = engine.M * g / 1000, energy_kJ = engine.M * g * engine.L2 / 1000;
+  const ScaledDesign d = scaled_design(engine);
+  const Verification& v = series.verification;
+  const std::vector<TracePoint>& trace = series.trace;
+  Moments m;
+  m.liftoff = series.liftoff, m.peak_reaction = series.peak_reaction, m.first_extreme = series.first_extreme,
+  m.second_extreme = series.second_extreme, m.release = series.release;
+  auto seconds = [&](std::size_t i) { return trace[i].t * series.time_unit; };
+  const std::string scene = scene_of(settings), warnings = warning_labels(v);
+  std::vector<PictureFile> files;
+  files.push_back({"shot.csv", trace_csv(trace, engine)});
+  const std::vector<SitePoint>& flight = series.flight;
+  std::ostringstream flight_csv;
+  flight_csv << "x_m,y_m\n";
+  for (const SitePoint& p : flight) flight_csv << num(p.x) << "," << num(p.y) << "\n";
+  files.push_back({"flight.csv", flight_csv.str()});
+  auto stone_at = [&](double after) { return series.stone_at(after); };
+
+  // Q(t), eps(t), R(t) and the running extremes of eq:F, each over its value at the release.
+  std::ostringstream release_csv;
+  release_csv << "t_s,Q_over_Q_release,eps_over_eps_release,R_over_R_release,FS_perp,FR,FRh_max,FRh_min\n";
+  const ShotSeries::Moment& at = series.phase_two[series.release_row];
+  for (const ShotSeries::Moment& row : series.phase_two) {
+    release_csv << num(row.t) << "," << num(row.quality / at.quality) << "," << num(row.efficiency / at.efficiency) << "," << num(row.range / at.range);
+    for (int k = 0; k < force_count; ++k) release_csv << "," << num(row.running_max[k] / series.final_extremes[k]);
     release_csv << "\n";
   }
   files.push_back({"release.csv", release_csv.str()});
@@ -381,7 +445,7 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   anim << "unset arrow\nunset label\nunset object\nset xrange [" << num(flight_lo) << ":" << num(flight_hi) << "]\nset yrange ["
        << num(std::min(0.0, impact.y) - 2) << ":" << num(top + 2) << "]\nset size noratio\n";
   const int flight_frames = 60;
-  const double flight_step = end->time / flight_frames;
+  const double flight_step = series.flight_time / flight_frames;
   for (int k = 0; k <= flight_frames; ++k) {
     const double after = k * flight_step;
     anim << "unset object\nunset label\n" << warning_labels(v, true);

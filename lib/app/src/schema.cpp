@@ -18,21 +18,6 @@ namespace {
 // option (error.hpp), or "where.key" in a file.
 std::string engine_key_name(const std::string& where, const std::string& key) { return where.empty() ? "{{" + key + "}}" : where + "." + key; }
 
-// A number in SI, or a string with a unit suffix.
-std::optional<double> read_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension,
-                                 const std::string& where) {
-  if (!object.contains(key) || object[key].is_null()) return std::nullopt;
-  const nlohmann::json& value = object[key];
-  const std::string name = engine_key_name(where, key);
-  if (value.is_number()) {
-    const double number = value.get<double>();
-    if (!std::isfinite(number)) throw Error(ErrorKind::bad_number, name + ": " + brief_json(value) + " is not a finite number");
-    return number;
-  }
-  if (value.is_string()) return parse_value(value.get<std::string>(), dimension, name);
-  throw Error(ErrorKind::bad_number, name + ": " + brief_json(value) + " is neither a number nor a value with a unit like \"6.13m\"");
-}
-
 // A value a design must have: the message says what it is, with an example written as a flag
 // ("--mb 660kg") or as a key ("mb": "660kg"), as the design was given.
 double required(const std::optional<double>& value, const std::string& key, const std::string& where, const std::string& what,
@@ -62,6 +47,21 @@ std::vector<Field> design_fields(const OptimalEngine& d) {
 
 
 }  // namespace
+
+std::optional<double> read_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension,
+                                 const std::string& where) {
+  if (!object.contains(key) || object[key].is_null()) return std::nullopt;
+  const nlohmann::json& value = object[key];
+  const std::string name = engine_key_name(where, key);
+  if (value.is_number()) {
+    const double number = value.get<double>();
+    if (!std::isfinite(number)) throw Error(ErrorKind::bad_number, name + ": " + brief_json(value) + " is not a finite number");
+    return number;
+  }
+  if (value.is_string()) return parse_value(value.get<std::string>(), dimension, name);
+  throw Error(ErrorKind::bad_number, name + ": " + brief_json(value) + " is neither a number nor a value with a unit like \"6.13m\"");
+}
+
 
 std::vector<Field> engine_fields(const Engine& e) {
   const ScaledDesign s = scaled_design(e);

@@ -1,8 +1,11 @@
 #include "trebuchet/app/units.hpp"
 
 #include <array>
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+
+#include <fast_float/fast_float.h>
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
@@ -101,10 +104,17 @@ std::size_t parse_number_prefix(std::string_view text, double& value, const std:
   const char* first = text.data();
   const char* last = first + text.size();
   if (first != last && *first == '+') ++first;  // from_chars rejects a leading '+'
-  auto [end, ec] = std::from_chars(first, last, value, std::chars_format::general);
-  if (ec == std::errc::result_out_of_range)
-    throw Error(ErrorKind::bad_number, what + " is beyond the range of numbers (about 1e-308 to 1e308); give a value of ordinary size");
+  // fast_float: std::from_chars's correctly rounded parse, also where a standard library lacks
+  // it for doubles (Emscripten's, for the browser page).
+  auto [end, ec] = fast_float::from_chars(first, last, value, fast_float::chars_format::general);
   if (ec != std::errc()) return 0;
+  // fast_float rounds digits beyond the doubles to infinity or zero where std::from_chars
+  // reports them ("inf" and "nan" are words, not digits, and pass as from_chars passes them).
+  const std::string_view mantissa(first, static_cast<std::size_t>(std::find_if(first, end, [](char c) { return c == 'e' || c == 'E'; }) - first));
+  const bool overflow = std::isinf(value) && mantissa.find_first_of("0123456789") != std::string_view::npos;
+  const bool underflow = value == 0 && mantissa.find_first_of("123456789") != std::string_view::npos;
+  if (overflow || underflow)
+    throw Error(ErrorKind::bad_number, what + " is beyond the range of numbers (about 1e-308 to 1e308); give a value of ordinary size");
   return static_cast<std::size_t>(end - text.data());
 }
 

@@ -188,4 +188,18 @@ std::string monte_carlo_table(const MonteCarloReport& r) {
   return out.str();
 }
 
+CompletionReport complete_with_longest(const CompletionRequest& request, const std::function<std::string(std::string_view)>& word) {
+  CompletionReport report{complete_engine(request), std::nullopt, ""};
+  if (request.settings.criterion.release != Release::range) {
+    CompletionRequest for_range = request;
+    for_range.settings.criterion.release = Release::range;
+    try {
+      report.longest = complete_engine(for_range);
+    } catch (const Error& e) {
+      report.longest_note = e.message(word);
+    }
+  }
+  return report;
+}
+
 }  // namespace trebuchet

@@ -29,18 +29,24 @@ double draw(const Spread& spread, std::mt19937_64& random) {
   return std::normal_distribution<double>(spread.a, spread.b)(random);
 }
 
+SampleOutcome run_sample(std::uint64_t seed, std::size_t i, const std::function<SampleOutcome(std::mt19937_64& random)>& sample) {
+  // Each sample's own generator: its draws do not depend on which thread runs it, or when.
+  std::seed_seq sequence{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32), static_cast<std::uint32_t>(i),
+                         static_cast<std::uint32_t>(static_cast<std::uint64_t>(i) >> 32)};
+  std::mt19937_64 random(sequence);
+  return sample(random);
+}
+
 MonteCarloSummary run_monte_carlo(int samples, std::uint64_t seed, int threads,
                                   const std::function<SampleOutcome(std::mt19937_64& random)>& sample, const Progress& progress) {
   std::vector<SampleOutcome> outcomes(static_cast<std::size_t>(samples));
-  for_each_index(outcomes.size(), threads, [&](std::size_t i) {
-    // Each sample's own generator: its draws do not depend on which thread runs it, or when.
-    std::seed_seq sequence{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32), static_cast<std::uint32_t>(i),
-                           static_cast<std::uint32_t>(i >> 32)};
-    std::mt19937_64 random(sequence);
-    outcomes[i] = sample(random);
-  }, progress);
+  for_each_index(outcomes.size(), threads, [&](std::size_t i) { outcomes[i] = run_sample(seed, i, sample); }, progress);
+  return summarize_samples(outcomes);
+}
+
+MonteCarloSummary summarize_samples(const std::vector<SampleOutcome>& outcomes) {
   MonteCarloSummary summary;
-  summary.samples = samples;
+  summary.samples = static_cast<int>(outcomes.size());
   std::map<std::string, std::size_t> reasons;  // each reason's place in summary.failures
   for (const SampleOutcome& o : outcomes) {
     if (o.failure.empty()) {

@@ -55,4 +55,11 @@ struct MonteCarloSummary {
 MonteCarloSummary run_monte_carlo(int samples, std::uint64_t seed, int threads,
                                   const std::function<SampleOutcome(std::mt19937_64& random)>& sample, const Progress& progress = {});
 
+/// Sample i of a run under `seed` alone, as run_monte_carlo runs it: a run split into parts (the
+/// browser page's Web Workers) gives the same samples as the whole.
+SampleOutcome run_sample(std::uint64_t seed, std::size_t i, const std::function<SampleOutcome(std::mt19937_64& random)>& sample);
+
+/// The summary of a run's outcomes, given in sample order.
+MonteCarloSummary summarize_samples(const std::vector<SampleOutcome>& outcomes);
+
 }  // namespace trebuchet

@@ -15,6 +15,7 @@
 #include "trebuchet/completion.hpp"
 #include "trebuchet/optimizer.hpp"
 #include "trebuchet/verification.hpp"
+#include "trebuchet/app/units.hpp"
 
 namespace trebuchet {
 
@@ -52,6 +53,11 @@ struct DesignValues {
   std::optional<double> beta2, youngs_modulus, wood_density, g;  ///< the material; eq:kMkD's where empty
   std::optional<double> R, T;                                     ///< a capacity to check: both or neither
 };
+
+/// The value of `key` in a JSON object: an SI number, or a string with a unit ("6.13m");
+/// empty when absent or null. Messages name it "where.key" (where empty: "{{key}}"). Throws
+/// Error(bad_number | unknown_unit) for a value of another kind.
+std::optional<double> read_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension, const std::string& where);
 
 /// The values of a JSON design object, each an SI number or a string with a unit ("6.13m").
 /// Throws Error(bad_number | unknown_unit | usage) naming the key.

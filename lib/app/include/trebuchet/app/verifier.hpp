@@ -4,11 +4,13 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "trebuchet/completion.hpp"
 #include "trebuchet/uncertainty.hpp"
 #include "trebuchet/verification.hpp"
 #include "trebuchet/app/csv.hpp"
@@ -63,6 +65,16 @@ struct DesignReport {
 /// Shoots the design (fitted to its capacity first with check.fit), checks its capacity, and
 /// writes the series and the pictures it asks for.
 DesignReport check_design(const EngineRecord& record, const DesignCheck& check);
+
+/// What complete reports: the completion and, unless it is already for the range, the engine of
+/// the longest range for the same attested values ("could it throw that far?"), or why there is
+/// none (its message with names written by `word`, error.hpp).
+struct CompletionReport {
+  Completion completion;
+  std::optional<Completion> longest;
+  std::string longest_note;
+};
+CompletionReport complete_with_longest(const CompletionRequest& request, const std::function<std::string(std::string_view)>& word);
 
 /// An uncertain input of a Monte Carlo run, named as its user gave it ("--M").
 struct UncertainInput {

@@ -1,0 +1,43 @@
+// The library as JSON in and JSON out, for callers that are no command line: the browser page's
+// window.trebuchet (web/) and the Python module to come. A request's keys are the programs' JSON
+// keys (docs/schema.md); a value is an SI number or a string with a unit ("150m", "3.1t"). Each
+// answer is what the programs print with --format json. docs/web.md lists every request.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "trebuchet/error.hpp"
+
+namespace trebuchet::api {
+
+/// The calculator (trebuchet-calc --format json): two givens among R, T, L1, L2, L4, D, M, m, mb,
+/// Lb, l; optional theta_i_deg, F, branch ("auto", "lower", "upper"), extrapolate, scale and the
+/// material (beta2, youngs_modulus, wood_density, g).
+nlohmann::ordered_json design(const nlohmann::json& request);
+
+/// One shot (trebuchet-verify --format json): "design" (an engine object), and the settings
+/// "air" (false, true or {density, drag_coefficient (a number or "Re"), projectile_density,
+/// wind}), "release" ("Q", "eps", "range"), "n", "target_level", "range_from" ("pivot",
+/// "release"), "tolerance" on a capacity the design carries, "modulus_of_rupture", "fit" (fit
+/// the design to its capacity first). With "series": true the answer adds "series", the motion
+/// the viewer draws (pictures.hpp's shot_series_json).
+nlohmann::ordered_json shot(const nlohmann::json& request);
+
+/// The completion of an attested engine (trebuchet-verify complete --format json): "attested"
+/// (Lb, L1, L2, H, L4, M, m, mb, D, l, theta_i_deg, F, and the material's keys) and the settings
+/// of shot. Without "release": "range", the engine of the longest range is completed too.
+nlohmann::ordered_json complete(const nlohmann::json& request);
+
+/// A Monte Carlo run (trebuchet-verify ... --format json with a range or a spread): "design"
+/// (for shots) or "attested" (for completions) whose values may be ranges "2.5t..3.5t" or spreads
+/// "3.5m±0.2m", the settings of shot, "samples" and "seed". A run may be split among workers:
+/// "first" and "count" give those samples' outcomes alone ({"outcomes": [...]}, each [R, T, eps,
+/// v] or {"failure", "kind"}), and "outcomes" (all of them, in sample order) gives the report of
+/// the whole run, the same as one run of every sample.
+nlohmann::ordered_json monte_carlo(const nlohmann::json& request);
+
+/// An error as an answer: {"error": the message, naming the request's keys, "kind": "bad_number",
+/// "names": the keys it speaks of}.
+nlohmann::ordered_json error_json(const Error& error);
+
+}  // namespace trebuchet::api

@@ -1,0 +1,351 @@
+#include "trebuchet/app/api.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "trebuchet/calculator.hpp"
+#include "trebuchet/completion.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/quantity.hpp"
+#include "trebuchet/scaling_table.hpp"
+#include "trebuchet/uncertainty.hpp"
+#include "trebuchet/app/names.hpp"
+#include "trebuchet/app/pictures.hpp"
+#include "trebuchet/app/report.hpp"
+#include "trebuchet/app/request.hpp"
+#include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/text_input.hpp"
+#include "trebuchet/app/units.hpp"
+#include "trebuchet/app/verifier.hpp"
+
+namespace trebuchet::api {
+namespace {
+
+using json = nlohmann::json;
+using ordered_json = nlohmann::ordered_json;
+
+// The messages of this API name each value by its key, bare: "L4", "design.L4".
+std::string key_word(std::string_view name) { return std::string(name); }
+
+// A request must be an object of known keys; a key it does not know is named with the keys it does.
+void require_keys(const json& request, const std::vector<std::string>& known, const std::string& what) {
+  if (!request.is_object()) throw Error(ErrorKind::usage, what + ": expected a JSON object, got " + brief_json(request));
+  for (const auto& [key, value] : request.items())
+    if (std::find(known.begin(), known.end(), key) == known.end())
+      throw Error(ErrorKind::usage, what + ": '" + key + "' is no key of this request; use " + join(known, ", "));
+}
+
+// The keys every request that shoots takes.
+const std::vector<std::string> settings_keys = {"air", "release", "n", "target_level", "range_from", "modulus_of_rupture"};
+
+std::vector<std::string> with_settings(std::vector<std::string> keys) {
+  keys.insert(keys.end(), settings_keys.begin(), settings_keys.end());
+  return keys;
+}
+
+std::string text_of(const json& value, const std::string& key) {
+  if (!value.is_string()) throw Error(ErrorKind::usage, "{{" + key + "}}: " + brief_json(value) + " must be a string");
+  return value.get<std::string>();
+}
+
+bool flag_of(const json& request, const std::string& key) {
+  if (!request.contains(key)) return false;
+  if (!request[key].is_boolean()) throw Error(ErrorKind::usage, "{{" + key + "}}: " + brief_json(request[key]) + " must be true or false");
+  return request[key].get<bool>();
+}
+
+// The shot's settings from a request's keys, checked as the programs check their options.
+ShotSettings settings_of(const json& request) {
+  ShotSettings settings;
+  settings.target_level = read_value(request, "target_level", UnitDimension::length, "").value_or(0);
+  if (request.contains("release")) settings.criterion.release = parse_release(text_of(request["release"], "release"), "{{release}}");
+  if (const auto n = read_value(request, "n", UnitDimension::dimensionless, "")) settings.criterion.n = *n;
+  if (request.contains("range_from")) {
+    const std::string from = text_of(request["range_from"], "range_from");
+    if (from != "pivot" && from != "release")
+      throw Error(ErrorKind::usage, "{{range_from}}: '" + from + "' is not a range; use pivot (the paper's) or release (Denny's)");
+    settings.range_from_release = from == "release";
+  }
+  if (request.contains("air")) {
+    const json& given = request["air"];
+    if (given.is_object()) {
+      require_keys(given, {"density", "drag_coefficient", "projectile_density", "wind", "projectile_diameter"}, "air");
+      Air air;
+      air.density = read_value(given, "density", UnitDimension::density, "air").value_or(air.density);
+      if (given.contains("drag_coefficient") && given["drag_coefficient"].is_string() &&
+          (given["drag_coefficient"] == "Re" || given["drag_coefficient"] == "Cd(Re)"))
+        air.drag_coefficient.reset();
+      else if (const auto cd = read_value(given, "drag_coefficient", UnitDimension::dimensionless, "air"))
+        air.drag_coefficient = cd;
+      air.projectile_density = read_value(given, "projectile_density", UnitDimension::density, "air").value_or(air.projectile_density);
+      air.wind = read_value(given, "wind", UnitDimension::speed, "air").value_or(0);
+      settings.air = air;
+    } else if (given.is_boolean() || given == "vacuum") {
+      if (given == true) settings.air = Air{};
+    } else {
+      throw Error(ErrorKind::usage, "{{air}}: " + brief_json(given) + " is no air; give false (vacuum), true (the standard air) or an object like {\"wind\": \"5m/s\"}");
+    }
+  }
+  check_shot_settings(settings);
+  return settings;
+}
+
+MaterialOverrides overrides_of(const json& request) {
+  MaterialOverrides material;
+  material.modulus_of_rupture = read_value(request, "modulus_of_rupture", UnitDimension::pressure, "");
+  return material;
+}
+
+// complete's attested values; `where` names the object.
+const std::vector<std::pair<std::string, UnitDimension>> attested_keys = {
+    {"Lb", UnitDimension::length}, {"L1", UnitDimension::length}, {"L2", UnitDimension::length}, {"H", UnitDimension::length},
+    {"L4", UnitDimension::length}, {"M", UnitDimension::mass}, {"m", UnitDimension::mass}, {"mb", UnitDimension::mass},
+    {"D", UnitDimension::length}, {"l", UnitDimension::dimensionless}, {"theta_i_deg", UnitDimension::angle}, {"F", UnitDimension::dimensionless},
+    {"beta2", UnitDimension::dimensionless}, {"youngs_modulus", UnitDimension::pressure}, {"wood_density", UnitDimension::density},
+    {"g", UnitDimension::acceleration}};
+
+CompletionRequest completion_request_of(const json& attested, const ShotSettings& settings) {
+  std::vector<std::string> known;
+  for (const auto& [key, dimension] : attested_keys) known.push_back(key);
+  require_keys(attested, known, "attested");
+  auto value = [&](const char* key) {
+    const auto at = std::find_if(attested_keys.begin(), attested_keys.end(), [&](const auto& k) { return k.first == key; });
+    return read_value(attested, key, at->second, "attested");
+  };
+  CompletionRequest request;
+  Attested& a = request.attested;
+  a.Lb = value("Lb"), a.L1 = value("L1"), a.L2 = value("L2"), a.H = value("H"), a.L4 = value("L4"), a.M = value("M"), a.m = value("m");
+  a.mb = value("mb"), a.D = value("D"), a.l = value("l"), a.theta_i_deg = value("theta_i_deg"), a.F = value("F");
+  MaterialOverrides material;
+  material.beta2 = value("beta2"), material.youngs_modulus = value("youngs_modulus"), material.wood_density = value("wood_density");
+  material.g = value("g");
+  request.material = material.over(Material{});
+  request.settings = settings;
+  return request;
+}
+
+ordered_json completion_answer(const CompletionRequest& request) {
+  CompletionReport report = complete_with_longest(request, key_word);
+  report.completion.calculator_note = with_words(report.completion.calculator_note, key_word);
+  if (report.completion.calculator)
+    for (std::string& warning : report.completion.calculator->warnings) warning = with_words(warning, key_word);
+  return completion_json(report.completion, request.settings, report.longest ? &*report.longest : nullptr, report.longest_note);
+}
+
+// The dimension of a design's or an attested object's key (for a spread of it).
+UnitDimension dimension_of(const std::string& key) {
+  for (const auto& [name, dimension] : attested_keys)
+    if (name == key) return dimension;
+  if (key == "L3") return UnitDimension::length;
+  if (key == "psi_i_deg" || key == "theta") return UnitDimension::angle;
+  throw Error(ErrorKind::usage, "{{" + key + "}}: a range or a spread is for an engine's values (L1 ... theta_i_deg)");
+}
+
+constexpr ErrorKind all_kinds[] = {ErrorKind::usage,        ErrorKind::given_count, ErrorKind::bad_number, ErrorKind::unknown_unit,
+                                   ErrorKind::out_of_range, ErrorKind::data_file,   ErrorKind::batch_rows, ErrorKind::numerical};
+
+const char* kind_name(ErrorKind kind) {
+  switch (kind) {
+    case ErrorKind::usage: return "usage";
+    case ErrorKind::given_count: return "given_count";
+    case ErrorKind::bad_number: return "bad_number";
+    case ErrorKind::unknown_unit: return "unknown_unit";
+    case ErrorKind::out_of_range: return "out_of_range";
+    case ErrorKind::data_file: return "data_file";
+    case ErrorKind::batch_rows: return "batch_rows";
+    case ErrorKind::numerical: return "numerical";
+  }
+  return "numerical";
+}
+
+ErrorKind kind_of(const std::string& name) {
+  for (ErrorKind kind : all_kinds)
+    if (name == kind_name(kind)) return kind;
+  throw Error(ErrorKind::usage, "{{outcomes}}: '" + name + "' is no kind of failure");
+}
+
+}  // namespace
+
+ordered_json design(const json& request) {
+  std::vector<std::string> known = {"theta_i_deg", "theta", "F", "branch", "extrapolate", "scale", "beta2", "youngs_modulus", "wood_density", "g"};
+  for (Quantity q : all_quantities) known.emplace_back(quantity_name(q));
+  require_keys(request, known, "design");
+  const ScalingTable& table = builtin_scaling_table();
+  DesignRequest r;
+  std::vector<Given> givens;
+  for (Quantity q : all_quantities) {
+    const std::string key(quantity_name(q));
+    if (const auto value = read_value(request, key, unit_dimension(quantity_dimension(q)), "")) {
+      if (!(*value > 0)) throw Error(ErrorKind::bad_number, "{{" + key + "}} = " + format_significant(*value, 6) + " must be positive");
+      givens.push_back({q, *value});
+    }
+  }
+  if (givens.size() != 2) {
+    std::vector<std::string> names;
+    for (Quantity q : all_quantities) names.emplace_back(quantity_name(q));
+    throw Error(ErrorKind::given_count, "found " + std::to_string(givens.size()) + " given(s); give exactly two of " + join(names, ", ") +
+                                            ", e.g. {\"R\": \"150m\", \"m\": \"50kg\"}");
+  }
+  r.first = givens[0], r.second = givens[1];
+  const auto theta = read_value(request, request.contains("theta") ? "theta" : "theta_i_deg", UnitDimension::angle, "");
+  if (theta) r.theta_i_deg = parse_theta(format_number(*theta), request.contains("theta") ? "{{theta}}" : "{{theta_i_deg}}");
+  if (const auto F = read_value(request, "F", UnitDimension::dimensionless, "")) r.F = *F;
+  if (request.contains("branch")) r.branch = parse_branch_choice(text_of(request["branch"], "branch"));
+  r.extrapolate = flag_of(request, "extrapolate");
+  if (const auto scale = read_value(request, "scale", UnitDimension::dimensionless, "")) r.scale = *scale;
+  MaterialOverrides material;
+  material.beta2 = read_value(request, "beta2", UnitDimension::dimensionless, "");
+  material.youngs_modulus = read_value(request, "youngs_modulus", UnitDimension::pressure, "");
+  material.wood_density = read_value(request, "wood_density", UnitDimension::density, "");
+  material.g = read_value(request, "g", UnitDimension::acceleration, "");
+  r.material = material.over(table.reference);
+  check_material(r.material);
+  OptimalEngine optimal = design_optimal_engine(table, r);
+  for (std::string& warning : optimal.warnings) warning = with_words(warning, key_word);
+  return design_json(optimal);
+}
+
+ordered_json shot(const json& request) {
+  require_keys(request, with_settings({"design", "tolerance", "fit", "series"}), "shot");
+  if (!request.contains("design")) throw Error(ErrorKind::usage, "{{design}} is missing; give the engine, e.g. {\"design\": {\"L1\": \"6.13m\", ...}}");
+  DesignCheck check;
+  check.settings = settings_of(request);
+  check.material = overrides_of(request);
+  if (const auto tolerance = read_value(request, "tolerance", UnitDimension::dimensionless, "")) check.tolerance = *tolerance;
+  check.fit = flag_of(request, "fit");
+  const EngineRecord record = read_engine(request["design"], "design");
+  ordered_json answer = check_design(record, check).json;
+  if (flag_of(request, "series")) {
+    Engine engine = record.engine;
+    engine.material = check.material.over(engine.material);
+    // The series is of the engine the answer reports (fitted first with "fit").
+    if (check.fit) engine = read_engine(answer["engine"], "engine").engine;
+    answer["series"] = shot_series_json(shot_series(engine, check.settings), engine);
+  }
+  return answer;
+}
+
+ordered_json complete(const json& request) {
+  require_keys(request, with_settings({"attested"}), "complete");
+  if (!request.contains("attested")) throw Error(ErrorKind::usage, "{{attested}} is missing; give what the source attests, e.g. {\"attested\": {\"Lb\": \"9.5m\", \"M\": \"3t\", \"m\": \"50kg\"}}");
+  return completion_answer(completion_request_of(request["attested"], settings_of(request)));
+}
+
+ordered_json monte_carlo(const json& request) {
+  require_keys(request, with_settings({"design", "attested", "samples", "seed", "first", "count", "outcomes"}), "monte_carlo");
+  const bool completes = request.contains("attested");
+  if (completes == request.contains("design"))
+    throw Error(ErrorKind::usage, "give {{design}} (a shot of each sample) or {{attested}} (a completion of each sample), one of them");
+  const json& values = request[completes ? "attested" : "design"];
+  if (!values.is_object()) throw Error(ErrorKind::usage, std::string(completes ? "attested" : "design") + ": expected a JSON object");
+  const std::string where = completes ? "attested" : "design";
+  // The values given as ranges or spreads, and those held fixed.
+  std::vector<UncertainInput> inputs;
+  std::vector<FixedInput> fixed;
+  for (const auto& [key, value] : values.items()) {
+    const UnitDimension dimension = dimension_of(key);
+    std::optional<Spread> spread;
+    if (value.is_string()) spread = parse_spread(value.get<std::string>(), dimension, where + "." + key);
+    if (spread) inputs.push_back({key, dimension, *spread});
+    else if (const auto number = read_value(values, key, dimension, where)) fixed.push_back({key, dimension, *number});
+  }
+  auto with_draws = [&](const std::function<double(const Spread&)>& value) {
+    json set = values;
+    for (const UncertainInput& u : inputs) set[u.name] = value(u.spread);
+    return set;
+  };
+  const ShotSettings settings = settings_of(request);
+  const MaterialOverrides material = overrides_of(request);
+  auto verification_of = [&](const json& set) {
+    if (completes) return complete_engine(completion_request_of(set, settings)).verification;
+    Engine engine = read_engine(set, where).engine;
+    engine.material = material.over(engine.material);
+    ShotSettings quick = settings;
+    quick.loads = false;  // a sample reports R, T, eps and v
+    return verify_engine(engine, quick);
+  };
+  // As the program does: the design at each spread's first number must be an engine.
+  const json first_values = with_draws([](const Spread& s) { return s.a; });
+  long shots_per_sample = 1;
+  if (!completes) {
+    read_engine(first_values, where);
+  } else {
+    try {
+      shots_per_sample = complete_engine(completion_request_of(first_values, settings)).simulations;
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::numerical) throw;
+      shots_per_sample = 300;
+    }
+  }
+  const int samples = static_cast<int>(read_value(request, "samples", UnitDimension::dimensionless, "")
+                                           .value_or(completes ? default_completion_samples : default_shot_samples));
+  if (samples < 1) throw Error(ErrorKind::bad_number, "{{samples}} = " + std::to_string(samples) + " must be 1 or more");
+  check_monte_carlo_work(samples, shots_per_sample, completes ? "completions" : "shots");
+  const double seed_value = read_value(request, "seed", UnitDimension::dimensionless, "").value_or(1);
+  if (!(seed_value >= 0 && seed_value < 9007199254740992.0) || seed_value != std::floor(seed_value))
+    throw Error(ErrorKind::bad_number, "{{seed}} = " + format_significant(seed_value, 17) + " must be a whole number from 0 to 2^53");
+  const auto seed = static_cast<std::uint64_t>(seed_value);
+  const auto sample = [&](std::mt19937_64& random) {
+    SampleOutcome outcome;
+    try {
+      const Verification v = verification_of(with_draws([&](const Spread& s) { return draw(s, random); }));
+      outcome.values = {v.capacity.R, v.capacity.T, v.eps, v.v};
+    } catch (const Error& e) {
+      outcome.failure = e.message(key_word);
+      outcome.failure_kind = e.kind();
+    }
+    return outcome;
+  };
+
+  std::vector<SampleOutcome> outcomes;
+  if (request.contains("first") || request.contains("count")) {  // one worker's part
+    const auto first = read_value(request, "first", UnitDimension::dimensionless, "").value_or(0);
+    const auto count = read_value(request, "count", UnitDimension::dimensionless, "").value_or(samples - first);
+    if (!(first >= 0 && count >= 0 && first + count <= samples))
+      throw Error(ErrorKind::bad_number, "{{first}} and {{count}} must pick samples from 0 to {{samples}} - 1");
+    ordered_json part = ordered_json::array();
+    for (auto i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(first + count); ++i) {
+      const SampleOutcome o = run_sample(seed, i, sample);
+      if (o.failure.empty()) part.push_back(o.values);
+      else part.push_back({{"failure", o.failure}, {"kind", kind_name(o.failure_kind)}});
+    }
+    return {{"outcomes", part}};
+  }
+  if (request.contains("outcomes")) {  // the parts put together
+    const json& given = request["outcomes"];
+    if (!given.is_array() || given.size() != static_cast<std::size_t>(samples))
+      throw Error(ErrorKind::usage, "{{outcomes}} must hold one outcome for each of the " + std::to_string(samples) + " samples, in order");
+    for (const json& o : given) {
+      SampleOutcome outcome;
+      if (o.is_array() && o.size() == 4) {
+        for (std::size_t k = 0; k < 4; ++k) outcome.values[k] = o[k].get<double>();
+      } else if (o.is_object() && o.contains("failure")) {
+        outcome.failure = o["failure"].get<std::string>();
+        outcome.failure_kind = kind_of(o.value("kind", "numerical"));
+      } else {
+        throw Error(ErrorKind::usage, "{{outcomes}}: " + brief_json(o) + " is no outcome; give [R, T, eps, v] or {\"failure\": ...}");
+      }
+      outcomes.push_back(outcome);
+    }
+  } else {
+    for (std::size_t i = 0; i < static_cast<std::size_t>(samples); ++i) outcomes.push_back(run_sample(seed, i, sample));
+  }
+  const MonteCarloSummary summary = summarize_samples(outcomes);
+  const MonteCarloReport report{summary, inputs, fixed, describe_release(settings), seed, completes ? "the completed engine" : "the shot",
+                                settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"), settings.air.has_value(), 0, 1};
+  ordered_json answer = monte_carlo_json(report);
+  answer.erase("seconds");
+  answer.erase("threads");
+  return answer;
+}
+
+ordered_json error_json(const Error& error) {
+  return {{"error", error.message(key_word)}, {"kind", kind_name(error.kind())}, {"names", error.names()}};
+}
+
+}  // namespace trebuchet::api

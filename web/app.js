@@ -1,0 +1,329 @@
+// The page: design, edit, reconstruct, over the library compiled to WebAssembly (trebuchet.js,
+// createTrebuchet) and drawn by viewer.js. window.trebuchet exposes the library's requests to
+// scripts in the programs' JSON schema (docs/web.md). The whole state lives in the URL's hash.
+(function () {
+  'use strict';
+  const $ = (id) => document.getElementById(id);
+  const V = window.TrebuchetViewer;
+  const QUANTITIES = ['R', 'T', 'L1', 'L2', 'L4', 'D', 'M', 'm', 'mb', 'Lb', 'l'];
+  const EXAMPLES = { R: '150m', T: '40kJ', L1: '4.1m', L2: '0.9m', L4: '3.6m', D: '25cm', M: '3.1t', m: '50kg', mb: '170kg', Lb: '9m', l: '4.5' };
+  const ATTESTED = [['Lb', 'beam length'], ['L1', 'long arm'], ['L2', 'short arm'], ['H', 'pivot height'], ['L4', 'sling'], ['M', 'counterweight'],
+    ['m', 'projectile'], ['mb', 'beam mass'], ['D', 'beam diameter'], ['l', 'beam ratio L1/L2'], ['theta_i_deg', 'θi [deg]'], ['F', '(L2 + L3)/H']];
+  const SLIDERS = [['L1', 'length'], ['L2', 'length'], ['L3', 'length'], ['L4', 'length'], ['M', 'mass'], ['m', 'mass'], ['mb', 'mass'], ['theta_i_deg', 'angle']];
+
+  let module = null;
+  const state = {
+    view: 'design', units: 'si', pair: 'R,m', first: ['R', '150m'], second: ['m', '50kg'], theta: '30', F: '1',
+    air: false, cd: '0.47', wind: '0m/s', release: 'Q', target_level: '0m', range_from: 'pivot',
+    edit: null, attested: { Lb: '9.5m', M: '3t', m: '50kg' }, samples: '200',
+  };
+  let designed = null;   // the calculator's design (JSON), or null when refused
+  let shown = null;      // the engine the shot is of (engine keys), and its shot
+  let viewer = null;
+
+  // ---- the library --------------------------------------------------------------------------
+  function call(name, request) {
+    const answer = JSON.parse(module[name](JSON.stringify(request)));
+    return answer;
+  }
+  function settings() {
+    const s = { release: state.release, target_level: state.target_level, range_from: state.range_from };
+    if (state.air) s.air = { drag_coefficient: /^re$/i.test(state.cd.trim()) ? 'Re' : state.cd, wind: state.wind };
+    return s;
+  }
+  // The engine keys a design or shot answer carries, as the programs read them back.
+  function engineOf(answer) {
+    const keys = ['theta_i_deg', 'L1', 'L2', 'L3', 'L4', 'M', 'm', 'mb', 'D', 'beta2', 'youngs_modulus', 'wood_density', 'g'];
+    const engine = {};
+    for (const k of keys) if (answer[k] !== undefined) engine[k] = answer[k];
+    if (engine.D === 0) delete engine.D;
+    return engine;
+  }
+
+  // ---- URL state ----------------------------------------------------------------------------
+  function saveState() {
+    const params = new URLSearchParams();
+    for (const [k, v] of Object.entries(state)) if (v !== null) params.set(k, typeof v === 'object' ? JSON.stringify(v) : String(v));
+    history.replaceState(null, '', '#' + params.toString());
+  }
+  function loadState() {
+    const params = new URLSearchParams(location.hash.slice(1));
+    for (const [k, v] of params) {
+      if (!(k in state)) continue;
+      try {
+        state[k] = typeof state[k] === 'boolean' ? v === 'true' : (state[k] !== null && typeof state[k] === 'object') || k === 'edit' ? JSON.parse(v) : v;
+      } catch (e) { /* a hand-edited link: keep the default */ }
+    }
+  }
+
+  // ---- design ---------------------------------------------------------------------------------
+  function fillPairSelects() {
+    for (const id of ['first-name', 'second-name']) {
+      const select = $(id);
+      select.innerHTML = QUANTITIES.map((q) => `<option value="${q}">${q}</option>`).join('');
+    }
+  }
+  function showPair() {
+    const any = state.pair === 'any';
+    document.querySelectorAll('.any-pair').forEach((s) => { s.hidden = !any; });
+    $('first-label').hidden = any; $('second-label').hidden = any;
+    $('first-name').value = state.first[0]; $('second-name').value = state.second[0];
+    $('first-label').textContent = state.first[0]; $('second-label').textContent = state.second[0];
+    $('first').value = state.first[1]; $('second').value = state.second[1];
+  }
+  function runDesign() {
+    const request = { theta_i_deg: Number(state.theta), F: state.F };
+    request[state.first[0]] = state.first[1];
+    request[state.second[0]] = state.second[1];
+    const answer = call('design', request);
+    const message = $('design-message');
+    if (answer.error) {
+      designed = null;
+      message.className = 'message refused';
+      message.textContent = answer.error;
+      $('design-result').innerHTML = '';
+      return false;
+    }
+    designed = answer;
+    message.className = 'message';
+    message.textContent = (answer.warnings || []).join(' ');
+    const q = (v, d) => V.quantity(v, d, state.units);
+    $('design-result').innerHTML = `<table class="tv-figures"><caption>the optimal engine${answer.branch === 'none' ? '' : ' (' + answer.branch + ' branch)'}, θi = ${answer.theta_i_deg}°, F = ${V.significant(answer.F, 4)}</caption>
+      <tr><th>capacity</th><td>R = ${q(answer.R, 'length')}, T = ${q(answer.T, 'energy')} (in vacuum)</td></tr>
+      <tr><th>beam</th><td>L1 = ${q(answer.L1, 'length')}, L2 = ${q(answer.L2, 'length')}, Lb = ${q(answer.Lb, 'length')}, D = ${q(answer.D, 'length')}</td></tr>
+      <tr><th>arm, sling, pivot</th><td>L3 = ${q(answer.L3, 'length')}, L4 = ${q(answer.L4, 'length')}, H = ${q(answer.H, 'length')}</td></tr>
+      <tr><th>masses</th><td>M = ${q(answer.M, 'mass')}, m = ${q(answer.m, 'mass')}, mb = ${q(answer.mb, 'mass')}</td></tr></table>`;
+    return true;
+  }
+
+  // ---- the shot -------------------------------------------------------------------------------
+  function runShot(engine, title) {
+    const answer = call('shot', Object.assign({ design: engine, series: true }, settings()));
+    if (answer.error) {
+      shown = null;
+      $('viewer').innerHTML = `<div class="message refused">${escapeHtml(answer.error)}</div>`;
+      return null;
+    }
+    shown = { engine, shot: answer };
+    $('shot-title').textContent = title;
+    viewer = V.render($('viewer'), answer, { units: state.units });
+    const json = JSON.stringify(Object.assign({}, engine), null, 2) + '\n';
+    $('download-json').href = 'data:application/json;charset=utf-8,' + encodeURIComponent(json);
+    $('download-csv').href = 'data:text/csv;charset=utf-8,' + encodeURIComponent(V.seriesCsv(answer));
+    return answer;
+  }
+  function escapeHtml(s) { return String(s).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]); }
+
+  // ---- edit -----------------------------------------------------------------------------------
+  function buildSliders() {
+    const box = $('sliders');
+    box.innerHTML = '';
+    const base = designed ? engineOf(designed) : state.edit;
+    if (!base) { box.textContent = 'Design an engine first (view 1).'; return; }
+    if (!state.edit) state.edit = Object.assign({}, base);
+    for (const [key, dimension] of SLIDERS) {
+      const centre = base[key];
+      const [lo, hi] = key === 'theta_i_deg' ? [10, 80] : [centre * 0.3, centre * 2.5];
+      const row = document.createElement('label');
+      row.className = 'slider';
+      row.innerHTML = `<span class="name">${key === 'theta_i_deg' ? 'θi' : key}</span><input type="range" min="${lo}" max="${hi}" step="${(hi - lo) / 1000}" value="${state.edit[key]}" data-key="${key}"><output></output>`;
+      const input = row.querySelector('input'), out = row.querySelector('output');
+      const show = () => { out.textContent = dimension === 'angle' ? V.significant(Number(input.value), 4) + '°' : V.quantity(Number(input.value), dimension, state.units); };
+      show();
+      input.addEventListener('input', () => { state.edit[key] = Number(input.value); show(); update(); });
+      box.appendChild(row);
+    }
+  }
+  function compareWithOptimum(answer) {
+    const box = $('compare');
+    if (!answer) { box.innerHTML = ''; return; }
+    // The paper's optimum for the edited engine's own capacity (vacuum, level 0), same θi and F.
+    const optimum = call('design', { R: answer.R_vacuum, T: answer.T_vacuum, theta_i_deg: designed ? designed.theta_i_deg : 30, F: designed ? designed.F : 1 });
+    const q = (v, d) => V.quantity(v, d, state.units);
+    if (optimum.error) { box.innerHTML = `<p class="message">No optimum of the table for this capacity: ${escapeHtml(optimum.error)}</p>`; return; }
+    const shot = call('shot', Object.assign({ design: engineOf(optimum) }, settings()));
+    const cell = (a, b, f) => `<td>${f(a)}</td><td>${shot.error ? '—' : f(b)}</td>`;
+    box.innerHTML = `<table class="tv-figures compare"><caption>the edited engine beside the paper's optimum for the same capacity</caption>
+      <tr><th></th><th>edited</th><th>optimal</th></tr>
+      <tr><th>quality Q</th>${cell(answer.Q, shot.Q, (v) => V.significant(100 * v, 4) + ' %')}</tr>
+      <tr><th>efficiency ε</th>${cell(answer.eps, shot.eps, (v) => V.significant(100 * v, 4) + ' %')}</tr>
+      <tr><th>force factor</th>${cell(answer.force_factor, shot.force_factor, (v) => V.significant(v, 4))}</tr>
+      <tr><th>range R</th>${cell(answer.R, shot.R, (v) => q(v, 'length'))}</tr>
+      <tr><th>M</th><td>${q(answer.engine.M, 'mass')}</td><td>${q(optimum.M, 'mass')}</td></tr>
+      <tr><th>L1, L4</th><td>${q(answer.engine.L1, 'length')}, ${q(answer.engine.L4, 'length')}</td><td>${q(optimum.L1, 'length')}, ${q(optimum.L4, 'length')}</td></tr></table>`;
+  }
+
+  // ---- reconstruct ----------------------------------------------------------------------------
+  function buildAttested() {
+    $('attested').innerHTML = ATTESTED.map(([key, name]) => `<label>${name} <span class="name">${key === 'theta_i_deg' ? 'θi' : key}</span> <input data-key="${key}" value="${escapeHtml(state.attested[key] || '')}" size="12" autocomplete="off"></label>`).join('');
+    $('attested').querySelectorAll('input').forEach((input) => input.addEventListener('input', () => {
+      if (input.value.trim()) state.attested[input.dataset.key] = input.value.trim(); else delete state.attested[input.dataset.key];
+      saveState();
+    }));
+  }
+  const uncertain = (text) => /\.\.|±|\+-/.test(text);
+  function runComplete() {
+    const attested = {};
+    for (const [k, v] of Object.entries(state.attested)) attested[k] = uncertain(v) ? v.split(/\.\.|±|\+-/)[0] : v;
+    const answer = call('complete', Object.assign({ attested }, settings()));
+    const message = $('reconstruct-message');
+    if (answer.error) { message.className = 'message refused'; message.textContent = answer.error; $('reconstruct-result').innerHTML = ''; return null; }
+    message.className = 'message';
+    message.textContent = Object.values(state.attested).some(uncertain) ? 'Uncertain values are taken at their first number here; the Monte Carlo band samples them.' : '';
+    const q = (v, d) => V.quantity(v, d, state.units);
+    const longest = answer.longest_range;
+    $('reconstruct-result').innerHTML = `<table class="tv-figures"><caption>the completed engine (${answer.simulations} shots)</caption>
+      <tr><th>attested</th><td>${answer.attested.join(', ')}</td></tr><tr><th>implied</th><td>${answer.implied.join(', ') || '—'}</td></tr>
+      <tr><th>chosen</th><td>${answer.chosen.join(', ')}</td></tr>
+      <tr><th>engine</th><td>L1 ${q(answer.L1, 'length')}, L2 ${q(answer.L2, 'length')}, L3 ${q(answer.L3, 'length')}, L4 ${q(answer.L4, 'length')}, M ${q(answer.M, 'mass')}, m ${q(answer.m, 'mass')}, mb ${q(answer.mb, 'mass')}</td></tr>
+      <tr><th>shot</th><td>R ${q(answer.R, 'length')}, T ${q(answer.T, 'energy')}, Q ${V.significant(100 * answer.Q, 3)} %, ε ${V.significant(100 * answer.eps, 3)} %</td></tr>
+      ${longest ? `<tr><th>longest range</th><td>${q(longest.R, 'length')} with L4 ${q(longest.L4, 'length')} (chosen: ${longest.chosen.join(', ')})</td></tr>` : ''}
+      </table><div id="band"></div>`;
+    runShot(engineOf(answer), 'The completed engine, shot');
+    return answer;
+  }
+
+  // A Monte Carlo run spread over Web Workers, each with its own module; the parts are put
+  // together in sample order, so the result is that of one run. Resolves to the report.
+  function monteCarloParallel(request, onProgress) {
+    const samples = Number(request.samples || 1000);
+    const workers = Math.max(1, Math.min(navigator.hardwareConcurrency || 2, 8, samples));
+    const source = $('trebuchet-module').textContent + '\n' + workerMain.toString() + '\nworkerMain();';
+    const url = URL.createObjectURL(new Blob([source], { type: 'text/javascript' }));
+    const chunk = 25;
+    const outcomes = new Array(samples);
+    let next = 0, done = 0;
+    return new Promise((resolve) => {
+      let running = 0;
+      const failure = (answer) => { resolve(answer); };
+      for (let w = 0; w < workers; w++) {
+        const worker = new Worker(url);
+        running++;
+        const give = () => {
+          if (next >= samples) { worker.terminate(); if (--running === 0) finish(); return; }
+          const first = next, count = Math.min(chunk, samples - first);
+          next += count;
+          worker.postMessage(JSON.stringify(Object.assign({}, request, { first, count })));
+          worker.onmessage = (event) => {
+            const answer = JSON.parse(event.data);
+            if (answer.error) { worker.terminate(); next = samples; failure(answer); return; }
+            answer.outcomes.forEach((o, k) => { outcomes[first + k] = o; });
+            done += count;
+            if (onProgress) onProgress(done, samples);
+            give();
+          };
+        };
+        give();
+      }
+      function finish() {
+        URL.revokeObjectURL(url);
+        if (done < samples) return;
+        resolve(call('monteCarlo', Object.assign({}, request, { outcomes })));
+      }
+    });
+  }
+  // Runs inside each worker, after the module's own text.
+  function workerMain() {
+    const ready = createTrebuchet();
+    self.onmessage = (event) => { ready.then((m) => self.postMessage(m.monteCarlo(event.data))); };
+  }
+  async function runBand() {
+    const request = Object.assign({ attested: Object.assign({}, state.attested), samples: Number(state.samples), seed: 1 }, settings());
+    const bar = $('progress');
+    bar.hidden = false; bar.value = 0;
+    const answer = await monteCarloParallel(request, (done, total) => { bar.value = done / total; });
+    bar.hidden = true;
+    const box = $('band') || $('reconstruct-result');
+    if (answer.error) { $('reconstruct-message').className = 'message refused'; $('reconstruct-message').textContent = answer.error; return answer; }
+    const q = (v, d) => V.quantity(v, d, state.units);
+    const p = answer.percentiles;
+    const failed = (answer.failures || []).reduce((n, f) => n + f.count, 0);
+    box.innerHTML = `<table class="tv-figures"><caption>Monte Carlo band: ${answer.samples} completions, ${failed} failed</caption>
+      <tr><th></th><th>5 %</th><th>50 %</th><th>95 %</th></tr>
+      <tr><th>R</th><td>${q(p.R.p5, 'length')}</td><td>${q(p.R.p50, 'length')}</td><td>${q(p.R.p95, 'length')}</td></tr>
+      <tr><th>T</th><td>${q(p.T.p5, 'energy')}</td><td>${q(p.T.p50, 'energy')}</td><td>${q(p.T.p95, 'energy')}</td></tr></table>`;
+    return answer;
+  }
+
+  // ---- the whole page -------------------------------------------------------------------------
+  function update() {
+    saveState();
+    const started = performance.now();
+    if (state.view === 'design') {
+      if (runDesign()) runShot(engineOf(designed), 'The optimal engine, shot');
+      else { $('viewer').innerHTML = ''; shown = null; }
+    } else if (state.view === 'edit') {
+      if (!state.edit && designed) state.edit = engineOf(designed);
+      const answer = state.edit ? runShot(state.edit, 'The edited engine, shot') : null;
+      compareWithOptimum(answer);
+    } else if (state.view === 'reconstruct') {
+      runComplete();
+    }
+    document.body.dataset.lastUpdateMs = String(performance.now() - started);
+  }
+  function showView(view) {
+    state.view = view;
+    document.querySelectorAll('nav button').forEach((b) => b.setAttribute('aria-selected', String(b.dataset.view === view)));
+    document.querySelectorAll('.view').forEach((v) => { v.hidden = v.dataset.view !== view; });
+    if (view === 'edit') { runDesign(); buildSliders(); }
+    if (view === 'reconstruct') buildAttested();
+    update();
+  }
+  function wire() {
+    fillPairSelects();
+    $('pair').addEventListener('change', () => {
+      state.pair = $('pair').value;
+      if (state.pair !== 'any') {
+        const [a, b] = state.pair.split(',');
+        state.first = [a, EXAMPLES[a]]; state.second = [b, EXAMPLES[b]];
+        if (state.pair === 'R,T') state.second = ['T', '40kJ'];
+      }
+      showPair(); update();
+    });
+    for (const [id, slot] of [['first', 'first'], ['second', 'second']]) {
+      $(id).addEventListener('input', () => { state[slot][1] = $(id).value; update(); });
+      $(id + '-name').addEventListener('change', () => { state[slot][0] = $(id + '-name').value; state[slot][1] = EXAMPLES[state[slot][0]]; showPair(); update(); });
+    }
+    const fields = [['theta', 'theta'], ['F', 'F'], ['cd', 'cd'], ['wind', 'wind'], ['release', 'release'], ['target-level', 'target_level'], ['range-from', 'range_from'], ['samples', 'samples']];
+    for (const [id, key] of fields) {
+      $(id).value = state[key];
+      $(id).addEventListener(id === 'samples' ? 'change' : 'input', () => { state[key] = $(id).value; if (key === 'theta' || key === 'F') state.edit = null; update(); });
+    }
+    $('air').checked = state.air;
+    $('air').addEventListener('change', () => { state.air = $('air').checked; update(); });
+    $('units').value = state.units;
+    $('units').addEventListener('change', () => { state.units = $('units').value; if (state.view === 'edit') buildSliders(); update(); });
+    $('pair').value = state.pair;
+    showPair();
+    document.querySelectorAll('nav button').forEach((b) => b.addEventListener('click', () => showView(b.dataset.view)));
+    $('reset-edit').addEventListener('click', () => { state.edit = null; runDesign(); buildSliders(); update(); });
+    $('complete').addEventListener('click', () => runComplete());
+    $('monte-carlo').addEventListener('click', () => runBand());
+    $('share').addEventListener('click', () => {
+      saveState();
+      if (navigator.clipboard) navigator.clipboard.writeText(location.href).catch(() => {});
+      $('share').textContent = 'Link copied';
+      setTimeout(() => { $('share').textContent = 'Copy link'; }, 1500);
+    });
+  }
+
+  // window.trebuchet: the library for scripts, in the programs' JSON schema (docs/web.md).
+  const ready = createTrebuchet().then((m) => {
+    module = m;
+    loadState();
+    wire();
+    showView(state.view);
+    return api;
+  });
+  const api = {
+    ready,
+    design: (request) => call('design', request),
+    shot: (request) => call('shot', request),
+    complete: (request) => call('complete', request),
+    monteCarlo: (request) => call('monteCarlo', request),
+    monteCarloParallel,
+    state: () => JSON.parse(JSON.stringify(state)),
+    viewer: () => viewer,
+  };
+  window.trebuchet = api;
+})();

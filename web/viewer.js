@@ -1,0 +1,437 @@
+// The shot viewer: one verified shot (trebuchet-verify's JSON with its "series") drawn as the
+// figures, an animation and four charts with values under the pointer. The browser page (app.js)
+// and the index.html of `trebuchet-verify shot --plot` both draw with it, so a report and the
+// live page are one renderer. Plain SVG, no library: each chart downloads as the SVG it is.
+(function (global) {
+  'use strict';
+  const SVGNS = 'http://www.w3.org/2000/svg';
+
+  // ---- units ------------------------------------------------------------------------------
+  // SI base values in, text out; imperial gives feet and pounds (the international foot and
+  // avoirdupois pound, exact), forces in pounds-force.
+  const FT = 0.3048, LB = 0.45359237, LBF = 4.4482216152605;
+  const UNITS = {
+    si: {
+      length: [[1, 'm']], mass: [[1000, 't', 1000], [1, 'kg', 0]], force: [[1e6, 'MN', 1e6], [1000, 'kN', 1000], [1, 'N', 0]],
+      energy: [[1e6, 'MJ', 1e6], [1000, 'kJ', 1000], [1, 'J', 0]], speed: [[1, 'm/s']], moment: [[1000, 'kN·m', 1000], [1, 'N·m', 0]],
+      stress: [[1e6, 'MPa', 0]],
+    },
+    imperial: {
+      length: [[FT, 'ft']], mass: [[LB, 'lb']], force: [[LBF, 'lbf']], energy: [[FT * LBF, 'ft·lbf']], speed: [[FT, 'ft/s']],
+      moment: [[FT * LBF, 'lbf·ft']], stress: [[LBF / (0.0254 * 0.0254), 'psi']],
+    },
+  };
+  function significant(x, digits) {
+    if (!isFinite(x)) return '—';
+    if (x === 0) return '0';
+    const text = Number(x.toPrecision(digits));
+    return Math.abs(text) >= 1e6 || Math.abs(text) < 1e-3 ? text.toExponential(digits - 1) : String(text);
+  }
+  // "4.133 m", "3.117 t", "74.75 kN"; `dimension` a key of UNITS.si; others print bare.
+  function quantity(value, dimension, system, digits) {
+    const table = (UNITS[system] || UNITS.si)[dimension];
+    if (!table) return significant(value, digits || 4);
+    const [size, name] = table.find(([, , from]) => Math.abs(value) >= (from === undefined ? 0 : from)) || table[table.length - 1];
+    return significant(value / size, digits || 4) + ' ' + name;
+  }
+  function unitOf(dimension, system) { return ((UNITS[system] || UNITS.si)[dimension] || [[1, '']])[0]; }
+
+  // ---- SVG helpers --------------------------------------------------------------------------
+  function svg(tag, attributes, parent) {
+    const node = document.createElementNS(SVGNS, tag);
+    for (const [k, v] of Object.entries(attributes || {})) node.setAttribute(k, v);
+    if (parent) parent.appendChild(node);
+    return node;
+  }
+  function text(parent, x, y, content, attributes) {
+    const node = svg('text', Object.assign({ x, y, 'font-size': 12, 'font-family': 'sans-serif' }, attributes || {}), parent);
+    node.textContent = content;
+    return node;
+  }
+  function niceTicks(lo, hi, count) {
+    const span = hi - lo || Math.abs(hi) || 1;
+    const raw = span / count, power = Math.pow(10, Math.floor(Math.log10(raw)));
+    const step = [1, 2, 2.5, 5, 10].map((f) => f * power).find((s) => s >= raw);
+    const ticks = [];
+    for (let t = Math.ceil(lo / step) * step; t <= hi + step * 1e-9; t += step) ticks.push(Math.abs(t) < step * 1e-9 ? 0 : t);
+    return ticks;
+  }
+
+  // A line chart: `lines` [{name, x, y, colour, dash}], `marks` [{x, name}], with a readout of
+  // every line's value at the pointer. Returns the <svg>.
+  function chart(spec) {
+    const width = spec.width || 760, height = spec.height || 330;
+    const left = 64, right = 16, top = spec.title ? 48 : 22, bottom = 44 + 18 * Math.ceil(spec.lines.length / 3);
+    const root = svg('svg', { xmlns: SVGNS, viewBox: `0 0 ${width} ${height}`, width: '100%', role: 'img', class: 'chart' });
+    svg('rect', { x: 0, y: 0, width, height, fill: 'white' }, root);
+    if (spec.title) text(root, width / 2, 18, spec.title, { 'text-anchor': 'middle', 'font-weight': 'bold', 'font-size': 13 });
+    if (spec.subtitle) text(root, width / 2, 35, spec.subtitle, { 'text-anchor': 'middle', 'font-size': 11, fill: '#444' });
+    let xs = [], ys = [];
+    for (const line of spec.lines)
+      line.x.forEach((x, i) => { const y = line.y[i]; if (y !== null && isFinite(y) && isFinite(x)) { xs.push(x); ys.push(y); } });
+    let [x0, x1] = spec.xRange || [Math.min(...xs), Math.max(...xs)];
+    let [y0, y1] = spec.yRange || [Math.min(0, ...ys), Math.max(...ys)];
+    if (spec.equalAspect) {
+      const w = width - left - right, h = height - top - bottom, scale = Math.max((x1 - x0) / w, (y1 - y0) / h);
+      const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+      [x0, x1, y0, y1] = [cx - scale * w / 2, cx + scale * w / 2, cy - scale * h / 2, cy + scale * h / 2];
+    } else if (!spec.yRange) {
+      const pad = 0.05 * (y1 - y0 || 1);
+      y1 += pad; if (y0 < 0) y0 -= pad;
+    }
+    const X = (x) => left + (x - x0) / (x1 - x0) * (width - left - right);
+    const Y = (y) => top + (1 - (y - y0) / (y1 - y0)) * (height - top - bottom);
+    const plot = svg('g', {}, root);
+    for (const t of niceTicks(x0, x1, 8)) {
+      svg('line', { x1: X(t), x2: X(t), y1: top, y2: height - bottom, stroke: '#e4e4e4' }, plot);
+      text(plot, X(t), height - bottom + 15, significant(t, 4), { 'text-anchor': 'middle', 'font-size': 11 });
+    }
+    for (const t of niceTicks(y0, y1, 6)) {
+      svg('line', { x1: left, x2: width - right, y1: Y(t), y2: Y(t), stroke: '#e4e4e4' }, plot);
+      text(plot, left - 6, Y(t) + 4, significant(t, 4), { 'text-anchor': 'end', 'font-size': 11 });
+    }
+    svg('rect', { x: left, y: top, width: width - left - right, height: height - top - bottom, fill: 'none', stroke: '#888' }, plot);
+    text(root, (left + width - right) / 2, height - bottom + 32, spec.xLabel || '', { 'text-anchor': 'middle' });
+    text(root, 14, (top + height - bottom) / 2, spec.yLabel || '', { 'text-anchor': 'middle', transform: `rotate(-90 14 ${(top + height - bottom) / 2})` });
+    const clip = 'clip' + Math.random().toString(36).slice(2);
+    const defs = svg('defs', {}, root);
+    svg('rect', { x: left, y: top, width: width - left - right, height: height - top - bottom }, svg('clipPath', { id: clip }, defs));
+    const curves = svg('g', { 'clip-path': `url(#${clip})` }, root);
+    (spec.marks || []).forEach((mark, k) => {
+      svg('line', { x1: X(mark.x), x2: X(mark.x), y1: top, y2: height - bottom, stroke: '#999', 'stroke-dasharray': '3 3' }, root);
+      text(root, X(mark.x), top - 4 - (k % 2) * 11, mark.name, { 'text-anchor': 'middle', 'font-size': 10, fill: '#555' });
+    });
+    for (const line of spec.lines) {
+      let d = '', pen = false;
+      line.x.forEach((x, i) => {
+        const y = line.y[i];
+        if (y === null || !isFinite(y)) { pen = false; return; }
+        d += (pen ? 'L' : 'M') + X(x).toFixed(2) + ' ' + Y(y).toFixed(2);
+        pen = true;
+      });
+      svg('path', { d, fill: 'none', stroke: line.colour, 'stroke-width': line.width || 2, 'stroke-dasharray': line.dash || '' }, curves);
+    }
+    (spec.labels || []).forEach((label) => text(curves, X(label.x), Y(label.y), label.text, Object.assign({ 'font-size': 11 }, label.attributes || {})));
+    // The key, below the plot.
+    spec.lines.forEach((line, k) => {
+      const kx = left + (k % 3) * ((width - left - right) / 3), ky = height - bottom + 50 + 18 * Math.floor(k / 3);
+      svg('line', { x1: kx, x2: kx + 22, y1: ky - 4, y2: ky - 4, stroke: line.colour, 'stroke-width': 2.5, 'stroke-dasharray': line.dash || '' }, root);
+      text(root, kx + 28, ky, line.name, { 'font-size': 11 });
+    });
+    // Values under the pointer.
+    const cursor = svg('line', { y1: top, y2: height - bottom, stroke: '#333', visibility: 'hidden' }, root);
+    const readout = svg('g', { visibility: 'hidden', 'pointer-events': 'none' }, root);
+    const box = svg('rect', { fill: 'rgba(255,255,255,0.93)', stroke: '#999', rx: 3 }, readout);
+    const lines = spec.lines.map((line) => text(readout, 0, 0, '', { 'font-size': 11, fill: line.colour }));
+    const xText = text(readout, 0, 0, '', { 'font-size': 11, 'font-weight': 'bold' });
+    root.addEventListener('pointermove', (event) => {
+      const point = root.createSVGPoint ? (() => { const p = root.createSVGPoint(); p.x = event.clientX; p.y = event.clientY; return p.matrixTransform(root.getScreenCTM().inverse()); })() : { x: 0 };
+      if (point.x < left || point.x > width - right) return;
+      const x = x0 + (point.x - left) / (width - left - right) * (x1 - x0);
+      cursor.setAttribute('x1', point.x); cursor.setAttribute('x2', point.x); cursor.setAttribute('visibility', 'visible');
+      xText.textContent = (spec.xName || 'x') + ' = ' + significant(x, 4) + (spec.xUnit ? ' ' + spec.xUnit : '');
+      const bx = point.x < width / 2 ? point.x + 10 : point.x - 230;
+      xText.setAttribute('x', bx + 6); xText.setAttribute('y', top + 16);
+      spec.lines.forEach((line, k) => {
+        let best = -1, distance = Infinity;
+        line.x.forEach((lx, i) => { const dd = Math.abs(lx - x); if (dd < distance && line.y[i] !== null) { distance = dd; best = i; } });
+        lines[k].textContent = best < 0 ? '' : line.name + ': ' + significant(line.y[best], 4) + (spec.yUnit ? ' ' + spec.yUnit : '');
+        lines[k].setAttribute('x', bx + 6); lines[k].setAttribute('y', top + 32 + 15 * k);
+      });
+      box.setAttribute('x', bx); box.setAttribute('y', top + 4); box.setAttribute('width', 224); box.setAttribute('height', 20 + 15 * spec.lines.length);
+      readout.setAttribute('visibility', 'visible');
+    });
+    root.addEventListener('pointerleave', () => { cursor.setAttribute('visibility', 'hidden'); readout.setAttribute('visibility', 'hidden'); });
+    return root;
+  }
+
+  // ---- the engine at one moment -------------------------------------------------------------
+  const COLOURS = { frame: '#8b5a2b', beam: '#a0522d', sling: '#1f5fbf', stone: '#d62728', weight: '#555', ground: '#6b8e23',
+                    theta: '#b22222', psi: '#1f7a1f', phi: '#1f5fbf' };
+
+  // Draws the engine of frame i into `g`, with view transform `to` ([x, y] in metres -> px).
+  function drawEngine(g, shot, i, to, scale, options) {
+    const f = shot.series.frames, H = shot.series.pivot_height, e = shot.engine;
+    const P = (x, y) => to(x, y);
+    const line = (a, b, colour, w, dash) => svg('line', { x1: a[0], y1: a[1], x2: b[0], y2: b[1], stroke: colour, 'stroke-width': w, 'stroke-linecap': 'round', 'stroke-dasharray': dash || '' }, g);
+    const pivot = P(0, H), hinge = P(f.hinge_x[i], f.hinge_y[i]), cw = P(f.counterweight_x[i], f.counterweight_y[i]), tip = P(f.tip_x[i], f.tip_y[i]);
+    line(P(-0.3 * H, 0), pivot, COLOURS.frame, 4);
+    line(P(0.3 * H, 0), pivot, COLOURS.frame, 4);
+    line(hinge, tip, COLOURS.beam, 6);
+    line(hinge, cw, '#222', 2);
+    svg('circle', { cx: cw[0], cy: cw[1], r: Math.max(4, (0.12 * e.L2 + 0.04 * H) * scale), fill: COLOURS.weight }, g);
+    svg('circle', { cx: pivot[0], cy: pivot[1], r: 3.5, fill: 'black' }, g);
+    const released = f.phase[i] === 'III';
+    if (!released) {
+      const stone = P(f.projectile_x[i], f.projectile_y[i]);
+      line(tip, stone, COLOURS.sling, 2);
+      svg('circle', { cx: stone[0], cy: stone[1], r: Math.max(3.5, 0.03 * H * scale), fill: COLOURS.stone }, g);
+    }
+    if (options.angles) {
+      const arc = (centre, radius, from, to, colour, label) => {
+        // Site angles in degrees from +x, counterclockwise; the view flips y.
+        const a0 = from * Math.PI / 180, a1 = to * Math.PI / 180;
+        const p0 = [centre[0] + radius * Math.cos(a0), centre[1] - radius * Math.sin(a0)], p1 = [centre[0] + radius * Math.cos(a1), centre[1] - radius * Math.sin(a1)];
+        const large = Math.abs(to - from) > 180 ? 1 : 0, sweep = to > from ? 0 : 1;
+        svg('path', { d: `M${p0[0]} ${p0[1]} A${radius} ${radius} 0 ${large} ${sweep} ${p1[0]} ${p1[1]}`, fill: 'none', stroke: colour, 'stroke-width': 2 }, g);
+        const mid = (a0 + a1) / 2;
+        text(g, centre[0] + 1.45 * radius * Math.cos(mid), centre[1] - 1.45 * radius * Math.sin(mid) + 4, label, { fill: colour, 'text-anchor': 'middle', 'font-weight': 'bold' });
+      };
+      const theta = f.theta_deg[i], psi = f.psi_deg[i], phi = f.phi_deg[i];
+      const r = Math.max(14, 0.22 * Math.min(e.L1, H) * scale);
+      line(pivot, [pivot[0], pivot[1] + 1.3 * r], COLOURS.theta, 1, '4 3');
+      arc(pivot, r, 270 - theta, 270, COLOURS.theta, 'θ ' + significant(theta, 3) + '°');
+      const rh = Math.max(12, 0.6 * e.L3 * scale);
+      line(hinge, [hinge[0], hinge[1] + 0.8 * e.L3 * scale], COLOURS.psi, 1, '4 3');
+      arc(hinge, rh, 270 - psi, 270, COLOURS.psi, 'ψ ' + significant(psi, 3) + '°');
+      if (!released && phi !== null) {
+        const rt = Math.max(12, 0.35 * e.L4 * scale);
+        line(tip, [tip[0] + 0.5 * e.L4 * scale, tip[1]], COLOURS.phi, 1, '4 3');
+        arc(tip, rt, -phi, 0, COLOURS.phi, 'φ ' + significant(phi, 3) + '°');
+      }
+    }
+  }
+
+  // ---- the viewer ---------------------------------------------------------------------------
+  function escapeHtml(s) { return String(s).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]); }
+
+  // What the shot assumed, in words, from its "assumptions".
+  function describeAssumptions(shot) {
+    const a = shot.assumptions;
+    const air = a.air === 'vacuum' ? 'in vacuum' : 'in air (Cd ' + (typeof a.air.drag_coefficient === 'number' ? a.air.drag_coefficient : 'of Re') +
+      (a.air.wind ? ', wind ' + a.air.wind + ' m/s' : '') + ')';
+    const release = a.release === 'Q' ? (a.n === 1 ? 'released where Q peaks (eq:Q)' : 'released where Q_n peaks (eq:Q_n, n = ' + a.n + ')')
+      : a.release === 'eps' ? 'released where ε peaks' : 'released where the range peaks';
+    const target = a.range_from === 'release' ? "range from the release point back to its height (Denny's)" : 'target level ' + significant(a.target_level, 4) + ' m';
+    return air + ', ' + release + ', ' + target + ', g = ' + a.g + ' m/s²';
+  }
+
+  const FORCE_LINES = [
+    ['FS_perp', 'F_S⊥ (sling, across the beam)', '#1f77b4', ''], ['sling_tension', 'sling tension', '#17becf', '6 3'],
+    ['FR', '|F_R| (pivot)', '#d62728', ''], ['FRh', 'F_Rh (pivot, horizontal)', '#ff7f0e', ''], ['FH', '|F_H| (hinge)', '#2ca02c', ''],
+    ['normal', 'N (trough on the projectile)', '#9467bd', ''],
+  ];
+
+  // The four charts of a shot, each an <svg>: forces, energy, release, paths.
+  function charts(shot, system) {
+    const s = shot.series, f = s.frames, m = s.moments, r = m.release;
+    const tMarks = [['lift-off', m.liftoff], ['t_1', m.t1], ['t_m', m.tm], ['t_2', m.t2], ['release', r]].map(([name, i]) => ({ name, x: f.t[i] }));
+    const upTo = (column) => f[column].map((v, i) => (i <= r ? v : null));
+    const [forceSize, forceUnit] = system === 'si' ? [1000, 'kN'] : [LBF, 'lbf'];
+    const forces = chart({
+      title: 'Forces up to the release', subtitle: 't_1, t_2: the extremes of F_Rh (eq:F); t_m: the largest pivot force',
+      xLabel: 'time [s]', yLabel: `force [${forceUnit}]`, xName: 't', xUnit: 's', yUnit: forceUnit, xRange: [0, f.t[r] * 1.02],
+      lines: FORCE_LINES.map(([key, name, colour, dash]) => ({ name, colour, dash, x: f.t, y: upTo(key).map((v, i) => (v === null || (key === 'normal' && f.phase[i] !== 'I') ? null : v / forceSize)) })),
+      marks: tMarks,
+    });
+    const [energySize, energyUnit] = system === 'si' ? [1000, 'kJ'] : [FT * LBF, 'ft·lbf'];
+    const rest = (k) => f[k][0];
+    const taken = (f.E_projectile_kinetic[r] + f.E_projectile_potential[r]) - rest('E_projectile_potential');
+    const projectile = f.t.map((t, i) => (f.phase[i] === 'III' ? taken : f.E_projectile_kinetic[i] + f.E_projectile_potential[i] - rest('E_projectile_potential')));
+    const energy = chart({
+      title: 'Where the energy goes', subtitle: `at the release the projectile holds ε = ${significant(100 * shot.eps, 3)} % of ΔU; 1 − ε stays in the beam and the counterweight`,
+      xLabel: 'time [s]', yLabel: `energy gained since rest [${energyUnit}]`, xName: 't', xUnit: 's', yUnit: energyUnit,
+      lines: [
+        { name: 'counterweight', colour: '#555', x: f.t, y: f.E_counterweight.map((v) => (v - rest('E_counterweight')) / energySize) },
+        { name: 'beam', colour: '#a0522d', x: f.t, y: f.E_beam.map((v) => (v - rest('E_beam')) / energySize) },
+        { name: 'projectile', colour: '#d62728', x: f.t, y: projectile.map((v) => v / energySize) },
+        { name: 'of which kinetic', colour: '#ff9896', dash: '5 3', x: f.t, y: f.E_projectile_kinetic.map((v, i) => (f.phase[i] === 'III' ? null : v / energySize)) },
+        { name: 'total (conserved)', colour: 'black', x: f.t, y: f.t.map((t, i) => (f.E_counterweight[i] - rest('E_counterweight') + f.E_beam[i] - rest('E_beam') + projectile[i]) / energySize) },
+        { name: 'ΔU (eq:DU)', colour: '#888', dash: '2 3', x: [f.t[0], f.t[f.t.length - 1]], y: [s.energy_drop / energySize, s.energy_drop / energySize] },
+      ],
+      marks: [{ name: 'release', x: f.t[r] }],
+    });
+    const p = s.phase_two;
+    const objective = shot.assumptions.release === 'Q' ? 'Q' : shot.assumptions.release === 'eps' ? 'ε' : 'R';
+    const release = chart({
+      title: `Phase II, on as if the projectile were kept: ${objective} peaks at the release`,
+      subtitle: 'each over its value at the release; Q, ε and R here at level 0 in vacuum; dashed: the extremes of eq:F so far',
+      xLabel: 'time [s]', yLabel: 'value over its value at the release', xName: 't', xUnit: 's', yRange: [0, 1.3],
+      lines: [
+        { name: 'Q', colour: 'black', width: 3, x: p.t, y: p.Q }, { name: 'ε', colour: '#1f77b4', x: p.t, y: p.eps }, { name: 'R', colour: '#2ca02c', x: p.t, y: p.R },
+        { name: 'max F_S⊥ so far', colour: '#9467bd', dash: '5 3', x: p.t, y: p.FS_perp }, { name: 'max |F_R| so far', colour: '#d62728', dash: '5 3', x: p.t, y: p.FR },
+        { name: 'max F_Rh so far', colour: '#ff7f0e', dash: '5 3', x: p.t, y: p.FRh_max }, { name: 'max −F_Rh so far', colour: '#8c564b', dash: '5 3', x: p.t, y: p.FRh_min },
+      ],
+      marks: [{ name: 'release', x: p.t[s.release_row] }],
+    });
+    const [lengthSize, lengthUnit] = unitOf('length', system);
+    const L = (values) => values.map((v) => (v === null ? null : v / lengthSize));
+    const fromX = shot.assumptions.range_from === 'release' ? shot.x : 0;
+    const end = [s.flight.x[s.flight.x.length - 1], s.flight.y[s.flight.y.length - 1]];
+    const paths = chart({
+      title: 'The paths, and the flight ' + (shot.assumptions.air === 'vacuum' ? 'in vacuum' : 'through air'),
+      subtitle: `R = ${quantity(shot.R, 'length', system)}` + (fromX ? ' from the release point' : ' from the pivot') + '; x toward the target, height above the base',
+      xLabel: `x toward the target [${lengthUnit}]`, yLabel: `height [${lengthUnit}]`, xName: 'x', xUnit: lengthUnit, yUnit: lengthUnit, equalAspect: true,
+      lines: [
+        { name: 'counterweight', colour: '#555', x: L(f.counterweight_x), y: L(f.counterweight_y) },
+        { name: 'beam tip', colour: '#a0522d', x: L(f.tip_x), y: L(f.tip_y) },
+        { name: 'projectile', colour: '#d62728', x: L(upTo('projectile_x')), y: L(upTo('projectile_y')) },
+        { name: 'flight', colour: '#d62728', dash: '5 3', x: L(s.flight.x), y: L(s.flight.y) },
+        { name: 'ground', colour: COLOURS.ground, x: [Math.min(...s.flight.x, -shot.engine.L1 - shot.engine.L4) / lengthSize, Math.max(...s.flight.x) / lengthSize], y: [0, 0] },
+        { name: shot.assumptions.range_from === 'release' ? 'release height' : 'target level', colour: '#999', dash: '2 3', x: [fromX / lengthSize, end[0] / lengthSize], y: [end[1] / lengthSize, end[1] / lengthSize] },
+      ],
+    });
+    return { forces, energy, release, paths };
+  }
+
+  // The viewer into `container`: figures, warnings, the animation and the charts. `options`:
+  // units ('si', 'imperial'), downloads (bool), caption (text above).
+  function render(container, shot, options) {
+    options = options || {};
+    const system = options.units || 'si';
+    const q = (v, dim, digits) => quantity(v, dim, system, digits);
+    container.innerHTML = '';
+    const e = shot.engine, s = shot.series;
+    const head = document.createElement('div');
+    head.className = 'tv-head';
+    const warnings = (shot.warnings || []).length
+      ? `<div class="tv-warning" role="alert"><b>NOT PHYSICAL.</b> The model stops holding before the release; these are not the figures of a real engine:<ul>${shot.warnings.map((w) => '<li>' + escapeHtml(w) + '</li>').join('')}</ul></div>` : '';
+    const notes = (shot.notes || []).map((n) => `<p class="tv-note">${escapeHtml(n)}</p>`).join('');
+    const loads = [['sling tension', shot.sling_tension, shot.t_sling_tension], ['hinge pin |F_H|', shot.hinge_force, shot.t_hinge_force],
+      ['pivot |F_R|', shot.pivot_force, shot.t_pivot_force]].filter(([, v]) => v !== undefined);
+    const row = (name, value, title) => `<tr${title ? ` title="${escapeHtml(title)}"` : ''}><th>${name}</th><td>${value}</td></tr>`;
+    head.innerHTML = `<p class="tv-scene">This shot: <b>${escapeHtml(describeAssumptions(shot))}</b>.</p>${warnings}${notes}
+      <div class="tv-tables"><table class="tv-figures"><caption>the shot</caption>
+      ${row('range R' + (shot.assumptions.air === 'vacuum' ? '' : ' (air)'), q(shot.R, 'length'), 'eq:R, to the target level')}
+      ${row('energy at the end T', q(shot.T, 'energy'), 'eq:T')}
+      ${row('efficiency ε', significant(100 * shot.eps, 4) + ' %', 'eq:Aux: T/ΔU at level 0')}
+      ${row('quality Q', significant(100 * shot.Q, 4) + ' %', 'eq:Q')}
+      ${row('force factor', significant(shot.force_factor, 4), 'eq:F')}
+      ${row('release speed v', q(shot.v, 'speed'))}
+      ${row('release angle', significant(shot.A_deg, 4) + '°')}
+      ${row('release at', significant(shot.t_release, 4) + ' s, ' + q(shot.h, 'length') + ' up, ' + q(Math.abs(shot.x), 'length') + (shot.x < 0 ? ' behind' : ' before') + ' the pivot')}
+      </table><table class="tv-figures"><caption>the builder's loads (largest up to the release)</caption>
+      ${loads.map(([name, v, t]) => row(name, q(v, 'force') + ' at ' + significant(t, 3) + ' s')).join('')}
+      ${shot.beam_moment !== undefined ? row('beam moment at the pivot', q(shot.beam_moment, 'moment') + ' at ' + significant(shot.t_beam_moment, 3) + ' s') : ''}
+      ${shot.stress_peak !== undefined ? row('beam stress, peak', q(shot.stress_peak, 'stress') + ' (' + significant(shot.rupture_margin, 3) + '× below rupture)') : ''}
+      </table><table class="tv-figures"><caption>the engine</caption>
+      ${row('L1, L2 (beam)', q(e.L1, 'length') + ', ' + q(e.L2, 'length'))}${row('L3 (counterweight arm)', q(e.L3, 'length'))}
+      ${row('L4 (sling)', q(e.L4, 'length'))}${row('H (pivot height)', q(e.H, 'length'))}
+      ${row('M, m, mb', q(e.M, 'mass') + ', ' + q(e.m, 'mass') + ', ' + q(e.mb, 'mass'))}${row('θi', significant(e.theta_i_deg, 4) + '°')}
+      </table></div>`;
+    container.appendChild(head);
+
+    // The animation: phases I and II to scale, then the whole flight.
+    const stage = document.createElement('div');
+    stage.className = 'tv-stage';
+    const width = 760, height = 440;
+    const scene = svg('svg', { xmlns: SVGNS, viewBox: `0 0 ${width} ${height}`, width: '100%', class: 'tv-scene-svg', role: 'img' });
+    stage.appendChild(scene);
+    const controls = document.createElement('div');
+    controls.className = 'tv-controls';
+    controls.innerHTML = `<button type="button" class="tv-play" aria-label="play">▶ play</button>
+      <input type="range" class="tv-scrub" min="0" max="1000" value="0" aria-label="time">
+      <label>speed <select class="tv-speed"><option value="1">real</option><option value="0.25">¼</option><option value="0.1" selected>1/10</option><option value="0.04">1/25</option></select></label>
+      <label><input type="checkbox" class="tv-angles" checked> angles</label><span class="tv-time"></span>`;
+    stage.appendChild(controls);
+    container.appendChild(stage);
+    const f = s.frames, r = s.moments.release, tRelease = f.t[r], tEnd = tRelease + s.flight.time;
+    // The engine's view holds every point of phases I and II; the flight's view the whole path.
+    let xs = [-0.3 * e.H, 0.3 * e.H], ys = [0, e.H];
+    for (let i = 0; i < f.t.length; i++) {
+      for (const k of ['hinge', 'counterweight', 'tip', 'projectile']) if (f[k + '_x'][i] !== null && (f.phase[i] !== 'III' || k !== 'projectile')) { xs.push(f[k + '_x'][i]); ys.push(f[k + '_y'][i]); }
+    }
+    const view = (x0, x1, y0, y1) => {
+      const pad = 0.06 * Math.max(x1 - x0, y1 - y0), scale = Math.min(width / (x1 - x0 + 2 * pad), (height - 30) / (y1 - y0 + 2 * pad));
+      const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+      return { scale, to: (x, y) => [width / 2 + (x - cx) * scale, (height - 30) / 2 + 10 - (y - cy) * scale] };
+    };
+    const near = view(Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys));
+    const far = view(Math.min(...s.flight.x, ...xs), Math.max(...s.flight.x, ...xs), Math.min(0, ...s.flight.y), Math.max(...s.flight.y, ...ys));
+    const stoneAt = (after) => {
+      const k = Math.min(Math.max(after / s.flight.time, 0), 1) * (s.flight.x.length - 1), i = Math.min(Math.floor(k), s.flight.x.length - 2), w = k - i;
+      return [s.flight.x[i] + w * (s.flight.x[i + 1] - s.flight.x[i]), s.flight.y[i] + w * (s.flight.y[i + 1] - s.flight.y[i])];
+    };
+    let time = 0, playing = false, last = null;
+    const scrub = controls.querySelector('.tv-scrub'), timeText = controls.querySelector('.tv-time'), play = controls.querySelector('.tv-play');
+    const speed = controls.querySelector('.tv-speed'), angles = controls.querySelector('.tv-angles');
+    function draw() {
+      scene.innerHTML = '';
+      svg('rect', { x: 0, y: 0, width, height, fill: '#f7fbff' }, scene);
+      const flying = time > tRelease + 0.15 * s.flight.time;
+      const v = flying ? far : near;
+      let i = 0;
+      while (i + 1 < f.t.length && f.t[i + 1] <= time) i++;
+      const g = svg('g', {}, scene);
+      const ground = v.to(0, 0);
+      svg('rect', { x: 0, y: ground[1], width, height: Math.max(0, height - ground[1]), fill: '#e8f0d8' }, g);
+      svg('line', { x1: 0, x2: width, y1: ground[1], y2: ground[1], stroke: COLOURS.ground, 'stroke-width': 2 }, g);
+      if (time > tRelease) {
+        const trail = [];
+        for (let k = 0; k < s.flight.x.length; k++) trail.push(v.to(s.flight.x[k], s.flight.y[k]).map((n) => n.toFixed(1)).join(' '));
+        svg('path', { d: 'M' + trail.join('L'), fill: 'none', stroke: '#bbb', 'stroke-dasharray': '4 4' }, g);
+        const at = v.to(...stoneAt(time - tRelease));
+        svg('circle', { cx: at[0], cy: at[1], r: flying ? 4 : Math.max(3.5, 0.03 * e.H * v.scale), fill: COLOURS.stone }, g);
+      }
+      drawEngine(g, shot, i, v.to, v.scale, { angles: angles.checked && !flying });
+      const phase = time <= f.t[s.moments.liftoff] ? 'phase I: the projectile slides in the trough' : time <= tRelease ? 'phase II: the sling swings' : 'phase III: the flight';
+      text(scene, 10, height - 10, `t = ${time.toFixed(3)} s, ${phase}` + (flying ? ' (zoomed out to the whole flight, real speed)' : ''), { 'font-size': 13 });
+      if ((shot.warnings || []).length) text(scene, width / 2, 40, 'NOT PHYSICAL', { 'text-anchor': 'middle', 'font-size': 30, fill: '#cc0000', 'font-weight': 'bold' });
+      timeText.textContent = `${time.toFixed(2)} s of ${tEnd.toFixed(2)} s`;
+      scrub.value = String(Math.round(1000 * time / tEnd));
+      container.dataset.frame = String(i);
+      container.dataset.time = String(time);
+    }
+    function tick(now) {
+      if (!playing) return;
+      if (last !== null) {
+        // Phases I and II at the chosen speed; the flight at real speed, so that it does not drag.
+        const rate = time > tRelease ? 1 : Number(speed.value);
+        time = Math.min(tEnd, time + (now - last) / 1000 * rate);
+      }
+      last = now;
+      draw();
+      if (time >= tEnd) { playing = false; play.textContent = '▶ play'; return; }
+      requestAnimationFrame(tick);
+    }
+    play.addEventListener('click', () => {
+      playing = !playing;
+      play.textContent = playing ? '❚❚ pause' : '▶ play';
+      if (playing) { if (time >= tEnd) time = 0; last = null; requestAnimationFrame(tick); }
+    });
+    scrub.addEventListener('input', () => { time = Number(scrub.value) / 1000 * tEnd; draw(); });
+    angles.addEventListener('change', draw);
+    draw();
+
+    const figures = charts(shot, system);
+    const captions = {
+      forces: 'F_S⊥ is the sling\'s pull across the beam; |F_R| and F_Rh the pivot\'s force on the beam and its horizontal part; |F_H| the hinge\'s force; N the trough\'s push in phase I. Size ropes, pins and beams from these.',
+      energy: 'The counterweight falls and gives up its energy; the beam takes a little, the projectile the most. At the release the projectile holds ε of ΔU; the rest, 1 − ε, stays in the beam and the counterweight. The total is constant: no friction.',
+      release: 'Section 5: the release is where the chosen criterion peaks. An extreme\'s dashed line is flat while its force stays below the largest so far.',
+      paths: 'The counterweight, the beam\'s tip and the projectile through phases I and II, then the flight.',
+    };
+    const grid = document.createElement('div');
+    grid.className = 'tv-charts';
+    for (const [name, figure] of Object.entries(figures)) {
+      const box = document.createElement('figure');
+      box.className = 'tv-chart tv-chart-' + name;
+      box.appendChild(figure);
+      const caption = document.createElement('figcaption');
+      caption.textContent = captions[name];
+      if (options.downloads !== false) {
+        const link = document.createElement('a');
+        link.textContent = ' Download SVG';
+        link.download = name + '.svg';
+        link.href = 'data:image/svg+xml;charset=utf-8,' + encodeURIComponent(new XMLSerializer().serializeToString(figure));
+        caption.appendChild(link);
+      }
+      box.appendChild(caption);
+      grid.appendChild(box);
+    }
+    container.appendChild(grid);
+    return { redraw: draw, setTime: (t) => { time = Math.max(0, Math.min(tEnd, t)); draw(); }, playing: () => playing, duration: tEnd };
+  }
+
+  // The series as CSV: one row per frame, SI units.
+  function seriesCsv(shot) {
+    const f = shot.series.frames, columns = Object.keys(f);
+    const unit = { t: 's', hinge_x: 'm', hinge_y: 'm', counterweight_x: 'm', counterweight_y: 'm', tip_x: 'm', tip_y: 'm', projectile_x: 'm', projectile_y: 'm',
+      FS_perp: 'N', sling_tension: 'N', FR: 'N', FRh: 'N', FRv: 'N', FH: 'N', normal: 'N', beam_moment: 'N_m', E_counterweight: 'J', E_beam: 'J',
+      E_projectile_kinetic: 'J', E_projectile_potential: 'J' };
+    const lines = [columns.map((c) => (unit[c] ? c + '_' + unit[c] : c)).join(',')];
+    for (let i = 0; i < f.t.length; i++) lines.push(columns.map((c) => (f[c][i] === null ? '' : f[c][i])).join(','));
+    return lines.join('\n') + '\n';
+  }
+
+  global.TrebuchetViewer = { render, quantity, significant, describeAssumptions, seriesCsv, chart };
+})(typeof window !== 'undefined' ? window : globalThis);
