@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # GSL for WebAssembly, from Debian's own source of the GSL the native build links (2.7.1), built
 # once per machine into a cached prefix: scripts/build-web.sh links the page against it.
-#   bash scripts/build-gsl-wasm.sh   -> prints the prefix (include/, lib/libgsl.a)
+#   bash scripts/build-gsl-wasm.sh           -> prints the prefix (include/, lib/libgsl.a)
+#   bash scripts/build-gsl-wasm.sh --fetch   downloads Debian's source (apt-get source), once
 # Only the parts the core uses are compiled: odeiv2 (appendix A's phases), roots (the release and
 # lift-off), multimin (the simplex of the optimizer and the fit), statistics (Monte Carlo), and
 # what they call (vectors, matrices, linear algebra, BLAS, errors, system helpers).
@@ -9,13 +10,20 @@ set -euo pipefail
 version=2.7.1
 emcc_version=$(emcc -dumpversion)
 prefix=${TREBUCHET_WASM_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/trebuchet}/gsl-$version-emcc-$emcc_version
+sources=$(dirname "$prefix")/src
+if [ "${1:-}" = --fetch ]; then  # scripts/install-deps.sh: the download, before any build
+  [ -f "$prefix/lib/libgsl.a" ] || ls "$sources"/gsl_$version*.dsc >/dev/null 2>&1 ||
+    (mkdir -p "$sources" && cd "$sources" && apt-get source --download-only -qq gsl 2> >(grep -v "unsandboxed" >&2) >/dev/null)
+  exit 0
+fi
 if [ -f "$prefix/lib/libgsl.a" ]; then echo "$prefix"; exit 0; fi
 
+dsc=$(ls "$sources"/gsl_$version*.dsc 2>/dev/null | head -1)
+[ -n "$dsc" ] || { echo "build-gsl-wasm: no source of GSL $version in $sources; run scripts/install-deps.sh" >&2; exit 1; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-(cd "$work" && apt-get source -qq "gsl=$version+dfsg-5+deb12u1" >/dev/null 2>&1 || apt-get source -qq gsl >/dev/null)
-src=$(find "$work" -maxdepth 1 -type d -name "gsl-$version*" | head -1)
-[ -n "$src" ] || { echo "build-gsl-wasm: apt-get source gsl gave no gsl-$version folder (is a deb-src entry set? scripts/install-deps.sh web)" >&2; exit 1; }
+dpkg-source --no-check -x "$dsc" "$work/gsl" >/dev/null
+src=$work/gsl
 cd "$src"
 # emcc's optimiser needs acorn from Debian's node modules (node-acorn), which a node from another
 # packaging does not look in; configure's test programs run under node, whose own fetch must

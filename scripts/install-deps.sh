@@ -1,7 +1,13 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages trebuchet builds and tests with, skipping what is present.
 # Run as root (or with sudo available). Safe to run again.
+#   bash scripts/install-deps.sh          everything: the programs, their tests and the browser page
+#   bash scripts/install-deps.sh native   the programs and their tests only (scripts/quickstart.sh)
+# The page's part also enables Debian's source packages (GSL for WebAssembly is built from
+# Debian's source of it) and installs the browser tests' one npm package (tests/web).
 set -euo pipefail
+cd "$(dirname "$0")/.."
+scope=${1:-all}
 
 packages=(
   cmake g++ make
@@ -9,6 +15,7 @@ packages=(
   libgsl-dev        # GSL 2.7: odeiv2, roots, minimisation
   nlohmann-json3-dev
   libfmt-dev        # {fmt} 9: numbers in CSV (header-only)
+  libfast-float-dev # fast_float: numbers read as from_chars reads them, also in the browser build
   catch2            # Catch2 2.13 with CTest discovery
   libcli11-dev
   pkg-config libxlsxwriter-dev  # trebuchet-calc --spreadsheet writes .xlsx with it
@@ -20,6 +27,29 @@ packages=(
   clang-14 libclang-rt-14-dev  # libFuzzer for the fuzz targets of tests/fuzz
   parallel slurm-wlm munge     # tab:CPNC derived in shards under GNU parallel and Slurm (tests/scale)
 )
+if [ "$scope" != native ]; then
+  packages+=(
+    emscripten node-acorn  # the page: the library compiled to WebAssembly (acorn: emcc's optimiser)
+    dpkg-dev               # apt-get source gsl: GSL for WebAssembly from Debian's own source
+    nodejs                 # bundles the page and drives its tests
+    chromium               # the page's tests, headless, driven by playwright-core
+  )
+fi
+
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install" >&2; exit 1; }
+  sudo_cmd=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+
+# Debian's source packages, for apt-get source gsl (scripts/build-gsl-wasm.sh).
+if [ "$scope" != native ] && ! grep -rqs "deb-src" /etc/apt/sources.list /etc/apt/sources.list.d/; then
+  echo "install-deps: enabling Debian's source packages (bookworm main) for apt-get source gsl"
+  printf 'Types: deb-src\nURIs: http://deb.debian.org/debian\nSuites: bookworm\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' |
+    "${sudo_cmd[@]}" tee /etc/apt/sources.list.d/trebuchet-deb-src.sources >/dev/null
+  "${sudo_cmd[@]}" apt-get update -qq
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -28,16 +58,20 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all packages present"
-  exit 0
+else
+  echo "install-deps: installing ${missing[*]}"
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-sudo_cmd=()
-if [ "$(id -u)" -ne 0 ]; then
-  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
-  sudo_cmd=(sudo)
+if [ "$scope" != native ]; then
+  # npm ships with a nodejs from NodeSource; Debian's own nodejs has it as a package of its own.
+  command -v npm >/dev/null || "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends npm
+  # Debian's source of GSL, for GSL in WebAssembly (built by scripts/build-web.sh, once a machine).
+  bash scripts/build-gsl-wasm.sh --fetch
+  # The browser tests' one npm package, playwright-core, at the version of tests/web/package-lock.json;
+  # it drives Debian's chromium and downloads no browser.
+  if [ ! -d tests/web/node_modules/playwright-core ]; then
+    (cd tests/web && npm ci --no-audit --no-fund --loglevel=error)
+  fi
 fi
-
-echo "install-deps: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -qq
-"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The README's test command, and CI's (.ci/run): installs what is missing, then
-#   1. the Release build with the benchmarks, warnings as errors, and every tier of the suite
-#      (docs/testing.md);
+#   1. the Release build with the benchmarks, warnings as errors, the browser page (WebAssembly,
+#      scripts/build-web.sh), and every tier of the suite (docs/testing.md);
 #   2. one clang build under AddressSanitizer and UndefinedBehaviorSanitizer, instrumented for
 #      libFuzzer: the five fuzz targets run at once for a minute each, then the tiers that run
 #      the code on inputs (unit, cli, robustness; every 10th reference design) run again under
@@ -19,6 +19,8 @@ bash scripts/install-deps.sh
 stage "Release build"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTREBUCHET_WERROR=ON -DTREBUCHET_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build build -j"$jobs"
+stage "browser page build (WebAssembly)"
+bash scripts/build-web.sh build-web
 stage "the suite, every tier"
 ctest --test-dir build --output-on-failure -j"$jobs" --timeout 600
 

@@ -1,0 +1,209 @@
+// The browser page in headless Chromium (CTest label web):
+//   node tests/web/page.test.mjs PAGE.html trebuchet-calc trebuchet-verify
+// 1. It loads from file:// with no console error and no network request.
+// 2. Through window.trebuchet, the Alcalá la Vieja Ca design, Denny's engine and 20 random
+//    designs give the native programs' JSON numbers (design: to 1e-12 relative; shot: see below).
+// 3. The animation advances; 4. a shared URL restores the state; 5. the downloaded design is
+//    accepted by trebuchet-verify and gives the page's shot; 6. a Monte Carlo run spread over
+//    Web Workers is the run of one module; 7. a refusal shows the calculator's message.
+// Each check prints how close it came. Exit 1 on any failure.
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { launch, open } from './browser.mjs';
+
+const [pagePath, calc, verify] = process.argv.slice(2);
+let failures = 0;
+const check = (ok, what) => { console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); if (!ok) failures++; };
+const native = (program, args, input) => JSON.parse(execFileSync(program, args, { input, encoding: 'utf8' }));
+const nativeMaybe = (program, args, input) => {
+  try { return JSON.parse(execFileSync(program, args, { input, encoding: 'utf8', stdio: ['pipe', 'pipe', 'pipe'] })); } catch (e) { return { error: (e.stderr || '').toString().trim(), status: e.status }; }
+};
+
+// One ulp up (x > 0).
+function nextUp(x) {
+  const view = new DataView(new ArrayBuffer(8));
+  view.setFloat64(0, x);
+  view.setBigUint64(0, view.getBigUint64(0) + 1n);
+  return view.getFloat64(0);
+}
+// Deterministic random numbers (mulberry32), so that the 20 designs are the same on every run.
+function random(seed) {
+  return () => {
+    seed = (seed + 0x6d2b79f5) | 0;
+    let t = Math.imul(seed ^ (seed >>> 15), 1 | seed);
+    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+// Every number of a JSON answer with its path ("engine.L1").
+function numbers(value, path = '', out = {}) {
+  if (typeof value === 'number') out[path] = value;
+  else if (value && typeof value === 'object' && !Array.isArray(value))
+    for (const [k, v] of Object.entries(value)) numbers(v, path ? path + '.' + k : k, out);
+  return out;
+}
+
+const NUDGED = ['L1', 'L2', 'L3', 'L4', 'M', 'm', 'mb'];
+const browser = await launch();
+const url = pathToFileURL(resolve(pagePath)).href;
+const { page, problems, requests } = await open(browser, url);
+try {
+  // ---- 1. loads clean ------------------------------------------------------------------------
+  check(problems.length === 0, `the page loads from file:// with no console error (${problems.length}: ${problems.join('; ')})`);
+  check(requests.length === 0, `and makes no network request (${requests.length}: ${requests.join(' ')})`);
+  const api = (name, request) => page.evaluate(([n, r]) => window.trebuchet[n](r), [name, request]);
+
+  // ---- 2. the same numbers as the native programs -----------------------------------------------
+  // The calculator is arithmetic and the same libm calls on both sides: its numbers agree to 1e-12.
+  // The shot integrates appendix A's equations with sin, cos and exp at every step; the browser's
+  // C library (musl, in Emscripten) and the native one (glibc) may round those a last bit apart,
+  // and the adaptive integrator and the release search carry such a bit into the result at the
+  // size of the method's own rounding noise. That noise is measured on the native program itself:
+  // the same design with each of its seven lengths and masses in turn one ulp larger. A figure
+  // passes within 1e-12 relative, or within ten times the largest change those one-ulp nudges
+  // make natively (the page and the program differ in many such last bits, not one). The energy drift, itself a measure of the
+  // integrator's error near 1e-13, passes within 1e-12 absolute.
+  const rand = random(20261124);
+  const designs = [
+    { name: 'Alcalá la Vieja Ca (150 m, 50 kg, θi 30°, F 2/3)', request: { R: '150m', m: '50kg', theta_i_deg: 30, F: '2/3' },
+      args: ['--R', '150m', '--m', '50kg', '--theta', '30', '--F', '2/3'] },
+  ];
+  // Random requests until 20 are designs; one the table does not cover must be refused alike,
+  // with the same message (the program's words for options aside).
+  let refusals = 0;
+  while (designs.length < 21) {
+    // The blocks of tab:CPNC: theta_i 30 deg with F 1 or 2/3, 40 deg with F 2/3.
+    const R = Math.round(60 + 440 * rand()), m = Math.round(5 + 145 * rand()), [theta, F] = [[30, '1'], [30, '2/3'], [40, '2/3']][Math.floor(3 * rand())];
+    const d = { name: `random ${designs.length}: R ${R} m, m ${m} kg, θi ${theta}°, F ${F}`, request: { R: `${R}m`, m: `${m}kg`, theta_i_deg: theta, F },
+      args: ['--R', `${R}m`, '--m', `${m}kg`, '--theta', String(theta), '--F', F], L4: 0.8 + 0.4 * rand(), M: 0.8 + 0.4 * rand() };
+    const theirs = nativeMaybe(calc, [...d.args, '--format', 'json']);
+    if (!theirs.error) { designs.push(d); continue; }
+    const mine = await api('design', d.request);
+    // Up to the first ';': the programs name options (--extrapolate), the page keys.
+    const words = (text) => text.replace(/^trebuchet-calc: /, '').split(';')[0];
+    check(mine.error && words(mine.error) === words(theirs.error), `${d.name}: refused alike, "${(mine.error || '').slice(0, 90)}..."`);
+    refusals++;
+  }
+  let worstDesign = 0;
+  const engines = [];
+  for (const d of designs) {
+    const mine = await api('design', d.request), theirs = native(calc, [...d.args, '--format', 'json']);
+    const mineNumbers = numbers(mine);
+    for (const [key, value] of Object.entries(numbers(theirs))) {
+      const difference = Math.abs(mineNumbers[key] - value) / Math.max(Math.abs(value), 1e-300);
+      worstDesign = Math.max(worstDesign, difference);
+      if (!(difference <= 1e-12)) check(false, `${d.name}: design ${key} ${mineNumbers[key]} against ${value}`);
+    }
+    // The random engines are taken off the optimum (L4 and M by up to 20 %), so that the shots
+    // are not all of one family.
+    const engine = { theta_i_deg: theirs.theta_i_deg, L1: theirs.L1, L2: theirs.L2, L3: theirs.L3, L4: theirs.L4 * (d.L4 || 1), M: theirs.M * (d.M || 1), m: theirs.m, mb: theirs.mb };
+    engines.push({ name: d.name, engine });
+  }
+  check(worstDesign <= 1e-12, `the calculator: ${designs.length} designs (and ${refusals} refusals alike), worst relative difference ${worstDesign.toExponential(2)} (within 1e-12)`);
+  const denny = JSON.parse(readFileSync(new URL('../cli/denny_standard.json', import.meta.url)));
+  delete denny.comment;
+  const dennyEngine = (await api('shot', { design: denny })).engine;
+  engines.splice(1, 0, { name: "Denny's standard engine", engine: { theta_i_deg: dennyEngine.theta_i_deg, L1: dennyEngine.L1, L2: dennyEngine.L2, L3: dennyEngine.L3, L4: dennyEngine.L4, M: dennyEngine.M, m: dennyEngine.m, mb: dennyEngine.mb } });
+
+  const settingsList = [
+    { name: 'vacuum', request: {}, args: [] },
+    { name: 'air, release for the range', request: { air: true, release: 'range' }, args: ['--air', '--quality', 'range'] },
+    { name: 'air with wind 5 m/s, target 10 m below', request: { air: { wind: 5 }, target_level: -10 }, args: ['--air', '--wind', '5', '--target-level', '-10'] },
+  ];
+  for (const settings of settingsList) {
+    let worstRelative = 0, worstOverBound = 0, compared = 0, refusedAlike = 0;
+    let worstKey = '';
+    const headline = { R: 0, T: 0, eps: 0, Q: 0, force_factor: 0 };
+    const nudged = [];
+    const keys = [null, ...NUDGED];
+    for (const { engine } of engines) for (const key of keys) nudged.push(key ? Object.assign({}, engine, { [key]: nextUp(engine[key]) }) : engine);
+    const all = nativeMaybe(verify, ['-', '--format', 'json', ...settings.args], JSON.stringify(nudged));
+    const theirsAll = Array.isArray(all) ? all : [];
+    for (let k = 0; k < engines.length; k++) {
+      const [theirs, ...nudges] = theirsAll.slice(keys.length * k, keys.length * (k + 1));
+      const mine = await api('shot', Object.assign({ design: engines[k].engine }, settings.request));
+      if (!theirs || theirs.error || mine.error) {
+        const alike = Boolean(theirs && theirs.error) && Boolean(mine.error);
+        check(alike, `${engines[k].name}, ${settings.name}: refused alike (native: ${theirs && theirs.error}; page: ${mine.error})`);
+        refusedAlike += alike;
+        continue;
+      }
+      const mineNumbers = numbers(mine), nudgeNumbers = nudges.map((n) => numbers(n));
+      for (const [key, value] of Object.entries(numbers(theirs))) {
+        const difference = Math.abs(mineNumbers[key] - value);
+        const floor = Math.max(...nudgeNumbers.map((n) => Math.abs(n[key] - value)));
+        const bound = key === 'energy_drift' ? 1e-12 : Math.max(1e-12 * Math.abs(value), 10 * floor);
+        compared++;
+        if (!(difference <= bound)) check(false, `${engines[k].name}, ${settings.name}: ${key} ${mineNumbers[key]} against ${value} (bound ${bound.toExponential(2)})`);
+        if (key !== 'energy_drift') {
+          const relative = difference / Math.max(Math.abs(value), 1e-300);
+          if (key in headline) headline[key] = Math.max(headline[key], relative);
+          if (relative > worstRelative) { worstRelative = relative; worstKey = key; }
+        }
+        if (difference > 0) worstOverBound = Math.max(worstOverBound, difference / bound);
+      }
+    }
+    check(compared > 0, `the shot, ${settings.name}: ${engines.length} engines, ${compared} numbers, ${refusedAlike} refused by both; worst relative difference ` +
+      `${worstRelative.toExponential(2)} (${worstKey}), worst difference over its bound ${worstOverBound.toFixed(3)}; worst of ` +
+      Object.entries(headline).map(([k, v]) => `${k} ${v.toExponential(1)}`).join(', '));
+  }
+
+  // ---- 3. the animation advances ----------------------------------------------------------------
+  const before = await page.evaluate(() => Number(document.getElementById('viewer').dataset.time));
+  await page.click('.tv-play');
+  await page.waitForTimeout(600);
+  const after = await page.evaluate(() => ({ time: Number(document.getElementById('viewer').dataset.time), frame: Number(document.getElementById('viewer').dataset.frame) }));
+  check(after.time > before && after.frame > 0, `the animation advances: t ${before} s -> ${after.time.toFixed(3)} s, frame ${after.frame}`);
+  await page.click('.tv-play');
+
+  // ---- 4. a shared URL restores the state ------------------------------------------------------
+  await page.selectOption('#pair', 'R,T');
+  await page.fill('#first', '300m');
+  await page.fill('#second', '60kJ');
+  await page.check('#air');
+  await page.selectOption('#units', 'imperial');
+  await page.click('nav button[data-view="edit"]');
+  await page.evaluate(() => {  // a drag of the L4 slider
+    const slider = document.querySelector('#sliders input[data-key="L4"]');
+    slider.value = String(Number(slider.value) * 0.9);
+    slider.dispatchEvent(new Event('input'));
+  });
+  const shared = await page.evaluate(() => ({ url: location.href, state: window.trebuchet.state(), R: document.querySelector('#viewer .tv-figures td').textContent }));
+  const second = await open(browser, shared.url);
+  const restored = await second.page.evaluate(() => ({ state: window.trebuchet.state(), R: document.querySelector('#viewer .tv-figures td').textContent }));
+  check(JSON.stringify(restored.state) === JSON.stringify(shared.state) && restored.R === shared.R,
+    `a shared URL restores the state (view ${restored.state.view}, units ${restored.state.units}, edited L4 ${restored.state.edit && restored.state.edit.L4}, R shown ${restored.R})`);
+  await second.context.close();
+
+  // ---- 5. the downloaded design is accepted by trebuchet-verify ----------------------------------
+  const folder = mkdtempSync(join(tmpdir(), 'trebuchet-web-'));
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-json')]);
+  const file = join(folder, 'design.json');
+  await download.saveAs(file);
+  const pageShot = await page.evaluate(() => window.trebuchet.viewer() && document.querySelector('#viewer .tv-figures td').textContent);
+  const verified = native(verify, [file, '--format', 'json', '--air']);
+  const mineShot = await api('shot', { design: JSON.parse(readFileSync(file, 'utf8')), air: true });
+  const closeness = Math.abs(verified.R - mineShot.R) / verified.R;
+  check(closeness < 1e-9, `the downloaded design reads in trebuchet-verify: R ${verified.R} m natively, ${mineShot.R} m in the page (shown ${pageShot}), relative ${closeness.toExponential(2)}`);
+
+  // ---- 6. Monte Carlo over Web Workers is the run of one module ---------------------------------
+  const request = { attested: { Lb: '9.5m', M: '2.5t..3.5t', m: '50kg' }, samples: 40, seed: 7 };
+  const [whole, parts] = await page.evaluate(async (r) => [window.trebuchet.monteCarlo(r), await window.trebuchet.monteCarloParallel(r)], request);
+  check(!whole.error && JSON.stringify(whole) === JSON.stringify(parts),
+    `a Monte Carlo run over Web Workers equals one run: R p50 ${whole.percentiles && whole.percentiles.R.p50} m, ${whole.error || ''}`);
+
+  // ---- 7. a refusal shows the calculator's own message ------------------------------------------
+  await page.click('nav button[data-view="design"]');
+  await page.selectOption('#pair', 'R,m');
+  await page.fill('#first', '90000m');
+  const refusal = await page.textContent('#design-message');
+  const nativeRefusal = nativeMaybe(calc, ['--R', '90000m', '--m', '50kg']);
+  check(/R/.test(refusal) && nativeRefusal.error && refusal.length > 20, `a refusal is shown: "${refusal.slice(0, 150)}"`);
+} finally {
+  await browser.close();
+}
+check(failures === 0, `${failures} failure(s)`);
+process.exit(failures ? 1 : 0);
