@@ -10,8 +10,9 @@ export async function launch() {
   });
 }
 
-// A page of `url` with every console error, page error and network request recorded.
-export async function open(browser, url, viewport) {
+// A page of `url` with every console error, page error and network request recorded; for the
+// trebuchet page (isPage), once its module is ready.
+export async function open(browser, url, viewport, isPage = true) {
   const context = await browser.newContext({ viewport: viewport || { width: 1280, height: 800 } });
   const page = await context.newPage();
   const problems = [], requests = [];
@@ -19,6 +20,6 @@ export async function open(browser, url, viewport) {
   page.on('pageerror', (e) => problems.push('page error: ' + e.message));
   page.on('request', (r) => { if (!r.url().startsWith('file:') && !r.url().startsWith('data:') && !r.url().startsWith('blob:')) requests.push(r.url()); });
   await page.goto(url);
-  await page.evaluate(() => window.trebuchet.ready);
+  if (isPage) await page.evaluate(() => window.trebuchet.ready);
   return { context, page, problems, requests };
 }

@@ -5,7 +5,8 @@
 //    designs give the native programs' JSON numbers (design: to 1e-12 relative; shot: see below).
 // 3. The animation advances; 4. a shared URL restores the state; 5. the downloaded design is
 //    accepted by trebuchet-verify and gives the page's shot; 6. a Monte Carlo run spread over
-//    Web Workers is the run of one module; 7. a refusal shows the calculator's message.
+//    Web Workers is the run of one module; 7. a refusal shows the calculator's message;
+// 8. the index.html of trebuchet-verify shot --plot draws its shot with the same viewer.
 // Each check prints how close it came. Exit 1 on any failure.
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
@@ -202,6 +203,20 @@ try {
   const refusal = await page.textContent('#design-message');
   const nativeRefusal = nativeMaybe(calc, ['--R', '90000m', '--m', '50kg']);
   check(/R/.test(refusal) && nativeRefusal.error && refusal.length > 20, `a refusal is shown: "${refusal.slice(0, 150)}"`);
+
+  // ---- 8. the report of trebuchet-verify shot --plot is the same viewer ------------------------
+  // Its index.html, opened from the folder, draws the shot inside it: through air when the shot
+  // flew through air, NOT PHYSICAL when the model stopped holding.
+  const engineFlags = ['--L1', '4.13m', '--L2', '0.88m', '--L4', '3.55m', '--M', '3.11t', '--m', '50kg', '--mb', '174kg'];
+  for (const [name, flags, expect] of [['air', ['--F', '2/3', '--air', '--target-level', '-15m'], /in air \(Cd 0\.47\).*target level -15 m/],
+                                       ['below', ['--F', '2'], /NOT PHYSICAL/]]) {
+    execFileSync(verify, ['shot', ...engineFlags, ...flags, '--plot', join(folder, name)], { stdio: 'ignore' });
+    const report = await open(browser, pathToFileURL(join(folder, name, 'index.html')).href, undefined, false);
+    const shown = await report.page.evaluate(() => ({ text: document.querySelector('.tv-head').innerText, charts: document.querySelectorAll('.tv-chart svg').length }));
+    check(expect.test(shown.text) && !(name === 'air' && /in vacuum/.test(shown.text)) && shown.charts === 4 && report.problems.length === 0,
+      `trebuchet-verify shot --plot (${name}): index.html draws the shot with the page's viewer, 4 charts, "${(shown.text.match(expect) || ['nothing'])[0].slice(0, 80)}"`);
+    await report.context.close();
+  }
 } finally {
   await browser.close();
 }

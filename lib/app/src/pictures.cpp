@@ -257,9 +257,8 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
           {"release_row", series.release_row}};
 }
 
-std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings) {
+std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings, const nlohmann::ordered_json& report, UnitSystem units) {
   const ShotSeries series = shot_series(engine, settings);
-  const double target_level = settings.target_level;
   const double g = engine.material.g, H = pivot_height(engine);
   const double mg_kN = engine.m * g / 1000, Mg_kN = engine.M * g / 1000, energy_kJ = engine.M * g * engine.L2 / 1000;
   const ScaledDesign d = scaled_design(engine);
@@ -457,69 +456,33 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   }
   files.push_back({"animation.gp", anim.str()});
 
-  // 7. One page that gathers them, with the words of docs/pictures.md.
+  // 7. The page: the browser page's viewer (web/viewer.js) with this shot inside, and the
+  // pictures above for print.
+  nlohmann::ordered_json shot = report;
+  shot["series"] = shot_series_json(series, engine);
+  std::string data = shot.dump();
+  for (std::size_t at = data.find("</"); at != std::string::npos; at = data.find("</", at + 3)) data.replace(at, 2, "<\\/");  // JSON's own escape
   std::ostringstream html;
   auto escaped = [](const std::string& text) {
     std::string out;
     for (char c : text) out += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
     return out;
   };
-  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>trebuchet shot</title>\n"
-       << "<style>body{font-family:sans-serif;max-width:1150px;margin:auto;padding:1em;line-height:1.4}img{max-width:100%}"
-          "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 8px;text-align:right}"
-          ".warning{background:#fde8e8;border:2px solid #cc0000;padding:0.5em 1em;color:#800}figcaption{color:#333}</style></head><body>\n"
-       << "<h1>One shot of a swinging-counterweight trebuchet</h1>\n"
-       << "<p>Made by <code>trebuchet-verify shot --plot</code>: the model of Horsdal, appendix A. This shot: <b>" << escaped(describe_assumptions(engine, settings))
-       << "</b>.</p>\n";
-  if (!v.warnings.empty()) {
-    html << "<div class=\"warning\"><b>Not physical.</b> The model stops holding before the release, so the figures below are not those of a real engine:<ul>\n";
-    for (const std::string& w : v.warnings) html << "<li>" << escaped(w) << "</li>\n";
-    html << "</ul></div>\n";
-  }
-  html << "<table><tr><th>engine</th><th></th><th>shot</th><th></th></tr>\n";
-  auto four = [](double x) { return format_significant(x, 4); };
-  const std::pair<std::string, std::string> left[] = {{"L1 (long arm)", four(engine.L1) + " m"}, {"L2 (short arm)", four(engine.L2) + " m"},
-                                                      {"L3 (counterweight arm)", four(engine.L3) + " m"}, {"L4 (sling)", four(engine.L4) + " m"},
-                                                      {"H (pivot height)", four(H) + " m"}, {"M (counterweight)", quantity_text(engine.M, UnitDimension::mass)},
-                                                      {"m (projectile)", quantity_text(engine.m, UnitDimension::mass)},
-                                                      {"mb (beam)", quantity_text(engine.mb, UnitDimension::mass)},
-                                                      {"θi (beam at rest)", four(engine.theta_i_deg) + "°"}};
-  const std::pair<std::string, std::string> right[] = {{std::string("range R") + (settings.air ? " (air)" : " (vacuum)"), four(v.capacity.R) + " m"},
-                                                       {"energy at the end T", quantity_text(v.capacity.T, UnitDimension::energy)},
-                                                       {"efficiency ε", format_significant(100 * v.eps, 3) + " %"},
-                                                       {"quality Q", format_significant(100 * v.Q, 3) + " %"},
-                                                       {"release speed v", format_significant(v.v, 3) + " m/s"},
-                                                       {"release time", format_significant(v.t_release, 3) + " s"},
-                                                       {"largest pivot force", quantity_text(v.loads[pivot_load].value, UnitDimension::force)},
-                                                       {"largest sling tension", quantity_text(v.loads[sling_tension_load].value, UnitDimension::force)},
-                                                       {settings.range_from_release ? "range measured" : "target level",
-                                                        settings.range_from_release ? "from the release point" : num(target_level) + " m"}};
-  for (int k = 0; k < 9; ++k)
-    html << "<tr><td>" << escaped(left[k].first) << "</td><td>" << escaped(left[k].second) << "</td><td>" << escaped(right[k].first) << "</td><td>"
-         << escaped(right[k].second) << "</td></tr>\n";
-  html << "</table>\n<p>Everything is on the site: x from the pivot toward the target, height above the engine's base.</p>\n";
-  const std::pair<const char*, std::string> figures[] = {
-      {"engine.svg", "The engine drawn to scale at rest, at lift-off, at t_m (the largest pivot force) and at the release. L1 is the long "
-                     "beam section, L2 the short one, L3 the counterweight's arm (L2 + L3 = F H), L4 the sling, H = L1 cos θi the pivot's "
-                     "height. θ is the beam's long arm from the downward vertical, ψ the counterweight's arm from the vertical, φ the "
-                     "sling from the horizontal; the third panel draws them."},
-      {"shot.gif", "The shot, slowed down, then the stone's whole flight " + std::string(settings.air ? "through air" : "in vacuum") + "."},
-      {"paths.svg", "The counterweight, the beam's tip and the projectile through phases I and II, then the projectile's flight " +
-                        std::string(settings.air ? "through air" : "in vacuum") + (settings.range_from_release ? " back to the release height. R runs from the release point." : " to the target level. R runs from the pivot to the impact.")},
-      {"forces.svg", "The forces in kN: F_S⊥, the sling's pull across the beam; the sling's tension; |F_R|, the pivot's force on the beam, and "
-                     "F_Rh, its horizontal part; |F_H|, the hinge's force; N, the trough's push on the projectile in phase I. The right axis "
-                     "gives multiples of M·g, the counterweight's weight. The marks are at lift-off, t_1 and t_2 (the extremes of F_Rh, eq:F), "
-                     "t_m and the release."},
-      {"energy.svg", "Each body's energy as gained since rest. The counterweight falls and gives up its energy; the beam takes a little; "
-                     "the projectile takes the most. At the release the projectile holds ε of ΔU (eq:DU); the red gap, 1 − ε, stays in "
-                     "the beam and the counterweight. The total stays constant: the model has no friction."},
-      {"release.svg", "Over phase II, and on past the release as if the projectile were kept, Q, ε and R and the running extremes of eq:F, "
-                      "each over its value at the release. The release is where the chosen criterion peaks (section 5). An extreme's "
-                      "dashed line is flat while its force stays below the extreme so far, and rises once the force passes it."}};
-  for (const auto& [file, caption] : figures)
-    html << "<figure><img src=\"" << file << "\" alt=\"" << file << "\"><figcaption>" << escaped(caption) << "</figcaption></figure>\n";
-  html << "<p>The data: <a href=\"shot.csv\">shot.csv</a> (every sample), <a href=\"release.csv\">release.csv</a>, "
-          "<a href=\"flight.csv\">flight.csv</a>.</p>\n</body></html>\n";
+  html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
+       << "<title>trebuchet shot</title>\n<style>\n" << viewer_style() << "main { display: block; }\n</style></head><body>\n"
+       << "<header><h1>One shot of a swinging-counterweight trebuchet</h1><p class=\"tagline\">Made by <code>trebuchet-verify shot --plot</code>: the model of "
+       << "Horsdal, appendix A. " << escaped(describe_assumptions(engine, settings)) << ".</p></header>\n<main><section id=\"shot\"><div id=\"viewer\"></div>\n"
+       << "<h2>Pictures for print</h2><ul>\n";
+  const std::pair<const char*, const char*> pictures[] = {
+      {"engine.svg", "the engine to scale at rest, at lift-off, at the largest pivot force and at the release, with θ, ψ and φ"},
+      {"shot.gif", "the shot slowed down, then the whole flight"}, {"paths.svg", "the paths and the flight"},
+      {"forces.svg", "the forces up to the release"}, {"energy.svg", "where the energy goes"}, {"release.svg", "why the release is where it is"}};
+  for (const auto& [file, what] : pictures) html << "<li><a href=\"" << file << "\">" << file << "</a>: " << what << "</li>\n";
+  html << "</ul><p>The data: <a href=\"shot.csv\">shot.csv</a> (every sample), <a href=\"release.csv\">release.csv</a>, <a href=\"flight.csv\">flight.csv</a>. "
+          "docs/pictures.md explains each picture.</p></section></main>\n"
+       << "<script type=\"application/json\" id=\"shot-data\">" << data << "</script>\n<script>\n" << viewer_script() << "\n</script>\n"
+       << "<script>TrebuchetViewer.render(document.getElementById('viewer'), JSON.parse(document.getElementById('shot-data').textContent), {units: '"
+       << (units == UnitSystem::imperial ? "imperial" : "si") << "'});</script>\n</body></html>\n";
   files.push_back({"index.html", html.str()});
   return files;
 }

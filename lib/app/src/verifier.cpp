@@ -73,7 +73,6 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   }
   std::vector<TracePoint> trace;
   const Verification v = verify_engine(engine, check.settings, check.series_path.empty() ? nullptr : &trace, check.series_dt_s);
-  if (!check.plot_dir.empty()) write_picture_folder(check.plot_dir, shot_pictures(engine, check.settings), picture_scripts(), check.inputs);
   std::optional<CapacityCheck> capacity;
   if (record.capacity) capacity = check_capacity(v, *record.capacity, check.tolerance);
   out.json = verification_json(v, capacity);
@@ -85,6 +84,8 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   if (check.fit) engine_json.update(simulated);
   out.json["engine"] = engine_json;
   out.json["assumptions"] = assumptions_json(engine, check.settings);
+  if (!check.plot_dir.empty())
+    write_picture_folder(check.plot_dir, shot_pictures(engine, check.settings, out.json, check.units), picture_scripts(), check.inputs);
   if (!check.series_path.empty()) write_output_file(check.series_path, trace_csv(trace, engine), "series");
   out.outside_tolerance = capacity && !capacity->pass;
   return out;

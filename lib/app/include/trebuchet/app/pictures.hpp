@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -56,8 +57,14 @@ struct PictureFile {
 /// The picture set of a shot of `engine` under `settings`: it simulates the shot, sampled about
 /// 200 times up to the release, and phase II past the release for the release picture. The
 /// gnuplot scripts (*.gp) write engine.svg, paths.svg, forces.svg, energy.svg, release.svg and
-/// shot.gif in the folder they are run in.
-std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings);
+/// shot.gif in the folder they are run in. index.html is the browser page's viewer with the
+/// shot inside: `report` (the program's JSON of it) and its series, in `units`.
+std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings, const nlohmann::ordered_json& report,
+                                       UnitSystem units = UnitSystem::si);
+
+/// The viewer's script and style (web/viewer.js, web/style.css), compiled in.
+std::string_view viewer_script();
+std::string_view viewer_style();
 
 /// The gnuplot scripts of the set, in the order to run them.
 std::vector<std::string> picture_scripts();
