@@ -22,9 +22,22 @@
   let viewer = null;
 
   // ---- the library --------------------------------------------------------------------------
+  // A number JSON cannot carry (NaN, Infinity) would arrive as null: it is refused here, by name.
+  function notFinite(value, path) {
+    if (typeof value === 'number') return isFinite(value) ? null : [path, value];
+    if (value && typeof value === 'object') {
+      for (const [k, v] of Object.entries(value)) { const found = notFinite(v, path ? path + '.' + k : k); if (found) return found; }
+    }
+    return null;
+  }
   function call(name, request) {
-    const answer = JSON.parse(module[name](JSON.stringify(request)));
-    return answer;
+    const bad = notFinite(request, '');
+    if (bad) return { error: `${bad[0]}: ${bad[1]} is not a finite number; give a number or a value with a unit like "150m"`, kind: 'bad_number', names: [bad[0]] };
+    try {
+      return JSON.parse(module[name](JSON.stringify(request)));
+    } catch (e) {  // the module itself failed (out of memory, say): an internal error, not the request's
+      return { error: `internal error in the module (${e.message}); reload the page, and please report the request`, kind: 'numerical', names: [] };
+    }
   }
   function settings() {
     const s = { release: state.release, target_level: state.target_level, range_from: state.range_from };
@@ -63,6 +76,15 @@
       select.innerHTML = QUANTITIES.map((q) => `<option value="${q}">${q}</option>`).join('');
     }
   }
+  // A drag of a given's slider: a factor of 4 either way of its value as typed, on a log scale,
+  // in the unit it was typed in ("500ft" drags in feet).
+  function givenSlider(slot) {
+    const slider = $(slot + '-drag'), text = String(state[slot][1]).trim();
+    const value = parseFloat(text);
+    slider.dataset.centre = isFinite(value) && value > 0 ? String(value) : '1';
+    slider.dataset.unit = text.replace(/^[+]?[0-9.]+([eE][-+]?[0-9]+)?/, '');
+    slider.value = '0';
+  }
   function showPair() {
     const any = state.pair === 'any';
     document.querySelectorAll('.any-pair').forEach((s) => { s.hidden = !any; });
@@ -70,6 +92,7 @@
     $('first-name').value = state.first[0]; $('second-name').value = state.second[0];
     $('first-label').textContent = state.first[0]; $('second-label').textContent = state.second[0];
     $('first').value = state.first[1]; $('second').value = state.second[1];
+    givenSlider('first'); givenSlider('second');
   }
   function runDesign() {
     const request = { theta_i_deg: Number(state.theta), F: state.F };
@@ -106,7 +129,8 @@
     }
     shown = { engine, shot: answer };
     $('shot-title').textContent = title;
-    viewer = V.render($('viewer'), answer, { units: state.units });
+    // A change keeps the animation where it stood, so that a drag shows the same moment.
+    viewer = V.render($('viewer'), answer, { units: state.units, time: viewer ? viewer.time() : 0 });
     const json = JSON.stringify(Object.assign({}, engine), null, 2) + '\n';
     $('download-json').href = 'data:application/json;charset=utf-8,' + encodeURIComponent(json);
     $('download-csv').href = 'data:text/csv;charset=utf-8,' + encodeURIComponent(V.seriesCsv(answer));
@@ -281,7 +305,13 @@
       showPair(); update();
     });
     for (const [id, slot] of [['first', 'first'], ['second', 'second']]) {
-      $(id).addEventListener('input', () => { state[slot][1] = $(id).value; update(); });
+      $(id).addEventListener('input', () => { state[slot][1] = $(id).value; givenSlider(slot); update(); });
+      $(id + '-drag').addEventListener('input', () => {
+        const value = Number($(id + '-drag').dataset.centre) * Math.pow(4, Number($(id + '-drag').value));
+        state[slot][1] = V.significant(value, 4) + $(id + '-drag').dataset.unit;
+        $(id).value = state[slot][1];
+        update();
+      });
       $(id + '-name').addEventListener('change', () => { state[slot][0] = $(id + '-name').value; state[slot][1] = EXAMPLES[state[slot][0]]; showPair(); update(); });
     }
     const fields = [['theta', 'theta'], ['F', 'F'], ['cd', 'cd'], ['wind', 'wind'], ['release', 'release'], ['target-level', 'target_level'], ['range-from', 'range_from'], ['samples', 'samples']];

@@ -275,7 +275,7 @@
   }
 
   // The viewer into `container`: figures, warnings, the animation and the charts. `options`:
-  // units ('si', 'imperial'), downloads (bool), caption (text above).
+  // units ('si', 'imperial'), downloads (bool), time (where the animation stands, s).
   function render(container, shot, options) {
     options = options || {};
     const system = options.units || 'si';
@@ -342,7 +342,7 @@
       const k = Math.min(Math.max(after / s.flight.time, 0), 1) * (s.flight.x.length - 1), i = Math.min(Math.floor(k), s.flight.x.length - 2), w = k - i;
       return [s.flight.x[i] + w * (s.flight.x[i + 1] - s.flight.x[i]), s.flight.y[i] + w * (s.flight.y[i + 1] - s.flight.y[i])];
     };
-    let time = 0, playing = false, last = null;
+    let time = Math.min(options.time || 0, tEnd), playing = false, last = null;
     const scrub = controls.querySelector('.tv-scrub'), timeText = controls.querySelector('.tv-time'), play = controls.querySelector('.tv-play');
     const speed = controls.querySelector('.tv-speed'), angles = controls.querySelector('.tv-angles');
     function draw() {
@@ -419,7 +419,7 @@
       grid.appendChild(box);
     }
     container.appendChild(grid);
-    return { redraw: draw, setTime: (t) => { time = Math.max(0, Math.min(tEnd, t)); draw(); }, playing: () => playing, duration: tEnd };
+    return { redraw: draw, setTime: (t) => { time = Math.max(0, Math.min(tEnd, t)); draw(); }, time: () => time, playing: () => playing, duration: tEnd };
   }
 
   // The series as CSV: one row per frame, SI units.

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "trebuchet/app/api.hpp"
+#include "trebuchet/app/text_input.hpp"
 
 namespace {
 
@@ -13,13 +14,8 @@ using Request = nlohmann::ordered_json (*)(const nlohmann::json&);
 
 std::string answer(Request request, const std::string& text) {
   try {
-    nlohmann::json parsed;
-    try {
-      parsed = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-      throw trebuchet::Error(trebuchet::ErrorKind::usage, std::string("the request is not JSON: ") + e.what());
-    }
-    return request(parsed).dump();
+    // As the programs read a JSON file: bounded depth, no key given twice, no number beyond a double.
+    return request(trebuchet::parse_json(text, "the request", "a JSON object of the request's keys (docs/web.md)")).dump();
   } catch (const trebuchet::Error& e) {
     return trebuchet::api::error_json(e).dump();
   } catch (const std::exception& e) {

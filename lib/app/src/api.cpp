@@ -282,9 +282,11 @@ ordered_json monte_carlo(const json& request) {
       shots_per_sample = 300;
     }
   }
-  const int samples = static_cast<int>(read_value(request, "samples", UnitDimension::dimensionless, "")
-                                           .value_or(completes ? default_completion_samples : default_shot_samples));
-  if (samples < 1) throw Error(ErrorKind::bad_number, "{{samples}} = " + std::to_string(samples) + " must be 1 or more");
+  const double samples_given = read_value(request, "samples", UnitDimension::dimensionless, "")
+                                   .value_or(completes ? default_completion_samples : default_shot_samples);
+  if (!(samples_given >= 1 && samples_given <= max_run_shots) || samples_given != std::floor(samples_given))
+    throw Error(ErrorKind::bad_number, "{{samples}} = " + format_significant(samples_given, 6) + " must be a whole number from 1 to " + std::to_string(max_run_shots));
+  const int samples = static_cast<int>(samples_given);
   check_monte_carlo_work(samples, shots_per_sample, completes ? "completions" : "shots");
   const double seed_value = read_value(request, "seed", UnitDimension::dimensionless, "").value_or(1);
   if (!(seed_value >= 0 && seed_value < 9007199254740992.0) || seed_value != std::floor(seed_value))
@@ -306,7 +308,7 @@ ordered_json monte_carlo(const json& request) {
   if (request.contains("first") || request.contains("count")) {  // one worker's part
     const auto first = read_value(request, "first", UnitDimension::dimensionless, "").value_or(0);
     const auto count = read_value(request, "count", UnitDimension::dimensionless, "").value_or(samples - first);
-    if (!(first >= 0 && count >= 0 && first + count <= samples))
+    if (!(first >= 0 && count >= 0 && first + count <= samples) || first != std::floor(first) || count != std::floor(count))
       throw Error(ErrorKind::bad_number, "{{first}} and {{count}} must pick samples from 0 to {{samples}} - 1");
     ordered_json part = ordered_json::array();
     for (auto i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(first + count); ++i) {

@@ -1,0 +1,47 @@
+// Screenshots of every view of the page, to look at (not a test):
+//   node tests/web/screenshots.mjs PAGE.html OUTDIR
+// Each view at 1280x800 (the first screen, and the whole page) and at a phone's 390x844, and the
+// README's picture (docs/figures/web.png is OUTDIR/design-1280.png).
+import { mkdirSync } from 'node:fs';
+import { resolve, join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { launch, open } from './browser.mjs';
+
+const [pagePath, out] = process.argv.slice(2);
+mkdirSync(out, { recursive: true });
+const browser = await launch();
+const url = pathToFileURL(resolve(pagePath)).href;
+const views = {
+  design: async () => {},
+  edit: async (page) => {
+    await page.click('nav button[data-view="edit"]');
+    await page.evaluate(() => { const s = document.querySelector('#sliders input[data-key="L4"]'); s.value = String(Number(s.value) * 1.4); s.dispatchEvent(new Event('input')); });
+  },
+  reconstruct: async (page) => {
+    await page.click('nav button[data-view="reconstruct"]');
+    await page.fill('#attested input[data-key="M"]', '2.5t..3.5t');
+    await page.click('#complete');
+    await page.click('#monte-carlo');
+    await page.waitForFunction(() => document.getElementById('progress').hidden, null, { timeout: 60000 });
+  },
+  air: async (page) => {
+    await page.check('#air');
+    await page.fill('#target-level', '-20m');
+    await page.evaluate(() => window.trebuchet.viewer().setTime(1.6));
+  },
+  refused: async (page) => { await page.fill('#first', '5000m'); },
+  imperial: async (page) => { await page.selectOption('#units', 'imperial'); },
+};
+for (const [name, act] of Object.entries(views)) {
+  for (const [width, height] of [[1280, 800], [390, 844]]) {
+    const { page, context, problems } = await open(browser, url, { width, height });
+    await act(page);
+    await page.waitForTimeout(200);
+    await page.screenshot({ path: join(out, `${name}-${width}.png`) });
+    if (width === 1280) await page.screenshot({ path: join(out, `${name}-${width}-full.png`), fullPage: true });
+    if (problems.length) console.log(name, width, problems);
+    await context.close();
+  }
+}
+await browser.close();
+console.log(`screenshots in ${out}`);
