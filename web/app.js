@@ -150,7 +150,7 @@
       const [lo, hi] = key === 'theta_i_deg' ? [10, 80] : [centre * 0.3, centre * 2.5];
       const row = document.createElement('label');
       row.className = 'slider';
-      row.innerHTML = `<span class="name">${key === 'theta_i_deg' ? 'θi' : key}</span><input type="range" min="${lo}" max="${hi}" step="${(hi - lo) / 1000}" value="${state.edit[key]}" data-key="${key}"><output></output>`;
+      row.innerHTML = `<span class="name">${key === 'theta_i_deg' ? 'θi' : key}</span><input type="range" min="${lo}" max="${hi}" step="any" value="${state.edit[key]}" data-key="${key}" aria-label="${key}"><output></output>`;
       const input = row.querySelector('input'), out = row.querySelector('output');
       const show = () => { out.textContent = dimension === 'angle' ? V.significant(Number(input.value), 4) + '°' : V.quantity(Number(input.value), dimension, state.units); };
       show();
@@ -162,12 +162,17 @@
     const box = $('compare');
     if (!answer) { box.innerHTML = ''; return; }
     // The paper's optimum for the edited engine's own capacity (vacuum, level 0), same θi and F.
-    const optimum = call('design', { R: answer.R_vacuum, T: answer.T_vacuum, theta_i_deg: designed ? designed.theta_i_deg : 30, F: designed ? designed.F : 1 });
+    const request = { R: answer.R_vacuum, T: answer.T_vacuum, theta_i_deg: designed ? designed.theta_i_deg : 30, F: designed ? designed.F : 1 };
+    let optimum = call('design', request), note = '';
+    if (optimum.kind === 'out_of_range') {  // beyond the table: its nearest segment, said so
+      const extrapolated = call('design', Object.assign({ extrapolate: true }, request));
+      if (!extrapolated.error) { note = ' (extrapolated: this capacity lies beyond tab:CPNC)'; optimum = extrapolated; }
+    }
     const q = (v, d) => V.quantity(v, d, state.units);
     if (optimum.error) { box.innerHTML = `<p class="message">No optimum of the table for this capacity: ${escapeHtml(optimum.error)}</p>`; return; }
     const shot = call('shot', Object.assign({ design: engineOf(optimum) }, settings()));
     const cell = (a, b, f) => `<td>${f(a)}</td><td>${shot.error ? '—' : f(b)}</td>`;
-    box.innerHTML = `<table class="tv-figures compare"><caption>the edited engine beside the paper's optimum for the same capacity</caption>
+    box.innerHTML = `<table class="tv-figures compare"><caption>the edited engine beside the paper's optimum for the same capacity${note}</caption>
       <tr><th></th><th>edited</th><th>optimal</th></tr>
       <tr><th>quality Q</th>${cell(answer.Q, shot.Q, (v) => V.significant(100 * v, 4) + ' %')}</tr>
       <tr><th>efficiency ε</th>${cell(answer.eps, shot.eps, (v) => V.significant(100 * v, 4) + ' %')}</tr>
@@ -179,7 +184,7 @@
 
   // ---- reconstruct ----------------------------------------------------------------------------
   function buildAttested() {
-    $('attested').innerHTML = ATTESTED.map(([key, name]) => `<label>${name} <span class="name">${key === 'theta_i_deg' ? 'θi' : key}</span> <input data-key="${key}" value="${escapeHtml(state.attested[key] || '')}" size="12" autocomplete="off"></label>`).join('');
+    $('attested').innerHTML = ATTESTED.map(([key, name]) => `<label class="row"><span>${name} <span class="name">${key === 'theta_i_deg' ? 'θi' : key}</span></span> <input data-key="${key}" value="${escapeHtml(state.attested[key] || '')}" autocomplete="off"></label>`).join('');
     $('attested').querySelectorAll('input').forEach((input) => input.addEventListener('input', () => {
       if (input.value.trim()) state.attested[input.dataset.key] = input.value.trim(); else delete state.attested[input.dataset.key];
       saveState();
@@ -203,7 +208,7 @@
       <tr><th>shot</th><td>R ${q(answer.R, 'length')}, T ${q(answer.T, 'energy')}, Q ${V.significant(100 * answer.Q, 3)} %, ε ${V.significant(100 * answer.eps, 3)} %</td></tr>
       ${longest ? `<tr><th>longest range</th><td>${q(longest.R, 'length')} with L4 ${q(longest.L4, 'length')} (chosen: ${longest.chosen.join(', ')})</td></tr>` : ''}
       </table><div id="band"></div>`;
-    runShot(engineOf(answer), 'The completed engine, shot');
+    runShot(engineOf(answer), "The completed engine's shot");
     return answer;
   }
 
@@ -252,6 +257,11 @@
     self.onmessage = (event) => { ready.then((m) => self.postMessage(m.monteCarlo(event.data))); };
   }
   async function runBand() {
+    if (!Object.values(state.attested).some(uncertain)) {
+      $('reconstruct-message').className = 'message refused';
+      $('reconstruct-message').textContent = 'Give at least one value as a range (2.5t..3.5t) or a spread (3.5m±0.2m): the band is what the uncertain values make of R and T.';
+      return null;
+    }
     const request = Object.assign({ attested: Object.assign({}, state.attested), samples: Number(state.samples), seed: 1 }, settings());
     const bar = $('progress');
     bar.hidden = false; bar.value = 0;
@@ -274,11 +284,11 @@
     saveState();
     const started = performance.now();
     if (state.view === 'design') {
-      if (runDesign()) runShot(engineOf(designed), 'The optimal engine, shot');
-      else { $('viewer').innerHTML = ''; shown = null; }
+      if (runDesign()) runShot(engineOf(designed), "The optimal engine's shot");
+      else { $('viewer').innerHTML = ''; shown = null; $('shot-title').textContent = 'No engine to shoot: the request was refused (see the message)'; }
     } else if (state.view === 'edit') {
       if (!state.edit && designed) state.edit = engineOf(designed);
-      const answer = state.edit ? runShot(state.edit, 'The edited engine, shot') : null;
+      const answer = state.edit ? runShot(state.edit, "The edited engine's shot") : null;
       compareWithOptimum(answer);
     } else if (state.view === 'reconstruct') {
       runComplete();

@@ -290,8 +290,11 @@
     const loads = [['sling tension', shot.sling_tension, shot.t_sling_tension], ['hinge pin |F_H|', shot.hinge_force, shot.t_hinge_force],
       ['pivot |F_R|', shot.pivot_force, shot.t_pivot_force]].filter(([, v]) => v !== undefined);
     const row = (name, value, title) => `<tr${title ? ` title="${escapeHtml(title)}"` : ''}><th>${name}</th><td>${value}</td></tr>`;
-    head.innerHTML = `<p class="tv-scene">This shot: <b>${escapeHtml(describeAssumptions(shot))}</b>.</p>${warnings}${notes}
-      <div class="tv-tables"><table class="tv-figures"><caption>the shot</caption>
+    head.innerHTML = `<p class="tv-scene">This shot: <b>${escapeHtml(describeAssumptions(shot))}</b>.</p>${warnings}${notes}`;
+    container.appendChild(head);
+    const tables = document.createElement('div');
+    tables.className = 'tv-tables';
+    tables.innerHTML = `<table class="tv-figures"><caption>the shot</caption>
       ${row('range R' + (shot.assumptions.air === 'vacuum' ? '' : ' (air)'), q(shot.R, 'length'), 'eq:R, to the target level')}
       ${row('energy at the end T', q(shot.T, 'energy'), 'eq:T')}
       ${row('efficiency ε', significant(100 * shot.eps, 4) + ' %', 'eq:Aux: T/ΔU at level 0')}
@@ -308,8 +311,7 @@
       ${row('L1, L2 (beam)', q(e.L1, 'length') + ', ' + q(e.L2, 'length'))}${row('L3 (counterweight arm)', q(e.L3, 'length'))}
       ${row('L4 (sling)', q(e.L4, 'length'))}${row('H (pivot height)', q(e.H, 'length'))}
       ${row('M, m, mb', q(e.M, 'mass') + ', ' + q(e.m, 'mass') + ', ' + q(e.mb, 'mass'))}${row('θi', significant(e.theta_i_deg, 4) + '°')}
-      </table></div>`;
-    container.appendChild(head);
+      </table>`;
 
     // The animation: phases I and II to scale, then the whole flight.
     const stage = document.createElement('div');
@@ -325,6 +327,7 @@
       <label><input type="checkbox" class="tv-angles" checked> angles</label><span class="tv-time"></span>`;
     stage.appendChild(controls);
     container.appendChild(stage);
+    container.appendChild(tables);
     const f = s.frames, r = s.moments.release, tRelease = f.t[r], tEnd = tRelease + s.flight.time;
     // The engine's view holds every point of phases I and II; the flight's view the whole path.
     let xs = [-0.3 * e.H, 0.3 * e.H], ys = [0, e.H];
@@ -348,7 +351,10 @@
     function draw() {
       scene.innerHTML = '';
       svg('rect', { x: 0, y: 0, width, height, fill: '#f7fbff' }, scene);
-      const flying = time > tRelease + 0.15 * s.flight.time;
+      // The view widens to the whole flight once the stone leaves the engine's view.
+      const stone = time > tRelease ? stoneAt(time - tRelease) : null;
+      const seen = stone && near.to(stone[0], stone[1]);
+      const flying = Boolean(seen) && (seen[0] < 0 || seen[0] > width || seen[1] < 0 || seen[1] > height - 30);
       const v = flying ? far : near;
       let i = 0;
       while (i + 1 < f.t.length && f.t[i + 1] <= time) i++;
@@ -356,11 +362,17 @@
       const ground = v.to(0, 0);
       svg('rect', { x: 0, y: ground[1], width, height: Math.max(0, height - ground[1]), fill: '#e8f0d8' }, g);
       svg('line', { x1: 0, x2: width, y1: ground[1], y2: ground[1], stroke: COLOURS.ground, 'stroke-width': 2 }, g);
+      const level = shot.assumptions.range_from === 'release' ? null : shot.assumptions.target_level;
+      if (flying && level) {  // the level the flight ends at, when it is not the ground
+        const at = v.to(0, level);
+        svg('line', { x1: 0, x2: width, y1: at[1], y2: at[1], stroke: '#888', 'stroke-dasharray': '6 4' }, g);
+        text(g, width - 8, at[1] - 4, 'target level ' + significant(level, 4) + ' m', { 'text-anchor': 'end', fill: '#555', 'font-size': 11 });
+      }
       if (time > tRelease) {
         const trail = [];
         for (let k = 0; k < s.flight.x.length; k++) trail.push(v.to(s.flight.x[k], s.flight.y[k]).map((n) => n.toFixed(1)).join(' '));
         svg('path', { d: 'M' + trail.join('L'), fill: 'none', stroke: '#bbb', 'stroke-dasharray': '4 4' }, g);
-        const at = v.to(...stoneAt(time - tRelease));
+        const at = v.to(stone[0], stone[1]);
         svg('circle', { cx: at[0], cy: at[1], r: flying ? 4 : Math.max(3.5, 0.03 * e.H * v.scale), fill: COLOURS.stone }, g);
       }
       drawEngine(g, shot, i, v.to, v.scale, { angles: angles.checked && !flying });

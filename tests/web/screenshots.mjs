@@ -27,7 +27,7 @@ const views = {
   air: async (page) => {
     await page.check('#air');
     await page.fill('#target-level', '-20m');
-    await page.evaluate(() => window.trebuchet.viewer().setTime(1.6));
+    await page.evaluate(() => window.trebuchet.viewer().setTime(2.2));
   },
   refused: async (page) => { await page.fill('#first', '5000m'); },
   imperial: async (page) => { await page.selectOption('#units', 'imperial'); },
@@ -38,7 +38,10 @@ for (const [name, act] of Object.entries(views)) {
     await act(page);
     await page.waitForTimeout(200);
     await page.screenshot({ path: join(out, `${name}-${width}.png`) });
-    if (width === 1280) await page.screenshot({ path: join(out, `${name}-${width}-full.png`), fullPage: true });
+    if (width === 1280) {
+      await page.screenshot({ path: join(out, `${name}-${width}-full.png`), fullPage: true });
+      await page.locator('#controls').screenshot({ path: join(out, `${name}-${width}-controls.png`) });
+    }
     if (problems.length) console.log(name, width, problems);
     await context.close();
   }
