@@ -137,13 +137,15 @@ ordered_json completion_answer(const CompletionRequest& request) {
   return completion_json(report.completion, request.settings, report.longest ? &*report.longest : nullptr, report.longest_note);
 }
 
-// The dimension of a design's or an attested object's key (for a spread of it).
-UnitDimension dimension_of(const std::string& key) {
+// The dimension of a design's or an attested object's value (for a spread of it); empty for a
+// key that is no such value (a design's derived keys, Lb, DeltaU, which read_engine ignores).
+std::optional<UnitDimension> dimension_of(const std::string& key, bool attested) {
+  if (!attested && (key == "Lb" || key == "H" || key == "l")) return std::nullopt;  // a design's, derived
   for (const auto& [name, dimension] : attested_keys)
     if (name == key) return dimension;
-  if (key == "L3") return UnitDimension::length;
-  if (key == "psi_i_deg" || key == "theta") return UnitDimension::angle;
-  throw Error(ErrorKind::usage, "{{" + key + "}}: a range or a spread is for an engine's values (L1 ... theta_i_deg)");
+  if (!attested && key == "L3") return UnitDimension::length;
+  if (!attested && (key == "psi_i_deg" || key == "theta")) return UnitDimension::angle;
+  return std::nullopt;
 }
 
 constexpr ErrorKind all_kinds[] = {ErrorKind::usage,        ErrorKind::given_count, ErrorKind::bad_number, ErrorKind::unknown_unit,
@@ -248,11 +250,12 @@ ordered_json monte_carlo(const json& request) {
   std::vector<UncertainInput> inputs;
   std::vector<FixedInput> fixed;
   for (const auto& [key, value] : values.items()) {
-    const UnitDimension dimension = dimension_of(key);
+    const std::optional<UnitDimension> dimension = dimension_of(key, completes);
+    if (!dimension) continue;  // read_engine ignores it; completion_request_of refuses it by name
     std::optional<Spread> spread;
-    if (value.is_string()) spread = parse_spread(value.get<std::string>(), dimension, where + "." + key);
-    if (spread) inputs.push_back({key, dimension, *spread});
-    else if (const auto number = read_value(values, key, dimension, where)) fixed.push_back({key, dimension, *number});
+    if (value.is_string()) spread = parse_spread(value.get<std::string>(), *dimension, where + "." + key);
+    if (spread) inputs.push_back({key, *dimension, *spread});
+    else if (const auto number = read_value(values, key, *dimension, where)) fixed.push_back({key, *dimension, *number});
   }
   auto with_draws = [&](const std::function<double(const Spread&)>& value) {
     json set = values;

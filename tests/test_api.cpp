@@ -1,0 +1,111 @@
+// trebuchet::api, the JSON requests of the browser page (and the Python module): each gives what
+// the library gives through its typed calls, refuses by name, and a Monte Carlo run split into
+// parts is the whole run.
+#include <catch2/catch.hpp>
+
+#include "trebuchet/app/api.hpp"
+#include "trebuchet/app/schema.hpp"
+#include "trebuchet/calculator.hpp"
+#include "trebuchet/scaling_table.hpp"
+#include "trebuchet/verification.hpp"
+
+using namespace trebuchet;
+using json = nlohmann::json;
+
+namespace {
+
+// The answer of a request that must be refused: its error, or a failed test.
+Error refusal(nlohmann::ordered_json (*request)(const json&), const json& r) {
+  try {
+    request(r);
+  } catch (const Error& e) {
+    return e;
+  }
+  FAIL("not refused: " << r.dump());
+  return Error(ErrorKind::usage, "");
+}
+
+}  // namespace
+
+TEST_CASE("api::design is the calculator's design, its numbers unchanged", "[api]") {
+  DesignRequest typed;
+  typed.first = {Quantity::R, 150};
+  typed.second = {Quantity::m, 50};
+  typed.F = 2.0 / 3;
+  const OptimalEngine expected = design_optimal_engine(builtin_scaling_table(), typed);
+  // The same request in the page's words: values with units, F as a fraction.
+  const auto answer = api::design({{"R", "150m"}, {"m", "50kg"}, {"F", "2/3"}});
+  // The same code path on the same numbers: equal to the last bit.
+  CHECK(answer["L1"].get<double>() == expected.engine.L1);
+  CHECK(answer["M"].get<double>() == expected.engine.M);
+  CHECK(answer["T"].get<double>() == expected.capacity.T);
+}
+
+TEST_CASE("api::shot is verify_engine under the request's settings, which its answer states", "[api]") {
+  const auto design = api::design({{"R", "150m"}, {"m", "50kg"}});
+  const json request = {{"design", design}, {"air", {{"wind", "5m/s"}}}, {"release", "range"}, {"target_level", "-10m"}};
+  const auto answer = api::shot(request);
+  ShotSettings settings;
+  Air air;
+  air.wind = 5;
+  settings.air = air;
+  settings.criterion.release = Release::range;
+  settings.target_level = -10;
+  const Verification v = verify_engine(read_engine(design, "design").engine, settings);
+  CHECK(answer["R"].get<double>() == v.capacity.R);
+  CHECK(answer["eps"].get<double>() == v.eps);
+  CHECK(answer["assumptions"]["air"]["wind"].get<double>() == 5);
+  CHECK(answer["assumptions"]["release"] == "range");
+  // The answer's settings go back in as they came out, and give the same shot.
+  json again = answer["assumptions"];
+  for (const char* only_reported : {"g", "theta_i_deg", "F"}) again.erase(only_reported);
+  again["air"].erase("projectile_diameter");
+  again["design"] = design;
+  CHECK(api::shot(again)["R"].get<double>() == answer["R"].get<double>());
+}
+
+TEST_CASE("api::shot's series runs from rest through the release to the flight's end", "[api]") {
+  const auto answer = api::shot({{"design", api::design({{"R", "150m"}, {"m", "50kg"}})}, {"series", true}});
+  const auto& series = answer["series"];
+  const auto& frames = series["frames"];
+  const std::size_t release = series["moments"]["release"];
+  CHECK(frames["phase"][0] == "I");
+  CHECK(frames["phase"][release] == "II");
+  CHECK(frames["phase"][release + 1] == "III");
+  // The release frame is the shot's release: the same time to 1e-9 s (the trace's release is the
+  // refined one), and the flight ends R from the pivot at the target level 0.
+  CHECK(frames["t"][release].get<double>() == Approx(answer["t_release"].get<double>()).margin(1e-9));
+  CHECK(series["flight"]["x"].back().get<double>() == Approx(answer["R"].get<double>()).epsilon(1e-6));
+  CHECK(series["flight"]["y"].back().get<double>() == Approx(0).margin(1e-6));
+}
+
+TEST_CASE("api requests are refused by name, with the fix", "[api]") {
+  CHECK_THAT(refusal(api::design, {{"R", "150m"}}).what(), Catch::Contains("give exactly two"));
+  CHECK_THAT(refusal(api::design, {{"R", "150m"}, {"m", "50kg"}, {"colour", "red"}}).what(), Catch::Contains("'colour' is no key"));
+  const Error negative = refusal(api::design, {{"R", -150}, {"m", "50kg"}});
+  CHECK(negative.kind() == ErrorKind::bad_number);
+  CHECK(api::error_json(negative)["names"] == json::array({"R"}));
+  CHECK_THAT(refusal(api::shot, {{"design", {{"L1", "4m"}}}}).what(), Catch::Contains("design: key \"L2\" is missing"));
+  CHECK_THAT(refusal(api::shot, {{"design", api::design({{"R", "150m"}, {"m", "50kg"}})}, {"air", "thick"}}).what(), Catch::Contains("is no air"));
+  json uncertain = api::design({{"R", "150m"}, {"m", "50kg"}});
+  uncertain["M"] = "2t..3t";
+  CHECK_THAT(refusal(api::monte_carlo, {{"design", uncertain}, {"samples", 1e300}}).what(), Catch::Contains("whole number"));
+  CHECK_THAT(refusal(api::complete, {{"attested", {{"Lb", "9.5m"}, {"M", "3t"}, {"m", "50kg"}, {"Q", 1}}}}).what(), Catch::Contains("'Q' is no key"));
+}
+
+TEST_CASE("api::monte_carlo split into parts is the whole run", "[api]") {
+  const json request = {{"attested", {{"Lb", "9.5m"}, {"M", "2.5t..3.5t"}, {"m", "50kg"}}}, {"samples", 6}, {"seed", 3}};
+  const auto whole = api::monte_carlo(request);
+  json outcomes = json::array();
+  for (int first : {0, 2, 5}) {  // parts of 2, 3 and 1 samples, as Web Workers take them
+    json part = request;
+    part["first"] = first;
+    part["count"] = first == 0 ? 2 : first == 2 ? 3 : 1;
+    const auto answer = api::monte_carlo(part);
+    for (const auto& o : answer["outcomes"]) outcomes.push_back(json::parse(o.dump()));
+  }
+  json together = request;
+  together["outcomes"] = outcomes;
+  CHECK(api::monte_carlo(together).dump() == whole.dump());
+  CHECK(whole["worked"] == 6);
+}
