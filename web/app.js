@@ -13,7 +13,7 @@
 
   let module = null;
   const state = {
-    view: 'design', units: 'si', pair: 'R,m', first: ['R', '150m'], second: ['m', '50kg'], theta: '30', F: '1',
+    view: 'design', units: 'si', pair: 'R,m', first: ['R', '300m'], second: ['m', '50kg'], theta: '30', F: '2/3',
     air: false, cd: '0.47', wind: '0m/s', release: 'Q', target_level: '0m', range_from: 'pivot',
     edit: null, attested: { Lb: '9.5m', M: '3t', m: '50kg' }, samples: '200',
   };
@@ -111,11 +111,11 @@
     message.className = 'message';
     message.textContent = (answer.warnings || []).join(' ');
     const q = (v, d) => V.quantity(v, d, state.units);
-    $('design-result').innerHTML = `<table class="tv-figures"><caption>the optimal engine${answer.branch === 'none' ? '' : ' (' + answer.branch + ' branch)'}, θi = ${answer.theta_i_deg}°, F = ${V.significant(answer.F, 4)}</caption>
+    $('design-result').innerHTML = `<table class="tv-figures"><caption>the optimal engine${answer.branch === 'none' ? '' : ' (' + answer.branch + ' branch)'}, θi = ${answer.theta_i_deg}°, F = ${Math.abs(answer.F - 2 / 3) < 1e-12 ? '2/3' : V.significant(answer.F, 4)}</caption>
       <tr><th>capacity</th><td>R = ${q(answer.R, 'length')}, T = ${q(answer.T, 'energy')} (in vacuum)</td></tr>
-      <tr><th>beam</th><td>L1 = ${q(answer.L1, 'length')}, L2 = ${q(answer.L2, 'length')}, Lb = ${q(answer.Lb, 'length')}, D = ${q(answer.D, 'length')}</td></tr>
+      <tr><th>beam</th><td>L1 = ${q(answer.L1, 'length')}, L2 = ${q(answer.L2, 'length')}, Lb = ${q(answer.Lb, 'length')}, diameter D = ${q(answer.D, 'length')}</td></tr>
       <tr><th>arm, sling, pivot</th><td>L3 = ${q(answer.L3, 'length')}, L4 = ${q(answer.L4, 'length')}, H = ${q(answer.H, 'length')}</td></tr>
-      <tr><th>masses</th><td>M = ${q(answer.M, 'mass')}, m = ${q(answer.m, 'mass')}, mb = ${q(answer.mb, 'mass')}</td></tr></table>`;
+      <tr><th>masses</th><td>counterweight M = ${q(answer.M, 'mass')}, projectile m = ${q(answer.m, 'mass')}, beam mb = ${q(answer.mb, 'mass')}</td></tr></table>`;
     return true;
   }
 
@@ -131,8 +131,14 @@
     $('shot-title').textContent = title;
     // A change keeps the animation where it stood, so that a drag shows the same moment.
     viewer = V.render($('viewer'), answer, { units: state.units, time: viewer ? viewer.time() : 0 });
-    const json = JSON.stringify(Object.assign({}, engine), null, 2) + '\n';
+    // The engine in the programs' schema; the settings beside it, as the shot's answer states them
+    // (trebuchet-verify reads the engine's keys and passes over the others).
+    const json = JSON.stringify(Object.assign({ comment: 'trebuchet-verify FILE --format json shoots this engine again; give the settings below as its flags (docs/web.md)' },
+      engine, { assumptions: answer.assumptions }), null, 2) + '\n';
+    const name = { design: 'optimal-engine', edit: 'edited-engine', reconstruct: 'completed-engine' }[state.view] || 'engine';
     $('download-json').href = 'data:application/json;charset=utf-8,' + encodeURIComponent(json);
+    $('download-json').download = name + '.json';
+    $('download-csv').download = name + '-shot.csv';
     $('download-csv').href = 'data:text/csv;charset=utf-8,' + encodeURIComponent(V.seriesCsv(answer));
     return answer;
   }
@@ -169,17 +175,19 @@
       if (!extrapolated.error) { note = ' (extrapolated: this capacity lies beyond tab:CPNC)'; optimum = extrapolated; }
     }
     const q = (v, d) => V.quantity(v, d, state.units);
-    if (optimum.error) { box.innerHTML = `<p class="message">No optimum of the table for this capacity: ${escapeHtml(optimum.error)}</p>`; return; }
+    if (optimum.error) { box.innerHTML = `<details class="message"><summary>No optimum in tab:CPNC for this capacity, to compare with.</summary>${escapeHtml(optimum.error)}</details>`; return; }
     const shot = call('shot', Object.assign({ design: engineOf(optimum) }, settings()));
     const cell = (a, b, f) => `<td>${f(a)}</td><td>${shot.error ? '—' : f(b)}</td>`;
-    box.innerHTML = `<table class="tv-figures compare"><caption>the edited engine beside the paper's optimum for the same capacity${note}</caption>
+    box.innerHTML = `<table class="tv-figures compare"><caption>the edited engine beside the paper's optimum for the same capacity (R and T in vacuum, at the base's level)${note}</caption>
       <tr><th></th><th>edited</th><th>optimal</th></tr>
       <tr><th>quality Q</th>${cell(answer.Q, shot.Q, (v) => V.significant(100 * v, 4) + ' %')}</tr>
       <tr><th>efficiency ε</th>${cell(answer.eps, shot.eps, (v) => V.significant(100 * v, 4) + ' %')}</tr>
       <tr><th>force factor</th>${cell(answer.force_factor, shot.force_factor, (v) => V.significant(v, 4))}</tr>
       <tr><th>range R</th>${cell(answer.R, shot.R, (v) => q(v, 'length'))}</tr>
       <tr><th>M</th><td>${q(answer.engine.M, 'mass')}</td><td>${q(optimum.M, 'mass')}</td></tr>
-      <tr><th>L1, L4</th><td>${q(answer.engine.L1, 'length')}, ${q(answer.engine.L4, 'length')}</td><td>${q(optimum.L1, 'length')}, ${q(optimum.L4, 'length')}</td></tr></table>`;
+      <tr><th>L1, L4</th><td>${q(answer.engine.L1, 'length')}, ${q(answer.engine.L4, 'length')}</td><td>${q(optimum.L1, 'length')}, ${q(optimum.L4, 'length')}</td></tr>
+      <tr><th>mb (beam)</th><td>${q(answer.engine.mb, 'mass')}</td><td>${q(optimum.mb, 'mass')}</td></tr></table>
+      <p class="help">The optimum's beam is as heavy as a beam must be to bear its load (eq:bend_L2, eq:BeamMass); a lighter beam edited in may beat it on Q, and break.${note ? ' Beyond the table the optimum is extrapolated and may not be one: compare with care.' : ''}</p>`;
   }
 
   // ---- reconstruct ----------------------------------------------------------------------------
@@ -192,22 +200,21 @@
   }
   const uncertain = (text) => /\.\.|±|\+-/.test(text);
   function runComplete() {
-    const attested = {};
-    for (const [k, v] of Object.entries(state.attested)) attested[k] = uncertain(v) ? v.split(/\.\.|±|\+-/)[0] : v;
-    const answer = call('complete', Object.assign({ attested }, settings()));
+    const answer = call('complete', Object.assign({ attested: Object.assign({}, state.attested) }, settings()));
     const message = $('reconstruct-message');
     if (answer.error) { message.className = 'message refused'; message.textContent = answer.error; $('reconstruct-result').innerHTML = ''; return null; }
     message.className = 'message';
-    message.textContent = Object.values(state.attested).some(uncertain) ? 'Uncertain values are taken at their first number here; the Monte Carlo band samples them.' : '';
+    message.textContent = Object.values(state.attested).some(uncertain) ? 'A range is completed at its middle, a spread at its mean; "Monte Carlo band" samples them.' : '';
     const q = (v, d) => V.quantity(v, d, state.units);
     const longest = answer.longest_range;
     $('reconstruct-result').innerHTML = `<table class="tv-figures"><caption>the completed engine (${answer.simulations} shots)</caption>
       <tr><th>attested</th><td>${answer.attested.join(', ')}</td></tr><tr><th>implied</th><td>${answer.implied.join(', ') || '—'}</td></tr>
       <tr><th>chosen</th><td>${answer.chosen.join(', ')}</td></tr>
-      <tr><th>engine</th><td>L1 ${q(answer.L1, 'length')}, L2 ${q(answer.L2, 'length')}, L3 ${q(answer.L3, 'length')}, L4 ${q(answer.L4, 'length')}, M ${q(answer.M, 'mass')}, m ${q(answer.m, 'mass')}, mb ${q(answer.mb, 'mass')}</td></tr>
+      <tr><th>engine</th><td>L1 ${q(answer.L1, 'length')}, L2 ${q(answer.L2, 'length')}, L3 ${q(answer.L3, 'length')}, L4 ${q(answer.L4, 'length')}, H ${q(answer.H, 'length')}, M ${q(answer.M, 'mass')}, m ${q(answer.m, 'mass')}, mb ${q(answer.mb, 'mass')}</td></tr>
       <tr><th>shot</th><td>R ${q(answer.R, 'length')}, T ${q(answer.T, 'energy')}, Q ${V.significant(100 * answer.Q, 3)} %, ε ${V.significant(100 * answer.eps, 3)} %</td></tr>
       ${longest ? `<tr><th>longest range</th><td>${q(longest.R, 'length')} with L4 ${q(longest.L4, 'length')} (chosen: ${longest.chosen.join(', ')})</td></tr>` : ''}
       </table><div id="band"></div>`;
+    if (lastBand && lastBand.key === JSON.stringify([state.attested, settings(), state.samples])) showBand(lastBand.answer);
     runShot(engineOf(answer), "The completed engine's shot");
     return answer;
   }
@@ -256,19 +263,9 @@
     const ready = createTrebuchet();
     self.onmessage = (event) => { ready.then((m) => self.postMessage(m.monteCarlo(event.data))); };
   }
-  async function runBand() {
-    if (!Object.values(state.attested).some(uncertain)) {
-      $('reconstruct-message').className = 'message refused';
-      $('reconstruct-message').textContent = 'Give at least one value as a range (2.5t..3.5t) or a spread (3.5m±0.2m): the band is what the uncertain values make of R and T.';
-      return null;
-    }
-    const request = Object.assign({ attested: Object.assign({}, state.attested), samples: Number(state.samples), seed: 1 }, settings());
-    const bar = $('progress');
-    bar.hidden = false; bar.value = 0;
-    const answer = await monteCarloParallel(request, (done, total) => { bar.value = done / total; });
-    bar.hidden = true;
+  let lastBand = null;  // the band of the attested values and settings it was run for
+  function showBand(answer) {
     const box = $('band') || $('reconstruct-result');
-    if (answer.error) { $('reconstruct-message').className = 'message refused'; $('reconstruct-message').textContent = answer.error; return answer; }
     const q = (v, d) => V.quantity(v, d, state.units);
     const p = answer.percentiles;
     const failed = (answer.failures || []).reduce((n, f) => n + f.count, 0);
@@ -276,6 +273,25 @@
       <tr><th></th><th>5 %</th><th>50 %</th><th>95 %</th></tr>
       <tr><th>R</th><td>${q(p.R.p5, 'length')}</td><td>${q(p.R.p50, 'length')}</td><td>${q(p.R.p95, 'length')}</td></tr>
       <tr><th>T</th><td>${q(p.T.p5, 'energy')}</td><td>${q(p.T.p50, 'energy')}</td><td>${q(p.T.p95, 'energy')}</td></tr></table>`;
+  }
+  async function runBand() {
+    if (!Object.values(state.attested).some(uncertain)) {
+      $('reconstruct-message').className = 'message refused';
+      $('reconstruct-message').textContent = 'Give at least one value as a range (2.5t..3.5t) or a spread (3.5m±0.2m): the band is what the uncertain values make of R and T.';
+      return null;
+    }
+    const request = Object.assign({ attested: Object.assign({}, state.attested), samples: Number(state.samples), seed: 1 }, settings());
+    const key = JSON.stringify([state.attested, settings(), state.samples]);
+    const bar = $('progress'), count = $('progress-text');
+    bar.hidden = false; bar.value = 0;
+    $('monte-carlo').disabled = $('complete').disabled = true;
+    const answer = await monteCarloParallel(request, (done, total) => { bar.value = done / total; count.textContent = `${done} of ${total} completions`; });
+    bar.hidden = true; count.textContent = '';
+    $('monte-carlo').disabled = $('complete').disabled = false;
+    if (answer.error) { $('reconstruct-message').className = 'message refused'; $('reconstruct-message').textContent = answer.error; return answer; }
+    lastBand = { key, answer };
+    showBand(answer);
+    ($('band') || $('reconstruct-result')).scrollIntoView({ block: 'nearest' });
     return answer;
   }
 
@@ -324,11 +340,23 @@
       });
       $(id + '-name').addEventListener('change', () => { state[slot][0] = $(id + '-name').value; state[slot][1] = EXAMPLES[state[slot][0]]; showPair(); update(); });
     }
+    // tab:CPNC's blocks: theta_i 30 deg with F 1 or 2/3, 40 deg with F 2/3 only.
+    const blocks = () => {
+      const forty = $('theta').value === '40';
+      $('F').querySelector('option[value="1"]').disabled = forty;
+      if (forty && $('F').value === '1') { $('F').value = '2/3'; state.F = '2/3'; }
+    };
     const fields = [['theta', 'theta'], ['F', 'F'], ['cd', 'cd'], ['wind', 'wind'], ['release', 'release'], ['target-level', 'target_level'], ['range-from', 'range_from'], ['samples', 'samples']];
     for (const [id, key] of fields) {
       $(id).value = state[key];
-      $(id).addEventListener(id === 'samples' ? 'change' : 'input', () => { state[key] = $(id).value; if (key === 'theta' || key === 'F') state.edit = null; update(); });
+      $(id).addEventListener(id === 'samples' ? 'change' : 'input', () => {
+        state[key] = $(id).value;
+        if (key === 'theta') blocks();
+        if (key === 'theta' || key === 'F') state.edit = null;
+        update();
+      });
     }
+    blocks();
     $('air').checked = state.air;
     $('air').addEventListener('change', () => { state.air = $('air').checked; update(); });
     $('units').value = state.units;
@@ -341,9 +369,9 @@
     $('monte-carlo').addEventListener('click', () => runBand());
     $('share').addEventListener('click', () => {
       saveState();
-      if (navigator.clipboard) navigator.clipboard.writeText(location.href).catch(() => {});
-      $('share').textContent = 'Link copied';
-      setTimeout(() => { $('share').textContent = 'Copy link'; }, 1500);
+      const said = (text) => { $('share').textContent = text; setTimeout(() => { $('share').textContent = 'Copy link'; }, 2500); };
+      if (!navigator.clipboard) { said('Copy the address bar: it holds the link'); return; }
+      navigator.clipboard.writeText(location.href).then(() => said('Link copied'), () => said('Copy the address bar: it holds the link'));
     });
   }
 

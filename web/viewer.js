@@ -12,12 +12,12 @@
   const FT = 0.3048, LB = 0.45359237, LBF = 4.4482216152605;
   const UNITS = {
     si: {
-      length: [[1, 'm']], mass: [[1000, 't', 1000], [1, 'kg', 0]], force: [[1e6, 'MN', 1e6], [1000, 'kN', 1000], [1, 'N', 0]],
+      length: [[1, 'm']], acceleration: [[1, 'm/s²']], mass: [[1000, 't', 1000], [1, 'kg', 0]], force: [[1e6, 'MN', 1e6], [1000, 'kN', 1000], [1, 'N', 0]],
       energy: [[1e6, 'MJ', 1e6], [1000, 'kJ', 1000], [1, 'J', 0]], speed: [[1, 'm/s']], moment: [[1000, 'kN·m', 1000], [1, 'N·m', 0]],
       stress: [[1e6, 'MPa', 0]],
     },
     imperial: {
-      length: [[FT, 'ft']], mass: [[LB, 'lb']], force: [[LBF, 'lbf']], energy: [[FT * LBF, 'ft·lbf']], speed: [[FT, 'ft/s']],
+      length: [[FT, 'ft', FT], [0.0254, 'in', 0]], acceleration: [[FT, 'ft/s²']], mass: [[LB, 'lb']], force: [[LBF, 'lbf']], energy: [[FT * LBF, 'ft·lbf']], speed: [[FT, 'ft/s']],
       moment: [[FT * LBF, 'lbf·ft']], stress: [[LBF / (0.0254 * 0.0254), 'psi']],
     },
   };
@@ -60,8 +60,8 @@
   // A line chart: `lines` [{name, x, y, colour, dash}], `marks` [{x, name}], with a readout of
   // every line's value at the pointer. Returns the <svg>.
   function chart(spec) {
-    const width = spec.width || 760, height = spec.height || 330;
-    const left = 64, right = 16, top = spec.title ? 48 : 22, bottom = 44 + 18 * Math.ceil(spec.lines.length / 3);
+    const width = spec.width || 760, height = (spec.height || 330) * (spec.width && spec.width < 600 ? 1.25 : 1);
+    const left = 64, right = 16, top = (spec.title ? 48 : 22) + (spec.marks && spec.marks.length ? 22 : 0), bottom = 44 + 18 * Math.ceil(spec.lines.length / 3);
     const root = svg('svg', { xmlns: SVGNS, viewBox: `0 0 ${width} ${height}`, width: '100%', role: 'img', class: 'chart' });
     svg('rect', { x: 0, y: 0, width, height, fill: 'white' }, root);
     if (spec.title) text(root, width / 2, 18, spec.title, { 'text-anchor': 'middle', 'font-weight': 'bold', 'font-size': 13 });
@@ -133,9 +133,14 @@
       const bx = point.x < width / 2 ? point.x + 10 : point.x - 230;
       xText.setAttribute('x', bx + 6); xText.setAttribute('y', top + 16);
       spec.lines.forEach((line, k) => {
+        // The curve's sample nearest the pointer; none where the curve has ended (a null there),
+        // or beyond its ends. A value below a millionth of the axis is 0 (rounding, not a force).
         let best = -1, distance = Infinity;
-        line.x.forEach((lx, i) => { const dd = Math.abs(lx - x); if (dd < distance && line.y[i] !== null) { distance = dd; best = i; } });
-        lines[k].textContent = best < 0 ? '' : line.name + ': ' + significant(line.y[best], 4) + (spec.yUnit ? ' ' + spec.yUnit : '');
+        line.x.forEach((lx, i) => { const dd = Math.abs(lx - x); if (dd < distance) { distance = dd; best = i; } });
+        const inside = line.x.length > 1 && x >= Math.min(line.x[0], line.x[line.x.length - 1]) && x <= Math.max(line.x[0], line.x[line.x.length - 1]);
+        const y = best >= 0 && inside ? line.y[best] : null;
+        const shown = y === null || !isFinite(y) ? null : Math.abs(y) < 1e-6 * (y1 - y0) ? 0 : y;
+        lines[k].textContent = shown === null ? '' : line.name + ': ' + significant(shown, 4) + (spec.yUnit ? ' ' + spec.yUnit : '');
         lines[k].setAttribute('x', bx + 6); lines[k].setAttribute('y', top + 32 + 15 * k);
       });
       box.setAttribute('x', bx); box.setAttribute('y', top + 4); box.setAttribute('width', 224); box.setAttribute('height', 20 + 15 * spec.lines.length);
@@ -174,8 +179,9 @@
         const p0 = [centre[0] + radius * Math.cos(a0), centre[1] - radius * Math.sin(a0)], p1 = [centre[0] + radius * Math.cos(a1), centre[1] - radius * Math.sin(a1)];
         const large = Math.abs(to - from) > 180 ? 1 : 0, sweep = to > from ? 0 : 1;
         svg('path', { d: `M${p0[0]} ${p0[1]} A${radius} ${radius} 0 ${large} ${sweep} ${p1[0]} ${p1[1]}`, fill: 'none', stroke: colour, 'stroke-width': 2 }, g);
-        const mid = (a0 + a1) / 2;
-        text(g, centre[0] + 1.45 * radius * Math.cos(mid), centre[1] - 1.45 * radius * Math.sin(mid) + 4, label, { fill: colour, 'text-anchor': 'middle', 'font-weight': 'bold' });
+        // The label beyond the arc's middle; for a small angle, beside its reference line.
+        const mid = Math.abs(to - from) < 12 ? Math.min(a0, a1) - 0.35 : (a0 + a1) / 2;
+        text(g, centre[0] + 1.7 * radius * Math.cos(mid), centre[1] - 1.7 * radius * Math.sin(mid) + 4, label, { fill: colour, 'text-anchor': 'middle', 'font-weight': 'bold', 'font-size': 12, stroke: 'white', 'stroke-width': 3, 'paint-order': 'stroke' });
       };
       const theta = f.theta_deg[i], psi = f.psi_deg[i], phi = f.phi_deg[i];
       const r = Math.max(14, 0.22 * Math.min(e.L1, H) * scale);
@@ -196,14 +202,14 @@
   function escapeHtml(s) { return String(s).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]); }
 
   // What the shot assumed, in words, from its "assumptions".
-  function describeAssumptions(shot) {
+  function describeAssumptions(shot, system) {
     const a = shot.assumptions;
     const air = a.air === 'vacuum' ? 'in vacuum' : 'in air (Cd ' + (typeof a.air.drag_coefficient === 'number' ? a.air.drag_coefficient : 'of Re') +
-      (a.air.wind ? ', wind ' + a.air.wind + ' m/s' : '') + ')';
+      (a.air.wind ? ', wind ' + quantity(a.air.wind, 'speed', system) : '') + ')';
     const release = a.release === 'Q' ? (a.n === 1 ? 'released where Q peaks (eq:Q)' : 'released where Q_n peaks (eq:Q_n, n = ' + a.n + ')')
       : a.release === 'eps' ? 'released where ε peaks' : 'released where the range peaks';
-    const target = a.range_from === 'release' ? "range from the release point back to its height (Denny's)" : 'target level ' + significant(a.target_level, 4) + ' m';
-    return air + ', ' + release + ', ' + target + ', g = ' + a.g + ' m/s²';
+    const target = a.range_from === 'release' ? "range from the release point back to its height (Denny's)" : 'target level ' + quantity(a.target_level, 'length', system);
+    return air + ', ' + release + ', ' + target + ', g = ' + quantity(a.g, 'acceleration', system);
   }
 
   const FORCE_LINES = [
@@ -213,12 +219,12 @@
   ];
 
   // The four charts of a shot, each an <svg>: forces, energy, release, paths.
-  function charts(shot, system) {
+  function charts(shot, system, width) {
     const s = shot.series, f = s.frames, m = s.moments, r = m.release;
     const tMarks = [['lift-off', m.liftoff], ['t_1', m.t1], ['t_m', m.tm], ['t_2', m.t2], ['release', r]].map(([name, i]) => ({ name, x: f.t[i] }));
     const upTo = (column) => f[column].map((v, i) => (i <= r ? v : null));
     const [forceSize, forceUnit] = system === 'si' ? [1000, 'kN'] : [LBF, 'lbf'];
-    const forces = chart({
+    const forces = chart({ width,
       title: 'Forces up to the release', subtitle: 't_1, t_2: the extremes of F_Rh (eq:F); t_m: the largest pivot force',
       xLabel: 'time [s]', yLabel: `force [${forceUnit}]`, xName: 't', xUnit: 's', yUnit: forceUnit, xRange: [0, f.t[r] * 1.02],
       lines: FORCE_LINES.map(([key, name, colour, dash]) => ({ name, colour, dash, x: f.t, y: upTo(key).map((v, i) => (v === null || (key === 'normal' && f.phase[i] !== 'I') ? null : v / forceSize)) })),
@@ -228,8 +234,9 @@
     const rest = (k) => f[k][0];
     const taken = (f.E_projectile_kinetic[r] + f.E_projectile_potential[r]) - rest('E_projectile_potential');
     const projectile = f.t.map((t, i) => (f.phase[i] === 'III' ? taken : f.E_projectile_kinetic[i] + f.E_projectile_potential[i] - rest('E_projectile_potential')));
-    const energy = chart({
-      title: 'Where the energy goes', subtitle: `at the release the projectile holds ε = ${significant(100 * shot.eps, 3)} % of ΔU; 1 − ε stays in the beam and the counterweight`,
+    const energy = chart({ width,
+      title: 'Where the energy goes',
+      subtitle: `ΔU (eq:DU): what beam and counterweight give up, falling to rest. At the release the projectile holds ε = ${significant(100 * shot.eps, 3)} % of it`,
       xLabel: 'time [s]', yLabel: `energy gained since rest [${energyUnit}]`, xName: 't', xUnit: 's', yUnit: energyUnit,
       lines: [
         { name: 'counterweight', colour: '#555', x: f.t, y: f.E_counterweight.map((v) => (v - rest('E_counterweight')) / energySize) },
@@ -237,13 +244,15 @@
         { name: 'projectile', colour: '#d62728', x: f.t, y: projectile.map((v) => v / energySize) },
         { name: 'of which kinetic', colour: '#ff9896', dash: '5 3', x: f.t, y: f.E_projectile_kinetic.map((v, i) => (f.phase[i] === 'III' ? null : v / energySize)) },
         { name: 'total (conserved)', colour: 'black', x: f.t, y: f.t.map((t, i) => (f.E_counterweight[i] - rest('E_counterweight') + f.E_beam[i] - rest('E_beam') + projectile[i]) / energySize) },
+        { name: '(1 − ε) ΔU: left in beam + counterweight', colour: '#8c564b', dash: '8 3', width: 2.5, x: f.t,
+          y: f.t.map((t, i) => (s.energy_drop + f.E_counterweight[i] - rest('E_counterweight') + f.E_beam[i] - rest('E_beam')) / energySize) },
         { name: 'ΔU (eq:DU)', colour: '#888', dash: '2 3', x: [f.t[0], f.t[f.t.length - 1]], y: [s.energy_drop / energySize, s.energy_drop / energySize] },
       ],
       marks: [{ name: 'release', x: f.t[r] }],
     });
     const p = s.phase_two;
     const objective = shot.assumptions.release === 'Q' ? 'Q' : shot.assumptions.release === 'eps' ? 'ε' : 'R';
-    const release = chart({
+    const release = chart({ width,
       title: `Phase II, on as if the projectile were kept: ${objective} peaks at the release`,
       subtitle: 'each over its value at the release; Q, ε and R here at level 0 in vacuum; dashed: the extremes of eq:F so far',
       xLabel: 'time [s]', yLabel: 'value over its value at the release', xName: 't', xUnit: 's', yRange: [0, 1.3],
@@ -258,7 +267,7 @@
     const L = (values) => values.map((v) => (v === null ? null : v / lengthSize));
     const fromX = shot.assumptions.range_from === 'release' ? shot.x : 0;
     const end = [s.flight.x[s.flight.x.length - 1], s.flight.y[s.flight.y.length - 1]];
-    const paths = chart({
+    const paths = chart({ width,
       title: 'The paths, and the flight ' + (shot.assumptions.air === 'vacuum' ? 'in vacuum' : 'through air'),
       subtitle: `R = ${quantity(shot.R, 'length', system)}` + (fromX ? ' from the release point' : ' from the pivot') + '; x toward the target, height above the base',
       xLabel: `x toward the target [${lengthUnit}]`, yLabel: `height [${lengthUnit}]`, xName: 'x', xUnit: lengthUnit, yUnit: lengthUnit, equalAspect: true,
@@ -290,7 +299,7 @@
     const loads = [['sling tension', shot.sling_tension, shot.t_sling_tension], ['hinge pin |F_H|', shot.hinge_force, shot.t_hinge_force],
       ['pivot |F_R|', shot.pivot_force, shot.t_pivot_force]].filter(([, v]) => v !== undefined);
     const row = (name, value, title) => `<tr${title ? ` title="${escapeHtml(title)}"` : ''}><th>${name}</th><td>${value}</td></tr>`;
-    head.innerHTML = `<p class="tv-scene">This shot: <b>${escapeHtml(describeAssumptions(shot))}</b>.</p>${warnings}${notes}`;
+    head.innerHTML = `<p class="tv-scene">This shot: <b>${escapeHtml(describeAssumptions(shot, system))}</b>.</p>${warnings}${notes}`;
     container.appendChild(head);
     const tables = document.createElement('div');
     tables.className = 'tv-tables';
@@ -298,8 +307,10 @@
       ${row('range R' + (shot.assumptions.air === 'vacuum' ? '' : ' (air)'), q(shot.R, 'length'), 'eq:R, to the target level')}
       ${row('energy at the end T', q(shot.T, 'energy'), 'eq:T')}
       ${row('efficiency ε', significant(100 * shot.eps, 4) + ' %', 'eq:Aux: T/ΔU at level 0')}
-      ${row('quality Q', significant(100 * shot.Q, 4) + ' %', 'eq:Q')}
-      ${row('force factor', significant(shot.force_factor, 4), 'eq:F')}
+      ${row('quality Q', significant(100 * shot.Q, 4) + ' %' + (shot.assumptions.n !== 1 ? ' (Q_n, n = ' + shot.assumptions.n + ')' : ' = ρ̃ μ ε / 𝓕 = ' +
+        significant(shot.Q * shot.force_factor / (e.m / e.M * shot.eps), 4) + ' × ' + significant(e.m / e.M, 3) + ' × ' + significant(shot.eps, 4) + ' / ' +
+        significant(shot.force_factor, 4)), 'eq:Q: ρ̃ = R/L1 (the range at level 0 in vacuum over the long arm), μ = m/M, ε the efficiency, 𝓕 the force factor of eq:F')}
+      ${row('force factor 𝓕', significant(shot.force_factor, 4), 'eq:F: the largest internal forces, as a multiple of the weights')}
       ${row('release speed v', q(shot.v, 'speed'))}
       ${row('release angle', significant(shot.A_deg, 4) + '°')}
       ${row('release at', significant(shot.t_release, 4) + ' s, ' + q(shot.h, 'length') + ' up, ' + q(Math.abs(shot.x), 'length') + (shot.x < 0 ? ' behind' : ' before') + ' the pivot')}
@@ -316,13 +327,13 @@
     // The animation: phases I and II to scale, then the whole flight.
     const stage = document.createElement('div');
     stage.className = 'tv-stage';
-    const width = 760, height = 440;
+    const width = 760, height = 380;
     const scene = svg('svg', { xmlns: SVGNS, viewBox: `0 0 ${width} ${height}`, width: '100%', class: 'tv-scene-svg', role: 'img' });
     stage.appendChild(scene);
     const controls = document.createElement('div');
     controls.className = 'tv-controls';
     controls.innerHTML = `<button type="button" class="tv-play" aria-label="play">▶ play</button>
-      <input type="range" class="tv-scrub" min="0" max="1000" value="0" aria-label="time">
+      <input type="range" class="tv-scrub" min="0" max="1000" value="0" aria-label="time: the first half the swing, the second the flight" title="first half: phases I and II; second half: the flight">
       <label>speed <select class="tv-speed"><option value="1">real</option><option value="0.25">¼</option><option value="0.1" selected>1/10</option><option value="0.04">1/25</option></select></label>
       <label><input type="checkbox" class="tv-angles" checked> angles</label><span class="tv-time"></span>`;
     stage.appendChild(controls);
@@ -366,7 +377,7 @@
       if (flying && level) {  // the level the flight ends at, when it is not the ground
         const at = v.to(0, level);
         svg('line', { x1: 0, x2: width, y1: at[1], y2: at[1], stroke: '#888', 'stroke-dasharray': '6 4' }, g);
-        text(g, width - 8, at[1] - 4, 'target level ' + significant(level, 4) + ' m', { 'text-anchor': 'end', fill: '#555', 'font-size': 11 });
+        text(g, width - 8, at[1] - 4, 'target level ' + quantity(level, 'length', options.units || 'si'), { 'text-anchor': 'end', fill: '#555', 'font-size': 11 });
       }
       if (time > tRelease) {
         const trail = [];
@@ -380,7 +391,7 @@
       text(scene, 10, height - 10, `t = ${time.toFixed(3)} s, ${phase}` + (flying ? ' (zoomed out to the whole flight, real speed)' : ''), { 'font-size': 13 });
       if ((shot.warnings || []).length) text(scene, width / 2, 40, 'NOT PHYSICAL', { 'text-anchor': 'middle', 'font-size': 30, fill: '#cc0000', 'font-weight': 'bold' });
       timeText.textContent = `${time.toFixed(2)} s of ${tEnd.toFixed(2)} s`;
-      scrub.value = String(Math.round(1000 * time / tEnd));
+      scrub.value = String(Math.round(time <= tRelease ? 500 * time / tRelease : 500 + 500 * (time - tRelease) / (tEnd - tRelease)));
       container.dataset.frame = String(i);
       container.dataset.time = String(time);
     }
@@ -401,14 +412,21 @@
       play.textContent = playing ? '❚❚ pause' : '▶ play';
       if (playing) { if (time >= tEnd) time = 0; last = null; requestAnimationFrame(tick); }
     });
-    scrub.addEventListener('input', () => { time = Number(scrub.value) / 1000 * tEnd; draw(); });
+    // The bar's first half is phases I and II, its second the flight: the swing is not crowded
+    // into the first tenth of a long flight.
+    scrub.addEventListener('input', () => {
+      const at = Number(scrub.value);
+      time = at <= 500 ? at / 500 * tRelease : tRelease + (at - 500) / 500 * (tEnd - tRelease);
+      draw();
+    });
     angles.addEventListener('change', draw);
     draw();
 
-    const figures = charts(shot, system);
+    // On a phone the charts are drawn narrower, so that their text is not shrunk to nothing.
+    const figures = charts(shot, system, container.clientWidth && container.clientWidth < 600 ? 420 : 760);
     const captions = {
       forces: 'F_S⊥ is the sling\'s pull across the beam; |F_R| and F_Rh the pivot\'s force on the beam and its horizontal part; |F_H| the hinge\'s force; N the trough\'s push in phase I. Size ropes, pins and beams from these.',
-      energy: 'The counterweight falls and gives up its energy; the beam takes a little, the projectile the most. At the release the projectile holds ε of ΔU; the rest, 1 − ε, stays in the beam and the counterweight. The total is constant: no friction.',
+      energy: 'Each body\'s energy gained since rest. The counterweight falls and gives up its energy; the beam takes a little, the projectile the most. ΔU is what beam and counterweight give up once they have fallen to their final rest; the dashed brown line is what they still hold above that rest, (1 − ε) ΔU at the release, while the projectile holds ε ΔU. The total is constant: no friction.',
       release: 'Section 5: the release is where the chosen criterion peaks. An extreme\'s dashed line is flat while its force stays below the largest so far.',
       paths: 'The counterweight, the beam\'s tip and the projectile through phases I and II, then the flight.',
     };

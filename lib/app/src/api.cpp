@@ -113,8 +113,13 @@ CompletionRequest completion_request_of(const json& attested, const ShotSettings
   std::vector<std::string> known;
   for (const auto& [key, dimension] : attested_keys) known.push_back(key);
   require_keys(attested, known, "attested");
-  auto value = [&](const char* key) {
+  // A value given as a range or a spread is completed at its middle (a range's midpoint, a
+  // spread's mean); monte_carlo samples it.
+  auto value = [&](const char* key) -> std::optional<double> {
     const auto at = std::find_if(attested_keys.begin(), attested_keys.end(), [&](const auto& k) { return k.first == key; });
+    if (attested.contains(key) && attested[key].is_string())
+      if (const auto spread = parse_spread(attested[key].get<std::string>(), at->second, std::string("attested.") + key))
+        return spread->kind == Spread::Kind::uniform ? (spread->a + spread->b) / 2 : spread->a;
     return read_value(attested, key, at->second, "attested");
   };
   CompletionRequest request;

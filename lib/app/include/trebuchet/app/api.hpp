@@ -25,7 +25,8 @@ nlohmann::ordered_json shot(const nlohmann::json& request);
 
 /// The completion of an attested engine (trebuchet-verify complete --format json): "attested"
 /// (Lb, L1, L2, H, L4, M, m, mb, D, l, theta_i_deg, F, and the material's keys) and the settings
-/// of shot. Without "release": "range", the engine of the longest range is completed too.
+/// of shot. Without "release": "range", the engine of the longest range is completed too. A
+/// value given as a range or a spread is completed at its middle (monte_carlo samples it).
 nlohmann::ordered_json complete(const nlohmann::json& request);
 
 /// A Monte Carlo run (trebuchet-verify ... --format json with a range or a spread): "design"
