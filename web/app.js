@@ -23,18 +23,28 @@
 
   // ---- the library --------------------------------------------------------------------------
   // A number JSON cannot carry (NaN, Infinity) would arrive as null: it is refused here, by name.
-  function notFinite(value, path) {
+  // (Deeper than the module reads, 32 levels, it is refused there; this walk stops at 40.)
+  function notFinite(value, path, depth) {
     if (typeof value === 'number') return isFinite(value) ? null : [path, value];
-    if (value && typeof value === 'object') {
-      for (const [k, v] of Object.entries(value)) { const found = notFinite(v, path ? path + '.' + k : k); if (found) return found; }
+    if (value && typeof value === 'object' && depth < 40) {
+      for (const [k, v] of Object.entries(value)) { const found = notFinite(v, path ? path + '.' + k : k, depth + 1); if (found) return found; }
     }
     return null;
   }
+  const refused = (error, kind, names) => ({ error, kind, names: names || [] });
   function call(name, request) {
-    const bad = notFinite(request, '');
-    if (bad) return { error: `${bad[0]}: ${bad[1]} is not a finite number; give a number or a value with a unit like "150m"`, kind: 'bad_number', names: [bad[0]] };
+    if (!request || typeof request !== 'object' || Array.isArray(request))
+      return refused(`the request must be an object of keys, like {R: "150m", m: "50kg"}; got ${Array.isArray(request) ? 'an array' : String(request)}`, 'usage');
+    const bad = notFinite(request, '', 0);
+    if (bad) return refused(`${bad[0]}: ${bad[1]} is not a finite number; give a number or a value with a unit like "150m"`, 'bad_number', [bad[0]]);
+    let text;
     try {
-      return JSON.parse(module[name](JSON.stringify(request)));
+      text = JSON.stringify(request);
+    } catch (e) {  // a BigInt, or an object that holds itself
+      return refused(`the request cannot be written as JSON (${e.message}); give numbers, strings, true or false, and objects of them`, 'usage');
+    }
+    try {
+      return JSON.parse(module[name](text));
     } catch (e) {  // the module itself failed (out of memory, say): an internal error, not the request's
       return { error: `internal error in the module (${e.message}); reload the page, and please report the request`, kind: 'numerical', names: [] };
     }
@@ -59,14 +69,33 @@
     for (const [k, v] of Object.entries(state)) if (v !== null) params.set(k, typeof v === 'object' ? JSON.stringify(v) : String(v));
     history.replaceState(null, '', '#' + params.toString());
   }
+  // A link's state is anyone's text: each value is checked against what it must be, and one
+  // that is not keeps its default (a hand-edited or hostile link can neither break the page nor
+  // put markup into it).
+  const isText = (v) => typeof v === 'string' && v.length <= 200;
+  const CHECKS = {
+    view: (v) => ['design', 'edit', 'reconstruct'].includes(v), units: (v) => ['si', 'imperial'].includes(v),
+    pair: (v) => ['R,m', 'R,T', 'R,M', 'Lb,l', 'any'].includes(v),
+    first: (v) => Array.isArray(v) && v.length === 2 && QUANTITIES.includes(v[0]) && isText(v[1]),
+    second: (v) => Array.isArray(v) && v.length === 2 && QUANTITIES.includes(v[0]) && isText(v[1]),
+    theta: (v) => ['30', '40'].includes(v), F: (v) => ['1', '2/3'].includes(v), air: (v) => typeof v === 'boolean',
+    cd: isText, wind: isText, release: (v) => ['Q', 'eps', 'range'].includes(v), target_level: isText,
+    range_from: (v) => ['pivot', 'release'].includes(v), samples: isText,
+    edit: (v) => v === null || (typeof v === 'object' && !Array.isArray(v) &&
+      SLIDERS.every(([key]) => typeof v[key] === 'number' && isFinite(v[key]) && v[key] > 0)),
+    attested: (v) => typeof v === 'object' && v !== null && !Array.isArray(v) &&
+      Object.entries(v).every(([key, text]) => ATTESTED.some(([k]) => k === key) && isText(text)),
+  };
   function loadState() {
     const params = new URLSearchParams(location.hash.slice(1));
-    for (const [k, v] of params) {
-      if (!(k in state)) continue;
-      try {
-        state[k] = typeof state[k] === 'boolean' ? v === 'true' : (state[k] !== null && typeof state[k] === 'object') || k === 'edit' ? JSON.parse(v) : v;
-      } catch (e) { /* a hand-edited link: keep the default */ }
+    for (const [k, text] of params) {
+      if (!Object.prototype.hasOwnProperty.call(CHECKS, k)) continue;
+      let value = text;
+      if (k === 'air') value = text === 'true' ? true : text === 'false' ? false : null;
+      else if (['first', 'second', 'edit', 'attested'].includes(k)) { try { value = JSON.parse(text); } catch (e) { continue; } }
+      if (CHECKS[k](value)) state[k] = value;
     }
+    if (state.theta === '40') state.F = '2/3';
   }
 
   // ---- design ---------------------------------------------------------------------------------
@@ -80,9 +109,11 @@
   // in the unit it was typed in ("500ft" drags in feet).
   function givenSlider(slot) {
     const slider = $(slot + '-drag'), text = String(state[slot][1]).trim();
-    const value = parseFloat(text);
-    slider.dataset.centre = isFinite(value) && value > 0 ? String(value) : '1';
-    slider.dataset.unit = text.replace(/^[+]?[0-9.]+([eE][-+]?[0-9]+)?/, '');
+    const number = text.match(/^[+]?([0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?)\s*([A-Za-z]*)$/);
+    const value = number ? Number(number[1]) : NaN;
+    slider.disabled = !(isFinite(value) && value > 0 && value < 1e300);  // a value the slider cannot read: type it
+    slider.dataset.centre = slider.disabled ? '1' : String(value);
+    slider.dataset.unit = number ? number[3] : '';
     slider.value = '0';
   }
   function showPair() {
@@ -156,8 +187,12 @@
       const [lo, hi] = key === 'theta_i_deg' ? [10, 80] : [centre * 0.3, centre * 2.5];
       const row = document.createElement('label');
       row.className = 'slider';
-      row.innerHTML = `<span class="name">${key === 'theta_i_deg' ? 'θi' : key}</span><input type="range" min="${lo}" max="${hi}" step="any" value="${state.edit[key]}" data-key="${key}" aria-label="${key}"><output></output>`;
+      row.innerHTML = `<span class="name"></span><input type="range" step="any"><output></output>`;
+      row.querySelector('.name').textContent = key === 'theta_i_deg' ? 'θi' : key;
       const input = row.querySelector('input'), out = row.querySelector('output');
+      Object.assign(input, { min: String(lo), max: String(hi), value: String(state.edit[key]) });
+      input.dataset.key = key;
+      input.setAttribute('aria-label', key);
       const show = () => { out.textContent = dimension === 'angle' ? V.significant(Number(input.value), 4) + '°' : V.quantity(Number(input.value), dimension, state.units); };
       show();
       input.addEventListener('input', () => { state.edit[key] = Number(input.value); show(); update(); });
@@ -202,7 +237,11 @@
   function runComplete() {
     const answer = call('complete', Object.assign({ attested: Object.assign({}, state.attested) }, settings()));
     const message = $('reconstruct-message');
-    if (answer.error) { message.className = 'message refused'; message.textContent = answer.error; $('reconstruct-result').innerHTML = ''; return null; }
+    if (answer.error) {
+      message.className = 'message refused'; message.textContent = answer.error; $('reconstruct-result').innerHTML = '';
+      $('viewer').innerHTML = ''; shown = null; $('shot-title').textContent = 'No engine to shoot: the request was refused (see the message)';
+      return null;
+    }
     message.className = 'message';
     message.textContent = Object.values(state.attested).some(uncertain) ? 'A range is completed at its middle, a spread at its mean; "Monte Carlo band" samples them.' : '';
     const q = (v, d) => V.quantity(v, d, state.units);
@@ -222,7 +261,11 @@
   // A Monte Carlo run spread over Web Workers, each with its own module; the parts are put
   // together in sample order, so the result is that of one run. Resolves to the report.
   function monteCarloParallel(request, onProgress) {
-    const samples = Number(request.samples || 1000);
+    // The module checks the request whole (samples, seed, the values) on no sample at all.
+    const checked = call('monteCarlo', Object.assign({}, request, { first: 0, count: 0 }));
+    if (checked.error) return Promise.resolve(checked);
+    if ('first' in request || 'count' in request || 'outcomes' in request) return Promise.resolve(call('monteCarlo', request));
+    const samples = request.samples === undefined || request.samples === null ? (request.attested ? 1000 : 10000) : Number(request.samples);
     const workers = Math.max(1, Math.min(navigator.hardwareConcurrency || 2, 8, samples));
     const source = $('trebuchet-module').textContent + '\n' + workerMain.toString() + '\nworkerMain();';
     const url = URL.createObjectURL(new Blob([source], { type: 'text/javascript' }));
@@ -233,7 +276,14 @@
       let running = 0;
       const failure = (answer) => { resolve(answer); };
       for (let w = 0; w < workers; w++) {
-        const worker = new Worker(url);
+        let worker;
+        try {
+          worker = new Worker(url);
+        } catch (e) {  // a browser that starts no worker here: the run in this page, at once
+          URL.revokeObjectURL(url);
+          resolve(call('monteCarlo', request));
+          return;
+        }
         running++;
         const give = () => {
           if (next >= samples) { worker.terminate(); if (--running === 0) finish(); return; }
@@ -280,7 +330,7 @@
       $('reconstruct-message').textContent = 'Give at least one value as a range (2.5t..3.5t) or a spread (3.5m±0.2m): the band is what the uncertain values make of R and T.';
       return null;
     }
-    const request = Object.assign({ attested: Object.assign({}, state.attested), samples: Number(state.samples), seed: 1 }, settings());
+    const request = Object.assign({ attested: Object.assign({}, state.attested), samples: state.samples, seed: 1 }, settings());
     const key = JSON.stringify([state.attested, settings(), state.samples]);
     const bar = $('progress'), count = $('progress-text');
     bar.hidden = false; bar.value = 0;

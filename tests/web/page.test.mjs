@@ -6,7 +6,8 @@
 // 3. The animation advances; 4. a shared URL restores the state; 5. the downloaded design is
 //    accepted by trebuchet-verify and gives the page's shot; 6. a Monte Carlo run spread over
 //    Web Workers is the run of one module; 7. a refusal shows the calculator's message;
-// 8. the index.html of trebuchet-verify shot --plot draws its shot with the same viewer.
+// 8. the index.html of trebuchet-verify shot --plot draws its shot with the same viewer;
+// 9. hostile links and requests are refused as bad input, the page working on.
 // Each check prints how close it came. Exit 1 on any failure.
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
@@ -217,6 +218,33 @@ try {
       `trebuchet-verify shot --plot (${name}): index.html draws the shot with the page's viewer, 4 charts, "${(shown.text.match(expect) || ['nothing'])[0].slice(0, 80)}"`);
     await report.context.close();
   }
+
+  // ---- 9. hostile links and requests (cases a probe of the page found) ------------------------
+  // A link's state is anyone's text: markup in it must stay text, and a value of the wrong kind
+  // must fall back to its default, with the page working and no error.
+  for (const hash of ['#view=edit&edit={"L1":"\\"><img src=x onerror=\\"document.title=\'XSS\'\\">"}', '#first=null&second=null',
+                      '#attested=null&view=reconstruct', '#view=edit&edit=true', '#view=nowhere&units=zz', '#attested="abc"&view=reconstruct']) {
+    const hostile = await open(browser, url + hash);
+    const seen = await hostile.page.evaluate(() => ({ title: document.title, views: [...document.querySelectorAll('.view')].filter((v) => !v.hidden).length,
+                                                     R: (document.querySelector('#viewer .tv-figures td') || {}).textContent }));
+    check(seen.title.startsWith('trebuchet') && seen.views === 1 && seen.R && hostile.problems.length === 0,
+      `the link ${hash.slice(0, 40)}... opens one view with a shot (R ${seen.R}), no script, no error ${hostile.problems.join('; ')}`);
+    await hostile.context.close();
+  }
+  const answers = await page.evaluate(() => {
+    const t = window.trebuchet, loop = { R: '150m' }, nested = {};
+    loop.self = loop;
+    let at = nested;
+    for (let k = 0; k < 100000; k++) { at.a = {}; at = at.a; }
+    return [t.design(undefined), t.design(nested), t.design(loop), t.design({ R: '150m', m: '50kg', scale: -1 }),
+            t.shot({ design: t.design({ R: '150m', m: '50kg' }), n: -1 }), t.shot({ design: t.design({ R: '150m', m: '50kg' }), tolerance: 0 }),
+            t.monteCarlo({ design: { L1: 4, L2: 1, L3: 2, L4: 4, M: '2t..3t', m: 50, mb: 200 }, samples: 2, outcomes: [['1', 2, 3, 4], [1, 2, 3, 4]] })];
+  });
+  const kinds = answers.map((a) => a.kind);
+  check(answers.every((a) => a.error && a.kind !== 'numerical'),
+    `hostile requests are refused as bad input, not failures: ${kinds.join(', ')}; e.g. "${answers[4].error}"`);
+  const parallel = await page.evaluate(() => window.trebuchet.monteCarloParallel({ attested: { Lb: '9.5m', M: '2.5t..3.5t', m: '50kg' }, samples: -1 }));
+  check(Boolean(parallel.error), `monteCarloParallel refuses samples -1 before any work: "${parallel.error}"`);
 } finally {
   await browser.close();
 }

@@ -29,8 +29,24 @@ namespace {
 using json = nlohmann::json;
 using ordered_json = nlohmann::ordered_json;
 
-// The messages of this API name each value by its key, bare: "L4", "design.L4".
-std::string key_word(std::string_view name) { return std::string(name); }
+// The messages of this API name each value by its key, bare: "L4", "design.L4". The core names
+// the air's values as the programs' options do; here they are keys of "air".
+std::string key_word(std::string_view name) {
+  if (name == "air_density") return "air.density";
+  if (name == "cd") return "air.drag_coefficient";
+  if (name == "projectile") return "air.projectile_density";
+  if (name == "wind") return "air.wind";
+  return std::string(name);
+}
+
+// An optional value that must be positive (as the programs' options are), or 0 or more.
+std::optional<double> positive_value(const json& request, const std::string& key, UnitDimension dimension, bool zero_allowed = false) {
+  const auto value = read_value(request, key, dimension, "");
+  if (value && !(zero_allowed ? *value >= 0 : *value > 0))
+    throw Error(ErrorKind::bad_number, "{{" + key + "}} = " + format_significant(*value, 6) + " must be " +
+                                           (zero_allowed ? "0 or more" : "positive") + "; give a value " + (zero_allowed ? ">= 0" : "> 0"));
+  return value;
+}
 
 // A request must be an object of known keys; a key it does not know is named with the keys it does.
 void require_keys(const json& request, const std::vector<std::string>& known, const std::string& what) {
@@ -64,7 +80,7 @@ ShotSettings settings_of(const json& request) {
   ShotSettings settings;
   settings.target_level = read_value(request, "target_level", UnitDimension::length, "").value_or(0);
   if (request.contains("release")) settings.criterion.release = parse_release(text_of(request["release"], "release"), "{{release}}");
-  if (const auto n = read_value(request, "n", UnitDimension::dimensionless, "")) settings.criterion.n = *n;
+  if (const auto n = positive_value(request, "n", UnitDimension::dimensionless, true)) settings.criterion.n = *n;  // eq:Q_n
   if (request.contains("range_from")) {
     const std::string from = text_of(request["range_from"], "range_from");
     if (from != "pivot" && from != "release")
@@ -204,7 +220,7 @@ ordered_json design(const json& request) {
   if (const auto F = read_value(request, "F", UnitDimension::dimensionless, "")) r.F = *F;
   if (request.contains("branch")) r.branch = parse_branch_choice(text_of(request["branch"], "branch"));
   r.extrapolate = flag_of(request, "extrapolate");
-  if (const auto scale = read_value(request, "scale", UnitDimension::dimensionless, "")) r.scale = *scale;
+  if (const auto scale = positive_value(request, "scale", UnitDimension::dimensionless)) r.scale = *scale;
   MaterialOverrides material;
   material.beta2 = read_value(request, "beta2", UnitDimension::dimensionless, "");
   material.youngs_modulus = read_value(request, "youngs_modulus", UnitDimension::pressure, "");
@@ -223,7 +239,7 @@ ordered_json shot(const json& request) {
   DesignCheck check;
   check.settings = settings_of(request);
   check.material = overrides_of(request);
-  if (const auto tolerance = read_value(request, "tolerance", UnitDimension::dimensionless, "")) check.tolerance = *tolerance;
+  if (const auto tolerance = positive_value(request, "tolerance", UnitDimension::dimensionless)) check.tolerance = *tolerance;
   check.fit = flag_of(request, "fit");
   const EngineRecord record = read_engine(request["design"], "design");
   ordered_json answer = check_design(record, check).json;
@@ -332,9 +348,9 @@ ordered_json monte_carlo(const json& request) {
       throw Error(ErrorKind::usage, "{{outcomes}} must hold one outcome for each of the " + std::to_string(samples) + " samples, in order");
     for (const json& o : given) {
       SampleOutcome outcome;
-      if (o.is_array() && o.size() == 4) {
+      if (o.is_array() && o.size() == 4 && std::all_of(o.begin(), o.end(), [](const json& x) { return x.is_number(); })) {
         for (std::size_t k = 0; k < 4; ++k) outcome.values[k] = o[k].get<double>();
-      } else if (o.is_object() && o.contains("failure")) {
+      } else if (o.is_object() && o.contains("failure") && o["failure"].is_string() && (!o.contains("kind") || o["kind"].is_string())) {
         outcome.failure = o["failure"].get<std::string>();
         outcome.failure_kind = kind_of(o.value("kind", "numerical"));
       } else {
@@ -355,7 +371,9 @@ ordered_json monte_carlo(const json& request) {
 }
 
 ordered_json error_json(const Error& error) {
-  return {{"error", error.message(key_word)}, {"kind", kind_name(error.kind())}, {"names", error.names()}};
+  std::vector<std::string> names;
+  for (const std::string& name : error.names()) names.push_back(key_word(name));
+  return {{"error", error.message(key_word)}, {"kind", kind_name(error.kind())}, {"names", names}};
 }
 
 }  // namespace trebuchet::api

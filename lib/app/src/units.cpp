@@ -96,7 +96,17 @@ DimensionText dimension_text(UnitDimension dimension) {
   return {"?", "?", "?"};
 }
 
-std::string quoted(std::string_view text) { return "'" + std::string(text) + "'"; }
+// A value as a message quotes it; a long one by its ends, so that a message stays a line.
+// Cut only between UTF-8 characters, never inside one.
+std::string quoted(std::string_view text) {
+  if (text.size() <= 80) return "'" + std::string(text) + "'";
+  auto boundary = [&](std::size_t at) {
+    while (at > 0 && at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) --at;
+    return at;
+  };
+  const std::size_t head = boundary(40), tail = boundary(text.size() - 20);
+  return "'" + std::string(text.substr(0, head)) + "…" + std::string(text.substr(tail)) + "' (" + std::to_string(text.size()) + " bytes)";
+}
 
 // Parses the longest leading number of `text`; returns the number of characters used (0: none).
 // A number beyond the range of a double is reported as such, naming `what`.
