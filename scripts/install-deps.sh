@@ -44,7 +44,7 @@ fi
 export DEBIAN_FRONTEND=noninteractive
 
 # Debian's source packages, for apt-get source gsl (scripts/build-gsl-wasm.sh).
-if [ "$scope" != native ] && ! grep -rqs "deb-src" /etc/apt/sources.list /etc/apt/sources.list.d/; then
+if [ "$scope" != native ] && ! grep -rqsE "^(Types:.*deb-src|deb-src )" /etc/apt/sources.list /etc/apt/sources.list.d/; then
   echo "install-deps: enabling Debian's source packages (bookworm main) for apt-get source gsl"
   printf 'Types: deb-src\nURIs: http://deb.debian.org/debian\nSuites: bookworm\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' |
     "${sudo_cmd[@]}" tee /etc/apt/sources.list.d/trebuchet-deb-src.sources >/dev/null
@@ -67,6 +67,12 @@ fi
 if [ "$scope" != native ]; then
   # npm ships with a nodejs from NodeSource; Debian's own nodejs has it as a package of its own.
   command -v npm >/dev/null || "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends npm
+  # playwright-core (the browser tests) needs Node 20 or later; Debian 12's own nodejs is 18.
+  node_major=$(node -p 'process.versions.node.split(".")[0]')
+  if [ "$node_major" -lt 20 ]; then
+    echo "install-deps: the browser tests need Node 20 or later (playwright-core); this node is $(node --version). Install a newer nodejs (NodeSource's, as this project's machines have), then run this again" >&2
+    exit 1
+  fi
   # Debian's source of GSL, for GSL in WebAssembly (built by scripts/build-web.sh, once a machine).
   bash scripts/build-gsl-wasm.sh --fetch
   # The browser tests' one npm package, playwright-core, at the version of tests/web/package-lock.json;

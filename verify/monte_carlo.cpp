@@ -36,17 +36,9 @@ int run_monte_carlo(const Options& o, bool complete) {
   };
   // The work, decided before the run: a completion's shots are those of the trial (or, when it
   // fails numerically, 300, twice what the completions of bench-completion take).
-  long shots_per_sample = 1;
-  if (!complete) {
-    engine_of(first);
-  } else {
-    try {  // one completion more: bad input is refused before the run; a numerical failure is a sample's
-      shots_per_sample = complete_engine(completion_request(first)).simulations;
-    } catch (const Error& e) {
-      if (e.kind() != ErrorKind::numerical) throw;
-      shots_per_sample = 300;
-    }
-  }
+  std::int64_t shots_per_sample = 1;
+  if (complete) shots_per_sample = shots_per_completion([&] { return complete_engine(completion_request(first)); });
+  else engine_of(first);
   const int samples = o.samples.value_or(complete ? default_completion_samples : default_shot_samples);
   check_monte_carlo_work(samples, shots_per_sample, complete ? "completions" : "shots");
   const auto start = std::chrono::steady_clock::now();

@@ -161,7 +161,7 @@
     shown = { engine, shot: answer };
     $('shot-title').textContent = title;
     // A change keeps the animation where it stood, so that a drag shows the same moment.
-    viewer = V.render($('viewer'), answer, { units: state.units, time: viewer ? viewer.time() : 0 });
+    viewer = V.render($('viewer'), answer, { units: state.units, time: viewer ? viewer.time() : 0, playing: viewer ? viewer.playing() : false });
     // The engine in the programs' schema; the settings beside it, as the shot's answer states them
     // (trebuchet-verify reads the engine's keys and passes over the others).
     const json = JSON.stringify(Object.assign({ comment: 'trebuchet-verify FILE --format json shoots this engine again; give the settings below as its flags (docs/web.md)' },
@@ -173,7 +173,7 @@
     $('download-csv').href = 'data:text/csv;charset=utf-8,' + encodeURIComponent(V.seriesCsv(answer));
     return answer;
   }
-  function escapeHtml(s) { return String(s).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]); }
+  const escapeHtml = V.escapeHtml;
 
   // ---- edit -----------------------------------------------------------------------------------
   function buildSliders() {
@@ -203,7 +203,7 @@
     const box = $('compare');
     if (!answer) { box.innerHTML = ''; return; }
     // The paper's optimum for the edited engine's own capacity (vacuum, level 0), same θi and F.
-    const request = { R: answer.R_vacuum, T: answer.T_vacuum, theta_i_deg: designed ? designed.theta_i_deg : 30, F: designed ? designed.F : 1 };
+    const request = { R: answer.R_vacuum, T: answer.T_vacuum, theta_i_deg: designed ? designed.theta_i_deg : Number(state.theta), F: designed ? designed.F : state.F };
     let optimum = call('design', request), note = '';
     if (optimum.kind === 'out_of_range') {  // beyond the table: its nearest segment, said so
       const extrapolated = call('design', Object.assign({ extrapolate: true }, request));
@@ -262,10 +262,11 @@
   // together in sample order, so the result is that of one run. Resolves to the report.
   function monteCarloParallel(request, onProgress) {
     // The module checks the request whole (samples, seed, the values) on no sample at all.
+    if (request && typeof request === 'object' && ('first' in request || 'count' in request || 'outcomes' in request))
+      return Promise.resolve(call('monteCarlo', request));
     const checked = call('monteCarlo', Object.assign({}, request, { first: 0, count: 0 }));
     if (checked.error) return Promise.resolve(checked);
-    if ('first' in request || 'count' in request || 'outcomes' in request) return Promise.resolve(call('monteCarlo', request));
-    const samples = request.samples === undefined || request.samples === null ? (request.attested ? 1000 : 10000) : Number(request.samples);
+    const samples = checked.samples;  // as the module reads the request, defaults and units included
     const workers = Math.max(1, Math.min(navigator.hardwareConcurrency || 2, 8, samples));
     const source = $('trebuchet-module').textContent + '\n' + workerMain.toString() + '\nworkerMain();';
     const url = URL.createObjectURL(new Blob([source], { type: 'text/javascript' }));
@@ -290,9 +291,14 @@
           const first = next, count = Math.min(chunk, samples - first);
           next += count;
           worker.postMessage(JSON.stringify(Object.assign({}, request, { first, count })));
+          worker.onerror = (event) => {
+            worker.terminate(); next = samples;
+            failure(refused(`a Web Worker failed (${event.message || 'no message'}); run monteCarlo in the page instead`, 'numerical'));
+            if (--running === 0) finish();
+          };
           worker.onmessage = (event) => {
             const answer = JSON.parse(event.data);
-            if (answer.error) { worker.terminate(); next = samples; failure(answer); return; }
+            if (answer.error) { worker.terminate(); next = samples; failure(answer); if (--running === 0) finish(); return; }
             answer.outcomes.forEach((o, k) => { outcomes[first + k] = o; });
             done += count;
             if (onProgress) onProgress(done, samples);
@@ -303,7 +309,7 @@
       }
       function finish() {
         URL.revokeObjectURL(url);
-        if (done < samples) return;
+        if (done < samples) return;  // a failure has settled the run
         resolve(call('monteCarlo', Object.assign({}, request, { outcomes })));
       }
     });
@@ -311,11 +317,15 @@
   // Runs inside each worker, after the module's own text.
   function workerMain() {
     const ready = createTrebuchet();
-    self.onmessage = (event) => { ready.then((m) => self.postMessage(m.monteCarlo(event.data))); };
+    self.onmessage = (event) => {
+      ready.then((m) => m.monteCarlo(event.data)).then((answer) => self.postMessage(answer), (e) =>
+        self.postMessage(JSON.stringify({ error: `internal error in a worker's module (${e && e.message}); reload the page`, kind: 'numerical', names: [] })));
+    };
   }
   let lastBand = null;  // the band of the attested values and settings it was run for
   function showBand(answer) {
     const box = $('band') || $('reconstruct-result');
+    if (!answer.percentiles) return;
     const q = (v, d) => V.quantity(v, d, state.units);
     const p = answer.percentiles;
     const failed = (answer.failures || []).reduce((n, f) => n + f.count, 0);
@@ -348,7 +358,6 @@
   // ---- the whole page -------------------------------------------------------------------------
   function update() {
     saveState();
-    const started = performance.now();
     if (state.view === 'design') {
       if (runDesign()) runShot(engineOf(designed), "The optimal engine's shot");
       else { $('viewer').innerHTML = ''; shown = null; $('shot-title').textContent = 'No engine to shoot: the request was refused (see the message)'; }
@@ -359,7 +368,6 @@
     } else if (state.view === 'reconstruct') {
       runComplete();
     }
-    document.body.dataset.lastUpdateMs = String(performance.now() - started);
   }
   function showView(view) {
     state.view = view;
@@ -376,19 +384,20 @@
       if (state.pair !== 'any') {
         const [a, b] = state.pair.split(',');
         state.first = [a, EXAMPLES[a]]; state.second = [b, EXAMPLES[b]];
-        if (state.pair === 'R,T') state.second = ['T', '40kJ'];
       }
+      state.edit = null;
       showPair(); update();
     });
     for (const [id, slot] of [['first', 'first'], ['second', 'second']]) {
-      $(id).addEventListener('input', () => { state[slot][1] = $(id).value; givenSlider(slot); update(); });
+      $(id).addEventListener('input', () => { state[slot][1] = $(id).value; state.edit = null; givenSlider(slot); update(); });
       $(id + '-drag').addEventListener('input', () => {
         const value = Number($(id + '-drag').dataset.centre) * Math.pow(4, Number($(id + '-drag').value));
         state[slot][1] = V.significant(value, 4) + $(id + '-drag').dataset.unit;
+        state.edit = null;
         $(id).value = state[slot][1];
         update();
       });
-      $(id + '-name').addEventListener('change', () => { state[slot][0] = $(id + '-name').value; state[slot][1] = EXAMPLES[state[slot][0]]; showPair(); update(); });
+      $(id + '-name').addEventListener('change', () => { state[slot][0] = $(id + '-name').value; state[slot][1] = EXAMPLES[state[slot][0]]; state.edit = null; showPair(); update(); });
     }
     // tab:CPNC's blocks: theta_i 30 deg with F 1 or 2/3, 40 deg with F 2/3 only.
     const blocks = () => {
@@ -441,6 +450,7 @@
     monteCarlo: (request) => call('monteCarlo', request),
     monteCarloParallel,
     state: () => JSON.parse(JSON.stringify(state)),
+    current: () => (shown ? shown.shot : null),  // the shot the page shows, as shot() answered it
     viewer: () => viewer,
   };
   window.trebuchet = api;

@@ -124,7 +124,8 @@
     const box = svg('rect', { fill: 'rgba(255,255,255,0.93)', stroke: '#999', rx: 3 }, readout);
     const lines = spec.lines.map((line) => text(readout, 0, 0, '', { 'font-size': 11, fill: line.colour }));
     const xText = text(readout, 0, 0, '', { 'font-size': 11, 'font-weight': 'bold' });
-    root.addEventListener('pointermove', (event) => {
+    // On the paths (equal aspect) a curve goes back and forth in x: no value is "the" one under the pointer.
+    if (!spec.equalAspect) root.addEventListener('pointermove', (event) => {
       const point = root.createSVGPoint ? (() => { const p = root.createSVGPoint(); p.x = event.clientX; p.y = event.clientY; return p.matrixTransform(root.getScreenCTM().inverse()); })() : { x: 0 };
       if (point.x < left || point.x > width - right) return;
       const x = x0 + (point.x - left) / (width - left - right) * (x1 - x0);
@@ -284,7 +285,7 @@
   }
 
   // The viewer into `container`: figures, warnings, the animation and the charts. `options`:
-  // units ('si', 'imperial'), downloads (bool), time (where the animation stands, s).
+  // units ('si', 'imperial'), downloads (bool), time (where the animation stands, s), playing.
   function render(container, shot, options) {
     options = options || {};
     const system = options.units || 'si';
@@ -317,7 +318,7 @@
       </table><table class="tv-figures"><caption>the builder's loads (largest up to the release)</caption>
       ${loads.map(([name, v, t]) => row(name, q(v, 'force') + ' at ' + significant(t, 3) + ' s')).join('')}
       ${shot.beam_moment !== undefined ? row('beam moment at the pivot', q(shot.beam_moment, 'moment') + ' at ' + significant(shot.t_beam_moment, 3) + ' s') : ''}
-      ${shot.stress_peak !== undefined ? row('beam stress, peak', q(shot.stress_peak, 'stress') + ' (' + significant(shot.rupture_margin, 3) + '× below rupture)') : ''}
+      ${shot.stress_peak > 0 ? row('beam stress, peak', q(shot.stress_peak, 'stress') + ' (' + significant(shot.rupture_margin, 3) + '× below rupture)') : ''}
       </table><table class="tv-figures"><caption>the engine</caption>
       ${row('L1, L2 (beam)', q(e.L1, 'length') + ', ' + q(e.L2, 'length'))}${row('L3 (counterweight arm)', q(e.L3, 'length'))}
       ${row('L4 (sling)', q(e.L4, 'length'))}${row('H (pivot height)', q(e.H, 'length'))}
@@ -356,6 +357,9 @@
       const k = Math.min(Math.max(after / s.flight.time, 0), 1) * (s.flight.x.length - 1), i = Math.min(Math.floor(k), s.flight.x.length - 2), w = k - i;
       return [s.flight.x[i] + w * (s.flight.x[i + 1] - s.flight.x[i]), s.flight.y[i] + w * (s.flight.y[i + 1] - s.flight.y[i])];
     };
+    // One animation a container: a viewer drawn over another stops the other's clock.
+    const token = {};
+    container.trebuchetViewer = token;
     let time = Math.min(options.time || 0, tEnd), playing = false, last = null;
     const scrub = controls.querySelector('.tv-scrub'), timeText = controls.querySelector('.tv-time'), play = controls.querySelector('.tv-play');
     const speed = controls.querySelector('.tv-speed'), angles = controls.querySelector('.tv-angles');
@@ -396,7 +400,7 @@
       container.dataset.time = String(time);
     }
     function tick(now) {
-      if (!playing) return;
+      if (!playing || container.trebuchetViewer !== token) return;
       if (last !== null) {
         // Phases I and II at the chosen speed; the flight at real speed, so that it does not drag.
         const rate = time > tRelease ? 1 : Number(speed.value);
@@ -421,6 +425,7 @@
     });
     angles.addEventListener('change', draw);
     draw();
+    if (options.playing) play.click();  // a change while it played plays on
 
     // On a phone the charts are drawn narrower, so that their text is not shrunk to nothing.
     const figures = charts(shot, system, container.clientWidth && container.clientWidth < 600 ? 420 : 760);
@@ -463,5 +468,5 @@
     return lines.join('\n') + '\n';
   }
 
-  global.TrebuchetViewer = { render, quantity, significant, describeAssumptions, seriesCsv, chart };
+  global.TrebuchetViewer = { render, quantity, significant, describeAssumptions, seriesCsv, chart, escapeHtml };
 })(typeof window !== 'undefined' ? window : globalThis);

@@ -90,7 +90,7 @@ ShotSettings settings_of(const json& request) {
   if (request.contains("air")) {
     const json& given = request["air"];
     if (given.is_object()) {
-      require_keys(given, {"density", "drag_coefficient", "projectile_density", "wind", "projectile_diameter"}, "air");
+      require_keys(given, {"density", "drag_coefficient", "projectile_density", "wind"}, "air");
       Air air;
       air.density = read_value(given, "density", UnitDimension::density, "air").value_or(air.density);
       if (given.contains("drag_coefficient") && given["drag_coefficient"].is_string() &&
@@ -113,7 +113,7 @@ ShotSettings settings_of(const json& request) {
 
 MaterialOverrides overrides_of(const json& request) {
   MaterialOverrides material;
-  material.modulus_of_rupture = read_value(request, "modulus_of_rupture", UnitDimension::pressure, "");
+  material.modulus_of_rupture = positive_value(request, "modulus_of_rupture", UnitDimension::pressure);
   return material;
 }
 
@@ -125,7 +125,7 @@ const std::vector<std::pair<std::string, UnitDimension>> attested_keys = {
     {"beta2", UnitDimension::dimensionless}, {"youngs_modulus", UnitDimension::pressure}, {"wood_density", UnitDimension::density},
     {"g", UnitDimension::acceleration}};
 
-CompletionRequest completion_request_of(const json& attested, const ShotSettings& settings) {
+CompletionRequest completion_request_of(const json& attested, const ShotSettings& settings, const MaterialOverrides& overrides) {
   std::vector<std::string> known;
   for (const auto& [key, dimension] : attested_keys) known.push_back(key);
   require_keys(attested, known, "attested");
@@ -145,6 +145,7 @@ CompletionRequest completion_request_of(const json& attested, const ShotSettings
   MaterialOverrides material;
   material.beta2 = value("beta2"), material.youngs_modulus = value("youngs_modulus"), material.wood_density = value("wood_density");
   material.g = value("g");
+  material.modulus_of_rupture = overrides.modulus_of_rupture;
   request.material = material.over(Material{});
   request.settings = settings;
   return request;
@@ -256,7 +257,7 @@ ordered_json shot(const json& request) {
 ordered_json complete(const json& request) {
   require_keys(request, with_settings({"attested"}), "complete");
   if (!request.contains("attested")) throw Error(ErrorKind::usage, "{{attested}} is missing; give what the source attests, e.g. {\"attested\": {\"Lb\": \"9.5m\", \"M\": \"3t\", \"m\": \"50kg\"}}");
-  return completion_answer(completion_request_of(request["attested"], settings_of(request)));
+  return completion_answer(completion_request_of(request["attested"], settings_of(request), overrides_of(request)));
 }
 
 ordered_json monte_carlo(const json& request) {
@@ -272,7 +273,10 @@ ordered_json monte_carlo(const json& request) {
   std::vector<FixedInput> fixed;
   for (const auto& [key, value] : values.items()) {
     const std::optional<UnitDimension> dimension = dimension_of(key, completes);
-    if (!dimension) continue;  // read_engine ignores it; completion_request_of refuses it by name
+    // Not an engine's value: a design's derived key (read_engine passes over Lb, DeltaU ...; R and T
+    // it reads as a capacity, where a spread is refused as no number), or, for completions, a key
+    // completion_request_of refuses by name.
+    if (!dimension) continue;
     std::optional<Spread> spread;
     if (value.is_string()) spread = parse_spread(value.get<std::string>(), *dimension, where + "." + key);
     if (spread) inputs.push_back({key, *dimension, *spread});
@@ -286,7 +290,7 @@ ordered_json monte_carlo(const json& request) {
   const ShotSettings settings = settings_of(request);
   const MaterialOverrides material = overrides_of(request);
   auto verification_of = [&](const json& set) {
-    if (completes) return complete_engine(completion_request_of(set, settings)).verification;
+    if (completes) return complete_engine(completion_request_of(set, settings, material)).verification;
     Engine engine = read_engine(set, where).engine;
     engine.material = material.over(engine.material);
     ShotSettings quick = settings;
@@ -295,17 +299,9 @@ ordered_json monte_carlo(const json& request) {
   };
   // As the program does: the design at each spread's first number must be an engine.
   const json first_values = with_draws([](const Spread& s) { return s.a; });
-  long shots_per_sample = 1;
-  if (!completes) {
-    read_engine(first_values, where);
-  } else {
-    try {
-      shots_per_sample = complete_engine(completion_request_of(first_values, settings)).simulations;
-    } catch (const Error& e) {
-      if (e.kind() != ErrorKind::numerical) throw;
-      shots_per_sample = 300;
-    }
-  }
+  std::int64_t shots_per_sample = 1;
+  if (completes) shots_per_sample = shots_per_completion([&] { return complete_engine(completion_request_of(first_values, settings, material)); });
+  else read_engine(first_values, where);
   const double samples_given = read_value(request, "samples", UnitDimension::dimensionless, "")
                                    .value_or(completes ? default_completion_samples : default_shot_samples);
   if (!(samples_given >= 1 && samples_given <= max_run_shots) || samples_given != std::floor(samples_given))
@@ -340,7 +336,7 @@ ordered_json monte_carlo(const json& request) {
       if (o.failure.empty()) part.push_back(o.values);
       else part.push_back({{"failure", o.failure}, {"kind", kind_name(o.failure_kind)}});
     }
-    return {{"outcomes", part}};
+    return {{"samples", samples}, {"outcomes", part}};
   }
   if (request.contains("outcomes")) {  // the parts put together
     const json& given = request["outcomes"];
@@ -362,11 +358,16 @@ ordered_json monte_carlo(const json& request) {
     for (std::size_t i = 0; i < static_cast<std::size_t>(samples); ++i) outcomes.push_back(run_sample(seed, i, sample));
   }
   const MonteCarloSummary summary = summarize_samples(outcomes);
+  // With no sample left, the run fails as its most frequent failure did, as the program's does.
+  if (summary.values.empty()) {
+    const SampleFailures& most = summary.failures.front();
+    throw Error(most.kind, "no sample worked; the most frequent reason (" + std::to_string(most.count) + " of " + std::to_string(summary.samples) +
+                               "), in its first sample: " + most.first);
+  }
   const MonteCarloReport report{summary, inputs, fixed, describe_release(settings), seed, completes ? "the completed engine" : "the shot",
                                 settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"), settings.air.has_value(), 0, 1};
   ordered_json answer = monte_carlo_json(report);
-  answer.erase("seconds");
-  answer.erase("threads");
+  answer.erase("wall_time_s");  // a time is the caller's to measure; the report is the same on any machine
   return answer;
 }
 

@@ -91,12 +91,21 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   return out;
 }
 
-void check_monte_carlo_work(long samples, long shots_per_sample, const std::string& sampled) {
+void check_monte_carlo_work(std::int64_t samples, std::int64_t shots_per_sample, const std::string& sampled) {
   if (samples * shots_per_sample <= max_run_shots) return;
   throw Error(ErrorKind::usage, "{{samples}} " + std::to_string(samples) + " of " + sampled + " at " + std::to_string(shots_per_sample) +
                                     " shot(s) each would take " + std::to_string(samples * shots_per_sample) + " shots, more than the " +
                                     std::to_string(max_run_shots) + " a run may take (about 30 s on two cores); give {{samples}} " +
-                                    std::to_string(std::max(1L, max_run_shots / shots_per_sample)) + " or fewer");
+                                    std::to_string(std::max<std::int64_t>(1, max_run_shots / shots_per_sample)) + " or fewer");
+}
+
+std::int64_t shots_per_completion(const std::function<Completion()>& trial) {
+  try {
+    return trial().simulations;
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::numerical) throw;
+    return 300;
+  }
 }
 
 std::string describe_uncertain(const UncertainInput& u) {

@@ -60,7 +60,7 @@ struct FlightEnd {
 /// below the start (drop 0: back at the release height, Denny's range), under gravity g and
 /// the drag, in the units of both. nullopt when it never comes down there (it climbs past the
 /// time limit), the integrator fails, or the flight needs 20 times the work of an ordinary one
-/// (a drag so strong that the equations turn stiff: an air of 10^3 kg/m^3 and more). With `path`, the flight's positions at `path_points`
+/// (a drag so strong that the equations turn stiff: an air of 10^4 kg/m^3 with Cd 100, say). With `path`, the flight's positions at `path_points`
 /// equal steps of time from the start to the end are appended to it (for pictures).
 std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Drag& drag, double g, std::vector<Vec2>* path = nullptr,
                              int path_points = 101);

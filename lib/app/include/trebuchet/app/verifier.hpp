@@ -87,14 +87,20 @@ struct UncertainInput {
 /// shots of one sample (1 for a shot, those of a trial completion for complete), or
 /// derive-table's X points times about shots_per_sweep_point, at most max_run_shots: about 30 s on
 /// two cores of the reference machine (docs/stability.md).
-inline constexpr long max_run_shots = 500000;
-inline constexpr long shots_per_sweep_point = 1100;
+inline constexpr std::int64_t max_run_shots = 500000;
+inline constexpr std::int64_t shots_per_sweep_point = 1100;
 /// The samples of a run unless {{samples}} is given: 10000 shots (about 1 s), 1000 completions
 /// (about 4 s); either puts the 5 and 95 % to a few percent of their spread.
 inline constexpr int default_shot_samples = 10000, default_completion_samples = 1000;
 /// Refuses, as Error(usage) naming {{samples}} and the numbers, a run of more shots than
 /// max_run_shots; the fix is the most samples the budget allows.
-void check_monte_carlo_work(long samples, long shots_per_sample, const std::string& sampled);
+void check_monte_carlo_work(std::int64_t samples, std::int64_t shots_per_sample, const std::string& sampled);
+
+/// The shots one completion of a Monte Carlo run takes: those of `trial`, a completion at the
+/// run's first values; 300 when it fails numerically (twice what the completions of
+/// bench-completion take). Bad input at the first values is thrown: a range must hold only
+/// values that make an engine.
+std::int64_t shots_per_completion(const std::function<Completion()>& trial);
 
 /// "--M uniform 2500..3500 kg", "--L4 normal 3.55±0.2 m".
 std::string describe_uncertain(const UncertainInput& input);
