@@ -1,7 +1,6 @@
 // Screenshots of every view of the page, to look at (not a test):
 //   node tests/web/screenshots.mjs PAGE.html OUTDIR
-// Each view at 1280x800 (the first screen, and the whole page) and at a phone's 390x844, and the
-// README's picture (docs/figures/web.png is OUTDIR/design-1280.png).
+// Each view at 1280x800 (the first screen, and the whole page) and at a phone's 390x844.
 import { mkdirSync } from 'node:fs';
 import { resolve, join } from 'node:path';
 import { pathToFileURL } from 'node:url';
@@ -13,6 +12,8 @@ const browser = await launch();
 const url = pathToFileURL(resolve(pagePath)).href;
 const views = {
   design: async () => {},
+  // The README's picture (docs/figures/web.png is readme-1280.png): the optimal engine mid-swing.
+  readme: async (page) => { await page.evaluate(() => window.trebuchet.viewer().setTime(0.95)); },
   edit: async (page) => {
     await page.click('nav button[data-view="edit"]');
     await page.evaluate(() => { const s = document.querySelector('#sliders input[data-key="L4"]'); s.value = String(Number(s.value) * 1.4); s.dispatchEvent(new Event('input')); });
