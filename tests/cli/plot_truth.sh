@@ -27,7 +27,7 @@ grep -q "air (Cd 0.47" <<<"$heading" || fail "index.html does not describe the a
 grep -q "in vacuum" <<<"$heading" && fail "index.html says 'in vacuum'"
 grep -q '"air":{"density":1.2' "$dir/air/index.html" || fail "index.html does not carry the shot's air"
 for gp in engine paths forces energy release; do
-  grep -q "in air (Cd 0.47), release where Q peaks, target level -15 m" "$dir/air/$gp.gp" || fail "$gp.gp does not name the air and the target level"
+  grep -q "in air (Cd 0.47), release where Q peaks (eq:Q), target level -15 m" "$dir/air/$gp.gp" || fail "$gp.gp does not name the air and the target level"
 done
 
 "$verify" shot "${engine[@]}" --F 2 --plot "$dir/below" > /dev/null || fail "--F 2 --plot exited $?"

@@ -134,18 +134,13 @@ std::string warning_labels(const Verification& v, bool at_foot = false) {
   return g;
 }
 
-// The shot that was computed, for every picture's title: air or vacuum, the release, the target.
+// The shot that was computed, for every picture's title: air or vacuum, then the release and the
+// target level as every report says them (describe_release).
 std::string scene_of(const ShotSettings& settings) {
-  const ReleaseCriterion& c = settings.criterion;
-  const std::string release = c.release == Release::quality ? (c.n == 1 ? "release where Q peaks" : "release where Q_n peaks (n = " + num(c.n) + ")")
-                              : c.release == Release::efficiency ? "release where ε peaks"
-                                                                 : "release where the range peaks";
   const std::string air = settings.air ? "in air (Cd " + (settings.air->drag_coefficient ? format_significant(*settings.air->drag_coefficient, 3) : std::string("of Re")) +
                                              (settings.air->wind != 0 ? ", wind " + format_significant(settings.air->wind, 3) + " m/s" : std::string()) + ")"
                                        : std::string("in vacuum");
-  return air + ", " + release + ", " +
-         (settings.range_from_release ? std::string("range from the release point back to its height (Denny's)")
-                                      : "target level " + format_significant(settings.target_level, 4) + " m");
+  return air + ", " + describe_release(settings);
 }
 
 }  // namespace

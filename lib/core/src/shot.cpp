@@ -324,7 +324,7 @@ double objective_range(const ReleasePoint& r, const ReleaseCriterion& criterion)
 }  // namespace
 
 std::array<double, load_count> load_values(const Snapshot& s) {
-  return {s.sling_tension, std::hypot(s.hinge_force.x, s.hinge_force.y), std::hypot(s.pivot_reaction.x, s.pivot_reaction.y), std::abs(s.beam_moment)};
+  return {s.sling_tension, std::hypot(s.hinge_force.x, s.hinge_force.y), force_values(s)[pivot_reaction], std::abs(s.beam_moment)};
 }
 
 ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criterion, double t, const State& s,
