@@ -84,13 +84,7 @@ int run_monte_carlo(const Options& o, bool complete) {
   } else {
     std::cout << monte_carlo_table(report);
   }
-  // With no sample left, the run fails as its most frequent failure did: bad input (a range
-  // that holds no engine) or a numerical failure, with that sample's numbers; no histogram.
-  if (summary.values.empty()) {
-    const SampleFailures& most = summary.failures.front();
-    throw Error(most.kind, "no sample worked; the most frequent reason (" + std::to_string(most.count) + " of " +
-                               std::to_string(summary.samples) + "), in its first sample: " + most.first);
-  }
+  refuse_when_no_sample_worked(summary);  // after the report of the failures; no histogram
   if (!o.plot.empty()) {
     std::vector<std::string> described;
     for (const UncertainInput& u : inputs) described.push_back(describe_uncertain(u));

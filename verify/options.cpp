@@ -202,9 +202,7 @@ void air_and_sampling_options(CLI::App* app, Options& o) {
   value_option(app, o, "--wind", option_slot(&Options::wind), UnitDimension::speed,
                "horizontal wind toward the target, e.g. 5m/s or -20km/h (against)", true);
   parsed_option(app, "--range-from", [&o](const std::string& text) {
-    if (text != "pivot" && text != "release")
-      throw Error(ErrorKind::usage, "--range-from: '" + text + "' is not a range; use pivot (the paper's) or release (Denny's)");
-    o.settings.range_from_release = text == "release";
+    o.settings.range_from_release = parse_range_from(text, "--range-from");
   }, "pivot (the paper's: to the target level, the default) or release (Denny's: from the release point back to its height)");
 }
 

@@ -20,6 +20,7 @@
   let designed = null;   // the calculator's design (JSON), or null when refused
   let shown = null;      // the engine the shot is of (engine keys), and its shot
   let viewer = null;
+  const q = (value, dimension) => V.quantity(value, dimension, state.units);  // in the units chosen
 
   // ---- the library --------------------------------------------------------------------------
   // A number JSON cannot carry (NaN, Infinity) would arrive as null: it is refused here, by name.
@@ -141,7 +142,6 @@
     designed = answer;
     message.className = 'message';
     message.textContent = (answer.warnings || []).join(' ');
-    const q = (v, d) => V.quantity(v, d, state.units);
     $('design-result').innerHTML = `<table class="tv-figures"><caption>the optimal engine${answer.branch === 'none' ? '' : ' (' + answer.branch + ' branch)'}, θi = ${answer.theta_i_deg}°, F = ${Math.abs(answer.F - 2 / 3) < 1e-12 ? '2/3' : V.significant(answer.F, 4)}</caption>
       <tr><th>capacity</th><td>R = ${q(answer.R, 'length')}, T = ${q(answer.T, 'energy')} (in vacuum)</td></tr>
       <tr><th>beam</th><td>L1 = ${q(answer.L1, 'length')}, L2 = ${q(answer.L2, 'length')}, Lb = ${q(answer.Lb, 'length')}, diameter D = ${q(answer.D, 'length')}</td></tr>
@@ -193,7 +193,7 @@
       Object.assign(input, { min: String(lo), max: String(hi), value: String(state.edit[key]) });
       input.dataset.key = key;
       input.setAttribute('aria-label', key);
-      const show = () => { out.textContent = dimension === 'angle' ? V.significant(Number(input.value), 4) + '°' : V.quantity(Number(input.value), dimension, state.units); };
+      const show = () => { out.textContent = dimension === 'angle' ? V.significant(Number(input.value), 4) + '°' : q(Number(input.value), dimension); };
       show();
       input.addEventListener('input', () => { state.edit[key] = Number(input.value); show(); update(); });
       box.appendChild(row);
@@ -209,7 +209,6 @@
       const extrapolated = call('design', Object.assign({ extrapolate: true }, request));
       if (!extrapolated.error) { note = ' (extrapolated: this capacity lies beyond tab:CPNC)'; optimum = extrapolated; }
     }
-    const q = (v, d) => V.quantity(v, d, state.units);
     if (optimum.error) { box.innerHTML = `<details class="message"><summary>No optimum in tab:CPNC for this capacity, to compare with.</summary>${escapeHtml(optimum.error)}</details>`; return; }
     const shot = call('shot', Object.assign({ design: engineOf(optimum) }, settings()));
     const cell = (a, b, f) => `<td>${f(a)}</td><td>${shot.error ? '—' : f(b)}</td>`;
@@ -244,7 +243,6 @@
     }
     message.className = 'message';
     message.textContent = Object.values(state.attested).some(uncertain) ? 'A range is completed at its middle, a spread at its mean; "Monte Carlo band" samples them.' : '';
-    const q = (v, d) => V.quantity(v, d, state.units);
     const longest = answer.longest_range;
     $('reconstruct-result').innerHTML = `<table class="tv-figures"><caption>the completed engine (${answer.simulations} shots)</caption>
       <tr><th>attested</th><td>${answer.attested.join(', ')}</td></tr><tr><th>implied</th><td>${answer.implied.join(', ') || '—'}</td></tr>
@@ -326,7 +324,6 @@
   function showBand(answer) {
     const box = $('band') || $('reconstruct-result');
     if (!answer.percentiles) return;
-    const q = (v, d) => V.quantity(v, d, state.units);
     const p = answer.percentiles;
     const failed = (answer.failures || []).reduce((n, f) => n + f.count, 0);
     box.innerHTML = `<table class="tv-figures"><caption>Monte Carlo band: ${answer.samples} completions, ${failed} failed</caption>

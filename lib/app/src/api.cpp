@@ -81,12 +81,7 @@ ShotSettings settings_of(const json& request) {
   settings.target_level = read_value(request, "target_level", UnitDimension::length, "").value_or(0);
   if (request.contains("release")) settings.criterion.release = parse_release(text_of(request["release"], "release"), "{{release}}");
   if (const auto n = positive_value(request, "n", UnitDimension::dimensionless, true)) settings.criterion.n = *n;  // eq:Q_n
-  if (request.contains("range_from")) {
-    const std::string from = text_of(request["range_from"], "range_from");
-    if (from != "pivot" && from != "release")
-      throw Error(ErrorKind::usage, "{{range_from}}: '" + from + "' is not a range; use pivot (the paper's) or release (Denny's)");
-    settings.range_from_release = from == "release";
-  }
+  if (request.contains("range_from")) settings.range_from_release = parse_range_from(text_of(request["range_from"], "range_from"), "{{range_from}}");
   if (request.contains("air")) {
     const json& given = request["air"];
     if (given.is_object()) {
@@ -204,10 +199,7 @@ ordered_json design(const json& request) {
   std::vector<Given> givens;
   for (Quantity q : all_quantities) {
     const std::string key(quantity_name(q));
-    if (const auto value = read_value(request, key, unit_dimension(quantity_dimension(q)), "")) {
-      if (!(*value > 0)) throw Error(ErrorKind::bad_number, "{{" + key + "}} = " + format_significant(*value, 6) + " must be positive");
-      givens.push_back({q, *value});
-    }
+    if (const auto value = positive_value(request, key, unit_dimension(quantity_dimension(q)))) givens.push_back({q, *value});
   }
   if (givens.size() != 2) {
     std::vector<std::string> names;
@@ -242,15 +234,11 @@ ordered_json shot(const json& request) {
   check.material = overrides_of(request);
   if (const auto tolerance = positive_value(request, "tolerance", UnitDimension::dimensionless)) check.tolerance = *tolerance;
   check.fit = flag_of(request, "fit");
-  const EngineRecord record = read_engine(request["design"], "design");
-  ordered_json answer = check_design(record, check).json;
-  if (flag_of(request, "series")) {
-    Engine engine = record.engine;
-    engine.material = check.material.over(engine.material);
-    // The series is of the engine the answer reports (fitted first with "fit").
-    if (check.fit) engine = read_engine(answer["engine"], "engine").engine;
-    answer["series"] = shot_series_json(shot_series(engine, check.settings), engine);
-  }
+  const DesignReport report = check_design(read_engine(request["design"], "design"), check);
+  ordered_json answer = report.json;
+  // The series is of the engine the answer reports (fitted first with "fit"), from its shot.
+  if (flag_of(request, "series"))
+    answer["series"] = shot_series_json(shot_series(report.engine, check.settings, report.verification), report.engine);
   return answer;
 }
 
@@ -358,12 +346,7 @@ ordered_json monte_carlo(const json& request) {
     for (std::size_t i = 0; i < static_cast<std::size_t>(samples); ++i) outcomes.push_back(run_sample(seed, i, sample));
   }
   const MonteCarloSummary summary = summarize_samples(outcomes);
-  // With no sample left, the run fails as its most frequent failure did, as the program's does.
-  if (summary.values.empty()) {
-    const SampleFailures& most = summary.failures.front();
-    throw Error(most.kind, "no sample worked; the most frequent reason (" + std::to_string(most.count) + " of " + std::to_string(summary.samples) +
-                               "), in its first sample: " + most.first);
-  }
+  refuse_when_no_sample_worked(summary);
   const MonteCarloReport report{summary, inputs, fixed, describe_release(settings), seed, completes ? "the completed engine" : "the shot",
                                 settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"), settings.air.has_value(), 0, 1};
   ordered_json answer = monte_carlo_json(report);

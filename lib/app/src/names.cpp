@@ -61,4 +61,10 @@ Stepper parse_stepper(std::string_view name, std::string_view option) {
   throw Error(ErrorKind::usage, std::string(option) + ": '" + std::string(name) + "' is not a stepper; use " + stepper_names());
 }
 
+bool parse_range_from(std::string_view name, std::string_view option) {
+  if (name != "pivot" && name != "release")
+    throw Error(ErrorKind::usage, std::string(option) + ": '" + std::string(name) + "' is not a range; use pivot (the paper's) or release (Denny's)");
+  return name == "release";
+}
+
 }  // namespace trebuchet

@@ -147,13 +147,13 @@ std::string scene_of(const ShotSettings& settings) {
 
 std::vector<std::string> picture_scripts() { return {"engine.gp", "paths.gp", "forces.gp", "energy.gp", "release.gp", "animation.gp"}; }
 
-ShotSeries shot_series(const Engine& engine, const ShotSettings& settings) {
+ShotSeries shot_series(const Engine& engine, const ShotSettings& settings, const Verification& verification) {
   ShotSeries series;
   const ScaledDesign d = scaled_design(engine);
   const double g = engine.material.g;
   const double time_unit = std::sqrt(engine.L2 / g);  // section 3 [s]
   series.time_unit = time_unit;
-  const Verification& v = series.verification = verify_engine(engine, settings);
+  const Verification& v = series.verification = verification;
   std::vector<TracePoint>& trace = series.trace;
   std::vector<TracePoint> unreleased;
   simulate_shot(d, release_criterion(engine, settings), settings.integrator, &trace, v.t_release / time_unit / 200, &unreleased);
@@ -252,8 +252,9 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
           {"release_row", series.release_row}};
 }
 
-std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings, const nlohmann::ordered_json& report, UnitSystem units) {
-  const ShotSeries series = shot_series(engine, settings);
+std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings, const Verification& verification,
+                                       const nlohmann::ordered_json& report, UnitSystem units) {
+  const ShotSeries series = shot_series(engine, settings, verification);
   const double g = engine.material.g, H = pivot_height(engine);
   const double mg_kN = engine.m * g / 1000, Mg_kN = engine.M * g / 1000, energy_kJ = engine.M * g * engine.L2 / 1000;
   const ScaledDesign d = scaled_design(engine);

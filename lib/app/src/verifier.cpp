@@ -85,9 +85,11 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   out.json["engine"] = engine_json;
   out.json["assumptions"] = assumptions_json(engine, check.settings);
   if (!check.plot_dir.empty())
-    write_picture_folder(check.plot_dir, shot_pictures(engine, check.settings, out.json, check.units), picture_scripts(), check.inputs);
+    write_picture_folder(check.plot_dir, shot_pictures(engine, check.settings, v, out.json, check.units), picture_scripts(), check.inputs);
   if (!check.series_path.empty()) write_output_file(check.series_path, trace_csv(trace, engine), "series");
   out.outside_tolerance = capacity && !capacity->pass;
+  out.engine = engine;
+  out.verification = v;
   return out;
 }
 
@@ -106,6 +108,13 @@ std::int64_t shots_per_completion(const std::function<Completion()>& trial) {
     if (e.kind() != ErrorKind::numerical) throw;
     return 300;
   }
+}
+
+void refuse_when_no_sample_worked(const MonteCarloSummary& summary) {
+  if (!summary.values.empty()) return;
+  const SampleFailures& most = summary.failures.front();
+  throw Error(most.kind, "no sample worked; the most frequent reason (" + std::to_string(most.count) + " of " +
+                             std::to_string(summary.samples) + "), in its first sample: " + most.first);
 }
 
 std::string describe_uncertain(const UncertainInput& u) {

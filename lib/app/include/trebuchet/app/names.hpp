@@ -18,6 +18,10 @@ std::string release_name(Release release);
 /// The release criterion of a name; Error(usage) names `option`, the text and the choices.
 Release parse_release(std::string_view name, std::string_view option);
 
+/// Whether the range runs from the release point: "pivot" (the paper's) or "release" (Denny's);
+/// Error(usage) names `option`, the text and the choices.
+bool parse_range_from(std::string_view name, std::string_view option);
+
 /// "si" or "imperial"; Error(usage) names `option` and the choices.
 UnitSystem parse_unit_system(std::string_view name, std::string_view option);
 

@@ -42,7 +42,8 @@ struct ShotSeries {
   /// The projectile `after` seconds past the release (at the flight's end once it has landed).
   SitePoint stone_at(double after) const;
 };
-ShotSeries shot_series(const Engine& engine, const ShotSettings& settings);
+/// `verification` is the shot of `engine` under `settings` (verify_engine), which the caller has.
+ShotSeries shot_series(const Engine& engine, const ShotSettings& settings, const Verification& verification);
 
 /// The series as the viewer reads it: every value in SI units (s, m, N, J, N m), angles in
 /// degrees, positions on the site (x from the pivot toward the target, y above the base).
@@ -54,13 +55,13 @@ struct PictureFile {
   std::string text;
 };
 
-/// The picture set of a shot of `engine` under `settings`: it simulates the shot, sampled about
+/// The picture set of a shot of `engine` under `settings` (`verification`, its figures): it simulates the shot, sampled about
 /// 200 times up to the release, and phase II past the release for the release picture. The
 /// gnuplot scripts (*.gp) write engine.svg, paths.svg, forces.svg, energy.svg, release.svg and
 /// shot.gif in the folder they are run in. index.html is the browser page's viewer with the
 /// shot inside: `report` (the program's JSON of it) and its series, in `units`.
-std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings, const nlohmann::ordered_json& report,
-                                       UnitSystem units = UnitSystem::si);
+std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings, const Verification& verification,
+                                       const nlohmann::ordered_json& report, UnitSystem units = UnitSystem::si);
 
 /// The viewer's script and style (web/viewer.js, web/style.css), compiled in.
 std::string_view viewer_script();

@@ -56,6 +56,8 @@ struct DesignCheck {
 /// One design checked: its record as JSON, as a table and (with check.csv) as CSV cells, and whether a capacity
 /// it carries was met within the tolerance.
 struct DesignReport {
+  Engine engine;               ///< the engine shot (with check.fit, the fitted one)
+  Verification verification;   ///< its shot
   nlohmann::ordered_json json;
   std::string table;
   std::vector<std::string> csv;
@@ -101,6 +103,10 @@ void check_monte_carlo_work(std::int64_t samples, std::int64_t shots_per_sample,
 /// bench-completion take). Bad input at the first values is thrown: a range must hold only
 /// values that make an engine.
 std::int64_t shots_per_completion(const std::function<Completion()>& trial);
+
+/// With no sample left, a run fails as its most frequent failure did: bad input (a range that
+/// holds no engine) or a numerical failure, with that sample's message and numbers.
+void refuse_when_no_sample_worked(const MonteCarloSummary& summary);
 
 /// "--M uniform 2500..3500 kg", "--L4 normal 3.55±0.2 m".
 std::string describe_uncertain(const UncertainInput& input);
