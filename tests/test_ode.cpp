@@ -21,14 +21,19 @@ TEST_CASE("the interpolant between step ends is exact for septics", "[ode]") {
     }
     return sum;
   };
+  // A work of a loss after the angle and its speed (ode.hpp): a cubic, which the cubic
+  // Hermite interpolant of the work and its power reproduces.
+  auto work = [](double t) { return 0.3 - 0.2 * t + 1.7 * t * t - 0.9 * t * t * t; };
+  auto power = [](double t) { return -0.2 + 3.4 * t - 2.7 * t * t; };
   auto end = [&](double t) {
-    return StepEnd{t, {derivative(0, t), derivative(1, t), 0, 0, 0, 0}, {derivative(1, t), derivative(2, t), 0, 0, 0, 0}, {derivative(3, t), 0, 0}};
+    return StepEnd{t, {derivative(0, t), derivative(1, t), work(t)}, {derivative(1, t), derivative(2, t), power(t)}, {derivative(3, t), 0, 0}};
   };
   const StepEnd a = end(0.4), b = end(1.1);
   for (double t : {0.4, 0.5, 0.77, 1.0, 1.1}) {
-    const OdeVector y = hermite(a, b, t, 2);
+    const OdeVector y = hermite(a, b, t, 1, 3);
     CHECK(y[0] == Approx(derivative(0, t)).epsilon(1e-13));
     CHECK(y[1] == Approx(derivative(1, t)).epsilon(1e-13));
+    CHECK(y[2] == Approx(work(t)).epsilon(1e-14));
   }
 }
 

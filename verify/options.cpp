@@ -93,6 +93,19 @@ void engine_options(CLI::App* app, Options& o, bool spreads) {
   app->add_option("--plot", o.plot, "draw the shot into this folder: SVG pictures, an animated GIF and index.html (needs gnuplot)");
 }
 
+// The engine as built (EngineParts): all of them for a shot, those that do not depend on the
+// searched values for complete (its beam is uniform).
+void part_options(CLI::App* app, Options& o, bool spreads, bool whole_engine) {
+  for (const PartKey& part : part_keys()) {
+    const std::string key = part.key;
+    const bool beam_or_box = key.rfind("beam_", 0) == 0 || key.rfind("D_", 0) == 0 || key.rfind("box_", 0) == 0;
+    if (beam_or_box && !whole_engine) continue;
+    std::string flag = "--" + key;
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    value_option(app, o, flag, design_slot(part.member), part.dimension, part.help, spreads);
+  }
+}
+
 void target_level_option(CLI::App* app, Options& o, bool spreads) {
   value_option(app, o, "--target-level", option_slot(&Options::target_level), UnitDimension::length,
                "target height relative to the engine's base, e.g. -54m (default 0)", spreads);
@@ -182,6 +195,8 @@ void air_and_sampling_options(CLI::App* app, Options& o) {
   integer_option(app, "--seed", o.seed, std::uint64_t{0}, std::uint64_t{0}, "0 or more",
                  "seed of the Monte Carlo draws: the same seed, the same result (default 1)");
   app->add_flag("--air", o.air, "fly through air (quadratic drag on a sphere) instead of vacuum; with --quality range the release maximises the range in air");
+  app->add_flag("--drag-in-sling", o.drag_in_sling,
+                "with --air: the air acts before the release too, on the projectile in the trough and the sling and on the rope (--rope-diameter)");
   value_option(app, o, "--air-density", option_slot(&Options::air_density), UnitDimension::density,
                "density of the air (default 1.2kg/m3)", true, true);
   parsed_option(app, "--cd", [&o](const std::string& text) {
@@ -224,6 +239,7 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
   for (CLI::App* sub : {s.shot, s.fit}) {
     const bool shot = sub == s.shot;
     engine_options(sub, o, shot);
+    if (shot) part_options(sub, o, true, true);
     target_level_option(sub, o, shot);
     threads_option(sub, o, "threads for an array of designs (default: the cores); the output is the same on any number");
     release_options(sub, o);
@@ -250,6 +266,7 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
       {"--theta", design_slot(&DesignValues::theta_i_deg), UnitDimension::angle,
        "attested initial beam angle theta_i [deg] (default 30, or from H and L1)"}};
   for (const auto& [name, slot, dimension, help] : attested) value_option(c, o, name, slot, dimension, help, true);
+  part_options(c, o, true, false);
   target_level_option(c, o, true);
   threads_option(c, o, "threads for a Monte Carlo run (default: the cores)");
   c->add_option("--plot", o.plot, "with ranges or spreads: write the histogram of R and T into this folder (needs gnuplot)");
@@ -299,6 +316,8 @@ ShotSettings shot_settings(const Options& o) {
   const bool air_details = o.air_density || o.drag_coefficient || o.drag_of_reynolds || o.projectile_density || o.wind;
   if (air_details && !o.air)
     throw Error(ErrorKind::usage, "--air-density, --cd, --projectile and --wind describe the air; add --air to fly through it (vacuum is the default)");
+  if (o.drag_in_sling && !o.air) throw Error(ErrorKind::usage, "--drag-in-sling lets the air act before the release; add --air (vacuum is the default)");
+  settings.drag_in_sling = o.drag_in_sling;
   if (o.air) {
     Air air;
     air.density = o.air_density.value_or(air.density);
@@ -321,6 +340,13 @@ CompletionRequest completion_request(const Options& o) {
   a.theta_i_deg = d.theta_i_deg, a.F = d.F;
   request.material = o.material.over(Material{});
   request.settings = shot_settings(o);
+  EngineParts& p = request.parts;
+  p.counterweight_inertia = d.counterweight_inertia.value_or(0);
+  p.axle = {d.axle_friction.value_or(0), d.axle_radius.value_or(0)};
+  p.hinge = {d.hinge_friction.value_or(0), d.hinge_radius.value_or(0)};
+  p.trough_friction = d.trough_friction.value_or(0);
+  p.rope_diameter = d.rope_diameter.value_or(0);
+  p.rope_cd = d.rope_cd.value_or(p.rope_cd);
   return request;
 }
 

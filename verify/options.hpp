@@ -38,6 +38,7 @@ struct Options {
   bool air = false;
   std::optional<double> air_density, drag_coefficient, projectile_density, wind;  ///< [kg/m^3], -, [kg/m^3], [m/s]
   bool drag_of_reynolds = false;         ///< --cd Re
+  bool drag_in_sling = false;            ///< --drag-in-sling
   MaterialOverrides material;            ///< --beta2, --wood-density, --youngs-modulus, --rupture, --g
   UnitSystem units = UnitSystem::si;     ///< --units: how tables print values
   Format format = Format::table;

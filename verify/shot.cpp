@@ -33,6 +33,8 @@ DesignCheck design_check(const Options& o, bool fit) {
 bool has_engine_flags(const DesignValues& d) {
   for (const auto& value : {d.L1, d.L2, d.L3, d.F, d.L4, d.M, d.m, d.mb, d.theta_i_deg, d.psi_i_deg})
     if (value) return true;
+  for (const PartKey& part : part_keys())
+    if (d.*part.member) return true;
   return false;
 }
 

@@ -85,7 +85,12 @@ ShotSettings settings_of(const json& request) {
   if (request.contains("air")) {
     const json& given = request["air"];
     if (given.is_object()) {
-      require_keys(given, {"density", "drag_coefficient", "projectile_density", "wind"}, "air");
+      require_keys(given, {"density", "drag_coefficient", "projectile_density", "wind", "drag_in_sling"}, "air");
+      if (given.contains("drag_in_sling")) {
+        if (!given["drag_in_sling"].is_boolean())
+          throw Error(ErrorKind::usage, "air.drag_in_sling: " + brief_json(given["drag_in_sling"]) + " is neither true nor false");
+        settings.drag_in_sling = given["drag_in_sling"].get<bool>();
+      }
       Air air;
       air.density = read_value(given, "density", UnitDimension::density, "air").value_or(air.density);
       if (given.contains("drag_coefficient") && given["drag_coefficient"].is_string() &&
@@ -118,7 +123,11 @@ const std::vector<std::pair<std::string, UnitDimension>> attested_keys = {
     {"L4", UnitDimension::length}, {"M", UnitDimension::mass}, {"m", UnitDimension::mass}, {"mb", UnitDimension::mass},
     {"D", UnitDimension::length}, {"l", UnitDimension::dimensionless}, {"theta_i_deg", UnitDimension::angle}, {"F", UnitDimension::dimensionless},
     {"beta2", UnitDimension::dimensionless}, {"youngs_modulus", UnitDimension::pressure}, {"wood_density", UnitDimension::density},
-    {"g", UnitDimension::acceleration}};
+    {"g", UnitDimension::acceleration},
+    // the parts of an engine as built that complete takes (CompletionRequest::parts)
+    {"counterweight_inertia", UnitDimension::inertia}, {"axle_friction", UnitDimension::dimensionless}, {"axle_radius", UnitDimension::length},
+    {"hinge_friction", UnitDimension::dimensionless}, {"hinge_radius", UnitDimension::length}, {"trough_friction", UnitDimension::dimensionless},
+    {"rope_diameter", UnitDimension::length}, {"rope_cd", UnitDimension::dimensionless}};
 
 CompletionRequest completion_request_of(const json& attested, const ShotSettings& settings, const MaterialOverrides& overrides) {
   std::vector<std::string> known;
@@ -143,6 +152,13 @@ CompletionRequest completion_request_of(const json& attested, const ShotSettings
   material.modulus_of_rupture = overrides.modulus_of_rupture;
   request.material = material.over(Material{});
   request.settings = settings;
+  EngineParts& p = request.parts;
+  p.counterweight_inertia = value("counterweight_inertia").value_or(0);
+  p.axle = {value("axle_friction").value_or(0), value("axle_radius").value_or(0)};
+  p.hinge = {value("hinge_friction").value_or(0), value("hinge_radius").value_or(0)};
+  p.trough_friction = value("trough_friction").value_or(0);
+  p.rope_diameter = value("rope_diameter").value_or(0);
+  p.rope_cd = value("rope_cd").value_or(p.rope_cd);
   return request;
 }
 
@@ -162,6 +178,9 @@ std::optional<UnitDimension> dimension_of(const std::string& key, bool attested)
     if (name == key) return dimension;
   if (!attested && key == "L3") return UnitDimension::length;
   if (!attested && (key == "psi_i_deg" || key == "theta")) return UnitDimension::angle;
+  if (!attested)
+    for (const PartKey& part : part_keys())
+      if (key == part.key) return part.dimension;
   return std::nullopt;
 }
 

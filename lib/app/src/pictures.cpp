@@ -149,7 +149,7 @@ std::vector<std::string> picture_scripts() { return {"engine.gp", "paths.gp", "f
 
 ShotSeries shot_series(const Engine& engine, const ShotSettings& settings, const Verification& verification) {
   ShotSeries series;
-  const ScaledDesign d = scaled_design(engine);
+  const ScaledDesign d = shot_design(engine, settings);
   const double g = engine.material.g;
   const double time_unit = std::sqrt(engine.L2 / g);  // section 3 [s]
   series.time_unit = time_unit;

@@ -81,6 +81,48 @@ std::string design_table(const OptimalEngine& design, UnitSystem units) {
   return t;
 }
 
+namespace {
+
+// The parts of an engine as built, a line of the report; empty for the paper's ideal engine.
+std::string describe_parts(const Engine& engine, UnitSystem units) {
+  const EngineParts& p = engine.parts;
+  if (!p.any()) return "";
+  auto q = [&](double si, UnitDimension dimension) { return quantity_text(si, dimension, units, 4); };
+  std::vector<std::string> parts;
+  if (p.D_tip) {
+    parts.push_back("a tapered beam, D " + q(*p.D_hinge, UnitDimension::length) + " at the hinge to " + q(*p.D_tip, UnitDimension::length) + " at the tip");
+  } else if (p.beam_cm) {
+    parts.push_back("a beam with its centre of mass " + q(*p.beam_cm, UnitDimension::length) + " from the pivot and " +
+                    q(*p.beam_inertia, UnitDimension::inertia) + " about it");
+  }
+  if (p.counterweight_inertia > 0) parts.push_back("a counterweight of " + q(p.counterweight_inertia, UnitDimension::inertia) + " about its centre");
+  const auto pin = [&](const Pin& pin, const char* what) {
+    if (pin.friction > 0)
+      parts.push_back(std::string(what) + " friction " + format_significant(pin.friction, 3) + " on a radius of " + q(pin.radius, UnitDimension::length));
+  };
+  pin(p.axle, "axle");
+  pin(p.hinge, "hinge pin");
+  if (p.trough_friction > 0) parts.push_back("trough friction " + format_significant(p.trough_friction, 3));
+  if (p.rope_diameter > 0) parts.push_back("a rope of " + q(p.rope_diameter, UnitDimension::length) + " (Cd " + format_significant(p.rope_cd, 3) + ")");
+  return "  as built: " + join(parts, ", ") + "\n";
+}
+
+// Where Delta U went by the release (Verification::EnergyBudget), a line of the report.
+std::string energy_budget_text(const Verification& v, UnitSystem units) {
+  const Verification::EnergyBudget& e = v.energy;
+  auto share = [&](double joules) { return quantity_text(joules, UnitDimension::energy, units, 4) + " (" + format_significant(100 * joules / e.delta_U, 3) + " %)"; };
+  std::string text = "where Delta U = " + quantity_text(e.delta_U, UnitDimension::energy, units, 4) + " went by the release: the projectile " +
+                     share(e.projectile) + ", the beam and the counterweight " + share(e.engine);
+  const char* names[loss_count] = {"axle friction", "hinge friction", "trough friction", "air on the projectile", "air on the rope"};
+  for (int k = 0; k < loss_count; ++k)
+    if (e.losses[k] != 0) text += ", " + std::string(names[k]) + " " + share(e.losses[k]);
+  text += "\n";
+  if (e.flight_drag != 0) text += "in flight the air took " + quantity_text(e.flight_drag, UnitDimension::energy, units, 4) + " more\n";
+  return text;
+}
+
+}  // namespace
+
 std::string verification_table(const Engine& engine, const ShotSettings& settings, const Verification& v,
                                const std::optional<CapacityCheck>& check, UnitSystem units) {
   require_finite(v);
@@ -91,7 +133,7 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
   out << "engine simulated:\n" << engine_table(engine, units) << "  theta_i = " << sig(engine.theta_i_deg, 4)
       << " deg, arm fraction (L2 + L3)/H = " << sig(arm_fraction(engine), 4)
       << (engine.psi_i_deg != 0 ? ", counterweight propped at psi_i = " + sig(engine.psi_i_deg, 4) + " deg" : std::string()) << "\n"
-      << "assumptions: " << describe_assumptions(engine, settings) << "\n"
+      << describe_parts(engine, units) << "assumptions: " << describe_assumptions(engine, settings) << "\n"
       << "R = " << q(v.capacity.R, UnitDimension::length, 5) << "   T = " << q(v.capacity.T, UnitDimension::energy, 5) << "   "
       << (settings.range_from_release ? "back at the release height" : "at the target level")
       << (settings.air || settings.range_from_release ? "; the paper's range, in vacuum from the pivot: " + q(v.R_vacuum, UnitDimension::length, 5) : std::string()) << "\n"
@@ -107,10 +149,14 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
                                      "beam, bending at the pivot"};
     const double weight[load_count] = {mg, Mg, Mg, Mg * engine.L2};
     out << "largest loads up to the release, to size the parts:\n";
-    for (int k = 0; k < load_count; ++k)
+    const bool moment_known = scaled_design(engine).short_section().has_value();
+    for (int k = 0; k < (moment_known ? load_count : beam_moment_load); ++k)
       out << "  " << names[k] << " " << q(v.loads[k].value, k == beam_moment_load ? UnitDimension::moment : UnitDimension::force) << " = "
           << sig(v.loads[k].value / weight[k], 4) << (k == sling_tension_load ? " m·g" : k == beam_moment_load ? " M·g·L2" : " M·g")
           << " at t = " << sig(v.loads[k].t, 4) << " s\n";
+    if (!moment_known)
+      out << "  the beam's bending at the pivot needs its short section's mass: give the beam tapered (--D-hinge, --D-tip) instead of "
+             "its centre of mass and inertia\n";
     if (const auto& b = v.beam) {
       const double rupture = engine.material.modulus_of_rupture;
       out << "beam: D = " << q(b->D, UnitDimension::length, 3) << (engine.D > 0 ? "" : " (from mb and the wood, eq:BeamMass)")
@@ -125,7 +171,8 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
           << "\n";
     }
   }
-  out << "energy drift: " << sig(v.energy_drift, 2) << " of Delta U\n";
+  out << energy_budget_text(v, units);
+  out << "energy drift: " << sig(v.energy_drift, 2) << " of Delta U" << (engine.parts.any() || settings.drag_in_sling ? ", with the work of the losses" : "") << "\n";
   for (const std::string& w : v.warnings) out << "warning: " << w << "\n";
   for (const std::string& n : v.notes) out << "note: " << n << "\n";
   if (check) {

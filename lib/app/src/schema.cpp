@@ -63,6 +63,26 @@ std::optional<double> read_value(const nlohmann::json& object, const std::string
 }
 
 
+const std::vector<PartKey>& part_keys() {
+  static const std::vector<PartKey> keys = {
+      {&DesignValues::beam_cm, "beam_cm", UnitDimension::length, "the beam as built: its centre of mass from the pivot toward the tip (with --beam-inertia or --beam-gyration)"},
+      {&DesignValues::beam_inertia, "beam_inertia", UnitDimension::inertia, "the beam's moment of inertia about the pivot"},
+      {&DesignValues::beam_gyration, "beam_gyration", UnitDimension::length, "the beam's radius of gyration about the pivot, sqrt(I/mb), instead of --beam-inertia"},
+      {&DesignValues::D_hinge, "D_hinge", UnitDimension::length, "a tapered beam of the wood: its diameter at the hinge end (with --D-tip; gives mb)"},
+      {&DesignValues::D_tip, "D_tip", UnitDimension::length, "the tapered beam's diameter at the tip"},
+      {&DesignValues::counterweight_inertia, "counterweight_inertia", UnitDimension::inertia, "the counterweight's moment of inertia about its centre (default 0, a point)"},
+      {&DesignValues::box_width, "box_width", UnitDimension::length, "a box counterweight: its width (with --box-height), inertia M (w^2 + h^2)/12"},
+      {&DesignValues::box_height, "box_height", UnitDimension::length, "the box counterweight's height"},
+      {&DesignValues::axle_friction, "axle_friction", UnitDimension::dimensionless, "Coulomb friction coefficient of the axle at the pivot (with --axle-radius; default 0)"},
+      {&DesignValues::axle_radius, "axle_radius", UnitDimension::length, "the axle's radius"},
+      {&DesignValues::hinge_friction, "hinge_friction", UnitDimension::dimensionless, "friction coefficient of the counterweight's hinge pin (with --hinge-radius; default 0)"},
+      {&DesignValues::hinge_radius, "hinge_radius", UnitDimension::length, "the hinge pin's radius"},
+      {&DesignValues::trough_friction, "trough_friction", UnitDimension::dimensionless, "friction coefficient of the projectile sliding on the trough (default 0)"},
+      {&DesignValues::rope_diameter, "rope_diameter", UnitDimension::length, "the sling rope's diameter, for its drag with --drag-in-sling (default 0: none)"},
+      {&DesignValues::rope_cd, "rope_cd", UnitDimension::dimensionless, "drag coefficient of the rope across the flow (default 1.2)"}};
+  return keys;
+}
+
 std::vector<Field> engine_fields(const Engine& e) {
   const ScaledDesign s = scaled_design(e);
   return {{"theta_i_deg", e.theta_i_deg},
@@ -95,6 +115,15 @@ void write_engine(nlohmann::ordered_json& out, const Engine& engine) {
   require_finite(fields);
   for (const Field& field : fields) out[field.key] = field.value;
   if (engine.psi_i_deg != 0) out["psi_i_deg"] = engine.psi_i_deg;  // only a propped engine carries it
+  // The parts as built, as given, so that the engine reads back the same.
+  const EngineParts& p = engine.parts;
+  if (p.beam_cm) out["beam_cm"] = *p.beam_cm, out["beam_inertia"] = *p.beam_inertia;
+  if (p.D_tip) out["D_hinge"] = *p.D_hinge, out["D_tip"] = *p.D_tip;
+  if (p.counterweight_inertia > 0) out["counterweight_inertia"] = p.counterweight_inertia;
+  if (p.axle.friction > 0 || p.axle.radius > 0) out["axle_friction"] = p.axle.friction, out["axle_radius"] = p.axle.radius;
+  if (p.hinge.friction > 0 || p.hinge.radius > 0) out["hinge_friction"] = p.hinge.friction, out["hinge_radius"] = p.hinge.radius;
+  if (p.trough_friction > 0) out["trough_friction"] = p.trough_friction;
+  if (p.rope_diameter > 0) out["rope_diameter"] = p.rope_diameter, out["rope_cd"] = p.rope_cd;
 }
 
 DesignValues read_design_values(const nlohmann::json& object, const std::string& where) {
@@ -114,6 +143,7 @@ DesignValues read_design_values(const nlohmann::json& object, const std::string&
       {&DesignValues::g, {"g", UnitDimension::acceleration}},   {&DesignValues::R, {"R", UnitDimension::length}},
       {&DesignValues::T, {"T", UnitDimension::energy}}};
   for (const auto& [member, key] : keys) v.*member = read_value(object, key.first, key.second, where);
+  for (const PartKey& part : part_keys()) v.*part.member = read_value(object, part.key, part.dimension, where);
   // The short names the flags and CSV columns use are read too; a value given under both names is refused.
   for (const auto& [member, name, alias] : {std::tuple{&DesignValues::theta_i_deg, "theta_i_deg", "theta"}, {&DesignValues::psi_i_deg, "psi_i_deg", "psi_i"}}) {
     const std::optional<double> short_name = read_value(object, alias, UnitDimension::angle, where);
@@ -125,6 +155,48 @@ DesignValues read_design_values(const nlohmann::json& object, const std::string&
   return v;
 }
 
+namespace {
+
+// The parts of an engine as built from the values given (EngineParts); check_engine checks them.
+void engine_parts(const DesignValues& v, const std::string& where, EngineRecord& in) {
+  Engine& e = in.engine;
+  EngineParts& p = e.parts;
+  const auto name = [&](const char* key) { return engine_key_name(where, key); };
+  if (v.beam_inertia && v.beam_gyration)
+    throw Error(ErrorKind::usage, name("beam_inertia") + " and " + name("beam_gyration") + " both give the beam's inertia (I = mb k^2); give one");
+  if (v.D_tip || v.D_hinge) {
+    if (v.mb) throw Error(ErrorKind::usage, name("D_hinge") + " and " + name("D_tip") + " give the beam's mass from its wood; leave out " + name("mb") + " (or the taper)");
+    if (v.D) throw Error(ErrorKind::usage, name("D_hinge") + " and " + name("D_tip") + " give the beam's diameter at the pivot; leave out " + name("D"));
+  }
+  p.beam_cm = v.beam_cm;
+  p.beam_inertia = v.beam_inertia;
+  if (v.beam_gyration) {
+    if (!(*v.beam_gyration > 0))
+      throw Error(ErrorKind::bad_number, name("beam_gyration") + " = " + format_significant(*v.beam_gyration, 6) + ": a radius of gyration must be positive");
+    p.beam_inertia = e.mb * *v.beam_gyration * *v.beam_gyration;
+  }
+  p.D_hinge = v.D_hinge, p.D_tip = v.D_tip;
+  if (v.box_width || v.box_height) {
+    if (!v.box_width || !v.box_height) throw Error(ErrorKind::usage, "a box counterweight needs both " + name("box_width") + " and " + name("box_height"));
+    if (v.counterweight_inertia)
+      throw Error(ErrorKind::usage, name("counterweight_inertia") + " and the box " + name("box_width") + " both give the counterweight's inertia; give one");
+    for (const auto& [value, key] : {std::pair{*v.box_width, "box_width"}, {*v.box_height, "box_height"}}) {
+      if (!(value > 0)) throw Error(ErrorKind::bad_number, name(key) + " = " + format_significant(value, 6) + ": a side of the box must be positive");
+      check_ordinary(value, 1e-6, 1e6, key, "m", "side of the counterweight's box");
+    }
+    p.counterweight_inertia = e.M * (*v.box_width * *v.box_width + *v.box_height * *v.box_height) / 12;  // a uniform box about its centre
+  } else {
+    p.counterweight_inertia = v.counterweight_inertia.value_or(0);
+  }
+  p.axle = {v.axle_friction.value_or(0), v.axle_radius.value_or(0)};
+  p.hinge = {v.hinge_friction.value_or(0), v.hinge_radius.value_or(0)};
+  p.trough_friction = v.trough_friction.value_or(0);
+  p.rope_diameter = v.rope_diameter.value_or(0);
+  p.rope_cd = v.rope_cd.value_or(p.rope_cd);
+}
+
+}  // namespace
+
 EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   EngineRecord in;
   Engine& e = in.engine;
@@ -134,7 +206,7 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   e.M = required(v.M, "M", where, "the counterweight mass", "14.3t");
   e.m = required(v.m, "m", where, "the projectile mass", "100kg");
   // Without mb, a beam diameter gives it from the wood (eq:BeamMass), below.
-  if (v.mb || !v.D) e.mb = required(v.mb, "mb", where, "the beam mass", "660kg", where.empty() ? ", or the beam's diameter {{D}}, from which it follows" : ", or \"D\", the beam's diameter");
+  if (v.mb || (!v.D && !v.D_tip)) e.mb = required(v.mb, "mb", where, "the beam mass", "660kg", where.empty() ? ", or the beam's diameter {{D}}, from which it follows" : ", or \"D\", the beam's diameter");
   e.theta_i_deg = v.theta_i_deg.value_or(standard_theta_i_deg);
   e.psi_i_deg = v.psi_i_deg.value_or(0);
   // D = 0 is how the outputs write "not given" (they read back); below 0 it is a mistake.
@@ -166,7 +238,13 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   material.youngs_modulus = v.youngs_modulus.value_or(material.youngs_modulus);
   material.wood_density = v.wood_density.value_or(material.wood_density);
   material.g = v.g.value_or(material.g);
-  if (v.D && !v.mb) {  // eq:BeamMass: a round beam of the material's wood
+  engine_parts(v, where, in);
+  if (e.parts.D_tip && e.parts.D_hinge && *e.parts.D_tip > 0 && *e.parts.D_hinge > 0 && e.L1 > 0 && e.L2 > 0) {  // the tapered beam's mass and its diameter at the pivot
+    e.mb = wood_beam_mass(e);
+    e.D = tapered_beam(e.L1, e.L2, *e.parts.D_hinge, *e.parts.D_tip, material.wood_density).D_pivot;
+    in.mb_from_D = true;
+  }
+  if (v.D && !v.mb && !v.D_tip) {  // eq:BeamMass: a round beam of the material's wood
     if (!(e.D > 0)) throw Error(ErrorKind::bad_number, engine_key_name(where, "D") + " = 0 gives no beam; give the beam's diameter, or its mass " + engine_key_name(where, "mb"));
     if (!(e.D <= 1e6))
       throw Error(ErrorKind::bad_number, engine_key_name(where, "D") + " = " + format_significant(e.D, 6) +
@@ -202,8 +280,9 @@ EngineRecord read_engine(const nlohmann::json& object, const std::string& where)
 }
 
 DesignRows read_design_rows(std::istream& input, const std::string& source) {
-  const std::vector<std::string_view> engine_keys = {"L1", "L2", "L3", "F", "L4", "M", "m", "mb", "D", "theta_i_deg", "theta",
-                                                      "psi_i_deg", "psi_i", "beta2", "youngs_modulus", "wood_density", "g", "R", "T"};
+  std::vector<std::string_view> engine_keys = {"L1", "L2", "L3", "F", "L4", "M", "m", "mb", "D", "theta_i_deg", "theta",
+                                                "psi_i_deg", "psi_i", "beta2", "youngs_modulus", "wood_density", "g", "R", "T"};
+  for (const PartKey& part : part_keys()) engine_keys.push_back(part.key);
   const std::vector<std::string_view> dropped = {"X", "Y", "Lb", "H", "l", "l4", "L", "mu", "mu_b", "K", "DeltaU", "amplification",
                                                  "branch", "warnings", "air"};
   CsvReader reader(input, source);
@@ -236,7 +315,7 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
   std::string missing;
   for (const char* key : {"L1", "L2", "L4", "M", "m"})
     if (!has(key)) missing += (missing.empty() ? "" : ", ") + std::string(key);
-  if (!has("mb") && !has("D")) missing += (missing.empty() ? "" : ", ") + std::string("mb or D");
+  if (!has("mb") && !has("D") && !has("D_tip")) missing += (missing.empty() ? "" : ", ") + std::string("mb or D");
   if (!has("L3") && !has("F")) missing += (missing.empty() ? "" : ", ") + std::string("L3 or F");
   if (!missing.empty())
     throw Error(ErrorKind::usage, source + " is neither JSON nor CSV of designs: its header lacks " + missing +
@@ -275,6 +354,7 @@ nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings
                   {"projectile_density", air.projectile_density},
                   {"projectile_diameter", sphere_diameter(engine.m, air.projectile_density)},
                   {"wind", air.wind}};
+    if (settings.drag_in_sling) out["air"]["drag_in_sling"] = true;  // the air acts before the release too
   } else {
     out["air"] = "vacuum";
   }
@@ -377,6 +457,19 @@ std::vector<Field> verification_fields(const Verification& v) {
   return fields;
 }
 
+// Where Delta U went by the release (Verification::EnergyBudget), and the air in flight: the
+// last CSV columns, so that the columns before them keep their places; in JSON, "energy".
+std::vector<Field> energy_fields(const Verification& v) {
+  const Verification::EnergyBudget& e = v.energy;
+  std::vector<Field> fields = {{"energy_projectile", e.projectile, "J"}, {"energy_engine", e.engine, "J"},
+                               {"loss_axle", e.losses[axle_loss], "J"}, {"loss_hinge", e.losses[hinge_loss], "J"},
+                               {"loss_trough", e.losses[trough_loss], "J"}, {"loss_sling_drag", e.losses[projectile_drag_loss], "J"},
+                               {"loss_rope_drag", e.losses[rope_drag_loss], "J"}, {"loss_flight_drag", e.flight_drag, "J"}};
+  for (const Field& field : fields)
+    if (!std::isfinite(field.value)) throw Error(ErrorKind::numerical, std::string("the result ") + field.key + " is not finite; tighten {{rtol}}");
+  return fields;
+}
+
 // The check against a predicted capacity, as CSV fields (empty when there is none).
 std::vector<Field> check_fields(const std::optional<CapacityCheck>& check) {
   const CapacityCheck c = check.value_or(CapacityCheck{});
@@ -391,6 +484,7 @@ std::vector<std::string> verification_csv_header() {
   for (const auto& fields : {engine_fields(Engine{}), verification_fields(v), check_fields(std::nullopt)})
     for (const Field& field : fields) header.push_back(csv_column(field));
   header.insert(header.end(), {"pass", "air", "release", "n", "target_level_m", "warnings", "notes"});
+  for (const Field& field : energy_fields(v)) header.push_back(csv_column(field));
   return header;
 }
 
@@ -406,21 +500,30 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
   const std::string air = settings.air ? describe_air(*settings.air, engine.m) : "vacuum";
   row.insert(row.end(), {check ? (check->pass ? "yes" : "no") : "", air, assumed["release"].get<std::string>(),
                          csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), join(v.warnings, "; "), join(v.notes, "; ")});
+  for (const Field& field : energy_fields(v)) row.push_back(csv_number(field.value, digits));
   return row;
 }
 
 std::vector<std::string> verification_output_names() {
   std::vector<std::string> names = verification_csv_header();
   for (const Field& field : verification_fields(Verification{})) names.push_back(field.key);
-  names.insert(names.end(), {"predicted", "deviation", "tolerance", "engine", "assumptions", "error", "exit_code"});
+  names.insert(names.end(), {"predicted", "deviation", "tolerance", "engine", "assumptions", "error", "exit_code", "energy"});
   return names;
 }
 
-void require_finite(const Verification& v) { verification_fields(v); }
+void require_finite(const Verification& v) {
+  verification_fields(v);
+  energy_fields(v);
+}
 
 nlohmann::ordered_json verification_json(const Verification& v, const std::optional<CapacityCheck>& check) {
   nlohmann::ordered_json out;
   for (const Field& field : verification_fields(v)) out[field.key] = field.value;
+  const Verification::EnergyBudget& e = v.energy;
+  out["energy"] = {{"delta_U", e.delta_U}, {"projectile", e.projectile}, {"engine", e.engine},
+                   {"losses", {{"axle", e.losses[axle_loss]}, {"hinge", e.losses[hinge_loss]}, {"trough", e.losses[trough_loss]},
+                               {"sling_drag", e.losses[projectile_drag_loss]}, {"rope_drag", e.losses[rope_drag_loss]}}},
+                   {"flight_drag", e.flight_drag}};
   out["warnings"] = v.warnings;
   out["notes"] = v.notes;
   if (check) {

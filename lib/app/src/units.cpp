@@ -23,7 +23,7 @@ struct Unit {
 // 0.3048 m and the pound 0.45359237 kg exactly; the pound-force is a pound under standard
 // gravity, 9.80665 m/s^2. tests/test_units.cpp checks every factor against GNU units.
 constexpr double foot = 0.3048, pound = 0.45359237, pound_force = pound * 9.80665;
-constexpr std::array<Unit, 45> units = {{
+constexpr std::array<Unit, 48> units = {{
     {"m", UnitDimension::length, 1.0},
     {"cm", UnitDimension::length, 1e-2},
     {"mm", UnitDimension::length, 1e-3},
@@ -69,6 +69,9 @@ constexpr std::array<Unit, 45> units = {{
     {"kN", UnitDimension::force, 1e3},
     {"lbf", UnitDimension::force, pound_force},
     {"N*m", UnitDimension::moment, 1.0},
+    {"kg*m2", UnitDimension::inertia, 1.0},
+    {"kg*m^2", UnitDimension::inertia, 1.0},
+    {"lb*ft2", UnitDimension::inertia, pound * foot * foot},
 }};
 
 // How messages speak of each dimension.
@@ -92,6 +95,7 @@ DimensionText dimension_text(UnitDimension dimension) {
     case UnitDimension::speed: return {"a speed", "m/s", "5m/s"};
     case UnitDimension::force: return {"a force", "newtons", "30kN"};
     case UnitDimension::moment: return {"a moment", "N m", "300N*m"};
+    case UnitDimension::inertia: return {"a moment of inertia", "kg m^2", "45kg*m2"};
   }
   return {"?", "?", "?"};
 }
@@ -319,6 +323,7 @@ PrintUnit print_unit(double si, UnitDimension dimension, UnitSystem system) {
       case UnitDimension::speed: return {"ft/s", foot};
       case UnitDimension::density: return {"lb/ft3", pound / (foot * foot * foot)};
       case UnitDimension::acceleration: return {"ft/s2", foot};
+      case UnitDimension::inertia: return {"lb·ft2", pound * foot * foot};
       default: break;
     }
   }
@@ -333,6 +338,7 @@ PrintUnit print_unit(double si, UnitDimension dimension, UnitSystem system) {
     case UnitDimension::density: return {"kg/m3", 1};
     case UnitDimension::acceleration: return {"m/s2", 1};
     case UnitDimension::time: return {"s", 1};
+    case UnitDimension::inertia: return {"kg m2", 1};
     case UnitDimension::angle: return {"deg", 1};
     case UnitDimension::dimensionless: return {"", 1};
   }

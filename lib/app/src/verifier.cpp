@@ -60,11 +60,14 @@ Material MaterialOverrides::over(Material base) const {
 DesignReport check_design(const EngineRecord& record, const DesignCheck& check) {
   Engine engine = record.engine;
   engine.material = check.material.over(engine.material);
-  if (record.mb_from_D) engine.mb = beam_mass(engine.D, beam_length(engine), engine.material);  // in the wood of the run
+  if (record.mb_from_D) engine.mb = wood_beam_mass(engine);  // in the wood of the run
   DesignReport out;
   nlohmann::ordered_json simulated;
   std::string fitted_table;
   if (check.fit) {
+    if (engine.parts.any())
+      throw Error(ErrorKind::usage, "fit scales the paper's ideal engine to a capacity; an engine as built (friction, a beam or counterweight "
+                                    "as built, a rope) is checked by shot, or fitted to a measured range by calibrate");
     if (!record.capacity) throw Error(ErrorKind::usage, "fit needs a capacity; give {{R}} and {{T}}, or \"R\" and \"T\" in the input");
     const CapacityFit result = fit_capacity(scaled_design(engine), *record.capacity, engine.material, check.settings);
     engine = result.engine;

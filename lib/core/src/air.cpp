@@ -31,8 +31,7 @@ int flight_rhs(double, const double y[], double dydt[], void* params) {
   if (++p.evaluations > max_flight_evaluations) return GSL_EBADFUNC;
   const double ux = y[2] + p.drag.wind, uy = y[3];
   const double speed = std::sqrt(ux * ux + uy * uy);
-  const double cd = p.drag.drag_coefficient ? *p.drag.drag_coefficient : drag_coefficient_of(p.drag.reynolds_per_speed * speed);
-  const double k = cd * p.drag.per_length * speed;
+  const double k = p.drag.coefficient_at(speed) * p.drag.per_length * speed;
   dydt[0] = y[2];
   dydt[1] = y[3];
   dydt[2] = -k * ux;

@@ -39,6 +39,7 @@ struct Plan {
   std::optional<double> l;  // attested beam ratio, when neither section is known
   std::optional<double> mb, D;  // attested beam
   Material material;
+  EngineParts parts;
 };
 
 // The beam of an engine: mb attested; or from an attested D by eq:BeamMass; or D from the
@@ -61,6 +62,7 @@ Engine build(const Plan& p, const std::vector<double>& x) {
   Engine e;
   e.theta_i_deg = p.theta_i_deg;
   e.material = p.material;
+  e.parts = p.parts;
   if (p.L1 && p.L2) {
     e.L1 = *p.L1, e.L2 = *p.L2;
   } else if (p.L1) {
@@ -139,6 +141,10 @@ Completion complete_engine(const CompletionRequest& request) {
 
   Plan p;
   p.material = request.material;
+  p.parts = request.parts;
+  if (p.parts.beam_cm || p.parts.D_tip)
+    throw Error(ErrorKind::usage, "complete builds a uniform beam from the attested values; a beam as built ({{beam_cm}}, {{D_tip}}) is checked "
+                                  "by a shot of the whole engine instead");
   p.L4 = a.L4, p.M = a.M, p.m = a.m, p.mb = a.mb, p.D = a.D, p.Lb = a.Lb;
   // L1 from itself, or from Lb - L2, before H: with H it fixes theta_i, or H fixes L1.
   Known L1, L2;

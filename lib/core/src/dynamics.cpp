@@ -1,14 +1,21 @@
 #include "trebuchet/dynamics.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "trebuchet/angles.hpp"
+#include "trebuchet/error.hpp"
 
 namespace trebuchet {
 
 Dynamics::Dynamics(const ScaledDesign& design)
     : design_(design), theta_i_(radians(design.theta_i_deg)), cos_theta_i_(std::cos(theta_i_)), L_(design.L()),
-      inertia_(design.beam_inertia()), inv_l_(1 / design.l), inv_l4_(1 / design.l4), inv_L_(1 / L_) {}
+      inertia_(design.beam_inertia()), inv_l_(1 / design.l), inv_l4_(1 / design.l4), inv_L_(1 / L_), beam_cm_(design.beam_cm()),
+      dissipates_(design.parts.dissipates()) {
+  const double L_psi = L_ + design.parts.counterweight_inertia / L_;  // eq:EOM_I_2 with the counterweight's own inertia
+  psi_ratio_ = L_ / L_psi;
+  inv_L_psi_ = 1 / L_psi;
+}
 
 double vacuum_range(Vec2 position, Vec2 velocity, double drop, double g) {
   const double flight = (velocity.y + std::sqrt(velocity.y * velocity.y + 2 * g * drop)) / g;
@@ -30,16 +37,21 @@ double Dynamics::complete_trough_state(State& s) const {
   return cos_phi;
 }
 
+// The constants of the equations of one design, scaled.
+struct detail::Coefficients {
+  double l, l4, L, mu, mu_b, I, cos_theta_i;
+  double inv_l, inv_l4, inv_L;  // the equations divide by l, l4 and L at every evaluation
+  double cm;                    // the beam's centre of mass from the pivot, (l - 1)/2 for the uniform rod
+  double psi_ratio, inv_L_psi;  // L/L_psi and 1/L_psi, L_psi = L + I_c/L: 1 and 1/L for a point counterweight
+  const BuiltParts* parts;
+};
+
 namespace {
+
+using detail::Coefficients;
 
 struct Accel {
   double theta, psi, phi;
-};
-
-// The constants of the equations of one design, scaled.
-struct Coefficients {
-  double l, l4, L, mu, mu_b, I, cos_theta_i;
-  double inv_l, inv_l4, inv_L;  // the equations divide by l, l4 and L at every evaluation
 };
 
 // Sines and cosines of the three angles, one sincos each; differences by the angle-sum rules.
@@ -57,14 +69,27 @@ struct Trig {
   }
 };
 
-// Solves the linear system of the phase for the angular accelerations.
-Accel solve(const Coefficients& e, Phase phase, const State& s, const Trig& trig) {
+// Generalized forces (Q_theta, Q_psi, Q_phi), scaled (M g L2): the virtual work of friction and
+// drag per unit change of each angle.
+using Generalized = std::array<double, 3>;
+
+// Solves the linear system of the phase for the angular accelerations, with generalized forces
+// Q on the right-hand sides. The rows are Lagrange's equations for theta, for psi divided by L
+// and for phi divided by mu l l4 (appendix A), so Q enters them as Q_theta, Q_psi/L and
+// Q_phi/(mu l l4). A counterweight with its own moment of inertia I_c about its centre adds
+// I_c psi'' to Lagrange's equation for psi: its coefficient of psi'' becomes L_psi = L + I_c/L.
+// Inlined into each caller: it is most of an evaluation of the equations, the hot path of a
+// shot; without generalized forces (`forced` false) their terms are left out.
+template <bool forced = true>
+[[gnu::always_inline]] inline Accel solve(const Coefficients& e, Phase phase, const State& s, const Trig& trig, const Generalized& Q) {
   const double I = e.I;
   const double c_tp = trig.ct * trig.cp + trig.st * trig.sp, s_tp = trig.st * trig.cp - trig.ct * trig.sp;
-  // eq:EOM_I_2: -cos(th - psi) th'' + L psi'' = -sin(th - psi) th'^2 - sin psi
-  const double b2 = -s_tp * s.theta_dot * s.theta_dot - trig.sp;
+  // eq:EOM_I_2: -cos(th - psi) th'' + L_psi psi'' = -sin(th - psi) th'^2 - sin psi + Q_psi/L
+  double b2 = -s_tp * s.theta_dot * s.theta_dot - trig.sp;
+  if (forced) b2 += Q[1] * e.inv_L;
   if (phase == Phase::trough || phase == Phase::released) {
-    double a11 = I + 1, b1 = e.L * s_tp * s.psi_dot * s.psi_dot - (e.mu_b / 2 * (e.l - 1) - 1) * trig.st;
+    double a11 = I + 1, b1 = e.L * s_tp * s.psi_dot * s.psi_dot - (e.mu_b * e.cm - 1) * trig.st;
+    if (forced) b1 += Q[0];
     if (phase == Phase::trough) {  // eq:EOM_I_1 with f(th), df/dth of appendix A
       const double inv_cos_phi = 1 / trig.cf;
       const double f = (trig.ct * trig.cf + trig.st * trig.sf) * inv_cos_phi;  // cos(th - phi)/cos phi
@@ -72,69 +97,274 @@ Accel solve(const Coefficients& e, Phase phase, const State& s, const Trig& trig
       a11 += e.mu * e.l * e.l * f * f;
       b1 -= e.mu * e.l * e.l * f * df * s.theta_dot * s.theta_dot;
     }
-    // [a11, -L c_tp; -c_tp, L] (th'', psi'') = (b1, b2): the second row gives psi'' = (b2 + c_tp th'')/L.
-    const double theta_ddot = (b1 + c_tp * b2) / (a11 - c_tp * c_tp);
-    return {theta_ddot, (b2 + c_tp * theta_ddot) * e.inv_L, 0};
+    // [a11, -L c_tp; -c_tp, L_psi] (th'', psi'') = (b1, b2): the second row gives psi'' = (b2 + c_tp th'')/L_psi.
+    const double theta_ddot = (b1 + e.psi_ratio * c_tp * b2) / (a11 - e.psi_ratio * c_tp * c_tp);
+    return {theta_ddot, (b2 + c_tp * theta_ddot) * e.inv_L_psi, 0};
   }
   // Phase II: eq:EOM_II_1, eq:EOM_I_2, eq:EOM_II_3.
   const double c_tf = trig.ct * trig.cf + trig.st * trig.sf, s_tf = trig.st * trig.cf - trig.ct * trig.sf;
   const double ml2 = e.mu * e.l * e.l;
   // eq:EOM_II_1: a11 th'' - L cos(th - psi) psi'' - m l^2 l4 sin(th - phi) phi'' = b1
   const double a11 = ml2 + I + 1;
-  const double b1 = e.L * s_tp * s.psi_dot * s.psi_dot - ml2 * e.l4 * c_tf * s.phi_dot * s.phi_dot -
-                    (e.mu * e.l + e.mu_b / 2 * (e.l - 1) - 1) * trig.st;
-  // eq:EOM_II_3: -l sin(th - phi) th'' + l l4 phi'' = l cos(th - phi) th'^2 + cos phi
-  const double b3 = e.l * c_tf * s.theta_dot * s.theta_dot + trig.cf;
-  // psi'' = (b2 + c_tp th'')/L and l4 phi'' = (b3/l + s_tf th''): substituted into the first row.
-  const double theta_ddot = (b1 + c_tp * b2 + e.mu * e.l * s_tf * b3) / (a11 - c_tp * c_tp - ml2 * s_tf * s_tf);
-  return {theta_ddot, (b2 + c_tp * theta_ddot) * e.inv_L, (b3 * e.inv_l + s_tf * theta_ddot) * e.inv_l4};
+  double b1 = e.L * s_tp * s.psi_dot * s.psi_dot - ml2 * e.l4 * c_tf * s.phi_dot * s.phi_dot - (e.mu * e.l + e.mu_b * e.cm - 1) * trig.st;
+  if (forced) b1 += Q[0];
+  // eq:EOM_II_3: -l sin(th - phi) th'' + l l4 phi'' = l cos(th - phi) th'^2 + cos phi + Q_phi/(mu l l4)
+  double b3 = e.l * c_tf * s.theta_dot * s.theta_dot + trig.cf;
+  if (forced) b3 += Q[2] / (e.mu * e.l * e.l4);
+  // psi'' = (b2 + c_tp th'')/L_psi and l4 phi'' = (b3/l + s_tf th''): substituted into the first row.
+  const double theta_ddot = (b1 + e.psi_ratio * c_tp * b2 + e.mu * e.l * s_tf * b3) / (a11 - e.psi_ratio * c_tp * c_tp - ml2 * s_tf * s_tf);
+  return {theta_ddot, (b2 + c_tp * theta_ddot) * e.inv_L_psi, (b3 * e.inv_l + s_tf * theta_ddot) * e.inv_l4};
+}
+
+Vec2 operator*(Vec2 v, double k) { return {v.x * k, v.y * k}; }
+Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+
+// How the beam's tip and the projectile move with the angles: d(position)/d(angle), scaled.
+// In the trough the projectile's height is fixed and its x follows theta (eq:EOM_I_3):
+// dx/dth = l cos(th - phi)/cos phi.
+struct Jacobians {
+  Vec2 tip_theta, projectile_theta, projectile_phi;
+  Jacobians(const Coefficients& e, Phase phase, const Trig& t)
+      : tip_theta{e.l * t.ct, e.l * t.st}, projectile_theta(tip_theta), projectile_phi{e.l * e.l4 * t.sf, -e.l * e.l4 * t.cf} {
+    if (phase == Phase::trough) projectile_theta = {e.l * (t.ct * t.cf + t.st * t.sf) / t.cf, 0}, projectile_phi = {0, 0};
+  }
+};
+
+// The air before the release (BuiltParts::drag): on the projectile, quadratic drag as in its
+// flight (air.hpp); on the sling's rope, taken straight from the tip to the projectile, the drag
+// of a cylinder across the flow, per length rope_drag |u_n| u_n against u_n, the air's velocity
+// relative to the rope and normal to it. The rope's drag is summed by 5-point Gauss-Legendre
+// quadrature along it; its power is summed the same way, so the balance of energy is exact
+// whatever the quadrature's error in the force.
+struct AirForces {
+  Vec2 on_projectile, on_rope;  // the total on the rope
+  Generalized Q{};
+  double projectile_power = 0, rope_power = 0;  // the work the air does per time (< 0: it brakes)
+};
+
+AirForces air_forces(const Coefficients& e, Phase phase, const State& s, const Trig& t, const Jacobians& j) {
+  AirForces out;
+  const std::optional<Drag>& drag = e.parts->drag;
+  if (!drag || phase == Phase::released) return out;
+  const double phi_dot = phase == Phase::lifted ? s.phi_dot : 0;  // in the trough x follows theta alone
+  const Vec2 tip_velocity = j.tip_theta * s.theta_dot;
+  const Vec2 projectile_velocity = j.projectile_theta * s.theta_dot + j.projectile_phi * phi_dot;
+  const Vec2 wind{drag->wind, 0};  // the air moves toward -x: u = v + wind x^ (air.hpp)
+  const Vec2 u = projectile_velocity + wind;
+  const double speed = std::hypot(u.x, u.y);
+  out.on_projectile = u * (-e.mu * drag->coefficient_at(speed) * drag->per_length * speed);
+  out.Q[0] = dot(out.on_projectile, j.projectile_theta);
+  out.Q[2] = dot(out.on_projectile, j.projectile_phi);
+  out.projectile_power = dot(out.on_projectile, projectile_velocity);
+  if (!(e.parts->rope_drag > 0)) return out;
+  const Vec2 along{-t.cf, -t.sf};  // unit vector from the tip to the projectile
+  const double length = e.l * e.l4;
+  constexpr double node[5] = {0.046910077030668, 0.230765344947158, 0.5, 0.769234655052842, 0.953089922969332};  // on [0, 1]
+  constexpr double weight[5] = {0.118463442528095, 0.239314335249683, 0.284444444444444, 0.239314335249683, 0.118463442528095};
+  for (int k = 0; k < 5; ++k) {
+    const double a = node[k];
+    const Vec2 v = tip_velocity * (1 - a) + projectile_velocity * a;
+    const Vec2 rel = v + wind;
+    const Vec2 normal = rel + along * (-dot(rel, along));
+    const Vec2 force = normal * (-e.parts->rope_drag * std::hypot(normal.x, normal.y) * weight[k] * length);
+    out.on_rope = out.on_rope + force;
+    out.Q[0] += dot(force, j.tip_theta * (1 - a) + j.projectile_theta * a);
+    out.Q[2] += dot(force, j.projectile_phi * a);
+    out.rope_power += dot(force, v);
+  }
+  return out;
+}
+
+// The forces between the bodies at given accelerations (Newton's laws for each body).
+struct Internal {
+  Vec2 hinge_force;          // F_H, on the counterweight
+  Vec2 sling_on_projectile;  // the sling's pull on the projectile
+  Vec2 sling_on_tip;         // the sling's pull on the beam's tip
+  Vec2 pivot_reaction;       // F_R, on the beam
+  double normal_force = 0;   // trough on projectile (phase I)
+  double trough_friction = 0;  // along x on the projectile (phase I)
+  Vec2 projectile_acceleration;
+  double phi_ddot = 0;
+};
+
+double sign(double x) { return (x > 0) - (x < 0); }
+
+[[gnu::always_inline]] inline Internal internal_forces(const Coefficients& e, Phase phase, const State& s, const Trig& trig, const Accel& a, const AirForces& air) {
+  Internal out;
+  const double st = trig.st, ct = trig.ct, sp = trig.sp, cp = trig.cp, sf = trig.sf, cf = trig.cf;
+  const double td = s.theta_dot, pd = s.psi_dot, fd = s.phi_dot;
+  // Counterweight (mass 1): a = F_H + g, g = (0, -1).
+  const Vec2 cw_acc{-ct * a.theta + st * td * td + e.L * (cp * a.psi - sp * pd * pd),
+                    -st * a.theta - ct * td * td + e.L * (sp * a.psi + cp * pd * pd)};
+  out.hinge_force = {cw_acc.x, cw_acc.y + 1};
+  // Projectile; in phase I phi follows eq:EOM_I_3.
+  out.phi_ddot = a.phi;
+  if (phase == Phase::trough)  // second derivative of eq:EOM_I_3: l4 (cos phi phi'' - sin phi phi'^2) = cos th th'^2 + sin th th''
+    out.phi_ddot = (ct * td * td + st * a.theta + e.l4 * sf * fd * fd) / (e.l4 * cf);
+  out.projectile_acceleration = {e.l * (-st * td * td + ct * a.theta + e.l4 * (cf * fd * fd + sf * out.phi_ddot)),
+                                 e.l * (ct * td * td + st * a.theta + e.l4 * (sf * fd * fd - cf * out.phi_ddot))};
+  const Vec2& p_acc = out.projectile_acceleration;
+  if (phase == Phase::trough) {
+    // Along x: mu a_x = T cos phi + friction + drag; along y (a_y = 0; the drag is horizontal
+    // here): 0 = T sin phi + N - mu. Friction -mu_t sgn(v_x) N, so
+    // T (cos phi + mu_t sgn(v_x) sin phi) = mu a_x - drag_x + mu_t sgn(v_x) mu.
+    const double slide = e.parts->trough_friction * sign(s.theta_dot * (ct * cf + st * sf));  // v_x = l cos(th - phi)/cos phi th'
+    const double tension = (e.mu * p_acc.x - air.on_projectile.x + slide * e.mu) / (cf + slide * sf);
+    out.sling_on_projectile = {tension * cf, tension * sf};
+    out.normal_force = e.mu - tension * sf;
+    out.trough_friction = -slide * out.normal_force;
+  } else if (phase == Phase::lifted) {
+    out.sling_on_projectile = {e.mu * p_acc.x - air.on_projectile.x, e.mu * (p_acc.y + 1) - air.on_projectile.y};
+  }
+  // The rope, massless, passes on what pulls its ends and what the air puts on it.
+  out.sling_on_tip = {-out.sling_on_projectile.x + air.on_rope.x, -out.sling_on_projectile.y + air.on_rope.y};
+  // Beam (mass mu_b): mu_b a_CM = F_R - F_H (arm on beam) + sling on tip + mu_b g.
+  const Vec2 cm_acc{e.cm * (ct * a.theta - st * td * td), e.cm * (st * a.theta + ct * td * td)};
+  out.pivot_reaction = {e.mu_b * cm_acc.x + out.hinge_force.x - out.sling_on_tip.x,
+                        e.mu_b * (cm_acc.y + 1) + out.hinge_force.y - out.sling_on_tip.y};
+  return out;
+}
+
+// Coulomb friction at the pins and in the trough, given the forces they carry: the axle's torque
+// mu r |F_R| against th', the hinge pin's mu r |F_H| against the arm's turn relative to the beam,
+// psi' - th' (the same torque turned back on the beam), and the trough's force on the projectile.
+// With `loss`, the power each takes out of the bodies.
+Generalized friction_forces(const Coefficients& e, Phase phase, const State& s, const Internal& f, const Jacobians& j, Losses* loss) {
+  const BuiltParts& p = *e.parts;
+  const double axle = -p.axle_friction * std::hypot(f.pivot_reaction.x, f.pivot_reaction.y) * sign(s.theta_dot);
+  const double turn = s.psi_dot - s.theta_dot;
+  const double hinge = -p.hinge_friction * std::hypot(f.hinge_force.x, f.hinge_force.y) * sign(turn);
+  const double trough = phase == Phase::trough ? f.trough_friction * j.projectile_theta.x : 0;
+  if (loss) {
+    (*loss)[axle_loss] = -axle * s.theta_dot;
+    (*loss)[hinge_loss] = -hinge * turn;
+    (*loss)[trough_loss] = -trough * s.theta_dot;
+  }
+  return {axle - hinge + trough, hinge, 0};
+}
+
+// The friction's generalized forces depend on the forces the pins and the trough carry, and those
+// on the accelerations the friction changes: Q = friction(forces(solve(Q))). This is solved for
+// (Q_theta, Q_psi) by Newton's method, the Jacobian by forward differences (step 1e-7 of the
+// size of Q, plus 1e-7). The trough's friction is affine in the accelerations (the sign of the
+// sliding is the state's), so with it alone one step is exact; the pins' |F| is smooth, and
+// two or three steps bring the residual below 1e-14 (1 + |Q|), the size of round-off.
+// Where the friction is so strong that no such Q exists or it is not unique (near a sling
+// standing upright in the trough, with a large coefficient: Painleve's paradox), the iteration
+// fails and the shot says so (unsettled_friction).
+constexpr int max_newton_steps = 30;
+
+struct Evaluation {
+  Accel a;
+  AirForces air;
+  Internal forces;  // at a
+};
+
+bool evaluate(const Coefficients& e, Phase phase, const State& s, const Trig& trig, Evaluation& out, Losses* loss) {
+  const BuiltParts& p = *e.parts;
+  const bool friction = p.axle_friction > 0 || p.hinge_friction > 0 || (phase == Phase::trough && p.trough_friction > 0);
+  if (loss) *loss = Losses{};
+  if (!friction && !p.drag) {  // appendix A
+    out.a = solve<false>(e, phase, s, trig, Generalized{});
+    out.forces = internal_forces(e, phase, s, trig, out.a, out.air);
+    return true;
+  }
+  const Jacobians j(e, phase, trig);
+  out.air = air_forces(e, phase, s, trig, j);
+  Generalized Q = out.air.Q;
+  const auto residual = [&](double q_theta, double q_psi, Accel& a, Internal& forces) {
+    Generalized total = out.air.Q;
+    total[0] += q_theta, total[1] += q_psi;
+    a = solve(e, phase, s, trig, total);
+    forces = internal_forces(e, phase, s, trig, a, out.air);
+    const Generalized f = friction_forces(e, phase, s, forces, j, nullptr);
+    return std::array<double, 2>{f[0] - q_theta, f[1] - q_psi};
+  };
+  if (!friction) {
+    out.a = solve(e, phase, s, trig, Q);
+    out.forces = internal_forces(e, phase, s, trig, out.a, out.air);
+  } else {
+    double q0 = 0, q1 = 0;
+    bool settled = false;
+    for (int step = 0; step < max_newton_steps && !settled; ++step) {
+      const auto r = residual(q0, q1, out.a, out.forces);
+      const double size = 1 + std::max(std::abs(q0), std::abs(q1));
+      if (!(std::isfinite(r[0]) && std::isfinite(r[1]))) return false;
+      if (std::max(std::abs(r[0]), std::abs(r[1])) <= 1e-14 * size) {
+        settled = true;
+        break;
+      }
+      const double h = 1e-7 * size;
+      Accel scratch;
+      Internal scratch_forces;
+      const auto r_theta = residual(q0 + h, q1, scratch, scratch_forces), r_psi = residual(q0, q1 + h, scratch, scratch_forces);
+      const double j00 = (r_theta[0] - r[0]) / h, j10 = (r_theta[1] - r[1]) / h, j01 = (r_psi[0] - r[0]) / h, j11 = (r_psi[1] - r[1]) / h;
+      const double det = j00 * j11 - j01 * j10;
+      if (!(std::abs(det) > 1e-12)) return false;
+      q0 -= (j11 * r[0] - j01 * r[1]) / det;
+      q1 -= (-j10 * r[0] + j00 * r[1]) / det;
+    }
+    if (!settled) return false;
+  }
+  if (loss) {
+    if (friction) friction_forces(e, phase, s, out.forces, j, loss);
+    (*loss)[projectile_drag_loss] = -out.air.projectile_power;
+    (*loss)[rope_drag_loss] = -out.air.rope_power;
+  }
+  return true;
 }
 
 }  // namespace
 
-std::array<double, 3> Dynamics::accelerations(Phase phase, const State& state) const {
-  const Coefficients e{design_.l, design_.l4, L_, design_.mu, design_.mu_b, inertia_, cos_theta_i_, inv_l_, inv_l4_, inv_L_};
-  const Accel a = solve(e, phase, state, Trig(e, phase, state));
-  return {a.theta, a.psi, a.phi};
+detail::Coefficients Dynamics::coefficients() const {
+  return {design_.l, design_.l4, L_, design_.mu, design_.mu_b, inertia_, cos_theta_i_, inv_l_, inv_l4_, inv_L_,
+          beam_cm_, psi_ratio_, inv_L_psi_, &design_.parts};
+}
+
+bool Dynamics::accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power) const {
+  const Coefficients e = coefficients();
+  const Trig trig(e, phase, state);
+  if (!dissipates_ && !loss_power) {  // appendix A: one solve
+    const Accel a = solve<false>(e, phase, state, trig, Generalized{});
+    out = {a.theta, a.psi, a.phi};
+    return true;
+  }
+  // The forces that friction depends on need phi' in the trough (eq:EOM_I_3).
+  State full = state;
+  if (phase == Phase::trough) complete_trough_state(full);
+  Evaluation ev;
+  if (!evaluate(e, phase, full, trig, ev, loss_power)) return false;
+  out = {ev.a.theta, ev.a.psi, ev.a.phi};
+  return true;
 }
 
 Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
-  const Coefficients e{design_.l, design_.l4, L_, design_.mu, design_.mu_b, inertia_, cos_theta_i_, inv_l_, inv_l4_, inv_L_};
+  const Coefficients e = coefficients();
   const Trig trig(e, phase, s);
-  const Accel a = solve(e, phase, s, trig);
+  Evaluation ev;
   Snapshot out;
+  if (!dissipates_) {  // appendix A
+    ev.a = solve<false>(e, phase, s, trig, Generalized{});
+    ev.forces = internal_forces(e, phase, s, trig, ev.a, ev.air);
+  } else if (!evaluate(e, phase, s, trig, ev, &out.loss_power)) {
+    throw Error(ErrorKind::numerical, unsettled_friction);
+  }
+  const Accel& a = ev.a;
+  const Internal& f = ev.forces;
   out.theta_ddot = a.theta;
   out.psi_ddot = a.psi;
   out.phi_ddot = a.phi;
   const double st = trig.st, ct = trig.ct, sp = trig.sp, cp = trig.cp, sf = trig.sf, cf = trig.cf;
   const double td = s.theta_dot, pd = s.psi_dot, fd = s.phi_dot;
-
-  // Counterweight (mass 1): a = F_H + g, g = (0, -1).
-  const Vec2 cw_acc{-ct * a.theta + st * td * td + e.L * (cp * a.psi - sp * pd * pd),
-                    -st * a.theta - ct * td * td + e.L * (sp * a.psi + cp * pd * pd)};
-  out.hinge_force = {cw_acc.x, cw_acc.y + 1};
-
-  // Projectile: position, velocity, acceleration; in phase I phi follows eq:EOM_I_3.
+  out.hinge_force = f.hinge_force;
   out.projectile = {e.l * (st - e.l4 * cf), e.l * (-ct - e.l4 * sf)};
   out.projectile_velocity = {e.l * (ct * td + e.l4 * sf * fd), e.l * (st * td - e.l4 * cf * fd)};
-  double phi_ddot = a.phi;
-  if (phase == Phase::trough)  // second derivative of eq:EOM_I_3: l4 (cos phi phi'' - sin phi phi'^2) = cos th th'^2 + sin th th''
-    phi_ddot = (ct * td * td + st * a.theta + e.l4 * sf * fd * fd) / (e.l4 * cf);
-  const Vec2 p_acc{e.l * (-st * td * td + ct * a.theta + e.l4 * (cf * fd * fd + sf * phi_ddot)),
-                   e.l * (ct * td * td + st * a.theta + e.l4 * (sf * fd * fd - cf * phi_ddot))};
-  Vec2 sling_on_projectile{0, 0};
-  if (phase == Phase::trough) {
-    // Tension along the sling toward the tip, u = (cos phi, sin phi); the trough carries the rest.
-    const double tension = e.mu * p_acc.x / cf;
-    sling_on_projectile = {tension * cf, tension * sf};
-    out.normal_force = e.mu - tension * sf;  // vertical balance, a_y = 0
-  } else if (phase == Phase::lifted) {
-    sling_on_projectile = {e.mu * p_acc.x, e.mu * (p_acc.y + 1)};
-  }
-  out.sling_on_tip = {-sling_on_projectile.x, -sling_on_projectile.y};
+  out.normal_force = f.normal_force;
+  out.sling_on_tip = f.sling_on_tip;
   // The sling runs from the projectile to the tip along (cos phi, sin phi): its tension is the
   // pull on the projectile along it; a sling can pull but not push.
-  out.sling_tension = sling_on_projectile.x * cf + sling_on_projectile.y * sf;
+  out.sling_tension = f.sling_on_projectile.x * cf + f.sling_on_projectile.y * sf;
   // Positions of the hinge, the counterweight and the tip (dynamics.hpp), and heights above the
   // engine's base, which lies l cos(theta_i) below the pivot (H = L1 cos theta_i).
   out.hinge = {-st, ct};
@@ -145,25 +375,26 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   out.tip_height = out.tip.y - base;
   // The tip moves along (cos th, sin th) as theta grows; the sling pulls against that.
   out.sling_perpendicular = -(out.sling_on_tip.x * ct + out.sling_on_tip.y * st);
+  out.pivot_reaction = f.pivot_reaction;
 
-  // Beam (mass mu_b): mu_b a_CM = F_R - F_H (arm on beam) + sling on tip + mu_b g.
-  const double r = (e.l - 1) / 2;
-  const Vec2 cm_acc{r * (ct * a.theta - st * td * td), r * (st * a.theta + ct * td * td)};
-  out.pivot_reaction = {e.mu_b * cm_acc.x + out.hinge_force.x - out.sling_on_tip.x,
-                        e.mu_b * (cm_acc.y + 1) + out.hinge_force.y - out.sling_on_tip.y};
+  // The short section (pivot to hinge) turns about the pivot: I_s th'' = moment of the arm's pull
+  // at the hinge (-F_H) + its weight at its centre + the hinge pin's friction on the beam - the
+  // moment the long section takes. For the uniform rod, mass mu_b/(l + 1) per L2, centre 1/2
+  // toward the hinge, I_s a third of its mass. The axle's friction acts at the pivot itself: the
+  // moment is the one on the short section's side. tests/test_shot.cpp checks the long section's
+  // own balance against it. A beam given only as a whole has no known short section: 0.
+  if (const auto section = design_.short_section()) {
+    out.beam_moment = st * out.hinge_force.y + ct * out.hinge_force.x + section->mass * -section->cm * st - section->inertia * a.theta;
+    if (design_.parts.hinge_friction > 0)
+      out.beam_moment += design_.parts.hinge_friction * std::hypot(f.hinge_force.x, f.hinge_force.y) * sign(pd - td);
+  }
 
-  // The short section, a rod of mass mu_b/(l + 1) per L2 from the pivot to the hinge, turns
-  // about the pivot: I_short th'' = moment of the arm's pull at the hinge (-F_H) + its weight
-  // at its middle - the moment the long section takes. tests/test_shot.cpp checks the long
-  // section's own balance against it.
-  const double per_length = e.mu_b / (e.l + 1);
-  out.beam_moment = st * out.hinge_force.y + ct * out.hinge_force.x + per_length * st / 2 - per_length / 3 * a.theta;
-
-  // Energy of each body, potential from the pivot's level: beam rotation, counterweight,
-  // projectile (on the trough in phase I, absent in III).
+  // Energy of each body, potential from the pivot's level: beam rotation, counterweight (its
+  // centre's motion and its own turn), projectile (on the trough in phase I, absent in III).
   const double I = e.I;
-  out.energies.beam = 0.5 * I * td * td - e.mu_b * r * ct;
+  out.energies.beam = 0.5 * I * td * td - e.mu_b * e.cm * ct;
   out.energies.counterweight = 0.5 * (td * td + e.L * e.L * pd * pd - 2 * e.L * (ct * cp + st * sp) * td * pd) + out.counterweight.y;  // cos(th - psi)
+  if (design_.parts.counterweight_inertia > 0) out.energies.counterweight += 0.5 * design_.parts.counterweight_inertia * pd * pd;
   if (phase != Phase::released) {
     const Vec2& v = out.projectile_velocity;
     out.energies.projectile_kinetic = 0.5 * e.mu * (v.x * v.x + v.y * v.y);

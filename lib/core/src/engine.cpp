@@ -1,5 +1,6 @@
 #include "trebuchet/engine.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -8,9 +9,65 @@
 #include "trebuchet/angles.hpp"
 
 namespace trebuchet {
+bool EngineParts::any() const {
+  return beam_cm || beam_inertia || D_hinge || D_tip || counterweight_inertia > 0 || axle.friction > 0 || hinge.friction > 0 ||
+         trough_friction > 0 || rope_diameter > 0;
+}
+
+TaperedBeam tapered_beam(double L1, double L2, double D_hinge, double D_tip, double wood_density) {
+  // Along the beam x runs from -L2 (the hinge) to L1 (the tip); D(x) is linear, the mass per
+  // length rho pi D^2/4. A slice of length dx turns about the pivot with x^2 dm, and about its
+  // own diameter with dm D^2/16 (a thin disc). Three-point Gauss-Legendre quadrature on each
+  // section is exact: the integrands are polynomials of degree 4 in x.
+  auto diameter = [&](double x) { return D_hinge + (D_tip - D_hinge) * (x + L2) / (L1 + L2); };
+  auto section = [&](double a, double b) {
+    constexpr double node[3] = {-0.774596669241483377, 0, 0.774596669241483377};
+    constexpr double weight[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+    BuiltParts::Section out;
+    double first_moment = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double x = (a + b) / 2 + (b - a) / 2 * node[k], D = diameter(x);
+      const double dm = wood_density * M_PI / 4 * D * D * weight[k] * (b - a) / 2;
+      out.mass += dm;
+      first_moment += x * dm;
+      out.inertia += (x * x + D * D / 16) * dm;
+    }
+    out.cm = first_moment / out.mass;
+    return out;
+  };
+  TaperedBeam beam;
+  beam.short_section = section(-L2, 0);
+  const BuiltParts::Section long_section = section(0, L1);
+  beam.whole.mass = beam.short_section.mass + long_section.mass;
+  beam.whole.cm = (beam.short_section.mass * beam.short_section.cm + long_section.mass * long_section.cm) / beam.whole.mass;
+  beam.whole.inertia = beam.short_section.inertia + long_section.inertia;
+  beam.D_pivot = diameter(0);
+  return beam;
+}
+
+double wood_beam_mass(const Engine& e) {
+  if (e.parts.D_hinge && e.parts.D_tip) return tapered_beam(e.L1, e.L2, *e.parts.D_hinge, *e.parts.D_tip, e.material.wood_density).whole.mass;
+  return beam_mass(e.D, beam_length(e), e.material);
+}
+
 ScaledDesign scaled_design(const Engine& engine) {  // eq:Design
-  return {engine.L1 / engine.L2, engine.L4 / engine.L1, engine.mb / engine.M, engine.m / engine.M, engine.theta_i_deg,
-          arm_fraction(engine), engine.psi_i_deg};
+  ScaledDesign out{engine.L1 / engine.L2, engine.L4 / engine.L1, engine.mb / engine.M, engine.m / engine.M, engine.theta_i_deg,
+                   arm_fraction(engine), engine.psi_i_deg};
+  const EngineParts& p = engine.parts;
+  const double L2 = engine.L2, M = engine.M, inertia_unit = M * L2 * L2;  // section 3
+  BuiltParts& b = out.parts;
+  if (p.D_hinge && p.D_tip) {
+    const TaperedBeam beam = tapered_beam(engine.L1, L2, *p.D_hinge, *p.D_tip, engine.material.wood_density);
+    b.beam = BuiltParts::Beam{beam.whole.cm / L2, beam.whole.inertia / inertia_unit};
+    b.short_section = BuiltParts::Section{beam.short_section.mass / M, beam.short_section.cm / L2, beam.short_section.inertia / inertia_unit};
+  } else if (p.beam_cm && p.beam_inertia) {
+    b.beam = BuiltParts::Beam{*p.beam_cm / L2, *p.beam_inertia / inertia_unit};
+  }
+  b.counterweight_inertia = p.counterweight_inertia / inertia_unit;
+  b.axle_friction = p.axle.friction * p.axle.radius / L2;
+  b.hinge_friction = p.hinge.friction * p.hinge.radius / L2;
+  b.trough_friction = p.trough_friction;
+  return out;
 }
 
 Engine engine_of(const ScaledDesign& design, double L2, const Material& material) {
@@ -38,6 +95,76 @@ void proportion_of_beam(const Engine& e) {
     throw Error(ErrorKind::bad_number, "{{D}} = " + format_significant(e.D, 6) + " m and the beam's length L1 + L2 = " + format_significant(Lb, 6) +
                                            " m differ by more than a factor 10^3; give the beam's diameter in its own unit, e.g. {{D}} 25cm");
 }
+// The parts of an engine as built (EngineParts), each within what a real engine can have.
+void check_parts(const Engine& e) {
+  const EngineParts& p = e.parts;
+  const auto say = [](double value) { return format_significant(value, 6); };
+  const auto coefficient = [&](double mu, const char* key, const char* what) {
+    if (!(mu >= 0 && mu <= 2))
+      throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + say(mu) + ": the coefficient of friction of " + what +
+                                             " must lie between 0 and 2 (greased iron on iron is near 0.1, dry oak on iron near 0.5)");
+  };
+  coefficient(p.axle.friction, "axle_friction", "the axle at the pivot");
+  coefficient(p.hinge.friction, "hinge_friction", "the counterweight's hinge pin");
+  coefficient(p.trough_friction, "trough_friction", "the projectile on the trough");
+  const auto pin = [&](const Pin& pin, const char* friction_key, const char* radius_key, const char* what, double largest, const char* largest_text) {
+    if (!(pin.radius >= 0))
+      throw Error(ErrorKind::bad_number, "{{" + std::string(radius_key) + "}} = " + say(pin.radius) + ": the radius of " + what + " must be positive");
+    if (pin.friction > 0 && !(pin.radius > 0))
+      throw Error(ErrorKind::usage, "{{" + std::string(friction_key) + "}} needs the radius of " + what + " its friction acts at; give it, e.g. {{" +
+                                        radius_key + "}} 5cm");
+    if (pin.radius > 0) {
+      check_ordinary(pin.radius, 1e-6, 1e6, radius_key, "m", std::string("radius of ") + what);
+      if (!(pin.radius < largest))
+        throw Error(ErrorKind::bad_number, "{{" + std::string(radius_key) + "}} = " + say(pin.radius) + " m: the radius of " + what +
+                                               " must be smaller than " + largest_text + ", " + say(largest) + " m");
+    }
+  };
+  pin(p.axle, "axle_friction", "axle_radius", "the axle", std::min(e.L1, e.L2), "the shorter beam section");
+  pin(p.hinge, "hinge_friction", "hinge_radius", "the hinge pin", std::min(e.L2, e.L3), "the short beam section and the counterweight arm");
+  if (p.beam_cm.has_value() != p.beam_inertia.has_value())
+    throw Error(ErrorKind::usage, std::string(p.beam_cm ? "{{beam_cm}} needs the beam's moment of inertia about the pivot too: give {{beam_inertia}}"
+                                                        : "{{beam_inertia}} needs the beam's centre of mass too: give {{beam_cm}}") +
+                                      " (or describe a tapered beam by {{D_hinge}} and {{D_tip}})");
+  if (p.D_hinge.has_value() != p.D_tip.has_value())
+    throw Error(ErrorKind::usage, "a tapered beam needs both end diameters: give {{D_hinge}} and {{D_tip}}");
+  if (p.beam_cm && p.D_tip)
+    throw Error(ErrorKind::usage, "{{beam_cm}} and {{D_tip}} both describe the beam as built; give its centre of mass and inertia, or its taper");
+  if (p.beam_cm) {
+    if (!(e.mb > 0)) throw Error(ErrorKind::usage, "{{beam_cm}} describes a beam of mass {{mb}} = 0; give the beam's mass");
+    if (!(*p.beam_cm > -e.L2 && *p.beam_cm < e.L1))
+      throw Error(ErrorKind::bad_number, "{{beam_cm}} = " + say(*p.beam_cm) + " m: the beam's centre of mass must lie on it, between -L2 = " +
+                                             say(-e.L2) + " m (toward the hinge) and L1 = " + say(e.L1) + " m (toward the tip)");
+    // About the pivot I = I_cm + mb c^2 >= mb c^2; and no part of the beam reaches beyond its
+    // longer section (its thickness adds a few per cent at most).
+    const double least = e.mb * *p.beam_cm * *p.beam_cm, most = 1.1 * e.mb * std::max(e.L1 * e.L1, e.L2 * e.L2);
+    if (!(*p.beam_inertia >= least && *p.beam_inertia <= most))
+      throw Error(ErrorKind::bad_number, "{{beam_inertia}} = " + say(*p.beam_inertia) + " kg m^2: a beam of " + say(e.mb) +
+                                             " kg with its centre of mass " + say(*p.beam_cm) + " m from the pivot has one from mb c^2 = " + say(least) +
+                                             " to " + say(most) + " kg m^2 about the pivot (a uniform beam: mb (L1^2 - L1 L2 + L2^2)/3)");
+  }
+  if (p.D_tip) {
+    for (const auto& [value, key] : {std::pair{*p.D_hinge, "D_hinge"}, {*p.D_tip, "D_tip"}}) {
+      if (!(value > 0)) throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + say(value) + ": a diameter of the beam must be positive");
+      check_ordinary(value, 1e-6, 1e6, key, "m", "diameter at the beam's end");
+      if (!(value <= beam_length(e)))
+        throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + say(value) + " m is thicker than the beam is long, " +
+                                               say(beam_length(e)) + " m; give the diameter in its own unit, e.g. 30cm");
+    }
+  }
+  if (!(p.counterweight_inertia >= 0))
+    throw Error(ErrorKind::bad_number, "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + ": a moment of inertia must not be negative");
+  // Its radius of gyration sqrt(I/M) beyond twice the arm: a counterweight that could not swing under the beam.
+  if (!(p.counterweight_inertia <= e.M * 4 * e.L3 * e.L3))
+    throw Error(ErrorKind::bad_number, "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + " kg m^2 gives the counterweight a radius of gyration of " +
+                                           say(std::sqrt(p.counterweight_inertia / e.M)) + " m, more than twice its arm L3 = " + say(e.L3) +
+                                           " m; a box of width w and height h has M (w^2 + h^2)/12");
+  if (!(p.rope_diameter >= 0 && p.rope_diameter <= e.L4 / 2))
+    throw Error(ErrorKind::bad_number, "{{rope_diameter}} = " + say(p.rope_diameter) + " m: the sling's rope must have a diameter from 0 (no drag) to half its length, " +
+                                           say(e.L4 / 2) + " m; a rope is a few centimetres thick");
+  check_ordinary(p.rope_cd, 1e-3, 1e2, "rope_cd", "", "drag coefficient of the rope");
+}
+
 }  // namespace
 
 void check_engine(const Engine& e) {
@@ -87,6 +214,7 @@ void check_engine(const Engine& e) {
   proportion(e.L3, "L3", e.L2, "L2");
   proportion(e.m, "m", e.M, "M");
   if (e.mb > 0) proportion(e.mb, "mb", e.M, "M");
+  check_parts(e);
 }
 
 double beam_length(const Engine& engine) { return engine.L1 + engine.L2; }

@@ -12,7 +12,8 @@ namespace {
 
 using Context = PhaseIntegrator::Context;
 
-std::size_t dimension_of(Phase phase) { return phase == Phase::lifted ? 6 : 4; }
+std::size_t angles_of(Phase phase) { return phase == Phase::lifted ? 3 : 2; }
+std::size_t dimension_of(const Context& c) { return 2 * angles_of(c.phase) + (c.dynamics->dissipates() ? loss_count : 0); }
 
 // The full state of an integrated vector: in the trough phi and phi_dot from eq:EOM_I_3.
 State state_of(const Context& c, const double y[]) {
@@ -29,17 +30,28 @@ State state_of(const Context& c, const double y[]) {
 int equations(double, const double y[], double dydt[], void* params) {
   auto* c = static_cast<Context*>(params);
   State s;
-  if (c->phase != Phase::lifted) {  // (th, psi, th', psi'); the accelerations need no phi in the trough
-    // A trial state near the singularity fails, and GSL retries with a shorter step.
-    if (c->phase == Phase::trough && !(c->dynamics->trough_cos_phi(y[0]) > refuse_trough_cos_phi)) return GSL_FAILURE;
+  // A trial state near the singularity fails, and GSL retries with a shorter step.
+  if (c->phase == Phase::trough && !(c->dynamics->trough_cos_phi(y[0]) > refuse_trough_cos_phi)) return GSL_FAILURE;
+  const std::size_t angles = angles_of(c->phase);
+  if (angles == 2) {  // (th, psi, th', psi'); the accelerations need no phi in the trough
     s.theta = y[0], s.psi = y[1], s.theta_dot = y[2], s.psi_dot = y[3];
-    const auto a = c->dynamics->accelerations(c->phase, s);
-    dydt[0] = s.theta_dot, dydt[1] = s.psi_dot, dydt[2] = a[0], dydt[3] = a[1];
   } else {
     s.theta = y[0], s.psi = y[1], s.phi = y[2], s.theta_dot = y[3], s.psi_dot = y[4], s.phi_dot = y[5];
-    const auto a = c->dynamics->accelerations(c->phase, s);
+  }
+  std::array<double, 3> a;
+  Losses power;
+  const bool losses = c->dynamics->dissipates();
+  if (!c->dynamics->accelerations(c->phase, s, a, losses ? &power : nullptr)) {
+    c->friction_unsettled = true;
+    return GSL_FAILURE;
+  }
+  if (angles == 2) {
+    dydt[0] = s.theta_dot, dydt[1] = s.psi_dot, dydt[2] = a[0], dydt[3] = a[1];
+  } else {
     dydt[0] = s.theta_dot, dydt[1] = s.psi_dot, dydt[2] = s.phi_dot, dydt[3] = a[0], dydt[4] = a[1], dydt[5] = a[2];
   }
+  if (losses)
+    for (int k = 0; k < loss_count; ++k) dydt[2 * angles + k] = power[k];
   return GSL_SUCCESS;
 }
 
@@ -47,8 +59,8 @@ int equations(double, const double y[], double dydt[], void* params) {
 // autonomous, so df/dt = 0). Step sqrt(machine epsilon) relative: about 8 good digits, which
 // is all a Newton iteration needs.
 int jacobian(double t, const double y[], double* dfdy, double dfdt[], void* params) {
-  const std::size_t n = dimension_of(static_cast<Context*>(params)->phase);
-  std::array<double, 6> f0{}, f1{}, shifted{};
+  const std::size_t n = dimension_of(*static_cast<Context*>(params));
+  OdeVector f0{}, f1{}, shifted{};
   if (equations(t, y, f0.data(), params) != GSL_SUCCESS) return GSL_FAILURE;
   for (std::size_t j = 0; j < n; ++j) {
     std::copy(y, y + n, shifted.begin());
@@ -131,7 +143,7 @@ const gsl_odeiv2_step_type* stepper_type(Stepper stepper) {
 
 }  // namespace
 
-OdeVector hermite(const StepEnd& a, const StepEnd& b, double time, std::size_t n) {
+OdeVector hermite(const StepEnd& a, const StepEnd& b, double time, std::size_t angles, std::size_t dimension) {
   const double h = b.t - a.t, s = (time - a.t) / h;
   // The basis on [0, 1] for q, q', q'', q''' at 0 (p0..p3) and at 1 (r0..r3), and its derivative.
   const double s2 = s * s, s3 = s2 * s, s4 = s3 * s;
@@ -149,7 +161,6 @@ OdeVector hermite(const StepEnd& a, const StepEnd& b, double time, std::size_t n
   const double dr1 = s3 * (-60 + s * (195 + s * (-204 + 70 * s)));
   const double dr2 = s3 * (10 + s * (-35 + s * (39 - 14 * s)));
   const double dr3 = s3 * (-2.0 / 3 + s * (2.5 + s * (-3 + 7 * s / 6)));
-  const std::size_t angles = n / 2;
   const double h2 = h * h, h3 = h2 * h;
   OdeVector y{};
   for (std::size_t i = 0; i < angles; ++i) {
@@ -158,12 +169,16 @@ OdeVector hermite(const StepEnd& a, const StepEnd& b, double time, std::size_t n
     y[i] = p0 * q0 + r0 * q1 + h * (p1 * v0 + r1 * v1) + h2 * (p2 * acc0 + r2 * acc1) + h3 * (p3 * j0 + r3 * j1);
     y[angles + i] = (dp0 * q0 + dr0 * q1) / h + dp1 * v0 + dr1 * v1 + h * (dp2 * acc0 + dr2 * acc1) + h2 * (dp3 * j0 + dr3 * j1);
   }
+  if (dimension > 2 * angles) {
+    const double c00 = (1 + 2 * s) * (1 - s) * (1 - s), c10 = s * (1 - s) * (1 - s), c01 = s2 * (3 - 2 * s), c11 = s2 * (s - 1);
+    for (std::size_t i = 2 * angles; i < dimension; ++i) y[i] = c00 * a.y[i] + c01 * b.y[i] + h * (c10 * a.dy[i] + c11 * b.dy[i]);
+  }
   return y;
 }
 
 PhaseIntegrator::PhaseIntegrator(const Dynamics& dynamics, Phase phase, const IntegratorSettings& settings)
     : context_{&dynamics, phase},
-      system_{equations, jacobian, dimension_of(phase), &context_},
+      system_{equations, jacobian, dimension_of(context_), &context_},
       stepping_(make(settings), gsl_odeiv2_driver_free),
       evaluating_(make(settings), gsl_odeiv2_driver_free) {}
 
@@ -212,10 +227,11 @@ OdeVector PhaseIntegrator::at(double t0, const OdeVector& y0, double t1) {
 // interpolant multiplies the jerk by h^3/100 or less.
 StepEnd PhaseIntegrator::step_end(double t, const OdeVector& y, const Snapshot& snapshot) {
   constexpr double delta = 1e-8;
-  const std::size_t angles = dimension() / 2;
+  const std::size_t angles = this->angles();
   const std::array<double, 3> acceleration{snapshot.theta_ddot, snapshot.psi_ddot, snapshot.phi_ddot};
   StepEnd end{t, y, {}, {}};
   for (std::size_t i = 0; i < angles; ++i) end.dy[i] = y[angles + i], end.dy[angles + i] = acceleration[i];
+  for (std::size_t i = 2 * angles; i < dimension(); ++i) end.dy[i] = snapshot.loss_power[i - 2 * angles];
   OdeVector ahead = y;
   for (std::size_t i = 0; i < dimension(); ++i) ahead[i] += delta * end.dy[i];
   const OdeVector rate_ahead = derivative(ahead);
@@ -224,6 +240,13 @@ StepEnd PhaseIntegrator::step_end(double t, const OdeVector& y, const Snapshot& 
 }
 
 State PhaseIntegrator::state(const OdeVector& y) const { return state_of(context_, y.data()); }
+
+Losses PhaseIntegrator::work(const OdeVector& y) const {
+  Losses out{};
+  if (dimension() > 2 * angles())
+    for (int k = 0; k < loss_count; ++k) out[k] = y[2 * angles() + k];
+  return out;
+}
 
 OdeVector PhaseIntegrator::derivative(const OdeVector& y) {
   OdeVector dy{};

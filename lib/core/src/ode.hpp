@@ -13,9 +13,10 @@
 
 namespace trebuchet {
 
-// Phase I integrates (th, psi, th', psi'); phase II (th, psi, phi, th', psi', phi').
-// Fixed size: no allocation per use.
-using OdeVector = std::array<double, 6>;
+// Phase I integrates (th, psi, th', psi'); phase II (th, psi, phi, th', psi', phi'); phase III
+// as phase I. An engine that dissipates (BuiltParts::dissipates) appends the work of each loss
+// (LossIndex), whose rates are their powers. Fixed size: no allocation per use.
+using OdeVector = std::array<double, 6 + loss_count>;
 
 // A step end: time, state y = (angles q, angular speeds q'), y' = (q', q'') and the jerk q'''.
 struct StepEnd {
@@ -26,9 +27,10 @@ struct StepEnd {
 
 // Between two step ends, each angle follows the septic Hermite interpolant that matches q, q',
 // q'' and q''' at both ends, and each angular speed is that interpolant's derivative. Errors are
-// O(h^8) in q and O(h^7) in q', the order of the rk8pd steps themselves. `n` is the dimension of
-// the phase (4 or 6).
-OdeVector hermite(const StepEnd& a, const StepEnd& b, double time, std::size_t n);
+// O(h^8) in q and O(h^7) in q', the order of the rk8pd steps themselves. The work of the losses
+// after them (up to `dimension`) follows the cubic one of the work and its power: it serves
+// pictures, and what is reported is integrated anew (PhaseRecord::y_exact_at).
+OdeVector hermite(const StepEnd& a, const StepEnd& b, double time, std::size_t angles, std::size_t dimension);
 
 // Phase I is singular where the sling stands vertical (cos phi = 0 in eq:EOM_I_1). Trial
 // states with cos phi below this are refused, so GSL shortens the step rather than evaluate
@@ -48,6 +50,11 @@ class PhaseIntegrator {
   OdeVector at(double t0, const OdeVector& y0, double t1);
 
   std::size_t dimension() const { return system_.dimension; }
+  std::size_t angles() const { return context_.phase == Phase::lifted ? 3 : 2; }
+  // The work of each loss so far, in an integrated vector (0 for an engine without losses).
+  Losses work(const OdeVector& y) const;
+  // Whether an evaluation failed because friction left the accelerations unsettled.
+  bool friction_unsettled() const { return context_.friction_unsettled; }
   Phase phase() const { return context_.phase; }
   const Dynamics& dynamics() const { return *context_.dynamics; }
 
@@ -63,6 +70,7 @@ class PhaseIntegrator {
   struct Context {
     const Dynamics* dynamics;
     Phase phase;
+    bool friction_unsettled = false;
   };
 
  private:

@@ -77,7 +77,7 @@ class PhaseRecord {
   OdeVector y_at(double time) const {
     const std::size_t base = base_of(time);
     if (time <= samples_[base].t || base + 1 == samples_.size()) return y_exact_at(time);
-    return hermite(samples_[base], samples_[base + 1], time, integrator_.dimension());
+    return hermite(samples_[base], samples_[base + 1], time, integrator_.angles(), integrator_.dimension());
   }
 
   // The state at `time`, integrated anew from the last sample at or before it.
@@ -270,7 +270,7 @@ void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, c
   if (!trace) return;
   auto add = [&](double t, const OdeVector& y) {
     const State s = integrator.state(y);
-    trace->push_back({integrator.phase(), t, s, integrator.dynamics().snapshot(integrator.phase(), s)});
+    trace->push_back({integrator.phase(), t, s, integrator.dynamics().snapshot(integrator.phase(), s), integrator.work(y)});
   };
   if (!(dt > 0)) {
     for (const auto& sample : record.samples())
@@ -285,10 +285,11 @@ void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, c
 // Phase III for the series: beam and counterweight without the projectile (mu = 0), from the
 // release for as long again as the shot took, so that the ringing of appendix B shows; at the
 // step ends, or every dt > 0.
-void trace_released(const Dynamics& dynamics, const IntegratorSettings& settings, const State& release, double t_release,
-                    double dt, std::vector<TracePoint>& trace) {
+void trace_released(const Dynamics& dynamics, const IntegratorSettings& settings, const State& release, const Losses& work,
+                    double t_release, double dt, std::vector<TracePoint>& trace) {
   PhaseIntegrator released(dynamics, Phase::released, settings);
-  OdeVector y = {release.theta, release.psi, release.theta_dot, release.psi_dot, 0, 0};
+  OdeVector y = {release.theta, release.psi, release.theta_dot, release.psi_dot};
+  for (std::size_t k = 0; k + 4 < released.dimension(); ++k) y[4 + k] = work[k];
   double t = t_release, h = 1e-3;
   double k = std::floor(t_release / dt) + 1;  // the next multiple of dt, when dt > 0
   for (long steps = 0; t < 2 * t_release && steps < settings.max_steps; ++steps) {
@@ -297,10 +298,10 @@ void trace_released(const Dynamics& dynamics, const IntegratorSettings& settings
       y = released.at(t, y, next);
       t = next;
     } else if (!released.step(t, y.data(), 2 * t_release, h)) {
-      fail("integrator failure in phase III; tighten {{rtol}}");
+      fail(released.friction_unsettled() ? unsettled_friction : "integrator failure in phase III; tighten {{rtol}}");
     }
     const State s = released.state(y);
-    trace.push_back({Phase::released, t, s, dynamics.snapshot(Phase::released, s)});
+    trace.push_back({Phase::released, t, s, dynamics.snapshot(Phase::released, s), released.work(y)});
   }
 }
 
@@ -359,13 +360,18 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
     fail("no room for the counterweight arm: L3/L2 = F l cos(theta_i) - 1 = " + format_significant(e.L(), 4) +
          " <= 0 (eq:Design); raise F or l, or lower theta_i");
   const Dynamics dynamics(e);
-  if (!(1 - e.mu_b * (e.l - 1) / 2 > 0))
-    fail("the beam cannot turn: mu_b (l - 1)/2 = " + format_significant(e.mu_b * (e.l - 1) / 2, 4) +
-         " >= 1, its long arm outweighs the counterweight (eq:DU); lighten the beam or shorten L1");
+  if (!(1 - e.mu_b * e.beam_cm() > 0))
+    fail("the beam cannot turn: " + std::string(e.parts.beam ? "mu_b c (c its centre of mass from the pivot, in L2) = " : "mu_b (l - 1)/2 = ") +
+         format_significant(e.mu_b * e.beam_cm(), 4) + " >= 1, its long arm outweighs the counterweight (eq:DU); lighten the beam or shorten L1");
   ShotResult result;
   const double energy_scale = e.energy_drop();
   double energy0 = 0;
-  auto track_energy = [&](const Snapshot& s) { result.energy_drift = std::max(result.energy_drift, std::abs(s.energy - energy0) / energy_scale); };
+  // The bodies' energy and the work of the losses balance (with none, the energy is conserved).
+  auto track_energy = [&](const Snapshot& s, const Losses& work) {
+    double lost = 0;
+    for (double w : work) lost += w;
+    result.energy_drift = std::max(result.energy_drift, std::abs(s.energy + lost - energy0) / energy_scale);
+  };
   auto count_step = [&](const char* phase) {
     if (++result.steps > settings.max_steps)
       fail("step budget of " + std::to_string(settings.max_steps) + " steps exceeded in " + phase +
@@ -388,7 +394,8 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   energy0 = snap.energy;
   phase1.add(trough.step_end(t, y, snap), snap);
   while (true) {
-    if (!trough.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase I; tighten {{rtol}} or choose another {{stepper}}");
+    if (!trough.step(t, y.data(), settings.max_time, h))
+      fail(trough.friction_unsettled() ? unsettled_friction : "integrator failure in phase I; tighten {{rtol}} or choose another {{stepper}}");
     count_step("phase I");
     if (std::cos(trough.state(y).phi) < abandon_trough_cos_phi)
       fail("the sling stands vertical in the trough (phi -> 90 deg) before lift-off; lengthen the sling L4 or lighten the projectile m");
@@ -398,17 +405,19 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
       // state there integrated anew from the step start.
       const StepEnd& before = phase1.samples().back();
       const StepEnd after = trough.step_end(t, y, snap);
-      auto normal_at = [&](double time) { return dynamics.snapshot(Phase::trough, trough.state(hermite(before, after, time, 4))).normal_force; };
+      auto normal_at = [&](double time) {
+        return dynamics.snapshot(Phase::trough, trough.state(hermite(before, after, time, trough.angles(), trough.dimension()))).normal_force;
+      };
       result.t_liftoff = find_root(normal_at, before.t, t, 1e-13, 0);
       y = trough.at(before.t, before.y, result.t_liftoff);
       t = result.t_liftoff;
       snap = dynamics.snapshot(Phase::trough, trough.state(y));
       phase1.add(trough.step_end(t, y, snap), snap);
-      track_energy(snap);
+      track_energy(snap, trough.work(y));
       break;
     }
     phase1.add(trough.step_end(t, y, snap), snap);
-    track_energy(snap);
+    track_energy(snap, trough.work(y));
     if (y[0] >= M_PI || t >= settings.max_time)
       fail("the projectile never lifts off: the trough still carries it when the beam is upright; "
            "change the sling length L4 or the masses");
@@ -419,7 +428,9 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   const State lift = trough.state(y);
   PhaseIntegrator lifted(dynamics, Phase::lifted, settings);
   PhaseRecord phase2(lifted, phase1.samples().back().extremes, onsets);
+  const Losses work_at_liftoff = trough.work(y);
   y = {lift.theta, lift.psi, lift.phi, lift.theta_dot, lift.psi_dot, lift.phi_dot};
+  for (std::size_t k = 0; k + 6 < lifted.dimension(); ++k) y[6 + k] = work_at_liftoff[k];
   const Snapshot lift_snapshot = dynamics.snapshot(Phase::lifted, lift);
   phase2.add(lifted.step_end(t, y, lift_snapshot), lift_snapshot);
   auto point_from = [&](double time, const OdeVector& state) {
@@ -432,11 +443,12 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   double best_quality = sampled.front();
   h = 1e-3;
   while (true) {
-    if (!lifted.step(t, y.data(), settings.max_time, h)) fail("integrator failure in phase II; tighten {{rtol}} or choose another {{stepper}}");
+    if (!lifted.step(t, y.data(), settings.max_time, h))
+      fail(lifted.friction_unsettled() ? unsettled_friction : "integrator failure in phase II; tighten {{rtol}} or choose another {{stepper}}");
     count_step("phase II");
     const State s = lifted.state(y);
     snap = dynamics.snapshot(Phase::lifted, s);
-    track_energy(snap);
+    track_energy(snap, lifted.work(y));
     const double quality_here = release_point(e, criterion, t, s, snap, phase2.samples().back().extremes).objective;
     phase2.add(lifted.step_end(t, y, snap), snap);
     sampled.push_back(quality_here);
@@ -487,7 +499,9 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   if (!(found.value > 0)) fail(no_forward_release);
   const double t_release = found.t;
   result.release_at_growth_of = found.at_onset;
-  result.release = point_from(t_release, phase2.y_exact_at(t_release));
+  const OdeVector y_release = phase2.y_exact_at(t_release);
+  result.release = point_from(t_release, y_release);
+  result.work = lifted.work(y_release);
   // Only what happens before the release invalidates the shot.
   auto before_release = [&](const std::optional<double>& t) { return t && *t <= t_release ? t : std::nullopt; };
   result.slack_sling = before_release(onsets[0]);
@@ -509,8 +523,8 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   if (trace) {
     record_trace(trace, lifted, phase2, result.t_liftoff, t_release, trace_dt);
     if (!(trace_dt > 0))  // the continuous record ends on the release already
-      trace->push_back({Phase::lifted, t_release, result.release.state, dynamics.snapshot(Phase::lifted, result.release.state)});
-    trace_released(dynamics, settings, result.release.state, t_release, trace_dt, *trace);
+      trace->push_back({Phase::lifted, t_release, result.release.state, dynamics.snapshot(Phase::lifted, result.release.state), result.work});
+    trace_released(dynamics, settings, result.release.state, result.work, t_release, trace_dt, *trace);
   }
   if (unreleased) {  // phase II past the release, as far as the search looked
     std::vector<TracePoint> all;

@@ -64,6 +64,7 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
     }
     out.capacity.R = range_from_release ? range + behind : range;
     out.capacity.T = engine.m * (end_velocity.x * end_velocity.x + end_velocity.y * end_velocity.y) / 2;
+    if (air) out.energy.flight_drag = engine.m * (out.v * out.v / 2 + g * end_drop) - out.capacity.T;
   }
   out.eps = r.efficiency;
   out.Q = r.quality;
@@ -75,12 +76,22 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   out.dFRh_Mg = r.extremes.max[pivot_horizontal] + r.extremes.max[pivot_horizontal_negated];
   out.energy_drift = shot.energy_drift;
   const double Mg = engine.M * g;
+  {  // the energy budget at the release, in M g L2, then in J
+    const ScaledDesign design = scaled_design(engine);
+    const Snapshot at_release = Dynamics(design).snapshot(Phase::lifted, r.state);
+    const double at_rest = design.mu_b * design.beam_cm() - 1 - design.L();  // upright beam, hanging counterweight, from the pivot's level
+    const double energy_unit = Mg * L2;
+    out.energy.delta_U = design.energy_drop() * energy_unit;
+    out.energy.projectile = r.energy_at_target * energy_unit;
+    out.energy.engine = (at_release.energies.beam + at_release.energies.counterweight - at_rest) * energy_unit;
+    for (int k = 0; k < loss_count; ++k) out.energy.losses[k] = shot.work[k] * energy_unit;
+  }
   out.FS_perp = out.FS_perp_mg * engine.m * g, out.FR = out.FR_Mg * Mg, out.dFRh = out.dFRh_Mg * Mg;
   const double load_unit[load_count] = {Mg, Mg, Mg, Mg * L2};  // LoadIndex, scaled in M g and M g L2
   for (int k = 0; k < load_count; ++k) out.loads[k] = {shot.loads[k].value * load_unit[k], shot.loads[k].t * time_unit};
   const double D = engine.D > 0 ? engine.D : engine.mb > 0 ? beam_diameter(engine.mb, beam_length(engine), engine.material) : 0;
-  if (D > 0) out.beam = beam_strength(D, L2, engine.M, out.loads[beam_moment_load].value, engine.material);
-  if (engine.D > 0 && engine.mb > 0) {
+  if (D > 0 && scaled_design(engine).short_section()) out.beam = beam_strength(D, L2, engine.M, out.loads[beam_moment_load].value, engine.material);
+  if (engine.D > 0 && engine.mb > 0 && !engine.parts.D_tip) {
     // The beam's mass moves the engine, its diameter carries the stress: a pair that disagrees
     // with the wood (eq:BeamMass) by more than 10 % is said to, with the density it implies.
     const double implied_density = engine.mb / beam_mass(engine.D, beam_length(engine), engine.material) * engine.material.wood_density;
@@ -112,6 +123,16 @@ ReleaseCriterion release_criterion(const Engine& engine, const ShotSettings& set
   return criterion;
 }
 
+ScaledDesign shot_design(const Engine& engine, const ShotSettings& settings) {
+  ScaledDesign design = scaled_design(engine);
+  if (settings.air && settings.drag_in_sling) {
+    design.parts.drag = scaled(drag_of(*settings.air, engine.m), engine.L2, engine.material.g);
+    // rho Cd d/2 per length and speed squared [N s^2/m^3], in M g per L2 and (g L2) (section 3)
+    design.parts.rope_drag = settings.air->density * engine.parts.rope_cd * engine.parts.rope_diameter / 2 * engine.L2 * engine.L2 / engine.M;
+  }
+  return design;
+}
+
 Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace, double trace_dt_s) {
   check_engine(engine);  // as given, its material too: a caller may have changed either since it was read
   check_shot_settings(settings);
@@ -119,14 +140,14 @@ Verification verify_engine(const Engine& engine, const ShotSettings& settings, s
   const ReleaseCriterion criterion = release_criterion(engine, settings);
   if (trace && trace_dt_s > 0) {
     // The series runs to twice the release (shot.hpp); its size is known before it is written.
-    const double duration_s = 2 * simulate_shot(scaled_design(engine), criterion, settings.integrator).release.t * time_unit;
+    const double duration_s = 2 * simulate_shot(shot_design(engine, settings), criterion, settings.integrator).release.t * time_unit;
     if (!(duration_s / trace_dt_s <= max_series_points))
       throw Error(ErrorKind::bad_number, "{{series_dt}} = " + format_significant(trace_dt_s, 6) + " s would cut the " +
                                              format_significant(duration_s, 4) + " s of the series into more than " +
                                              std::to_string(static_cast<long>(max_series_points)) + " points; give at least " +
                                              format_significant(duration_s / max_series_points, 2) + " s");
   }
-  const ShotResult shot = simulate_shot(scaled_design(engine), criterion, settings.integrator, trace, trace_dt_s / time_unit, nullptr, settings.loads);
+  const ShotResult shot = simulate_shot(shot_design(engine, settings), criterion, settings.integrator, trace, trace_dt_s / time_unit, nullptr, settings.loads);
   return verification_of(engine, shot, settings.target_level, settings.air, settings.range_from_release);
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "trebuchet/drag.hpp"
 #include "trebuchet/dynamics.hpp"
 
 namespace trebuchet {
@@ -27,20 +28,6 @@ void check_air(const Air& air);
 
 /// The diameter of a sphere of `mass` [kg] and `density` [kg/m^3] [m].
 double sphere_diameter(double mass, double density);
-
-/// Cd(Re) of a smooth sphere, by Morrison's correlation (2013; air.cpp cites the form), fitted
-/// up to Re = max_fitted_reynolds; beyond it the value is an extrapolation.
-double drag_coefficient_of(double reynolds);
-inline constexpr double max_fitted_reynolds = 1e6;
-
-/// Drag in the units of a flight: SI, or scaled by L2 and sqrt(L2/g) (section 3). The drag
-/// acceleration is -Cd per_length |u| u, u the velocity through the air.
-struct Drag {
-  double per_length = 0;            ///< rho_air A / (2 m), A the sphere's cross-section
-  std::optional<double> drag_coefficient;  ///< constant Cd; nullopt: Cd(reynolds_per_speed |u|)
-  double reynolds_per_speed = 0;    ///< rho_air d / viscosity
-  double wind = 0;                  ///< toward the target
-};
 
 /// The drag on a projectile of `mass` [kg] in SI units.
 Drag drag_of(const Air& air, double mass);

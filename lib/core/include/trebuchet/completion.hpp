@@ -29,6 +29,10 @@ struct CompletionRequest {
   Attested attested;
   Material material{};      ///< beta2 and the wood: the beam's D and mb when they are not attested
   ShotSettings settings{};  ///< the release criterion (Q, or the range), air, target level, integrator
+  /// The engine's parts as built that do not depend on the values searched: the pins' friction,
+  /// the counterweight's own inertia, the rope. A beam as built is refused: complete builds a
+  /// uniform beam from the attested values (a beam as built is checked by a shot).
+  EngineParts parts{};
 };
 
 struct Completion {

@@ -3,12 +3,47 @@
 // the capacity fit and the optimizer.
 #pragma once
 
+#include <optional>
+
+#include "trebuchet/drag.hpp"
+
 namespace trebuchet {
 
 /// The paper's standard initial beam angle (section 2) [deg].
 inline constexpr double standard_theta_i_deg = 30;
 /// The paper's "more realistic" counterweight arm fraction F = (L2 + L3)/H (section 2), scaled.
 inline constexpr double standard_F = 2.0 / 3;
+
+/// What a real engine adds to the paper's ideal one, scaled: lengths in L2, masses in M,
+/// moments of inertia in M L2^2 (docs/verifier.md, "Real engines"). Left empty, the shot is
+/// appendix A's exactly: a uniform beam, a point counterweight, no friction, no air before
+/// the release.
+struct BuiltParts {
+  /// The beam as a body turning about the pivot, of mass mu_b: the distance of its centre of
+  /// mass from the pivot (> 0 toward the long arm's tip) and its moment of inertia about the pivot.
+  struct Beam {
+    double cm = 0, inertia = 0;
+  };
+  /// A part of the beam: its mass, centre of mass (as Beam's) and moment of inertia about the pivot.
+  struct Section {
+    double mass = 0, cm = 0, inertia = 0;
+  };
+  std::optional<Beam> beam;             ///< none: the uniform rod of section 2
+  /// The short section, pivot to hinge, of a beam given as built (cm < 0), for the bending moment
+  /// at the pivot; none where the beam is given only as a whole.
+  std::optional<Section> short_section;
+  double counterweight_inertia = 0;     ///< about the counterweight's own centre of mass
+  double axle_friction = 0;             ///< mu r/L2 of the axle at the pivot (Coulomb)
+  double hinge_friction = 0;            ///< mu r/L2 of the counterweight's hinge pin
+  double trough_friction = 0;           ///< mu of the projectile sliding on the trough
+  std::optional<Drag> drag;             ///< the air on the projectile in phases I and II
+  /// rho_air Cd d L2^2/(2 M) of the sling's rope of diameter d: its drag per scaled length is
+  /// this times the square of the air's speed across it. Acts only with `drag`.
+  double rope_drag = 0;
+
+  /// Friction or drag before the release: the shot then tracks the work of each (Losses).
+  bool dissipates() const { return axle_friction > 0 || hinge_friction > 0 || trough_friction > 0 || drag.has_value(); }
+};
 
 /// Historical engines start at rest with psi_i = phi_i = 0 (section 2).
 struct ScaledDesign {
@@ -24,15 +59,24 @@ struct ScaledDesign {
   /// side of the hinge's fall is negative (sec:SVdH, section 7.2: the best for the paper's Villard engine
   /// of row 2 is psi_i = -4.6 deg).
   double psi_i_deg = 0;
+  BuiltParts parts{};  ///< the engine as built; empty: the paper's ideal engine
 
   /// L = L3/L2 = F l cos(theta_i) - 1 (eq:Design), scaled.
   double L() const;
   /// K = (l + 1)/mu_b (eq:kMkD), scaled.
   double K() const;
-  /// The beam's moment of inertia about the pivot, I_b/(M L2^2) = mu_b (l^2 - l + 1)/3 (section 2).
+  /// The beam's moment of inertia about the pivot, I_b/(M L2^2): mu_b (l^2 - l + 1)/3 for the
+  /// uniform rod (section 2), else as built.
   double beam_inertia() const;
-  /// Delta U/(M g L2) of eq:DU: (1 - mu_b (l - 1)/2)(1 + cos theta_i), plus L (1 - cos psi_i)
-  /// for a propped counterweight, which starts that much higher above its final rest.
+  /// The distance of the beam's centre of mass from the pivot toward the tip, in L2: (l - 1)/2
+  /// for the uniform rod, else as built.
+  double beam_cm() const;
+  /// The beam's short section as a body: for the uniform rod mass mu_b/(l + 1), centre at -1/2
+  /// and inertia mu_b/(3 (l + 1)); none for a beam given only as a whole.
+  std::optional<BuiltParts::Section> short_section() const;
+  /// Delta U/(M g L2) of eq:DU: (1 - mu_b c)(1 + cos theta_i), c = beam_cm() ((l - 1)/2 in the
+  /// paper), plus L (1 - cos psi_i) for a propped counterweight, which starts that much higher
+  /// above its final rest.
   double energy_drop() const;
 };
 

@@ -7,6 +7,9 @@
 //   beam CM        (l - 1)/2 (sin th, -cos th)
 //   projectile     l (sin th - l4 cos phi, -cos th - l4 sin phi)
 // These positions give eq:EOM_I_1, eq:EOM_I_2, eq:EOM_II_1 and eq:EOM_II_3 from the Lagrangian.
+// An engine as built (design.hpp, BuiltParts) changes the beam's and the counterweight's terms
+// and adds generalized forces of friction and drag to the right-hand sides (docs/verifier.md,
+// "Real engines").
 #pragma once
 
 #include <array>
@@ -34,6 +37,13 @@ struct BodyEnergies {
   double beam = 0, counterweight = 0, projectile_kinetic = 0, projectile_potential = 0;
 };
 
+/// Where the energy of an engine as built goes besides the bodies: the friction at the axle, at
+/// the counterweight's hinge and in the trough, and the drag on the projectile and on the sling's
+/// rope before the release. As powers (scaled, M g L2 per scaled time) or as work done.
+enum LossIndex { axle_loss, hinge_loss, trough_loss, projectile_drag_loss, rope_drag_loss };
+inline constexpr int loss_count = 5;
+using Losses = std::array<double, loss_count>;
+
 /// Angular accelerations and the internal forces at one state, scaled (forces in Mg).
 struct Snapshot {
   double theta_ddot = 0, psi_ddot = 0, phi_ddot = 0;
@@ -53,13 +63,18 @@ struct Snapshot {
   /// rigid turn adds its inertia.
   double beam_moment = 0;
   BodyEnergies energies;           ///< phase III: the projectile's are 0
-  double energy = 0;               ///< kinetic + potential of all bodies, scaled; conserved
+  double energy = 0;               ///< kinetic + potential of all bodies, scaled; conserved without losses
+  Losses loss_power{};             ///< the power each loss takes out of the bodies (< 0: the wind gives)
 };
 
 /// Phase III in vacuum: the horizontal distance from the pivot, toward the target (-x), to
 /// where a projectile released at `position` with `velocity` lands `drop` below its release
 /// height. Units consistent with g (scaled: g = 1).
 double vacuum_range(Vec2 position, Vec2 velocity, double drop, double g);
+
+namespace detail {
+struct Coefficients;  // the constants of the equations, as dynamics.cpp evaluates them
+}
 
 /// The equations of motion of one scaled design, with its constants computed once.
 class Dynamics {
@@ -82,14 +97,28 @@ class Dynamics {
   Snapshot snapshot(Phase phase, const State& state) const;
 
   /// Accelerations only (the right-hand side of the ODE), cheaper than snapshot. In the trough
-  /// phi and phi_dot of `state` are not read: they follow from theta.
-  std::array<double, 3> accelerations(Phase phase, const State& state) const;
+  /// phi and phi_dot of `state` are not read: they follow from theta. With friction, the
+  /// accelerations are found by fixed-point passes (dynamics.cpp); false where they do not
+  /// settle (a friction too strong for the model), and then `out` is not set.
+  bool accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power = nullptr) const;
+
+  /// Whether the shot loses energy other than to the bodies (BuiltParts::dissipates).
+  bool dissipates() const { return dissipates_; }
 
  private:
   ScaledDesign design_;
   double theta_i_, cos_theta_i_;  // [rad], scaled
   double L_, inertia_;            // eq:Design, section 2; scaled
   double inv_l_, inv_l4_, inv_L_; // their reciprocals, so that evaluations multiply
+  double beam_cm_;                 // ScaledDesign::beam_cm
+  double psi_ratio_, inv_L_psi_;   // L/L_psi and 1/L_psi, L_psi = L + I_c/L (dynamics.cpp)
+  bool dissipates_;                // BuiltParts::dissipates
+  detail::Coefficients coefficients() const;
 };
+
+/// Thrown by Dynamics::snapshot where friction leaves the accelerations unsettled.
+inline constexpr const char* unsettled_friction =
+    "the friction at the pins is too strong for the model: the accelerations do not settle (docs/verifier.md, \"Real engines\"); "
+    "give smaller coefficients or pin radii ({{axle_friction}}, {{hinge_friction}}, {{trough_friction}})";
 
 }  // namespace trebuchet

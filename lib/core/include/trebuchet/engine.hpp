@@ -2,12 +2,41 @@
 // follows from it: its scaled design (eq:Design), geometry and stored energy (eq:DU).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "trebuchet/design.hpp"
 #include "trebuchet/material.hpp"
 
 namespace trebuchet {
+
+/// A pin that carries a load while its parts turn on it: Coulomb friction gives a torque of
+/// mu r times the force it carries, against the turn.
+struct Pin {
+  double friction = 0;  ///< coefficient of sliding friction mu, scaled
+  double radius = 0;    ///< r [m]
+};
+
+/// What a real engine adds to the paper's ideal one (docs/verifier.md, "Real engines"); each
+/// part is ideal until given.
+struct EngineParts {
+  /// The beam as built instead of the uniform rod of mass mb (section 2): the distance of its
+  /// centre of mass from the pivot toward the tip [m] and its moment of inertia about the pivot
+  /// [kg m^2], both or neither.
+  std::optional<double> beam_cm, beam_inertia;
+  /// A round beam of the engine's wood whose diameter runs linearly from D_hinge at the short
+  /// end to D_tip at the long one [m]; it gives mb, the centre of mass, the inertia, and D at the pivot.
+  std::optional<double> D_hinge, D_tip;
+  double counterweight_inertia = 0;  ///< about the counterweight's own centre of mass [kg m^2]
+  Pin axle;                          ///< the axle at the pivot
+  Pin hinge;                         ///< the counterweight's hinge pin
+  double trough_friction = 0;        ///< mu of the projectile on the trough, scaled
+  double rope_diameter = 0;          ///< of the sling's rope, for its drag in air [m]; 0: none
+  double rope_cd = 1.2;              ///< Cd of the rope across the flow (a long cylinder), scaled
+
+  /// Whether any part is given: the engine is not the paper's ideal one.
+  bool any() const;
+};
 
 /// A swinging counterweight trebuchet at rest before a shot (psi_i = phi_i = 0, section 2).
 /// theta_i is measured between the long beam section and the downward vertical.
@@ -23,10 +52,24 @@ struct Engine {
   double theta_i_deg = standard_theta_i_deg;  ///< initial beam angle theta_i [deg]
   double psi_i_deg = 0;    ///< initial counterweight angle [deg]: 0 unpropped (design.hpp gives the sign)
   Material material{};     ///< beta2, wood and g: what sized it, and the g it is shot under
+  EngineParts parts{};     ///< as built; empty: the paper's ideal engine
 };
 
-/// The scaled design of eq:Design, with F from the counterweight arm.
+/// The scaled design of eq:Design, with F from the counterweight arm, and the engine's parts
+/// scaled (BuiltParts; the drag before the release comes with a shot's settings, verification.hpp).
 ScaledDesign scaled_design(const Engine& engine);
+
+/// The beam of a tapered engine (EngineParts::D_hinge, D_tip) as bodies about the pivot [kg, m,
+/// kg m^2]: the whole and its short section; mb is the whole's mass.
+struct TaperedBeam {
+  BuiltParts::Section whole, short_section;
+  double D_pivot = 0;  ///< the diameter at the pivot [m]
+};
+TaperedBeam tapered_beam(double L1, double L2, double D_hinge, double D_tip, double wood_density);
+
+/// The mass of the engine's beam from its wood [kg]: tapered (EngineParts::D_hinge, D_tip), or
+/// round of diameter D (eq:BeamMass).
+double wood_beam_mass(const Engine& engine);
 
 /// The engine of a scaled design at short arm L2 [m] (eq:Design), its counterweight mass and
 /// beam diameter from eq:ExtraScalings, m = mu M and mb = mu_b M.

@@ -53,9 +53,12 @@ struct LoadPeak {
 struct ShotResult {
   double t_liftoff = 0;         ///< scaled
   ReleasePoint release;
-  double energy_drift = 0;      ///< max |E(t) - E(0)| / Delta U over phases I and II
+  double energy_drift = 0;      ///< max |E(t) + W(t) - E(0)| / Delta U over phases I and II, W the work of the losses
   long steps = 0;               ///< accepted steps, both phases
   std::array<LoadPeak, load_count> loads;  ///< by LoadIndex; all 0 unless asked for (simulate_shot)
+  /// The work each loss took from the bodies up to the release, scaled (M g L2); all 0 for the
+  /// ideal engine. With them, the energy of the bodies at the release and Delta U balance.
+  Losses work{};
   /// The release sits at the instant this running extreme of eq:F starts to grow (a kink of
   /// the objective); none when it sits at a smooth maximum.
   std::optional<ForceIndex> release_at_growth_of;
@@ -71,6 +74,7 @@ struct TracePoint {
   double t;
   State state;
   Snapshot snapshot;
+  Losses work{};  ///< of each loss since the start, scaled (M g L2)
 };
 
 /// Integrates the shot and finds the release. Throws Error(numerical) with a named reason:

@@ -25,7 +25,15 @@ struct ShotSettings {
   /// Find the builder's loads (Verification::loads and the beam's peak stress); searches that
   /// only rank engines leave them out, and report them for the engine they find.
   bool loads = true;
+  /// With air: the air acts before the release too, on the projectile in the trough and in the
+  /// sling, and on the sling's rope when the engine gives its diameter (EngineParts). Off by
+  /// default, as in the paper and in tab:Denny, where drag acts only in flight.
+  bool drag_in_sling = false;
 };
+
+/// The scaled design a shot of `engine` under `settings` integrates: scaled_design(engine) with
+/// the air before the release when the settings ask for it (BuiltParts::drag, rope_drag).
+ScaledDesign shot_design(const Engine& engine, const ShotSettings& settings);
 
 /// Refuses settings no shot can run under: check_integrator, check_air, and a target level
 /// beyond 1e6 m either way ({{target_level}}). Searches that try many shots call it first, so
@@ -63,6 +71,16 @@ struct Verification {
   /// The beam's bending and stress (material.hpp), with D as given or, failing that, from mb by
   /// eq:BeamMass; none for a beam of no mass.
   std::optional<BeamStrength> beam;
+  /// Where Delta U (eq:DU) went by the release [J]: the projectile's energy at the base's level
+  /// (eq:T, eps Delta U), what the beam and the counterweight still hold above their rest (upright
+  /// beam, counterweight hanging below the hinge), and the work each loss took (LossIndex). These
+  /// sum to Delta U within the energy drift. After the release, what the air took in flight.
+  struct EnergyBudget {
+    double delta_U = 0, projectile = 0, engine = 0;
+    Losses losses{};
+    double flight_drag = 0;  ///< the projectile's energy at release over the flight's end level, less that at the end; 0 in vacuum
+  };
+  EnergyBudget energy;
   /// Where the model stops holding before the release (a slack sling, the counterweight or the
   /// beam's tip below the base), each with its time: the figures are then not physical.
   std::vector<std::string> warnings;
@@ -71,7 +89,7 @@ struct Verification {
   std::vector<std::string> notes;
 };
 
-/// The SI figures of a shot of `engine` (of scaled design scaled_design(engine)), its flight in
+/// The SI figures of a shot of `engine` (of scaled design shot_design(engine, ...)), its flight in
 /// vacuum or through `air`, to the target level or (range_from_release) back to the release
 /// height. Throws Error(usage) when the target level lies above the apex of the flight.
 Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level,

@@ -52,7 +52,20 @@ struct DesignValues {
   std::optional<double> L1, L2, L3, F, L4, M, m, mb, D, theta_i_deg, psi_i_deg;
   std::optional<double> beta2, youngs_modulus, wood_density, g;  ///< the material; eq:kMkD's where empty
   std::optional<double> R, T;                                     ///< a capacity to check: both or neither
+  /// The engine as built (EngineParts): the beam by its centre of mass and inertia (or radius of
+  /// gyration), or tapered; the counterweight's inertia or box; the pins' friction; the rope.
+  std::optional<double> beam_cm, beam_inertia, beam_gyration, D_hinge, D_tip, counterweight_inertia, box_width, box_height;
+  std::optional<double> axle_friction, axle_radius, hinge_friction, hinge_radius, trough_friction, rope_diameter, rope_cd;
 };
+
+/// The keys of the engine as built, with their dimensions, as JSON, CSV and the flags name them.
+struct PartKey {
+  std::optional<double> DesignValues::*member;
+  const char* key;
+  UnitDimension dimension;
+  const char* help;  ///< what it is, for the flags' help
+};
+const std::vector<PartKey>& part_keys();
 
 /// The value of `key` in a JSON object: an SI number, or a string with a unit ("6.13m");
 /// empty when absent or null. Messages name it "where.key" (where empty: "{{key}}"). Throws

@@ -14,7 +14,7 @@
 namespace trebuchet {
 
 /// Dimensions of option values; the first four are those of Quantity.
-enum class UnitDimension { length, mass, energy, dimensionless, angle, acceleration, pressure, density, time, speed, force, moment };
+enum class UnitDimension { length, mass, energy, dimensionless, angle, acceleration, pressure, density, time, speed, force, moment, inertia };
 
 UnitDimension unit_dimension(Dimension dimension);
 
