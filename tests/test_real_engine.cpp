@@ -10,6 +10,7 @@
 
 #include "engines.hpp"
 #include "trebuchet/error.hpp"
+#include "trebuchet/calibration.hpp"
 #include "trebuchet/verification.hpp"
 
 using namespace trebuchet;
@@ -238,4 +239,37 @@ TEST_CASE("parts outside what a real engine has are refused by name", "[real]") 
   refused([](EngineParts& p) { p.D_hinge = 0.3; }, "D_tip");
   refused([](EngineParts& p) { p.counterweight_inertia = 1e9; }, "counterweight_inertia");
   refused([](EngineParts& p) { p.rope_diameter = 10; }, "rope_diameter");
+}
+
+TEST_CASE("calibration recovers a known friction from a synthetic measured range", "[real]") {
+  ShotSettings air;
+  air.air = Air{};
+  // One coefficient at both pins: the engine's pins at mu = 0.12 throw R; calibrating the
+  // frictionless engine with the same radii to R gives 0.12 back. R moves 2 % per 0.1 of mu, and
+  // its round-off is 1e-10 relative: the coefficient is recovered to 1e-6 with room to spare.
+  Engine engine = alcala_ca();
+  engine.parts.axle.radius = 0.05, engine.parts.hinge.radius = 0.03;
+  const double R = verify_engine(with_friction(engine, FrictionFit::pin_coefficient, 0.12), air).capacity.R;
+  const Calibration pins = calibrate(engine, {R, 1.0}, air);
+  std::printf("calibrated pin friction: %.10g (true 0.12)\n", pins.value);
+  CHECK(pins.fitted == FrictionFit::pin_coefficient);
+  CHECK(pins.value == Approx(0.12).epsilon(1e-6));
+  // A longer measured range means less friction, a shorter one more.
+  CHECK(pins.value_low < pins.value);
+  CHECK(pins.value_high > pins.value);
+  // The engine's own coefficients, scaled: 0.6 of them is found again.
+  Engine own = alcala_ca();
+  own.parts.axle = {0.2, 0.05}, own.parts.hinge = {0.05, 0.03}, own.parts.trough_friction = 0.3;
+  const double R_scaled = verify_engine(with_friction(own, FrictionFit::scale, 0.6), air).capacity.R;
+  const Calibration scaled = calibrate(own, {R_scaled, 0}, air);
+  CHECK(scaled.fitted == FrictionFit::scale);
+  CHECK(scaled.value == Approx(0.6).epsilon(1e-6));
+  CHECK(scaled.shot.capacity.R == Approx(R_scaled).epsilon(1e-9));
+  // No friction lengthens a shot: a range beyond the frictionless one is refused.
+  try {
+    calibrate(engine, {1.01 * pins.frictionless.capacity.R, 0}, air);
+    FAIL("a range beyond the frictionless one was fitted");
+  } catch (const Error& e) {
+    CHECK(e.kind() == ErrorKind::out_of_range);
+  }
 }

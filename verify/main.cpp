@@ -14,7 +14,7 @@
 
 namespace {
 
-const char* const subcommand_names[] = {"shot", "fit", "optimize", "derive-table", "merge", "complete"};
+const char* const subcommand_names[] = {"shot", "fit", "optimize", "derive-table", "merge", "complete", "calibrate"};
 
 // `trebuchet-verify design.json` means `trebuchet-verify shot design.json`: the subcommand
 // `shot` is inserted unless argv names a subcommand or asks for the overall help or the version.
@@ -67,6 +67,7 @@ int main(int argc, char** argv) {
     if (sub.optimize->parsed()) return run_optimize(options);
     if (sub.derive_table->parsed()) return run_derive_table(options);
     if (sub.complete->parsed()) return options.uncertain.empty() ? run_complete(options) : run_monte_carlo(options, true);
+    if (sub.calibrate->parsed()) return run_calibrate(options);
     return run_merge(options);
   });
 }

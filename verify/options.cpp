@@ -186,14 +186,8 @@ void threads_option(CLI::App* app, Options& o, const std::string& help) {
   integer_option(app, "--threads", o.threads, 1, 1 << 16, "1 or more (at most 65536)", help);
 }
 
-// The air, and Monte Carlo: shot's and complete's.
-void air_and_sampling_options(CLI::App* app, Options& o) {
-  // The run's work is checked against its budget once the shots of a sample are known (check_monte_carlo_work).
-  integer_option(app, "--samples", o.samples, 1, static_cast<int>(max_run_shots), "1 to " + std::to_string(max_run_shots),
-                 "Monte Carlo samples, when a value is a range (2.5t..3.5t) or a spread (3.5m±0.2m) (default " +
-                     std::to_string(default_shot_samples) + " for a shot, " + std::to_string(default_completion_samples) + " for complete)");
-  integer_option(app, "--seed", o.seed, std::uint64_t{0}, std::uint64_t{0}, "0 or more",
-                 "seed of the Monte Carlo draws: the same seed, the same result (default 1)");
+// The air: shot's, complete's and calibrate's.
+void air_options(CLI::App* app, Options& o) {
   app->add_flag("--air", o.air, "fly through air (quadratic drag on a sphere) instead of vacuum; with --quality range the release maximises the range in air");
   app->add_flag("--drag-in-sling", o.drag_in_sling,
                 "with --air: the air acts before the release too, on the projectile in the trough and the sling and on the rope (--rope-diameter)");
@@ -219,6 +213,17 @@ void air_and_sampling_options(CLI::App* app, Options& o) {
   parsed_option(app, "--range-from", [&o](const std::string& text) {
     o.settings.range_from_release = parse_range_from(text, "--range-from");
   }, "pivot (the paper's: to the target level, the default) or release (Denny's: from the release point back to its height)");
+}
+
+// The air, and Monte Carlo: shot's and complete's.
+void air_and_sampling_options(CLI::App* app, Options& o) {
+  // The run's work is checked against its budget once the shots of a sample are known (check_monte_carlo_work).
+  integer_option(app, "--samples", o.samples, 1, static_cast<int>(max_run_shots), "1 to " + std::to_string(max_run_shots),
+                 "Monte Carlo samples, when a value is a range (2.5t..3.5t) or a spread (3.5m±0.2m) (default " +
+                     std::to_string(default_shot_samples) + " for a shot, " + std::to_string(default_completion_samples) + " for complete)");
+  integer_option(app, "--seed", o.seed, std::uint64_t{0}, std::uint64_t{0}, "0 or more",
+                 "seed of the Monte Carlo draws: the same seed, the same result (default 1)");
+  air_options(app, o);
 }
 
 }  // namespace
@@ -248,6 +253,34 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
     material_options(sub, o, "the design", !shot);
   }
   air_and_sampling_options(s.shot, o);
+
+  s.calibrate = app.add_subcommand("calibrate", "fit an engine's friction to the range it was measured to throw (--measured 34.4m±1.5m), "
+                                                "report the losses, and predict other projectiles (--predict-m) or counterweights (--predict-M)");
+  {
+    CLI::App* c = s.calibrate;
+    engine_options(c, o, false);
+    part_options(c, o, false, true);
+    parsed_option(c, "--measured", [&o](const std::string& text) {
+      if (const auto spread = parse_spread(text, UnitDimension::length, "--measured")) {
+        if (spread->kind != Spread::Kind::normal)
+          throw Error(ErrorKind::usage, "--measured: '" + text + "' is a range; give the measured range with its uncertainty, e.g. 34.4m±1.5m");
+        o.measured = MeasuredRange{spread->a, spread->b};
+      } else {
+        o.measured = MeasuredRange{parse_positive(text, UnitDimension::length, "--measured"), 0};
+      }
+    }, "the range the engine threw, with its uncertainty (one standard deviation), e.g. 34.4m±1.5m");
+    for (const auto& [flag, list, help] : {std::tuple{"--predict-m", &o.predict_m, "predict the calibrated engine's range with this projectile mass (repeat for more)"},
+                                           {"--predict-M", &o.predict_M, "predict it with this counterweight mass (repeat for more)"}})
+      parsed_option(c, flag, [list = list, flag = std::string(flag)](const std::string& text) {
+        list->push_back(parse_positive(text, UnitDimension::mass, flag));
+      }, help)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    target_level_option(c, o, false);
+    release_options(c, o);
+    integrator_options(c, o);
+    format_option(c, o, false);
+    material_options(c, o, "the design", false);
+    air_options(c, o);
+  }
 
   CLI::App* c = s.complete;
   air_and_sampling_options(c, o);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "trebuchet/calibration.hpp"
 #include "trebuchet/completion.hpp"
 #include "trebuchet/sweep.hpp"
 #include "trebuchet/verification.hpp"
@@ -39,6 +40,8 @@ struct Options {
   std::optional<double> air_density, drag_coefficient, projectile_density, wind;  ///< [kg/m^3], -, [kg/m^3], [m/s]
   bool drag_of_reynolds = false;         ///< --cd Re
   bool drag_in_sling = false;            ///< --drag-in-sling
+  std::optional<MeasuredRange> measured; ///< calibrate: the measured range [m]
+  std::vector<double> predict_m, predict_M;  ///< calibrate: masses to predict with [kg]
   MaterialOverrides material;            ///< --beta2, --wood-density, --youngs-modulus, --rupture, --g
   UnitSystem units = UnitSystem::si;     ///< --units: how tables print values
   Format format = Format::table;
@@ -56,7 +59,7 @@ struct Options {
 
 /// The subcommands, each with its options declared on it.
 struct Subcommands {
-  CLI::App *shot, *fit, *optimize, *derive_table, *merge, *complete;
+  CLI::App *shot, *fit, *optimize, *derive_table, *merge, *complete, *calibrate;
 };
 Subcommands declare_subcommands(CLI::App& app, Options& options);
 

@@ -123,6 +123,36 @@ std::string energy_budget_text(const Verification& v, UnitSystem units) {
 
 }  // namespace
 
+std::string calibration_table(const Calibration& c, const MeasuredRange& measured, const std::vector<Prediction>& predictions,
+                              const ShotSettings& settings, UnitSystem units) {
+  auto q = [&](double si, UnitDimension dimension, int digits = 4) { return quantity_text(si, dimension, units, digits); };
+  auto sig = [](double x, int digits = 3) { return format_significant(x, digits); };
+  const Engine& e = c.engine;
+  const EngineParts& p = e.parts;
+  std::ostringstream out;
+  out << "measured: R = " << q(measured.range, UnitDimension::length)
+      << (measured.uncertainty > 0 ? " ± " + q(measured.uncertainty, UnitDimension::length) : std::string()) << "\n"
+      << "without friction the engine throws " << q(c.frictionless.capacity.R, UnitDimension::length) << " (" << describe_assumptions(e, settings) << ")\n";
+  const std::string band = measured.uncertainty > 0 ? " (" + sig(c.value_low) + " to " + sig(c.value_high) + " for the range's ± 1 sigma)" : "";
+  if (c.fitted == FrictionFit::pin_coefficient)
+    out << "fitted: one friction coefficient at both pins, mu = " << sig(c.value) << band << ", on the axle's radius " << q(p.axle.radius, UnitDimension::length)
+        << " and the hinge pin's " << q(p.hinge.radius, UnitDimension::length) << "\n";
+  else
+    out << "fitted: the given friction coefficients times " << sig(c.value) << band << ": axle " << sig(p.axle.friction) << ", hinge pin "
+        << sig(p.hinge.friction) << ", trough " << sig(p.trough_friction) << "\n";
+  const double lost = c.frictionless.capacity.R - c.shot.capacity.R;
+  out << "friction costs " << q(lost, UnitDimension::length) << " (" << sig(100 * lost / c.frictionless.capacity.R) << " % of the range); "
+      << energy_budget_text(c.shot, units);
+  if (!predictions.empty()) {
+    out << "predicted with the calibrated friction (band: the fit's band):\n";
+    for (const Prediction& pr : predictions)
+      out << "  " << pr.changed << ": R = " << q(pr.R, UnitDimension::length) << " (" << q(pr.R_low, UnitDimension::length) << " to "
+          << q(pr.R_high, UnitDimension::length) << "), T = " << q(pr.shot.capacity.T, UnitDimension::energy) << "\n";
+  }
+  out << "(" << c.simulations << " shots)\n";
+  return out.str();
+}
+
 std::string verification_table(const Engine& engine, const ShotSettings& settings, const Verification& v,
                                const std::optional<CapacityCheck>& check, UnitSystem units) {
   require_finite(v);

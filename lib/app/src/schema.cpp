@@ -206,7 +206,7 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   e.M = required(v.M, "M", where, "the counterweight mass", "14.3t");
   e.m = required(v.m, "m", where, "the projectile mass", "100kg");
   // Without mb, a beam diameter gives it from the wood (eq:BeamMass), below.
-  if (v.mb || (!v.D && !v.D_tip)) e.mb = required(v.mb, "mb", where, "the beam mass", "660kg", where.empty() ? ", or the beam's diameter {{D}}, from which it follows" : ", or \"D\", the beam's diameter");
+  if (v.mb || (!v.D && !v.D_tip && !v.D_hinge)) e.mb = required(v.mb, "mb", where, "the beam mass", "660kg", where.empty() ? ", or the beam's diameter {{D}}, from which it follows" : ", or \"D\", the beam's diameter");
   e.theta_i_deg = v.theta_i_deg.value_or(standard_theta_i_deg);
   e.psi_i_deg = v.psi_i_deg.value_or(0);
   // D = 0 is how the outputs write "not given" (they read back); below 0 it is a mistake.
@@ -553,6 +553,33 @@ nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s) 
   if (!optimum.note.empty()) out["note"] = optimum.note;
   const nlohmann::ordered_json shot = verification_json(optimum.fit.verification);
   for (const auto& [key, value] : shot.items()) out[key] = value;
+  return out;
+}
+
+nlohmann::ordered_json calibration_json(const Calibration& c, const MeasuredRange& measured, const std::vector<Prediction>& predictions,
+                                        const ShotSettings& settings) {
+  nlohmann::ordered_json out;
+  nlohmann::ordered_json engine;
+  write_engine(engine, c.engine);
+  out["engine"] = engine;
+  out["assumptions"] = assumptions_json(c.engine, settings);
+  out["measured"] = {{"R", measured.range}, {"uncertainty", measured.uncertainty}};
+  out["fitted"] = c.fitted == FrictionFit::scale ? "scale" : "pin_coefficient";
+  out["value"] = c.value;
+  out["value_low"] = c.value_low;
+  out["value_high"] = c.value_high;
+  const EngineParts& p = c.engine.parts;
+  out["axle_friction"] = p.axle.friction, out["hinge_friction"] = p.hinge.friction, out["trough_friction"] = p.trough_friction;
+  out["R_frictionless"] = c.frictionless.capacity.R;
+  out["T_frictionless"] = c.frictionless.capacity.T;
+  out["shot"] = verification_json(c.shot, std::nullopt);
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const Prediction& prediction : predictions)
+    list.push_back({{"changed", prediction.changed}, {"R", prediction.R}, {"R_low", prediction.R_low}, {"R_high", prediction.R_high},
+                    {"T", prediction.shot.capacity.T}, {"eps", prediction.shot.eps}});
+  out["predictions"] = list;
+  out["simulations"] = c.simulations;
+  require_finite_json(out, "the calibration");
   return out;
 }
 

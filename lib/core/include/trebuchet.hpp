@@ -8,6 +8,7 @@
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/capacity.hpp"
 #include "trebuchet/capacity_fit.hpp"
+#include "trebuchet/calibration.hpp"
 #include "trebuchet/completion.hpp"
 #include "trebuchet/design.hpp"
 #include "trebuchet/dynamics.hpp"

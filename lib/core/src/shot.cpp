@@ -372,10 +372,21 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
     for (double w : work) lost += w;
     result.energy_drift = std::max(result.energy_drift, std::abs(s.energy + lost - energy0) / energy_scale);
   };
-  auto count_step = [&](const char* phase) {
+  // The hinge pin's friction turns with the counterweight's swing relative to the beam, which
+  // reverses a few times in a shot. A pin whose friction can hold that swing makes it stick and
+  // slip, which Coulomb's law as modelled here (sliding only) leaves out: the turn then reverses
+  // at nearly every step, and the shot says so rather than spend its step budget.
+  int hinge_reversals = 0;
+  double last_turn = 0;
+  auto count_step = [&](const char* phase, const State& s) {
     if (++result.steps > settings.max_steps)
       fail("step budget of " + std::to_string(settings.max_steps) + " steps exceeded in " + phase +
            "; loosen {{rtol}} or choose a higher-order {{stepper}}");
+    const double turn = s.psi_dot - s.theta_dot;
+    if (e.parts.hinge_friction > 0 && turn * last_turn < 0 && ++hinge_reversals > 30)
+      fail("the hinge pin's friction makes the counterweight stick to the beam and slip, which the model leaves out "
+           "(docs/verifier.md, \"Real engines\"); give a smaller {{hinge_friction}} or {{hinge_radius}}");
+    last_turn = turn;
   };
 
   // Phase I: from rest (eq:InitialConditions: phi_i = 0, and psi_i = 0 unless propped) until
@@ -396,7 +407,11 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   while (true) {
     if (!trough.step(t, y.data(), settings.max_time, h))
       fail(trough.friction_unsettled() ? unsettled_friction : "integrator failure in phase I; tighten {{rtol}} or choose another {{stepper}}");
-    count_step("phase I");
+    count_step("phase I", trough.state(y));
+    // Friction that stops the beam holds it (Coulomb's law at rest): the engine jams.
+    if (dynamics.dissipates() && !(y[2] > 0))
+      fail("friction stops the beam before the projectile lifts off: the engine jams; give smaller friction coefficients or pin radii "
+           "({{axle_friction}}, {{hinge_friction}}, {{trough_friction}})");
     if (std::cos(trough.state(y).phi) < abandon_trough_cos_phi)
       fail("the sling stands vertical in the trough (phi -> 90 deg) before lift-off; lengthen the sling L4 or lighten the projectile m");
     snap = dynamics.snapshot(Phase::trough, trough.state(y));
@@ -445,16 +460,19 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   while (true) {
     if (!lifted.step(t, y.data(), settings.max_time, h))
       fail(lifted.friction_unsettled() ? unsettled_friction : "integrator failure in phase II; tighten {{rtol}} or choose another {{stepper}}");
-    count_step("phase II");
     const State s = lifted.state(y);
+    count_step("phase II", s);
     snap = dynamics.snapshot(Phase::lifted, s);
     track_energy(snap, lifted.work(y));
     const double quality_here = release_point(e, criterion, t, s, snap, phase2.samples().back().extremes).objective;
     phase2.add(lifted.step_end(t, y, snap), snap);
     sampled.push_back(quality_here);
     best_quality = std::max(best_quality, quality_here);
-    // Past the maximum: the objective has fallen to half of it, or the beam has turned over.
-    if ((best_quality > 0 && quality_here < 0.5 * best_quality) || s.theta > dynamics.theta_i() + 2 * M_PI || t >= settings.max_time) break;
+    // Past the maximum: the objective has fallen to half of it, or the beam has turned over, or
+    // friction has stopped it (it would hold it there).
+    if ((best_quality > 0 && quality_here < 0.5 * best_quality) || s.theta > dynamics.theta_i() + 2 * M_PI || t >= settings.max_time ||
+        (dynamics.dissipates() && !(s.theta_dot > 0)))
+      break;
   }
   const std::string no_forward_release = "no release sends the projectile forward: over phase II it never flies toward the target";
   if (!(best_quality > 0)) fail(no_forward_release);

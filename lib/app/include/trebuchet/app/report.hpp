@@ -43,6 +43,10 @@ std::string optimum_table(const Optimum& optimum, const ShotSettings& settings, 
 /// chosen values sit from the calculator's optimum for the same capacity.
 /// With `longest`, the engine of the longest range for the same attested values follows, and how
 /// much further it throws; or why there is none (`longest_note`).
+/// The calibration of an engine's friction to a measured range, and its predictions.
+std::string calibration_table(const Calibration& calibration, const MeasuredRange& measured, const std::vector<Prediction>& predictions,
+                              const ShotSettings& settings, UnitSystem units = UnitSystem::si);
+
 std::string completion_table(const Completion& completion, const ShotSettings& settings, UnitSystem units = UnitSystem::si,
                              const Completion* longest = nullptr, const std::string& longest_note = "");
 

@@ -12,6 +12,7 @@
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/capacity.hpp"
 #include "trebuchet/engine.hpp"
+#include "trebuchet/calibration.hpp"
 #include "trebuchet/completion.hpp"
 #include "trebuchet/optimizer.hpp"
 #include "trebuchet/verification.hpp"
@@ -157,6 +158,11 @@ nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s);
 /// (its design, or calculator_note).
 /// A completion, and beside it (`longest`) the engine of the longest range for the same attested
 /// values under "longest_range", or why there is none (`longest_note`).
+/// The calibration as JSON: the calibrated engine, what was fitted and its band, the measured
+/// range, the shot with and without the friction, and each prediction with its band.
+nlohmann::ordered_json calibration_json(const Calibration& calibration, const MeasuredRange& measured, const std::vector<Prediction>& predictions,
+                                        const ShotSettings& settings);
+
 nlohmann::ordered_json completion_json(const Completion& completion, const ShotSettings& settings, const Completion* longest = nullptr,
                                        const std::string& longest_note = "");
 

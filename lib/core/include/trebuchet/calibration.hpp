@@ -1,0 +1,56 @@
+// Calibration of an engine's friction to a measured shot (issue 24): the one friction scale,
+// or an effective coefficient at both pins, that makes the simulated range the measured one,
+// with the band its uncertainty gives; and what the calibrated engine does with another
+// projectile or counterweight.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "trebuchet/engine.hpp"
+#include "trebuchet/verification.hpp"
+
+namespace trebuchet {
+
+/// A range measured in the field, from where the settings measure it [m].
+struct MeasuredRange {
+  double range = 0;        ///< [m]
+  double uncertainty = 0;  ///< one standard deviation [m]; 0: none given
+};
+
+/// What is fitted: the engine's own coefficients, all multiplied by one scale; or, for an
+/// engine with none, one coefficient mu at both pins (axle and hinge), on their given radii.
+enum class FrictionFit { scale, pin_coefficient };
+
+struct Calibration {
+  FrictionFit fitted = FrictionFit::scale;
+  double value = 0;                  ///< the scale, or mu at both pins, that matches the range
+  double value_low = 0, value_high = 0;  ///< those that match the range plus and minus its uncertainty (low: the longer range)
+  Engine engine;                     ///< with the fitted friction
+  Verification shot;                 ///< of the calibrated engine
+  Verification frictionless;         ///< of the same engine without friction
+  int simulations = 0;
+};
+
+/// The engine with its friction set by a fitted value (FrictionFit): the coefficients times a
+/// scale, or mu at both pins.
+Engine with_friction(const Engine& engine, FrictionFit fitted, double value);
+
+/// Fits the friction to the measured range. Throws Error(usage) for an engine without
+/// friction and without the pins' radii; Error(out_of_range) when the frictionless engine does
+/// not reach the range (no friction lengthens a shot) or when the largest friction allowed
+/// (coefficients of 2) still throws farther.
+Calibration calibrate(const Engine& engine, const MeasuredRange& measured, const ShotSettings& settings);
+
+/// A calibrated engine's range with another projectile or counterweight, and its band from the
+/// calibration's.
+struct Prediction {
+  std::string changed;   ///< "m = 60 kg"
+  Engine engine;
+  double R = 0, R_low = 0, R_high = 0;  ///< at the fitted value and at the ends of its band [m]
+  Verification shot;
+};
+Prediction predict(const Calibration& calibration, const Engine& changed, const std::string& what, const ShotSettings& settings);
+
+}  // namespace trebuchet

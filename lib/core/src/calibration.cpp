@@ -1,0 +1,110 @@
+#include "trebuchet/calibration.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "solve_1d.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+
+namespace trebuchet {
+
+namespace {
+
+// The friction coefficients check_engine allows reach 2: the fit searches up to there.
+constexpr double largest_coefficient = 2;
+
+double largest_value(const Engine& e, FrictionFit fitted) {
+  if (fitted == FrictionFit::pin_coefficient) return largest_coefficient;
+  const EngineParts& p = e.parts;
+  return largest_coefficient / std::max({p.axle.friction, p.hinge.friction, p.trough_friction});
+}
+
+}  // namespace
+
+Engine with_friction(const Engine& engine, FrictionFit fitted, double value) {
+  Engine e = engine;
+  EngineParts& p = e.parts;
+  if (fitted == FrictionFit::pin_coefficient) {
+    p.axle.friction = p.hinge.friction = value;
+  } else {
+    p.axle.friction *= value, p.hinge.friction *= value, p.trough_friction *= value;
+  }
+  return e;
+}
+
+Calibration calibrate(const Engine& engine, const MeasuredRange& measured, const ShotSettings& settings) {
+  check_engine(engine);
+  check_shot_settings(settings);
+  if (!(measured.range > 0))
+    throw Error(ErrorKind::bad_number, "{{measured}} = " + format_significant(measured.range, 6) + " m: give the measured range, e.g. {{measured}} 34.4m±1.5m");
+  if (!(measured.uncertainty >= 0 && measured.uncertainty < measured.range))
+    throw Error(ErrorKind::bad_number, "the measured range's uncertainty " + format_significant(measured.uncertainty, 6) +
+                                           " m must lie from 0 to the range itself; give it as {{measured}} 34.4m±1.5m");
+  Calibration out;
+  const EngineParts& p = engine.parts;
+  const bool has_friction = p.axle.friction > 0 || p.hinge.friction > 0 || p.trough_friction > 0;
+  out.fitted = has_friction ? FrictionFit::scale : FrictionFit::pin_coefficient;
+  if (!has_friction && !(p.axle.radius > 0 && p.hinge.radius > 0))
+    throw Error(ErrorKind::usage, "calibrate fits the engine's friction: give its coefficients ({{axle_friction}}, {{hinge_friction}}, "
+                                  "{{trough_friction}}), whose common scale it fits, or the pins' radii ({{axle_radius}} and {{hinge_radius}}), "
+                                  "and it fits one coefficient at both pins");
+  auto range_at = [&](double value) {
+    ++out.simulations;
+    return verify_engine(with_friction(engine, out.fitted, value), settings).capacity.R;
+  };
+  out.frictionless = verify_engine(with_friction(engine, out.fitted, 0), settings);
+  ++out.simulations;
+  const double R0 = out.frictionless.capacity.R;
+  if (!(measured.range < R0))
+    throw Error(ErrorKind::out_of_range, "the measured range " + format_significant(measured.range, 4) + " m is not shorter than the engine's without friction, " +
+                                             format_significant(R0, 4) + " m: friction only shortens a shot; check the engine's values, the air (--air) "
+                                             "and the target level");
+  // The largest friction allowed, or below it the largest whose shot still runs.
+  double top = largest_value(engine, out.fitted), R_top = 0;
+  for (int tries = 0;; ++tries) {
+    try {
+      R_top = range_at(top);
+      break;
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::numerical || tries == 20) throw;
+      top /= 2;
+    }
+  }
+  auto value_for = [&](double range) {
+    if (range >= R0) return 0.0;
+    if (range <= R_top) return top;
+    return find_root([&](double value) { return range_at(value) - range; }, 0, top, 0, 1e-9);
+  };
+  if (!(measured.range > R_top))
+    throw Error(ErrorKind::out_of_range, "even friction coefficients of " + format_significant(largest_coefficient, 2) + " throw " +
+                                             format_significant(R_top, 4) + " m, farther than the measured " + format_significant(measured.range, 4) +
+                                             " m: friction alone does not explain the shortfall; check the engine's values and the air");
+  out.value = value_for(measured.range);
+  out.value_low = value_for(measured.range + measured.uncertainty);
+  out.value_high = value_for(measured.range - measured.uncertainty);
+  out.engine = with_friction(engine, out.fitted, out.value);
+  out.shot = verify_engine(out.engine, settings);
+  ++out.simulations;
+  return out;
+}
+
+Prediction predict(const Calibration& c, const Engine& changed, const std::string& what, const ShotSettings& settings) {
+  // `changed` is the calibrated engine with another projectile or counterweight: it carries the
+  // fitted friction; the band's ends carry the friction fitted to the range's ends.
+  Prediction out;
+  out.changed = what;
+  out.engine = changed;
+  out.shot = verify_engine(changed, settings);
+  out.R = out.shot.capacity.R;
+  const auto range_with = [&](double value) {
+    const Engine e = c.fitted == FrictionFit::pin_coefficient ? with_friction(changed, c.fitted, value)
+                                                              : with_friction(changed, FrictionFit::scale, value / c.value);
+    return verify_engine(e, settings).capacity.R;
+  };
+  out.R_low = range_with(c.value_high);
+  out.R_high = range_with(c.value_low);
+  return out;
+}
+
+}  // namespace trebuchet

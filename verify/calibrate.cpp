@@ -1,0 +1,49 @@
+// calibrate: the friction of an engine fitted to the range it threw (calibration.hpp), and what
+// it then does with another projectile or counterweight.
+#include <iostream>
+#include <vector>
+
+#include "program.hpp"
+#include "run.hpp"
+#include "trebuchet/app/report.hpp"
+#include "trebuchet/app/text_input.hpp"
+#include "trebuchet/app/verifier.hpp"
+#include "trebuchet/format.hpp"
+
+namespace trebuchet::verify {
+
+int run_calibrate(const Options& o) {
+  if (!o.measured)
+    throw Error(ErrorKind::usage, "--measured is missing; give the range the engine threw, with its uncertainty, e.g. --measured 34.4m±1.5m");
+  DesignValues values = o.design;
+  std::string where;
+  if (!o.input.empty()) {
+    const DesignInputs in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}"), o.input);
+    if (!in.single || in.rows.size() != 1)
+      throw Error(ErrorKind::usage, "calibrate fits one engine; " + source_name(o.input) + " holds " + std::to_string(in.rows.size()));
+    where = in.where.front();
+    values = read_design_values(in.rows.front().design, where);
+  }
+  const EngineRecord record = engine_record(values, where);
+  Engine engine = record.engine;
+  engine.material = o.material.over(engine.material);
+  if (record.mb_from_D) engine.mb = wood_beam_mass(engine);  // in the wood of the run
+  const ShotSettings settings = shot_settings(o);
+  const Calibration calibration = calibrate(engine, *o.measured, settings);
+  std::vector<Prediction> predictions;
+  for (double m : o.predict_m) {
+    Engine changed = calibration.engine;
+    changed.m = m;
+    predictions.push_back(predict(calibration, changed, "m = " + quantity_text(m, UnitDimension::mass, o.units, 4), settings));
+  }
+  for (double M : o.predict_M) {
+    Engine changed = calibration.engine;
+    changed.M = M;
+    predictions.push_back(predict(calibration, changed, "M = " + quantity_text(M, UnitDimension::mass, o.units, 4), settings));
+  }
+  if (o.format == Format::json) std::cout << pretty_json(calibration_json(calibration, *o.measured, predictions, settings));
+  else std::cout << calibration_table(calibration, *o.measured, predictions, settings, o.units);
+  return exit_success;
+}
+
+}  // namespace trebuchet::verify
