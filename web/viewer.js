@@ -235,17 +235,22 @@
     const rest = (k) => f[k][0];
     const taken = (f.E_projectile_kinetic[r] + f.E_projectile_potential[r]) - rest('E_projectile_potential');
     const projectile = f.t.map((t, i) => (f.phase[i] === 'III' ? taken : f.E_projectile_kinetic[i] + f.E_projectile_potential[i] - rest('E_projectile_potential')));
+    const lost = f.W_lost && f.W_lost.some((v) => v !== 0);  // an engine as built: friction and drag take their share
     const energy = chart({ width,
       title: 'Where the energy goes',
-      subtitle: `ΔU (eq:DU): what beam and counterweight give up, falling to rest. At the release the projectile holds ε = ${significant(100 * shot.eps, 3)} % of it`,
+      subtitle: shot.energy && shot.energy.flight_drag
+        ? `At the release the projectile holds ε = ${significant(100 * shot.eps, 3)} % of ΔU; in flight the air takes ${significant(shot.energy.flight_drag / energySize, 3)} ${energyUnit} more`
+        : `ΔU (eq:DU): what beam and counterweight give up, falling to rest. At the release the projectile holds ε = ${significant(100 * shot.eps, 3)} % of it`,
       xLabel: 'time [s]', yLabel: `energy gained since rest [${energyUnit}]`, xName: 't', xUnit: 's', yUnit: energyUnit,
       lines: [
         { name: 'counterweight', colour: '#555', x: f.t, y: f.E_counterweight.map((v) => (v - rest('E_counterweight')) / energySize) },
         { name: 'beam', colour: '#a0522d', x: f.t, y: f.E_beam.map((v) => (v - rest('E_beam')) / energySize) },
         { name: 'projectile', colour: '#d62728', x: f.t, y: projectile.map((v) => v / energySize) },
         { name: 'of which kinetic', colour: '#ff9896', dash: '5 3', x: f.t, y: f.E_projectile_kinetic.map((v, i) => (f.phase[i] === 'III' ? null : v / energySize)) },
-        { name: 'total (conserved)', colour: 'black', x: f.t, y: f.t.map((t, i) => (f.E_counterweight[i] - rest('E_counterweight') + f.E_beam[i] - rest('E_beam') + projectile[i]) / energySize) },
-        { name: '(1 − ε) ΔU: left in beam + counterweight', colour: '#8c564b', dash: '8 3', width: 2.5, x: f.t,
+        ...(lost ? [{ name: 'taken by friction and drag', colour: '#9467bd', x: f.t, y: f.W_lost.map((v) => v / energySize) }] : []),
+        { name: lost ? 'total + losses (conserved)' : 'total (conserved)', colour: 'black', x: f.t,
+          y: f.t.map((t, i) => (f.E_counterweight[i] - rest('E_counterweight') + f.E_beam[i] - rest('E_beam') + projectile[i] + (f.W_lost ? f.W_lost[i] : 0)) / energySize) },
+        { name: lost ? 'left in beam + counterweight' : '(1 − ε) ΔU: left in beam + counterweight', colour: '#8c564b', dash: '8 3', width: 2.5, x: f.t,
           y: f.t.map((t, i) => (s.energy_drop + f.E_counterweight[i] - rest('E_counterweight') + f.E_beam[i] - rest('E_beam')) / energySize) },
         { name: 'ΔU (eq:DU)', colour: '#888', dash: '2 3', x: [f.t[0], f.t[f.t.length - 1]], y: [s.energy_drop / energySize, s.energy_drop / energySize] },
       ],
@@ -300,6 +305,23 @@
     const loads = [['sling tension', shot.sling_tension, shot.t_sling_tension], ['hinge pin |F_H|', shot.hinge_force, shot.t_hinge_force],
       ['pivot |F_R|', shot.pivot_force, shot.t_pivot_force]].filter(([, v]) => v !== undefined);
     const row = (name, value, title) => `<tr${title ? ` title="${escapeHtml(title)}"` : ''}><th>${name}</th><td>${value}</td></tr>`;
+    // An engine as built: what friction and the air took of ΔU by the release, each named.
+    // The parts of an engine as built, as its JSON gives them (docs/verifier.md, "Real engines").
+    const pin = (mu, r) => significant(mu, 3) + ' on r = ' + q(r, 'length');
+    const built = [
+      e.beam_cm !== undefined && ['beam as built', 'centre ' + q(e.beam_cm, 'length') + ' from the pivot, I = ' + significant(e.beam_inertia, 4) + ' kg·m²'],
+      e.D_tip !== undefined && ['tapered beam', 'D ' + q(e.D_hinge, 'length') + ' at the hinge to ' + q(e.D_tip, 'length') + ' at the tip'],
+      e.counterweight_inertia !== undefined && ['counterweight inertia', significant(e.counterweight_inertia, 4) + ' kg·m² about its centre'],
+      e.axle_friction > 0 && ['axle friction μ', pin(e.axle_friction, e.axle_radius)],
+      e.hinge_friction > 0 && ['hinge pin friction μ', pin(e.hinge_friction, e.hinge_radius)],
+      e.trough_friction > 0 && ['trough friction μ', significant(e.trough_friction, 3)],
+      e.rope_diameter > 0 && ['sling rope', q(e.rope_diameter, 'length') + ', Cd ' + significant(e.rope_cd, 3)],
+    ].filter(Boolean);
+    const builtRows = built.map(([name, value]) => row(name, value)).join('');
+    const lossNames = { axle: 'axle friction', hinge: 'hinge friction', trough: 'trough friction', sling_drag: 'air on the projectile', rope_drag: 'air on the rope' };
+    const losses = shot.energy ? Object.entries(shot.energy.losses).filter(([, v]) => v !== 0) : [];
+    const lossRows = losses.map(([k, v]) => row(lossNames[k] || k, q(v, 'energy') + ' (' + significant(100 * v / shot.energy.delta_U, 3) + ' % of ΔU)',
+      'work taken from the bodies up to the release (docs/verifier.md, "Real engines")')).join('');
     head.innerHTML = `<p class="tv-scene">This shot: <b>${escapeHtml(describeAssumptions(shot, system))}</b>.</p>${warnings}${notes}`;
     container.appendChild(head);
     const tables = document.createElement('div');
@@ -315,6 +337,7 @@
       ${row('release speed v', q(shot.v, 'speed'))}
       ${row('release angle', significant(shot.A_deg, 4) + '°')}
       ${row('release at', significant(shot.t_release, 4) + ' s, ' + q(shot.h, 'length') + ' up, ' + q(Math.abs(shot.x), 'length') + (shot.x < 0 ? ' behind' : ' before') + ' the pivot')}
+      ${lossRows}
       </table><table class="tv-figures"><caption>the builder's loads (largest up to the release)</caption>
       ${loads.map(([name, v, t]) => row(name, q(v, 'force') + ' at ' + significant(t, 3) + ' s')).join('')}
       ${shot.beam_moment !== undefined ? row('beam moment at the pivot', q(shot.beam_moment, 'moment') + ' at ' + significant(shot.t_beam_moment, 3) + ' s') : ''}
@@ -323,6 +346,7 @@
       ${row('L1, L2 (beam)', q(e.L1, 'length') + ', ' + q(e.L2, 'length'))}${row('L3 (counterweight arm)', q(e.L3, 'length'))}
       ${row('L4 (sling)', q(e.L4, 'length'))}${row('H (pivot height)', q(e.H, 'length'))}
       ${row('M, m, mb', q(e.M, 'mass') + ', ' + q(e.m, 'mass') + ', ' + q(e.mb, 'mass'))}${row('θi', significant(e.theta_i_deg, 4) + '°')}
+      ${builtRows}
       </table>`;
 
     // The animation: phases I and II to scale, then the whole flight.
@@ -431,7 +455,7 @@
     const figures = charts(shot, system, container.clientWidth && container.clientWidth < 600 ? 420 : 760);
     const captions = {
       forces: 'F_S⊥ is the sling\'s pull across the beam; |F_R| and F_Rh the pivot\'s force on the beam and its horizontal part; |F_H| the hinge\'s force; N the trough\'s push in phase I. Size ropes, pins and beams from these.',
-      energy: 'Each body\'s energy gained since rest. The counterweight falls and gives up its energy; the beam takes a little, the projectile the most. ΔU is what beam and counterweight give up once they have fallen to their final rest; the dashed brown line is what they still hold above that rest, (1 − ε) ΔU at the release, while the projectile holds ε ΔU. The total is constant: no friction.',
+      energy: 'Each body\'s energy gained since rest. The counterweight falls and gives up its energy; the beam takes a little, the projectile the most. ΔU is what beam and counterweight give up once they have fallen to their final rest; the dashed brown line is what they still hold above that rest, (1 − ε) ΔU at the release, while the projectile holds ε ΔU. The total is constant: with no friction nothing else takes a share; an engine given with friction or drag before the release shows what they took, and the total counts it.',
       release: 'Section 5: the release is where the chosen criterion peaks. An extreme\'s dashed line is flat while its force stays below the largest so far.',
       paths: 'The counterweight, the beam\'s tip and the projectile through phases I and II, then the flight.',
     };

@@ -209,7 +209,7 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
   // After the release the sling and projectile are gone: their values are null.
   const char* columns[] = {"t", "theta_deg", "psi_deg", "phi_deg", "hinge_x", "hinge_y", "counterweight_x", "counterweight_y", "tip_x", "tip_y",
                            "projectile_x", "projectile_y", "FS_perp", "sling_tension", "FR", "FRh", "FRv", "FH", "normal", "beam_moment",
-                           "E_counterweight", "E_beam", "E_projectile_kinetic", "E_projectile_potential"};
+                           "E_counterweight", "E_beam", "E_projectile_kinetic", "E_projectile_potential", "W_lost"};
   for (const char* column : columns) frames[column] = json::array();
   frames["phase"] = json::array();
   for (const TracePoint& p : series.trace) {
@@ -217,6 +217,8 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
     const bool gone = p.phase == Phase::released;
     const SitePoint hinge = site_point(s.hinge, engine), cw = site_point(s.counterweight, engine), tip = site_point(s.tip, engine),
                     pr = site_point(s.projectile, engine);
+    double lost = 0;  // the work of friction and drag so far
+    for (double w : p.work) lost += w;
     const std::optional<double> values[] = {p.t * series.time_unit, degrees(p.state.theta), degrees(p.state.psi),
                                             gone ? std::nullopt : std::optional(degrees(p.state.phi)), hinge.x, hinge.y, cw.x, cw.y, tip.x, tip.y,
                                             gone ? std::nullopt : std::optional(pr.x), gone ? std::nullopt : std::optional(pr.y),
@@ -224,7 +226,8 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
                                             force_values(s)[pivot_reaction] * Mg, s.pivot_reaction.x * Mg, s.pivot_reaction.y * Mg,
                                             std::hypot(s.hinge_force.x, s.hinge_force.y) * Mg, s.normal_force * Mg, s.beam_moment * energy_unit,
                                             s.energies.counterweight * energy_unit, s.energies.beam * energy_unit,
-                                            s.energies.projectile_kinetic * energy_unit, s.energies.projectile_potential * energy_unit};
+                                            s.energies.projectile_kinetic * energy_unit, s.energies.projectile_potential * energy_unit,
+                                            lost * energy_unit};
     for (std::size_t k = 0; k < std::size(columns); ++k) frames[columns[k]].push_back(values[k] ? json(*values[k]) : json(nullptr));
     frames["phase"].push_back(p.phase == Phase::trough ? "I" : p.phase == Phase::lifted ? "II" : "III");
   }
@@ -377,10 +380,17 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   const Snapshot& rest = trace.front().snapshot;
   const double cw0 = rest.energies.counterweight * energy_kJ, beam0 = rest.energies.beam * energy_kJ, pr0 = rest.energies.projectile_potential * energy_kJ;
   const double taken_kJ = (at_release.energies.projectile_kinetic + at_release.energies.projectile_potential) * energy_kJ - pr0;
+  // An engine as built loses energy to friction and drag: the work they took (the series' last
+  // five columns, 29 to 33) is drawn, and the total includes it.
+  const bool losses = d.parts.dissipates();
+  const std::string lost_kJ = "(($29+$30+$31+$32+$33)/1000)";
   energy << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'energy.svg'")
          << "set xlabel 'time [s]'\nset ylabel 'energy gained since rest [kJ]'\nset key below\n" << warnings
          << "set title \"Where the energy goes\\nat the release the projectile holds ε = " << format_significant(100 * v.eps, 3)
-         << " % of ΔU; the gap, 1 − ε, stays in beam and counterweight\\n" << gnuplot_quoted(scene) << "\" noenhanced\n"
+         << (losses ? " % of ΔU; the gap, 1 − ε, stays in beam and counterweight or went to friction and drag\\n"
+                    : " % of ΔU; the gap, 1 − ε, stays in beam and counterweight\\n")
+         << (v.energy.flight_drag != 0 ? "after the release the air takes " + format_significant(v.energy.flight_drag / 1000, 3) + " kJ more in flight\\n" : "")
+         << gnuplot_quoted(scene) << "\" noenhanced\n"
          << "set arrow from " << num(seconds(m.release)) << ", graph 0 to " << num(seconds(m.release)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
          << "set arrow from " << num(seconds(m.release)) << "," << num(taken_kJ) << " to " << num(seconds(m.release)) << "," << num(drop_kJ)
          << " heads lw 2 lc rgb 'red' front\nset label '1 − ε' at " << num(seconds(m.release)) << "," << num((taken_kJ + drop_kJ) / 2)
@@ -390,8 +400,10 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
          << "     '' every ::1 using 2:(strcol(1) ne 'III' ? ($25+$26)/1000-(" << num(pr0) << ") : " << num(taken_kJ)
          << ") with lines lw 2 title 'projectile (after the release: what it took)', \\\n"
          << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($25/1000) with lines lw 1 dt 2 title 'of which kinetic', \\\n"
+         << (losses ? "     '' every ::1 using 2:" + lost_kJ + " with lines lw 2 lc rgb '#e377c2' title 'taken by friction and drag', \\\n" : "")
          << "     '' every ::1 using 2:(($23+$24)/1000-(" << num(cw0 + beam0) << ")+(strcol(1) ne 'III' ? ($25+$26)/1000-(" << num(pr0) << ") : "
-         << num(taken_kJ) << ")) with lines lw 2 lc rgb 'black' title 'total (conserved)', \\\n"
+         << num(taken_kJ) << ")" << (losses ? "+" + lost_kJ : "") << ") with lines lw 2 lc rgb 'black' title '"
+         << (losses ? "total with what the losses took (conserved)" : "total (conserved)") << "', \\\n"
          << "     " << num(drop_kJ) << " with lines dt 2 lc rgb 'gray30' title 'ΔU (eq:DU)'\n";
   files.push_back({"energy.gp", energy.str()});
 

@@ -315,18 +315,25 @@ std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine
   const double time_unit = std::sqrt(engine.L2 / g);           // section 3 [s]
   const double energy_unit = engine.M * g * engine.L2;         // [J]
   const double drop = scaled.energy_drop();
-  double energy0 = trace.empty() ? 0 : trace.front().snapshot.energy;
+  // The bodies' energy with the work the losses took so far: what is conserved.
+  const auto balance = [](const TracePoint& p) {
+    double lost = 0;
+    for (double w : p.work) lost += w;
+    return p.snapshot.energy + lost;
+  };
+  double energy0 = trace.empty() ? 0 : balance(trace.front());
   bool released = false;
   std::ostringstream out;
   out << "phase,t_s,theta_deg,psi_deg,phi_deg,theta_dot_rad_s,psi_dot_rad_s,phi_dot_rad_s,"
          "FS_perp_mg,FR_Mg,FRh_Mg,FRv_Mg,FH_Mg,normal_mg,energy_J,energy_drift,"
          "counterweight_x_m,counterweight_y_m,tip_x_m,tip_y_m,projectile_x_m,projectile_y_m,"
-         "E_counterweight_J,E_beam_J,E_projectile_kinetic_J,E_projectile_potential_J,sling_tension_mg,beam_moment_MgL2\n";
+         "E_counterweight_J,E_beam_J,E_projectile_kinetic_J,E_projectile_potential_J,sling_tension_mg,beam_moment_MgL2,"
+         "W_axle_J,W_hinge_J,W_trough_J,W_sling_drag_J,W_rope_drag_J\n";
   for (const TracePoint& p : trace) {
     const Snapshot& s = p.snapshot;
     if (p.phase == Phase::released && !released) {  // without the projectile, energy is conserved anew
       released = true;
-      energy0 = s.energy;
+      energy0 = balance(p);
     }
     const SitePoint cw = site_point(s.counterweight, engine), tip = site_point(s.tip, engine), pr = site_point(s.projectile, engine);
     // After the release the sling and projectile are gone: phi, its rate and their positions are left empty.
@@ -346,7 +353,7 @@ std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine
                           std::hypot(s.hinge_force.x, s.hinge_force.y),
                           s.normal_force / scaled.mu,
                           s.energy * energy_unit,
-                          (s.energy - energy0) / drop,
+                          (balance(p) - energy0) / drop,
                           cw.x, cw.y, tip.x, tip.y,
                           gone ? none : pr.x, gone ? none : pr.y,
                           s.energies.counterweight * energy_unit,
@@ -354,7 +361,12 @@ std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine
                           s.energies.projectile_kinetic * energy_unit,
                           s.energies.projectile_potential * energy_unit,
                           gone ? none : s.sling_tension / scaled.mu,
-                          s.beam_moment};
+                          s.beam_moment,
+                          p.work[axle_loss] * energy_unit,
+                          p.work[hinge_loss] * energy_unit,
+                          p.work[trough_loss] * energy_unit,
+                          p.work[projectile_drag_loss] * energy_unit,
+                          p.work[rope_drag_loss] * energy_unit};
     out << (p.phase == Phase::trough ? "I" : p.phase == Phase::lifted ? "II" : "III");
     for (double x : row) out << "," << (std::isnan(x) ? std::string() : format_number(finite_or_error(x)));
     out << "\n";
