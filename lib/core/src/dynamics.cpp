@@ -117,7 +117,11 @@ template <bool forced = true>
 }
 
 Vec2 operator*(Vec2 v, double k) { return {v.x * k, v.y * k}; }
+// |v| of the forces and speeds of a shot, which are of ordinary size: no need for hypot's care
+// against overflow, which would cost a quarter of a shot with friction.
+double norm(Vec2 v) { return std::sqrt(v.x * v.x + v.y * v.y); }
 Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
 double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 
 // How the beam's tip and the projectile move with the angles: d(position)/d(angle), scaled.
@@ -152,7 +156,7 @@ AirForces air_forces(const Coefficients& e, Phase phase, const State& s, const T
   const Vec2 projectile_velocity = j.projectile_theta * s.theta_dot + j.projectile_phi * phi_dot;
   const Vec2 wind{drag->wind, 0};  // the air moves toward -x: u = v + wind x^ (air.hpp)
   const Vec2 u = projectile_velocity + wind;
-  const double speed = std::hypot(u.x, u.y);
+  const double speed = norm(u);
   out.on_projectile = u * (-e.mu * drag->coefficient_at(speed) * drag->per_length * speed);
   out.Q[0] = dot(out.on_projectile, j.projectile_theta);
   out.Q[2] = dot(out.on_projectile, j.projectile_phi);
@@ -167,7 +171,7 @@ AirForces air_forces(const Coefficients& e, Phase phase, const State& s, const T
     const Vec2 v = tip_velocity * (1 - a) + projectile_velocity * a;
     const Vec2 rel = v + wind;
     const Vec2 normal = rel + along * (-dot(rel, along));
-    const Vec2 force = normal * (-e.parts->rope_drag * std::hypot(normal.x, normal.y) * weight[k] * length);
+    const Vec2 force = normal * (-e.parts->rope_drag * norm(normal) * weight[k] * length);
     out.on_rope = out.on_rope + force;
     out.Q[0] += dot(force, j.tip_theta * (1 - a) + j.projectile_theta * a);
     out.Q[2] += dot(force, j.projectile_phi * a);
@@ -226,33 +230,40 @@ double sign(double x) { return (x > 0) - (x < 0); }
   return out;
 }
 
-// Coulomb friction at the pins and in the trough, given the forces they carry: the axle's torque
-// mu r |F_R| against th', the hinge pin's mu r |F_H| against the arm's turn relative to the beam,
-// psi' - th' (the same torque turned back on the beam), and the trough's force on the projectile.
-// With `loss`, the power each takes out of the bodies.
-Generalized friction_forces(const Coefficients& e, Phase phase, const State& s, const Internal& f, const Jacobians& j, Losses* loss) {
-  const BuiltParts& p = *e.parts;
-  const double axle = -p.axle_friction * std::hypot(f.pivot_reaction.x, f.pivot_reaction.y) * sign(s.theta_dot);
-  const double turn = s.psi_dot - s.theta_dot;
-  const double hinge = -p.hinge_friction * std::hypot(f.hinge_force.x, f.hinge_force.y) * sign(turn);
-  const double trough = phase == Phase::trough ? f.trough_friction * j.projectile_theta.x : 0;
-  if (loss) {
-    (*loss)[axle_loss] = -axle * s.theta_dot;
-    (*loss)[hinge_loss] = -hinge * turn;
-    (*loss)[trough_loss] = -trough * s.theta_dot;
+// Coulomb friction at the pins and in the trough at a state: the axle's torque mu r |F_R|
+// against th', the hinge pin's mu r |F_H| against the arm's turn relative to the beam, psi' - th'
+// (the same torque turned back on the beam), and the trough's force on the projectile, through
+// dx/dth. Each generalized force is a factor of the state times what the pin or trough carries.
+struct FrictionLaw {
+  double axle, hinge, trough;  // -mu r sgn(th'), -mu r sgn(psi' - th'), dx/dth in phase I (else 0)
+  FrictionLaw(const Coefficients& e, Phase phase, const State& s, const Jacobians& j)
+      : axle(-e.parts->axle_friction * sign(s.theta_dot)),
+        hinge(-e.parts->hinge_friction * sign(s.psi_dot - s.theta_dot)),
+        trough(phase == Phase::trough ? j.projectile_theta.x : 0) {}
+  // (Q_theta, Q_psi, Q_phi) of the forces the pins and the trough carry.
+  Generalized forces(Vec2 pivot_reaction, Vec2 hinge_force, double trough_friction) const {
+    const double a = axle * norm(pivot_reaction), h = hinge * norm(hinge_force);
+    return {a - h + trough * trough_friction, h, 0};
   }
-  return {axle - hinge + trough, hinge, 0};
-}
+  // The power each takes out of the bodies.
+  void losses(const State& s, const Internal& f, Losses& loss) const {
+    loss[axle_loss] = -axle * norm(f.pivot_reaction) * s.theta_dot;
+    loss[hinge_loss] = -hinge * norm(f.hinge_force) * (s.psi_dot - s.theta_dot);
+    loss[trough_loss] = -trough * f.trough_friction * s.theta_dot;
+  }
+};
 
 // The friction's generalized forces depend on the forces the pins and the trough carry, and those
-// on the accelerations the friction changes: Q = friction(forces(solve(Q))). This is solved for
-// (Q_theta, Q_psi) by Newton's method, the Jacobian by forward differences (step 1e-7 of the
-// size of Q, plus 1e-7). The trough's friction is affine in the accelerations (the sign of the
-// sliding is the state's), so with it alone one step is exact; the pins' |F| is smooth, and
-// two or three steps bring the residual below 1e-14 (1 + |Q|), the size of round-off.
-// Where the friction is so strong that no such Q exists or it is not unique (near a sling
-// standing upright in the trough, with a large coefficient: Painleve's paradox), the iteration
-// fails and the shot says so (unsettled_friction).
+// on the accelerations the friction changes: Q = friction(forces(solve(Q))). The accelerations
+// are affine in Q (solve is linear in its right-hand side) and so are the forces (Newton's laws,
+// and the trough's closed form with the state's sign of sliding): three solves give them exactly
+// as F0 + G Q. The friction of that affine model, a function of (Q_theta, Q_psi) through |F_R|,
+// |F_H| and N alone, is then solved by Newton's method, its Jacobian by forward differences
+// (step 1e-7 (1 + |Q|)), to a residual below 1e-14 (1 + |Q|) in M g L2: round-off. The trough's
+// friction alone is affine and one step solves it; the pins' |F| is smooth, and two or three
+// steps do. A fourth solve gives the accelerations. Where no Q exists or it is not unique (a
+// large coefficient near a sling standing upright in the trough: Painleve's paradox), the
+// iteration fails and the shot says so (unsettled_friction).
 constexpr int max_newton_steps = 30;
 
 struct Evaluation {
@@ -272,43 +283,47 @@ bool evaluate(const Coefficients& e, Phase phase, const State& s, const Trig& tr
   }
   const Jacobians j(e, phase, trig);
   out.air = air_forces(e, phase, s, trig, j);
-  Generalized Q = out.air.Q;
-  const auto residual = [&](double q_theta, double q_psi, Accel& a, Internal& forces) {
+  const auto forces_for = [&](double q_theta, double q_psi) {
     Generalized total = out.air.Q;
     total[0] += q_theta, total[1] += q_psi;
-    a = solve(e, phase, s, trig, total);
-    forces = internal_forces(e, phase, s, trig, a, out.air);
-    const Generalized f = friction_forces(e, phase, s, forces, j, nullptr);
-    return std::array<double, 2>{f[0] - q_theta, f[1] - q_psi};
+    return internal_forces(e, phase, s, trig, solve(e, phase, s, trig, total), out.air);
   };
-  if (!friction) {
-    out.a = solve(e, phase, s, trig, Q);
-    out.forces = internal_forces(e, phase, s, trig, out.a, out.air);
-  } else {
-    double q0 = 0, q1 = 0;
+  double q0 = 0, q1 = 0;
+  if (friction) {
+    // The affine model of the forces friction depends on: at Q = 0 and one unit along each.
+    const Internal f0 = forces_for(0, 0), f_theta = forces_for(1, 0), f_psi = forces_for(0, 1);
+    const FrictionLaw law(e, phase, s, j);
+    const Vec2 pivot_theta = f_theta.pivot_reaction - f0.pivot_reaction, pivot_psi = f_psi.pivot_reaction - f0.pivot_reaction;
+    const Vec2 hinge_theta = f_theta.hinge_force - f0.hinge_force, hinge_psi = f_psi.hinge_force - f0.hinge_force;
+    const double trough_theta = f_theta.trough_friction - f0.trough_friction, trough_psi = f_psi.trough_friction - f0.trough_friction;
     bool settled = false;
     for (int step = 0; step < max_newton_steps && !settled; ++step) {
-      const auto r = residual(q0, q1, out.a, out.forces);
-      const double size = 1 + std::max(std::abs(q0), std::abs(q1));
-      if (!(std::isfinite(r[0]) && std::isfinite(r[1]))) return false;
-      if (std::max(std::abs(r[0]), std::abs(r[1])) <= 1e-14 * size) {
+      const Vec2 pivot = f0.pivot_reaction + pivot_theta * q0 + pivot_psi * q1, hinge = f0.hinge_force + hinge_theta * q0 + hinge_psi * q1;
+      const Generalized f = law.forces(pivot, hinge, f0.trough_friction + trough_theta * q0 + trough_psi * q1);
+      const double r0 = f[0] - q0, r1 = f[1] - q1;
+      if (!(std::isfinite(r0) && std::isfinite(r1))) return false;
+      if (std::max(std::abs(r0), std::abs(r1)) <= 1e-14 * (1 + std::max(std::abs(q0), std::abs(q1)))) {
         settled = true;
         break;
       }
-      const double h = 1e-7 * size;
-      Accel scratch;
-      Internal scratch_forces;
-      const auto r_theta = residual(q0 + h, q1, scratch, scratch_forces), r_psi = residual(q0, q1 + h, scratch, scratch_forces);
-      const double j00 = (r_theta[0] - r[0]) / h, j10 = (r_theta[1] - r[1]) / h, j01 = (r_psi[0] - r[0]) / h, j11 = (r_psi[1] - r[1]) / h;
+      // The Jacobian of the residual, exact: d|F|/dq = F . dF/dq / |F|.
+      const double n_pivot = norm(pivot), n_hinge = norm(hinge);
+      const double da0 = n_pivot > 0 ? law.axle * dot(pivot, pivot_theta) / n_pivot : 0, da1 = n_pivot > 0 ? law.axle * dot(pivot, pivot_psi) / n_pivot : 0;
+      const double dh0 = n_hinge > 0 ? law.hinge * dot(hinge, hinge_theta) / n_hinge : 0, dh1 = n_hinge > 0 ? law.hinge * dot(hinge, hinge_psi) / n_hinge : 0;
+      const double j00 = da0 - dh0 + law.trough * trough_theta - 1, j01 = da1 - dh1 + law.trough * trough_psi, j10 = dh0, j11 = dh1 - 1;
       const double det = j00 * j11 - j01 * j10;
       if (!(std::abs(det) > 1e-12)) return false;
-      q0 -= (j11 * r[0] - j01 * r[1]) / det;
-      q1 -= (-j10 * r[0] + j00 * r[1]) / det;
+      q0 -= (j11 * r0 - j01 * r1) / det;
+      q1 -= (-j10 * r0 + j00 * r1) / det;
     }
     if (!settled) return false;
   }
+  Generalized total = out.air.Q;
+  total[0] += q0, total[1] += q1;
+  out.a = solve(e, phase, s, trig, total);
+  out.forces = internal_forces(e, phase, s, trig, out.a, out.air);
   if (loss) {
-    if (friction) friction_forces(e, phase, s, out.forces, j, loss);
+    if (friction) FrictionLaw(e, phase, s, j).losses(s, out.forces, *loss);
     (*loss)[projectile_drag_loss] = -out.air.projectile_power;
     (*loss)[rope_drag_loss] = -out.air.rope_power;
   }
@@ -386,7 +401,7 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   if (const auto section = design_.short_section()) {
     out.beam_moment = st * out.hinge_force.y + ct * out.hinge_force.x + section->mass * -section->cm * st - section->inertia * a.theta;
     if (design_.parts.hinge_friction > 0)
-      out.beam_moment += design_.parts.hinge_friction * std::hypot(f.hinge_force.x, f.hinge_force.y) * sign(pd - td);
+      out.beam_moment += design_.parts.hinge_friction * norm(f.hinge_force) * sign(pd - td);
   }
 
   // Energy of each body, potential from the pivot's level: beam rotation, counterweight (its
