@@ -119,3 +119,28 @@ TEST_CASE("api::complete applies the request's modulus of rupture, as the progra
   CHECK(weaker["rupture_margin"].get<double>() == Approx(standard["rupture_margin"].get<double>() / 2).epsilon(1e-12));
   CHECK_THAT(refusal(api::complete, {{"attested", attested}, {"modulus_of_rupture", -1}}).what(), Catch::Contains("must be positive"));
 }
+
+TEST_CASE("api::shot takes an engine as built and the air before the release", "[api]") {
+  // The parts go in as the design's keys and come back in the engine; the air before the release
+  // is a key of "air", as the answer's assumptions state it.
+  const json design = {{"L1", "4.13m"}, {"L2", "0.88m"}, {"F", "2/3"}, {"L4", "3.55m"}, {"M", "3.11t"}, {"m", "50kg"}, {"mb", "174kg"},
+                       {"axle_friction", 0.107}, {"axle_radius", "5cm"}, {"rope_diameter", "2cm"}};
+  const auto answer = api::shot({{"design", design}, {"air", {{"drag_in_sling", true}}}});
+  Engine engine;
+  engine.L1 = 4.13, engine.L2 = 0.88, engine.L4 = 3.55, engine.M = 3110, engine.m = 50, engine.mb = 174;
+  engine.L3 = counterweight_arm(engine.L1, engine.L2, 30, 2.0 / 3);
+  engine.parts.axle = {0.107, 0.05};
+  engine.parts.rope_diameter = 0.02;
+  ShotSettings settings;
+  settings.air = Air{};
+  settings.drag_in_sling = true;
+  const Verification v = verify_engine(engine, settings);
+  // The same engine by another road: L3 from F rounds once, 1e-12 covers it.
+  CHECK(answer["R"].get<double>() == Approx(v.capacity.R).epsilon(1e-12));
+  CHECK(answer["energy"]["losses"]["axle"].get<double>() == Approx(v.energy.losses[axle_loss]).epsilon(1e-9));
+  CHECK(answer["energy"]["losses"]["rope_drag"].get<double>() > 0);
+  CHECK(answer["engine"]["axle_friction"].get<double>() == 0.107);
+  CHECK(answer["assumptions"]["air"]["drag_in_sling"].get<bool>());
+  const Error wrong = refusal(&api::shot, {{"design", design}, {"air", {{"drag_in_sling", "yes"}}}});
+  CHECK(std::string(wrong.what()).find("air.drag_in_sling") != std::string::npos);
+}
