@@ -15,16 +15,17 @@ namespace trebuchet::api {
 /// material (beta2, youngs_modulus, wood_density, g).
 nlohmann::ordered_json design(const nlohmann::json& request);
 
-/// One shot (trebuchet-verify --format json): "design" (an engine object), and the settings
-/// "air" (false, true or {density, drag_coefficient (a number or "Re"), projectile_density,
-/// wind}), "release" ("Q", "eps", "range"), "n", "target_level", "range_from" ("pivot",
+/// One shot (trebuchet-verify --format json): "design" (an engine object, its parts as built
+/// among its keys), and the settings "air" (false, true or {density, drag_coefficient (a number
+/// or "Re"), projectile_density, wind, drag_in_sling}), "release" ("Q", "eps", "range"), "n", "target_level", "range_from" ("pivot",
 /// "release"), "tolerance" on a capacity the design carries, "modulus_of_rupture", "fit" (fit
 /// the design to its capacity first). With "series": true the answer adds "series", the motion
 /// the viewer draws (pictures.hpp's shot_series_json).
 nlohmann::ordered_json shot(const nlohmann::json& request);
 
 /// The completion of an attested engine (trebuchet-verify complete --format json): "attested"
-/// (Lb, L1, L2, H, L4, M, m, mb, D, l, theta_i_deg, F, and the material's keys) and the settings
+/// (Lb, L1, L2, H, L4, M, m, mb, D, l, theta_i_deg, F, the material's keys, and the parts as built
+/// that complete takes: the pins' friction, counterweight_inertia, the rope) and the settings
 /// of shot. Without "release": "range", the engine of the longest range is completed too. A
 /// value given as a range or a spread is completed at its middle (monte_carlo samples it).
 nlohmann::ordered_json complete(const nlohmann::json& request);
