@@ -38,6 +38,7 @@ int run_calibrate(const Options& o) {
   }
   for (double M : o.predict_M) {
     Engine changed = calibration.engine;
+    changed.parts.counterweight_inertia *= M / changed.M;  // the same counterweight, heavier: its radius of gyration kept
     changed.M = M;
     predictions.push_back(predict(calibration, changed, "M = " + quantity_text(M, UnitDimension::mass, o.units, 4), settings));
   }

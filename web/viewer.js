@@ -309,7 +309,8 @@
     // The parts of an engine as built, as its JSON gives them (docs/verifier.md, "Real engines").
     const pin = (mu, r) => significant(mu, 3) + ' on r = ' + q(r, 'length');
     const built = [
-      e.beam_cm !== undefined && ['beam as built', 'centre ' + q(e.beam_cm, 'length') + ' from the pivot, I = ' + significant(e.beam_inertia, 4) + ' kg·m²'],
+      e.beam_cm !== undefined && ['beam as built', 'centre ' + q(e.beam_cm, 'length') + ' from the pivot, ' +
+        (e.beam_gyration !== undefined ? 'radius of gyration ' + q(e.beam_gyration, 'length') : 'I = ' + significant(e.beam_inertia, 4) + ' kg·m²')],
       e.D_tip !== undefined && ['tapered beam', 'D ' + q(e.D_hinge, 'length') + ' at the hinge to ' + q(e.D_tip, 'length') + ' at the tip'],
       e.counterweight_inertia !== undefined && ['counterweight inertia', significant(e.counterweight_inertia, 4) + ' kg·m² about its centre'],
       e.axle_friction > 0 && ['axle friction μ', pin(e.axle_friction, e.axle_radius)],

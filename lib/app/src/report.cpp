@@ -93,7 +93,7 @@ std::string describe_parts(const Engine& engine, UnitSystem units) {
     parts.push_back("a tapered beam, D " + q(*p.D_hinge, UnitDimension::length) + " at the hinge to " + q(*p.D_tip, UnitDimension::length) + " at the tip");
   } else if (p.beam_cm) {
     parts.push_back("a beam with its centre of mass " + q(*p.beam_cm, UnitDimension::length) + " from the pivot and " +
-                    q(*p.beam_inertia, UnitDimension::inertia) + " about it");
+                    q(*given_beam_inertia(engine), UnitDimension::inertia) + " about it");
   }
   if (p.counterweight_inertia > 0) parts.push_back("a counterweight of " + q(p.counterweight_inertia, UnitDimension::inertia) + " about its centre");
   const auto pin = [&](const Pin& pin, const char* what) {
@@ -133,7 +133,10 @@ std::string calibration_table(const Calibration& c, const MeasuredRange& measure
   out << "measured: R = " << q(measured.range, UnitDimension::length)
       << (measured.uncertainty > 0 ? " ± " + q(measured.uncertainty, UnitDimension::length) : std::string()) << "\n"
       << "without friction the engine throws " << q(c.frictionless.capacity.R, UnitDimension::length) << " (" << describe_assumptions(e, settings) << ")\n";
-  const std::string band = measured.uncertainty > 0 ? " (" + sig(c.value_low) + " to " + sig(c.value_high) + " for the range's ± 1 sigma)" : "";
+  const std::string band = measured.uncertainty > 0
+                               ? " (" + sig(c.value_low) + " to " + sig(c.value_high) + " for the range's ± 1 sigma" +
+                                     (c.band_clipped ? "; the short end is clipped at the strongest friction the engine runs with" : "") + ")"
+                               : "";
   if (c.fitted == FrictionFit::pin_coefficient)
     out << "fitted: one friction coefficient at both pins, mu = " << sig(c.value) << band << ", on the axle's radius " << q(p.axle.radius, UnitDimension::length)
         << " and the hinge pin's " << q(p.hinge.radius, UnitDimension::length) << "\n";
@@ -202,7 +205,7 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
     }
   }
   out << energy_budget_text(v, units);
-  out << "energy drift: " << sig(v.energy_drift, 2) << " of Delta U" << (engine.parts.any() || settings.drag_in_sling ? ", with the work of the losses" : "") << "\n";
+  out << "energy drift: " << sig(v.energy_drift, 2) << " of Delta U" << (shot_design(engine, settings).parts.dissipates() ? ", with the work of the losses" : "") << "\n";
   for (const std::string& w : v.warnings) out << "warning: " << w << "\n";
   for (const std::string& n : v.notes) out << "note: " << n << "\n";
   if (check) {

@@ -117,7 +117,9 @@ void write_engine(nlohmann::ordered_json& out, const Engine& engine) {
   if (engine.psi_i_deg != 0) out["psi_i_deg"] = engine.psi_i_deg;  // only a propped engine carries it
   // The parts as built, as given, so that the engine reads back the same.
   const EngineParts& p = engine.parts;
-  if (p.beam_cm) out["beam_cm"] = *p.beam_cm, out["beam_inertia"] = *p.beam_inertia;
+  if (p.beam_cm) out["beam_cm"] = *p.beam_cm;
+  if (p.beam_inertia) out["beam_inertia"] = *p.beam_inertia;
+  if (p.beam_gyration) out["beam_gyration"] = *p.beam_gyration;
   if (p.D_tip) out["D_hinge"] = *p.D_hinge, out["D_tip"] = *p.D_tip;
   if (p.counterweight_inertia > 0) out["counterweight_inertia"] = p.counterweight_inertia;
   if (p.axle.friction > 0 || p.axle.radius > 0) out["axle_friction"] = p.axle.friction, out["axle_radius"] = p.axle.radius;
@@ -162,19 +164,13 @@ void engine_parts(const DesignValues& v, const std::string& where, EngineRecord&
   Engine& e = in.engine;
   EngineParts& p = e.parts;
   const auto name = [&](const char* key) { return engine_key_name(where, key); };
-  if (v.beam_inertia && v.beam_gyration)
-    throw Error(ErrorKind::usage, name("beam_inertia") + " and " + name("beam_gyration") + " both give the beam's inertia (I = mb k^2); give one");
   if (v.D_tip || v.D_hinge) {
     if (v.mb) throw Error(ErrorKind::usage, name("D_hinge") + " and " + name("D_tip") + " give the beam's mass from its wood; leave out " + name("mb") + " (or the taper)");
     if (v.D) throw Error(ErrorKind::usage, name("D_hinge") + " and " + name("D_tip") + " give the beam's diameter at the pivot; leave out " + name("D"));
   }
   p.beam_cm = v.beam_cm;
   p.beam_inertia = v.beam_inertia;
-  if (v.beam_gyration) {
-    if (!(*v.beam_gyration > 0))
-      throw Error(ErrorKind::bad_number, name("beam_gyration") + " = " + format_significant(*v.beam_gyration, 6) + ": a radius of gyration must be positive");
-    p.beam_inertia = e.mb * *v.beam_gyration * *v.beam_gyration;
-  }
+  p.beam_gyration = v.beam_gyration;  // I = mb k^2 with mb as the run has it (given_beam_inertia)
   p.D_hinge = v.D_hinge, p.D_tip = v.D_tip;
   if (v.box_width || v.box_height) {
     if (!v.box_width || !v.box_height) throw Error(ErrorKind::usage, "a box counterweight needs both " + name("box_width") + " and " + name("box_height"));
@@ -568,6 +564,8 @@ nlohmann::ordered_json calibration_json(const Calibration& c, const MeasuredRang
   out["value"] = c.value;
   out["value_low"] = c.value_low;
   out["value_high"] = c.value_high;
+  out["band_clipped"] = c.band_clipped;
+  if (c.jams_at) out["jams_at"] = *c.jams_at;
   const EngineParts& p = c.engine.parts;
   out["axle_friction"] = p.axle.friction, out["hinge_friction"] = p.hinge.friction, out["trough_friction"] = p.trough_friction;
   out["R_frictionless"] = c.frictionless.capacity.R;

@@ -60,24 +60,41 @@ Calibration calibrate(const Engine& engine, const MeasuredRange& measured, const
     throw Error(ErrorKind::out_of_range, "the measured range " + format_significant(measured.range, 4) + " m is not shorter than the engine's without friction, " +
                                              format_significant(R0, 4) + " m: friction only shortens a shot; check the engine's values, the air (--air) "
                                              "and the target level");
-  // The largest friction allowed, or below it the largest whose shot still runs.
+  // The largest friction allowed, or, where the engine jams (or sticks) before it, the largest it
+  // still runs with: bisected to 1e-6 of the allowed range between the last that ran and the first
+  // that did not.
   double top = largest_value(engine, out.fitted), R_top = 0;
-  for (int tries = 0;; ++tries) {
-    try {
-      R_top = range_at(top);
-      break;
-    } catch (const Error& e) {
-      if (e.kind() != ErrorKind::numerical || tries == 20) throw;
-      top /= 2;
+  try {
+    R_top = range_at(top);
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::numerical) throw;
+    double runs = 0, fails = top;
+    R_top = R0;
+    while (fails - runs > 1e-6 * top) {
+      const double middle = (runs + fails) / 2;
+      try {
+        R_top = range_at(middle), runs = middle;
+      } catch (const Error& failure) {
+        if (failure.kind() != ErrorKind::numerical) throw;
+        fails = middle;
+      }
     }
+    top = runs;
+    out.jams_at = fails;
   }
   auto value_for = [&](double range) {
     if (range >= R0) return 0.0;
-    if (range <= R_top) return top;
+    if (range <= R_top) {
+      out.band_clipped = true;
+      return top;
+    }
     return find_root([&](double value) { return range_at(value) - range; }, 0, top, 0, 1e-9);
   };
   if (!(measured.range > R_top))
-    throw Error(ErrorKind::out_of_range, "even friction coefficients of " + format_significant(largest_coefficient, 2) + " throw " +
+    throw Error(ErrorKind::out_of_range, (out.jams_at ? "the strongest friction the engine runs with (" + format_significant(top, 4) +
+                                                            (out.fitted == FrictionFit::scale ? " times the coefficients" : " at both pins") +
+                                                            "; more jams it) throws "
+                                                      : "even friction coefficients of " + format_significant(largest_coefficient, 2) + " throw ") +
                                              format_significant(R_top, 4) + " m, farther than the measured " + format_significant(measured.range, 4) +
                                              " m: friction alone does not explain the shortfall; check the engine's values and the air");
   out.value = value_for(measured.range);

@@ -143,6 +143,9 @@ struct Jacobians {
 // whatever the quadrature's error in the force.
 struct AirForces {
   Vec2 on_projectile, on_rope;  // the total on the rope
+  // The rope, a straight massless link pinned at both ends, passes each piece's load across it to
+  // its ends by the lever rule: the share a at the projectile (a = 0 at the tip, 1 there).
+  Vec2 rope_at_projectile;
   Generalized Q{};
   double projectile_power = 0, rope_power = 0;  // the work the air does per time (< 0: it brakes)
 };
@@ -173,6 +176,7 @@ AirForces air_forces(const Coefficients& e, Phase phase, const State& s, const T
     const Vec2 normal = rel + along * (-dot(rel, along));
     const Vec2 force = normal * (-e.parts->rope_drag * norm(normal) * weight[k] * length);
     out.on_rope = out.on_rope + force;
+    out.rope_at_projectile = out.rope_at_projectile + force * a;
     out.Q[0] += dot(force, j.tip_theta * (1 - a) + j.projectile_theta * a);
     out.Q[2] += dot(force, j.projectile_phi * a);
     out.rope_power += dot(force, v);
@@ -210,13 +214,15 @@ double sign(double x) { return (x > 0) - (x < 0); }
                                  e.l * (ct * td * td + st * a.theta + e.l4 * (sf * fd * fd - cf * out.phi_ddot))};
   const Vec2& p_acc = out.projectile_acceleration;
   if (phase == Phase::trough) {
-    // Along x: mu a_x = T cos phi + friction + drag; along y (a_y = 0; the drag is horizontal
-    // here): 0 = T sin phi + N - mu. Friction -mu_t sgn(v_x) N, so
-    // T (cos phi + mu_t sgn(v_x) sin phi) = mu a_x - drag_x + mu_t sgn(v_x) mu.
+    // The sling pulls with its tension T along it and, with the rope's drag, its share P across
+    // it. Along x: mu a_x = T cos phi + P_x + friction + drag; along y (a_y = 0; the drag on the
+    // stone is horizontal here): 0 = T sin phi + P_y + N - mu. Friction -mu_t sgn(v_x) N, so
+    // T (cos phi + mu_t sgn(v_x) sin phi) = mu a_x - drag_x - P_x + mu_t sgn(v_x) (mu - P_y).
     const double slide = e.parts->trough_friction * sign(s.theta_dot * (ct * cf + st * sf));  // v_x = l cos(th - phi)/cos phi th'
-    const double tension = (e.mu * p_acc.x - air.on_projectile.x + slide * e.mu) / (cf + slide * sf);
-    out.sling_on_projectile = {tension * cf, tension * sf};
-    out.normal_force = e.mu - tension * sf;
+    const Vec2& across = air.rope_at_projectile;
+    const double tension = (e.mu * p_acc.x - air.on_projectile.x - across.x + slide * (e.mu - across.y)) / (cf + slide * sf);
+    out.sling_on_projectile = {tension * cf + across.x, tension * sf + across.y};
+    out.normal_force = e.mu - tension * sf - across.y;
     out.trough_friction = -slide * out.normal_force;
   } else if (phase == Phase::lifted) {
     out.sling_on_projectile = {e.mu * p_acc.x - air.on_projectile.x, e.mu * (p_acc.y + 1) - air.on_projectile.y};
@@ -258,12 +264,12 @@ struct FrictionLaw {
 // are affine in Q (solve is linear in its right-hand side) and so are the forces (Newton's laws,
 // and the trough's closed form with the state's sign of sliding): three solves give them exactly
 // as F0 + G Q. The friction of that affine model, a function of (Q_theta, Q_psi) through |F_R|,
-// |F_H| and N alone, is then solved by Newton's method, its Jacobian by forward differences
-// (step 1e-7 (1 + |Q|)), to a residual below 1e-14 (1 + |Q|) in M g L2: round-off. The trough's
-// friction alone is affine and one step solves it; the pins' |F| is smooth, and two or three
-// steps do. A fourth solve gives the accelerations. Where no Q exists or it is not unique (a
-// large coefficient near a sling standing upright in the trough: Painleve's paradox), the
-// iteration fails and the shot says so (unsettled_friction).
+// |F_H| and N alone, is then solved by Newton's method with its exact Jacobian (d|F|/dQ =
+// F . G/|F|), to a residual below 1e-14 (1 + |Q|) in M g L2: round-off. The trough's friction
+// alone is affine and one step solves it; the pins' |F| is smooth, and two or three steps do. A
+// fourth solve gives the accelerations. Where no Q exists or it is not unique (a large
+// coefficient near a sling standing upright in the trough: Painleve's paradox), the iteration
+// fails and the shot says so (unsettled_friction).
 constexpr int max_newton_steps = 30;
 
 struct Evaluation {
@@ -378,7 +384,8 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   out.normal_force = f.normal_force;
   out.sling_on_tip = f.sling_on_tip;
   // The sling runs from the projectile to the tip along (cos phi, sin phi): its tension is the
-  // pull on the projectile along it; a sling can pull but not push.
+  // pull on the projectile along it (the rope's drag adds a share across it); a sling can pull
+  // but not push.
   out.sling_tension = f.sling_on_projectile.x * cf + f.sling_on_projectile.y * sf;
   // Positions of the hinge, the counterweight and the tip (dynamics.hpp), and heights above the
   // engine's base, which lies l cos(theta_i) below the pivot (H = L1 cos theta_i).

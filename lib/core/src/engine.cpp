@@ -10,7 +10,7 @@
 
 namespace trebuchet {
 bool EngineParts::any() const {
-  return beam_cm || beam_inertia || D_hinge || D_tip || counterweight_inertia > 0 || axle.friction > 0 || hinge.friction > 0 ||
+  return beam_cm || beam_inertia || beam_gyration || D_hinge || D_tip || counterweight_inertia > 0 || axle.friction > 0 || hinge.friction > 0 ||
          trough_friction > 0 || rope_diameter > 0;
 }
 
@@ -45,6 +45,11 @@ TaperedBeam tapered_beam(double L1, double L2, double D_hinge, double D_tip, dou
   return beam;
 }
 
+std::optional<double> given_beam_inertia(const Engine& e) {
+  if (e.parts.beam_gyration) return e.mb * *e.parts.beam_gyration * *e.parts.beam_gyration;
+  return e.parts.beam_inertia;
+}
+
 double wood_beam_mass(const Engine& e) {
   if (e.parts.D_hinge && e.parts.D_tip) return tapered_beam(e.L1, e.L2, *e.parts.D_hinge, *e.parts.D_tip, e.material.wood_density).whole.mass;
   return beam_mass(e.D, beam_length(e), e.material);
@@ -60,12 +65,15 @@ ScaledDesign scaled_design(const Engine& engine) {  // eq:Design
     const TaperedBeam beam = tapered_beam(engine.L1, L2, *p.D_hinge, *p.D_tip, engine.material.wood_density);
     b.beam = BuiltParts::Beam{beam.whole.cm / L2, beam.whole.inertia / inertia_unit};
     b.short_section = BuiltParts::Section{beam.short_section.mass / M, beam.short_section.cm / L2, beam.short_section.inertia / inertia_unit};
-  } else if (p.beam_cm && p.beam_inertia) {
-    b.beam = BuiltParts::Beam{*p.beam_cm / L2, *p.beam_inertia / inertia_unit};
+  } else if (const auto inertia = given_beam_inertia(engine); p.beam_cm && inertia) {
+    b.beam = BuiltParts::Beam{*p.beam_cm / L2, *inertia / inertia_unit};
   }
   b.counterweight_inertia = p.counterweight_inertia / inertia_unit;
-  b.axle_friction = p.axle.friction * p.axle.radius / L2;
-  b.hinge_friction = p.hinge.friction * p.hinge.radius / L2;
+  // A journal turning in its bearing under a load F is held back at the friction circle: the
+  // torque is F r sin(atan mu) = F r mu/sqrt(1 + mu^2), mu r to first order in mu.
+  const auto friction_radius = [](const Pin& pin) { return pin.friction / std::sqrt(1 + pin.friction * pin.friction) * pin.radius; };
+  b.axle_friction = friction_radius(p.axle) / L2;
+  b.hinge_friction = friction_radius(p.hinge) / L2;
   b.trough_friction = p.trough_friction;
   return out;
 }
@@ -122,7 +130,12 @@ void check_parts(const Engine& e) {
   };
   pin(p.axle, "axle_friction", "axle_radius", "the axle", std::min(e.L1, e.L2), "the shorter beam section");
   pin(p.hinge, "hinge_friction", "hinge_radius", "the hinge pin", std::min(e.L2, e.L3), "the short beam section and the counterweight arm");
-  if (p.beam_cm.has_value() != p.beam_inertia.has_value())
+  if (p.beam_inertia && p.beam_gyration)
+    throw Error(ErrorKind::usage, "{{beam_inertia}} and {{beam_gyration}} both give the beam's inertia (I = mb k^2); give one");
+  if (p.beam_gyration && !(*p.beam_gyration > 0))
+    throw Error(ErrorKind::bad_number, "{{beam_gyration}} = " + say(*p.beam_gyration) + ": a radius of gyration must be positive");
+  const std::optional<double> inertia = given_beam_inertia(e);
+  if (p.beam_cm.has_value() != inertia.has_value())
     throw Error(ErrorKind::usage, std::string(p.beam_cm ? "{{beam_cm}} needs the beam's moment of inertia about the pivot too: give {{beam_inertia}}"
                                                         : "{{beam_inertia}} needs the beam's centre of mass too: give {{beam_cm}}") +
                                       " (or describe a tapered beam by {{D_hinge}} and {{D_tip}})");
@@ -138,8 +151,9 @@ void check_parts(const Engine& e) {
     // About the pivot I = I_cm + mb c^2 >= mb c^2; and no part of the beam reaches beyond its
     // longer section (its thickness adds a few per cent at most).
     const double least = e.mb * *p.beam_cm * *p.beam_cm, most = 1.1 * e.mb * std::max(e.L1 * e.L1, e.L2 * e.L2);
-    if (!(*p.beam_inertia >= least && *p.beam_inertia <= most))
-      throw Error(ErrorKind::bad_number, "{{beam_inertia}} = " + say(*p.beam_inertia) + " kg m^2: a beam of " + say(e.mb) +
+    if (!(*inertia >= least && *inertia <= most))
+      throw Error(ErrorKind::bad_number, std::string(p.beam_gyration ? "{{beam_gyration}} = " + say(*p.beam_gyration) + " m gives I = mb k^2 = " : "{{beam_inertia}} = ") +
+                                             say(*inertia) + " kg m^2: a beam of " + say(e.mb) +
                                              " kg with its centre of mass " + say(*p.beam_cm) + " m from the pivot has one from mb c^2 = " + say(least) +
                                              " to " + say(most) + " kg m^2 about the pivot (a uniform beam: mb (L1^2 - L1 L2 + L2^2)/3)");
   }

@@ -376,14 +376,17 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   // reverses a few times in a shot. A pin whose friction can hold that swing makes it stick and
   // slip, which Coulomb's law as modelled here (sliding only) leaves out: the turn then reverses
   // at nearly every step, and the shot says so rather than spend its step budget.
-  int hinge_reversals = 0;
+  int hinge_reversals = 0, held_steps = 0;
   double last_turn = 0;
   auto count_step = [&](const char* phase, const State& s) {
     if (++result.steps > settings.max_steps)
       fail("step budget of " + std::to_string(settings.max_steps) + " steps exceeded in " + phase +
            "; loosen {{rtol}} or choose a higher-order {{stepper}}");
     const double turn = s.psi_dot - s.theta_dot;
-    if (e.parts.hinge_friction > 0 && turn * last_turn < 0 && ++hinge_reversals > 30)
+    // Sticking shows as reversals at the accepted steps, or as steps that creep on with the turn
+    // held at round-off while the rejected ones chatter about it.
+    held_steps = std::abs(turn) < 1e-9 * (1 + std::abs(s.theta_dot)) ? held_steps + 1 : 0;
+    if (e.parts.hinge_friction > 0 && ((turn * last_turn < 0 && ++hinge_reversals > 30) || held_steps > 50))
       fail("the hinge pin's friction makes the counterweight stick to the beam and slip, which the model leaves out "
            "(docs/verifier.md, \"Real engines\"); give a smaller {{hinge_friction}} or {{hinge_radius}}");
     last_turn = turn;

@@ -27,6 +27,10 @@ struct Calibration {
   FrictionFit fitted = FrictionFit::scale;
   double value = 0;                  ///< the scale, or mu at both pins, that matches the range
   double value_low = 0, value_high = 0;  ///< those that match the range plus and minus its uncertainty (low: the longer range)
+  /// The band's short end lies beyond the strongest friction the engine runs with: value_high
+  /// is that friction, not the one matching the range less its uncertainty.
+  bool band_clipped = false;
+  std::optional<double> jams_at;     ///< the friction value at which the engine jams, when below coefficients of 2
   Engine engine;                     ///< with the fitted friction
   Verification shot;                 ///< of the calibrated engine
   Verification frictionless;         ///< of the same engine without friction

@@ -33,8 +33,8 @@ struct BuiltParts {
   /// at the pivot; none where the beam is given only as a whole.
   std::optional<Section> short_section;
   double counterweight_inertia = 0;     ///< about the counterweight's own centre of mass
-  double axle_friction = 0;             ///< mu r/L2 of the axle at the pivot (Coulomb)
-  double hinge_friction = 0;            ///< mu r/L2 of the counterweight's hinge pin
+  double axle_friction = 0;             ///< the axle's friction circle over L2, r mu/sqrt(1 + mu^2)/L2 (Coulomb)
+  double hinge_friction = 0;            ///< the same for the counterweight's hinge pin
   double trough_friction = 0;           ///< mu of the projectile sliding on the trough
   std::optional<Drag> drag;             ///< the air on the projectile in phases I and II
   /// rho_air Cd d L2^2/(2 M) of the sling's rope of diameter d: its drag per scaled length is

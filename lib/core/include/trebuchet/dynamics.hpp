@@ -98,7 +98,7 @@ class Dynamics {
 
   /// Accelerations only (the right-hand side of the ODE), cheaper than snapshot. In the trough
   /// phi and phi_dot of `state` are not read: they follow from theta. With friction, the
-  /// accelerations are found by fixed-point passes (dynamics.cpp); false where they do not
+  /// accelerations are found by Newton's method on the forces' affine model (dynamics.cpp); false where they do not
   /// settle (a friction too strong for the model), and then `out` is not set.
   bool accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power = nullptr) const;
 

@@ -11,7 +11,8 @@
 namespace trebuchet {
 
 /// A pin that carries a load while its parts turn on it: Coulomb friction gives a torque of
-/// mu r times the force it carries, against the turn.
+/// F r mu/sqrt(1 + mu^2) against the turn, F the force it carries (the friction circle of a
+/// journal in its bearing; mu r F to first order).
 struct Pin {
   double friction = 0;  ///< coefficient of sliding friction mu, scaled
   double radius = 0;    ///< r [m]
@@ -24,6 +25,9 @@ struct EngineParts {
   /// centre of mass from the pivot toward the tip [m] and its moment of inertia about the pivot
   /// [kg m^2], both or neither.
   std::optional<double> beam_cm, beam_inertia;
+  /// Or, for the inertia, the radius of gyration k about the pivot [m]: I = mb k^2, with mb as
+  /// the run has it (from D and the run's wood, when it follows from them).
+  std::optional<double> beam_gyration;
   /// A round beam of the engine's wood whose diameter runs linearly from D_hinge at the short
   /// end to D_tip at the long one [m]; it gives mb, the centre of mass, the inertia, and D at the pivot.
   std::optional<double> D_hinge, D_tip;
@@ -66,6 +70,10 @@ struct TaperedBeam {
   double D_pivot = 0;  ///< the diameter at the pivot [m]
 };
 TaperedBeam tapered_beam(double L1, double L2, double D_hinge, double D_tip, double wood_density);
+
+/// The moment of inertia about the pivot of a beam given by its centre of mass [kg m^2]: as
+/// given, or mb k^2 from its radius of gyration; none for the uniform or the tapered beam.
+std::optional<double> given_beam_inertia(const Engine& engine);
 
 /// The mass of the engine's beam from its wood [kg]: tapered (EngineParts::D_hinge, D_tip), or
 /// round of diameter D (eq:BeamMass).
