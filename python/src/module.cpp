@@ -1,0 +1,40 @@
+// trebuchet._trebuchet: each request of trebuchet::api (api.hpp) as a function of JSON text to
+// JSON text, read as the programs read a JSON file. The package python/trebuchet turns Python
+// values into the text and the answer into dicts and NumPy arrays. A refusal comes back as the
+// api's error object ({"error", "kind", "names"}), which the package raises. The interpreter's
+// lock is released for the call: notebooks can run several on threads.
+#include <pybind11/pybind11.h>
+
+#include <string>
+
+#include "trebuchet/app/api.hpp"
+#include "trebuchet/app/text_input.hpp"
+
+namespace {
+
+using Request = nlohmann::ordered_json (*)(const nlohmann::json&);
+
+std::string answer(Request request, const std::string& text) {
+  try {
+    return request(trebuchet::parse_json(text, "the request", "a JSON object of the request's keys (docs/python.md)")).dump();
+  } catch (const trebuchet::Error& e) {
+    return trebuchet::api::error_json(e).dump();
+  } catch (const std::exception& e) {
+    return trebuchet::api::error_json(trebuchet::Error(trebuchet::ErrorKind::numerical, std::string("internal error: ") + e.what())).dump();
+  }
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_trebuchet, module) {
+  module.doc() = "trebuchet's library as JSON requests (trebuchet/app/api.hpp); use the package trebuchet";
+  namespace py = pybind11;
+  const auto bind = [&](const char* name, Request request, const char* doc) {
+    module.def(name, [request](const std::string& text) { return answer(request, text); }, py::arg("request"), doc,
+               py::call_guard<py::gil_scoped_release>());
+  };
+  bind("design", trebuchet::api::design, "the calculator's design: JSON text in, JSON text out");
+  bind("shot", trebuchet::api::shot, "one shot of a design");
+  bind("complete", trebuchet::api::complete, "the completion of an attested engine");
+  bind("monte_carlo", trebuchet::api::monte_carlo, "a Monte Carlo run");
+}

@@ -1,0 +1,96 @@
+"""trebuchet: design and check swinging-counterweight trebuchets (Horsdal's model).
+
+The same library as the programs trebuchet-calc and trebuchet-verify: each function takes the
+programs' keys (docs/schema.md) as keyword arguments, values as SI floats or strings with a unit
+("150m", "3.1t"), and returns the programs' JSON record as a dict; a shot's series and a Monte
+Carlo run's samples come as NumPy arrays. A refused request raises TrebuchetError with the
+programs' message. docs/python.md has the reference.
+"""
+import json
+
+import numpy as np
+
+from . import _trebuchet
+
+__all__ = ["TrebuchetError", "design", "shot", "fit", "complete", "monte_carlo"]
+
+
+class TrebuchetError(ValueError):
+    """A request the library refuses: the programs' message, its kind (docs/exit_codes.md) and
+    the keys it names."""
+
+    def __init__(self, message, kind, names):
+        super().__init__(message)
+        self.kind = kind
+        self.names = names
+
+
+def _call(function, request):
+    try:
+        text = json.dumps(request, allow_nan=False)
+    except ValueError as e:  # NaN or infinity, which JSON has not
+        raise TrebuchetError(f"a value is not a finite number ({e}); give finite numbers", "bad_number", []) from None
+    except TypeError as e:
+        raise TrebuchetError(f"a value is neither a number nor a text ({e})", "usage", []) from None
+    answer = json.loads(function(text))
+    if isinstance(answer, dict) and set(answer) == {"error", "kind", "names"}:
+        raise TrebuchetError(answer["error"], answer["kind"], answer["names"])
+    return answer
+
+
+def _arrays(record):
+    """Lists of numbers (None for no value) as float arrays (NaN for no value); other lists stay."""
+    for key, value in record.items():
+        if isinstance(value, list) and value and all(v is None or isinstance(v, (int, float)) for v in value):
+            record[key] = np.array([np.nan if v is None else v for v in value], dtype=float)
+    return record
+
+
+def design(**givens):
+    """The calculator's optimal engine for two givens, e.g. design(R="150m", m="50kg")."""
+    return _call(_trebuchet.design, givens)
+
+
+def shot(design, *, series=False, **settings):
+    """One shot of an engine (a dict of the programs' keys). Settings: air (False, True or a dict of
+    density, drag_coefficient, projectile_density, wind, drag_in_sling), release ("Q", "eps",
+    "range"), n, target_level, range_from ("pivot", "release"), tolerance, modulus_of_rupture.
+    With series=True the answer's "series" holds the motion, its frames as arrays."""
+    request = dict(settings, design=design)
+    if series:
+        request["series"] = True
+    answer = _call(_trebuchet.shot, request)
+    if series:
+        _arrays(answer["series"]["frames"])
+        _arrays(answer["series"]["flight"])
+        _arrays(answer["series"]["phase_two"])
+    return answer
+
+
+def fit(design, R, T, **settings):
+    """The design's shape (l, l4, mu_b, theta_i, F) fitted in mu and size to the capacity R, T."""
+    return _call(_trebuchet.shot, dict(settings, design=dict(design, R=R, T=T), fit=True))
+
+
+def complete(attested, **settings):
+    """The best engine that keeps the attested values (Lb, L1, L2, H, L4, M, m, mb, D, l,
+    theta_i_deg, F, ...)."""
+    return _call(_trebuchet.complete, dict(settings, attested=attested))
+
+
+def monte_carlo(design=None, *, attested=None, samples=10000, seed=1, **settings):
+    """A Monte Carlo run over values given as ranges ("2.5t..3.5t") or spreads ("3.5m±0.2m"), of
+    shots (design) or completions (attested). The answer is the programs' report, with
+    "samples_R", "samples_T", "samples_eps", "samples_v": arrays over the samples in order (NaN
+    where a sample failed)."""
+    if (design is None) == (attested is None):
+        raise TrebuchetError("give a design (for shots) or attested values (for completions), one of them", "usage", ["design", "attested"])
+    request = dict(settings, samples=samples, seed=seed)
+    request["design" if design is not None else "attested"] = design if design is not None else attested
+    parts = _call(_trebuchet.monte_carlo, dict(request, first=0, count=samples))
+    outcomes = parts["outcomes"]
+    answer = _call(_trebuchet.monte_carlo, dict(request, outcomes=outcomes))
+    values = np.array([o if isinstance(o, list) else [np.nan] * 4 for o in outcomes], dtype=float).reshape(-1, 4)
+    for k, name in enumerate(["R", "T", "eps", "v"]):
+        answer["samples_" + name] = values[:, k]
+    return answer

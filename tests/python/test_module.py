@@ -1,0 +1,132 @@
+"""The Python module against the programs: the same engines give the same JSON, a refusal the
+same message. Usage: test_module.py CALC VERIFY (with the module on PYTHONPATH)."""
+import json
+import math
+import os
+import random
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+import trebuchet
+
+CALC, VERIFY = sys.argv[1], sys.argv[2]
+failures = []
+
+
+def program(*args, stdin=None):
+    done = subprocess.run(list(args), input=stdin, capture_output=True, text=True)
+    return done
+
+
+def compare(name, ours, theirs, tolerance=1e-12):
+    """Every number of the programs' record, key by key (nested), to `tolerance` relative."""
+    worst = 0.0
+
+    def walk(a, b, path):
+        nonlocal worst
+        if isinstance(b, dict):
+            for key in b:
+                if key in ("wall_time_s", "simulations"):
+                    continue
+                if key not in a:
+                    failures.append(f"{name}: {path}{key} missing from the module's answer")
+                    continue
+                walk(a[key], b[key], f"{path}{key}.")
+        elif isinstance(b, list):
+            if len(a) != len(b):
+                failures.append(f"{name}: {path} has {len(a)} items, the program's {len(b)}")
+                return
+            for k, (x, y) in enumerate(zip(a, b)):
+                walk(x, y, f"{path}{k}.")
+        elif isinstance(b, (int, float)) and not isinstance(b, bool):
+            difference = abs(a - b) / max(abs(b), 1e-300) if b != 0 else abs(a)
+            worst = max(worst, difference)
+            if difference > tolerance:
+                failures.append(f"{name}: {path} {a} against the program's {b}")
+        elif a != b:
+            failures.append(f"{name}: {path} {a!r} against the program's {b!r}")
+
+    walk(ours, theirs, "")
+    return worst
+
+
+def shot_by_program(design, *flags):
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        json.dump(design, f)
+    try:
+        done = program(VERIFY, "shot", f.name, "--format", "json", *flags)
+    finally:
+        os.unlink(f.name)
+    return done
+
+
+engines = {
+    "Alcala la Vieja Ca": {"L1": "4.13m", "L2": "0.88m", "F": "2/3", "L4": "3.55m", "M": "3.11t", "m": "50kg", "mb": "174kg"},
+    "Denny's engine (tab:Denny)": json.load(open(os.path.join(os.path.dirname(__file__), "..", "cli", "denny_standard.json"))),
+}
+random.seed(25)
+while len(engines) < 22:  # 20 random designs the calculator covers; a pair it refuses is drawn again
+    R, m = random.uniform(80, 500), random.uniform(10, 300)
+    try:
+        engines[f"random design R = {R:.1f} m, m = {m:.1f} kg"] = trebuchet.design(R=R, m=m)
+    except trebuchet.TrebuchetError:
+        pass
+
+worst = 0.0
+for name, design in engines.items():
+    done = shot_by_program(design)
+    if done.returncode != 0:
+        failures.append(f"{name}: the program refused it: {done.stderr.strip()}")
+        continue
+    worst = max(worst, compare(name, trebuchet.shot(design), json.loads(done.stdout)))
+print(f"shots: {len(engines)} engines, worst relative difference {worst:.3g} (tolerance 1e-12)")
+
+# The calculator: the module's design is the program's.
+done = program(CALC, "--R", "150m", "--m", "50kg", "--format", "json")
+print(f"calculator: worst {compare('calculator', trebuchet.design(R='150m', m='50kg'), json.loads(done.stdout)):.3g}")
+
+# In air with a target below, released for the range, and a series as arrays.
+ca = engines["Alcala la Vieja Ca"]
+ours = trebuchet.shot(ca, air={"wind": "5m/s"}, release="range", target_level="-10m", series=True)
+done = shot_by_program(ca, "--air", "--wind", "5m/s", "--quality", "range", "--target-level", "-10m")
+theirs = json.loads(done.stdout)
+print(f"air, range, -10 m: worst {compare('air', {k: v for k, v in ours.items() if k != 'series'}, theirs):.3g}")
+frames = ours["series"]["frames"]
+if not (isinstance(frames["t"], np.ndarray) and frames["t"].dtype == float and np.all(np.diff(frames["t"]) >= 0)):
+    failures.append("series: frames.t is not an increasing float array")
+
+# A refusal: the same message as the program's, as an exception.
+bad = dict(ca, L4="-3m")
+done = shot_by_program(bad)
+message = done.stderr.strip().split(": ", 1)[1]
+try:
+    trebuchet.shot(bad)
+    failures.append("a negative sling was not refused")
+except trebuchet.TrebuchetError as e:
+    if str(e) != message:
+        failures.append(f"refusal: {str(e)!r} against the program's {message!r}")
+    if e.kind != "bad_number":
+        failures.append(f"refusal: kind {e.kind}")
+try:
+    trebuchet.shot(dict(ca, M=math.nan))
+    failures.append("NaN was not refused")
+except trebuchet.TrebuchetError:
+    pass
+
+# Monte Carlo: the samples as arrays, their percentiles the report's.
+mc = trebuchet.monte_carlo(dict(ca, M="3t..3.2t"), samples=300, seed=7)
+done = program(VERIFY, "shot", "--L1", "4.13m", "--L2", "0.88m", "--F", "2/3", "--L4", "3.55m", "--M", "3t..3.2t", "--m", "50kg", "--mb", "174kg",
+               "--samples", "300", "--seed", "7", "--format", "json")
+theirs = json.loads(done.stdout)
+for key in ("percentiles", "worked"):
+    compare("monte carlo", {key: mc[key]}, {key: theirs[key]})
+if mc["samples_R"].shape != (300,) or not np.all(np.isfinite(mc["samples_R"])):
+    failures.append("monte carlo: samples_R is not 300 finite ranges")
+
+for failure in failures:
+    print("FAIL", failure)
+print("python module:", "FAILED" if failures else "passed")
+sys.exit(1 if failures else 0)
