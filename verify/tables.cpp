@@ -42,14 +42,7 @@ int run_optimize(const Options& o) {
   request.material = o.material.over(Material{});
   request.settings = shot_settings(o);
   if (o.l) {
-    // Below l = 2 the long arm is hardly longer than the short one: no engine of the paper (l
-    // from 3 to 59), and most shapes there leave no room for the counterweight arm at all.
-    if (!(*o.l >= 2))
-      throw Error(ErrorKind::usage, "--l " + format_significant(*o.l, 4) + " is below the beam ratios the fixed-l search covers (2 to " +
-                                        format_number(max_beam_ratio) + "; the paper's engines have 3 to 59); give a larger --l");
-    if (!(*o.l < max_beam_ratio))
-      throw Error(ErrorKind::usage, "--l " + format_significant(*o.l, 4) + " is beyond the optimizer's beam ratios (below " + format_number(max_beam_ratio) +
-                                        ", appendix B's largest is 59); give a smaller --l");
+    check_fixed_beam_ratio(*o.l, "--l");
     request.fixed_l = o.l;
   }
   const auto start = std::chrono::steady_clock::now();

@@ -12,7 +12,7 @@ import numpy as np
 
 from . import _trebuchet
 
-__all__ = ["TrebuchetError", "design", "shot", "fit", "complete", "monte_carlo"]
+__all__ = ["TrebuchetError", "design", "shot", "fit", "optimize", "complete", "monte_carlo"]
 
 
 class TrebuchetError(ValueError):
@@ -70,6 +70,18 @@ def shot(design, *, series=False, **settings):
 def fit(design, R, T, **settings):
     """The design's shape (l, l4, mu_b, theta_i, F) fitted in mu and size to the capacity R, T."""
     return _call(_trebuchet.shot, dict(settings, design=dict(design, R=R, T=T), fit=True))
+
+
+def optimize(R, T=None, *, m=None, **options):
+    """The ab-initio optimum for the capacity R with T (or with the stone's m): a list of the optima
+    found (one, or one per branch at a fixed l). Options: theta_i_deg, F, l, the material and the
+    settings of shot."""
+    request = dict(options, R=R)
+    if T is not None:
+        request["T"] = T
+    if m is not None:
+        request["m"] = m
+    return _call(_trebuchet.optimize, request)
 
 
 def complete(attested, **settings):

@@ -11,6 +11,7 @@
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/completion.hpp"
 #include "trebuchet/format.hpp"
+#include "trebuchet/optimizer.hpp"
 #include "trebuchet/quantity.hpp"
 #include "trebuchet/scaling_table.hpp"
 #include "trebuchet/uncertainty.hpp"
@@ -243,6 +244,33 @@ ordered_json design(const json& request) {
   OptimalEngine optimal = design_optimal_engine(table, r);
   for (std::string& warning : optimal.warnings) warning = with_words(warning, key_word);
   return design_json(optimal);
+}
+
+ordered_json optimize(const json& request) {
+  require_keys(request, with_settings({"R", "T", "m", "theta_i_deg", "F", "l", "beta2", "youngs_modulus", "wood_density", "g"}), "optimize");
+  const auto R = positive_value(request, "R", UnitDimension::length), T = positive_value(request, "T", UnitDimension::energy),
+             m = positive_value(request, "m", UnitDimension::mass);
+  if (!R || T.has_value() == m.has_value())
+    throw Error(ErrorKind::usage, "optimize needs a capacity: {{R}} with {{T}}, or {{R}} with the stone's {{m}}; e.g. R 425m and T 224kJ");
+  OptimizeRequest r;
+  r.capacity = {*R, T.value_or(0), 0};
+  r.projectile_mass = m;
+  r.theta_i_deg = read_value(request, "theta_i_deg", UnitDimension::angle, "").value_or(standard_theta_i_deg);
+  r.F = read_value(request, "F", UnitDimension::dimensionless, "").value_or(standard_F);
+  MaterialOverrides material = overrides_of(request);
+  material.beta2 = positive_value(request, "beta2", UnitDimension::dimensionless);
+  material.youngs_modulus = positive_value(request, "youngs_modulus", UnitDimension::pressure);
+  material.wood_density = positive_value(request, "wood_density", UnitDimension::density);
+  material.g = positive_value(request, "g", UnitDimension::acceleration);
+  r.material = material.over(Material{});
+  r.settings = settings_of(request);
+  if (const auto l = read_value(request, "l", UnitDimension::dimensionless, "")) {
+    check_fixed_beam_ratio(*l, "{{l}}");
+    r.fixed_l = l;
+  }
+  ordered_json all = ordered_json::array();
+  for (const Optimum& optimum : trebuchet::optimize(r)) all.push_back(optimum_json(optimum, 0));
+  return all;
 }
 
 ordered_json shot(const json& request) {

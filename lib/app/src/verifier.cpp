@@ -7,6 +7,7 @@
 #include "trebuchet/capacity_fit.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
+#include "trebuchet/optimizer.hpp"
 #include "trebuchet/app/pictures.hpp"
 #include "trebuchet/app/report.hpp"
 #include "trebuchet/app/csv.hpp"
@@ -55,6 +56,17 @@ Material MaterialOverrides::over(Material base) const {
   base.modulus_of_rupture = modulus_of_rupture.value_or(base.modulus_of_rupture);
   base.g = g.value_or(base.g);
   return base;
+}
+
+void check_fixed_beam_ratio(double l, const std::string& name) {
+  // Below l = 2 the long arm is hardly longer than the short one: no engine of the paper (l
+  // from 3 to 59), and most shapes there leave no room for the counterweight arm at all.
+  if (!(l >= 2))
+    throw Error(ErrorKind::usage, name + " " + format_significant(l, 4) + " is below the beam ratios the fixed-l search covers (2 to " +
+                                      format_number(max_beam_ratio) + "; the paper's engines have 3 to 59); give a larger " + name);
+  if (!(l < max_beam_ratio))
+    throw Error(ErrorKind::usage, name + " " + format_significant(l, 4) + " is beyond the optimizer's beam ratios (below " + format_number(max_beam_ratio) +
+                                      ", appendix B's largest is 59); give a smaller " + name);
 }
 
 DesignReport check_design(const EngineRecord& record, const DesignCheck& check) {

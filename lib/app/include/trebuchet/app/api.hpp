@@ -23,6 +23,11 @@ nlohmann::ordered_json design(const nlohmann::json& request);
 /// the viewer draws (pictures.hpp's shot_series_json).
 nlohmann::ordered_json shot(const nlohmann::json& request);
 
+/// The ab-initio optimum (trebuchet-verify optimize --format json, an array of the optima found):
+/// "R" with "T" or with the stone's "m"; optional "theta_i_deg", "F", "l" (a fixed beam ratio),
+/// the material (beta2, youngs_modulus, wood_density, g) and the settings of shot.
+nlohmann::ordered_json optimize(const nlohmann::json& request);
+
 /// The completion of an attested engine (trebuchet-verify complete --format json): "attested"
 /// (Lb, L1, L2, H, L4, M, m, mb, D, l, theta_i_deg, F, the material's keys, and the parts as built
 /// that complete takes: the pins' friction, counterweight_inertia, the rope) and the settings

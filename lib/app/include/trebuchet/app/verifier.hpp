@@ -32,6 +32,11 @@ struct DesignInputs {
 /// Error(usage) for text that holds no design.
 DesignInputs read_design_inputs(const std::string& text, const std::string& path);
 
+/// Refuses (Error(usage), naming `name`) a fixed beam ratio the optimizer's fixed-l search does
+/// not cover: below 2 (no engine of the paper; most shapes leave no room for the counterweight
+/// arm) or from max_beam_ratio up.
+void check_fixed_beam_ratio(double l, const std::string& name);
+
 /// The material of a run over a design's own: eq:kMkD's wood, beta2 and g where given.
 struct MaterialOverrides {
   std::optional<double> beta2, wood_density, youngs_modulus, modulus_of_rupture, g;  ///< scaled; [kg/m^3]; [Pa]; [Pa]; [m/s^2]
