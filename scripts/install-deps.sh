@@ -33,6 +33,8 @@ if [ "$scope" != native ]; then
     dpkg-dev               # apt-get source gsl: GSL for WebAssembly from Debian's own source
     nodejs                 # bundles the page and drives its tests
     chromium               # the page's tests, headless, driven by playwright-core
+    python3-dev pybind11-dev python3-numpy  # the Python module (docs/python.md)
+    jupyter-nbconvert python3-ipykernel python3-matplotlib  # its example notebook, run in CI
   )
 fi
 

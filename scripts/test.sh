@@ -17,7 +17,9 @@ stage "installing what is missing"
 bash scripts/install-deps.sh
 
 stage "Release build"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTREBUCHET_WERROR=ON -DTREBUCHET_BUILD_BENCHMARKS=ON >/dev/null
+# With the Python module for Debian's own interpreter (docs/python.md).
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTREBUCHET_WERROR=ON -DTREBUCHET_BUILD_BENCHMARKS=ON \
+  -DTREBUCHET_PYTHON=ON -DPython3_EXECUTABLE=/usr/bin/python3 >/dev/null
 cmake --build build -j"$jobs"
 stage "browser page build (WebAssembly)"
 bash scripts/build-web.sh build-web
