@@ -373,13 +373,7 @@ CompletionRequest completion_request(const Options& o) {
   a.theta_i_deg = d.theta_i_deg, a.F = d.F;
   request.material = o.material.over(Material{});
   request.settings = shot_settings(o);
-  EngineParts& p = request.parts;
-  p.counterweight_inertia = d.counterweight_inertia.value_or(0);
-  p.axle = {d.axle_friction.value_or(0), d.axle_radius.value_or(0)};
-  p.hinge = {d.hinge_friction.value_or(0), d.hinge_radius.value_or(0)};
-  p.trough_friction = d.trough_friction.value_or(0);
-  p.rope_diameter = d.rope_diameter.value_or(0);
-  p.rope_cd = d.rope_cd.value_or(p.rope_cd);
+  request.parts = independent_parts(d);
   return request;
 }
 

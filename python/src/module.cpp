@@ -8,29 +8,12 @@
 #include <string>
 
 #include "trebuchet/app/api.hpp"
-#include "trebuchet/app/text_input.hpp"
-
-namespace {
-
-using Request = nlohmann::ordered_json (*)(const nlohmann::json&);
-
-std::string answer(Request request, const std::string& text) {
-  try {
-    return request(trebuchet::parse_json(text, "the request", "a JSON object of the request's keys (docs/python.md)")).dump();
-  } catch (const trebuchet::Error& e) {
-    return trebuchet::api::error_json(e).dump();
-  } catch (const std::exception& e) {
-    return trebuchet::api::error_json(trebuchet::Error(trebuchet::ErrorKind::numerical, std::string("internal error: ") + e.what())).dump();
-  }
-}
-
-}  // namespace
 
 PYBIND11_MODULE(_trebuchet, module) {
   module.doc() = "trebuchet's library as JSON requests (trebuchet/app/api.hpp); use the package trebuchet";
   namespace py = pybind11;
-  const auto bind = [&](const char* name, Request request, const char* doc) {
-    module.def(name, [request](const std::string& text) { return answer(request, text); }, py::arg("request"), doc,
+  const auto bind = [&](const char* name, trebuchet::api::Request request, const char* doc) {
+    module.def(name, [request](const std::string& text) { return trebuchet::api::answer_text(request, text, "docs/python.md"); }, py::arg("request"), doc,
                py::call_guard<py::gil_scoped_release>());
   };
   bind("design", trebuchet::api::design, "the calculator's design: JSON text in, JSON text out");

@@ -6,22 +6,10 @@
 #include <string>
 
 #include "trebuchet/app/api.hpp"
-#include "trebuchet/app/text_input.hpp"
 
 namespace {
 
-using Request = nlohmann::ordered_json (*)(const nlohmann::json&);
-
-std::string answer(Request request, const std::string& text) {
-  try {
-    // As the programs read a JSON file: bounded depth, no key given twice, no number beyond a double.
-    return request(trebuchet::parse_json(text, "the request", "a JSON object of the request's keys (docs/web.md)")).dump();
-  } catch (const trebuchet::Error& e) {
-    return trebuchet::api::error_json(e).dump();
-  } catch (const std::exception& e) {
-    return trebuchet::api::error_json(trebuchet::Error(trebuchet::ErrorKind::numerical, std::string("internal error: ") + e.what())).dump();
-  }
-}
+std::string answer(trebuchet::api::Request request, const std::string& text) { return trebuchet::api::answer_text(request, text, "docs/web.md"); }
 
 std::string design(const std::string& text) { return answer(trebuchet::api::design, text); }
 std::string shot(const std::string& text) { return answer(trebuchet::api::shot, text); }

@@ -153,13 +153,13 @@ CompletionRequest completion_request_of(const json& attested, const ShotSettings
   material.modulus_of_rupture = overrides.modulus_of_rupture;
   request.material = material.over(Material{});
   request.settings = settings;
-  EngineParts& p = request.parts;
-  p.counterweight_inertia = value("counterweight_inertia").value_or(0);
-  p.axle = {value("axle_friction").value_or(0), value("axle_radius").value_or(0)};
-  p.hinge = {value("hinge_friction").value_or(0), value("hinge_radius").value_or(0)};
-  p.trough_friction = value("trough_friction").value_or(0);
-  p.rope_diameter = value("rope_diameter").value_or(0);
-  p.rope_cd = value("rope_cd").value_or(p.rope_cd);
+  DesignValues parts;
+  parts.counterweight_inertia = value("counterweight_inertia");
+  parts.axle_friction = value("axle_friction"), parts.axle_radius = value("axle_radius");
+  parts.hinge_friction = value("hinge_friction"), parts.hinge_radius = value("hinge_radius");
+  parts.trough_friction = value("trough_friction");
+  parts.rope_diameter = value("rope_diameter"), parts.rope_cd = value("rope_cd");
+  request.parts = independent_parts(parts);
   return request;
 }
 
@@ -399,6 +399,16 @@ ordered_json monte_carlo(const json& request) {
   ordered_json answer = monte_carlo_json(report);
   answer.erase("wall_time_s");  // a time is the caller's to measure; the report is the same on any machine
   return answer;
+}
+
+std::string answer_text(Request request, const std::string& text, const std::string& where_documented) {
+  try {
+    return request(parse_json(text, "the request", "a JSON object of the request's keys (" + where_documented + ")")).dump();
+  } catch (const Error& e) {
+    return error_json(e).dump();
+  } catch (const std::exception& e) {
+    return error_json(Error(ErrorKind::numerical, std::string("internal error: ") + e.what())).dump();
+  }
 }
 
 ordered_json error_json(const Error& error) {

@@ -157,12 +157,24 @@ DesignValues read_design_values(const nlohmann::json& object, const std::string&
   return v;
 }
 
+EngineParts independent_parts(const DesignValues& v) {
+  EngineParts p;
+  p.counterweight_inertia = v.counterweight_inertia.value_or(0);
+  p.axle = {v.axle_friction.value_or(0), v.axle_radius.value_or(0)};
+  p.hinge = {v.hinge_friction.value_or(0), v.hinge_radius.value_or(0)};
+  p.trough_friction = v.trough_friction.value_or(0);
+  p.rope_diameter = v.rope_diameter.value_or(0);
+  p.rope_cd = v.rope_cd.value_or(p.rope_cd);
+  return p;
+}
+
 namespace {
 
 // The parts of an engine as built from the values given (EngineParts); check_engine checks them.
 void engine_parts(const DesignValues& v, const std::string& where, EngineRecord& in) {
   Engine& e = in.engine;
   EngineParts& p = e.parts;
+  p = independent_parts(v);
   const auto name = [&](const char* key) { return engine_key_name(where, key); };
   if (v.D_tip || v.D_hinge) {
     if (v.mb) throw Error(ErrorKind::usage, name("D_hinge") + " and " + name("D_tip") + " give the beam's mass from its wood; leave out " + name("mb") + " (or the taper)");
@@ -181,14 +193,7 @@ void engine_parts(const DesignValues& v, const std::string& where, EngineRecord&
       check_ordinary(value, 1e-6, 1e6, key, "m", "side of the counterweight's box");
     }
     p.counterweight_inertia = e.M * (*v.box_width * *v.box_width + *v.box_height * *v.box_height) / 12;  // a uniform box about its centre
-  } else {
-    p.counterweight_inertia = v.counterweight_inertia.value_or(0);
   }
-  p.axle = {v.axle_friction.value_or(0), v.axle_radius.value_or(0)};
-  p.hinge = {v.hinge_friction.value_or(0), v.hinge_radius.value_or(0)};
-  p.trough_friction = v.trough_friction.value_or(0);
-  p.rope_diameter = v.rope_diameter.value_or(0);
-  p.rope_cd = v.rope_cd.value_or(p.rope_cd);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "trebuchet/error.hpp"
 
@@ -42,6 +43,13 @@ nlohmann::ordered_json complete(const nlohmann::json& request);
 /// v] or {"failure", "kind"}), and "outcomes" (all of them, in sample order) gives the report of
 /// the whole run, the same as one run of every sample.
 nlohmann::ordered_json monte_carlo(const nlohmann::json& request);
+
+/// A request as text, for callers across a language boundary (the page's bindings, the Python
+/// module): read as the programs read a JSON file (bounded depth, no key given twice, no number
+/// beyond a double), answered as text. A refusal, or an internal error, is error_json's answer,
+/// never an exception. `where_documented` ends the message of text that is no request.
+using Request = nlohmann::ordered_json (*)(const nlohmann::json&);
+std::string answer_text(Request request, const std::string& text, const std::string& where_documented);
 
 /// An error as an answer: {"error": the message, naming the request's keys, "kind": "bad_number",
 /// "names": the keys it speaks of}.

@@ -59,6 +59,10 @@ struct DesignValues {
   std::optional<double> axle_friction, axle_radius, hinge_friction, hinge_radius, trough_friction, rope_diameter, rope_cd;
 };
 
+/// The parts as built that do not depend on the engine's other values (complete's, CompletionRequest::parts):
+/// the pins' friction, the counterweight's inertia, the trough's friction and the rope, from the values given.
+EngineParts independent_parts(const DesignValues& values);
+
 /// The keys of the engine as built, with their dimensions, as JSON, CSV and the flags name them.
 struct PartKey {
   std::optional<double> DesignValues::*member;
