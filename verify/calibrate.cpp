@@ -5,6 +5,7 @@
 
 #include "program.hpp"
 #include "run.hpp"
+#include "trebuchet/app/output_files.hpp"
 #include "trebuchet/app/report.hpp"
 #include "trebuchet/app/text_input.hpp"
 #include "trebuchet/app/verifier.hpp"
@@ -19,8 +20,10 @@ int run_calibrate(const Options& o) {
   std::string where;
   if (!o.input.empty()) {
     const DesignInputs in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}"), o.input);
-    if (!in.single || in.rows.size() != 1)
+    // One engine: an object, or an array or CSV of one row.
+    if (in.rows.size() != 1)
       throw Error(ErrorKind::usage, "calibrate fits one engine; " + source_name(o.input) + " holds " + std::to_string(in.rows.size()));
+    if (!in.rows.front().error.empty()) throw Error(ErrorKind::usage, in.where.front() + ": " + in.rows.front().error);
     where = in.where.front();
     values = read_design_values(in.rows.front().design, where);
   }
@@ -29,7 +32,20 @@ int run_calibrate(const Options& o) {
   engine.material = o.material.over(engine.material);
   if (record.mb_from_D) engine.mb = wood_beam_mass(engine);  // in the wood of the run
   const ShotSettings settings = shot_settings(o);
+  for (double m : o.predict_m) check_ordinary(m, 1e-9, 1e12, "predict_m", "kg", "projectile mass to predict with");
+  for (double M : o.predict_M) check_ordinary(M, 1e-9, 1e12, "predict_M", "kg", "counterweight mass to predict with");
+  if (!o.series.empty()) refuse_output_over_input(o.series, "series", {o.input});
   const Calibration calibration = calibrate(engine, *o.measured, settings);
+  if (!o.series.empty() || !o.plot.empty()) {  // the calibrated engine's shot, drawn and written as shot draws and writes one
+    DesignCheck check;
+    check.settings = settings;
+    check.series_path = o.series;
+    check.series_dt_s = o.series_dt_s;
+    check.plot_dir = o.plot;
+    check.inputs = {o.input};
+    check.units = o.units;
+    check_design(EngineRecord{calibration.engine, std::nullopt, false}, check);
+  }
   std::vector<Prediction> predictions;
   for (double m : o.predict_m) {
     Engine changed = calibration.engine;

@@ -271,8 +271,12 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
     }, "the range the engine threw, with its uncertainty (one standard deviation), e.g. 34.4m±1.5m");
     for (const auto& [flag, list, help] : {std::tuple{"--predict-m", &o.predict_m, "predict the calibrated engine's range with this projectile mass (repeat for more)"},
                                            {"--predict-M", &o.predict_M, "predict it with this counterweight mass (repeat for more)"}})
-      parsed_option(c, flag, [list = list, flag = std::string(flag)](const std::string& text) {
-        list->push_back(parse_positive(text, UnitDimension::mass, flag));
+      // Every value given, each read and checked (CLI11 hands a std::string option its first only).
+      c->add_option_function<std::vector<std::string>>(flag, [list = list, flag = std::string(flag)](const std::vector<std::string>& texts) {
+        for (const std::string& text : texts) {
+          if (text.empty()) throw Error(ErrorKind::usage, flag + " was given an empty value; give a value after it, or leave it out");
+          list->push_back(parse_positive(text, UnitDimension::mass, flag));
+        }
       }, help)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     target_level_option(c, o, false);
     release_options(c, o);
@@ -351,6 +355,8 @@ ShotSettings shot_settings(const Options& o) {
     throw Error(ErrorKind::usage, "--air-density, --cd, --projectile and --wind describe the air; add --air to fly through it (vacuum is the default)");
   if (o.drag_in_sling && !o.air) throw Error(ErrorKind::usage, "--drag-in-sling lets the air act before the release; add --air (vacuum is the default)");
   settings.drag_in_sling = o.drag_in_sling;
+  if (o.series_dt_s > 0 && o.series.empty())
+    throw Error(ErrorKind::usage, "--series-dt samples the series; add --series FILE to write it, or leave --series-dt out");
   if (o.air) {
     Air air;
     air.density = o.air_density.value_or(air.density);

@@ -36,13 +36,18 @@
   function call(name, request) {
     if (!request || typeof request !== 'object' || Array.isArray(request))
       return refused(`the request must be an object of keys, like {R: "150m", m: "50kg"}; got ${Array.isArray(request) ? 'an array' : String(request)}`, 'usage');
-    const bad = notFinite(request, '', 0);
-    if (bad) return refused(`${bad[0]}: ${bad[1]} is not a finite number; give a number or a value with a unit like "150m"`, 'bad_number', [bad[0]]);
+    // Reading the request runs its code, if it has any (a getter, a Proxy, toJSON): whatever that
+    // throws is the request's fault, refused by name like a BigInt or an object that holds itself.
     let text;
     try {
+      const bad = notFinite(request, '', 0);
+      if (bad) return refused(`${bad[0]}: ${bad[1]} is not a finite number; give a number or a value with a unit like "150m"`, 'bad_number', [bad[0]]);
       text = JSON.stringify(request);
-    } catch (e) {  // a BigInt, or an object that holds itself
-      return refused(`the request cannot be written as JSON (${e.message}); give numbers, strings, true or false, and objects of them`, 'usage');
+      if (typeof text !== 'string') throw new TypeError('it writes as nothing');
+    } catch (e) {
+      let why = 'it threw';
+      try { why = String(e && e.message ? e.message : e); } catch (_) { /* what it threw cannot be read either */ }
+      return refused(`the request cannot be written as JSON (${why}); give plain objects of numbers, strings, true or false`, 'usage');
     }
     try {
       return JSON.parse(module[name](text));

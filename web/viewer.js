@@ -239,7 +239,7 @@
     const energy = chart({ width,
       title: 'Where the energy goes',
       subtitle: shot.energy && shot.energy.flight_drag
-        ? `At the release the projectile holds ε = ${significant(100 * shot.eps, 3)} % of ΔU; in flight the air takes ${significant(shot.energy.flight_drag / energySize, 3)} ${energyUnit} more`
+        ? `At the release the projectile holds ε = ${significant(100 * shot.eps, 3)} % of ΔU; ${shot.energy.flight_drag > 0 ? 'in flight the air takes' : 'in flight the wind gives'} ${significant(Math.abs(shot.energy.flight_drag) / energySize, 3)} ${energyUnit} more`
         : `ΔU (eq:DU): what beam and counterweight give up, falling to rest. At the release the projectile holds ε = ${significant(100 * shot.eps, 3)} % of it`,
       xLabel: 'time [s]', yLabel: `energy gained since rest [${energyUnit}]`, xName: 't', xUnit: 's', yUnit: energyUnit,
       lines: [

@@ -32,6 +32,8 @@ def _call(function, request):
         raise TrebuchetError(f"a value is not a finite number ({e}); give finite numbers", "bad_number", []) from None
     except TypeError as e:
         raise TrebuchetError(f"a value is neither a number nor a text ({e})", "usage", []) from None
+    except RecursionError:  # the library refuses such depth anyway (its JSON reader's limit)
+        raise TrebuchetError("the request nests lists or dicts too deeply to be a request; give a design's keys with values", "usage", []) from None
     answer = json.loads(function(text))
     if isinstance(answer, dict) and set(answer) == {"error", "kind", "names"}:
         raise TrebuchetError(answer["error"], answer["kind"], answer["names"])

@@ -37,6 +37,7 @@ std::string key_word(std::string_view name) {
   if (name == "cd") return "air.drag_coefficient";
   if (name == "projectile") return "air.projectile_density";
   if (name == "wind") return "air.wind";
+  if (name == "drag_in_sling") return "air.drag_in_sling";
   return std::string(name);
 }
 

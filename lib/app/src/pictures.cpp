@@ -389,7 +389,9 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
          << "set title \"Where the energy goes\\nat the release the projectile holds ε = " << format_significant(100 * v.eps, 3)
          << (losses ? " % of ΔU; the gap, 1 − ε, stays in beam and counterweight or went to friction and drag\\n"
                     : " % of ΔU; the gap, 1 − ε, stays in beam and counterweight\\n")
-         << (v.energy.flight_drag != 0 ? "after the release the air takes " + format_significant(v.energy.flight_drag / 1000, 3) + " kJ more in flight\\n" : "")
+         << (v.energy.flight_drag > 0 ? "after the release the air takes " + format_significant(v.energy.flight_drag / 1000, 3) + " kJ more in flight\\n"
+             : v.energy.flight_drag < 0 ? "after the release the wind gives " + format_significant(-v.energy.flight_drag / 1000, 3) + " kJ more in flight\\n"
+                                        : "")
          << gnuplot_quoted(scene) << "\" noenhanced\n"
          << "set arrow from " << num(seconds(m.release)) << ", graph 0 to " << num(seconds(m.release)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
          << "set arrow from " << num(seconds(m.release)) << "," << num(taken_kJ) << " to " << num(seconds(m.release)) << "," << num(drop_kJ)

@@ -117,7 +117,9 @@ std::string energy_budget_text(const Verification& v, UnitSystem units) {
   for (int k = 0; k < loss_count; ++k)
     if (e.losses[k] != 0) text += ", " + std::string(names[k]) + " " + share(e.losses[k]);
   text += "\n";
-  if (e.flight_drag != 0) text += "in flight the air took " + quantity_text(e.flight_drag, UnitDimension::energy, units, 4) + " more\n";
+  // A tailwind can give the projectile more than the drag takes.
+  if (e.flight_drag > 0) text += "in flight the air took " + quantity_text(e.flight_drag, UnitDimension::energy, units, 4) + " more\n";
+  if (e.flight_drag < 0) text += "in flight the wind gave " + quantity_text(-e.flight_drag, UnitDimension::energy, units, 4) + " more than the drag took\n";
   return text;
 }
 

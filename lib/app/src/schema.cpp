@@ -83,6 +83,17 @@ const std::vector<PartKey>& part_keys() {
   return keys;
 }
 
+namespace {
+// The parts as built (part_keys), each in SI: the last CSV columns of the verifier, so that its
+// CSV reads back.
+std::vector<std::string> part_columns() {
+  std::vector<std::string> columns;
+  for (const PartKey& part : part_keys())
+    columns.push_back(std::string(part.key) + (part.dimension == UnitDimension::length ? "_m" : part.dimension == UnitDimension::inertia ? "_kg*m2" : ""));
+  return columns;
+}
+}  // namespace
+
 std::vector<Field> engine_fields(const Engine& e) {
   const ScaledDesign s = scaled_design(e);
   return {{"theta_i_deg", e.theta_i_deg},
@@ -176,7 +187,9 @@ void engine_parts(const DesignValues& v, const std::string& where, EngineRecord&
   EngineParts& p = e.parts;
   p = independent_parts(v);
   const auto name = [&](const char* key) { return engine_key_name(where, key); };
-  if (v.D_tip || v.D_hinge) {
+  // The taper gives mb and D; flags may not give them too, and a file may only as the programs
+  // write them, agreeing with the taper (checked in engine_record, once the taper is known).
+  if ((v.D_tip || v.D_hinge) && where.empty()) {
     if (v.mb) throw Error(ErrorKind::usage, name("D_hinge") + " and " + name("D_tip") + " give the beam's mass from its wood; leave out " + name("mb") + " (or the taper)");
     if (v.D) throw Error(ErrorKind::usage, name("D_hinge") + " and " + name("D_tip") + " give the beam's diameter at the pivot; leave out " + name("D"));
   }
@@ -207,7 +220,7 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   e.M = required(v.M, "M", where, "the counterweight mass", "14.3t");
   e.m = required(v.m, "m", where, "the projectile mass", "100kg");
   // Without mb, a beam diameter gives it from the wood (eq:BeamMass), below.
-  if (v.mb || (!v.D && !v.D_tip && !v.D_hinge)) e.mb = required(v.mb, "mb", where, "the beam mass", "660kg", where.empty() ? ", or the beam's diameter {{D}}, from which it follows" : ", or \"D\", the beam's diameter");
+  if ((v.mb && !v.D_tip && !v.D_hinge) || (!v.mb && !v.D && !v.D_tip && !v.D_hinge)) e.mb = required(v.mb, "mb", where, "the beam mass", "660kg", where.empty() ? ", or the beam's diameter {{D}}, from which it follows" : ", or \"D\", the beam's diameter");
   e.theta_i_deg = v.theta_i_deg.value_or(standard_theta_i_deg);
   e.psi_i_deg = v.psi_i_deg.value_or(0);
   // D = 0 is how the outputs write "not given" (they read back); below 0 it is a mistake.
@@ -244,6 +257,12 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
     e.mb = wood_beam_mass(e);
     e.D = tapered_beam(e.L1, e.L2, *e.parts.D_hinge, *e.parts.D_tip, material.wood_density).D_pivot;
     in.mb_from_D = true;
+    // A file's mb and D (as the programs write them) must be the taper's, to round-off of text.
+    const auto name = [&](const char* key) { return engine_key_name(where, key); };
+    for (const auto& [given, derived, key] : {std::tuple{v.mb, e.mb, "mb"}, {v.D, e.D, "D"}})
+      if (given && !(std::abs(*given - derived) <= 1e-9 * derived))
+        throw Error(ErrorKind::usage, name("D_hinge") + " and " + name("D_tip") + " give " + name(key) + " = " + format_significant(derived, 9) +
+                                          " from the wood, but the input says " + format_significant(*given, 9) + "; leave out " + name(key) + " (or the taper)");
   }
   if (v.D && !v.mb && !v.D_tip) {  // eq:BeamMass: a round beam of the material's wood
     if (!(e.D > 0)) throw Error(ErrorKind::bad_number, engine_key_name(where, "D") + " = 0 gives no beam; give the beam's diameter, or its mass " + engine_key_name(where, "mb"));
@@ -287,6 +306,17 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
   const std::vector<std::string_view> dropped = {"X", "Y", "Lb", "H", "l", "l4", "L", "mu", "mu_b", "K", "DeltaU", "amplification",
                                                  "branch", "warnings", "air"};
   CsvReader reader(input, source);
+  // The verifier's own CSV (it alone has R_vacuum_m): its results are dropped, and the capacity
+  // it checked, predicted_R_m and predicted_T_J, is the one to check again.
+  const std::vector<std::string>& header_cells = reader.header();
+  const bool own_output = std::find(header_cells.begin(), header_cells.end(), "R_vacuum_m") != header_cells.end();
+  std::vector<std::string> results;
+  if (own_output) {
+    std::vector<std::string> inputs = part_columns();
+    for (const Field& field : engine_fields(Engine{})) inputs.push_back(csv_column(field));
+    for (const std::string& column : verification_csv_header())
+      if (std::find(inputs.begin(), inputs.end(), column) == inputs.end()) results.push_back(column);
+  }
   struct Column {
     enum { engine, dropped, passed, error } role;
     ColumnName name;
@@ -294,7 +324,11 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
   std::vector<Column> columns;
   DesignRows out;
   for (const std::string& header : reader.header()) {
-    if (const auto name = split_column_name(header, engine_keys)) {
+    if (own_output && (header == "predicted_R_m" || header == "predicted_T_J")) {
+      columns.push_back({Column::engine, {header == "predicted_R_m" ? "R" : "T", header == "predicted_R_m" ? "m" : "J"}});
+    } else if (own_output && std::find(results.begin(), results.end(), header) != results.end()) {
+      columns.push_back({Column::dropped, {header, ""}});
+    } else if (const auto name = split_column_name(header, engine_keys)) {
       const std::string key = name->key == "theta" ? "theta_i_deg" : name->key == "psi_i" ? "psi_i_deg" : name->key;
       for (std::size_t k = 0; k < columns.size(); ++k)
         if (columns[k].role == Column::engine && columns[k].name.key == key)
@@ -477,6 +511,15 @@ std::vector<Field> check_fields(const std::optional<CapacityCheck>& check) {
   return {{"predicted_R", c.predicted.R, "m"}, {"predicted_T", c.predicted.T, "J"}, {"deviation_R", c.deviation_R}, {"deviation_T", c.deviation_T}};
 }
 
+// The parts as built, as write_engine gives them (empty where the engine has no such part).
+std::vector<std::string> part_cells(const Engine& engine, int digits) {
+  nlohmann::ordered_json written;
+  write_engine(written, engine);
+  std::vector<std::string> cells;
+  for (const PartKey& part : part_keys()) cells.push_back(written.contains(part.key) ? csv_number(written[part.key].get<double>(), digits) : "");
+  return cells;
+}
+
 }  // namespace
 
 std::vector<std::string> verification_csv_header() {
@@ -486,6 +529,7 @@ std::vector<std::string> verification_csv_header() {
     for (const Field& field : fields) header.push_back(csv_column(field));
   header.insert(header.end(), {"pass", "air", "release", "n", "target_level_m", "warnings", "notes"});
   for (const Field& field : energy_fields(v)) header.push_back(csv_column(field));
+  for (const std::string& column : part_columns()) header.push_back(column);
   return header;
 }
 
@@ -502,6 +546,7 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
   row.insert(row.end(), {check ? (check->pass ? "yes" : "no") : "", air, assumed["release"].get<std::string>(),
                          csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), join(v.warnings, "; "), join(v.notes, "; ")});
   for (const Field& field : energy_fields(v)) row.push_back(csv_number(field.value, digits));
+  for (const std::string& cell : part_cells(engine, digits)) row.push_back(cell);
   return row;
 }
 

@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 
 #include <fast_float/fast_float.h>
+#include <fmt/format.h>
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
@@ -345,14 +347,32 @@ PrintUnit print_unit(double si, UnitDimension dimension, UnitSystem system) {
   return {"", 1};
 }
 
+// `value` rounded to `digits` significant digits (at most 7), written without an exponent
+// when the rounded value lies in [1, 1e7): "17260", not "1.726e+04"; otherwise as printf's %g.
+// The digits are {fmt}'s correctly rounded ones, placed about the decimal point as text, so that
+// no number goes through text and back (a subnormal would not come back: issue 34).
+std::string rounded_plainly(double value, int digits) {
+  const std::string scientific = fmt::format("{:.{}e}", value, digits - 1);  // "-1.846e+04"
+  const std::size_t e = scientific.find('e');
+  const int exponent = std::atoi(scientific.c_str() + e + 1);
+  if (!std::isfinite(value) || exponent < 0 || exponent >= 7 || digits > 7) return format_significant(value, digits);
+  const bool negative = scientific.front() == '-';
+  std::string mantissa;  // the significant digits, "1846"
+  for (std::size_t k = negative ? 1 : 0; k < e; ++k)
+    if (scientific[k] != '.') mantissa += scientific[k];
+  const std::size_t integer_digits = static_cast<std::size_t>(exponent) + 1;
+  if (mantissa.size() < integer_digits) mantissa.append(integer_digits - mantissa.size(), '0');
+  std::string fraction = mantissa.substr(integer_digits);
+  while (!fraction.empty() && fraction.back() == '0') fraction.pop_back();
+  return (negative ? "-" : "") + mantissa.substr(0, integer_digits) + (fraction.empty() ? "" : "." + fraction);
+}
+
 }  // namespace
 
 std::string quantity_text(double si, UnitDimension dimension, UnitSystem system, int digits) {
   auto in = [&](UnitSystem s) {
     const PrintUnit unit = print_unit(si, dimension, s);
-    // Rounded to `digits`, written without an exponent below 10^7: "17260 lbf", not "1.726e+04 lbf".
-    const double value = std::stod(format_significant(si / unit.to_si, digits));
-    std::string text = format_significant(value, std::abs(value) >= 1 && std::abs(value) < 1e7 ? 7 : digits);
+    std::string text = rounded_plainly(si / unit.to_si, digits);
     if (*unit.suffix) text += std::string(" ") + unit.suffix;
     return text;
   };

@@ -212,12 +212,39 @@ Completion complete_engine(const CompletionRequest& request) {
   search.integrator.rtol = search.integrator.atol = 1e-8;
   search.integrator.max_energy_drift = 1e-6;
   search.loads = false;
+  // Q and eps are properties of the release, which the air after it does not change: unless the
+  // air acts before the release too, or the range in air is maximised, the trial engines fly in
+  // vacuum, and only the winner through the request's air. In air that no engine can fly (a
+  // headwind that blows every projectile back) the search then costs what it does in vacuum.
+  if (criterion.release != Release::range && !search.drag_in_sling) search.air.reset();
   // An engine works when its shot runs and the model holds up to the release (no warning: the
   // sling pulls, the counterweight and the tip stay above the base); else it costs 0, worse
   // than any that works, and the last reason is kept for the message.
   std::optional<Error> last_failure;
   bool only_integration_failed = true;  // every engine tried failed in its integration
+  // A search none of whose engines has worked sees a flat cost and wanders blind. When the first
+  // blind_trials all fail in air while one of them works in vacuum, it is the air that no engine
+  // of these values flies in (a headwind that blows every projectile back): the search stops
+  // there, and the simplex's remaining steps cost nothing.
+  const int blind_trials = 4 * static_cast<int>(x0.size() + 1);
+  std::vector<std::vector<double>> tried;
+  bool blind_in_air = false;
+  const auto works_in_vacuum = [&](const std::vector<double>& x) {
+    ShotSettings vacuum = search;
+    vacuum.air.reset(), vacuum.drag_in_sling = false;
+    try {
+      return verify_engine(build(p, x), vacuum).warnings.empty();
+    } catch (const Error&) {
+      return false;
+    }
+  };
   auto cost = [&](const std::vector<double>& x) {
+    if (blind_in_air) return 0.0;
+    if (!(best > 0) && search.air && out.simulations < blind_trials) tried.push_back(x);
+    if (!(best > 0) && search.air && out.simulations == blind_trials) {
+      blind_in_air = std::any_of(tried.begin(), tried.end(), works_in_vacuum);
+      if (blind_in_air) return 0.0;
+    }
     ++out.simulations;
     try {
       const Engine e = build(p, x);
@@ -238,6 +265,11 @@ Completion complete_engine(const CompletionRequest& request) {
   } else {
     cost(x0);
     minimize_simplex(cost, x0, 0.1, 1e-5, 600);
+    if (blind_in_air)
+      throw Error(ErrorKind::out_of_range, "in " + describe_air(*search.air, 0) + " none of the " + std::to_string(out.simulations) +
+                                               " engines tried with these attested values works, where one of them works in vacuum" +
+                                               (last_failure ? " (the last tried: " + last_failure->named_message() + ")" : "") +
+                                               "; give less drag or a weaker headwind ({{wind}})");
     if (!(best > 0))
       throw Error(last_failure && only_integration_failed ? ErrorKind::numerical : ErrorKind::out_of_range,
                   "no choice of " + join(out.chosen, ", ") + " gives a working engine with these attested values" +

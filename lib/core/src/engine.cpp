@@ -107,10 +107,12 @@ void proportion_of_beam(const Engine& e) {
 void check_parts(const Engine& e) {
   const EngineParts& p = e.parts;
   const auto say = [](double value) { return format_significant(value, 6); };
+  // 0 is none; a coefficient below 1e-6 is none too in effect (the best bearings have 1e-3), and
+  // calibrate scales the coefficients up to 2 by their ratio, which must stay finite.
   const auto coefficient = [&](double mu, const char* key, const char* what) {
-    if (!(mu >= 0 && mu <= 2))
+    if (!(mu == 0 || (mu >= 1e-6 && mu <= 2)))
       throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + say(mu) + ": the coefficient of friction of " + what +
-                                             " must lie between 0 and 2 (greased iron on iron is near 0.1, dry oak on iron near 0.5)");
+                                             " must be 0 (none) or lie from 1e-06 to 2 (greased iron on iron is near 0.1, dry oak on iron near 0.5)");
   };
   coefficient(p.axle.friction, "axle_friction", "the axle at the pivot");
   coefficient(p.hinge.friction, "hinge_friction", "the counterweight's hinge pin");
@@ -134,6 +136,7 @@ void check_parts(const Engine& e) {
     throw Error(ErrorKind::usage, "{{beam_inertia}} and {{beam_gyration}} both give the beam's inertia (I = mb k^2); give one");
   if (p.beam_gyration && !(*p.beam_gyration > 0))
     throw Error(ErrorKind::bad_number, "{{beam_gyration}} = " + say(*p.beam_gyration) + ": a radius of gyration must be positive");
+  if (p.beam_gyration) check_ordinary(*p.beam_gyration, 1e-6, 1e6, "beam_gyration", "m", "beam's radius of gyration about the pivot");
   const std::optional<double> inertia = given_beam_inertia(e);
   if (p.beam_cm.has_value() != inertia.has_value())
     throw Error(ErrorKind::usage, std::string(p.beam_cm ? "{{beam_cm}} needs the beam's moment of inertia about the pivot too: give {{beam_inertia}}"

@@ -1,6 +1,7 @@
 #include "trebuchet/error.hpp"
 
 #include <cctype>
+#include <cmath>
 
 #include "trebuchet/format.hpp"
 
@@ -51,6 +52,9 @@ void check_ordinary(double value, double lowest, double highest, std::string_vie
   if (value >= lowest && value <= highest) return;
   // Called for every shot: the text is built only when the value is refused.
   const std::string space = unit.empty() ? "" : " " + std::string(unit);
+  if (!std::isfinite(value))
+    throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} is not a finite number for the " + std::string(what) + "; give one from " +
+                                           format_significant(lowest, 6) + " to " + format_significant(highest, 6) + space);
   throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + format_significant(value, 6) + space + " is not of ordinary size for the " +
                                          std::string(what) + "; give one from " + format_significant(lowest, 6) + " to " +
                                          format_significant(highest, 6) + space);

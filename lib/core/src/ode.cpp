@@ -203,6 +203,7 @@ gsl_odeiv2_driver* PhaseIntegrator::make(const IntegratorSettings& settings) {
   d->c = gsl_odeiv2_control_alloc(&predictive_control);
   gsl_odeiv2_control_init(d->c, settings.atol, settings.rtol, 1, 0);
   gsl_odeiv2_control_set_driver(d->c, d);
+  gsl_odeiv2_driver_set_nmax(d, static_cast<unsigned long>(settings.max_steps));  // bounds at(): it fails rather than run on
   return d;
 }
 

@@ -263,6 +263,34 @@ Candidate release_time(const Objective& objective, double lo, double hi, const s
 
 [[noreturn]] void fail(const std::string& reason) { throw Error(ErrorKind::numerical, reason); }
 
+// Coulomb friction as modelled acts only while a pin turns (sliding, no sticking). Where its
+// friction can hold the pin, the pin's turn reaches zero and then reverses at nearly every
+// accepted step, or creeps on at round-off while the rejected steps chatter about zero: the pin
+// sticks. Either shows within a few dozen accepted steps, where ordinary motion reverses a few
+// times in a shot and never dwells at round-off.
+class StickWatch {
+ public:
+  // `turn` and `scale` (the speed that round-off is relative to) are scaled angular speeds.
+  bool sticks(double turn, double scale) {
+    held_ = std::abs(turn) < 1e-9 * (1 + std::abs(scale)) ? held_ + 1 : 0;
+    const bool reversed = turn * last_ < 0;
+    last_ = turn;
+    return (reversed && ++reversals_ > 30) || held_ > 50;
+  }
+
+ private:
+  int reversals_ = 0, held_ = 0;
+  double last_ = 0;
+};
+
+// Whether friction holds a pin of `dynamics`, watched at each accepted state: the axle (the
+// beam's turn) and the hinge pin (the counterweight's turn relative to the beam).
+struct PinWatch {
+  StickWatch axle, hinge;
+  bool axle_holds(const ScaledDesign& e, const State& s) { return e.parts.axle_friction > 0 && axle.sticks(s.theta_dot, s.psi_dot); }
+  bool hinge_holds(const ScaledDesign& e, const State& s) { return e.parts.hinge_friction > 0 && hinge.sticks(s.psi_dot - s.theta_dot, s.theta_dot); }
+};
+
 // The motion of one phase over [t_begin, t_end] for the series: the step ends in it, or with
 // dt > 0 the continuous solution at every multiple of dt after t_begin (at 0 too) and t_end.
 void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, const PhaseRecord& record, double t_begin,
@@ -284,24 +312,37 @@ void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, c
 
 // Phase III for the series: beam and counterweight without the projectile (mu = 0), from the
 // release for as long again as the shot took, so that the ringing of appendix B shows; at the
-// step ends, or every dt > 0.
-void trace_released(const Dynamics& dynamics, const IntegratorSettings& settings, const State& release, const Losses& work,
-                    double t_release, double dt, std::vector<TracePoint>& trace) {
+// step ends, or every dt > 0 (each integrated anew from the step it falls in). Where friction
+// holds a pin after the release (StickWatch), the model, which leaves sticking out, ends there,
+// and so does the series.
+void trace_released(const Dynamics& dynamics, const ScaledDesign& e, const IntegratorSettings& settings, const State& release,
+                    const Losses& work, double t_release, double dt, std::vector<TracePoint>& trace) {
   PhaseIntegrator released(dynamics, Phase::released, settings);
   OdeVector y = {release.theta, release.psi, release.theta_dot, release.psi_dot};
   for (std::size_t k = 0; k + 4 < released.dimension(); ++k) y[4 + k] = work[k];
+  const double t_end = 2 * t_release;
   double t = t_release, h = 1e-3;
   double k = std::floor(t_release / dt) + 1;  // the next multiple of dt, when dt > 0
-  for (long steps = 0; t < 2 * t_release && steps < settings.max_steps; ++steps) {
-    if (dt > 0) {
-      const double next = std::min(k++ * dt, 2 * t_release);
-      y = released.at(t, y, next);
-      t = next;
-    } else if (!released.step(t, y.data(), 2 * t_release, h)) {
+  auto add = [&](double time, const OdeVector& at) {
+    const State s = released.state(at);
+    trace.push_back({Phase::released, time, s, dynamics.snapshot(Phase::released, s), released.work(at)});
+  };
+  PinWatch pins;
+  for (long steps = 0; t < t_end; ++steps) {
+    if (steps >= settings.max_steps)
+      fail("step budget of " + std::to_string(settings.max_steps) + " steps exceeded in the series after the release; loosen {{rtol}}");
+    const double t_start = t;
+    const OdeVector y_start = y;
+    if (!released.step(t, y.data(), t_end, h))
       fail(released.friction_unsettled() ? unsettled_friction : "integrator failure in phase III; tighten {{rtol}}");
+    if (dt > 0) {
+      for (; k * dt <= t; ++k) add(k * dt, released.at(t_start, y_start, k * dt));
+      if (t >= t_end && trace.back().t < t) add(t, y);
+    } else {
+      add(t, y);
     }
     const State s = released.state(y);
-    trace.push_back({Phase::released, t, s, dynamics.snapshot(Phase::released, s), released.work(y)});
+    if (pins.axle_holds(e, s) || pins.hinge_holds(e, s)) break;
   }
 }
 
@@ -376,20 +417,16 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   // reverses a few times in a shot. A pin whose friction can hold that swing makes it stick and
   // slip, which Coulomb's law as modelled here (sliding only) leaves out: the turn then reverses
   // at nearly every step, and the shot says so rather than spend its step budget.
-  int hinge_reversals = 0, held_steps = 0;
-  double last_turn = 0;
+  PinWatch pins;
+  // Counts an accepted step against the budget; whether the axle's friction now holds the beam.
   auto count_step = [&](const char* phase, const State& s) {
     if (++result.steps > settings.max_steps)
       fail("step budget of " + std::to_string(settings.max_steps) + " steps exceeded in " + phase +
            "; loosen {{rtol}} or choose a higher-order {{stepper}}");
-    const double turn = s.psi_dot - s.theta_dot;
-    // Sticking shows as reversals at the accepted steps, or as steps that creep on with the turn
-    // held at round-off while the rejected ones chatter about it.
-    held_steps = std::abs(turn) < 1e-9 * (1 + std::abs(s.theta_dot)) ? held_steps + 1 : 0;
-    if (e.parts.hinge_friction > 0 && ((turn * last_turn < 0 && ++hinge_reversals > 30) || held_steps > 50))
+    if (pins.hinge_holds(e, s))
       fail("the hinge pin's friction makes the counterweight stick to the beam and slip, which the model leaves out "
            "(docs/verifier.md, \"Real engines\"); give a smaller {{hinge_friction}} or {{hinge_radius}}");
-    last_turn = turn;
+    return pins.axle_holds(e, s);
   };
 
   // Phase I: from rest (eq:InitialConditions: phi_i = 0, and psi_i = 0 unless propped) until
@@ -410,9 +447,9 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   while (true) {
     if (!trough.step(t, y.data(), settings.max_time, h))
       fail(trough.friction_unsettled() ? unsettled_friction : "integrator failure in phase I; tighten {{rtol}} or choose another {{stepper}}");
-    count_step("phase I", trough.state(y));
+    const bool axle_holds = count_step("phase I", trough.state(y));
     // Friction that stops the beam holds it (Coulomb's law at rest): the engine jams.
-    if (dynamics.dissipates() && !(y[2] > 0))
+    if (axle_holds || (dynamics.dissipates() && !(y[2] > 0)))
       fail("friction stops the beam before the projectile lifts off: the engine jams; give smaller friction coefficients or pin radii "
            "({{axle_friction}}, {{hinge_friction}}, {{trough_friction}})");
     if (std::cos(trough.state(y).phi) < abandon_trough_cos_phi)
@@ -464,7 +501,7 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
     if (!lifted.step(t, y.data(), settings.max_time, h))
       fail(lifted.friction_unsettled() ? unsettled_friction : "integrator failure in phase II; tighten {{rtol}} or choose another {{stepper}}");
     const State s = lifted.state(y);
-    count_step("phase II", s);
+    const bool axle_holds = count_step("phase II", s);
     snap = dynamics.snapshot(Phase::lifted, s);
     track_energy(snap, lifted.work(y));
     const double quality_here = release_point(e, criterion, t, s, snap, phase2.samples().back().extremes).objective;
@@ -472,9 +509,9 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
     sampled.push_back(quality_here);
     best_quality = std::max(best_quality, quality_here);
     // Past the maximum: the objective has fallen to half of it, or the beam has turned over, or
-    // friction has stopped it (it would hold it there).
+    // friction has stopped it (it would hold it there), or holds it at round-off.
     if ((best_quality > 0 && quality_here < 0.5 * best_quality) || s.theta > dynamics.theta_i() + 2 * M_PI || t >= settings.max_time ||
-        (dynamics.dissipates() && !(s.theta_dot > 0)))
+        (dynamics.dissipates() && !(s.theta_dot > 0)) || axle_holds)
       break;
   }
   const std::string no_forward_release = "no release sends the projectile forward: over phase II it never flies toward the target";
@@ -545,7 +582,7 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
     record_trace(trace, lifted, phase2, result.t_liftoff, t_release, trace_dt);
     if (!(trace_dt > 0))  // the continuous record ends on the release already
       trace->push_back({Phase::lifted, t_release, result.release.state, dynamics.snapshot(Phase::lifted, result.release.state), result.work});
-    trace_released(dynamics, settings, result.release.state, result.work, t_release, trace_dt, *trace);
+    trace_released(dynamics, e, settings, result.release.state, result.work, t_release, trace_dt, *trace);
   }
   if (unreleased) {  // phase II past the release, as far as the search looked
     std::vector<TracePoint> all;

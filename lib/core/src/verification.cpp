@@ -63,6 +63,11 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
       end_velocity.y = -vy;
     }
     out.capacity.R = range_from_release ? range + behind : range;
+    // A headwind can blow the projectile back behind the engine: no range to report.
+    if (air && !(out.capacity.R > 0))
+      throw Error(ErrorKind::out_of_range, "the flight through " + describe_air(*air, engine.m) + " ends " + format_significant(-out.capacity.R, 4) +
+                                               " m behind the " + (range_from_release ? "release point" : "pivot") +
+                                               ": the air blows the projectile back; give a weaker headwind ({{wind}}) or less drag");
     out.capacity.T = engine.m * (end_velocity.x * end_velocity.x + end_velocity.y * end_velocity.y) / 2;
     if (air) out.energy.flight_drag = engine.m * (out.v * out.v / 2 + g * end_drop) - out.capacity.T;
   }
@@ -114,6 +119,9 @@ void check_shot_settings(const ShotSettings& settings) {
   check_integrator(settings.integrator);
   if (settings.air) check_air(*settings.air);
   check_ordinary(std::abs(settings.target_level), 0, 1e6, "target_level", "m", "target level's distance from the engine's base");
+  // eq:Q_n asks n >= 0. Beyond max_quality_exponent, eps^n of an engine's eps (0.5 to 0.98)
+  // falls below 1e-6 or flattens Q_n to round-off, and no release or design is preferred.
+  check_ordinary(settings.criterion.n, 0, max_quality_exponent, "n", "", "exponent of eps in eq:Q_n");
 }
 
 ReleaseCriterion release_criterion(const Engine& engine, const ShotSettings& settings) {
@@ -136,6 +144,9 @@ ScaledDesign shot_design(const Engine& engine, const ShotSettings& settings) {
 Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace, double trace_dt_s) {
   check_engine(engine);  // as given, its material too: a caller may have changed either since it was read
   check_shot_settings(settings);
+  if (engine.parts.rope_diameter > 0 && !(settings.air && settings.drag_in_sling))
+    throw Error(ErrorKind::usage, "{{rope_diameter}} gives the drag on the sling's rope, which acts only when the air acts before the release; "
+                                  "add {{drag_in_sling}} (with {{air}}), or leave the rope's diameter out");
   const double time_unit = std::sqrt(engine.L2 / engine.material.g);  // section 3 [s]
   const ReleaseCriterion criterion = release_criterion(engine, settings);
   if (trace && trace_dt_s > 0) {

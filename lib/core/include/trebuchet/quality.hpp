@@ -15,6 +15,10 @@ namespace trebuchet {
 /// appendix B), or the range (Denny's criterion; the paper's tab:Denny "Present" row).
 enum class Release { quality, efficiency, range };
 
+/// The largest exponent n of eq:Q_n that the programs take (docs/stability.md): the paper's
+/// tab:SketchBook-I uses 0 to 5.
+inline constexpr double max_quality_exponent = 20;
+
 struct ReleaseCriterion {
   Release release = Release::quality;
   double n = 1;  ///< exponent of eps in eq:Q_n; Q is reported with it whatever the release
