@@ -38,6 +38,7 @@ std::string key_word(std::string_view name) {
   if (name == "projectile") return "air.projectile_density";
   if (name == "wind") return "air.wind";
   if (name == "drag_in_sling") return "air.drag_in_sling";
+  if (name == "tol") return "tolerance";
   return std::string(name);
 }
 

@@ -313,6 +313,7 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
   std::vector<std::string> results;
   if (own_output) {
     std::vector<std::string> inputs = part_columns();
+    inputs.push_back("psi_i_deg");
     for (const Field& field : engine_fields(Engine{})) inputs.push_back(csv_column(field));
     for (const std::string& column : verification_csv_header())
       if (std::find(inputs.begin(), inputs.end(), column) == inputs.end()) results.push_back(column);
@@ -530,6 +531,7 @@ std::vector<std::string> verification_csv_header() {
   header.insert(header.end(), {"pass", "air", "release", "n", "target_level_m", "warnings", "notes"});
   for (const Field& field : energy_fields(v)) header.push_back(csv_column(field));
   for (const std::string& column : part_columns()) header.push_back(column);
+  header.push_back("psi_i_deg");
   return header;
 }
 
@@ -547,6 +549,7 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
                          csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), join(v.warnings, "; "), join(v.notes, "; ")});
   for (const Field& field : energy_fields(v)) row.push_back(csv_number(field.value, digits));
   for (const std::string& cell : part_cells(engine, digits)) row.push_back(cell);
+  row.push_back(csv_number(engine.psi_i_deg, digits));
   return row;
 }
 

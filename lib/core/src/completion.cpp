@@ -136,6 +136,11 @@ Completion complete_engine(const CompletionRequest& request) {
       throw Error(ErrorKind::bad_number, "{{mb}} = " + format_significant(*value, 6) + " must not be negative");
     if (key != "mb" && key != "theta_i" && !(*value > 0))
       throw Error(ErrorKind::bad_number, "{{" + key + "}} = " + format_significant(*value, 6) + " must be positive; give the attested value, or leave it out");
+    // Of ordinary size, as an engine's own values are (check_engine): lengths and l from 1e-6
+    // to 1e6, masses from 1e-9 to 1e12 kg, so that every value derived from them is finite.
+    if (key == "M" || key == "m" || (key == "mb" && *value > 0)) check_ordinary(*value, 1e-9, 1e12, key, "kg", "attested mass");
+    else if (key == "l" || key == "F") check_ordinary(*value, 1e-6, 1e6, key, "", "attested ratio");
+    else if (key != "theta_i" && key != "mb") check_ordinary(*value, 1e-6, 1e6, key, "m", "attested length");
     out.attested.push_back(key);
   }
 

@@ -175,6 +175,7 @@ std::vector<Optimum> optimize(const OptimizeRequest& request) {
   check_material(request.material);
   // L3 = F L1 cos(theta_i) - L2 > 0 needs l > 1/(F cos theta_i); the paper's engines, formal
   // ones of appendix B included, have l < 60.
+  check_ordinary(request.F, 1e-6, 1e6, "F", "", "counterweight arm fraction (L2 + L3)/H");
   const double l_min = 1 / (request.F * std::cos(radians(request.theta_i_deg)));
   if (!(request.F > 0 && request.theta_i_deg > 0 && request.theta_i_deg < 90) || !(l_min < max_beam_ratio))
     throw Error(ErrorKind::out_of_range, "theta_i = " + format_significant(request.theta_i_deg, 4) + " deg with F = " +

@@ -70,6 +70,12 @@ SweepPoint optimize_point(const SweepSpec& spec, double X) {
 }  // namespace
 
 std::vector<SweepPoint> run_sweep(const SweepSpec& spec, Shard shard, int threads, const Progress& progress) {
+  // The settings every point shares are the request's, refused once before any work, not at
+  // each point as its failure.
+  ShotSettings settings;
+  settings.criterion = spec.criterion;
+  check_shot_settings(settings);
+  check_material(spec.material);
   const std::vector<double> grid = sweep_grid(spec);
   std::vector<double> mine;
   for (std::size_t i = shard.k - 1; i < grid.size(); i += shard.n) mine.push_back(grid[i]);

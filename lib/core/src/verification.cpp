@@ -163,6 +163,8 @@ Verification verify_engine(const Engine& engine, const ShotSettings& settings, s
 }
 
 CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance) {
+  // From a part in 10^12 (round-off of the shot) to a factor of 10^3.
+  check_ordinary(tolerance, 1e-12, 1e3, "tol", "", "relative tolerance on the predicted R and T");
   CapacityCheck c;
   c.predicted = predicted, c.tolerance = tolerance;
   c.deviation_R = v.R_vacuum / predicted.R - 1;
