@@ -240,13 +240,20 @@ try {
     loop.self = loop;
     let at = nested;
     for (let k = 0; k < 100000; k++) { at.a = {}; at = at.a; }
-    return [t.design(undefined), t.design(nested), t.design(loop), t.design({ R: '150m', m: '50kg', scale: -1 }),
+    // Objects that run code when read (issue 34): a getter that throws, a Proxy whose traps throw,
+    // a toJSON that throws something that is no Error.
+    const getter = { R: '150m' };
+    Object.defineProperty(getter, 'm', { enumerable: true, get() { throw new Error('no m here'); } });
+    const proxy = new Proxy({ R: '150m', m: '50kg' }, { ownKeys() { throw new TypeError('no keys'); }, get() { throw new RangeError('no values'); } });
+    const odd = { R: '150m', m: '50kg', toJSON() { throw { toString() { throw new Error('not even this'); } }; } };
+    return [t.design(getter), t.design(proxy), t.design(odd), t.shot({ design: getter }),
+            t.design(undefined), t.design(nested), t.design(loop), t.design({ R: '150m', m: '50kg', scale: -1 }),
             t.shot({ design: t.design({ R: '150m', m: '50kg' }), n: -1 }), t.shot({ design: t.design({ R: '150m', m: '50kg' }), tolerance: 0 }),
             t.monteCarlo({ design: { L1: 4, L2: 1, L3: 2, L4: 4, M: '2t..3t', m: 50, mb: 200 }, samples: 2, outcomes: [['1', 2, 3, 4], [1, 2, 3, 4]] })];
   });
   const kinds = answers.map((a) => a.kind);
   check(answers.every((a) => a.error && a.kind !== 'numerical'),
-    `hostile requests are refused as bad input, not failures: ${kinds.join(', ')}; e.g. "${answers[4].error}"`);
+    `hostile requests are refused as bad input, not failures: ${kinds.join(', ')}; e.g. "${answers[0].error}", "${answers[8].error}"`);
   const parallel = await page.evaluate(() => window.trebuchet.monteCarloParallel({ attested: { Lb: '9.5m', M: '2.5t..3.5t', m: '50kg' }, samples: -1 }));
   check(Boolean(parallel.error), `monteCarloParallel refuses samples -1 before any work: "${parallel.error}"`);
 } finally {
