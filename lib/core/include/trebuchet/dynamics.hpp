@@ -18,7 +18,7 @@
 
 namespace trebuchet {
 
-/// Phase I: projectile slides in the trough (eq:EOM_I_1-3). Phase II: lifted (eq:EOM_II_1,
+/// Phase I: projectile slides in the trough (eq:EOM_I_1 to eq:EOM_I_3). Phase II: lifted (eq:EOM_II_1,
 /// eq:EOM_I_2, eq:EOM_II_3). Phase III: released, mu = 0.
 enum class Phase { trough, lifted, released };
 
