@@ -19,6 +19,7 @@
 #include <string>
 
 #include "exit_codes.hpp"
+#include "trebuchet/app/fields.hpp"
 #include "trebuchet/app/units.hpp"
 #include "trebuchet_version.hpp"
 #include "trebuchet/error.hpp"
@@ -93,21 +94,6 @@ inline const CLI::Option* option_with_empty_value(const CLI::App& app) {
   return nullptr;
 }
 
-/// The distance between two words in single-letter edits (insert, delete, replace, or swap two
-/// neighbours: "plto" is one from "plot"), letters compared without case.
-inline std::size_t edit_distance(std::string_view a, std::string_view b) {
-  auto same = [](char x, char y) { return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y)); };
-  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
-  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
-  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i)
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (same(a[i - 1], b[j - 1]) ? 0 : 1)});
-      if (i > 1 && j > 1 && same(a[i - 1], b[j - 2]) && same(a[i - 2], b[j - 1])) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-    }
-  return d[a.size()][b.size()];
-}
-
 /// " (did you mean --plot?)" for a word near a name of `app`: a word written as an option
 /// (`--plto`) near an option of `app` or of the subcommands given, a bare word (`optimise`,
 /// `plot`) near a subcommand or, failing that, an option. Near is the same but for the case for
@@ -135,8 +121,8 @@ inline std::string did_you_mean(const CLI::App& app, std::string_view word) {
     for (const std::string& name : names) {
       std::string name_bare = name;
       name_bare.erase(0, name_bare.find_first_not_of('-'));
-      const std::size_t allowed = name_bare.size() <= 2 ? 0 : name_bare.size() <= 4 ? 1 : 2, distance = edit_distance(bare, name_bare);
-      if (distance <= allowed && (best.empty() || distance < best_distance)) best = name, best_distance = distance;
+      const std::size_t distance = edit_distance(bare, name_bare);
+      if (near_name(bare, name_bare) && (best.empty() || distance < best_distance)) best = name, best_distance = distance;
     }
     return best;
   };

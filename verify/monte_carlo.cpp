@@ -8,6 +8,7 @@
 
 #include "program.hpp"
 #include "run.hpp"
+#include "trebuchet/app/fields.hpp"
 #include "trebuchet/app/text_input.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/parallel.hpp"
@@ -61,17 +62,14 @@ int run_monte_carlo(const Options& o, bool complete) {
   for (const Uncertain& u : o.uncertain) inputs.push_back(u.input);
   // The values held fixed: those given, less the uncertain.
   std::vector<FixedInput> fixed;
-  const std::tuple<const char*, std::optional<double>, UnitDimension> given[] = {
-      {"Lb", o.Lb, UnitDimension::length}, {"H", o.H, UnitDimension::length}, {"l", o.l, UnitDimension::dimensionless},
-      {"L1", o.design.L1, UnitDimension::length}, {"L2", o.design.L2, UnitDimension::length}, {"L3", o.design.L3, UnitDimension::length},
-      {"F", o.design.F, UnitDimension::dimensionless}, {"L4", o.design.L4, UnitDimension::length}, {"M", o.design.M, UnitDimension::mass},
-      {"m", o.design.m, UnitDimension::mass}, {"mb", o.design.mb, UnitDimension::mass}, {"D", o.design.D, UnitDimension::length},
-      {"theta_i_deg", o.design.theta_i_deg, UnitDimension::angle}, {"psi_i_deg", o.design.psi_i_deg, UnitDimension::angle}};
-  for (const auto& [name, value, dimension] : given) {
-    const std::string flag = option_word(name);
-    const bool uncertain = std::any_of(inputs.begin(), inputs.end(), [&](const UncertainInput& u) { return u.name == flag; });
-    if (value && !uncertain) fixed.push_back({name, dimension, *value});
-  }
+  // What a completion alone takes (Lb, H, l) first, then the engine's values in the table's order.
+  for (const bool completion_only : {true, false})
+    for (const InputField& field : input_fields()) {
+      const std::optional<double>& value = o.design.*field.member;
+      if (field.group != FieldGroup::engine || !value || completion_only == static_cast<bool>(field.operations & op_shot)) continue;
+      const bool uncertain = std::any_of(inputs.begin(), inputs.end(), [&](const UncertainInput& u) { return u.name == field.flag; });
+      if (!uncertain) fixed.push_back({field.key, field.dimension, *value});
+    }
   const MonteCarloReport report{summary, inputs, fixed, describe_release(settings), o.seed, complete ? "the completed engine" : "the shot",
                                 settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"), settings.air.has_value(), seconds,
                                 thread_count(o.threads, static_cast<std::size_t>(summary.samples))};

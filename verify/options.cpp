@@ -37,11 +37,19 @@ CLI::Option* parsed_option(CLI::App* app, const std::string& name, const std::fu
 }
 
 // The order in which uncertain values are drawn and listed, whatever the order they were given
-// in: the same command draws the same numbers.
+// in: the same command draws the same numbers. A shot's values in the table's order, the other
+// options, then what a completion alone takes (Lb, H, l).
 int draw_rank(const std::string& name) {
-  static const char* const order[] = {"--L1", "--L2", "--L3", "--F", "--L4", "--M", "--m", "--mb", "--theta", "--psi-i",
-                                      "--target-level", "--wind", "--air-density", "--Lb", "--H", "--D", "--l"};
-  return static_cast<int>(std::find(std::begin(order), std::end(order), name) - std::begin(order));
+  static const std::vector<std::string> order = [] {
+    std::vector<std::string> names;
+    for (const InputField& field : input_fields())
+      if (field.operations & op_shot) names.emplace_back(field.flag);
+    names.insert(names.end(), {"--target-level", "--wind", "--air-density"});
+    for (const InputField& field : input_fields())
+      if (!(field.operations & op_shot)) names.emplace_back(field.flag);
+    return names;
+  }();
+  return static_cast<int>(std::find(order.begin(), order.end(), name) - order.begin());
 }
 
 // A value with a unit into `slot` (strictly positive with `positive`). With `spreads`, it may be a
@@ -66,44 +74,29 @@ CLI::Option* positive_option(CLI::App* app, const std::string& name, double& tar
   return parsed_option(app, name, [&target, name, dimension](const std::string& text) { target = parse_positive(text, dimension, name); }, help);
 }
 
+// The option of a row of the table, its help with its default; a capacity is never a spread.
+void input_option(CLI::App* app, Options& o, const InputField& field, bool spreads) {
+  const std::string fallback = *field.fallback ? std::string(" (default ") + field.fallback + ")" : "";
+  value_option(app, o, field.flag, design_slot(field.member), field.dimension, field.help + fallback,
+               spreads && field.group != FieldGroup::capacity);
+}
+
+// The table's inputs that `operation` takes, of the groups given (the material has options of
+// its own, material_options).
+void input_options(CLI::App* app, Options& o, unsigned operation, std::initializer_list<FieldGroup> groups, bool spreads) {
+  for (const InputField& field : input_fields())
+    if ((field.operations & operation) && std::find(groups.begin(), groups.end(), field.group) != groups.end())
+      input_option(app, o, field, spreads);
+}
+
 void engine_options(CLI::App* app, Options& o, bool spreads) {
   app->add_option("input", o.input, "JSON file with a design or an array of designs, or CSV with a design a row (docs/csv.md); - for stdin");
-  const std::tuple<const char*, Slot, UnitDimension, const char*> keys[] = {
-      {"--L1", design_slot(&DesignValues::L1), UnitDimension::length, "long beam section"},
-      {"--L2", design_slot(&DesignValues::L2), UnitDimension::length, "short beam section"},
-      {"--L3", design_slot(&DesignValues::L3), UnitDimension::length, "counterweight arm (or --F)"},
-      {"--F", design_slot(&DesignValues::F), UnitDimension::dimensionless, "arm fraction (L2+L3)/H, instead of --L3"},
-      {"--L4", design_slot(&DesignValues::L4), UnitDimension::length, "sling length"},
-      {"--M", design_slot(&DesignValues::M), UnitDimension::mass, "counterweight mass"},
-      {"--m", design_slot(&DesignValues::m), UnitDimension::mass, "projectile mass"},
-      {"--mb", design_slot(&DesignValues::mb), UnitDimension::mass, "beam mass (or --D)"},
-      {"--D", design_slot(&DesignValues::D), UnitDimension::length, "beam diameter: the beam's stress; without --mb, mb = rho_d (pi/4) D^2 Lb (eq:BeamMass)"}};
-  for (const auto& [name, slot, dimension, help] : keys) value_option(app, o, name, slot, dimension, help, spreads);
-  value_option(app, o, "--theta", design_slot(&DesignValues::theta_i_deg), UnitDimension::angle,
-               "initial beam angle theta_i [deg] (default 30)", spreads);
-  value_option(app, o, "--psi-i", design_slot(&DesignValues::psi_i_deg), UnitDimension::angle,
-               "initial counterweight angle psi_i [deg] of a propped counterweight (default 0, hanging; negative: held back, "
-               "the sense opposite to the beam's turn)", spreads);
-  value_option(app, o, "--R", design_slot(&DesignValues::R), UnitDimension::length, "the predicted range to check (or to fit)");
-  value_option(app, o, "--T", design_slot(&DesignValues::T), UnitDimension::energy, "the predicted energy to check (or to fit)");
+  input_options(app, o, op_shot, {FieldGroup::engine, FieldGroup::capacity}, spreads);
   positive_option(app, "--tol", o.tolerance, UnitDimension::dimensionless, "relative tolerance on the predicted R and T (default 0.02)");
   app->add_option("--series", o.series, "write the time series of the shot (angles, forces, positions, energies) to this CSV file");
   positive_option(app, "--series-dt", o.series_dt_s, UnitDimension::time,
                   "sample the series every this many seconds (e.g. 5ms) instead of at the integrator's steps");
   app->add_option("--plot", o.plot, "draw the shot into this folder: SVG pictures, an animated GIF and index.html (needs gnuplot)");
-}
-
-// The engine as built (EngineParts): all of them for a shot, those that do not depend on the
-// searched values for complete (its beam is uniform).
-void part_options(CLI::App* app, Options& o, bool spreads, bool whole_engine) {
-  for (const PartKey& part : part_keys()) {
-    const std::string key = part.key;
-    const bool beam_or_box = key.rfind("beam_", 0) == 0 || key.rfind("D_", 0) == 0 || key.rfind("box_", 0) == 0;
-    if (beam_or_box && !whole_engine) continue;
-    std::string flag = "--" + key;
-    std::replace(flag.begin(), flag.end(), '_', '-');
-    value_option(app, o, flag, design_slot(part.member), part.dimension, part.help, spreads);
-  }
 }
 
 void target_level_option(CLI::App* app, Options& o, bool spreads) {
@@ -160,19 +153,23 @@ void format_option(CLI::App* app, Options& o, bool csv_too) {
 }
 
 void material_options(CLI::App* app, Options& o, const std::string& what, bool beta2) {
-  auto optional_positive = [&o](CLI::App* sub, const std::string& name, std::optional<double> MaterialOverrides::*member, UnitDimension dimension,
-                                const std::string& help) {
-    parsed_option(sub, name, [&o, name, member, dimension](const std::string& text) { o.material.*member = parse_positive(text, dimension, name); }, help);
-  };
-  optional_positive(app, "--g", &MaterialOverrides::g, UnitDimension::acceleration,
-                    "gravitational acceleration (default: the input's, else " + format_number(Material{}.g) + "m/s2)");
-  optional_positive(app, "--youngs-modulus", &MaterialOverrides::youngs_modulus, UnitDimension::pressure,
-                    "Young's modulus of the beam's wood (default: the input's, else 12GPa)");
-  optional_positive(app, "--rupture", &MaterialOverrides::modulus_of_rupture, UnitDimension::pressure,
-                    "modulus of rupture of the beam's wood, the stress it breaks at (default 120MPa, 1 % of 12GPa, section 4)");
-  if (beta2)
-    optional_positive(app, "--beta2", &MaterialOverrides::beta2, UnitDimension::dimensionless,
-                      "allowed beam bending u2/L2 that sizes " + what + " (default: " + what + "'s own, else 1/300)");
+  using V = DesignValues;
+  using O = MaterialOverrides;
+  const std::pair<std::optional<double> V::*, std::optional<double> O::*> material[] = {
+      {&V::g, &O::g}, {&V::youngs_modulus, &O::youngs_modulus}, {&V::wood_density, &O::wood_density}, {&V::beta2, &O::beta2}};
+  for (const auto& [row, member] : material) {
+    const InputField& field = field_of(row);
+    if (row == &V::beta2 && !beta2) continue;
+    const std::string name = field.flag;
+    const std::string help = row == &V::beta2 ? "allowed beam bending u2/L2 that sizes " + what + " (default: " + what + "'s own, else 1/300)"
+                                              : std::string(field.help) + " (default: the input's, else " + field.fallback + ")";
+    parsed_option(app, name, [&o, name, member = member, dimension = field.dimension](const std::string& text) {
+      o.material.*member = parse_positive(text, dimension, name);
+    }, help);
+  }
+  parsed_option(app, "--rupture", [&o](const std::string& text) {
+    o.material.modulus_of_rupture = parse_positive(text, UnitDimension::pressure, "--rupture");
+  }, "modulus of rupture of the beam's wood, the stress it breaks at (default 120MPa, 1 % of 12GPa, section 4)");
 }
 
 void block_options(CLI::App* app, Options& o) {
@@ -244,7 +241,7 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
   for (CLI::App* sub : {s.shot, s.fit}) {
     const bool shot = sub == s.shot;
     engine_options(sub, o, shot);
-    if (shot) part_options(sub, o, true, true);
+    if (shot) input_options(sub, o, op_shot, {FieldGroup::part}, true);
     target_level_option(sub, o, shot);
     threads_option(sub, o, "threads for an array of designs (default: the cores); the output is the same on any number");
     release_options(sub, o);
@@ -259,7 +256,7 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
   {
     CLI::App* c = s.calibrate;
     engine_options(c, o, false);
-    part_options(c, o, false, true);
+    input_options(c, o, op_shot, {FieldGroup::part}, false);
     parsed_option(c, "--measured", [&o](const std::string& text) {
       if (const auto spread = parse_spread(text, UnitDimension::length, "--measured")) {
         if (spread->kind != Spread::Kind::normal)
@@ -288,44 +285,23 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
 
   CLI::App* c = s.complete;
   air_and_sampling_options(c, o);
-  const std::tuple<const char*, Slot, UnitDimension, const char*> attested[] = {
-      {"--Lb", option_slot(&Options::Lb), UnitDimension::length, "beam length L1 + L2"},
-      {"--H", option_slot(&Options::H), UnitDimension::length, "pivot height L1 cos(theta_i)"},
-      {"--D", design_slot(&DesignValues::D), UnitDimension::length, "beam diameter (instead of beta2)"},
-      {"--l", option_slot(&Options::l), UnitDimension::dimensionless, "beam ratio L1/L2"},
-      {"--L1", design_slot(&DesignValues::L1), UnitDimension::length, "attested L1"},
-      {"--L2", design_slot(&DesignValues::L2), UnitDimension::length, "attested L2"},
-      {"--L4", design_slot(&DesignValues::L4), UnitDimension::length, "attested L4"},
-      {"--M", design_slot(&DesignValues::M), UnitDimension::mass, "attested M"},
-      {"--m", design_slot(&DesignValues::m), UnitDimension::mass, "attested m"},
-      {"--mb", design_slot(&DesignValues::mb), UnitDimension::mass, "attested mb"},
-      {"--F", design_slot(&DesignValues::F), UnitDimension::dimensionless, "attested F (default 2/3)"},
-      {"--theta", design_slot(&DesignValues::theta_i_deg), UnitDimension::angle,
-       "attested initial beam angle theta_i [deg] (default 30, or from H and L1)"}};
-  for (const auto& [name, slot, dimension, help] : attested) value_option(c, o, name, slot, dimension, help, true);
-  part_options(c, o, true, false);
+  input_options(c, o, op_complete, {FieldGroup::engine, FieldGroup::part}, true);
   target_level_option(c, o, true);
   threads_option(c, o, "threads for a Monte Carlo run (default: the cores)");
   c->add_option("--plot", o.plot, "with ranges or spreads: write the histogram of R and T into this folder (needs gnuplot)");
-  parsed_option(c, "--wood-density", [&o](const std::string& text) {
-    o.material.wood_density = parse_positive(text, UnitDimension::density, "--wood-density");
-  }, "density of the beam's wood (default 700kg/m3), for D and mb");
   material_options(c, o, "the beam", true);
   release_options(c, o);
   integrator_options(c, o);
   format_option(c, o, false);
 
   CLI::App* opt = s.optimize;
-  const std::tuple<const char*, std::optional<double> DesignValues::*, UnitDimension, const char*> capacity[] = {
-      {"--R", &DesignValues::R, UnitDimension::length, "range [m]"},
-      {"--T", &DesignValues::T, UnitDimension::energy, "energy at the target [J]"},
-      {"--m", &DesignValues::m, UnitDimension::mass, "projectile mass, instead of --T: the optimum for R with this stone, T free [kg]"}};
-  for (const auto& [name, member, dimension, help] : capacity)
-    parsed_option(opt, name, [&o, name = std::string(name), member = member, dimension = dimension](const std::string& text) {
+  // The capacity to design for, and a beam ratio to hold; each positive.
+  for (auto member : {&DesignValues::R, &DesignValues::T, &DesignValues::m, &DesignValues::l}) {
+    const InputField& field = field_of(member);
+    parsed_option(opt, field.flag, [&o, name = std::string(field.flag), member = member, dimension = field.dimension](const std::string& text) {
       o.design.*member = parse_positive(text, dimension, name);
-    }, help);
-  parsed_option(opt, "--l", [&o](const std::string& text) { o.l = parse_positive(text, UnitDimension::dimensionless, "--l"); },
-                "hold the beam ratio L1/L2 and search the sling and the beam's mass alone, from both sides of l4 = 1 (appendix B; with --quality eps)");
+    }, field.help);
+  }
   for (CLI::App* sub : {s.optimize, s.derive_table}) {
     block_options(sub, o);
     material_options(sub, o, "the engines", true);
@@ -375,7 +351,7 @@ CompletionRequest completion_request(const Options& o) {
   CompletionRequest request;
   Attested& a = request.attested;
   const DesignValues& d = o.design;
-  a.Lb = o.Lb, a.L1 = d.L1, a.L2 = d.L2, a.H = o.H, a.L4 = d.L4, a.M = d.M, a.m = d.m, a.mb = d.mb, a.D = d.D, a.l = o.l;
+  a.Lb = d.Lb, a.L1 = d.L1, a.L2 = d.L2, a.H = d.H, a.L4 = d.L4, a.M = d.M, a.m = d.m, a.mb = d.mb, a.D = d.D, a.l = d.l;
   a.theta_i_deg = d.theta_i_deg, a.F = d.F;
   request.material = o.material.over(Material{});
   request.settings = shot_settings(o);

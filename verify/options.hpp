@@ -31,8 +31,7 @@ struct Uncertain {
 
 struct Options {
   std::string input;                     ///< a design file, "-" for stdin; empty: the flags
-  DesignValues design;                   ///< the engine's flags (--L1 ... --psi-i), --R and --T
-  std::optional<double> Lb, H, l;        ///< complete: attested beside the engine's keys [m], [m], scaled
+  DesignValues design;                   ///< the table's flags (input_fields): the engine, --R and --T, complete's --Lb, --H, --l
   double tolerance = 0.02;               ///< on a predicted R and T, relative
   std::optional<double> target_level;    ///< [m], relative to the engine's base; 0 when not given
   ShotSettings settings;                 ///< all but the target level and the air, which shot_settings() adds

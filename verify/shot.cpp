@@ -30,11 +30,10 @@ DesignCheck design_check(const Options& o, bool fit) {
   return check;
 }
 
+// Whether the flags give an engine's value or part (the material and the capacity are settings of a file's designs too).
 bool has_engine_flags(const DesignValues& d) {
-  for (const auto& value : {d.L1, d.L2, d.L3, d.F, d.L4, d.M, d.m, d.mb, d.theta_i_deg, d.psi_i_deg})
-    if (value) return true;
-  for (const PartKey& part : part_keys())
-    if (d.*part.member) return true;
+  for (const InputField& field : input_fields())
+    if ((field.operations & op_shot) && (field.group == FieldGroup::engine || field.group == FieldGroup::part) && d.*field.member) return true;
   return false;
 }
 
@@ -118,10 +117,13 @@ int run_shot(const Options& o, bool fit) {
     throw Error(ErrorKind::usage, "--series and --plot name the same path '" + o.plot + "'; give the series a file and the pictures a folder of their own");
   if (!o.input.empty() && !in.single) return run_many(o, in, check);
 
-  DesignValues values = o.input.empty() ? o.design : read_design_values(in.rows.front().design, in.where.front());
+  nlohmann::json passed = nlohmann::json::object();
+  DesignValues values = o.input.empty() ? o.design : read_design_values(in.rows.front().design, in.where.front(), &passed);
   if (o.design.R) values.R = o.design.R;
   if (o.design.T) values.T = o.design.T;
-  const DesignReport report = check_design(engine_record(values, o.input.empty() ? "" : in.where.front()), check);
+  EngineRecord record = engine_record(values, o.input.empty() ? "" : in.where.front());
+  record.passed = std::move(passed);
+  const DesignReport report = check_design(record, check);
   if (o.format == Format::json) std::cout << pretty_json(report.json);
   else if (o.format == Format::csv) std::cout << csv_line(verification_csv_header()) << csv_line(report.csv);
   else std::cout << report.table;

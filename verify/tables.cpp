@@ -41,9 +41,9 @@ int run_optimize(const Options& o) {
   request.F = d.F.value_or(standard_F);
   request.material = o.material.over(Material{});
   request.settings = shot_settings(o);
-  if (o.l) {
-    check_fixed_beam_ratio(*o.l, "--l");
-    request.fixed_l = o.l;
+  if (o.design.l) {
+    check_fixed_beam_ratio(*o.design.l, "--l");
+    request.fixed_l = o.design.l;
   }
   const auto start = std::chrono::steady_clock::now();
   const std::vector<Optimum> optima = optimize(request);

@@ -15,6 +15,7 @@
 #include "trebuchet/quantity.hpp"
 #include "trebuchet/scaling_table.hpp"
 #include "trebuchet/uncertainty.hpp"
+#include "trebuchet/app/fields.hpp"
 #include "trebuchet/app/names.hpp"
 #include "trebuchet/app/pictures.hpp"
 #include "trebuchet/app/report.hpp"
@@ -55,8 +56,10 @@ std::optional<double> positive_value(const json& request, const std::string& key
 void require_keys(const json& request, const std::vector<std::string>& known, const std::string& what) {
   if (!request.is_object()) throw Error(ErrorKind::usage, what + ": expected a JSON object, got " + brief_json(request));
   for (const auto& [key, value] : request.items())
-    if (std::find(known.begin(), known.end(), key) == known.end())
+    if (std::find(known.begin(), known.end(), key) == known.end()) {
+      refuse_near_miss(key, known, what);
       throw Error(ErrorKind::usage, what + ": '" + key + "' is no key of this request; use " + join(known, ", "));
+    }
 }
 
 // The keys every request that shoots takes.
@@ -120,48 +123,37 @@ MaterialOverrides overrides_of(const json& request) {
   return material;
 }
 
-// complete's attested values; `where` names the object.
-const std::vector<std::pair<std::string, UnitDimension>> attested_keys = {
-    {"Lb", UnitDimension::length}, {"L1", UnitDimension::length}, {"L2", UnitDimension::length}, {"H", UnitDimension::length},
-    {"L4", UnitDimension::length}, {"M", UnitDimension::mass}, {"m", UnitDimension::mass}, {"mb", UnitDimension::mass},
-    {"D", UnitDimension::length}, {"l", UnitDimension::dimensionless}, {"theta_i_deg", UnitDimension::angle}, {"F", UnitDimension::dimensionless},
-    {"beta2", UnitDimension::dimensionless}, {"youngs_modulus", UnitDimension::pressure}, {"wood_density", UnitDimension::density},
-    {"g", UnitDimension::acceleration},
-    // the parts of an engine as built that complete takes (CompletionRequest::parts)
-    {"counterweight_inertia", UnitDimension::inertia}, {"axle_friction", UnitDimension::dimensionless}, {"axle_radius", UnitDimension::length},
-    {"hinge_friction", UnitDimension::dimensionless}, {"hinge_radius", UnitDimension::length}, {"trough_friction", UnitDimension::dimensionless},
-    {"rope_diameter", UnitDimension::length}, {"rope_cd", UnitDimension::dimensionless}};
-
 CompletionRequest completion_request_of(const json& attested, const ShotSettings& settings, const MaterialOverrides& overrides) {
-  std::vector<std::string> known;
-  for (const auto& [key, dimension] : attested_keys) known.push_back(key);
-  require_keys(attested, known, "attested");
+  require_keys(attested, input_names(op_complete), "attested");
   // A value given as a range or a spread is completed at its middle (a range's midpoint, a
   // spread's mean); monte_carlo samples it.
-  auto value = [&](const char* key) -> std::optional<double> {
-    const auto at = std::find_if(attested_keys.begin(), attested_keys.end(), [&](const auto& k) { return k.first == key; });
-    if (attested.contains(key) && attested[key].is_string())
-      if (const auto spread = parse_spread(attested[key].get<std::string>(), at->second, std::string("attested.") + key))
-        return spread->kind == Spread::Kind::uniform ? (spread->a + spread->b) / 2 : spread->a;
-    return read_value(attested, key, at->second, "attested");
-  };
+  DesignValues v;
+  for (const InputField& field : input_fields()) {
+    if (!(field.operations & op_complete)) continue;
+    const auto given = [&](const std::string& name) -> std::optional<double> {
+      if (attested.contains(name) && attested[name].is_string())
+        if (const auto spread = parse_spread(attested[name].get<std::string>(), field.dimension, "attested." + name))
+          return spread->kind == Spread::Kind::uniform ? (spread->a + spread->b) / 2 : spread->a;
+      return read_value(attested, name, field.dimension, "attested");
+    };
+    v.*field.member = given(field.key);
+    for (const char* alias : field.aliases)
+      if (const auto value = given(alias)) {
+        if (v.*field.member)
+          throw Error(ErrorKind::usage, std::string("attested.") + field.key + " and attested." + alias + " are one value given twice; keep one");
+        v.*field.member = value;
+      }
+  }
   CompletionRequest request;
   Attested& a = request.attested;
-  a.Lb = value("Lb"), a.L1 = value("L1"), a.L2 = value("L2"), a.H = value("H"), a.L4 = value("L4"), a.M = value("M"), a.m = value("m");
-  a.mb = value("mb"), a.D = value("D"), a.l = value("l"), a.theta_i_deg = value("theta_i_deg"), a.F = value("F");
+  a.Lb = v.Lb, a.L1 = v.L1, a.L2 = v.L2, a.H = v.H, a.L4 = v.L4, a.M = v.M, a.m = v.m, a.mb = v.mb, a.D = v.D, a.l = v.l;
+  a.theta_i_deg = v.theta_i_deg, a.F = v.F;
   MaterialOverrides material;
-  material.beta2 = value("beta2"), material.youngs_modulus = value("youngs_modulus"), material.wood_density = value("wood_density");
-  material.g = value("g");
+  material.beta2 = v.beta2, material.youngs_modulus = v.youngs_modulus, material.wood_density = v.wood_density, material.g = v.g;
   material.modulus_of_rupture = overrides.modulus_of_rupture;
   request.material = material.over(Material{});
   request.settings = settings;
-  DesignValues parts;
-  parts.counterweight_inertia = value("counterweight_inertia");
-  parts.axle_friction = value("axle_friction"), parts.axle_radius = value("axle_radius");
-  parts.hinge_friction = value("hinge_friction"), parts.hinge_radius = value("hinge_radius");
-  parts.trough_friction = value("trough_friction");
-  parts.rope_diameter = value("rope_diameter"), parts.rope_cd = value("rope_cd");
-  request.parts = independent_parts(parts);
+  request.parts = independent_parts(v);
   return request;
 }
 
@@ -174,16 +166,10 @@ ordered_json completion_answer(const CompletionRequest& request) {
 }
 
 // The dimension of a design's or an attested object's value (for a spread of it); empty for a
-// key that is no such value (a design's derived keys, Lb, DeltaU, which read_engine ignores).
+// key that is no such value (a design's derived keys, Lb, DeltaU, which read_engine passes over).
 std::optional<UnitDimension> dimension_of(const std::string& key, bool attested) {
-  if (!attested && (key == "Lb" || key == "H" || key == "l")) return std::nullopt;  // a design's, derived
-  for (const auto& [name, dimension] : attested_keys)
-    if (name == key) return dimension;
-  if (!attested && key == "L3") return UnitDimension::length;
-  if (!attested && (key == "psi_i_deg" || key == "theta")) return UnitDimension::angle;
-  if (!attested)
-    for (const PartKey& part : part_keys())
-      if (key == part.key) return part.dimension;
+  const InputField* field = find_field(key);
+  if (field && (field->operations & (attested ? op_complete : op_shot))) return field->dimension;
   return std::nullopt;
 }
 
@@ -213,8 +199,8 @@ ErrorKind kind_of(const std::string& name) {
 }  // namespace
 
 ordered_json design(const json& request) {
-  std::vector<std::string> known = {"theta_i_deg", "theta", "F", "branch", "extrapolate", "scale", "beta2", "youngs_modulus", "wood_density", "g"};
-  for (Quantity q : all_quantities) known.emplace_back(quantity_name(q));
+  std::vector<std::string> known = input_names(op_calculator);
+  known.insert(known.end(), {"branch", "extrapolate", "scale"});
   require_keys(request, known, "design");
   const ScalingTable& table = builtin_scaling_table();
   DesignRequest r;

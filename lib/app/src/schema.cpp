@@ -18,15 +18,16 @@ namespace {
 // option (error.hpp), or "where.key" in a file.
 std::string engine_key_name(const std::string& where, const std::string& key) { return where.empty() ? "{{" + key + "}}" : where + "." + key; }
 
-// A value a design must have: the message says what it is, with an example written as a flag
-// ("--mb 660kg") or as a key ("mb": "660kg"), as the design was given.
-double required(const std::optional<double>& value, const std::string& key, const std::string& where, const std::string& what,
-                const std::string& example, const std::string& alternative = "") {
-  if (!value)
-    throw Error(ErrorKind::usage, (where.empty() ? "{{" + key + "}} is missing; give " + what + ", e.g. {{" + key + "}} " + example
-                                                 : where + ": key \"" + key + "\" is missing; give " + what + ", e.g. \"" + key + "\": \"" + example + "\"") +
-                                      alternative);
-  return *value;
+// A value a design must have: the message says what it is, with the table's example written as
+// a flag ("--mb 660kg") or as a key ("mb": "660kg"), as the design was given.
+double required(const DesignValues& values, std::optional<double> DesignValues::*member, const std::string& where, const std::string& what,
+                const std::string& alternative = "") {
+  if (values.*member) return *(values.*member);
+  const InputField& field = field_of(member);
+  const std::string key = field.key, example = field.example;
+  throw Error(ErrorKind::usage, (where.empty() ? "{{" + key + "}} is missing; give " + what + ", e.g. {{" + key + "}} " + example
+                                               : where + ": key \"" + key + "\" is missing; give " + what + ", e.g. \"" + key + "\": \"" + example + "\"") +
+                                    alternative);
 }
 
 // A written number must be finite: JSON has no inf or nan, and neither has a spreadsheet. The
@@ -63,107 +64,113 @@ std::optional<double> read_value(const nlohmann::json& object, const std::string
 }
 
 
-const std::vector<PartKey>& part_keys() {
-  static const std::vector<PartKey> keys = {
-      {&DesignValues::beam_cm, "beam_cm", UnitDimension::length, "the beam as built: its centre of mass from the pivot toward the tip (with --beam-inertia or --beam-gyration)"},
-      {&DesignValues::beam_inertia, "beam_inertia", UnitDimension::inertia, "the beam's moment of inertia about the pivot"},
-      {&DesignValues::beam_gyration, "beam_gyration", UnitDimension::length, "the beam's radius of gyration about the pivot, sqrt(I/mb), instead of --beam-inertia"},
-      {&DesignValues::D_hinge, "D_hinge", UnitDimension::length, "a tapered beam of the wood: its diameter at the hinge end (with --D-tip; gives mb)"},
-      {&DesignValues::D_tip, "D_tip", UnitDimension::length, "the tapered beam's diameter at the tip"},
-      {&DesignValues::counterweight_inertia, "counterweight_inertia", UnitDimension::inertia, "the counterweight's moment of inertia about its centre (default 0, a point)"},
-      {&DesignValues::box_width, "box_width", UnitDimension::length, "a box counterweight: its width (with --box-height), inertia M (w^2 + h^2)/12"},
-      {&DesignValues::box_height, "box_height", UnitDimension::length, "the box counterweight's height"},
-      {&DesignValues::axle_friction, "axle_friction", UnitDimension::dimensionless, "Coulomb friction coefficient of the axle at the pivot (with --axle-radius; default 0)"},
-      {&DesignValues::axle_radius, "axle_radius", UnitDimension::length, "the axle's radius"},
-      {&DesignValues::hinge_friction, "hinge_friction", UnitDimension::dimensionless, "friction coefficient of the counterweight's hinge pin (with --hinge-radius; default 0)"},
-      {&DesignValues::hinge_radius, "hinge_radius", UnitDimension::length, "the hinge pin's radius"},
-      {&DesignValues::trough_friction, "trough_friction", UnitDimension::dimensionless, "friction coefficient of the projectile sliding on the trough (default 0)"},
-      {&DesignValues::rope_diameter, "rope_diameter", UnitDimension::length, "the sling rope's diameter, for its drag with --drag-in-sling (default 0: none)"},
-      {&DesignValues::rope_cd, "rope_cd", UnitDimension::dimensionless, "drag coefficient of the rope across the flow (default 1.2)"}};
-  return keys;
+namespace {
+// The parts as built (FieldGroup::part), each in SI: the last CSV columns of the verifier, so
+// that its CSV reads back.
+std::vector<const InputField*> part_fields() {
+  std::vector<const InputField*> parts;
+  for (const InputField& field : input_fields())
+    if (field.group == FieldGroup::part) parts.push_back(&field);
+  return parts;
 }
 
-namespace {
-// The parts as built (part_keys), each in SI: the last CSV columns of the verifier, so that its
-// CSV reads back.
 std::vector<std::string> part_columns() {
   std::vector<std::string> columns;
-  for (const PartKey& part : part_keys())
-    columns.push_back(std::string(part.key) + (part.dimension == UnitDimension::length ? "_m" : part.dimension == UnitDimension::inertia ? "_kg*m2" : ""));
+  for (const InputField* part : part_fields()) columns.push_back(csv_column_of(*part));
   return columns;
+}
+
+// A field of an engine's record under its input's key and unit.
+Field input(std::optional<double> DesignValues::*member, double value) {
+  const InputField& field = field_of(member);
+  return {field.key, value, field.unit};
 }
 }  // namespace
 
 std::vector<Field> engine_fields(const Engine& e) {
+  using V = DesignValues;
   const ScaledDesign s = scaled_design(e);
-  return {{"theta_i_deg", e.theta_i_deg},
-          {"F", s.F},
-          {"beta2", e.material.beta2},
-          {"L1", e.L1, "m"},
-          {"L2", e.L2, "m"},
-          {"L3", e.L3, "m"},
-          {"L4", e.L4, "m"},
-          {"D", e.D, "m"},
-          {"M", e.M, "kg"},
-          {"m", e.m, "kg"},
-          {"mb", e.mb, "kg"},
-          {"Lb", beam_length(e), "m"},
-          {"H", pivot_height(e), "m"},
-          {"l", s.l},
+  return {input(&V::theta_i_deg, e.theta_i_deg),
+          input(&V::F, s.F),
+          input(&V::beta2, e.material.beta2),
+          input(&V::L1, e.L1),
+          input(&V::L2, e.L2),
+          input(&V::L3, e.L3),
+          input(&V::L4, e.L4),
+          input(&V::D, e.D),
+          input(&V::M, e.M),
+          input(&V::m, e.m),
+          input(&V::mb, e.mb),
+          input(&V::Lb, beam_length(e)),
+          input(&V::H, pivot_height(e)),
+          input(&V::l, s.l),
           {"l4", s.l4},
           {"L", e.L3 / e.L2},
           {"mu", s.mu},
           {"mu_b", s.mu_b},
           {"K", s.K()},
           {"DeltaU", potential_energy_drop(e), "J"},
-          {"youngs_modulus", e.material.youngs_modulus, "Pa"},
-          {"wood_density", e.material.wood_density, "kg_m3"},
-          {"g", e.material.g, "m_s2"}};
+          input(&V::youngs_modulus, e.material.youngs_modulus),
+          input(&V::wood_density, e.material.wood_density),
+          input(&V::g, e.material.g)};
 }
 
 void write_engine(nlohmann::ordered_json& out, const Engine& engine) {
   const std::vector<Field> fields = engine_fields(engine);
   require_finite(fields);
   for (const Field& field : fields) out[field.key] = field.value;
-  if (engine.psi_i_deg != 0) out["psi_i_deg"] = engine.psi_i_deg;  // only a propped engine carries it
+  if (engine.psi_i_deg != 0) out[key_of(&DesignValues::psi_i_deg)] = engine.psi_i_deg;  // only a propped engine carries it
   // The parts as built, as given, so that the engine reads back the same.
+  using V = DesignValues;
   const EngineParts& p = engine.parts;
-  if (p.beam_cm) out["beam_cm"] = *p.beam_cm;
-  if (p.beam_inertia) out["beam_inertia"] = *p.beam_inertia;
-  if (p.beam_gyration) out["beam_gyration"] = *p.beam_gyration;
-  if (p.D_tip) out["D_hinge"] = *p.D_hinge, out["D_tip"] = *p.D_tip;
-  if (p.counterweight_inertia > 0) out["counterweight_inertia"] = p.counterweight_inertia;
-  if (p.axle.friction > 0 || p.axle.radius > 0) out["axle_friction"] = p.axle.friction, out["axle_radius"] = p.axle.radius;
-  if (p.hinge.friction > 0 || p.hinge.radius > 0) out["hinge_friction"] = p.hinge.friction, out["hinge_radius"] = p.hinge.radius;
-  if (p.trough_friction > 0) out["trough_friction"] = p.trough_friction;
-  if (p.rope_diameter > 0) out["rope_diameter"] = p.rope_diameter, out["rope_cd"] = p.rope_cd;
+  const auto put = [&](std::optional<double> V::*member, double value) { out[key_of(member)] = value; };
+  if (p.beam_cm) put(&V::beam_cm, *p.beam_cm);
+  if (p.beam_inertia) put(&V::beam_inertia, *p.beam_inertia);
+  if (p.beam_gyration) put(&V::beam_gyration, *p.beam_gyration);
+  if (p.D_tip) put(&V::D_hinge, *p.D_hinge), put(&V::D_tip, *p.D_tip);
+  if (p.counterweight_inertia > 0) put(&V::counterweight_inertia, p.counterweight_inertia);
+  if (p.axle.friction > 0 || p.axle.radius > 0) put(&V::axle_friction, p.axle.friction), put(&V::axle_radius, p.axle.radius);
+  if (p.hinge.friction > 0 || p.hinge.radius > 0) put(&V::hinge_friction, p.hinge.friction), put(&V::hinge_radius, p.hinge.radius);
+  if (p.trough_friction > 0) put(&V::trough_friction, p.trough_friction);
+  if (p.rope_diameter > 0) put(&V::rope_diameter, p.rope_diameter), put(&V::rope_cd, p.rope_cd);
 }
 
-DesignValues read_design_values(const nlohmann::json& object, const std::string& where) {
+void refuse_near_miss(const std::string& key, const std::vector<std::string>& known, const std::string& where) {
+  const std::string meant = near_miss(key, known);
+  if (!meant.empty())
+    throw Error(ErrorKind::usage, (where.empty() ? std::string() : where + ": ") + "unknown key \"" + key + "\"; did you mean \"" + meant + "\"?");
+}
+
+DesignValues read_design_values(const nlohmann::json& object, const std::string& where, nlohmann::json* passed) {
   if (!object.is_object())
     throw Error(ErrorKind::usage, (where.empty() ? std::string("input") : where) + ": expected a JSON object with keys L1, L2, L3 (or F), L4, M, m, mb, theta_i_deg");
   DesignValues v;
-  const std::pair<std::optional<double> DesignValues::*, std::pair<const char*, UnitDimension>> keys[] = {
-      {&DesignValues::L1, {"L1", UnitDimension::length}},       {&DesignValues::L2, {"L2", UnitDimension::length}},
-      {&DesignValues::L3, {"L3", UnitDimension::length}},       {&DesignValues::F, {"F", UnitDimension::dimensionless}},
-      {&DesignValues::L4, {"L4", UnitDimension::length}},       {&DesignValues::M, {"M", UnitDimension::mass}},
-      {&DesignValues::m, {"m", UnitDimension::mass}},           {&DesignValues::mb, {"mb", UnitDimension::mass}},
-      {&DesignValues::D, {"D", UnitDimension::length}},         {&DesignValues::theta_i_deg, {"theta_i_deg", UnitDimension::angle}},
-      {&DesignValues::psi_i_deg, {"psi_i_deg", UnitDimension::angle}},
-      {&DesignValues::beta2, {"beta2", UnitDimension::dimensionless}},
-      {&DesignValues::youngs_modulus, {"youngs_modulus", UnitDimension::pressure}},
-      {&DesignValues::wood_density, {"wood_density", UnitDimension::density}},
-      {&DesignValues::g, {"g", UnitDimension::acceleration}},   {&DesignValues::R, {"R", UnitDimension::length}},
-      {&DesignValues::T, {"T", UnitDimension::energy}}};
-  for (const auto& [member, key] : keys) v.*member = read_value(object, key.first, key.second, where);
-  for (const PartKey& part : part_keys()) v.*part.member = read_value(object, part.key, part.dimension, where);
-  // The short names the flags and CSV columns use are read too; a value given under both names is refused.
-  for (const auto& [member, name, alias] : {std::tuple{&DesignValues::theta_i_deg, "theta_i_deg", "theta"}, {&DesignValues::psi_i_deg, "psi_i_deg", "psi_i"}}) {
-    const std::optional<double> short_name = read_value(object, alias, UnitDimension::angle, where);
-    if (!short_name) continue;
-    if (v.*member)
-      throw Error(ErrorKind::usage, engine_key_name(where, name) + " and " + engine_key_name(where, alias) + " are one value given twice; keep one");
-    v.*member = short_name;
+  for (const InputField& field : input_fields()) {
+    if (!(field.operations & op_shot)) continue;
+    v.*field.member = read_value(object, field.key, field.dimension, where);
+    // An alias is read too; a value given under two names is refused.
+    for (const char* alias : field.aliases) {
+      const std::optional<double> aliased = read_value(object, alias, field.dimension, where);
+      if (!aliased) continue;
+      if (v.*field.member)
+        throw Error(ErrorKind::usage, engine_key_name(where, field.key) + " and " + engine_key_name(where, alias) + " are one value given twice; keep one");
+      v.*field.member = aliased;
+    }
+  }
+  // The other keys: what the programs write (read back, as CSV columns are), a near miss, or
+  // the caller's own (a site's name), passed through.
+  static const std::vector<std::string> known = input_names(op_shot);
+  static const std::vector<std::string> written = [] {
+    std::vector<std::string> names = design_output_names();
+    for (const std::string& name : verification_output_names()) names.push_back(name);
+    names.insert(names.end(), {"passed", "simulations", "start", "iterations", "wall_time_s", "note", "attested", "implied", "chosen",
+                               "calculator", "calculator_note", "longest_range", "longest_range_note", "warnings", "notes"});
+    return names;
+  }();
+  for (const auto& [key, value] : object.items()) {
+    if (std::find(known.begin(), known.end(), key) != known.end() || std::find(written.begin(), written.end(), key) != written.end()) continue;
+    refuse_near_miss(key, known, where);
+    if (passed) (*passed)[key] = value;
   }
   return v;
 }
@@ -214,13 +221,15 @@ void engine_parts(const DesignValues& v, const std::string& where, EngineRecord&
 EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   EngineRecord in;
   Engine& e = in.engine;
-  e.L1 = required(v.L1, "L1", where, "the long beam section", "6.13m");
-  e.L2 = required(v.L2, "L2", where, "the short beam section", "1.08m");
-  e.L4 = required(v.L4, "L4", where, "the sling length", "5.80m");
-  e.M = required(v.M, "M", where, "the counterweight mass", "14.3t");
-  e.m = required(v.m, "m", where, "the projectile mass", "100kg");
+  using V = DesignValues;
+  e.L1 = required(v, &V::L1, where, "the long beam section");
+  e.L2 = required(v, &V::L2, where, "the short beam section");
+  e.L4 = required(v, &V::L4, where, "the sling length");
+  e.M = required(v, &V::M, where, "the counterweight mass");
+  e.m = required(v, &V::m, where, "the projectile mass");
   // Without mb, a beam diameter gives it from the wood (eq:BeamMass), below.
-  if ((v.mb && !v.D_tip && !v.D_hinge) || (!v.mb && !v.D && !v.D_tip && !v.D_hinge)) e.mb = required(v.mb, "mb", where, "the beam mass", "660kg", where.empty() ? ", or the beam's diameter {{D}}, from which it follows" : ", or \"D\", the beam's diameter");
+  if ((v.mb && !v.D_tip && !v.D_hinge) || (!v.mb && !v.D && !v.D_tip && !v.D_hinge))
+    e.mb = required(v, &V::mb, where, "the beam mass", where.empty() ? ", or the beam's diameter {{D}}, from which it follows" : ", or \"D\", the beam's diameter");
   e.theta_i_deg = v.theta_i_deg.value_or(standard_theta_i_deg);
   e.psi_i_deg = v.psi_i_deg.value_or(0);
   // D = 0 is how the outputs write "not given" (they read back); below 0 it is a mistake.
@@ -296,13 +305,15 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
 }
 
 EngineRecord read_engine(const nlohmann::json& object, const std::string& where) {
-  return engine_record(read_design_values(object, where), where);
+  nlohmann::json passed = nlohmann::json::object();
+  EngineRecord record = engine_record(read_design_values(object, where, &passed), where);
+  record.passed = std::move(passed);
+  return record;
 }
 
 DesignRows read_design_rows(std::istream& input, const std::string& source) {
-  std::vector<std::string_view> engine_keys = {"L1", "L2", "L3", "F", "L4", "M", "m", "mb", "D", "theta_i_deg", "theta",
-                                                "psi_i_deg", "psi_i", "beta2", "youngs_modulus", "wood_density", "g", "R", "T"};
-  for (const PartKey& part : part_keys()) engine_keys.push_back(part.key);
+  const std::vector<std::string> inputs = input_names(op_shot);
+  const std::vector<std::string_view> engine_keys(inputs.begin(), inputs.end());
   const std::vector<std::string_view> dropped = {"X", "Y", "Lb", "H", "l", "l4", "L", "mu", "mu_b", "K", "DeltaU", "amplification",
                                                  "branch", "warnings", "air"};
   CsvReader reader(input, source);
@@ -329,8 +340,9 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
       columns.push_back({Column::engine, {header == "predicted_R_m" ? "R" : "T", header == "predicted_R_m" ? "m" : "J"}});
     } else if (own_output && std::find(results.begin(), results.end(), header) != results.end()) {
       columns.push_back({Column::dropped, {header, ""}});
-    } else if (const auto name = split_column_name(header, engine_keys)) {
-      const std::string key = name->key == "theta" ? "theta_i_deg" : name->key == "psi_i" ? "psi_i_deg" : name->key;
+    } else if (const auto name = split_column_name(header, engine_keys);
+               name && (name->unit.empty() || is_unit_word(name->unit) || near_miss(header, inputs).empty())) {
+      const std::string key = find_field(name->key)->key;  // an alias ("theta") read as its key
       for (std::size_t k = 0; k < columns.size(); ++k)
         if (columns[k].role == Column::engine && columns[k].name.key == key)
           throw Error(ErrorKind::usage, source + ": the columns '" + reader.header()[k] + "' and '" + header + "' both give " + key + "; keep one");
@@ -340,6 +352,7 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
     } else if (header == "error") {
       columns.push_back({Column::error, {header, ""}});
     } else {
+      refuse_near_miss(header, inputs, source);  // "theta_i", "L_4": meant as an input, not passed through
       columns.push_back({Column::passed, {header, ""}});
       out.passed_columns.push_back(header);
     }
@@ -349,8 +362,9 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
     return std::any_of(columns.begin(), columns.end(), [&](const Column& c) { return c.role == Column::engine && c.name.key == key; });
   };
   std::string missing;
-  for (const char* key : {"L1", "L2", "L4", "M", "m"})
-    if (!has(key)) missing += (missing.empty() ? "" : ", ") + std::string(key);
+  using V = DesignValues;
+  for (auto member : {&V::L1, &V::L2, &V::L4, &V::M, &V::m})
+    if (!has(key_of(member))) missing += (missing.empty() ? "" : ", ") + std::string(key_of(member));
   if (!has("mb") && !has("D") && !has("D_tip")) missing += (missing.empty() ? "" : ", ") + std::string("mb or D");
   if (!has("L3") && !has("F")) missing += (missing.empty() ? "" : ", ") + std::string("L3 or F");
   if (!missing.empty())
@@ -517,7 +531,7 @@ std::vector<std::string> part_cells(const Engine& engine, int digits) {
   nlohmann::ordered_json written;
   write_engine(written, engine);
   std::vector<std::string> cells;
-  for (const PartKey& part : part_keys()) cells.push_back(written.contains(part.key) ? csv_number(written[part.key].get<double>(), digits) : "");
+  for (const InputField* part : part_fields()) cells.push_back(written.contains(part->key) ? csv_number(written[part->key].get<double>(), digits) : "");
   return cells;
 }
 

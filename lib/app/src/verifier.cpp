@@ -99,6 +99,12 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   if (check.fit) engine_json.update(simulated);
   out.json["engine"] = engine_json;
   out.json["assumptions"] = assumptions_json(engine, check.settings);
+  if (!record.passed.empty()) {  // the design's keys no reader knows, as given
+    out.json["passed"] = record.passed;
+    std::vector<std::string> keys;
+    for (const auto& [key, value] : record.passed.items()) keys.push_back(key);
+    out.table += "passed through, not read: " + join(keys, ", ") + "\n";
+  }
   if (!check.plot_dir.empty())
     write_picture_folder(check.plot_dir, shot_pictures(engine, check.settings, v, out.json, check.units), picture_scripts(), check.inputs);
   if (!check.series_path.empty()) write_output_file(check.series_path, trace_csv(trace, engine), "series");

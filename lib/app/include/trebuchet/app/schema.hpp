@@ -16,6 +16,7 @@
 #include "trebuchet/completion.hpp"
 #include "trebuchet/optimizer.hpp"
 #include "trebuchet/verification.hpp"
+#include "trebuchet/app/fields.hpp"
 #include "trebuchet/app/units.hpp"
 
 namespace trebuchet {
@@ -45,41 +46,27 @@ struct EngineRecord {
   Engine engine;
   std::optional<Capacity> capacity;  ///< "R" and "T", both or neither (level 0)
   bool mb_from_D = false;            ///< mb was not given: it follows from D and the wood (eq:BeamMass)
-};
-
-/// The values of a design as given (a JSON object, a CSV row or a program's options), in SI
-/// units, angles in degrees; a value not given is empty.
-struct DesignValues {
-  std::optional<double> L1, L2, L3, F, L4, M, m, mb, D, theta_i_deg, psi_i_deg;
-  std::optional<double> beta2, youngs_modulus, wood_density, g;  ///< the material; eq:kMkD's where empty
-  std::optional<double> R, T;                                     ///< a capacity to check: both or neither
-  /// The engine as built (EngineParts): the beam by its centre of mass and inertia (or radius of
-  /// gyration), or tapered; the counterweight's inertia or box; the pins' friction; the rope.
-  std::optional<double> beam_cm, beam_inertia, beam_gyration, D_hinge, D_tip, counterweight_inertia, box_width, box_height;
-  std::optional<double> axle_friction, axle_radius, hinge_friction, hinge_radius, trough_friction, rope_diameter, rope_cd;
+  nlohmann::json passed = nlohmann::json::object();  ///< the keys no reader knows, as given: an answer names them
 };
 
 /// The parts as built that do not depend on the engine's other values (complete's, CompletionRequest::parts):
 /// the pins' friction, the counterweight's inertia, the trough's friction and the rope, from the values given.
 EngineParts independent_parts(const DesignValues& values);
 
-/// The keys of the engine as built, with their dimensions, as JSON, CSV and the flags name them.
-struct PartKey {
-  std::optional<double> DesignValues::*member;
-  const char* key;
-  UnitDimension dimension;
-  const char* help;  ///< what it is, for the flags' help
-};
-const std::vector<PartKey>& part_keys();
-
 /// The value of `key` in a JSON object: an SI number, or a string with a unit ("6.13m");
 /// empty when absent or null. Messages name it "where.key" (where empty: "{{key}}"). Throws
 /// Error(bad_number | unknown_unit) for a value of another kind.
 std::optional<double> read_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension, const std::string& where);
 
-/// The values of a JSON design object, each an SI number or a string with a unit ("6.13m").
+/// The values of a JSON design object, each an SI number or a string with a unit ("6.13m"), under
+/// its key or an alias (input_fields). A key that the programs write passes silently; a key near
+/// an input's name is refused with that name (near_miss); any other key is put in `passed`.
 /// Throws Error(bad_number | unknown_unit | usage) naming the key.
-DesignValues read_design_values(const nlohmann::json& object, const std::string& where);
+DesignValues read_design_values(const nlohmann::json& object, const std::string& where, nlohmann::json* passed = nullptr);
+
+/// Refuses `key`, which no reader of `known` takes, when it is near one of them:
+/// 'where: unknown key "theta_i"; did you mean "theta_i_deg"?' (Error(usage)).
+void refuse_near_miss(const std::string& key, const std::vector<std::string>& known, const std::string& where);
 
 /// The engine of a design's values: L3, or F = (L2 + L3)/H, theta_i 30 deg unless given, the
 /// material of eq:kMkD where not given; checked (check_engine). `where` names the design in

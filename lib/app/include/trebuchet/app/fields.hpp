@@ -1,0 +1,89 @@
+// The one table of an engine's inputs: every value a user gives the calculator, a shot, a
+// completion or an optimum, declared once with its names, dimension, unit, default, range and
+// help. The programs' flags, the JSON keys and CSV columns, the Python module's dicts, the
+// page's inputs (api::fields), the workbook's labels and docs/inputs.md all come from it.
+// An unknown key near one of its names is refused with that name (near_miss).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "trebuchet/app/units.hpp"
+
+namespace trebuchet {
+
+/// The values of a design as given (a JSON object, a CSV row or a program's options), in SI
+/// units, angles in degrees; a value not given is empty. One member per row of input_fields().
+struct DesignValues {
+  std::optional<double> L1, L2, L3, F, L4, M, m, mb, D, theta_i_deg, psi_i_deg;
+  std::optional<double> beta2, youngs_modulus, wood_density, g;  ///< the material; eq:kMkD's where empty
+  std::optional<double> R, T;                                     ///< a capacity to check: both or neither
+  std::optional<double> Lb, H, l;                                 ///< attested (complete) or given (the calculator)
+  /// The engine as built (EngineParts): the beam by its centre of mass and inertia (or radius of
+  /// gyration), or tapered; the counterweight's inertia or box; the pins' friction; the rope.
+  std::optional<double> beam_cm, beam_inertia, beam_gyration, D_hinge, D_tip, counterweight_inertia, box_width, box_height;
+  std::optional<double> axle_friction, axle_radius, hinge_friction, hinge_radius, trough_friction, rope_diameter, rope_cd;
+};
+
+/// The operations that take an input, a bit each.
+enum Operation : unsigned {
+  op_calculator = 1,  ///< a given of trebuchet-calc and api::design (two of them), or one of its settings
+  op_shot = 2,        ///< an engine: shot, fit, calibrate, a Monte Carlo run of shots
+  op_complete = 4,    ///< an attested value of complete
+  op_optimize = 8,    ///< the capacity and the settings of optimize
+};
+
+/// What an input describes: the engine's own values (a Monte Carlo run may spread them), the
+/// material, a capacity, or a part of the engine as built.
+enum class FieldGroup { engine, material, capacity, part };
+
+struct InputField {
+  std::optional<double> DesignValues::*member;
+  const char* key;                   ///< the JSON key, the CSV column's stem and the Python key: "theta_i_deg"
+  const char* flag;                  ///< the programs' option: "--theta"
+  std::vector<const char*> aliases;  ///< other names it is read under ("theta"): every one documented stays
+  UnitDimension dimension;
+  const char* unit;                  ///< its SI unit in a CSV column ("m": "L4_m"), "" for a pure number or an angle in degrees
+  FieldGroup group;
+  unsigned operations;               ///< Operation bits
+  const char* label;                 ///< a few words, for the page and the workbook: "sling"
+  const char* help;                  ///< one line, for --help and the docs
+  const char* example;               ///< a value as typed: "5.80m"
+  const char* fallback;              ///< the value taken when it is not given, in words; "" for none
+  const char* range;                 ///< the values the library takes, in words (the core checks them)
+};
+
+/// Every input, in the order the programs list them.
+const std::vector<InputField>& input_fields();
+
+/// The row of a member of DesignValues.
+const InputField& field_of(std::optional<double> DesignValues::*member);
+
+/// The row whose key or one of whose aliases is `name` exactly; nullptr for none.
+const InputField* find_field(std::string_view name);
+
+/// The key of a member: key_of(&DesignValues::L4) is the text the table gives it.
+inline const char* key_of(std::optional<double> DesignValues::*member) { return field_of(member).key; }
+
+/// The CSV column of a row written in SI: the key with its unit ("L4_m"; "theta_i_deg").
+std::string csv_column_of(const InputField& field);
+
+/// The distance between two words in single-letter edits (insert, delete, replace, or swap two
+/// neighbours: "plto" is one from "plot"), letters compared without case.
+std::size_t edit_distance(std::string_view a, std::string_view b);
+
+/// Whether `word` is near `name`: the same but for the case for names of one or two letters, one
+/// edit for names of up to 4 letters, two for longer ones (the flags' rule for their suggestions).
+bool near_name(std::string_view word, std::string_view name);
+
+/// The name a key `word` that no reader knows was meant as, or empty: a name of `known` near it
+/// (near_name), or an input's key or alias with its unit suffix left off or changed ("theta_i",
+/// "L4_ft", "M_kg" for "M"). The nearest wins.
+std::string near_miss(std::string_view word, const std::vector<std::string>& known);
+
+/// The keys and aliases of the inputs that `operations` take (any of its bits).
+std::vector<std::string> input_names(unsigned operations);
+
+}  // namespace trebuchet
