@@ -147,7 +147,8 @@ int run(const Options& options, bool format_given) {
         },
         [&](const BatchRow& row) {
           if (progress) progress(++rows_done, 0);
-          if (row.error) std::cerr << message_start() << "trebuchet-calc: line " << row.line << ": " << row.error->message(option_word) << "\n";
+          // One write a message: the error stream is unbuffered.
+          if (row.error) std::cerr << message_start() + ("trebuchet-calc: line " + std::to_string(row.line) + ": " + row.error->message(option_word) + "\n");
           if (json) {
             nlohmann::ordered_json out = {{"line", row.line}};
             for (std::size_t k = 0; k < passed_columns.size(); ++k) out[passed_columns[k]] = row.passed[k];

@@ -19,6 +19,7 @@ struct Column {
   ColumnRole role;
   std::string key;   // the given's quantity name, or the option's; the whole name when passed
   std::string unit;  // of bare numbers in the column, from the header ("R_m"); "" for SI
+  std::optional<Quantity> quantity;  // a given's
 };
 
 std::vector<Column> parse_header(const std::vector<std::string>& names) {
@@ -28,11 +29,12 @@ std::vector<Column> parse_header(const std::vector<std::string>& names) {
   int givens = 0;
   for (const std::string& name : names) {
     const auto split = split_column_name(name, keys);
-    Column column{ColumnRole::passed, name, ""};
+    Column column{ColumnRole::passed, name, "", std::nullopt};
     if (split && (split->unit.empty() || (split->key != "F" && split->key != "branch" && split->key != "theta_i_deg"))) {
       column.key = split->key, column.unit = split->unit;
       if (const auto quantity = quantity_from_name(split->key)) {
         column.role = ColumnRole::given;
+        column.quantity = quantity;
         if (!column.unit.empty()) parse_value("1" + column.unit, unit_dimension(quantity_dimension(*quantity)), "column '" + name + "'");
       } else if (split->key == "F") {
         column.role = ColumnRole::F;
@@ -76,7 +78,7 @@ DesignRequest parse_row(const std::vector<Column>& columns, const std::vector<st
     const Column& column = columns[k];
     const std::string value = column.role == ColumnRole::passed ? "" : cell_value(cells[k], column.unit, column.key);
     switch (column.role) {
-      case ColumnRole::given: givens.push_back(parse_given(column.key, value)); break;
+      case ColumnRole::given: givens.push_back({*column.quantity, parse_positive(value, unit_dimension(quantity_dimension(*column.quantity)), column.key)}); break;
       case ColumnRole::theta: request.theta_i_deg = parse_theta(value, "theta"); break;
       case ColumnRole::F: request.F = parse_positive(value, UnitDimension::dimensionless, "F"); break;
       case ColumnRole::branch: request.branch = parse_branch_choice(value); break;

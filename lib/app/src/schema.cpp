@@ -1,6 +1,8 @@
 #include "trebuchet/app/schema.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <tuple>
 
@@ -459,8 +461,25 @@ std::string design_csv_text(const OptimalEngine& design, int digits) {
   require_finite(fields);
   std::string text;
   text.reserve(16 * fields.size() + 64);
-  for (const Field& field : fields) {
-    append_csv_number(text, field.value, digits);
+  // A batch's rows share their material, angle and arm fraction: a value the same, bit for bit,
+  // as the previous row's in its column is copied from that row's text, not formatted again
+  // (formatting the numbers is most of a row's time).
+  struct Written {
+    std::uint64_t bits = 0;
+    int digits = 0;
+    std::string text;
+  };
+  thread_local std::vector<Written> previous;
+  previous.resize(fields.size());
+  for (std::size_t k = 0; k < fields.size(); ++k) {
+    Written& last = previous[k];
+    const auto bits = std::bit_cast<std::uint64_t>(fields[k].value);
+    if (last.digits != digits || last.bits != bits) {
+      last.text.clear();
+      append_csv_number(last.text, fields[k].value, digits);
+      last.bits = bits, last.digits = digits;
+    }
+    text += last.text;
     text += ',';
   }
   append_csv_cell(text, branch_name(design.branch));

@@ -1,5 +1,6 @@
 #include "trebuchet/error.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
@@ -25,7 +26,13 @@ std::size_t reference_length(std::string_view text, std::size_t at) {
 std::string with_words(std::string_view text, const std::function<std::string(std::string_view)>& word) {
   if (text.find("{{") == std::string_view::npos) return std::string(text);
   std::string out;
+  out.reserve(text.size());
   for (std::size_t at = 0; at < text.size();) {
+    // The text up to the next "{{" as it stands, then the reference there, if it is one.
+    const std::size_t brace = std::min(text.find("{{", at), text.size());
+    out.append(text, at, brace - at);
+    at = brace;
+    if (at == text.size()) break;
     if (const std::size_t length = reference_length(text, at)) {
       out += word(text.substr(at + 2, length));
       at += length + 4;
