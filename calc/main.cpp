@@ -17,6 +17,7 @@
 #include "trebuchet/app/report.hpp"
 #include "trebuchet/app/schema.hpp"
 #include "trebuchet/app/spreadsheet.hpp"
+#include "trebuchet/app/fields.hpp"
 #include "trebuchet/app/request.hpp"
 #include "trebuchet/scaling_table.hpp"
 #include "trebuchet/app/table_json.hpp"
@@ -61,6 +62,9 @@ void print(const OptimalEngine& design, const std::string& format, int digits, U
   else if (format == "csv") std::cout << csv_line(design_csv_header()) << design_csv_text(design, digits) << "\n";
   else std::cout << design_table(design, units);
 }
+
+// The table's row of a given.
+const InputField& given_field(Quantity quantity) { return *find_field(quantity_name(quantity)); }
 
 // The design with its warnings naming the options of this program (error.hpp).
 OptimalEngine in_option_words(OptimalEngine design) {
@@ -178,10 +182,11 @@ int run(const Options& options, bool format_given) {
     return 0;
   }
 
-  if (givens.size() != 2)
-    throw Error(ErrorKind::given_count, "found " + std::to_string(givens.size()) +
-                                            " given(s); give exactly two of --R --T --L1 --L2 --L4 --D --M --m --mb --Lb --l, "
-                                            "e.g. --R 150m --m 50kg");
+  if (givens.size() != 2) {
+    std::string flags;
+    for (Quantity quantity : all_quantities) flags += std::string(flags.empty() ? "" : " ") + given_field(quantity).flag;
+    throw Error(ErrorKind::given_count, "found " + std::to_string(givens.size()) + " given(s); give exactly two of " + flags + ", e.g. --R 150m --m 50kg");
+  }
   request.first = givens[0];
   request.second = givens[1];
   print(in_option_words(design_optimal_engine(table, request)), options.format, digits, units);
@@ -198,19 +203,21 @@ int main(int argc, char** argv) {
       "trebuchet-calc"};
   app.set_version_flag("--version", version_text("trebuchet-calc"));
   Options options;
+  // The givens, in the calculator's order (all_quantities), and its settings: the table's rows.
   for (Quantity quantity : all_quantities) {
-    const std::string name(quantity_name(quantity));
-    const std::string units = unit_list(unit_dimension(quantity_dimension(quantity)));
-    app.add_option("--" + name, options.givens[quantity],
-                   std::string(quantity_description(quantity)) + (quantity == Quantity::l ? "" : " [" + units + "]"));
+    const InputField& field = given_field(quantity);
+    app.add_option(field.flag, options.givens[quantity], option_help(field));
   }
-  app.add_option("--theta", options.theta, "initial beam angle theta_i [deg]: 30 or 40")->capture_default_str();
-  app.add_option("--F", options.F, "counterweight arm fraction (L2+L3)/H: 1 or 2/3")->capture_default_str();
+  using V = DesignValues;
+  const auto flag = [](std::optional<double> V::*member) { return field_of(member).flag; };
+  app.add_option(flag(&V::theta_i_deg), options.theta, "initial beam angle theta_i [deg]: 30 or 40")->capture_default_str();
+  app.add_option(flag(&V::F), options.F, "counterweight arm fraction (L2+L3)/H: 1 or 2/3")->capture_default_str();
   app.add_option("--branch", options.branch, "auto, lower or upper (two optima for 0.30 < X < 0.40)")->capture_default_str();
-  app.add_option("--beta2", options.beta2, "allowed beam bending (default: the table's, 1/300)");
-  app.add_option("--youngs-modulus", options.youngs_modulus, "Young's modulus of the wood (default 12GPa)");
-  app.add_option("--wood-density", options.wood_density, "density of the wood (default 700kg/m3)");
-  app.add_option("--g", options.g, "gravitational acceleration (default " + format_number(Material{}.g) + "m/s2; the moon: 1.62)");
+  for (auto member : {&V::beta2, &V::youngs_modulus, &V::wood_density, &V::g}) {
+    std::string* slot = member == &V::beta2 ? &options.beta2 : member == &V::youngs_modulus ? &options.youngs_modulus
+                      : member == &V::wood_density ? &options.wood_density : &options.g;
+    app.add_option(flag(member), *slot, option_help(field_of(member)));
+  }
   app.add_flag("--extrapolate", options.extrapolate, "allow X outside the table's intervals, with a warning");
   app.add_option("--scale", options.scale, "print the same design scaled by this factor (a model)");
   app.add_option("--format", options.format, "table, csv or json")->capture_default_str();

@@ -66,7 +66,7 @@ CLI::Option* value_option(CLI::App* app, Options& o, const std::string& name, Sl
     if (!spread) return;
     const auto after = std::find_if(o.uncertain.begin(), o.uncertain.end(), [&](const Uncertain& u) { return draw_rank(u.input.name) > draw_rank(name); });
     o.uncertain.insert(after, {{name, dimension, *spread}, slot});
-  }, help + (dimension == UnitDimension::dimensionless || dimension == UnitDimension::angle ? "" : " [" + unit_list(dimension) + "]"));
+  }, help);
 }
 
 // A strictly positive value with a unit into a double.
@@ -74,11 +74,9 @@ CLI::Option* positive_option(CLI::App* app, const std::string& name, double& tar
   return parsed_option(app, name, [&target, name, dimension](const std::string& text) { target = parse_positive(text, dimension, name); }, help);
 }
 
-// The option of a row of the table, its help with its default; a capacity is never a spread.
+// The option of a row of the table; a capacity is never a spread.
 void input_option(CLI::App* app, Options& o, const InputField& field, bool spreads) {
-  const std::string fallback = *field.fallback ? std::string(" (default ") + field.fallback + ")" : "";
-  value_option(app, o, field.flag, design_slot(field.member), field.dimension, field.help + fallback,
-               spreads && field.group != FieldGroup::capacity);
+  value_option(app, o, field.flag, design_slot(field.member), field.dimension, option_help(field), spreads && field.group != FieldGroup::capacity);
 }
 
 // The table's inputs that `operation` takes, of the groups given (the material has options of
@@ -101,7 +99,7 @@ void engine_options(CLI::App* app, Options& o, bool spreads) {
 
 void target_level_option(CLI::App* app, Options& o, bool spreads) {
   value_option(app, o, "--target-level", option_slot(&Options::target_level), UnitDimension::length,
-               "target height relative to the engine's base, e.g. -54m (default 0)", spreads);
+               "target height relative to the engine's base, e.g. -54m (default 0) [" + unit_list(UnitDimension::length) + "]", spreads);
 }
 
 // A whole number from `lowest` to `highest` into `target`; the message names the option and the range.
@@ -189,7 +187,7 @@ void air_options(CLI::App* app, Options& o) {
   app->add_flag("--drag-in-sling", o.drag_in_sling,
                 "with --air: the air acts before the release too, on the projectile in the trough and the sling and on the rope (--rope-diameter)");
   value_option(app, o, "--air-density", option_slot(&Options::air_density), UnitDimension::density,
-               "density of the air (default 1.2kg/m3)", true, true);
+               "density of the air (default 1.2kg/m3) [" + unit_list(UnitDimension::density) + "]", true, true);
   parsed_option(app, "--cd", [&o](const std::string& text) {
     if (text == "Re") o.drag_of_reynolds = true;
     else if (text.find_first_of("0123456789") == std::string::npos)
@@ -206,7 +204,7 @@ void air_options(CLI::App* app, Options& o) {
     o.projectile_density = parse_positive(text, UnitDimension::density, "--projectile");
   }, "stone (2500kg/m3, the default), iron (7870kg/m3) or a density: gives the sphere's size");
   value_option(app, o, "--wind", option_slot(&Options::wind), UnitDimension::speed,
-               "horizontal wind toward the target, e.g. 5m/s or -20km/h (against)", true);
+               "horizontal wind toward the target, e.g. 5m/s or -20km/h (against) [" + unit_list(UnitDimension::speed) + "]", true);
   parsed_option(app, "--range-from", [&o](const std::string& text) {
     o.settings.range_from_release = parse_range_from(text, "--range-from");
   }, "pivot (the paper's: to the target level, the default) or release (Denny's: from the release point back to its height)");
@@ -300,7 +298,7 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
     const InputField& field = field_of(member);
     parsed_option(opt, field.flag, [&o, name = std::string(field.flag), member = member, dimension = field.dimension](const std::string& text) {
       o.design.*member = parse_positive(text, dimension, name);
-    }, field.help);
+    }, option_help(field));
   }
   for (CLI::App* sub : {s.optimize, s.derive_table}) {
     block_options(sub, o);

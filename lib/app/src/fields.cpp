@@ -27,29 +27,29 @@ const std::vector<InputField>& input_fields() {
       {&V::L2, "L2", "--L2", {}, D::length, "m", G::engine, calculator_too, "short arm", "short beam section, pivot to hinge", "1.08m", "", "1e-6 to 1e6 m"},
       {&V::L3, "L3", "--L3", {}, D::length, "m", G::engine, shot, "counterweight arm", "counterweight arm, hinge to the counterweight's centre (or F)", "1.2m", "", "1e-6 to 1e6 m"},
       {&V::F, "F", "--F", {}, D::dimensionless, "", G::engine, op_calculator | shot_complete | op_optimize, "(L2 + L3)/H",
-       "arm fraction (L2 + L3)/H, instead of L3", "2/3", "2/3 (complete, optimize); the calculator's 1 or 2/3", "positive"},
+       "counterweight arm fraction (L2 + L3)/H, instead of L3", "2/3", "2/3", "positive"},
       {&V::L4, "L4", "--L4", {}, D::length, "m", G::engine, calculator_too, "sling", "sling length, spigot to projectile", "5.80m", "", "1e-6 to 1e6 m"},
       {&V::M, "M", "--M", {}, D::mass, "kg", G::engine, calculator_too, "counterweight", "counterweight mass", "14.3t", "", "1e-9 to 1e12 kg"},
-      {&V::m, "m", "--m", {}, D::mass, "kg", G::engine, calculator_too | op_optimize, "projectile", "projectile mass (optimize: instead of T, the optimum for R with this stone)",
+      {&V::m, "m", "--m", {}, D::mass, "kg", G::engine, calculator_too | op_optimize, "projectile", "projectile mass",
        "100kg", "", "1e-9 to 1e12 kg"},
-      {&V::mb, "mb", "--mb", {}, D::mass, "kg", G::engine, calculator_too, "beam mass", "beam mass (or D)", "660kg", "from D by eq:BeamMass", "0, or 1e-9 to 1e12 kg"},
+      {&V::mb, "mb", "--mb", {}, D::mass, "kg", G::engine, calculator_too, "beam mass", "beam mass (or D)", "660kg", "from D, eq:BeamMass", "0, or 1e-9 to 1e12 kg"},
       {&V::D, "D", "--D", {}, D::length, "m", G::engine, calculator_too, "beam diameter",
        "beam diameter: the beam's stress; without mb, mb = rho_d (pi/4) D^2 Lb (eq:BeamMass)", "0.4m", "0: not given", "0, or 1e-6 to 1e6 m"},
       {&V::theta_i_deg, "theta_i_deg", "--theta", {"theta"}, D::angle, "", G::engine, op_calculator | shot_complete | op_optimize, "θi [deg]",
        "initial beam angle theta_i from the downward vertical", "30", "30", "0 to 90 deg, both excluded (the calculator: 30 or 40)"},
       {&V::psi_i_deg, "psi_i_deg", "--psi-i", {"psi_i"}, D::angle, "", G::engine, shot, "ψi [deg]",
        "initial counterweight angle psi_i of a propped counterweight (negative: held back, the sense opposite to the beam's turn)", "-20",
-       "0 (hanging)", "-90 to 90 deg"},
+       "0, hanging", "-90 to 90 deg"},
       // What a completion may be given in place of L1 and L2 (and the calculator as a given).
       {&V::Lb, "Lb", "--Lb", {}, D::length, "m", G::engine, op_calculator | op_complete, "beam length", "beam length L1 + L2", "9.5m", "", "1e-6 to 1e6 m"},
       {&V::H, "H", "--H", {}, D::length, "m", G::engine, op_complete, "pivot height", "pivot height L1 cos(theta_i)", "3.5m", "", "1e-6 to 1e6 m"},
       {&V::l, "l", "--l", {}, D::dimensionless, "", G::engine, op_calculator | op_complete | op_optimize, "beam ratio L1/L2",
-       "beam ratio L1/L2 (optimize: held, appendix B)", "4.5", "", "above 1"},
+       "beam ratio L1/L2", "4.5", "", "above 1"},
       // A capacity: to check a shot against, or to design for.
       {&V::R, "R", "--R", {}, D::length, "m", G::capacity, op_calculator | shot | op_optimize, "range",
-       "range from the pivot to where the projectile comes down at the target level (a shot: the prediction to check, or to fit)", "150m", "", "positive"},
+       "range from the pivot to where the projectile comes down at the target level", "150m", "", "positive"},
       {&V::T, "T", "--T", {}, D::energy, "J", G::capacity, op_calculator | shot | op_optimize, "energy",
-       "kinetic energy of the projectile at the target level (eq:T) (a shot: the prediction to check, or to fit)", "40kJ", "", "positive"},
+       "kinetic energy of the projectile at the target level (eq:T)", "40kJ", "", "positive"},
       // The material (eq:kMkD, eq:bend_L2, eq:BeamMass).
       {&V::beta2, "beta2", "--beta2", {}, D::dimensionless, "", G::material, material_everywhere, "β2", "allowed bending of the short beam section under M (eq:bend_L2)",
        "1/300", "1/300", "positive"},
@@ -57,35 +57,35 @@ const std::vector<InputField>& input_fields() {
        "Young's modulus of the beam's wood", "12GPa", "12 GPa", "positive"},
       {&V::wood_density, "wood_density", "--wood-density", {}, D::density, "kg_m3", G::material, material_everywhere, "wood density",
        "density of the beam's wood, for D and mb (eq:BeamMass)", "700kg/m3", "700 kg/m3", "positive"},
-      {&V::g, "g", "--g", {}, D::acceleration, "m_s2", G::material, material_everywhere, "g", "gravitational acceleration (the moon: 1.62)", "9.81m/s2",
+      {&V::g, "g", "--g", {}, D::acceleration, "m_s2", G::material, material_everywhere, "g", "gravitational acceleration; the moon's is 1.62 m/s2", "9.81m/s2",
        "9.81 m/s2", "positive"},
       // The engine as built (EngineParts): a shot takes all of them, complete those that do not
       // depend on the values it chooses (its beam is uniform, its counterweight a point or given).
       {&V::beam_cm, "beam_cm", "--beam-cm", {}, D::length, "m", G::part, shot, "beam's centre of mass",
-       "the beam as built: its centre of mass from the pivot toward the tip (with beam_inertia or beam_gyration)", "1.5m", "a uniform beam's", "on the beam"},
+       "the beam as built: its centre of mass from the pivot toward the tip (with its inertia or radius of gyration)", "1.5m", "a uniform beam's", "on the beam"},
       {&V::beam_inertia, "beam_inertia", "--beam-inertia", {}, D::inertia, "kg*m2", G::part, shot, "beam's inertia", "the beam's moment of inertia about the pivot",
        "2000kg*m2", "a uniform beam's", "positive"},
       {&V::beam_gyration, "beam_gyration", "--beam-gyration", {}, D::length, "m", G::part, shot, "beam's radius of gyration",
-       "the beam's radius of gyration about the pivot, sqrt(I/mb), instead of beam_inertia", "2.2m", "a uniform beam's", "1e-6 to 1e6 m"},
+       "the beam's radius of gyration about the pivot, sqrt(I/mb), instead of its inertia", "2.2m", "a uniform beam's", "1e-6 to 1e6 m"},
       {&V::D_hinge, "D_hinge", "--D-hinge", {}, D::length, "m", G::part, shot, "taper at the hinge",
-       "a tapered beam of the wood: its diameter at the hinge end (with D_tip; gives mb)", "0.45m", "", "1e-6 to 1e6 m"},
+       "a tapered beam of the wood: its diameter at the hinge end (with the tip's; gives mb)", "0.45m", "", "1e-6 to 1e6 m"},
       {&V::D_tip, "D_tip", "--D-tip", {}, D::length, "m", G::part, shot, "taper at the tip", "the tapered beam's diameter at the tip", "0.2m", "", "1e-6 to 1e6 m"},
       {&V::counterweight_inertia, "counterweight_inertia", "--counterweight-inertia", {}, D::inertia, "kg*m2", G::part, shot_complete,
-       "counterweight's inertia", "the counterweight's moment of inertia about its centre", "500kg*m2", "0 (a point)", "0 or more"},
+       "counterweight's inertia", "the counterweight's moment of inertia about its centre", "500kg*m2", "0, a point", "0 or more"},
       {&V::box_width, "box_width", "--box-width", {}, D::length, "m", G::part, shot, "box width",
-       "a box counterweight: its width (with box_height), inertia M (w^2 + h^2)/12", "1.2m", "", "1e-6 to 1e6 m"},
+       "a box counterweight: its width (with its height), inertia M (w^2 + h^2)/12", "1.2m", "", "1e-6 to 1e6 m"},
       {&V::box_height, "box_height", "--box-height", {}, D::length, "m", G::part, shot, "box height", "the box counterweight's height", "0.8m", "", "1e-6 to 1e6 m"},
       {&V::axle_friction, "axle_friction", "--axle-friction", {}, D::dimensionless, "", G::part, shot_complete, "axle friction",
-       "Coulomb friction coefficient of the axle at the pivot (with axle_radius)", "0.1", "0", "0, or 1e-6 to 2"},
+       "Coulomb friction coefficient of the axle at the pivot (with its radius)", "0.1", "0", "0, or 1e-6 to 2"},
       {&V::axle_radius, "axle_radius", "--axle-radius", {}, D::length, "m", G::part, shot_complete, "axle radius", "the axle's radius", "5cm", "0", "1e-6 to 1e6 m"},
       {&V::hinge_friction, "hinge_friction", "--hinge-friction", {}, D::dimensionless, "", G::part, shot_complete, "hinge friction",
-       "friction coefficient of the counterweight's hinge pin (with hinge_radius)", "0.1", "0", "0, or 1e-6 to 2"},
+       "friction coefficient of the counterweight's hinge pin (with its radius)", "0.1", "0", "0, or 1e-6 to 2"},
       {&V::hinge_radius, "hinge_radius", "--hinge-radius", {}, D::length, "m", G::part, shot_complete, "hinge radius", "the hinge pin's radius", "3cm", "0",
        "1e-6 to 1e6 m"},
       {&V::trough_friction, "trough_friction", "--trough-friction", {}, D::dimensionless, "", G::part, shot_complete, "trough friction",
        "friction coefficient of the projectile sliding on the trough", "0.3", "0", "0, or 1e-6 to 2"},
       {&V::rope_diameter, "rope_diameter", "--rope-diameter", {}, D::length, "m", G::part, shot_complete, "rope diameter",
-       "the sling rope's diameter, for its drag with drag_in_sling", "2cm", "0 (no drag)", "0 to half the sling's length"},
+       "the sling rope's diameter, for its drag when the air acts in the sling", "2cm", "0, no drag", "0 to half the sling's length"},
       {&V::rope_cd, "rope_cd", "--rope-cd", {}, D::dimensionless, "", G::part, shot_complete, "rope's drag coefficient", "drag coefficient of the rope across the flow",
        "1.2", "1.2", "1e-3 to 1e2"}};
   return fields;
@@ -115,6 +115,14 @@ const InputField* find_field(std::string_view name) {
       if (name == alias) return &field;
   }
   return nullptr;
+}
+
+std::string option_help(const InputField& field) {
+  std::string help = field.help;
+  if (*field.fallback) help += std::string(" (default ") + field.fallback + ")";
+  if (field.dimension != UnitDimension::dimensionless && field.dimension != UnitDimension::angle) help += " [" + unit_list(field.dimension) + "]";
+  if (field.dimension == UnitDimension::angle) help += " [deg]";
+  return help;
 }
 
 std::string csv_column_of(const InputField& field) { return *field.unit ? std::string(field.key) + "_" + field.unit : field.key; }

@@ -67,6 +67,10 @@ const InputField* find_field(std::string_view name);
 /// The key of a member: key_of(&DesignValues::L4) is the text the table gives it.
 inline const char* key_of(std::optional<double> DesignValues::*member) { return field_of(member).key; }
 
+/// A row's help for a program's option: the help, its default and the units it takes
+/// ("sling length, spigot to projectile [m, cm, mm, km, ft, in]").
+std::string option_help(const InputField& field);
+
 /// The CSV column of a row written in SI: the key with its unit ("L4_m"; "theta_i_deg").
 std::string csv_column_of(const InputField& field);
 
