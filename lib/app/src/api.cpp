@@ -31,7 +31,7 @@ namespace {
 using json = nlohmann::json;
 using ordered_json = nlohmann::ordered_json;
 
-// The messages of this API name each value by its key, bare: "L4", "design.L4". The core names
+// The messages of this API name each value by its key, bare: "L1", "design.L1". The core names
 // the air's values as the programs' options do; here they are keys of "air".
 std::string key_word(std::string_view name) {
   if (name == "air_density") return "air.density";

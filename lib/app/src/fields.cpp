@@ -27,7 +27,7 @@ const std::vector<InputField>& input_fields() {
       {&V::L2, "L2", "--L2", {}, D::length, "m", G::engine, calculator_too, "short arm", "short beam section, pivot to hinge", "1.08m", "", "1e-6 to 1e6 m"},
       {&V::L3, "L3", "--L3", {}, D::length, "m", G::engine, shot, "counterweight arm", "counterweight arm, hinge to the counterweight's centre (or F)", "1.2m", "", "1e-6 to 1e6 m"},
       {&V::F, "F", "--F", {}, D::dimensionless, "", G::engine, op_calculator | shot_complete | op_optimize, "(L2 + L3)/H",
-       "counterweight arm fraction (L2 + L3)/H, instead of L3", "2/3", "2/3", "positive"},
+       "counterweight arm fraction (L2 + L3)/H, instead of L3 (section 2; not the force factor of eq:F)", "2/3", "2/3", "positive"},
       {&V::L4, "L4", "--L4", {}, D::length, "m", G::engine, calculator_too, "sling", "sling length, spigot to projectile", "5.80m", "", "1e-6 to 1e6 m"},
       {&V::M, "M", "--M", {}, D::mass, "kg", G::engine, calculator_too, "counterweight", "counterweight mass", "14.3t", "", "1e-9 to 1e12 kg"},
       {&V::m, "m", "--m", {}, D::mass, "kg", G::engine, calculator_too | op_optimize, "projectile", "projectile mass",

@@ -1,5 +1,7 @@
 #include "trebuchet/app/report.hpp"
 
+#include "trebuchet/app/fields.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -59,11 +61,13 @@ std::string design_table(const OptimalEngine& design, UnitSystem units) {
   t += "  capacity       " + cell("R", length(design.capacity.R)) + cell("T", energy(design.capacity.T)) +
        cell("X", format_significant(design.coordinates.X, 3)) + cell("Y", format_significant(design.coordinates.Y, 3)) + "\n";
   t += "                 in vacuum, from the pivot to the base's level (trebuchet-verify shot --air flies it through air)\n";
-  t += "  beam           " + cell("L1", length(e.L1)) + cell("L2", length(e.L2)) + cell("Lb", length(beam_length(e))) + cell("H", length(pivot_height(e))) + "\n";
-  t += "                 " + cell("D", length(e.D)) + cell("mb", mass(e.mb)) + "\n";
-  t += "  counterweight  " + cell("M", mass(e.M)) + cell("L3", length(e.L3)) + "\n";
-  t += "  sling          " + cell("L4", length(e.L4)) + "\n";
-  t += "  projectile     " + cell("m", mass(e.m)) + "\n";
+  using V = DesignValues;  // the engine's values under their keys (fields.hpp)
+  t += "  beam           " + cell(key_of(&V::L1), length(e.L1)) + cell(key_of(&V::L2), length(e.L2)) + cell(key_of(&V::Lb), length(beam_length(e))) +
+       cell(key_of(&V::H), length(pivot_height(e))) + "\n";
+  t += "                 " + cell(key_of(&V::D), length(e.D)) + cell(key_of(&V::mb), mass(e.mb)) + "\n";
+  t += "  counterweight  " + cell(key_of(&V::M), mass(e.M)) + cell(key_of(&V::L3), length(e.L3)) + "\n";
+  t += "  sling          " + cell(key_of(&V::L4), length(e.L4)) + "\n";
+  t += "  projectile     " + cell(key_of(&V::m), mass(e.m)) + "\n";
   t += "  scaled         " + cell("l", format_significant(s.l, 4)) + cell("l4", format_significant(s.l4, 4)) +
        cell("L", format_significant(e.L3 / e.L2, 4)) + "\n";
   t += "                 " + cell("mu", format_significant(s.mu, 4)) + cell("mu_b", format_significant(s.mu_b, 4)) +
@@ -248,8 +252,9 @@ namespace {
 
 // The engine's quantities that a completion keeps or chooses, with their values.
 std::vector<std::pair<std::string, double>> completed_values(const Engine& e) {
-  return {{"Lb", beam_length(e)}, {"L1", e.L1}, {"L2", e.L2}, {"H", pivot_height(e)}, {"L3", e.L3}, {"L4", e.L4},
-          {"M", e.M}, {"m", e.m}, {"mb", e.mb}, {"D", e.D}};
+  using V = DesignValues;
+  return {{key_of(&V::Lb), beam_length(e)}, {key_of(&V::L1), e.L1}, {key_of(&V::L2), e.L2}, {key_of(&V::H), pivot_height(e)},
+          {key_of(&V::L3), e.L3}, {key_of(&V::L4), e.L4}, {key_of(&V::M), e.M}, {key_of(&V::m), e.m}, {key_of(&V::mb), e.mb}, {key_of(&V::D), e.D}};
 }
 
 bool listed(const std::vector<std::string>& names, const std::string& name) {

@@ -15,11 +15,23 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/quantity.hpp"
+#include "trebuchet/app/fields.hpp"
 #include "trebuchet/app/output_files.hpp"
 #include "trebuchet/app/units.hpp"
 
 namespace trebuchet {
 namespace {
+
+using V = DesignValues;
+
+// An input's unit as the sheets write it: "m", "kg", "deg", "" for a pure number.
+std::string sheet_unit(const InputField& field) {
+  if (field.dimension == UnitDimension::angle) return "deg";
+  std::string unit = field.unit;
+  std::replace(unit.begin(), unit.end(), '_', '/');  // kg_m3: kg/m3
+  return unit;
+}
+
 
 // A formula and its value, built together so that the text written to a cell and the value
 // cached beside it come from one expression: each equation of the workbook is written once.
@@ -426,10 +438,18 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
     const int row = 3 + 2 * k;
     const std::string which = k == 0 ? "first" : "second";
     const std::string quantity(quantity_name(givens[k].quantity));
-    s.describe(row, which + " given", "", k < fixed ? "fixed on this sheet" : "one of R, T, L1, L2, L4, D, M, m, mb, l (Lb: use trebuchet-calc)");
+    // The calculator's givens but Lb, whose pairs are not log-linear (write_spreadsheet).
+    static std::vector<const char*> quantities = [] {
+      std::vector<const char*> names;
+      for (Quantity q : all_quantities)
+        if (q != Quantity::Lb) names.push_back(quantity_name(q).data());
+      names.push_back(nullptr);
+      return names;
+    }();
+    std::vector<std::string> listed(quantities.begin(), quantities.end() - 1);
+    s.describe(row, which + " given", "", k < fixed ? "fixed on this sheet" : "one of " + join(listed, ", ") + " (Lb: use trebuchet-calc)");
     names[k] = k < fixed ? s.text_cell(row, 1, quantity) : s.input_text(row, 1, quantity);
-    static const char* quantities[] = {"R", "T", "L1", "L2", "L4", "D", "M", "m", "mb", "l", nullptr};
-    if (k >= fixed) s.choices(row, 1, quantities);
+    if (k >= fixed) s.choices(row, 1, quantities.data());
     s.describe(row + 1, which + " value", "", "a number in SI base units, as the unit beside it says: 250 for 250 m, 3110 for 3.11 t");
     values[k] = s.number_input(row + 1, 1, givens[k].value, "Type a number alone, in the unit shown beside it (m, J or kg): 250 for 250 m, 3110 for 3.11 t.");
   }
@@ -531,15 +551,20 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
   output("T in kJ", out.T / num(1000), "kJ", "the same energy in kilojoules");
   output("X", (num(5) * lr - lt) / sqrt26, "", "eq:Xi: (5 ln(R/R0) - ln(T/T0))/sqrt(26)");
   output("Y", (lr + num(5) * lt) / sqrt26, "", "eq:XY_RT");
-  out.L1 = output("L1", L1, "m", "long beam section (eq:ZRT)");
-  out.L2 = output("L2", L2, "m", "short beam section (eq:ZRT)");
-  out.L3 = output("L3", F * out.L1 * cos_deg(theta) - out.L2, "m", "counterweight arm: L2 + L3 = F H, H = L1 cos(theta_i) (section 2)");
-  out.L4 = output("L4", Z(Param::L4), "m", "sling (eq:ZRT)");
-  out.D = output("D", Z(Param::D) * f.diameter, "m", "beam diameter (eq:ZRT, eq:bend_L2)");
-  out.M = output("M", Z(Param::M) * f.mass, "kg", "counterweight (eq:ZRT)");
+  // The engine's values under their keys, units and labels (fields.hpp), with where each comes from.
+  auto engine_output = [&](std::optional<double> V::*member, const Expr& e, const std::string& source) {
+    const InputField& field = field_of(member);
+    return output(field.key, e, sheet_unit(field), std::string(field.label) + " (" + source + ")");
+  };
+  out.L1 = engine_output(&V::L1, L1, "eq:ZRT");
+  out.L2 = engine_output(&V::L2, L2, "eq:ZRT");
+  out.L3 = engine_output(&V::L3, F * out.L1 * cos_deg(theta) - out.L2, "L2 + L3 = F H, H = L1 cos(theta_i), section 2");
+  out.L4 = engine_output(&V::L4, Z(Param::L4), "eq:ZRT");
+  out.D = engine_output(&V::D, Z(Param::D) * f.diameter, "eq:ZRT, eq:bend_L2");
+  out.M = engine_output(&V::M, Z(Param::M) * f.mass, "eq:ZRT");
   output("M in t", out.M / num(1000), "t", "the same counterweight in tonnes");
-  out.m = output("m", Z(Param::m) * f.mass, "kg", "projectile (eq:ZRT)");
-  out.mb = output("mb", Z(Param::mb) * f.mass, "kg", "beam (eq:ZRT)");
+  out.m = engine_output(&V::m, Z(Param::m) * f.mass, "eq:ZRT");
+  out.mb = engine_output(&V::mb, Z(Param::mb) * f.mass, "eq:ZRT");
   output("amplification", amplification, "", "relative change of R or T per relative change of a given (eq:ZiZj_RT); above 10 ill-conditioned, above 50 refused");
   worksheet_print_area(s.raw(), 0, 0, static_cast<lxw_row_t>(row), 3);
   return out;
@@ -550,12 +575,16 @@ void write_derived(lxw_workbook* book, Formats& formats, const Engine& e, const 
   Sheet s(book, "derived", formats);
   s.title("Derived quantities of an engine (section 2, eq:Design, eq:kMkD, eq:DU)",
           "Type an engine in the yellow cells (it opens on the optimum for Alcala la Vieja, site Ca: 150 m, 50 kg); g is the material sheet's.");
-  const Expr L1 = s.input_row(3, "L1", e.L1, "m", "long beam section, pivot to spigot");
-  const Expr L2 = s.input_row(4, "L2", e.L2, "m", "short beam section, pivot to hinge");
-  const Expr L4 = s.input_row(5, "L4", e.L4, "m", "sling");
-  const Expr M = s.input_row(6, "M", e.M, "kg", "counterweight");
-  const Expr m = s.input_row(7, "m", e.m, "kg", "projectile");
-  const Expr mb = s.input_row(8, "mb", e.mb, "kg", "beam");
+  auto engine_input = [&](int row, std::optional<double> V::*member, double value) {
+    const InputField& field = field_of(member);
+    return s.input_row(row, field.key, value, sheet_unit(field), field.help);
+  };
+  const Expr L1 = engine_input(3, &V::L1, e.L1);
+  const Expr L2 = engine_input(4, &V::L2, e.L2);
+  const Expr L4 = engine_input(5, &V::L4, e.L4);
+  const Expr M = engine_input(6, &V::M, e.M);
+  const Expr m = engine_input(7, &V::m, e.m);
+  const Expr mb = engine_input(8, &V::mb, e.mb);
   const Expr theta = s.input_row(9, "theta_i", e.theta_i_deg, "deg", "initial beam angle from the downward vertical");
   const Expr F = s.input_row(10, "F", arm_fraction(e), "", "(L2 + L3)/H; type =2/3 for two thirds");
   int row = 12;
@@ -586,14 +615,14 @@ void write_model_scaling(lxw_workbook* book, Formats& formats, const DesignResul
   s.heading(5, 1, "model");
   s.heading(5, 2, "unit");
   s.heading(5, 3, "full size, and the scaling");
-  const std::pair<const char*, std::pair<Expr, double>> rows[] = {
-      {"R", {full.R, 1}},   {"T", {full.T, 5}},   {"L1", {full.L1, 1}}, {"L2", {full.L2, 1}}, {"L3", {full.L3, 1}},
-      {"L4", {full.L4, 1}}, {"D", {full.D, 1.5}}, {"M", {full.M, 4}},   {"m", {full.m, 4}},   {"mb", {full.mb, 4}}};
+  // Each value with the power of lambda it scales with (eq:ExtraScalings).
+  const std::tuple<std::optional<double> V::*, Expr, double> rows[] = {
+      {&V::R, full.R, 1},   {&V::T, full.T, 5},   {&V::L1, full.L1, 1}, {&V::L2, full.L2, 1}, {&V::L3, full.L3, 1},
+      {&V::L4, full.L4, 1}, {&V::D, full.D, 1.5}, {&V::M, full.M, 4},   {&V::m, full.m, 4},   {&V::mb, full.mb, 4}};
   int row = 6;
-  for (const auto& [label, value] : rows) {
-    const auto& [full_size, exponent] = value;
-    const char* unit = label[0] == 'T' ? "J" : (label[0] == 'M' || label[0] == 'm') ? "kg" : "m";
-    s.result_row(row, label, full.valid, full_size * power(lambda, exponent), unit, "");
+  for (const auto& [member, full_size, exponent] : rows) {
+    const InputField& field = field_of(member);
+    s.result_row(row, field.key, full.valid, full_size * power(lambda, exponent), sheet_unit(field), "");
     s.result(row, 4, full.valid, full_size);
     s.text(row, 3, "full size (column E) times lambda^" + number_text(exponent));
     ++row;
@@ -603,9 +632,14 @@ void write_model_scaling(lxw_workbook* book, Formats& formats, const DesignResul
 void write_glossary(lxw_workbook* book, Formats& formats) {
   Sheet s(book, "glossary", formats);
   s.title("Glossary", "The symbols of the workbook, as in Horsdal's paper (section and equation labels in brackets).");
-  const std::array<std::array<const char*, 3>, 28> entries = {{
-      {"R", "range: from the pivot to where the projectile comes down at the target level, in vacuum", "m"},
-      {"T", "kinetic energy of the projectile at the target level (eq:T)", "J"},
+  // The engine's values as the table of inputs says them (fields.hpp), then the workbook's own symbols.
+  std::vector<std::array<std::string, 3>> entries;
+  for (auto member : {&V::R, &V::T, &V::L1, &V::L2, &V::L3, &V::L4, &V::Lb, &V::H, &V::D, &V::M, &V::m, &V::mb, &V::theta_i_deg, &V::F, &V::beta2}) {
+    const InputField& field = field_of(member);
+    const std::string unit = sheet_unit(field);
+    entries.push_back({field.key, field.help, unit.empty() ? "dimensionless" : unit});
+  }
+  const std::array<std::array<const char*, 3>, 14> symbols = {{
       {"R0, T0", "reference capacity of the table", "m, J"},
       {"X", "eq:Xi: (5 ln(R/R0) - ln(T/T0))/sqrt(26); optimal engines of equal X are scaled copies", "dimensionless"},
       {"Y", "eq:XY_RT: (ln(R/R0) + 5 ln(T/T0))/sqrt(26), the size along X = const", "dimensionless"},
@@ -615,24 +649,14 @@ void write_glossary(lxw_workbook* book, Formats& formats) {
       {"a, p, q", "the fitted constants of eq:ZRT: Z/Z0 = a (R/R0)^p (T/T0)^q", "dimensionless"},
       {"D_ij", "determinant of the pair's exponents (eq:ZiZj_RT); near 0 the pair barely fixes the capacity", "dimensionless"},
       {"amplification", "largest relative change of R or T per relative change of a given", "dimensionless"},
-      {"L1", "long beam section, pivot to spigot", "m"},
-      {"L2", "short beam section, pivot to hinge", "m"},
-      {"L3", "counterweight arm, hinge to the counterweight's centre: L2 + L3 = F H", "m"},
-      {"L4", "sling, spigot to projectile", "m"},
-      {"Lb", "beam length L1 + L2", "m"},
-      {"H", "pivot height L1 cos(theta_i)", "m"},
-      {"D", "beam diameter, from the allowed bending (eq:bend_L2)", "m"},
-      {"M, m, mb", "counterweight, projectile and beam masses", "kg"},
-      {"theta_i", "initial angle of the long beam section from the downward vertical", "deg"},
-      {"F", "arm fraction (L2 + L3)/H of the design (section 2); not the force factor of eq:F", "dimensionless"},
       {"l, l4, L", "L1/L2, L4/L1, L3/L2 (eq:Design)", "dimensionless"},
       {"mu, mu_b", "m/M and mb/M (eq:Design)", "dimensionless"},
       {"K", "(l + 1)/mu_b (eq:kMkD)", "dimensionless"},
       {"DeltaU", "potential energy released by a shot (eq:DU)", "J"},
       {"Q, eps", "quality and efficiency of a shot (eq:Q, eq:Aux); the verifier computes them", "dimensionless"},
-      {"beta2", "allowed bending u2/L2 of the short beam section (eq:bend_L2)", "dimensionless"},
-      {"k_M, k_D", "material constants of eq:kMkD: (4 pi/3) g rho^2/E and (16/3) g rho/E", "kg/m4, 1/m"},
   }};
+  for (const auto& [symbol, meaning, unit] : symbols) entries.push_back({symbol, meaning, unit});
+  entries.push_back({"k_M, k_D", "material constants of eq:kMkD: (4 pi/3) g rho^2/E and (16/3) g rho/E", "kg/m4, 1/m"});
   s.heading(3, 0, "symbol");
   s.heading(3, 1, "unit");
   s.heading(3, 3, "meaning");

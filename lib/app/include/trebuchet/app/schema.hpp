@@ -77,7 +77,7 @@ EngineRecord engine_record(const DesignValues& values, const std::string& where)
 /// (default 30), D, the material keys (default eq:kMkD's) and R with T. Values are SI numbers
 /// or strings with a unit ("6.13m"); other keys are ignored, so that every writer's output
 /// reads back. `where` names the object in messages ("design[2]"; empty: the command line,
-/// whose keys are named as flags, "--L4"). Throws Error(bad_number | unknown_unit | usage)
+/// whose keys are named as flags, "--L1"). Throws Error(bad_number | unknown_unit | usage)
 /// naming the key and the fix, and checks the engine (check_engine).
 EngineRecord read_engine(const nlohmann::json& object, const std::string& where);
 
