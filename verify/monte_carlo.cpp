@@ -66,7 +66,8 @@ int run_monte_carlo(const Options& o, bool complete) {
   for (const bool completion_only : {true, false})
     for (const InputField& field : input_fields()) {
       const std::optional<double>& value = o.design.*field.member;
-      if (field.group != FieldGroup::engine || !value || completion_only == static_cast<bool>(field.operations & op_shot)) continue;
+      const bool engine = field.group == FieldGroup::engine || field.group == FieldGroup::alternative;
+      if (!engine || !value || completion_only == static_cast<bool>(field.operations & op_shot)) continue;
       const bool uncertain = std::any_of(inputs.begin(), inputs.end(), [&](const UncertainInput& u) { return u.name == field.flag; });
       if (!uncertain) fixed.push_back({field.key, field.dimension, *value});
     }

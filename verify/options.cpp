@@ -89,7 +89,7 @@ void input_options(CLI::App* app, Options& o, unsigned operation, std::initializ
 
 void engine_options(CLI::App* app, Options& o, bool spreads) {
   app->add_option("input", o.input, "JSON file with a design or an array of designs, or CSV with a design a row (docs/csv.md); - for stdin");
-  input_options(app, o, op_shot, {FieldGroup::engine, FieldGroup::capacity}, spreads);
+  input_options(app, o, op_shot, {FieldGroup::engine, FieldGroup::alternative, FieldGroup::capacity}, spreads);
   positive_option(app, "--tol", o.tolerance, UnitDimension::dimensionless, "relative tolerance on the predicted R and T (default 0.02)");
   app->add_option("--series", o.series, "write the time series of the shot (angles, forces, positions, energies) to this CSV file");
   positive_option(app, "--series-dt", o.series_dt_s, UnitDimension::time,
@@ -283,7 +283,7 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
 
   CLI::App* c = s.complete;
   air_and_sampling_options(c, o);
-  input_options(c, o, op_complete, {FieldGroup::engine, FieldGroup::part}, true);
+  input_options(c, o, op_complete, {FieldGroup::engine, FieldGroup::alternative, FieldGroup::part}, true);
   target_level_option(c, o, true);
   threads_option(c, o, "threads for a Monte Carlo run (default: the cores)");
   c->add_option("--plot", o.plot, "with ranges or spreads: write the histogram of R and T into this folder (needs gnuplot)");

@@ -33,7 +33,7 @@ DesignCheck design_check(const Options& o, bool fit) {
 // Whether the flags give an engine's value or part (the material and the capacity are settings of a file's designs too).
 bool has_engine_flags(const DesignValues& d) {
   for (const InputField& field : input_fields())
-    if ((field.operations & op_shot) && (field.group == FieldGroup::engine || field.group == FieldGroup::part) && d.*field.member) return true;
+    if ((field.operations & op_shot) && field.group != FieldGroup::material && field.group != FieldGroup::capacity && d.*field.member) return true;
   return false;
 }
 

@@ -5,11 +5,20 @@
   'use strict';
   const $ = (id) => document.getElementById(id);
   const V = window.TrebuchetViewer;
-  const QUANTITIES = ['R', 'T', 'L1', 'L2', 'L4', 'D', 'M', 'm', 'mb', 'Lb', 'l'];
-  const EXAMPLES = { R: '150m', T: '40kJ', L1: '4.1m', L2: '0.9m', L4: '3.6m', D: '25cm', M: '3.1t', m: '50kg', mb: '170kg', Lb: '9m', l: '4.5' };
-  const ATTESTED = [['Lb', 'beam length'], ['L1', 'long arm'], ['L2', 'short arm'], ['H', 'pivot height'], ['L4', 'sling'], ['M', 'counterweight'],
-    ['m', 'projectile'], ['mb', 'beam mass'], ['D', 'beam diameter'], ['l', 'beam ratio L1/L2'], ['theta_i_deg', 'θi [deg]'], ['F', '(L2 + L3)/H']];
-  const SLIDERS = [['L1', 'length'], ['L2', 'length'], ['L3', 'length'], ['L4', 'length'], ['M', 'mass'], ['m', 'mass'], ['mb', 'mass'], ['theta_i_deg', 'angle']];
+  // The library's table of inputs (api fields, docs/inputs.md), read once the module is ready:
+  // the calculator's givens (the capacity first), complete's attested values and the engine's
+  // values come from it, each with its label and dimension.
+  let INPUTS = [], QUANTITIES = [], EXAMPLES = {}, ATTESTED = [], ENGINE = [];
+  function readInputs() {
+    INPUTS = JSON.parse(module.fields('{}')).fields;
+    const givens = INPUTS.filter((f) => f.operations.includes('given'));
+    QUANTITIES = givens.filter((f) => f.group === 'capacity').concat(givens.filter((f) => f.group !== 'capacity')).map((f) => f.key);
+    ATTESTED = INPUTS.filter((f) => f.operations.includes('complete') && (f.group === 'engine' || f.group === 'alternative')).map((f) => [f.key, f.label]);
+    ENGINE = INPUTS.filter((f) => f.group === 'engine' && f.operations.includes('shot'));
+    // A given's example: its value in the optimal engine of the page's first pair (150 m, 50 kg), so that any two agree.
+    const example = JSON.parse(module.design(JSON.stringify({ R: '150m', m: '50kg' })));
+    for (const f of givens) EXAMPLES[f.key] = V.significant(example[f.key], 3) + f.unit;
+  }
 
   let module = null;
   const state = {
@@ -60,11 +69,12 @@
     if (state.air) s.air = { drag_coefficient: /^re$/i.test(state.cd.trim()) ? 'Re' : state.cd, wind: state.wind };
     return s;
   }
-  // The engine keys a design or shot answer carries, as the programs read them back.
+  // The engine keys a design or shot answer carries, as the programs read them back: the
+  // engine's values, its diameter and its material (F follows from L3).
   function engineOf(answer) {
-    const keys = ['theta_i_deg', 'L1', 'L2', 'L3', 'L4', 'M', 'm', 'mb', 'D', 'beta2', 'youngs_modulus', 'wood_density', 'g'];
     const engine = {};
-    for (const k of keys) if (answer[k] !== undefined) engine[k] = answer[k];
+    for (const f of INPUTS)
+      if (f.operations.includes('shot') && f.key !== 'F' && ['engine', 'alternative', 'material'].includes(f.group) && answer[f.key] !== undefined) engine[f.key] = answer[f.key];
     if (engine.D === 0) delete engine.D;
     return engine;
   }
@@ -87,8 +97,10 @@
     theta: (v) => ['30', '40'].includes(v), F: (v) => ['1', '2/3'].includes(v), air: (v) => typeof v === 'boolean',
     cd: isText, wind: isText, release: (v) => ['Q', 'eps', 'range'].includes(v), target_level: isText,
     range_from: (v) => ['pivot', 'release'].includes(v), samples: isText,
-    edit: (v) => v === null || (typeof v === 'object' && !Array.isArray(v) &&
-      SLIDERS.every(([key]) => typeof v[key] === 'number' && isFinite(v[key]) && v[key] > 0)),
+    // An edited engine: keys of a shot's design, each a finite number, the engine's own values positive.
+    edit: (v) => v === null || (typeof v === 'object' && !Array.isArray(v) && Object.keys(v).length > 0 &&
+      Object.entries(v).every(([key, x]) => INPUTS.some((f) => f.key === key && f.operations.includes('shot')) && typeof x === 'number' &&
+        isFinite(x) && (x > 0 || !ENGINE.some((f) => f.key === key)))),
     attested: (v) => typeof v === 'object' && v !== null && !Array.isArray(v) &&
       Object.entries(v).every(([key, text]) => ATTESTED.some(([k]) => k === key) && isText(text)),
   };
@@ -187,7 +199,9 @@
     const base = designed ? engineOf(designed) : state.edit;
     if (!base) { box.textContent = 'Design an engine first (view 1).'; return; }
     if (!state.edit) state.edit = Object.assign({}, base);
-    for (const [key, dimension] of SLIDERS) {
+    // A slider for each of the engine's values the design has (a propped angle it has not).
+    for (const { key, dimension } of ENGINE.filter((f) => base[f.key] > 0)) {
+      if (!(state.edit[key] > 0)) state.edit[key] = base[key];
       const centre = base[key];
       const [lo, hi] = key === 'theta_i_deg' ? [10, 80] : [centre * 0.3, centre * 2.5];
       const row = document.createElement('label');
@@ -439,6 +453,7 @@
   // window.trebuchet: the library for scripts, in the programs' JSON schema (docs/web.md).
   const ready = createTrebuchet().then((m) => {
     module = m;
+    readInputs();
     loadState();
     wire();
     showView(state.view);
@@ -450,6 +465,7 @@
     shot: (request) => call('shot', request),
     complete: (request) => call('complete', request),
     monteCarlo: (request) => call('monteCarlo', request),
+    fields: () => call('fields', {}),
     monteCarloParallel,
     state: () => JSON.parse(JSON.stringify(state)),
     current: () => (shown ? shown.shot : null),  // the shot the page shows, as shot() answered it

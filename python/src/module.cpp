@@ -21,4 +21,5 @@ PYBIND11_MODULE(_trebuchet, module) {
   bind("optimize", trebuchet::api::optimize, "the ab-initio optimum");
   bind("complete", trebuchet::api::complete, "the completion of an attested engine");
   bind("monte_carlo", trebuchet::api::monte_carlo, "a Monte Carlo run");
+  bind("fields", trebuchet::api::fields, "the table of inputs: every key with its aliases, dimension, unit, default and help");
 }

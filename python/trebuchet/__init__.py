@@ -12,7 +12,7 @@ import numpy as np
 
 from . import _trebuchet
 
-__all__ = ["TrebuchetError", "design", "shot", "fit", "optimize", "complete", "monte_carlo"]
+__all__ = ["TrebuchetError", "design", "shot", "fit", "optimize", "complete", "monte_carlo", "fields"]
 
 
 class TrebuchetError(ValueError):
@@ -108,3 +108,9 @@ def monte_carlo(design=None, *, attested=None, samples=10000, seed=1, **settings
     for k, name in enumerate(["R", "T", "eps", "v"]):
         answer["samples_" + name] = values[:, k]
     return answer
+
+
+def fields():
+    """The table of inputs: a list of dicts, one per key a design, a completion or the calculator
+    takes, with its aliases, flag, dimension, SI unit, accepted units, default, range and help."""
+    return _call(_trebuchet.fields, {})["fields"]

@@ -15,6 +15,7 @@ std::string design(const std::string& text) { return answer(trebuchet::api::desi
 std::string shot(const std::string& text) { return answer(trebuchet::api::shot, text); }
 std::string complete(const std::string& text) { return answer(trebuchet::api::complete, text); }
 std::string monte_carlo(const std::string& text) { return answer(trebuchet::api::monte_carlo, text); }
+std::string fields(const std::string& text) { return answer(trebuchet::api::fields, text); }
 
 }  // namespace
 
@@ -23,4 +24,5 @@ EMSCRIPTEN_BINDINGS(trebuchet) {
   emscripten::function("shot", &shot);
   emscripten::function("complete", &complete);
   emscripten::function("monteCarlo", &monte_carlo);
+  emscripten::function("fields", &fields);
 }

@@ -199,7 +199,7 @@ ErrorKind kind_of(const std::string& name) {
 }  // namespace
 
 ordered_json design(const json& request) {
-  std::vector<std::string> known = input_names(op_calculator);
+  std::vector<std::string> known = input_names(op_given | op_calculator);
   known.insert(known.end(), {"branch", "extrapolate", "scale"});
   require_keys(request, known, "design");
   const ScalingTable& table = builtin_scaling_table();
@@ -387,6 +387,26 @@ ordered_json monte_carlo(const json& request) {
   ordered_json answer = monte_carlo_json(report);
   answer.erase("wall_time_s");  // a time is the caller's to measure; the report is the same on any machine
   return answer;
+}
+
+ordered_json fields(const json& request) {
+  require_keys(request, {}, "fields");
+  const std::pair<unsigned, const char*> operation_names[] = {
+      {op_given, "given"}, {op_calculator, "design"}, {op_shot, "shot"}, {op_complete, "complete"}, {op_optimize, "optimize"}};
+  const char* const group_names[] = {"engine", "alternative", "material", "capacity", "part"};
+  ordered_json rows = ordered_json::array();
+  for (const InputField& field : input_fields()) {
+    ordered_json operations = ordered_json::array();
+    for (const auto& [bit, name] : operation_names)
+      if (field.operations & bit) operations.push_back(name);
+    ordered_json units = ordered_json::array();
+    for (const UnitFactor& unit : unit_factors())
+      if (unit.dimension == field.dimension) units.push_back(unit.suffix);
+    rows.push_back({{"key", field.key}, {"flag", field.flag}, {"aliases", field.aliases}, {"dimension", dimension_name(field.dimension)},
+                    {"unit", field.unit}, {"units", units}, {"group", group_names[static_cast<int>(field.group)]}, {"operations", operations},
+                    {"label", field.label}, {"help", field.help}, {"example", field.example}, {"default", field.fallback}, {"range", field.range}});
+  }
+  return {{"fields", rows}};
 }
 
 std::string answer_text(Request request, const std::string& text, const std::string& where_documented) {

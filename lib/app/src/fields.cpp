@@ -13,7 +13,7 @@ namespace {
 using V = DesignValues;
 using D = UnitDimension;
 using G = FieldGroup;
-constexpr unsigned shot = op_shot, shot_complete = op_shot | op_complete, calculator_too = op_calculator | op_shot | op_complete;
+constexpr unsigned shot = op_shot, shot_complete = op_shot | op_complete, given_too = op_given | op_shot | op_complete;
 constexpr unsigned material_everywhere = op_calculator | op_shot | op_complete | op_optimize;
 
 }  // namespace
@@ -23,17 +23,17 @@ constexpr unsigned material_everywhere = op_calculator | op_shot | op_complete |
 const std::vector<InputField>& input_fields() {
   static const std::vector<InputField> fields = {
       // The paper's engine (eq:Parameters) and its initial angles (eq:InitialConditions).
-      {&V::L1, "L1", "--L1", {}, D::length, "m", G::engine, calculator_too, "long arm", "long beam section, pivot to spigot", "6.13m", "", "1e-6 to 1e6 m"},
-      {&V::L2, "L2", "--L2", {}, D::length, "m", G::engine, calculator_too, "short arm", "short beam section, pivot to hinge", "1.08m", "", "1e-6 to 1e6 m"},
+      {&V::L1, "L1", "--L1", {}, D::length, "m", G::engine, given_too, "long arm", "long beam section, pivot to spigot", "6.13m", "", "1e-6 to 1e6 m"},
+      {&V::L2, "L2", "--L2", {}, D::length, "m", G::engine, given_too, "short arm", "short beam section, pivot to hinge", "1.08m", "", "1e-6 to 1e6 m"},
       {&V::L3, "L3", "--L3", {}, D::length, "m", G::engine, shot, "counterweight arm", "counterweight arm, hinge to the counterweight's centre (or F)", "1.2m", "", "1e-6 to 1e6 m"},
-      {&V::F, "F", "--F", {}, D::dimensionless, "", G::engine, op_calculator | shot_complete | op_optimize, "(L2 + L3)/H",
+      {&V::F, "F", "--F", {}, D::dimensionless, "", G::alternative, op_calculator | shot_complete | op_optimize, "(L2 + L3)/H",
        "counterweight arm fraction (L2 + L3)/H, instead of L3 (section 2; not the force factor of eq:F)", "2/3", "2/3", "positive"},
-      {&V::L4, "L4", "--L4", {}, D::length, "m", G::engine, calculator_too, "sling", "sling length, spigot to projectile", "5.80m", "", "1e-6 to 1e6 m"},
-      {&V::M, "M", "--M", {}, D::mass, "kg", G::engine, calculator_too, "counterweight", "counterweight mass", "14.3t", "", "1e-9 to 1e12 kg"},
-      {&V::m, "m", "--m", {}, D::mass, "kg", G::engine, calculator_too | op_optimize, "projectile", "projectile mass",
+      {&V::L4, "L4", "--L4", {}, D::length, "m", G::engine, given_too, "sling", "sling length, spigot to projectile", "5.80m", "", "1e-6 to 1e6 m"},
+      {&V::M, "M", "--M", {}, D::mass, "kg", G::engine, given_too, "counterweight", "counterweight mass", "14.3t", "", "1e-9 to 1e12 kg"},
+      {&V::m, "m", "--m", {}, D::mass, "kg", G::engine, given_too | op_optimize, "projectile", "projectile mass",
        "100kg", "", "1e-9 to 1e12 kg"},
-      {&V::mb, "mb", "--mb", {}, D::mass, "kg", G::engine, calculator_too, "beam mass", "beam mass (or D)", "660kg", "from D, eq:BeamMass", "0, or 1e-9 to 1e12 kg"},
-      {&V::D, "D", "--D", {}, D::length, "m", G::engine, calculator_too, "beam diameter",
+      {&V::mb, "mb", "--mb", {}, D::mass, "kg", G::engine, given_too, "beam mass", "beam mass (or D)", "660kg", "from D, eq:BeamMass", "0, or 1e-9 to 1e12 kg"},
+      {&V::D, "D", "--D", {}, D::length, "m", G::alternative, given_too, "beam diameter",
        "beam diameter: the beam's stress; without mb, mb = rho_d (pi/4) D^2 Lb (eq:BeamMass)", "0.4m", "0: not given", "0, or 1e-6 to 1e6 m"},
       {&V::theta_i_deg, "theta_i_deg", "--theta", {"theta"}, D::angle, "", G::engine, op_calculator | shot_complete | op_optimize, "θi [deg]",
        "initial beam angle theta_i from the downward vertical", "30", "30", "0 to 90 deg, both excluded (the calculator: 30 or 40)"},
@@ -41,14 +41,14 @@ const std::vector<InputField>& input_fields() {
        "initial counterweight angle psi_i of a propped counterweight (negative: held back, the sense opposite to the beam's turn)", "-20",
        "0, hanging", "-90 to 90 deg"},
       // What a completion may be given in place of L1 and L2 (and the calculator as a given).
-      {&V::Lb, "Lb", "--Lb", {}, D::length, "m", G::engine, op_calculator | op_complete, "beam length", "beam length L1 + L2", "9.5m", "", "1e-6 to 1e6 m"},
-      {&V::H, "H", "--H", {}, D::length, "m", G::engine, op_complete, "pivot height", "pivot height L1 cos(theta_i)", "3.5m", "", "1e-6 to 1e6 m"},
-      {&V::l, "l", "--l", {}, D::dimensionless, "", G::engine, op_calculator | op_complete | op_optimize, "beam ratio L1/L2",
+      {&V::Lb, "Lb", "--Lb", {}, D::length, "m", G::alternative, op_given | op_complete, "beam length", "beam length L1 + L2", "9.5m", "", "1e-6 to 1e6 m"},
+      {&V::H, "H", "--H", {}, D::length, "m", G::alternative, op_complete, "pivot height", "pivot height L1 cos(theta_i)", "3.5m", "", "1e-6 to 1e6 m"},
+      {&V::l, "l", "--l", {}, D::dimensionless, "", G::alternative, op_given | op_complete | op_optimize, "beam ratio L1/L2",
        "beam ratio L1/L2", "4.5", "", "above 1"},
       // A capacity: to check a shot against, or to design for.
-      {&V::R, "R", "--R", {}, D::length, "m", G::capacity, op_calculator | shot | op_optimize, "range",
+      {&V::R, "R", "--R", {}, D::length, "m", G::capacity, op_given | shot | op_optimize, "range",
        "range from the pivot to where the projectile comes down at the target level", "150m", "", "positive"},
-      {&V::T, "T", "--T", {}, D::energy, "J", G::capacity, op_calculator | shot | op_optimize, "energy",
+      {&V::T, "T", "--T", {}, D::energy, "J", G::capacity, op_given | shot | op_optimize, "energy",
        "kinetic energy of the projectile at the target level (eq:T)", "40kJ", "", "positive"},
       // The material (eq:kMkD, eq:bend_L2, eq:BeamMass).
       {&V::beta2, "beta2", "--beta2", {}, D::dimensionless, "", G::material, material_everywhere, "β2", "allowed bending of the short beam section under M (eq:bend_L2)",
@@ -168,6 +168,25 @@ std::string near_miss(std::string_view word, const std::vector<std::string>& kno
     if (near_name(word, name) && name != word && (best.empty() || distance < best_distance)) best = name, best_distance = distance;
   }
   return best;
+}
+
+const char* dimension_name(UnitDimension dimension) {
+  switch (dimension) {
+    case UnitDimension::length: return "length";
+    case UnitDimension::mass: return "mass";
+    case UnitDimension::energy: return "energy";
+    case UnitDimension::dimensionless: return "dimensionless";
+    case UnitDimension::angle: return "angle";
+    case UnitDimension::acceleration: return "acceleration";
+    case UnitDimension::pressure: return "pressure";
+    case UnitDimension::density: return "density";
+    case UnitDimension::time: return "time";
+    case UnitDimension::speed: return "speed";
+    case UnitDimension::force: return "force";
+    case UnitDimension::moment: return "moment";
+    case UnitDimension::inertia: return "inertia";
+  }
+  return "dimensionless";
 }
 
 std::vector<std::string> input_names(unsigned operations) {

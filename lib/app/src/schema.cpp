@@ -1,7 +1,7 @@
 #include "trebuchet/app/schema.hpp"
 
 #include <algorithm>
-#include <bit>
+#include <cstring>
 #include <cstdint>
 #include <cmath>
 #include <tuple>
@@ -473,7 +473,8 @@ std::string design_csv_text(const OptimalEngine& design, int digits) {
   previous.resize(fields.size());
   for (std::size_t k = 0; k < fields.size(); ++k) {
     Written& last = previous[k];
-    const auto bits = std::bit_cast<std::uint64_t>(fields[k].value);
+    std::uint64_t bits = 0;  // std::bit_cast, which Emscripten's library lacks
+    std::memcpy(&bits, &fields[k].value, sizeof bits);
     if (last.digits != digits || last.bits != bits) {
       last.text.clear();
       append_csv_number(last.text, fields[k].value, digits);

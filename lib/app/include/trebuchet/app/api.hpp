@@ -44,6 +44,12 @@ nlohmann::ordered_json complete(const nlohmann::json& request);
 /// the whole run, the same as one run of every sample.
 nlohmann::ordered_json monte_carlo(const nlohmann::json& request);
 
+/// The table of inputs (fields.hpp), for a page or a notebook that builds its forms from it:
+/// {"fields": [{key, flag, aliases, dimension, unit, units (the suffixes taken), group,
+/// operations ("given", "design" for the calculator's settings, "shot", "complete", "optimize"),
+/// label, help, example, default, range}, ...]}. The request is {}.
+nlohmann::ordered_json fields(const nlohmann::json& request);
+
 /// A request as text, for callers across a language boundary (the page's bindings, the Python
 /// module): read as the programs read a JSON file (bounded depth, no key given twice, no number
 /// beyond a double), answered as text. A refusal, or an internal error, is error_json's answer,

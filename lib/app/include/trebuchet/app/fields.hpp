@@ -29,15 +29,18 @@ struct DesignValues {
 
 /// The operations that take an input, a bit each.
 enum Operation : unsigned {
-  op_calculator = 1,  ///< a given of trebuchet-calc and api::design (two of them), or one of its settings
-  op_shot = 2,        ///< an engine: shot, fit, calibrate, a Monte Carlo run of shots
-  op_complete = 4,    ///< an attested value of complete
-  op_optimize = 8,    ///< the capacity and the settings of optimize
+  op_given = 1,       ///< a given of trebuchet-calc and api::design (two of them)
+  op_calculator = 2,  ///< a setting of the calculator (theta_i, F, the material)
+  op_shot = 4,        ///< an engine: shot, fit, calibrate, a Monte Carlo run of shots
+  op_complete = 8,    ///< an attested value of complete
+  op_optimize = 16,   ///< the capacity and the settings of optimize
 };
 
-/// What an input describes: the engine's own values (a Monte Carlo run may spread them), the
-/// material, a capacity, or a part of the engine as built.
-enum class FieldGroup { engine, material, capacity, part };
+/// What an input describes: the engine's values of eq:Parameters and its initial angles; a value
+/// that stands in for one of them (F for L3, D for mb, Lb, H and l for L1 and L2); the material;
+/// a capacity; or a part of the engine as built. A Monte Carlo run may spread all but the
+/// material and the capacity.
+enum class FieldGroup { engine, alternative, material, capacity, part };
 
 struct InputField {
   std::optional<double> DesignValues::*member;
@@ -86,6 +89,9 @@ bool near_name(std::string_view word, std::string_view name);
 /// (near_name), or an input's key or alias with its unit suffix left off or changed ("theta_i",
 /// "L4_ft", "M_kg" for "M"). The nearest wins.
 std::string near_miss(std::string_view word, const std::vector<std::string>& known);
+
+/// "length", "mass", ...: a dimension's name, as fields_json writes it.
+const char* dimension_name(UnitDimension dimension);
 
 /// The keys and aliases of the inputs that `operations` take (any of its bits).
 std::vector<std::string> input_names(unsigned operations);
