@@ -39,7 +39,7 @@ const std::vector<InputField>& input_fields() {
        "initial beam angle theta_i from the downward vertical", "30", "30", "0 to 90 deg, both excluded (the calculator: 30 or 40)"},
       {&V::psi_i_deg, "psi_i_deg", "--psi-i", {"psi_i"}, D::angle, "", G::engine, shot, "ψi [deg]",
        "initial counterweight angle psi_i of a propped counterweight (negative: held back, the sense opposite to the beam's turn)", "-20",
-       "0, hanging", "-90 to 90 deg"},
+       "0, hanging", "-90 to 90 deg, both excluded"},
       // What a completion may be given in place of L1 and L2 (and the calculator as a given).
       {&V::Lb, "Lb", "--Lb", {}, D::length, "m", G::alternative, op_given | op_complete, "beam length", "beam length L1 + L2", "9.5m", "", "1e-6 to 1e6 m"},
       {&V::H, "H", "--H", {}, D::length, "m", G::alternative, op_complete, "pivot height", "pivot height L1 cos(theta_i)", "3.5m", "", "1e-6 to 1e6 m"},
@@ -52,13 +52,13 @@ const std::vector<InputField>& input_fields() {
        "kinetic energy of the projectile at the target level (eq:T)", "40kJ", "", "positive"},
       // The material (eq:kMkD, eq:bend_L2, eq:BeamMass).
       {&V::beta2, "beta2", "--beta2", {}, D::dimensionless, "", G::material, material_everywhere, "β2", "allowed bending of the short beam section under M (eq:bend_L2)",
-       "1/300", "1/300", "positive"},
+       "1/300", "1/300", "1e-9 to 1"},
       {&V::youngs_modulus, "youngs_modulus", "--youngs-modulus", {}, D::pressure, "Pa", G::material, material_everywhere, "Young's modulus",
-       "Young's modulus of the beam's wood", "12GPa", "12 GPa", "positive"},
+       "Young's modulus of the beam's wood", "12GPa", "12 GPa", "1e3 to 1e15 Pa"},
       {&V::wood_density, "wood_density", "--wood-density", {}, D::density, "kg_m3", G::material, material_everywhere, "wood density",
-       "density of the beam's wood, for D and mb (eq:BeamMass)", "700kg/m3", "700 kg/m3", "positive"},
+       "density of the beam's wood, for D and mb (eq:BeamMass)", "700kg/m3", "700 kg/m3", "1 to 1e5 kg/m3"},
       {&V::g, "g", "--g", {}, D::acceleration, "m_s2", G::material, material_everywhere, "g", "gravitational acceleration; the moon's is 1.62 m/s2", "9.81m/s2",
-       "9.81 m/s2", "positive"},
+       "9.81 m/s2", "1e-6 to 1e6 m/s2"},
       // The engine as built (EngineParts): a shot takes all of them, complete those that do not
       // depend on the values it chooses (its beam is uniform, its counterweight a point or given).
       {&V::beam_cm, "beam_cm", "--beam-cm", {}, D::length, "m", G::part, shot, "beam's centre of mass",
