@@ -29,8 +29,7 @@ namespace trebuchet {
 /// The option that sets what the library calls `name` in its messages (error.hpp): "--rtol",
 /// "--theta" for theta_i_deg, "--psi-i" for psi_i_deg, "--wood-density" for wood_density.
 inline std::string option_word(std::string_view name) {
-  if (name == "theta_i_deg") return "--theta";
-  if (name == "psi_i_deg") return "--psi-i";
+  if (const InputField* field = find_field(name)) return field->flag;  // an input's flag: --theta for theta_i_deg
   std::string option = "--" + std::string(name);
   std::replace(option.begin(), option.end(), '_', '-');
   return option;

@@ -79,7 +79,7 @@ TEST_CASE("a value beyond the range a row states is refused, naming the row", "[
   CHECK(probed >= 30);  // L1 to psi_i_deg, D and the material: at least 15 rows of two ends
 }
 
-TEST_CASE("a near miss is named with the key meant; other keys pass through", "[fields]") {
+TEST_CASE("a near miss is named with the key meant, and other keys pass through", "[fields]") {
   const std::vector<std::string> shot = input_names(op_shot);
   CHECK(near_miss("theta_i", shot) == "theta_i_deg");   // the unit left off
   CHECK(near_miss("theta_deg", shot) == "theta_i_deg");  // the alias with a unit

@@ -31,7 +31,7 @@ int run_calibrate(const Options& o) {
   Engine engine = record.engine;
   engine.material = o.material.over(engine.material);
   if (record.mb_from_D) engine.mb = wood_beam_mass(engine);  // in the wood of the run
-  const ShotSettings settings = shot_settings(o);
+  const ShotSettings settings = settings_of(o);
   for (double m : o.predict_m) check_ordinary(m, 1e-9, 1e12, "predict_m", "kg", "projectile mass to predict with");
   for (double M : o.predict_M) check_ordinary(M, 1e-9, 1e12, "predict_M", "kg", "counterweight mass to predict with");
   if (!o.series.empty()) refuse_output_over_input(o.series, "series", {o.input});

@@ -59,14 +59,14 @@ int main(int argc, char** argv) {
         throw Error(ErrorKind::usage, "there is no file '" + options.input + "' to read" + hint);
     // --samples and --seed mean something only to a Monte Carlo run.
     for (CLI::App* s : {sub.shot, sub.complete})
-      if (s->parsed() && options.uncertain.empty() && (s->count("--samples") > 0 || s->count("--seed") > 0))
+      if (s->parsed() && options.spreads.empty() && (s->count("--samples") > 0 || s->count("--seed") > 0))
         throw Error(ErrorKind::usage, "--samples and --seed set a Monte Carlo run; give a value as a range (2.5t..3.5t) or a spread "
                                       "(3.5m±0.2m), or drop them");
-    if (sub.shot->parsed()) return options.uncertain.empty() ? run_shot(options, false) : run_monte_carlo(options, false);
+    if (sub.shot->parsed()) return options.spreads.empty() ? run_shot(options, false) : run_monte_carlo(options, false);
     if (sub.fit->parsed()) return run_shot(options, true);
     if (sub.optimize->parsed()) return run_optimize(options);
     if (sub.derive_table->parsed()) return run_derive_table(options);
-    if (sub.complete->parsed()) return options.uncertain.empty() ? run_complete(options) : run_monte_carlo(options, true);
+    if (sub.complete->parsed()) return options.spreads.empty() ? run_complete(options) : run_monte_carlo(options, true);
     if (sub.calibrate->parsed()) return run_calibrate(options);
     return run_merge(options);
   });

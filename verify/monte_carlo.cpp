@@ -26,51 +26,19 @@ int run_monte_carlo(const Options& o, bool complete) {
   // The run's assumptions are those of each uncertain value at its first number (a range's low
   // end, a spread's mean). A design that is bad input there is refused before the run, with the
   // exit code of bad input: a range must hold only values that make an engine.
-  const Options first = with_values(o, [](const Spread& s) { return s.a; });
-  const ShotSettings settings = shot_settings(first);
-  check_shot_settings(settings);
-  // One sample's engine: the flags' design over its material.
-  auto engine_of = [](const Options& sample) {
-    Engine engine = engine_record(sample.design, "").engine;
-    engine.material = sample.material.over(engine.material);
-    return engine;
-  };
-  // The work, decided before the run: a completion's shots are those of the trial (or, when it
-  // fails numerically, 300, twice what the completions of bench-completion take).
-  std::int64_t shots_per_sample = 1;
-  if (complete) shots_per_sample = shots_per_completion([&] { return complete_engine(completion_request(first)); });
-  else engine_of(first);
+  const MonteCarloRequest request = monte_carlo_request(o, complete);
+  const ShotSettings settings = shot_settings(with_draws(request, [](const Spread& s) { return s.a; }).settings);
+  const std::int64_t shots = shots_per_sample(request);
   const int samples = o.samples.value_or(complete ? default_completion_samples : default_shot_samples);
-  check_monte_carlo_work(samples, shots_per_sample, complete ? "completions" : "shots");
+  check_monte_carlo_work(samples, shots, complete ? "completions" : "shots");
   const auto start = std::chrono::steady_clock::now();
   const MonteCarloSummary summary = trebuchet::run_monte_carlo(samples, o.seed, o.threads, [&](std::mt19937_64& random) {
-    const Options sample = with_values(o, [&](const Spread& s) { return draw(s, random); });
-    SampleOutcome outcome;
-    try {
-      ShotSettings settings = shot_settings(sample);
-      settings.loads = false;  // a sample reports R, T, eps and v
-      const Verification v = complete ? complete_engine(completion_request(sample)).verification : verify_engine(engine_of(sample), settings);
-      outcome.values = {v.capacity.R, v.capacity.T, v.eps, v.v};
-    } catch (const Error& e) {
-      outcome.failure = e.message(option_word);
-      outcome.failure_kind = e.kind();
-    }
-    return outcome;
+    return sample_outcome(request, random, option_word);
   }, progress_bar(complete ? "completions" : "shots"));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<UncertainInput> inputs;
-  for (const Uncertain& u : o.uncertain) inputs.push_back(u.input);
-  // The values held fixed: those given, less the uncertain.
-  std::vector<FixedInput> fixed;
-  // What a completion alone takes (Lb, H, l) first, then the engine's values in the table's order.
-  for (const bool completion_only : {true, false})
-    for (const InputField& field : input_fields()) {
-      const std::optional<double>& value = o.design.*field.member;
-      const bool engine = field.group == FieldGroup::engine || field.group == FieldGroup::alternative;
-      if (!engine || !value || completion_only == static_cast<bool>(field.operations & op_shot)) continue;
-      const bool uncertain = std::any_of(inputs.begin(), inputs.end(), [&](const UncertainInput& u) { return u.name == field.flag; });
-      if (!uncertain) fixed.push_back({field.key, field.dimension, *value});
-    }
+  for (const SpreadInput& spread : o.spreads) inputs.push_back(spread.input);
+  const std::vector<FixedInput> fixed = fixed_inputs(request);
   const MonteCarloReport report{summary, inputs, fixed, describe_release(settings), o.seed, complete ? "the completed engine" : "the shot",
                                 settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"), settings.air.has_value(), seconds,
                                 thread_count(o.threads, static_cast<std::size_t>(summary.samples))};

@@ -17,15 +17,12 @@
 namespace trebuchet::verify {
 namespace {
 
-using Slot = std::function<std::optional<double>&(Options&)>;
-
-// Where a value of the design (--L1, --theta, ...) or another option (--Lb, --wind, ...) goes.
-Slot design_slot(std::optional<double> DesignValues::*member) {
-  return [member](Options& x) -> std::optional<double>& { return x.design.*member; };
-}
-Slot option_slot(std::optional<double> Options::*member) {
-  return [member](Options& x) -> std::optional<double>& { return x.*member; };
-}
+// Where a value of a flag goes: a value of the design (--L1, --theta, ...) or a setting (--wind, ...).
+struct Slot {
+  std::optional<double> DesignValues::*value = nullptr;
+  std::optional<double> SettingsValues::*setting = nullptr;
+};
+std::optional<double>& slot_in(Options& o, const Slot& slot) { return slot.value ? o.design.*slot.value : o.settings.*slot.setting; }
 
 // An option whose text CLI11 hands to `parse` as soon as it reads it; an empty value is refused.
 CLI::Option* parsed_option(CLI::App* app, const std::string& name, const std::function<void(const std::string&)>& parse,
@@ -62,10 +59,10 @@ CLI::Option* value_option(CLI::App* app, Options& o, const std::string& name, Sl
     if (spread && !spreads)
       throw Error(ErrorKind::usage, name + ": '" + text + "' is a range or a spread; give one value (ranges and spreads are for the "
                                                           "engine's values, --theta, --psi-i, --target-level and the air, in shot and complete)");
-    slot(o) = spread ? spread->a : positive ? parse_positive(text, dimension, name) : parse_value(text, dimension, name);
+    slot_in(o, slot) = spread ? spread->a : positive ? parse_positive(text, dimension, name) : parse_value(text, dimension, name);
     if (!spread) return;
-    const auto after = std::find_if(o.uncertain.begin(), o.uncertain.end(), [&](const Uncertain& u) { return draw_rank(u.input.name) > draw_rank(name); });
-    o.uncertain.insert(after, {{name, dimension, *spread}, slot});
+    const auto after = std::find_if(o.spreads.begin(), o.spreads.end(), [&](const SpreadInput& u) { return draw_rank(u.input.name) > draw_rank(name); });
+    o.spreads.insert(after, {{name, dimension, *spread}, slot.value, slot.setting});
   }, help);
 }
 
@@ -76,7 +73,7 @@ CLI::Option* positive_option(CLI::App* app, const std::string& name, double& tar
 
 // The option of a row of the table; a capacity is never a spread.
 void input_option(CLI::App* app, Options& o, const InputField& field, bool spreads) {
-  value_option(app, o, field.flag, design_slot(field.member), field.dimension, option_help(field), spreads && field.group != FieldGroup::capacity);
+  value_option(app, o, field.flag, Slot{field.member, nullptr}, field.dimension, option_help(field), spreads && field.group != FieldGroup::capacity);
 }
 
 // The table's inputs that `operation` takes, of the groups given (the material has options of
@@ -98,7 +95,7 @@ void engine_options(CLI::App* app, Options& o, bool spreads) {
 }
 
 void target_level_option(CLI::App* app, Options& o, bool spreads) {
-  value_option(app, o, "--target-level", option_slot(&Options::target_level), UnitDimension::length,
+  value_option(app, o, "--target-level", Slot{nullptr, &SettingsValues::target_level}, UnitDimension::length,
                "target height relative to the engine's base, e.g. -54m (default 0) [" + unit_list(UnitDimension::length) + "]", spreads);
 }
 
@@ -121,19 +118,19 @@ void integer_option(CLI::App* app, const std::string& name, Target& target, Inte
 }
 
 void release_options(CLI::App* app, Options& o) {
-  parsed_option(app, "--quality", [&o](const std::string& text) { o.settings.criterion.release = parse_release(text, "--quality"); },
+  parsed_option(app, "--quality", [&o](const std::string& text) { o.settings.base.criterion.release = parse_release(text, "--quality"); },
                 "what the release maximises: Q (eq:Q, eq:Q_n), eps (appendix B) or range (Denny) (default Q)");
   parsed_option(app, "--n", [&o](const std::string& text) {
-    o.settings.criterion.n = parse_value(text, UnitDimension::dimensionless, "--n");
-    if (!(o.settings.criterion.n >= 0)) throw Error(ErrorKind::bad_number, "--n: '" + text + "' must be 0 or more (eq:Q_n)");
+    o.settings.base.criterion.n = parse_value(text, UnitDimension::dimensionless, "--n");
+    if (!(o.settings.base.criterion.n >= 0)) throw Error(ErrorKind::bad_number, "--n: '" + text + "' must be 0 or more (eq:Q_n)");
   }, "exponent of eps in eq:Q_n (default 1)");
 }
 
 void integrator_options(CLI::App* app, Options& o) {
-  parsed_option(app, "--stepper", [&o](const std::string& text) { o.settings.integrator.stepper = parse_stepper(text, "--stepper"); },
+  parsed_option(app, "--stepper", [&o](const std::string& text) { o.settings.base.integrator.stepper = parse_stepper(text, "--stepper"); },
                 "GSL odeiv2 stepper: " + stepper_names() + " (default " + stepper_name(IntegratorSettings{}.stepper) + ")");
-  positive_option(app, "--rtol", o.settings.integrator.rtol, UnitDimension::dimensionless, "relative tolerance per step (default 1e-11)");
-  positive_option(app, "--atol", o.settings.integrator.atol, UnitDimension::dimensionless, "absolute tolerance per step, scaled units (default 1e-11)");
+  positive_option(app, "--rtol", o.settings.base.integrator.rtol, UnitDimension::dimensionless, "relative tolerance per step (default 1e-11)");
+  positive_option(app, "--atol", o.settings.base.integrator.atol, UnitDimension::dimensionless, "absolute tolerance per step, scaled units (default 1e-11)");
 }
 
 void format_option(CLI::App* app, Options& o, bool csv_too) {
@@ -183,30 +180,30 @@ void threads_option(CLI::App* app, Options& o, const std::string& help) {
 
 // The air: shot's, complete's and calibrate's.
 void air_options(CLI::App* app, Options& o) {
-  app->add_flag("--air", o.air, "fly through air (quadratic drag on a sphere) instead of vacuum; with --quality range the release maximises the range in air");
-  app->add_flag("--drag-in-sling", o.drag_in_sling,
+  app->add_flag("--air", o.settings.air, "fly through air (quadratic drag on a sphere) instead of vacuum; with --quality range the release maximises the range in air");
+  app->add_flag("--drag-in-sling", o.settings.drag_in_sling,
                 "with --air: the air acts before the release too, on the projectile in the trough and the sling and on the rope (--rope-diameter)");
-  value_option(app, o, "--air-density", option_slot(&Options::air_density), UnitDimension::density,
+  value_option(app, o, "--air-density", Slot{nullptr, &SettingsValues::air_density}, UnitDimension::density,
                "density of the air (default 1.2kg/m3) [" + unit_list(UnitDimension::density) + "]", true, true);
   parsed_option(app, "--cd", [&o](const std::string& text) {
-    if (text == "Re") o.drag_of_reynolds = true;
+    if (text == "Re") o.settings.drag_of_reynolds = true;
     else if (text.find_first_of("0123456789") == std::string::npos)
       throw Error(ErrorKind::usage, "--cd: '" + text + "' is not a drag coefficient; give a number, e.g. 0.47, or Re for Cd(Re)");
-    else o.drag_coefficient = parse_positive(text, UnitDimension::dimensionless, "--cd");
+    else o.settings.drag_coefficient = parse_positive(text, UnitDimension::dimensionless, "--cd");
   }, "drag coefficient of the sphere (default 0.47), or Re for Cd(Re) of a smooth sphere");
   parsed_option(app, "--projectile", [&o](const std::string& text) {
     if (text == "stone" || text == "iron") {
-      o.projectile_density = text == "stone" ? 2500 : 7870;
+      o.settings.projectile_density = text == "stone" ? 2500 : 7870;
       return;
     }
     if (text.find_first_of("0123456789") == std::string::npos)
       throw Error(ErrorKind::usage, "--projectile: '" + text + "' is not a projectile; give stone, iron or a density, e.g. 7870kg/m3");
-    o.projectile_density = parse_positive(text, UnitDimension::density, "--projectile");
+    o.settings.projectile_density = parse_positive(text, UnitDimension::density, "--projectile");
   }, "stone (2500kg/m3, the default), iron (7870kg/m3) or a density: gives the sphere's size");
-  value_option(app, o, "--wind", option_slot(&Options::wind), UnitDimension::speed,
+  value_option(app, o, "--wind", Slot{nullptr, &SettingsValues::wind}, UnitDimension::speed,
                "horizontal wind toward the target, e.g. 5m/s or -20km/h (against) [" + unit_list(UnitDimension::speed) + "]", true);
   parsed_option(app, "--range-from", [&o](const std::string& text) {
-    o.settings.range_from_release = parse_range_from(text, "--range-from");
+    o.settings.base.range_from_release = parse_range_from(text, "--range-from");
   }, "pivot (the paper's: to the target level, the default) or release (Denny's: from the release point back to its height)");
 }
 
@@ -321,46 +318,12 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
   return s;
 }
 
-ShotSettings shot_settings(const Options& o) {
-  ShotSettings settings = o.settings;
-  settings.target_level = o.target_level.value_or(0);
-  const bool air_details = o.air_density || o.drag_coefficient || o.drag_of_reynolds || o.projectile_density || o.wind;
-  if (air_details && !o.air)
-    throw Error(ErrorKind::usage, "--air-density, --cd, --projectile and --wind describe the air; add --air to fly through it (vacuum is the default)");
-  if (o.drag_in_sling && !o.air) throw Error(ErrorKind::usage, "--drag-in-sling lets the air act before the release; add --air (vacuum is the default)");
-  settings.drag_in_sling = o.drag_in_sling;
+ShotSettings settings_of(const Options& o) {
   if (o.series_dt_s > 0 && o.series.empty())
     throw Error(ErrorKind::usage, "--series-dt samples the series; add --series FILE to write it, or leave --series-dt out");
-  if (o.air) {
-    Air air;
-    air.density = o.air_density.value_or(air.density);
-    if (o.air_density && !(*o.air_density > 0))
-      throw Error(ErrorKind::bad_number, "--air-density: " + format_significant(*o.air_density, 6) + " kg/m3 must be positive");
-    if (o.drag_of_reynolds) air.drag_coefficient.reset();
-    else if (o.drag_coefficient) air.drag_coefficient = o.drag_coefficient;
-    air.projectile_density = o.projectile_density.value_or(air.projectile_density);
-    air.wind = o.wind.value_or(0);
-    settings.air = air;
-  }
-  return settings;
+  return shot_settings(o.settings);
 }
 
-CompletionRequest completion_request(const Options& o) {
-  CompletionRequest request;
-  Attested& a = request.attested;
-  const DesignValues& d = o.design;
-  a.Lb = d.Lb, a.L1 = d.L1, a.L2 = d.L2, a.H = d.H, a.L4 = d.L4, a.M = d.M, a.m = d.m, a.mb = d.mb, a.D = d.D, a.l = d.l;
-  a.theta_i_deg = d.theta_i_deg, a.F = d.F;
-  request.material = o.material.over(Material{});
-  request.settings = shot_settings(o);
-  request.parts = independent_parts(d);
-  return request;
-}
-
-Options with_values(const Options& o, const std::function<double(const Spread&)>& value) {
-  Options set = o;
-  for (const Uncertain& u : o.uncertain) u.slot(set) = value(u.input.spread);
-  return set;
-}
+MonteCarloRequest monte_carlo_request(const Options& o, bool completes) { return {o.design, o.settings, o.material, o.spreads, completes, ""}; }
 
 }  // namespace trebuchet::verify

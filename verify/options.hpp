@@ -5,7 +5,6 @@
 
 #include <CLI/CLI.hpp>
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +13,7 @@
 #include "trebuchet/completion.hpp"
 #include "trebuchet/sweep.hpp"
 #include "trebuchet/verification.hpp"
+#include "trebuchet/app/requests.hpp"
 #include "trebuchet/app/schema.hpp"
 #include "trebuchet/app/verifier.hpp"
 
@@ -21,24 +21,11 @@ namespace trebuchet::verify {
 
 enum class Format { table, json, csv };
 
-struct Options;
-
-/// A value given as a range or a spread: what it is, and where a Monte Carlo sample puts its draw.
-struct Uncertain {
-  UncertainInput input;
-  std::function<std::optional<double>&(Options&)> slot;
-};
-
 struct Options {
   std::string input;                     ///< a design file, "-" for stdin; empty: the flags
   DesignValues design;                   ///< the table's flags (input_fields): the engine, --R and --T, complete's --Lb, --H, --l
   double tolerance = 0.02;               ///< on a predicted R and T, relative
-  std::optional<double> target_level;    ///< [m], relative to the engine's base; 0 when not given
-  ShotSettings settings;                 ///< all but the target level and the air, which shot_settings() adds
-  bool air = false;
-  std::optional<double> air_density, drag_coefficient, projectile_density, wind;  ///< [kg/m^3], -, [kg/m^3], [m/s]
-  bool drag_of_reynolds = false;         ///< --cd Re
-  bool drag_in_sling = false;            ///< --drag-in-sling
+  SettingsValues settings;               ///< the release, the integrator, the target level and the air
   std::optional<MeasuredRange> measured; ///< calibrate: the measured range [m]
   std::vector<double> predict_m, predict_M;  ///< calibrate: masses to predict with [kg]
   MaterialOverrides material;            ///< --beta2, --wood-density, --youngs-modulus, --rupture, --g
@@ -53,7 +40,7 @@ struct Options {
   std::vector<std::string> parts;        ///< merge
   std::optional<int> samples;            ///< Monte Carlo; not given: default_shot_samples or default_completion_samples
   std::uint64_t seed = 1;
-  std::vector<Uncertain> uncertain;      ///< the values given as ranges or spreads, in the order given
+  std::vector<SpreadInput> spreads;      ///< the values given as ranges or spreads, in the order they are drawn
 };
 
 /// The subcommands, each with its options declared on it.
@@ -62,14 +49,10 @@ struct Subcommands {
 };
 Subcommands declare_subcommands(CLI::App& app, Options& options);
 
-/// The settings of a shot with its air: --air and what describes it (--air-density, --cd,
-/// --projectile, --wind), which need --air. Throws Error(usage) otherwise.
-ShotSettings shot_settings(const Options& options);
+/// The settings of the flags (requests.hpp's shot_settings); --series-dt needs --series.
+ShotSettings settings_of(const Options& options);
 
-/// complete's request from the options.
-CompletionRequest completion_request(const Options& options);
-
-/// The options with each uncertain value set by value(its spread).
-Options with_values(const Options& options, const std::function<double(const Spread&)>& value);
+/// The Monte Carlo run of the flags' values, shots or (`completes`) completions.
+MonteCarloRequest monte_carlo_request(const Options& options, bool completes);
 
 }  // namespace trebuchet::verify

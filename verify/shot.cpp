@@ -16,7 +16,7 @@ namespace {
 
 DesignCheck design_check(const Options& o, bool fit) {
   DesignCheck check;
-  check.settings = shot_settings(o);
+  check.settings = settings_of(o);
   check.material = o.material;
   check.tolerance = o.tolerance;
   check.fit = fit;

@@ -31,20 +31,7 @@ int print_derived(const nlohmann::ordered_json& json, const std::vector<double>&
 }  // namespace
 
 int run_optimize(const Options& o) {
-  const DesignValues& d = o.design;
-  if (!d.R || d.T.has_value() == d.m.has_value())
-    throw Error(ErrorKind::usage, "optimize needs a capacity: --R with --T, or --R with the stone's --m; e.g. --R 425m --T 224kJ, or --R 450m --m 100kg");
-  OptimizeRequest request;
-  request.capacity = {*d.R, d.T.value_or(0), 0};
-  request.projectile_mass = d.m;
-  request.theta_i_deg = d.theta_i_deg.value_or(standard_theta_i_deg);
-  request.F = d.F.value_or(standard_F);
-  request.material = o.material.over(Material{});
-  request.settings = shot_settings(o);
-  if (o.design.l) {
-    check_fixed_beam_ratio(*o.design.l, "--l");
-    request.fixed_l = o.design.l;
-  }
+  const OptimizeRequest request = optimize_request(o.design, settings_of(o), o.material);
   const auto start = std::chrono::steady_clock::now();
   const std::vector<Optimum> optima = optimize(request);
   const double seconds = seconds_since(start);
@@ -66,7 +53,7 @@ int run_derive_table(const Options& o) {
   spec.theta_i_deg = o.design.theta_i_deg.value_or(standard_theta_i_deg);
   spec.F = o.design.F.value_or(standard_F);
   spec.material = o.material.over(Material{});
-  spec.criterion = o.settings.criterion;
+  spec.criterion = o.settings.base.criterion;
   if (o.shard) part.shard = *o.shard;
   // The work, decided before the run: the shard's X points at about 1100 shots each (an optimum).
   const long points = (static_cast<long>(sweep_grid(spec).size()) - part.shard.k + part.shard.n) / part.shard.n;

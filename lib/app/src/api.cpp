@@ -20,6 +20,7 @@
 #include "trebuchet/app/pictures.hpp"
 #include "trebuchet/app/report.hpp"
 #include "trebuchet/app/request.hpp"
+#include "trebuchet/app/requests.hpp"
 #include "trebuchet/app/schema.hpp"
 #include "trebuchet/app/text_input.hpp"
 #include "trebuchet/app/units.hpp"
@@ -81,41 +82,42 @@ bool flag_of(const json& request, const std::string& key) {
   return request[key].get<bool>();
 }
 
-// The shot's settings from a request's keys, checked as the programs check their options.
-ShotSettings settings_of(const json& request) {
-  ShotSettings settings;
-  settings.target_level = read_value(request, "target_level", UnitDimension::length, "").value_or(0);
-  if (request.contains("release")) settings.criterion.release = parse_release(text_of(request["release"], "release"), "{{release}}");
-  if (const auto n = positive_value(request, "n", UnitDimension::dimensionless, true)) settings.criterion.n = *n;  // eq:Q_n
-  if (request.contains("range_from")) settings.range_from_release = parse_range_from(text_of(request["range_from"], "range_from"), "{{range_from}}");
+// The shot's settings as a request's keys give them.
+SettingsValues settings_values_of(const json& request) {
+  SettingsValues v;
+  v.target_level = read_value(request, "target_level", UnitDimension::length, "");
+  if (request.contains("release")) v.base.criterion.release = parse_release(text_of(request["release"], "release"), "{{release}}");
+  if (const auto n = positive_value(request, "n", UnitDimension::dimensionless, true)) v.base.criterion.n = *n;  // eq:Q_n
+  if (request.contains("range_from")) v.base.range_from_release = parse_range_from(text_of(request["range_from"], "range_from"), "{{range_from}}");
   if (request.contains("air")) {
     const json& given = request["air"];
     if (given.is_object()) {
       require_keys(given, {"density", "drag_coefficient", "projectile_density", "wind", "drag_in_sling"}, "air");
+      v.air = true;
       if (given.contains("drag_in_sling")) {
         if (!given["drag_in_sling"].is_boolean())
           throw Error(ErrorKind::usage, "air.drag_in_sling: " + brief_json(given["drag_in_sling"]) + " is neither true nor false");
-        settings.drag_in_sling = given["drag_in_sling"].get<bool>();
+        v.drag_in_sling = given["drag_in_sling"].get<bool>();
       }
-      Air air;
-      air.density = read_value(given, "density", UnitDimension::density, "air").value_or(air.density);
+      v.air_density = read_value(given, "density", UnitDimension::density, "air");
       if (given.contains("drag_coefficient") && given["drag_coefficient"].is_string() &&
           (given["drag_coefficient"] == "Re" || given["drag_coefficient"] == "Cd(Re)"))
-        air.drag_coefficient.reset();
-      else if (const auto cd = read_value(given, "drag_coefficient", UnitDimension::dimensionless, "air"))
-        air.drag_coefficient = cd;
-      air.projectile_density = read_value(given, "projectile_density", UnitDimension::density, "air").value_or(air.projectile_density);
-      air.wind = read_value(given, "wind", UnitDimension::speed, "air").value_or(0);
-      settings.air = air;
+        v.drag_of_reynolds = true;
+      else
+        v.drag_coefficient = read_value(given, "drag_coefficient", UnitDimension::dimensionless, "air");
+      v.projectile_density = read_value(given, "projectile_density", UnitDimension::density, "air");
+      v.wind = read_value(given, "wind", UnitDimension::speed, "air");
     } else if (given.is_boolean() || given == "vacuum") {
-      if (given == true) settings.air = Air{};
+      v.air = given == true;
     } else {
       throw Error(ErrorKind::usage, "{{air}}: " + brief_json(given) + " is no air; give false (vacuum), true (the standard air) or an object like {\"wind\": \"5m/s\"}");
     }
   }
-  check_shot_settings(settings);
-  return settings;
+  return v;
 }
+
+// The shot's settings from a request's keys, checked as the programs check their options.
+ShotSettings settings_of(const json& request) { return shot_settings(settings_values_of(request)); }
 
 MaterialOverrides overrides_of(const json& request) {
   MaterialOverrides material;
@@ -123,39 +125,38 @@ MaterialOverrides overrides_of(const json& request) {
   return material;
 }
 
-CompletionRequest completion_request_of(const json& attested, const ShotSettings& settings, const MaterialOverrides& overrides) {
-  require_keys(attested, input_names(op_complete), "attested");
-  // A value given as a range or a spread is completed at its middle (a range's midpoint, a
-  // spread's mean); monte_carlo samples it.
+// The values of a request's object (a design's or the attested) that `operation` takes, each
+// given as a range or a spread taken at `at`(spread) and, with `spreads`, kept there with where
+// its draws go. A key near an input's name is refused with that name.
+DesignValues values_of(const json& object, unsigned operation, const std::string& where, const std::function<double(const Spread&)>& at,
+                       std::vector<SpreadInput>* spreads = nullptr) {
+  if (!object.is_object()) throw Error(ErrorKind::usage, where + ": expected a JSON object");
+  if (operation == op_complete) require_keys(object, input_names(op_complete), where);
+  json plain = object;
+  for (const auto& [key, value] : object.items()) {
+    const InputField* field = find_field(key);
+    if (!field || !(field->operations & operation) || field->group == FieldGroup::capacity || !value.is_string()) continue;
+    if (const auto spread = parse_spread(value.get<std::string>(), field->dimension, where + "." + key)) {
+      plain[key] = at(*spread);
+      if (spreads) spreads->push_back({{key, field->dimension, *spread}, field->member, nullptr});
+    }
+  }
+  if (operation != op_complete) return read_design_values(plain, where);
   DesignValues v;
   for (const InputField& field : input_fields()) {
     if (!(field.operations & op_complete)) continue;
-    const auto given = [&](const std::string& name) -> std::optional<double> {
-      if (attested.contains(name) && attested[name].is_string())
-        if (const auto spread = parse_spread(attested[name].get<std::string>(), field.dimension, "attested." + name))
-          return spread->kind == Spread::Kind::uniform ? (spread->a + spread->b) / 2 : spread->a;
-      return read_value(attested, name, field.dimension, "attested");
-    };
-    v.*field.member = given(field.key);
+    v.*field.member = read_value(plain, field.key, field.dimension, where);
     for (const char* alias : field.aliases)
-      if (const auto value = given(alias)) {
-        if (v.*field.member)
-          throw Error(ErrorKind::usage, std::string("attested.") + field.key + " and attested." + alias + " are one value given twice; keep one");
+      if (const auto value = read_value(plain, alias, field.dimension, where)) {
+        if (v.*field.member) throw Error(ErrorKind::usage, where + "." + field.key + " and " + where + "." + alias + " are one value given twice; keep one");
         v.*field.member = value;
       }
   }
-  CompletionRequest request;
-  Attested& a = request.attested;
-  a.Lb = v.Lb, a.L1 = v.L1, a.L2 = v.L2, a.H = v.H, a.L4 = v.L4, a.M = v.M, a.m = v.m, a.mb = v.mb, a.D = v.D, a.l = v.l;
-  a.theta_i_deg = v.theta_i_deg, a.F = v.F;
-  MaterialOverrides material;
-  material.beta2 = v.beta2, material.youngs_modulus = v.youngs_modulus, material.wood_density = v.wood_density, material.g = v.g;
-  material.modulus_of_rupture = overrides.modulus_of_rupture;
-  request.material = material.over(Material{});
-  request.settings = settings;
-  request.parts = independent_parts(v);
-  return request;
+  return v;
 }
+
+// A value given as a range or a spread, completed at its middle (a range's midpoint, a spread's mean).
+double middle(const Spread& spread) { return spread.kind == Spread::Kind::uniform ? (spread.a + spread.b) / 2 : spread.a; }
 
 ordered_json completion_answer(const CompletionRequest& request) {
   CompletionReport report = complete_with_longest(request, key_word);
@@ -163,14 +164,6 @@ ordered_json completion_answer(const CompletionRequest& request) {
   if (report.completion.calculator)
     for (std::string& warning : report.completion.calculator->warnings) warning = with_words(warning, key_word);
   return completion_json(report.completion, request.settings, report.longest ? &*report.longest : nullptr, report.longest_note);
-}
-
-// The dimension of a design's or an attested object's value (for a spread of it); empty for a
-// key that is no such value (a design's derived keys, Lb, DeltaU, which read_engine passes over).
-std::optional<UnitDimension> dimension_of(const std::string& key, bool attested) {
-  const InputField* field = find_field(key);
-  if (field && (field->operations & (attested ? op_complete : op_shot))) return field->dimension;
-  return std::nullopt;
 }
 
 constexpr ErrorKind all_kinds[] = {ErrorKind::usage,        ErrorKind::given_count, ErrorKind::bad_number, ErrorKind::unknown_unit,
@@ -235,29 +228,20 @@ ordered_json design(const json& request) {
 }
 
 ordered_json optimize(const json& request) {
-  require_keys(request, with_settings({"R", "T", "m", "theta_i_deg", "F", "l", "beta2", "youngs_modulus", "wood_density", "g"}), "optimize");
-  const auto R = positive_value(request, "R", UnitDimension::length), T = positive_value(request, "T", UnitDimension::energy),
-             m = positive_value(request, "m", UnitDimension::mass);
-  if (!R || T.has_value() == m.has_value())
-    throw Error(ErrorKind::usage, "optimize needs a capacity: {{R}} with {{T}}, or {{R}} with the stone's {{m}}; e.g. R 425m and T 224kJ");
-  OptimizeRequest r;
-  r.capacity = {*R, T.value_or(0), 0};
-  r.projectile_mass = m;
-  r.theta_i_deg = read_value(request, "theta_i_deg", UnitDimension::angle, "").value_or(standard_theta_i_deg);
-  r.F = read_value(request, "F", UnitDimension::dimensionless, "").value_or(standard_F);
-  MaterialOverrides material = overrides_of(request);
-  material.beta2 = positive_value(request, "beta2", UnitDimension::dimensionless);
-  material.youngs_modulus = positive_value(request, "youngs_modulus", UnitDimension::pressure);
-  material.wood_density = positive_value(request, "wood_density", UnitDimension::density);
-  material.g = positive_value(request, "g", UnitDimension::acceleration);
-  r.material = material.over(Material{});
-  r.settings = settings_of(request);
-  if (const auto l = read_value(request, "l", UnitDimension::dimensionless, "")) {
-    check_fixed_beam_ratio(*l, "{{l}}");
-    r.fixed_l = l;
+  require_keys(request, with_settings(input_names(op_optimize)), "optimize");
+  // The capacity, the stone and the material must be positive, as the programs' options are.
+  DesignValues v;
+  for (const InputField& field : input_fields()) {
+    if (!(field.operations & op_optimize)) continue;
+    const bool positive = field.group == FieldGroup::capacity || field.group == FieldGroup::material || field.member == &DesignValues::m;
+    for (const char* name : names_of(field)) {
+      const auto value = positive ? positive_value(request, name, field.dimension) : read_value(request, name, field.dimension, "");
+      if (value && v.*field.member) throw Error(ErrorKind::usage, std::string("{{") + field.key + "}} and {{" + name + "}} are one value given twice; keep one");
+      if (value) v.*field.member = value;
+    }
   }
   ordered_json all = ordered_json::array();
-  for (const Optimum& optimum : trebuchet::optimize(r)) all.push_back(optimum_json(optimum, 0));
+  for (const Optimum& optimum : trebuchet::optimize(optimize_request(v, settings_of(request), overrides_of(request)))) all.push_back(optimum_json(optimum, 0));
   return all;
 }
 
@@ -280,7 +264,7 @@ ordered_json shot(const json& request) {
 ordered_json complete(const json& request) {
   require_keys(request, with_settings({"attested"}), "complete");
   if (!request.contains("attested")) throw Error(ErrorKind::usage, "{{attested}} is missing; give what the source attests, e.g. {\"attested\": {\"Lb\": \"9.5m\", \"M\": \"3t\", \"m\": \"50kg\"}}");
-  return completion_answer(completion_request_of(request["attested"], settings_of(request), overrides_of(request)));
+  return completion_answer(completion_request(values_of(request["attested"], op_complete, "attested", middle), settings_of(request), overrides_of(request)));
 }
 
 ordered_json monte_carlo(const json& request) {
@@ -288,64 +272,27 @@ ordered_json monte_carlo(const json& request) {
   const bool completes = request.contains("attested");
   if (completes == request.contains("design"))
     throw Error(ErrorKind::usage, "give {{design}} (a shot of each sample) or {{attested}} (a completion of each sample), one of them");
-  const json& values = request[completes ? "attested" : "design"];
-  if (!values.is_object()) throw Error(ErrorKind::usage, std::string(completes ? "attested" : "design") + ": expected a JSON object");
   const std::string where = completes ? "attested" : "design";
-  // The values given as ranges or spreads, and those held fixed.
-  std::vector<UncertainInput> inputs;
-  std::vector<FixedInput> fixed;
-  for (const auto& [key, value] : values.items()) {
-    const std::optional<UnitDimension> dimension = dimension_of(key, completes);
-    // Not an engine's value: a design's derived key (read_engine passes over Lb, DeltaU ...; R and T
-    // it reads as a capacity, where a spread is refused as no number), or, for completions, a key
-    // completion_request_of refuses by name.
-    if (!dimension) continue;
-    std::optional<Spread> spread;
-    if (value.is_string()) spread = parse_spread(value.get<std::string>(), *dimension, where + "." + key);
-    if (spread) inputs.push_back({key, *dimension, *spread});
-    else if (const auto number = read_value(values, key, *dimension, where)) fixed.push_back({key, *dimension, *number});
-  }
-  auto with_draws = [&](const std::function<double(const Spread&)>& value) {
-    json set = values;
-    for (const UncertainInput& u : inputs) set[u.name] = value(u.spread);
-    return set;
-  };
-  const ShotSettings settings = settings_of(request);
-  const MaterialOverrides material = overrides_of(request);
-  auto verification_of = [&](const json& set) {
-    if (completes) return complete_engine(completion_request_of(set, settings, material)).verification;
-    Engine engine = read_engine(set, where).engine;
-    engine.material = material.over(engine.material);
-    ShotSettings quick = settings;
-    quick.loads = false;  // a sample reports R, T, eps and v
-    return verify_engine(engine, quick);
-  };
+  MonteCarloRequest run;
+  run.values = values_of(request[where], completes ? op_complete : op_shot, where, [](const Spread& s) { return s.a; }, &run.spreads);
+  run.completes = completes;
+  run.where = where;
+  run.material = overrides_of(request);
+  run.settings = settings_values_of(request);
+  const ShotSettings settings = shot_settings(run.settings);
   // As the program does: the design at each spread's first number must be an engine.
-  const json first_values = with_draws([](const Spread& s) { return s.a; });
-  std::int64_t shots_per_sample = 1;
-  if (completes) shots_per_sample = shots_per_completion([&] { return complete_engine(completion_request_of(first_values, settings, material)); });
-  else read_engine(first_values, where);
+  const std::int64_t shots = shots_per_sample(run);
   const double samples_given = read_value(request, "samples", UnitDimension::dimensionless, "")
                                    .value_or(completes ? default_completion_samples : default_shot_samples);
   if (!(samples_given >= 1 && samples_given <= max_run_shots) || samples_given != std::floor(samples_given))
     throw Error(ErrorKind::bad_number, "{{samples}} = " + format_significant(samples_given, 6) + " must be a whole number from 1 to " + std::to_string(max_run_shots));
   const int samples = static_cast<int>(samples_given);
-  check_monte_carlo_work(samples, shots_per_sample, completes ? "completions" : "shots");
+  check_monte_carlo_work(samples, shots, completes ? "completions" : "shots");
   const double seed_value = read_value(request, "seed", UnitDimension::dimensionless, "").value_or(1);
   if (!(seed_value >= 0 && seed_value < 9007199254740992.0) || seed_value != std::floor(seed_value))
     throw Error(ErrorKind::bad_number, "{{seed}} = " + format_significant(seed_value, 17) + " must be a whole number from 0 to 2^53");
   const auto seed = static_cast<std::uint64_t>(seed_value);
-  const auto sample = [&](std::mt19937_64& random) {
-    SampleOutcome outcome;
-    try {
-      const Verification v = verification_of(with_draws([&](const Spread& s) { return draw(s, random); }));
-      outcome.values = {v.capacity.R, v.capacity.T, v.eps, v.v};
-    } catch (const Error& e) {
-      outcome.failure = e.message(key_word);
-      outcome.failure_kind = e.kind();
-    }
-    return outcome;
-  };
+  const auto sample = [&](std::mt19937_64& random) { return sample_outcome(run, random, key_word); };
 
   std::vector<SampleOutcome> outcomes;
   if (request.contains("first") || request.contains("count")) {  // one worker's part
@@ -382,6 +329,9 @@ ordered_json monte_carlo(const json& request) {
   }
   const MonteCarloSummary summary = summarize_samples(outcomes);
   refuse_when_no_sample_worked(summary);
+  std::vector<UncertainInput> inputs;
+  for (const SpreadInput& spread : run.spreads) inputs.push_back(spread.input);
+  const std::vector<FixedInput> fixed = fixed_inputs(run);
   const MonteCarloReport report{summary, inputs, fixed, describe_release(settings), seed, completes ? "the completed engine" : "the shot",
                                 settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"), settings.air.has_value(), 0, 1};
   ordered_json answer = monte_carlo_json(report);

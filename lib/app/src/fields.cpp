@@ -125,6 +125,12 @@ std::string option_help(const InputField& field) {
   return help;
 }
 
+std::vector<const char*> names_of(const InputField& field) {
+  std::vector<const char*> names{field.key};
+  names.insert(names.end(), field.aliases.begin(), field.aliases.end());
+  return names;
+}
+
 std::string csv_column_of(const InputField& field) { return *field.unit ? std::string(field.key) + "_" + field.unit : field.key; }
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {

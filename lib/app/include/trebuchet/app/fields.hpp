@@ -67,6 +67,9 @@ const InputField& field_of(std::optional<double> DesignValues::*member);
 /// The row whose key or one of whose aliases is `name` exactly; nullptr for none.
 const InputField* find_field(std::string_view name);
 
+/// A row's names: its key, then its aliases.
+std::vector<const char*> names_of(const InputField& field);
+
 /// The key of a member: key_of(&DesignValues::L4) is the text the table gives it.
 inline const char* key_of(std::optional<double> DesignValues::*member) { return field_of(member).key; }
 

@@ -1,0 +1,84 @@
+// One typed request per operation. The programs parse their flags into these values, the api
+// (the page, the Python module) parses JSON into them, and both call the same functions, so
+// that a shot, a completion, an optimum or a Monte Carlo run asked either way is the same.
+// Values are as given: SI units, angles in degrees, empty where not given.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "trebuchet/completion.hpp"
+#include "trebuchet/optimizer.hpp"
+#include "trebuchet/verification.hpp"
+#include "trebuchet/app/fields.hpp"
+#include "trebuchet/app/verifier.hpp"
+
+namespace trebuchet {
+
+/// The settings of a shot as given: the release and the target (in `base`, with the integrator),
+/// the target level, and the air, which its details describe only when `air` is on.
+struct SettingsValues {
+  ShotSettings base;                    ///< criterion, integrator, range_from_release; its air and level are set from the values below
+  std::optional<double> target_level;   ///< [m]; 0 when not given
+  bool air = false;
+  std::optional<double> air_density, drag_coefficient, projectile_density, wind;  ///< [kg/m^3], -, [kg/m^3], [m/s]
+  bool drag_of_reynolds = false;        ///< Cd(Re) of a smooth sphere instead of a constant Cd
+  bool drag_in_sling = false;           ///< the air acts before the release too
+};
+
+/// The settings of a shot from their values, checked (check_shot_settings): details of the air
+/// without the air are refused, as is drag in the sling. Messages name {{air_density}}, {{cd}},
+/// {{projectile}}, {{wind}} and {{drag_in_sling}}.
+ShotSettings shot_settings(const SettingsValues& values);
+
+/// complete's request: the attested values (engine, stand-ins, parts and material; `material`
+/// over the values' own), under `settings`.
+CompletionRequest completion_request(const DesignValues& attested, const ShotSettings& settings, const MaterialOverrides& material);
+
+/// optimize's request: R with T or with the stone's m, theta_i and F (the standard 30 deg, 2/3
+/// when not given), a beam ratio l to hold, the material, the settings. Throws Error(usage) for a
+/// capacity that is not R with one of T and m, naming {{R}}, {{T}} and {{m}}.
+OptimizeRequest optimize_request(const DesignValues& values, const ShotSettings& settings, const MaterialOverrides& material);
+
+/// A value of a Monte Carlo run given as a range or a spread, and where its draw goes: a design's
+/// value or a setting's (the target level, the wind, the air's density).
+struct SpreadInput {
+  UncertainInput input;                                 ///< named as its user gave it ("--M", "M")
+  std::optional<double> DesignValues::*value = nullptr;
+  std::optional<double> SettingsValues::*setting = nullptr;
+};
+
+/// A Monte Carlo run: the shot of a design, or the completion of attested values, at draws of
+/// its spreads. The values hold each spread's first number (a range's low end, a spread's mean).
+struct MonteCarloRequest {
+  DesignValues values;
+  SettingsValues settings;
+  MaterialOverrides material;
+  std::vector<SpreadInput> spreads;  ///< in the order they are drawn
+  bool completes = false;            ///< complete each sample (attested values) instead of shooting it
+  std::string where;                 ///< how messages name the design's values: "" flags ("--L4"), "design" a request's ("design.L4")
+};
+
+/// The values and settings of a sample: each spread set to value(its spread).
+MonteCarloRequest with_draws(const MonteCarloRequest& request, const std::function<double(const Spread&)>& value);
+
+/// The shot of one sample at the request's values (R, T, eps and v; no loads). Throws Error.
+Verification sample_verification(const MonteCarloRequest& sample);
+
+/// The shots a sample takes (1, or those of a completion at the first values), checking that
+/// the first values make an engine: bad input there is thrown, as the run's.
+std::int64_t shots_per_sample(const MonteCarloRequest& request);
+
+/// The values the run holds fixed, in the order the report lists them: what a completion alone
+/// takes (Lb, H, l), then the others of the table's order (the engine's, its parts, its
+/// material), none of them spread.
+std::vector<FixedInput> fixed_inputs(const MonteCarloRequest& request);
+
+/// The outcome of one sample drawn with `random`; a failure is recorded, its message's names
+/// written by `word` (error.hpp).
+SampleOutcome sample_outcome(const MonteCarloRequest& request, std::mt19937_64& random, const std::function<std::string(std::string_view)>& word);
+
+}  // namespace trebuchet

@@ -1,0 +1,128 @@
+#include "trebuchet/app/requests.hpp"
+
+#include <algorithm>
+
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/uncertainty.hpp"
+
+namespace trebuchet {
+
+ShotSettings shot_settings(const SettingsValues& v) {
+  ShotSettings settings = v.base;
+  settings.target_level = v.target_level.value_or(0);
+  const bool air_details = v.air_density || v.drag_coefficient || v.drag_of_reynolds || v.projectile_density || v.wind;
+  if (air_details && !v.air)
+    throw Error(ErrorKind::usage, "{{air_density}}, {{cd}}, {{projectile}} and {{wind}} describe the air; add {{air}} to fly through it (vacuum is the default)");
+  if (v.drag_in_sling && !v.air) throw Error(ErrorKind::usage, "{{drag_in_sling}} lets the air act before the release; add {{air}} (vacuum is the default)");
+  settings.drag_in_sling = v.drag_in_sling;
+  if (v.air) {
+    Air air;
+    if (v.air_density && !(*v.air_density > 0))
+      throw Error(ErrorKind::bad_number, "{{air_density}}: " + format_significant(*v.air_density, 6) + " kg/m3 must be positive");
+    air.density = v.air_density.value_or(air.density);
+    if (v.drag_of_reynolds) air.drag_coefficient.reset();
+    else if (v.drag_coefficient) air.drag_coefficient = v.drag_coefficient;
+    air.projectile_density = v.projectile_density.value_or(air.projectile_density);
+    air.wind = v.wind.value_or(0);
+    settings.air = air;
+  }
+  check_shot_settings(settings);
+  return settings;
+}
+
+CompletionRequest completion_request(const DesignValues& v, const ShotSettings& settings, const MaterialOverrides& material) {
+  CompletionRequest request;
+  Attested& a = request.attested;
+  a.Lb = v.Lb, a.L1 = v.L1, a.L2 = v.L2, a.H = v.H, a.L4 = v.L4, a.M = v.M, a.m = v.m, a.mb = v.mb, a.D = v.D, a.l = v.l;
+  a.theta_i_deg = v.theta_i_deg, a.F = v.F;
+  MaterialOverrides given;
+  given.beta2 = v.beta2, given.youngs_modulus = v.youngs_modulus, given.wood_density = v.wood_density, given.g = v.g;
+  request.material = material.over(given.over(Material{}));
+  request.settings = settings;
+  request.parts = independent_parts(v);
+  return request;
+}
+
+OptimizeRequest optimize_request(const DesignValues& v, const ShotSettings& settings, const MaterialOverrides& material) {
+  if (!v.R || v.T.has_value() == v.m.has_value())
+    throw Error(ErrorKind::usage, "optimize needs a capacity: {{R}} with {{T}}, or {{R}} with the stone's {{m}}; e.g. {{R}} 425m {{T}} 224kJ, or {{R}} 450m {{m}} 100kg");
+  OptimizeRequest request;
+  request.capacity = {*v.R, v.T.value_or(0), 0};
+  request.projectile_mass = v.m;
+  request.theta_i_deg = v.theta_i_deg.value_or(standard_theta_i_deg);
+  request.F = v.F.value_or(standard_F);
+  MaterialOverrides given;
+  given.beta2 = v.beta2, given.youngs_modulus = v.youngs_modulus, given.wood_density = v.wood_density, given.g = v.g;
+  request.material = material.over(given.over(Material{}));
+  request.settings = settings;
+  if (v.l) {
+    check_fixed_beam_ratio(*v.l, "{{l}}");
+    request.fixed_l = v.l;
+  }
+  return request;
+}
+
+MonteCarloRequest with_draws(const MonteCarloRequest& request, const std::function<double(const Spread&)>& value) {
+  MonteCarloRequest sample = request;
+  for (const SpreadInput& spread : request.spreads) {
+    const double drawn = value(spread.input.spread);
+    if (spread.value) sample.values.*spread.value = drawn;
+    else sample.settings.*spread.setting = drawn;
+  }
+  return sample;
+}
+
+namespace {
+
+// The engine of a sample's design, its material under the run's.
+Engine sample_engine(const MonteCarloRequest& sample) {
+  Engine engine = engine_record(sample.values, sample.where).engine;
+  engine.material = sample.material.over(engine.material);
+  return engine;
+}
+
+}  // namespace
+
+Verification sample_verification(const MonteCarloRequest& sample) {
+  ShotSettings settings = shot_settings(sample.settings);
+  if (sample.completes) return complete_engine(completion_request(sample.values, settings, sample.material)).verification;
+  settings.loads = false;  // a sample reports R, T, eps and v
+  return verify_engine(sample_engine(sample), settings);
+}
+
+std::int64_t shots_per_sample(const MonteCarloRequest& request) {
+  const MonteCarloRequest first = with_draws(request, [](const Spread& s) { return s.a; });
+  const ShotSettings settings = shot_settings(first.settings);
+  if (!request.completes) {
+    sample_engine(first);
+    return 1;
+  }
+  return shots_per_completion([&] { return complete_engine(completion_request(first.values, settings, first.material)); });
+}
+
+std::vector<FixedInput> fixed_inputs(const MonteCarloRequest& request) {
+  std::vector<FixedInput> fixed;
+  for (const bool completion_only : {true, false})
+    for (const InputField& field : input_fields()) {
+      const std::optional<double>& value = request.values.*field.member;
+      if (field.group == FieldGroup::capacity || !value || completion_only == static_cast<bool>(field.operations & op_shot)) continue;
+      const bool spread = std::any_of(request.spreads.begin(), request.spreads.end(), [&](const SpreadInput& s) { return s.value == field.member; });
+      if (!spread) fixed.push_back({field.key, field.dimension, *value});
+    }
+  return fixed;
+}
+
+SampleOutcome sample_outcome(const MonteCarloRequest& request, std::mt19937_64& random, const std::function<std::string(std::string_view)>& word) {
+  SampleOutcome outcome;
+  try {
+    const Verification v = sample_verification(with_draws(request, [&](const Spread& s) { return draw(s, random); }));
+    outcome.values = {v.capacity.R, v.capacity.T, v.eps, v.v};
+  } catch (const Error& e) {
+    outcome.failure = e.message(word);
+    outcome.failure_kind = e.kind();
+  }
+  return outcome;
+}
+
+}  // namespace trebuchet
