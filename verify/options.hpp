@@ -49,6 +49,12 @@ struct Subcommands {
 };
 Subcommands declare_subcommands(CLI::App& app, Options& options);
 
+/// calibrate's --measured, --predict-m and --predict-M (calibrate.cpp).
+void measured_options(CLI::App* calibrate, Options& options);
+
+/// derive-table's --X and --shard (tables.cpp).
+void sweep_options(CLI::App* derive_table, Options& options);
+
 /// The settings of the flags (requests.hpp's shot_settings); --series-dt needs --series.
 ShotSettings settings_of(const Options& options);
 
