@@ -13,14 +13,14 @@ namespace {
 using Context = PhaseIntegrator::Context;
 
 std::size_t angles_of(Phase phase) { return phase == Phase::lifted ? 3 : 2; }
-std::size_t dimension_of(const Context& c) { return 2 * angles_of(c.phase) + (c.dynamics->dissipates() ? loss_count : 0); }
+std::size_t dimension_of(const Context& c) { return 2 * angles_of(c.phase) + (c.machine->dissipates() ? loss_count : 0); }
 
 // The full state of an integrated vector: in the trough phi and phi_dot from eq:EOM_I_3.
 State state_of(const Context& c, const double y[]) {
   State s;
   if (c.phase != Phase::lifted) {  // (th, psi, th', psi')
     s.theta = y[0], s.psi = y[1], s.theta_dot = y[2], s.psi_dot = y[3];
-    if (c.phase == Phase::trough) c.dynamics->complete_trough_state(s);
+    if (c.phase == Phase::trough) c.machine->complete_trough_state(s);
   } else {
     s.theta = y[0], s.psi = y[1], s.phi = y[2], s.theta_dot = y[3], s.psi_dot = y[4], s.phi_dot = y[5];
   }
@@ -31,7 +31,7 @@ int equations(double, const double y[], double dydt[], void* params) {
   auto* c = static_cast<Context*>(params);
   State s;
   // A trial state near the singularity fails, and GSL retries with a shorter step.
-  if (c->phase == Phase::trough && !(c->dynamics->trough_cos_phi(y[0]) > refuse_trough_cos_phi)) return GSL_FAILURE;
+  if (c->phase == Phase::trough && !(c->machine->trough_cos_phi(y[0]) > refuse_trough_cos_phi)) return GSL_FAILURE;
   const std::size_t angles = angles_of(c->phase);
   if (angles == 2) {  // (th, psi, th', psi'); the accelerations need no phi in the trough
     s.theta = y[0], s.psi = y[1], s.theta_dot = y[2], s.psi_dot = y[3];
@@ -40,8 +40,8 @@ int equations(double, const double y[], double dydt[], void* params) {
   }
   std::array<double, 3> a;
   Losses power;
-  const bool losses = c->dynamics->dissipates();
-  if (!c->dynamics->accelerations(c->phase, s, a, losses ? &power : nullptr)) {
+  const bool losses = c->machine->dissipates();
+  if (!c->machine->accelerations(c->phase, s, a, losses ? &power : nullptr)) {
     c->friction_unsettled = true;
     return GSL_FAILURE;
   }
@@ -176,8 +176,8 @@ OdeVector hermite(const StepEnd& a, const StepEnd& b, double time, std::size_t a
   return y;
 }
 
-PhaseIntegrator::PhaseIntegrator(const Dynamics& dynamics, Phase phase, const IntegratorSettings& settings)
-    : context_{&dynamics, phase},
+PhaseIntegrator::PhaseIntegrator(const Machine& machine, Phase phase, const IntegratorSettings& settings)
+    : context_{&machine, phase},
       system_{equations, jacobian, dimension_of(context_), &context_},
       stepping_(make(settings), gsl_odeiv2_driver_free),
       evaluating_(make(settings), gsl_odeiv2_driver_free) {}

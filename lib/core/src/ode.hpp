@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "trebuchet/dynamics.hpp"
+#include "trebuchet/machine.hpp"
 #include "trebuchet/integrator.hpp"
 
 namespace trebuchet {
@@ -37,10 +38,10 @@ OdeVector hermite(const StepEnd& a, const StepEnd& b, double time, std::size_t a
 // the equations near the singularity; the shot abandons phase I at twice this.
 inline constexpr double refuse_trough_cos_phi = 0.01;
 
-// One phase: a driver for stepping and a second one for evaluating the solution between steps.
+// One phase of a machine: a driver for stepping and a second one for evaluating the solution between steps.
 class PhaseIntegrator {
  public:
-  PhaseIntegrator(const Dynamics& dynamics, Phase phase, const IntegratorSettings& settings);
+  PhaseIntegrator(const Machine& machine, Phase phase, const IntegratorSettings& settings);
 
   // One accepted step toward t_end; false when the equations failed.
   bool step(double& t, double y[], double t_end, double& h);
@@ -56,7 +57,7 @@ class PhaseIntegrator {
   // Whether an evaluation failed because friction left the accelerations unsettled.
   bool friction_unsettled() const { return context_.friction_unsettled; }
   Phase phase() const { return context_.phase; }
-  const Dynamics& dynamics() const { return *context_.dynamics; }
+  const Machine& machine() const { return *context_.machine; }
 
   // The full state of an integrated vector (phi from eq:EOM_I_3 in phase I).
   State state(const OdeVector& y) const;
@@ -68,7 +69,7 @@ class PhaseIntegrator {
   StepEnd step_end(double t, const OdeVector& y, const Snapshot& snapshot);
 
   struct Context {
-    const Dynamics* dynamics;
+    const Machine* machine;
     Phase phase;
     bool friction_unsettled = false;
   };

@@ -152,7 +152,7 @@ class PhaseRecord {
 
  private:
 
-  Snapshot snapshot_at(double time) const { return integrator_.dynamics().snapshot(integrator_.phase(), integrator_.state(y_at(time))); }
+  Snapshot snapshot_at(double time) const { return integrator_.machine().snapshot(integrator_.phase(), integrator_.state(y_at(time))); }
 
   ForceValues forces_at(double time) const { return force_values(snapshot_at(time)); }
 
@@ -298,7 +298,7 @@ void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, c
   if (!trace) return;
   auto add = [&](double t, const OdeVector& y) {
     const State s = integrator.state(y);
-    trace->push_back({integrator.phase(), t, s, integrator.dynamics().snapshot(integrator.phase(), s), integrator.work(y)});
+    trace->push_back({integrator.phase(), t, s, integrator.machine().snapshot(integrator.phase(), s), integrator.work(y)});
   };
   if (!(dt > 0)) {
     for (const auto& sample : record.samples())
@@ -315,7 +315,7 @@ void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, c
 // step ends, or every dt > 0 (each integrated anew from the step it falls in). Where friction
 // holds a pin after the release (StickWatch), the model, which leaves sticking out, ends there,
 // and so does the series.
-void trace_released(const Dynamics& dynamics, const ScaledDesign& e, const IntegratorSettings& settings, const State& release,
+void trace_released(const Machine& dynamics, const ScaledDesign& e, const IntegratorSettings& settings, const State& release,
                     const Losses& work, double t_release, double dt, std::vector<TracePoint>& trace) {
   PhaseIntegrator released(dynamics, Phase::released, settings);
   OdeVector y = {release.theta, release.psi, release.theta_dot, release.psi_dot};
@@ -396,7 +396,6 @@ ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criter
 
 ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
                          std::vector<TracePoint>* trace, double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads) {
-  use_gsl_return_codes();
   if (!(e.L() > 0))
     fail("no room for the counterweight arm: L3/L2 = F l cos(theta_i) - 1 = " + format_significant(e.L(), 4) +
          " <= 0 (eq:Design); raise F or l, or lower theta_i");
@@ -404,6 +403,13 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   if (!(1 - e.mu_b * e.beam_cm() > 0))
     fail("the beam cannot turn: " + std::string(e.parts.beam ? "mu_b c (c its centre of mass from the pivot, in L2) = " : "mu_b (l - 1)/2 = ") +
          format_significant(e.mu_b * e.beam_cm(), 4) + " >= 1, its long arm outweighs the counterweight (eq:DU); lighten the beam or shorten L1");
+  return simulate_shot(dynamics, criterion, settings, trace, trace_dt, unreleased, find_loads);
+}
+
+ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
+                         std::vector<TracePoint>* trace, double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads) {
+  use_gsl_return_codes();
+  const ScaledDesign& e = dynamics.design();
   ShotResult result;
   const double energy_scale = e.energy_drop();
   double energy0 = 0;

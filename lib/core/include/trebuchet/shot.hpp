@@ -10,6 +10,7 @@
 #include "trebuchet/design.hpp"
 #include "trebuchet/dynamics.hpp"
 #include "trebuchet/integrator.hpp"
+#include "trebuchet/machine.hpp"
 #include "trebuchet/quality.hpp"
 
 namespace trebuchet {
@@ -88,6 +89,13 @@ struct TracePoint {
 /// With `find_loads`, the builder's loads (ShotResult::loads) are found: about 10 % of a shot,
 /// which searches that only rank engines save.
 ShotResult simulate_shot(const ScaledDesign& design, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
+                         std::vector<TracePoint>* trace = nullptr, double trace_dt = 0, std::vector<TracePoint>* unreleased = nullptr,
+                         bool find_loads = false);
+
+/// The same for any machine (machine.hpp): the paper's engine is simulate_shot(Dynamics(design), ...)
+/// once the design has room for its counterweight arm and a beam that can turn, which the
+/// overload above checks first.
+ShotResult simulate_shot(const Machine& machine, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
                          std::vector<TracePoint>* trace = nullptr, double trace_dt = 0, std::vector<TracePoint>* unreleased = nullptr,
                          bool find_loads = false);
 

@@ -1,0 +1,50 @@
+// The seam between a machine that throws and the shot that integrates it (shot.hpp). A machine
+// gives its scaled design and the equations of motion of the three phases in the coordinates of
+// State: the beam's angle theta, the counterweight's psi and the sling's phi, scaled as
+// dynamics.hpp says (lengths in L2, masses in M, time in (L2/g)^(1/2), forces in M g). Phase I
+// carries the projectile in the trough, phase II swings it in the sling until the release,
+// phase III goes on without it. The shot finds the lift-off, the release and the forces of
+// eq:F for any machine; the paper's engine of appendix A is Dynamics (dynamics.hpp).
+#pragma once
+
+#include <array>
+
+#include "trebuchet/design.hpp"
+#include "trebuchet/dynamics_types.hpp"
+
+namespace trebuchet {
+
+class Machine {
+ public:
+  virtual ~Machine() = default;
+
+  /// The design the release is measured in: l and mu for Q (eq:Q), Delta U for eps (eq:Aux,
+  /// energy_drop), theta_i and psi_i for the initial state (eq:InitialConditions), the parts'
+  /// friction that may hold a pin, and the pivot's height l cos(theta_i) above the base.
+  virtual const ScaledDesign& design() const = 0;
+
+  /// The initial beam angle [rad].
+  virtual double theta_i() const = 0;
+
+  /// cos phi of the sling in the trough at beam angle theta (0 where it would stand vertical or
+  /// beyond): phase I's states are refused as it nears 0 (ode.hpp).
+  virtual double trough_cos_phi(double theta) const = 0;
+
+  /// Fills phi and phi_dot of a phase-I state from the trough's constraint; returns cos phi.
+  virtual double complete_trough_state(State& state) const = 0;
+
+  /// Accelerations and forces at a state of the given phase.
+  virtual Snapshot snapshot(Phase phase, const State& state) const = 0;
+
+  /// The accelerations (theta, psi, phi) alone, the right-hand side of the ODE; with losses,
+  /// their powers. False where they cannot be found (then `out` is not set). In the trough,
+  /// phi and phi_dot of `state` are not set (the integrator carries theta and psi): they follow
+  /// from theta by the trough's constraint, as in snapshot.
+  virtual bool accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power = nullptr) const = 0;
+
+  /// Whether the machine loses energy other than to its bodies: the shot then integrates the
+  /// work of each loss (Losses).
+  virtual bool dissipates() const = 0;
+};
+
+}  // namespace trebuchet
