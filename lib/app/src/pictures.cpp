@@ -1,13 +1,5 @@
 #include "trebuchet/app/pictures.hpp"
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <iostream>
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -24,28 +16,6 @@ namespace trebuchet {
 namespace {
 
 std::string num(double x) { return format_significant(x, 6); }
-
-// Indices into the trace of the moments the pictures mark.
-struct Moments {
-  std::size_t start = 0, liftoff = 0, peak_reaction = 0, first_extreme = 0, second_extreme = 0, release = 0;
-};
-
-Moments moments_of(const std::vector<TracePoint>& trace) {
-  Moments m;
-  double largest = -1, most = -1e300, least = 1e300;
-  std::size_t most_at = 0, least_at = 0;
-  for (std::size_t i = 0; i < trace.size() && trace[i].phase != Phase::released; ++i) {
-    const Snapshot& s = trace[i].snapshot;
-    if (trace[i].phase == Phase::trough) m.liftoff = i;
-    m.release = i;
-    const double reaction = force_values(s)[pivot_reaction];
-    if (reaction > largest) largest = reaction, m.peak_reaction = i;
-    if (s.pivot_reaction.x > most) most = s.pivot_reaction.x, most_at = i;
-    if (s.pivot_reaction.x < least) least = s.pivot_reaction.x, least_at = i;
-  }
-  m.first_extreme = std::min(most_at, least_at), m.second_extreme = std::max(most_at, least_at);
-  return m;
-}
 
 // The engine at one moment as gnuplot commands: frame, beam, counterweight arm and weight,
 // sling and projectile, to scale in metres on the site (x toward the target, y above the base).
@@ -146,114 +116,6 @@ std::string scene_of(const ShotSettings& settings) {
 }  // namespace
 
 std::vector<std::string> picture_scripts() { return {"engine.gp", "paths.gp", "forces.gp", "energy.gp", "release.gp", "animation.gp"}; }
-
-ShotSeries shot_series(const Engine& engine, const ShotSettings& settings, const Verification& verification) {
-  ShotSeries series;
-  const ScaledDesign d = shot_design(engine, settings);
-  const double g = engine.material.g;
-  const double time_unit = std::sqrt(engine.L2 / g);  // section 3 [s]
-  series.time_unit = time_unit;
-  const Verification& v = series.verification = verification;
-  std::vector<TracePoint>& trace = series.trace;
-  std::vector<TracePoint> unreleased;
-  simulate_shot(d, release_criterion(engine, settings), settings.integrator, &trace, v.t_release / time_unit / 200, &unreleased);
-  const Moments m = moments_of(trace);
-  series.liftoff = m.liftoff, series.peak_reaction = m.peak_reaction, series.first_extreme = m.first_extreme,
-  series.second_extreme = m.second_extreme, series.release = m.release;
-
-  // The flight the shot computed, from the release to its end (the target level, or back at the
-  // release height for Denny's range), in vacuum or through the settings' air.
-  const double A = radians(v.A_deg);
-  const Drag drag = settings.air ? drag_of(*settings.air, engine.m) : Drag{};
-  const double flight_drop = settings.range_from_release ? 0 : v.h - settings.target_level;
-  std::vector<Vec2> path;  // in the frame of the shot (target toward -x), height from the release [m]
-  const auto end = fly({-v.x, 0}, {-v.v * std::cos(A), v.v * std::sin(A)}, flight_drop, drag, g, &path, 201);
-  if (!end) throw Error(ErrorKind::numerical, "the flight drawn did not come down where the shot's did (an internal error; please report it with the command)");
-  for (const Vec2& p : path) series.flight.push_back({-p.x, v.h + p.y});
-  series.flight_time = end->time;
-
-  // Q(t), eps(t), R(t) over phase II, and the running extremes of eq:F.
-  ForceExtremes running;
-  for (std::size_t i = 0; i <= m.release; ++i) running.add(force_values(trace[i].snapshot));
-  series.final_extremes = running.max;
-  running = ForceExtremes{};
-  std::vector<TracePoint> phase_two(trace.begin(), trace.begin() + m.release + 1);
-  phase_two.insert(phase_two.end(), unreleased.begin(), unreleased.end());
-  // Each moment as a release (shot.hpp), so that Q is the Q_n the shot maximised and R the
-  // range at level 0.
-  for (std::size_t i = 0; i < phase_two.size(); ++i) {
-    const TracePoint& p = phase_two[i];
-    const ForceExtremes before = running;
-    running.add(force_values(p.snapshot));
-    if (p.phase != Phase::lifted) continue;
-    const ReleasePoint r = release_point(d, settings.criterion, p.t, p.state, p.snapshot, before);
-    if (!(r.range > 0)) continue;
-    if (i == m.release) series.release_row = series.phase_two.size();
-    series.phase_two.push_back({p.t * time_unit, r.quality, r.efficiency, r.range, running.max});
-  }
-  return series;
-}
-
-SitePoint ShotSeries::stone_at(double after) const {
-  const double k = std::clamp(after / flight_time, 0.0, 1.0) * static_cast<double>(flight.size() - 1);
-  const std::size_t i = std::min(static_cast<std::size_t>(k), flight.size() - 2);
-  const double f = k - static_cast<double>(i);
-  return SitePoint{flight[i].x + f * (flight[i + 1].x - flight[i].x), flight[i].y + f * (flight[i + 1].y - flight[i].y)};
-}
-
-nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& engine) {
-  const double Mg = engine.M * engine.material.g;  // [N]: the scaled forces' unit
-  const double energy_unit = Mg * engine.L2;        // [J], and the beam moment's [N m]
-  using json = nlohmann::ordered_json;
-  json frames = json::object();
-  // After the release the sling and projectile are gone: their values are null.
-  const char* columns[] = {"t", "theta_deg", "psi_deg", "phi_deg", "hinge_x", "hinge_y", "counterweight_x", "counterweight_y", "tip_x", "tip_y",
-                           "projectile_x", "projectile_y", "FS_perp", "sling_tension", "FR", "FRh", "FRv", "FH", "normal", "beam_moment",
-                           "E_counterweight", "E_beam", "E_projectile_kinetic", "E_projectile_potential", "W_lost"};
-  for (const char* column : columns) frames[column] = json::array();
-  frames["phase"] = json::array();
-  for (const TracePoint& p : series.trace) {
-    const Snapshot& s = p.snapshot;
-    const bool gone = p.phase == Phase::released;
-    const SitePoint hinge = site_point(s.hinge, engine), cw = site_point(s.counterweight, engine), tip = site_point(s.tip, engine),
-                    pr = site_point(s.projectile, engine);
-    double lost = 0;  // the work of friction and drag so far
-    for (double w : p.work) lost += w;
-    const std::optional<double> values[] = {p.t * series.time_unit, degrees(p.state.theta), degrees(p.state.psi),
-                                            gone ? std::nullopt : std::optional(degrees(p.state.phi)), hinge.x, hinge.y, cw.x, cw.y, tip.x, tip.y,
-                                            gone ? std::nullopt : std::optional(pr.x), gone ? std::nullopt : std::optional(pr.y),
-                                            s.sling_perpendicular * Mg, gone ? std::nullopt : std::optional(s.sling_tension * Mg),
-                                            force_values(s)[pivot_reaction] * Mg, s.pivot_reaction.x * Mg, s.pivot_reaction.y * Mg,
-                                            std::hypot(s.hinge_force.x, s.hinge_force.y) * Mg, s.normal_force * Mg, s.beam_moment * energy_unit,
-                                            s.energies.counterweight * energy_unit, s.energies.beam * energy_unit,
-                                            s.energies.projectile_kinetic * energy_unit, s.energies.projectile_potential * energy_unit,
-                                            lost * energy_unit};
-    for (std::size_t k = 0; k < std::size(columns); ++k) frames[columns[k]].push_back(values[k] ? json(*values[k]) : json(nullptr));
-    frames["phase"].push_back(p.phase == Phase::trough ? "I" : p.phase == Phase::lifted ? "II" : "III");
-  }
-  json flight = {{"x", json::array()}, {"y", json::array()}, {"time", series.flight_time}};
-  for (const SitePoint& p : series.flight) flight["x"].push_back(p.x), flight["y"].push_back(p.y);
-  // Phase II as releases, each over its value at the release (as release.svg draws them).
-  const ShotSeries::Moment& at = series.phase_two[series.release_row];
-  json phase_two = json::object();
-  for (const char* column : {"t", "Q", "eps", "R", "FS_perp", "FR", "FRh_max", "FRh_min"}) phase_two[column] = json::array();
-  for (const ShotSeries::Moment& row : series.phase_two) {
-    phase_two["t"].push_back(row.t);
-    phase_two["Q"].push_back(row.quality / at.quality);
-    phase_two["eps"].push_back(row.efficiency / at.efficiency);
-    phase_two["R"].push_back(row.range / at.range);
-    const char* extremes[] = {"FS_perp", "FR", "FRh_max", "FRh_min"};
-    for (int k = 0; k < force_count; ++k) phase_two[extremes[k]].push_back(row.running_max[k] / series.final_extremes[k]);
-  }
-  return {{"pivot_height", pivot_height(engine)},
-          {"energy_drop", potential_energy_drop(engine)},
-          {"moments", {{"liftoff", series.liftoff}, {"t1", series.first_extreme}, {"tm", series.peak_reaction}, {"t2", series.second_extreme},
-                       {"release", series.release}}},
-          {"frames", frames},
-          {"flight", flight},
-          {"phase_two", phase_two},
-          {"release_row", series.release_row}};
-}
 
 std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings, const Verification& verification,
                                        const nlohmann::ordered_json& report, UnitSystem units) {
@@ -526,47 +388,6 @@ std::vector<PictureFile> histogram_pictures(const MonteCarloSummary& summary, co
   panel(2, "energy at the target T [kJ]", 1e3, 1);
   gp << "unset multiplot\n";
   return {{"histogram.dat", data.str()}, {"histogram.gp", gp.str()}};
-}
-
-namespace {
-
-// Runs gnuplot on `script` inside `folder`; an error names what failed and how to fix it.
-void run_gnuplot(const std::filesystem::path& folder, const std::string& script) {
-  // What is printed so far must not be copied into the child, whose freopen would flush it again.
-  std::cout.flush();
-  std::fflush(stdout);
-  const pid_t child = fork();
-  if (child == 0) {
-    if (chdir(folder.c_str()) == 0 && std::freopen("gnuplot.log", "a", stderr) && std::freopen("gnuplot.log", "a", stdout))
-      execlp("gnuplot", "gnuplot", script.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  int status = 0;
-  if (child < 0 || waitpid(child, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    // The folder is removed with the failure, so gnuplot's last words go into the message.
-    std::ifstream log(folder / "gnuplot.log");
-    std::string said((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
-    if (said.size() > 400) said = "..." + said.substr(said.size() - 400);
-    throw Error(ErrorKind::usage, "{{plot}}: gnuplot failed on " + script +
-                                      (child >= 0 && WIFEXITED(status) && WEXITSTATUS(status) == 127 ? " (gnuplot is not installed; apt-get install gnuplot-nox)"
-                                                                                                     : said.empty() ? "" : ": " + said));
-  }
-}
-
-}  // namespace
-
-void write_picture_folder(const std::string& dir, const std::vector<PictureFile>& files, const std::vector<std::string>& scripts,
-                          const std::vector<std::string>& inputs) {
-  // Drawn in a folder of its own beside `dir`, and moved in only when every picture is drawn.
-  PendingOutput output(dir, "plot", true, inputs);
-  const std::filesystem::path folder(output.temporary());
-  for (const PictureFile& file : files) {
-    std::ofstream out(folder / file.name);
-    out << file.text;
-    if (!out) throw Error(ErrorKind::usage, "{{plot}}: cannot write " + (std::filesystem::path(dir) / file.name).string() + "; give a folder you can write to");
-  }
-  for (const std::string& script : scripts) run_gnuplot(folder, script);
-  output.commit();
 }
 
 }  // namespace trebuchet
