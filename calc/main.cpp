@@ -16,6 +16,7 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/app/report.hpp"
 #include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/design_record.hpp"
 #include "trebuchet/app/spreadsheet.hpp"
 #include "trebuchet/app/fields.hpp"
 #include "trebuchet/app/request.hpp"

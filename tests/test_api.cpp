@@ -5,6 +5,10 @@
 
 #include "trebuchet/app/api.hpp"
 #include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/design_input.hpp"
+#include "trebuchet/app/design_record.hpp"
+#include "trebuchet/app/search_records.hpp"
+#include "trebuchet/app/shot_record.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/scaling_table.hpp"
 #include "trebuchet/verification.hpp"

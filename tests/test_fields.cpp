@@ -9,6 +9,10 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/app/fields.hpp"
 #include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/design_input.hpp"
+#include "trebuchet/app/design_record.hpp"
+#include "trebuchet/app/search_records.hpp"
+#include "trebuchet/app/shot_record.hpp"
 
 using namespace trebuchet;
 

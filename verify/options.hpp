@@ -15,6 +15,9 @@
 #include "trebuchet/verification.hpp"
 #include "trebuchet/app/requests.hpp"
 #include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/design_input.hpp"
+#include "trebuchet/app/search_records.hpp"
+#include "trebuchet/app/shot_record.hpp"
 #include "trebuchet/app/verifier.hpp"
 
 namespace trebuchet::verify {

@@ -10,6 +10,10 @@
 #include "trebuchet/app/batch.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/design_input.hpp"
+#include "trebuchet/app/design_record.hpp"
+#include "trebuchet/app/search_records.hpp"
+#include "trebuchet/app/shot_record.hpp"
 #include "trebuchet/app/text_input.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {

@@ -10,6 +10,10 @@
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/design_input.hpp"
+#include "trebuchet/app/design_record.hpp"
+#include "trebuchet/app/search_records.hpp"
+#include "trebuchet/app/shot_record.hpp"
 #include "trebuchet/app/text_input.hpp"
 #include "trebuchet/app/verifier.hpp"
 

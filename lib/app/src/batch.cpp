@@ -8,6 +8,7 @@
 #include "trebuchet/app/csv.hpp"
 #include "trebuchet/app/request.hpp"
 #include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/design_record.hpp"
 #include "trebuchet/app/units.hpp"
 
 namespace trebuchet {

@@ -1,12 +1,13 @@
 #include "trebuchet/app/report.hpp"
 
-#include "trebuchet/app/fields.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "trebuchet/error.hpp"
+#include "trebuchet/app/design_record.hpp"
+#include "trebuchet/app/fields.hpp"
+#include "trebuchet/app/shot_record.hpp"
 #include "trebuchet/app/units.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/quality.hpp"

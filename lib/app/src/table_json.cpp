@@ -10,6 +10,7 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/app/names.hpp"
+#include "trebuchet/app/design_input.hpp"
 #include "trebuchet/app/schema.hpp"
 #include "trebuchet/app/text_input.hpp"
 

@@ -11,6 +11,7 @@
 #include "trebuchet/app/pictures.hpp"
 #include "trebuchet/app/report.hpp"
 #include "trebuchet/app/csv.hpp"
+#include "trebuchet/app/shot_record.hpp"
 #include "trebuchet/app/output_files.hpp"
 #include "trebuchet/app/text_input.hpp"
 

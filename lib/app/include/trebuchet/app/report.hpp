@@ -9,6 +9,10 @@
 
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/app/schema.hpp"
+#include "trebuchet/calibration.hpp"
+#include "trebuchet/completion.hpp"
+#include "trebuchet/optimizer.hpp"
+#include "trebuchet/verification.hpp"
 #include "trebuchet/app/units.hpp"
 #include "trebuchet/shot.hpp"
 #include "trebuchet/verification.hpp"

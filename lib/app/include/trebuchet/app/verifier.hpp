@@ -15,6 +15,7 @@
 #include "trebuchet/verification.hpp"
 #include "trebuchet/app/csv.hpp"
 #include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/design_input.hpp"
 #include "trebuchet/app/units.hpp"
 
 namespace trebuchet {

@@ -1,0 +1,77 @@
+// Designs read back: a JSON object, array or CSV rows, as users write them or as any of the
+// programs' records carry them, into an engine with the capacity it claims.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <istream>
+
+#include "trebuchet/capacity.hpp"
+#include "trebuchet/engine.hpp"
+#include "trebuchet/app/fields.hpp"
+#include "trebuchet/app/units.hpp"
+
+namespace trebuchet {
+
+/// An engine read from JSON, with the capacity it claims when it carries one.
+struct EngineRecord {
+  Engine engine;
+  std::optional<Capacity> capacity;  ///< "R" and "T", both or neither (level 0)
+  bool mb_from_D = false;            ///< mb was not given: it follows from D and the wood (eq:BeamMass)
+  nlohmann::json passed = nlohmann::json::object();  ///< the keys no reader knows, as given: an answer names them
+};
+
+/// The parts as built that do not depend on the engine's other values (complete's, CompletionRequest::parts):
+/// the pins' friction, the counterweight's inertia, the trough's friction and the rope, from the values given.
+EngineParts independent_parts(const DesignValues& values);
+
+/// The value of `key` in a JSON object: an SI number, or a string with a unit ("6.13m");
+/// empty when absent or null. Messages name it "where.key" (where empty: "{{key}}"). Throws
+/// Error(bad_number | unknown_unit) for a value of another kind.
+std::optional<double> read_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension, const std::string& where);
+
+/// The values of a JSON design object, each an SI number or a string with a unit ("6.13m"), under
+/// its key or an alias (input_fields). A key that the programs write passes silently; a key near
+/// an input's name is refused with that name (near_miss); any other key is put in `passed`.
+/// Throws Error(bad_number | unknown_unit | usage) naming the key.
+DesignValues read_design_values(const nlohmann::json& object, const std::string& where, nlohmann::json* passed = nullptr);
+
+/// Refuses `key`, which no reader of `known` takes, when it is near one of them:
+/// 'where: unknown key "theta_i"; did you mean "theta_i_deg"?' (Error(usage)).
+void refuse_near_miss(const std::string& key, const std::vector<std::string>& known, const std::string& where);
+
+/// The engine of a design's values: L3, or F = (L2 + L3)/H, theta_i 30 deg unless given, the
+/// material of eq:kMkD where not given; checked (check_engine). `where` names the design in
+/// messages ("design[2]"; empty: a program's options, named "{{L4}}" as error.hpp says).
+EngineRecord engine_record(const DesignValues& values, const std::string& where);
+
+/// Reads an engine: L1, L2, L4, M, m, mb; L3, or F = (L2 + L3)/H; optional theta_i_deg
+/// (default 30), D, the material keys (default eq:kMkD's) and R with T. Values are SI numbers
+/// or strings with a unit ("6.13m"); other keys are ignored, so that every writer's output
+/// reads back. `where` names the object in messages ("design[2]"; empty: the command line,
+/// whose keys are named as flags, "--L1"). Throws Error(bad_number | unknown_unit | usage)
+/// naming the key and the fix, and checks the engine (check_engine).
+EngineRecord read_engine(const nlohmann::json& object, const std::string& where);
+
+/// Designs read from CSV (docs/csv.md), such as the calculator's batch output: one design a row.
+struct DesignRows {
+  std::vector<std::string> passed_columns;  ///< columns that are no engine key, e.g. site, in order
+  struct Row {
+    int line = 0;                      ///< line number in the input
+    nlohmann::json design;             ///< the engine keys as strings with units, for read_engine
+    std::vector<std::string> passed;   ///< the pass-through cells
+    std::string error;                 ///< a row that cannot be read, or an "error" cell written upstream
+  };
+  std::vector<Row> rows;
+};
+
+/// Reads CSV text: the engine's keys (with units in the header, "L1_m", or in the cells), R and
+/// T as the capacity to check, theta for theta_i_deg. The calculator's other columns (X, Y, Lb,
+/// H, l, l4, L, mu, mu_b, K, DeltaU, amplification, branch, warnings) follow from the engine and
+/// are dropped; any other column passes through. Throws Error(usage) for an input without a header.
+DesignRows read_design_rows(std::istream& input, const std::string& source);
+
+}  // namespace trebuchet

@@ -1,0 +1,145 @@
+#include "trebuchet/app/shot_record.hpp"
+
+#include <cmath>
+
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/app/csv.hpp"
+#include "trebuchet/app/names.hpp"
+#include "trebuchet/app/report.hpp"
+
+namespace trebuchet {
+
+nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings& settings) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  if (settings.air) {
+    const Air& air = *settings.air;
+    out["air"] = {{"density", air.density},
+                  {"drag_coefficient", air.drag_coefficient ? nlohmann::ordered_json(*air.drag_coefficient) : nlohmann::ordered_json("Cd(Re)")},
+                  {"projectile_density", air.projectile_density},
+                  {"projectile_diameter", sphere_diameter(engine.m, air.projectile_density)},
+                  {"wind", air.wind}};
+    if (settings.drag_in_sling) out["air"]["drag_in_sling"] = true;  // the air acts before the release too
+  } else {
+    out["air"] = "vacuum";
+  }
+  out["range_from"] = settings.range_from_release ? "release" : "pivot";
+  out["g"] = engine.material.g;
+  out["theta_i_deg"] = engine.theta_i_deg;
+  out["F"] = arm_fraction(engine);
+  out["release"] = release_name(settings.criterion.release);
+  out["n"] = settings.criterion.n;
+  out["target_level"] = settings.target_level;
+  return out;
+}
+
+namespace {
+
+// The figures of a shot, in the order of the JSON and CSV records. Throws Error(numerical) for
+// one that is not finite.
+std::vector<Field> verification_fields(const Verification& v) {
+  std::vector<Field> fields = {
+      {"R", v.capacity.R, "m"}, {"T", v.capacity.T, "J"}, {"R_vacuum", v.R_vacuum, "m"}, {"T_vacuum", v.T_vacuum, "J"}, {"eps", v.eps}, {"Q", v.Q}, {"force_factor", v.force_factor},
+      {"v", v.v, "m_s"}, {"h", v.h, "m"}, {"x", v.x, "m"}, {"A_deg", v.A_deg}, {"t_release", v.t_release, "s"},
+      {"t_liftoff", v.t_liftoff, "s"}, {"FS_perp_mg", v.FS_perp_mg}, {"FR_Mg", v.FR_Mg}, {"dFRh_Mg", v.dFRh_Mg},
+      {"FS_perp", v.FS_perp, "N"}, {"FR", v.FR, "N"}, {"dFRh", v.dFRh, "N"}};
+  // The builder's loads (verification.hpp), each with its time; the beam's strength, 0 without a beam.
+  const char* load_names[load_count][2] = {{"sling_tension", "t_sling_tension"}, {"hinge_force", "t_hinge_force"},
+                                           {"pivot_force", "t_pivot_force"}, {"beam_moment", "t_beam_moment"}};
+  for (int k = 0; k < load_count; ++k) {
+    fields.push_back({load_names[k][0], v.loads[k].value, k == beam_moment_load ? "N_m" : "N"});
+    fields.push_back({load_names[k][1], v.loads[k].t, "s"});
+  }
+  const BeamStrength beam = v.beam.value_or(BeamStrength{});
+  fields.insert(fields.end(), {{"beam_D", beam.D, "m"}, {"beta2_implied", beam.beta2}, {"strain_at_rest", beam.strain_at_rest},
+                               {"strain_peak", beam.strain_peak}, {"stress_at_rest", beam.stress_at_rest, "Pa"},
+                               {"stress_peak", beam.stress_peak, "Pa"}, {"rupture_margin", beam.margin}, {"energy_drift", v.energy_drift}});
+  for (const Field& field : fields)
+    if (!std::isfinite(field.value))
+      throw Error(ErrorKind::numerical, std::string("the result ") + field.key + " is not finite; tighten {{rtol}}");
+  return fields;
+}
+
+// Where Delta U went by the release (Verification::EnergyBudget), and the air in flight: the
+// last CSV columns, so that the columns before them keep their places; in JSON, "energy".
+std::vector<Field> energy_fields(const Verification& v) {
+  const Verification::EnergyBudget& e = v.energy;
+  std::vector<Field> fields = {{"energy_projectile", e.projectile, "J"}, {"energy_engine", e.engine, "J"},
+                               {"loss_axle", e.losses[axle_loss], "J"}, {"loss_hinge", e.losses[hinge_loss], "J"},
+                               {"loss_trough", e.losses[trough_loss], "J"}, {"loss_sling_drag", e.losses[projectile_drag_loss], "J"},
+                               {"loss_rope_drag", e.losses[rope_drag_loss], "J"}, {"loss_flight_drag", e.flight_drag, "J"}};
+  for (const Field& field : fields)
+    if (!std::isfinite(field.value)) throw Error(ErrorKind::numerical, std::string("the result ") + field.key + " is not finite; tighten {{rtol}}");
+  return fields;
+}
+
+// The check against a predicted capacity, as CSV fields (empty when there is none).
+std::vector<Field> check_fields(const std::optional<CapacityCheck>& check) {
+  const CapacityCheck c = check.value_or(CapacityCheck{});
+  return {{"predicted_R", c.predicted.R, "m"}, {"predicted_T", c.predicted.T, "J"}, {"deviation_R", c.deviation_R}, {"deviation_T", c.deviation_T}};
+}
+
+}  // namespace
+
+std::vector<std::string> verification_csv_header() {
+  std::vector<std::string> header;
+  const Verification v{};
+  for (const auto& fields : {engine_fields(Engine{}), verification_fields(v), check_fields(std::nullopt)})
+    for (const Field& field : fields) header.push_back(csv_column(field));
+  header.insert(header.end(), {"pass", "air", "release", "n", "target_level_m", "warnings", "notes"});
+  for (const Field& field : energy_fields(v)) header.push_back(csv_column(field));
+  for (const std::string& column : part_columns()) header.push_back(column);
+  header.push_back("psi_i_deg");
+  return header;
+}
+
+std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSettings& settings, const Verification& v,
+                                              const std::optional<CapacityCheck>& check, int digits) {
+  std::vector<Field> engine_part = engine_fields(engine);
+  require_finite(engine_part);
+  std::vector<std::string> row;
+  for (const auto& fields : {engine_part, verification_fields(v)})
+    for (const Field& field : fields) row.push_back(csv_number(field.value, digits));
+  for (const Field& field : check_fields(check)) row.push_back(check ? csv_number(field.value, digits) : "");
+  const nlohmann::ordered_json assumed = assumptions_json(engine, settings);
+  const std::string air = settings.air ? describe_air(*settings.air, engine.m) : "vacuum";
+  row.insert(row.end(), {check ? (check->pass ? "yes" : "no") : "", air, assumed["release"].get<std::string>(),
+                         csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), join(v.warnings, "; "), join(v.notes, "; ")});
+  for (const Field& field : energy_fields(v)) row.push_back(csv_number(field.value, digits));
+  for (const std::string& cell : part_cells(engine, digits)) row.push_back(cell);
+  row.push_back(csv_number(engine.psi_i_deg, digits));
+  return row;
+}
+
+std::vector<std::string> verification_output_names() {
+  std::vector<std::string> names = verification_csv_header();
+  for (const Field& field : verification_fields(Verification{})) names.push_back(field.key);
+  names.insert(names.end(), {"predicted", "deviation", "tolerance", "engine", "assumptions", "error", "exit_code", "energy"});
+  return names;
+}
+
+void require_finite(const Verification& v) {
+  verification_fields(v);
+  energy_fields(v);
+}
+
+nlohmann::ordered_json verification_json(const Verification& v, const std::optional<CapacityCheck>& check) {
+  nlohmann::ordered_json out;
+  for (const Field& field : verification_fields(v)) out[field.key] = field.value;
+  const Verification::EnergyBudget& e = v.energy;
+  out["energy"] = {{"delta_U", e.delta_U}, {"projectile", e.projectile}, {"engine", e.engine},
+                   {"losses", {{"axle", e.losses[axle_loss]}, {"hinge", e.losses[hinge_loss]}, {"trough", e.losses[trough_loss]},
+                               {"sling_drag", e.losses[projectile_drag_loss]}, {"rope_drag", e.losses[rope_drag_loss]}}},
+                   {"flight_drag", e.flight_drag}};
+  out["warnings"] = v.warnings;
+  out["notes"] = v.notes;
+  if (check) {
+    out["predicted"] = {{"R", check->predicted.R}, {"T", check->predicted.T}};
+    out["deviation"] = {{"R", check->deviation_R}, {"T", check->deviation_T}};
+    out["tolerance"] = check->tolerance;
+    out["pass"] = check->pass;
+  }
+  return out;
+}
+
+}  // namespace trebuchet
