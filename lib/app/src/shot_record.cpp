@@ -2,11 +2,11 @@
 
 #include <cmath>
 
+#include "trebuchet/air.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/app/csv.hpp"
 #include "trebuchet/app/names.hpp"
-#include "trebuchet/app/report.hpp"
 
 namespace trebuchet {
 
