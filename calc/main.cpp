@@ -49,19 +49,20 @@ struct Options {
 Material material_from(const Options& options, const Material& reference) {
   Material material = reference;
   if (!options.beta2.empty()) material.beta2 = parse_positive(options.beta2, UnitDimension::dimensionless, "--beta2");
-  if (!options.youngs_modulus.empty())
-    material.youngs_modulus = parse_positive(options.youngs_modulus, UnitDimension::pressure, "--youngs-modulus");
-  if (!options.wood_density.empty())
-    material.wood_density = parse_positive(options.wood_density, UnitDimension::density, "--wood-density");
+  if (!options.youngs_modulus.empty()) material.youngs_modulus = parse_positive(options.youngs_modulus, UnitDimension::pressure, "--youngs-modulus");
+  if (!options.wood_density.empty()) material.wood_density = parse_positive(options.wood_density, UnitDimension::density, "--wood-density");
   if (!options.g.empty()) material.g = parse_positive(options.g, UnitDimension::acceleration, "--g");
   check_material(material);  // a material beyond the ordinary is named as such, not as a capacity out of range
   return material;
 }
 
 void print(const OptimalEngine& design, const std::string& format, int digits, UnitSystem units) {
-  if (format == "json") std::cout << pretty_json(design_json(design));
-  else if (format == "csv") std::cout << csv_line(design_csv_header()) << design_csv_text(design, digits) << "\n";
-  else std::cout << design_table(design, units);
+  if (format == "json")
+    std::cout << pretty_json(design_json(design));
+  else if (format == "csv")
+    std::cout << csv_line(design_csv_header()) << design_csv_text(design, digits) << "\n";
+  else
+    std::cout << design_table(design, units);
 }
 
 // The table's row of a given.
@@ -79,8 +80,7 @@ int run(const Options& options, bool format_given) {
   const int digits = options.digits.empty() ? default_csv_digits : parse_digits(options.digits, "--digits");
   const UnitSystem units = parse_unit_system(options.units, "--units");  // read first, whatever the mode
   if (!options.spreadsheet.empty()) refuse_output_over_input(options.spreadsheet, "spreadsheet", {options.table_file, options.batch});
-  const ScalingTable table_from_file =
-      options.table_file.empty() ? ScalingTable{} : load_scaling_table(options.table_file);
+  const ScalingTable table_from_file = options.table_file.empty() ? ScalingTable{} : load_scaling_table(options.table_file);
   const ScalingTable& table = options.table_file.empty() ? builtin_scaling_table() : table_from_file;
 
   DesignRequest request;
@@ -99,7 +99,8 @@ int run(const Options& options, bool format_given) {
     if (!options.batch.empty())
       throw Error(ErrorKind::usage, "--spreadsheet writes the calculator as a workbook and --batch designs the rows of a file; give one of them");
     if (format_given || !options.digits.empty())
-      throw Error(ErrorKind::usage, std::string(format_given ? "--format" : "--digits") + " sets what is printed; --spreadsheet writes an .xlsx workbook, drop it");
+      throw Error(ErrorKind::usage,
+                  std::string(format_given ? "--format" : "--digits") + " sets what is printed; --spreadsheet writes an .xlsx workbook, drop it");
     // The workbook opens on the paper's examples, or on the givens: R and T on the capacity
     // sheet, R and another on the sheet for R and one parameter, any other pair on the last.
     SpreadsheetInputs inputs;
@@ -113,7 +114,8 @@ int run(const Options& options, bool format_given) {
       DesignRequest& sheet = has_R && givens[1].quantity == Quantity::T ? inputs.capacity : has_R ? inputs.range_and_one : inputs.any_pair;
       sheet.first = givens[0], sheet.second = givens[1];
     } else if (!givens.empty()) {
-      throw Error(ErrorKind::given_count, "--spreadsheet opens on the paper's examples, or on exactly two givens; found " + std::to_string(givens.size()));
+      throw Error(ErrorKind::given_count,
+                  "--spreadsheet opens on the paper's examples, or on exactly two givens; found " + std::to_string(givens.size()));
     }
     write_spreadsheet(table, inputs, options.spreadsheet);
     std::cout << "wrote " << options.spreadsheet << ": the calculator as a workbook with live formulas (docs/spreadsheet.md)\n";
@@ -121,8 +123,8 @@ int run(const Options& options, bool format_given) {
   }
   if (!options.batch.empty()) {
     if (!givens.empty())
-      throw Error(ErrorKind::given_count, "--batch takes the givens from its file; drop --" +
-                                              std::string(quantity_name(givens.front().quantity)) + " from the command line");
+      throw Error(ErrorKind::given_count,
+                  "--batch takes the givens from its file; drop --" + std::string(quantity_name(givens.front().quantity)) + " from the command line");
     std::ifstream file;
     if (options.batch != "-") {
       std::error_code error;
@@ -153,12 +155,15 @@ int run(const Options& options, bool format_given) {
         [&](const BatchRow& row) {
           if (progress) progress(++rows_done, 0);
           // One write a message: the error stream is unbuffered.
-          if (row.error) std::cerr << message_start() + ("trebuchet-calc: line " + std::to_string(row.line) + ": " + row.error->message(option_word) + "\n");
+          if (row.error)
+            std::cerr << message_start() + ("trebuchet-calc: line " + std::to_string(row.line) + ": " + row.error->message(option_word) + "\n");
           if (json) {
             nlohmann::ordered_json out = {{"line", row.line}};
             for (std::size_t k = 0; k < passed_columns.size(); ++k) out[passed_columns[k]] = row.passed[k];
-            if (row.design) out.update(design_json(in_option_words(*row.design)));
-            else out.update({{"error", row.error->message(option_word)}, {"exit_code", exit_code(Program::calc, row.error->kind())}});
+            if (row.design)
+              out.update(design_json(in_option_words(*row.design)));
+            else
+              out.update({{"error", row.error->message(option_word)}, {"exit_code", exit_code(Program::calc, row.error->kind())}});
             rows.push_back(out);
             return;
           }
@@ -186,7 +191,8 @@ int run(const Options& options, bool format_given) {
   if (givens.size() != 2) {
     std::string flags;
     for (Quantity quantity : all_quantities) flags += std::string(flags.empty() ? "" : " ") + given_field(quantity).flag;
-    throw Error(ErrorKind::given_count, "found " + std::to_string(givens.size()) + " given(s); give exactly two of " + flags + ", e.g. --R 150m --m 50kg");
+    throw Error(ErrorKind::given_count,
+                "found " + std::to_string(givens.size()) + " given(s); give exactly two of " + flags + ", e.g. --R 150m --m 50kg");
   }
   request.first = givens[0];
   request.second = givens[1];
@@ -215,18 +221,23 @@ int main(int argc, char** argv) {
   app.add_option(flag(&V::F), options.F, "counterweight arm fraction (L2+L3)/H: 1 or 2/3")->capture_default_str();
   app.add_option("--branch", options.branch, "auto, lower or upper (two optima for 0.30 < X < 0.40)")->capture_default_str();
   for (auto member : {&V::beta2, &V::youngs_modulus, &V::wood_density, &V::g}) {
-    std::string* slot = member == &V::beta2 ? &options.beta2 : member == &V::youngs_modulus ? &options.youngs_modulus
-                      : member == &V::wood_density ? &options.wood_density : &options.g;
+    std::string* slot = member == &V::beta2 ? &options.beta2
+        : member == &V::youngs_modulus      ? &options.youngs_modulus
+        : member == &V::wood_density        ? &options.wood_density
+                                            : &options.g;
     app.add_option(flag(member), *slot, option_help(field_of(member)));
   }
   app.add_flag("--extrapolate", options.extrapolate, "allow X outside the table's intervals, with a warning");
   app.add_option("--scale", options.scale, "print the same design scaled by this factor (a model)");
   app.add_option("--format", options.format, "table, csv or json")->capture_default_str();
-  app.add_option("--units", options.units, "si or imperial: how the table prints values (imperial: ft, lb, ft·lbf, with SI beside; JSON and CSV stay SI)")
+  app.add_option("--units", options.units,
+                 "si or imperial: how the table prints values (imperial: ft, lb, ft·lbf, with SI beside; JSON and CSV stay SI)")
       ->capture_default_str();
-  app.add_option("--batch", options.batch, "CSV file of requests (- for stdin): the header names two givens, other columns pass through (docs/csv.md)");
+  app.add_option("--batch", options.batch,
+                 "CSV file of requests (- for stdin): the header names two givens, other columns pass through (docs/csv.md)");
   app.add_option("--digits", options.digits, "significant digits of CSV numbers (default " + std::to_string(default_csv_digits) + "; 17: exact)");
-  app.add_option("--spreadsheet", options.spreadsheet, "write the calculator as a workbook with live formulas (.xlsx), opened on the paper's examples or on the givens");
+  app.add_option("--spreadsheet", options.spreadsheet,
+                 "write the calculator as a workbook with live formulas (.xlsx), opened on the paper's examples or on the givens");
   app.add_option("--table", options.table_file, "constants file in the schema of data/cpnc.json");
 
   return run_program(app, Program::calc, argc, argv, [&] { return run(options, app.count("--format") > 0); });

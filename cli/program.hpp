@@ -77,9 +77,11 @@ inline const char* message_start() { return isatty(STDERR_FILENO) ? "\r\033[K" :
 /// What --version prints: the program, its version and the commit it is built from, and how
 /// to cite it with the paper whose physics and tables it implements.
 inline std::string version_text(const std::string& program) {
-  return program + " " TREBUCHET_VERSION " (commit " TREBUCHET_COMMIT ")\n"
-         "To cite: E. Horsdal, \"The swinging counterweight trebuchet - on scaling and optimization\"; computed with trebuchet " TREBUCHET_VERSION
-         ", commit " TREBUCHET_COMMIT ".";
+  return program +
+      " " TREBUCHET_VERSION " (commit " TREBUCHET_COMMIT
+      ")\n"
+      "To cite: E. Horsdal, \"The swinging counterweight trebuchet - on scaling and optimization\"; computed with trebuchet " TREBUCHET_VERSION
+      ", commit " TREBUCHET_COMMIT ".";
 }
 
 /// The first option of `app` or its parsed subcommands that was given an empty value
@@ -103,7 +105,8 @@ inline std::string did_you_mean(const CLI::App& app, std::string_view word) {
   std::string bare(word);
   bare.erase(0, bare.find_first_not_of('-'));
   // A value ("150m", "x") is not taken for a misspelt name.
-  const bool letters = std::all_of(bare.begin(), bare.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '-' || c == '_'; });
+  const bool letters = std::all_of(bare.begin(), bare.end(),
+                                   [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '-' || c == '_'; });
   if (bare.empty() || !letters || (!as_option && bare.size() < 3)) return "";
   std::vector<std::string> subcommands, options;
   std::vector<const CLI::App*> apps{&app};
@@ -136,17 +139,19 @@ inline std::string did_you_mean(const CLI::App& app, std::string_view word) {
 inline std::vector<std::string> with_units_joined(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
   auto is_number = [](std::string_view text) {
-    return !text.empty() && (std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '.' ||
-                             ((text[0] == '-' || text[0] == '+') && text.size() > 1 && std::isdigit(static_cast<unsigned char>(text[1]))));
+    return !text.empty() &&
+        (std::isdigit(static_cast<unsigned char>(text[0])) || text[0] == '.' ||
+         ((text[0] == '-' || text[0] == '+') && text.size() > 1 && std::isdigit(static_cast<unsigned char>(text[1]))));
   };
   for (std::size_t i = 1; i < args.size(); ++i) {
     if (args[i - 1] == "--") break;
     if (!is_unit_word(args[i])) continue;
     const std::string& before = args[i - 1];
     const auto equals = before.find('=');
-    const bool option_equals_number = before.rfind("--", 0) == 0 && equals != std::string::npos && is_number(std::string_view(before).substr(equals + 1));
+    const bool option_equals_number = before.rfind("--", 0) == 0 && equals != std::string::npos &&
+        is_number(std::string_view(before).substr(equals + 1));
     const bool option_then_number = i >= 2 && is_number(before) && args[i - 2].rfind("--", 0) == 0 && args[i - 2] != "--" &&
-                                    args[i - 2].find('=') == std::string::npos;
+        args[i - 2].find('=') == std::string::npos;
     if (option_equals_number || option_then_number) {
       args[i - 1] += " " + args[i];
       args.erase(args.begin() + static_cast<std::ptrdiff_t>(i));

@@ -4,7 +4,7 @@
 #   bash scripts/install-deps.sh          everything: the programs, their tests and the browser page
 #   bash scripts/install-deps.sh native   the programs and their tests only (scripts/quickstart.sh)
 # The page's part also enables Debian's source packages (GSL for WebAssembly is built from
-# Debian's source of it) and installs the browser tests' one npm package (tests/web).
+# Debian's source of it) and installs the page's npm packages (tests/web: playwright-core, ESLint).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scope=${1:-all}
@@ -25,6 +25,7 @@ packages=(
   librsvg2-bin      # rsvg-convert: SVG pictures rendered to PNG to look at (scripts/figures.sh)
   units             # GNU units: tests/test_units.cpp checks every conversion factor against it
   clang-14 libclang-rt-14-dev  # libFuzzer for the fuzz targets of tests/fuzz
+  clang-format-14              # the C++ layout CI checks (scripts/lint.sh, .clang-format)
   parallel slurm-wlm munge     # tab:CPNC derived in shards under GNU parallel and Slurm (tests/scale)
 )
 if [ "$scope" != native ]; then
@@ -77,9 +78,9 @@ if [ "$scope" != native ]; then
   fi
   # Debian's source of GSL, for GSL in WebAssembly (built by scripts/build-web.sh, once a machine).
   bash scripts/build-gsl-wasm.sh --fetch
-  # The browser tests' one npm package, playwright-core, at the version of tests/web/package-lock.json;
-  # it drives Debian's chromium and downloads no browser.
-  if [ ! -d tests/web/node_modules/playwright-core ]; then
+  # The page's npm packages at the versions of tests/web/package-lock.json: playwright-core, which
+  # drives Debian's chromium and downloads no browser, and ESLint (scripts/lint.sh).
+  if [ ! -d tests/web/node_modules/playwright-core ] || [ ! -x tests/web/node_modules/.bin/eslint ]; then
     (cd tests/web && npm ci --no-audit --no-fund --loglevel=error)
   fi
 fi

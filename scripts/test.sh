@@ -6,7 +6,7 @@
 #      libFuzzer: the five fuzz targets run at once for a minute each, then the tiers that run
 #      the code on inputs (unit, cli, robustness; every 10th reference design) run again under
 #      the sanitizers, where any memory error or undefined behaviour aborts the test that hit it.
-# Each stage prints its time. TREBUCHET_FUZZ_SECONDS changes the fuzzing time.
+# First the formatters (scripts/lint.sh). Each stage prints its time. TREBUCHET_FUZZ_SECONDS changes the fuzzing time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
@@ -15,6 +15,9 @@ stage() { echo "== $1 (at $((SECONDS - start)) s) =="; }
 
 stage "installing what is missing"
 bash scripts/install-deps.sh
+
+stage "formatters: clang-format and ESLint"
+bash scripts/lint.sh
 
 stage "Release build"
 # With the Python module for Debian's own interpreter (docs/python.md).

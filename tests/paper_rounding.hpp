@@ -34,8 +34,7 @@ namespace trebuchet::testing {
 /// CHECKs |ours - paper| <= half a unit of the printed digit + `extra` and prints how close
 /// it came: label, our value, the paper's, the difference and the share of the tolerance used.
 /// `scale` converts ours into the paper's printed unit (1e-3 for kJ from J).
-void check_printed(const std::string& label, double ours, const std::string& paper_text, double extra,
-                   double scale = 1.0);
+void check_printed(const std::string& label, double ours, const std::string& paper_text, double extra, double scale = 1.0);
 
 }  // namespace trebuchet::testing
 
@@ -44,8 +43,7 @@ namespace trebuchet::testing {
 /// First-order effect on `result` of the rounding of a printed engine: each input, given as
 /// printed ("6.13"), moves by half a unit of its last digit in turn; the changes are summed.
 /// `build` makes the engine from the input values in the order given.
-double input_rounding_effect(const std::vector<std::string>& printed_inputs,
-                             const std::function<Engine(const std::vector<double>&)>& build,
+double input_rounding_effect(const std::vector<std::string>& printed_inputs, const std::function<Engine(const std::vector<double>&)>& build,
                              const std::function<double(const Engine&)>& result);
 
 }  // namespace trebuchet::testing

@@ -72,8 +72,7 @@ TEST_CASE("the scaled flight is the SI flight in units of L2 and sqrt(L2/g)", "[
   const double L2 = 3.3026, speed_unit = std::sqrt(g * L2);
   const Drag si = drag_of(air, 100);
   const auto a = fly(release_position, release_velocity, 20, si, g);
-  const auto b = fly({release_position.x / L2, 0}, {release_velocity.x / speed_unit, release_velocity.y / speed_unit}, 20 / L2,
-                     scaled(si, L2, g), 1);
+  const auto b = fly({release_position.x / L2, 0}, {release_velocity.x / speed_unit, release_velocity.y / speed_unit}, 20 / L2, scaled(si, L2, g), 1);
   REQUIRE(a);
   REQUIRE(b);
   CHECK(b->range * L2 == Approx(a->range).epsilon(1e-10));
@@ -82,8 +81,8 @@ TEST_CASE("the scaled flight is the SI flight in units of L2 and sqrt(L2/g)", "[
 TEST_CASE("Cd(Re) of a sphere is Morrison's correlation, and follows the standard drag curve", "[air]") {
   // Morrison (2013), eq. 8.83, evaluated apart from the library from the published formula and
   // rounded to 6 digits; 1e-5 relative covers that rounding.
-  const std::pair<double, double> morrison[] = {{0.1, 240.221}, {1, 24.6729},        {100, 1.03813},   {1e4, 0.392602},
-                                                {1e5, 0.425712}, {3e5, 0.173436},   {1e6, 0.129589}};
+  const std::pair<double, double> morrison[] = {{0.1, 240.221},  {1, 24.6729},    {100, 1.03813}, {1e4, 0.392602},
+                                                {1e5, 0.425712}, {3e5, 0.173436}, {1e6, 0.129589}};
   for (const auto& [re, cd] : morrison) {
     INFO("Re = " << re);
     CHECK(drag_coefficient_of(re) == Approx(cd).epsilon(1e-5));

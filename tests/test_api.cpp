@@ -127,8 +127,8 @@ TEST_CASE("api::complete applies the request's modulus of rupture, as the progra
 TEST_CASE("api::shot takes an engine as built and the air before the release", "[api]") {
   // The parts go in as the design's keys and come back in the engine; the air before the release
   // is a key of "air", as the answer's assumptions state it.
-  const json design = {{"L1", "4.13m"}, {"L2", "0.88m"}, {"F", "2/3"}, {"L4", "3.55m"}, {"M", "3.11t"}, {"m", "50kg"}, {"mb", "174kg"},
-                       {"axle_friction", 0.107}, {"axle_radius", "5cm"}, {"rope_diameter", "2cm"}};
+  const json design = {{"L1", "4.13m"}, {"L2", "0.88m"},          {"F", "2/3"},           {"L4", "3.55m"},         {"M", "3.11t"}, {"m", "50kg"},
+                       {"mb", "174kg"}, {"axle_friction", 0.107}, {"axle_radius", "5cm"}, {"rope_diameter", "2cm"}};
   const auto answer = api::shot({{"design", design}, {"air", {{"drag_in_sling", true}}}});
   Engine engine;
   engine.L1 = 4.13, engine.L2 = 0.88, engine.L4 = 3.55, engine.M = 3110, engine.m = 50, engine.mb = 174;

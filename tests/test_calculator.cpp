@@ -32,7 +32,6 @@ DesignRequest at_XY(double X, double Y, double theta_i_deg = 30, double F = 2.0 
   return capacity(c.R, c.T, theta_i_deg, F);
 }
 
-
 double relative(double a, double b) { return std::abs(a / b - 1); }
 
 }  // namespace
@@ -70,8 +69,8 @@ TEST_CASE("any pair of an optimal engine's quantities gives back its capacity", 
             // Two capacities can share the pair (two segments each consistent, or Lb with
             // another given): the one not shown must be announced with its X.
             REQUIRE(!back.warnings.empty());
-            CHECK_THAT(back.warnings.front(), Catch::Contains("another optimal engine") &&
-                                                  Catch::Contains("X = " + format_significant(design.coordinates.X, 3)));
+            CHECK_THAT(back.warnings.front(),
+                       Catch::Contains("another optimal engine") && Catch::Contains("X = " + format_significant(design.coordinates.X, 3)));
             ++shared;
             continue;
           }
@@ -279,8 +278,7 @@ TEST_CASE("X outside the covered interval is refused, or extrapolated with a war
   CHECK(std::abs(d.coordinates.X - 0.8) < 1e-12);
   REQUIRE(d.warnings.size() == 1);
   CHECK_THAT(d.warnings.front(), Catch::StartsWith("extrapolated"));
-  CHECK_THROWS_WITH(design_optimal_engine(builtin_scaling_table(), capacity(150, 40e3, 35, 1)),
-                    Catch::Contains("no constants for theta_i = 35"));
+  CHECK_THROWS_WITH(design_optimal_engine(builtin_scaling_table(), capacity(150, 40e3, 35, 1)), Catch::Contains("no constants for theta_i = 35"));
 }
 
 // eq:ZiZj_RT: a 1% error in either given moves log R and log T by up to
@@ -381,9 +379,10 @@ TEST_CASE("tab:SketchBook-II rows 1, 3 and 7 from (Lb, l) with the re-derived bl
       const OptimalEngine d = design_optimal_engine(derived, r);
       // The derived table's design, shot ab initio: within the 2 % its constants hold to.
       const Verification v = verify_engine(d.engine, ShotSettings{});
-      std::printf("SketchBook-II row %d (%g deg, F = %g, l = %g): derived R = %.0f m, T = %.0f kJ at X = %.3f (printed %g m, %g kJ); "
-                  "verified R = %.0f m, eps = %.1f %%\n",
-                  row.number, row.theta, row.F, row.l, d.capacity.R, d.capacity.T / 1e3, d.coordinates.X, row.R, row.T, v.capacity.R, 100 * v.eps);
+      std::printf(
+          "SketchBook-II row %d (%g deg, F = %g, l = %g): derived R = %.0f m, T = %.0f kJ at X = %.3f (printed %g m, %g kJ); "
+          "verified R = %.0f m, eps = %.1f %%\n",
+          row.number, row.theta, row.F, row.l, d.capacity.R, d.capacity.T / 1e3, d.coordinates.X, row.R, row.T, v.capacity.R, 100 * v.eps);
       CHECK(std::abs(v.capacity.R / d.capacity.R - 1) < 0.02);
       CHECK(std::abs(v.capacity.T / d.capacity.T - 1) < 0.02);
       ratios.push_back(d.capacity.R / row.R);

@@ -9,9 +9,8 @@
 using namespace trebuchet;
 
 // tab:SketchBook-I rows 1 and 2 and tab:Alcala_la_Vieja row Ca as shapes (mu set by each fit).
-const ScaledDesign shapes[] = {{5.68, 5.80 / 6.13, 660.0 / 14300, 0, 30, 1},
-                               {6.77, 5.69 / 6.20, 601.0 / 16900, 0, 30, 2.0 / 3},
-                               scaled_design(testing::alcala_ca())};
+const ScaledDesign shapes[] = {
+    {5.68, 5.80 / 6.13, 660.0 / 14300, 0, 30, 1}, {6.77, 5.69 / 6.20, 601.0 / 16900, 0, 30, 2.0 / 3}, scaled_design(testing::alcala_ca())};
 
 // An engine built from a shape with a known mu and L2 delivers some (R, T); fitting the shape
 // to that (R, T) must give back mu and L2, and the fitted engine, shot anew, must deliver
@@ -21,21 +20,21 @@ const ScaledDesign shapes[] = {{5.68, 5.80 / 6.13, 660.0 / 14300, 0, 30, 1},
 // Cold (mu = 0: the guess of section 4) or warm (from a mu 2.8 times too large), it ends there.
 TEST_CASE("the capacity fit recovers the engine that delivered the capacity", "[fit][physics]") {
   for (ScaledDesign shape : shapes)
-  for (const double start_mu : {0.0, 0.02}) {
-    const double mu = 0.0071, L2 = 1.1;
-    shape.mu = mu;
-    const Verification target = verify_engine(engine_of(shape, L2, Material{}), ShotSettings{});
-    shape.mu = start_mu;
-    const CapacityFit fit = fit_capacity(shape, target.capacity, Material{}, ShotSettings{});
-    const Verification fresh = verify_engine(fit.engine, ShotSettings{});
-    INFO("l = " << shape.l << ", start mu " << start_mu << ": " << fit.simulations << " shots");
-    CHECK(std::abs(fresh.capacity.R / target.capacity.R - 1) < 1e-6 + 1e-8);
-    CHECK(std::abs(fresh.capacity.T / target.capacity.T - 1) < 1e-6 + 1e-8);
-    CHECK(std::abs(fit.design.mu / mu - 1) < 1e-5);
-    CHECK(std::abs(fit.engine.m / fit.engine.M / mu - 1) < 1e-5);
-    CHECK(std::abs(fit.engine.L2 / L2 - 1) < 1e-5);
-    CHECK(fit.simulations < 40);
-  }
+    for (const double start_mu : {0.0, 0.02}) {
+      const double mu = 0.0071, L2 = 1.1;
+      shape.mu = mu;
+      const Verification target = verify_engine(engine_of(shape, L2, Material{}), ShotSettings{});
+      shape.mu = start_mu;
+      const CapacityFit fit = fit_capacity(shape, target.capacity, Material{}, ShotSettings{});
+      const Verification fresh = verify_engine(fit.engine, ShotSettings{});
+      INFO("l = " << shape.l << ", start mu " << start_mu << ": " << fit.simulations << " shots");
+      CHECK(std::abs(fresh.capacity.R / target.capacity.R - 1) < 1e-6 + 1e-8);
+      CHECK(std::abs(fresh.capacity.T / target.capacity.T - 1) < 1e-6 + 1e-8);
+      CHECK(std::abs(fit.design.mu / mu - 1) < 1e-5);
+      CHECK(std::abs(fit.engine.m / fit.engine.M / mu - 1) < 1e-5);
+      CHECK(std::abs(fit.engine.L2 / L2 - 1) < 1e-5);
+      CHECK(fit.simulations < 40);
+    }
 }
 
 // eq:ExtraScalings: a shape fitted at lambda^5 times the energy and lambda times the range is

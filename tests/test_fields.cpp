@@ -21,7 +21,8 @@ namespace {
 // Alcala la Vieja's Ca engine (docs/guide.md), as a design's values.
 DesignValues ca_engine() {
   DesignValues v;
-  v.L1 = 4.13, v.L2 = 0.88, v.L3 = 1.5043, v.L4 = 3.55, v.M = 3110, v.m = 50, v.mb = 174;  // L3 for F = 2/3, given: a probed L1 or L2 must not first leave no room for the arm
+  v.L1 = 4.13, v.L2 = 0.88, v.L3 = 1.5043, v.L4 = 3.55, v.M = 3110, v.m = 50,
+  v.mb = 174;  // L3 for F = 2/3, given: a probed L1 or L2 must not first leave no room for the arm
   return v;
 }
 
@@ -85,21 +86,21 @@ TEST_CASE("a value beyond the range a row states is refused, naming the row", "[
 
 TEST_CASE("a near miss is named with the key meant, and other keys pass through", "[fields]") {
   const std::vector<std::string> shot = input_names(op_shot);
-  CHECK(near_miss("theta_i", shot) == "theta_i_deg");   // the unit left off
+  CHECK(near_miss("theta_i", shot) == "theta_i_deg");  // the unit left off
   CHECK(near_miss("theta_deg", shot) == "theta_i_deg");  // the alias with a unit
-  CHECK(near_miss("L4_ft", shot) == "L4");               // a unit put on, as a CSV column has it
+  CHECK(near_miss("L4_ft", shot) == "L4");  // a unit put on, as a CSV column has it
   CHECK(near_miss("M_kg", shot) == "M");
   CHECK(near_miss("thta_i_deg", shot) == "theta_i_deg");  // two edits of a long name
-  CHECK(near_miss("l1", shot) == "L1");                   // a name of two letters: its case alone
-  CHECK(near_miss("L_4", shot).empty());                  // ... not an edit (as the flags suggest)
+  CHECK(near_miss("l1", shot) == "L1");  // a name of two letters: its case alone
+  CHECK(near_miss("L_4", shot).empty());  // ... not an edit (as the flags suggest)
   CHECK(near_miss("site", shot).empty());
   CHECK(near_miss("comment", shot).empty());
   CHECK(near_miss("Lb", shot).empty());  // complete's, not a shot's: a shot's output key, read back silently
 
   nlohmann::json design = {{"L1", 4.13}, {"L2", 0.88}, {"F", "2/3"}, {"L4", 3.55}, {"M", 3110}, {"m", 50}, {"mb", 174}};
-  design["l4"] = 0.86;     // the programs' own outputs, near L4 and L but known: read back silently
+  design["l4"] = 0.86;  // the programs' own outputs, near L4 and L but known: read back silently
   design["L"] = 1.3;
-  design["site"] = "Ca";   // the caller's: passed through
+  design["site"] = "Ca";  // the caller's: passed through
   nlohmann::json passed;
   read_design_values(design, "design", &passed);
   CHECK(passed == nlohmann::json{{"site", "Ca"}});

@@ -37,21 +37,21 @@ ErrorKind kind_of(const std::function<void()>& work) {
 }  // namespace
 
 TEST_CASE("UTF-8 is told from other bytes as RFC 3629 defines it", "[hostile]") {
-  CHECK(is_utf8("Sa\xC3\xB4ne"));                  // ô, two bytes
-  CHECK(is_utf8("\xE2\x82\xAC"));                  // €, three bytes
-  CHECK(is_utf8("\xF0\x9F\x8F\xB0"));              // U+1F3F0 (a castle), four bytes
-  CHECK_FALSE(is_utf8("Sa\xF4ne"));                // Latin-1 ô: a lead byte without its continuation
-  CHECK_FALSE(is_utf8("\xC0\xAF"));                // an overlong '/'
-  CHECK_FALSE(is_utf8("\xED\xA0\x80"));            // a UTF-16 surrogate, U+D800
-  CHECK_FALSE(is_utf8("\xF4\x90\x80\x80"));        // beyond U+10FFFF
-  CHECK_FALSE(is_utf8("ab\xC3"));                  // cut short
+  CHECK(is_utf8("Sa\xC3\xB4ne"));  // ô, two bytes
+  CHECK(is_utf8("\xE2\x82\xAC"));  // €, three bytes
+  CHECK(is_utf8("\xF0\x9F\x8F\xB0"));  // U+1F3F0 (a castle), four bytes
+  CHECK_FALSE(is_utf8("Sa\xF4ne"));  // Latin-1 ô: a lead byte without its continuation
+  CHECK_FALSE(is_utf8("\xC0\xAF"));  // an overlong '/'
+  CHECK_FALSE(is_utf8("\xED\xA0\x80"));  // a UTF-16 surrogate, U+D800
+  CHECK_FALSE(is_utf8("\xF4\x90\x80\x80"));  // beyond U+10FFFF
+  CHECK_FALSE(is_utf8("ab\xC3"));  // cut short
 }
 
 TEST_CASE("text that is not UTF-8 is read as Windows-1252", "[hostile]") {
-  CHECK(as_utf8("Sa\xF4ne") == "Sa\xC3\xB4ne");    // 0xF4 is ô in Latin-1 and Windows-1252
-  CHECK(as_utf8("\x80 5") == "\xE2\x82\xAC 5");    // 0x80 is € in Windows-1252
+  CHECK(as_utf8("Sa\xF4ne") == "Sa\xC3\xB4ne");  // 0xF4 is ô in Latin-1 and Windows-1252
+  CHECK(as_utf8("\x80 5") == "\xE2\x82\xAC 5");  // 0x80 is € in Windows-1252
   CHECK(as_utf8("\x93x\x94") == "\xE2\x80\x9Cx\xE2\x80\x9D");  // curly quotes
-  CHECK(as_utf8("a\x81") == "a\xEF\xBF\xBD");      // one of the five bytes Windows-1252 leaves unused: U+FFFD
+  CHECK(as_utf8("a\x81") == "a\xEF\xBF\xBD");  // one of the five bytes Windows-1252 leaves unused: U+FFFD
   CHECK(as_utf8("Sa\xC3\xB4ne") == "Sa\xC3\xB4ne");  // UTF-8 stays as it is
   // Through the CSV reader, as a spreadsheet on Windows saves it.
   std::istringstream input("site,R\nSa\xF4ne,150\n");
@@ -63,8 +63,8 @@ TEST_CASE("text that is not UTF-8 is read as Windows-1252", "[hostile]") {
 
 TEST_CASE("nesting is counted outside strings and refused past 32 levels before parsing", "[hostile]") {
   CHECK(json_depth("{\"L1\": [1, [2]]}") == 3);
-  CHECK(json_depth("{\"L1\": \"[[[[\"}") == 1);          // brackets in a string are text
-  CHECK(json_depth("{\"a\\\"[[\": 1}") == 1);            // an escaped quote does not end the string
+  CHECK(json_depth("{\"L1\": \"[[[[\"}") == 1);  // brackets in a string are text
+  CHECK(json_depth("{\"a\\\"[[\": 1}") == 1);  // an escaped quote does not end the string
   CHECK(json_depth(std::string(100000, '[')) == max_json_depth + 1);  // counting stops once past the bound
   const std::string deep = std::string(33, '[') + std::string(33, ']');
   CHECK(kind_of([&] { parse_json(deep, "test", "a design"); }) == ErrorKind::usage);

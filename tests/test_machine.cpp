@@ -78,8 +78,8 @@ TEST_CASE("the pendulum sling shoots through the seam, conserving its energy", "
   const ScaledDesign d = sling_design();
   const testing::PendulumSling machine(d);
   const ShotResult shot = simulate_shot(machine, ReleaseCriterion{}, IntegratorSettings{});
-  INFO("lift-off at t = " << shot.t_liftoff << ", release at t = " << shot.release.t << ", range " << shot.release.range
-                          << " L2, eps " << shot.release.efficiency << ", energy drift " << shot.energy_drift);
+  INFO("lift-off at t = " << shot.t_liftoff << ", release at t = " << shot.release.t << ", range " << shot.release.range << " L2, eps "
+                          << shot.release.efficiency << ", energy drift " << shot.energy_drift);
   CHECK(shot.t_liftoff > 0);
   CHECK(shot.release.t > shot.t_liftoff);
   CHECK(shot.release.range > 0);

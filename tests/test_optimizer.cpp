@@ -35,8 +35,8 @@ TEST_CASE("the optimum for (425 m, 224 kJ) delivers the capacity and beats its s
     const CapacityFit start = fit_capacity(o.start_design, request.capacity, Material{}, ShotSettings{});
     CHECK(o.objective > start.verification.Q);
     const ScaledDesign& d = o.fit.design;
-    std::printf("start Q %.4f %% -> optimum (%s): Q %.4f %%, eps %.2f %%, l %.3f, l4 %.4f, mu_b %.5f, %d shots\n", 100 * start.verification.Q, o.start.c_str(), 100 * o.objective,
-                100 * o.fit.verification.eps, d.l, d.l4, d.mu_b, o.simulations);
+    std::printf("start Q %.4f %% -> optimum (%s): Q %.4f %%, eps %.2f %%, l %.3f, l4 %.4f, mu_b %.5f, %d shots\n", 100 * start.verification.Q,
+                o.start.c_str(), 100 * o.objective, 100 * o.fit.verification.eps, d.l, d.l4, d.mu_b, o.simulations);
   }
   // Same inputs, same numbers, bit for bit.
   const std::vector<Optimum> again = optimize(request);

@@ -55,8 +55,8 @@ TEST_CASE("tab:SketchBook-I row 2 propped: eps peaks near psi_i = -4.6 deg", "[p
       break;
   }
   const double best_psi = gsl_min_fminimizer_x_minimum(minimizer.get()), best_eps = eps_at(best_psi), gain = best_eps - eps_at(0);
-  std::cout << "maximum: eps = " << 100 * best_eps << " % at psi_i = " << best_psi << " deg (paper: 93.0 % at -4.6 deg), a gain of "
-            << 100 * gain << " points over unpropped (paper: 93.0 - 92.6 = 0.4)\n";
+  std::cout << "maximum: eps = " << 100 * best_eps << " % at psi_i = " << best_psi << " deg (paper: 93.0 % at -4.6 deg), a gain of " << 100 * gain
+            << " points over unpropped (paper: 93.0 - 92.6 = 0.4)\n";
   // The top is flat: within 1.5 deg of it eps moves by at most 0.05 points (the scan: 92.78 %
   // at -2.5 deg), the printed eps's rounding, so the paper's -4.6 places it no closer than that.
   CHECK(std::abs(best_psi - -4.6) < 1.5);

@@ -30,8 +30,7 @@ ShotResult shot_of(const ScaledDesign& d, std::vector<TracePoint>* trace = nullp
 template <class F>
 double integral(const std::vector<TracePoint>& trace, double t_end, F f) {
   double sum = 0;
-  for (std::size_t k = 1; k < trace.size() && trace[k].t <= t_end; ++k)
-    sum += (trace[k].t - trace[k - 1].t) * (f(trace[k]) + f(trace[k - 1])) / 2;
+  for (std::size_t k = 1; k < trace.size() && trace[k].t <= t_end; ++k) sum += (trace[k].t - trace[k - 1].t) * (f(trace[k]) + f(trace[k - 1])) / 2;
   return sum;
 }
 
@@ -239,7 +238,8 @@ TEST_CASE("a tapered beam's bending moment balances both sections, with friction
     const Snapshot& sn = p.snapshot;
     const double sling_moment = sn.tip.x * sn.sling_on_tip.y - sn.tip.y * sn.sling_on_tip.x;
     const double weight_moment = -m_long * c_long * std::sin(p.state.theta);
-    const double axle = -d.parts.axle_friction * std::hypot(sn.pivot_reaction.x, sn.pivot_reaction.y) * ((p.state.theta_dot > 0) - (p.state.theta_dot < 0));
+    const double axle = -d.parts.axle_friction * std::hypot(sn.pivot_reaction.x, sn.pivot_reaction.y) *
+        ((p.state.theta_dot > 0) - (p.state.theta_dot < 0));
     const double long_side = I_long * sn.theta_ddot - sling_moment - weight_moment - axle;
     worst = std::max(worst, std::abs(long_side - sn.beam_moment));
   }

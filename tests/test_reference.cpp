@@ -81,11 +81,12 @@ struct Agreement {
   }
 
   void report(const char* set) const {
-    std::printf("reference check, %s: %d designs shot, %d refused by both, %d by one only; %d release at the onset of growth "
-                "of a running extreme, %d of them found there by the library\n",
-                set, shot, both_refused, mismatched, kinks, kinks_found);
-    std::printf("  onsets: F_S_perp %d, |F_R| %d, max F_Rh %d, max -F_Rh %d\n", kinks_by_force[sling_perpendicular],
-                kinks_by_force[pivot_reaction], kinks_by_force[pivot_horizontal], kinks_by_force[pivot_horizontal_negated]);
+    std::printf(
+        "reference check, %s: %d designs shot, %d refused by both, %d by one only; %d release at the onset of growth "
+        "of a running extreme, %d of them found there by the library\n",
+        set, shot, both_refused, mismatched, kinks, kinks_found);
+    std::printf("  onsets: F_S_perp %d, |F_R| %d, max F_Rh %d, max -F_Rh %d\n", kinks_by_force[sling_perpendicular], kinks_by_force[pivot_reaction],
+                kinks_by_force[pivot_horizontal], kinks_by_force[pivot_horizontal_negated]);
     std::printf("  warned before the release: slack sling %d, counterweight below the base %d, beam tip below the base %d\n", slack,
                 counterweight_low, tip_low);
     for (const Deviation* dev : {&R, &T, &eps, &v, &h, &Q})
@@ -118,8 +119,7 @@ TEST_CASE("the shot agrees with the independent reference on 500 random designs"
   const int stride = stride_text ? std::max(1, std::atoi(stride_text)) : 1;
   Agreement agreement;
   for (int design = 0; design < 500; ++design) {
-    const reference::Design d{uniform(3.5, 7), uniform(0.7, 1.2), uniform(0.03, 0.15),
-                              uniform(0.004, 0.02), uniform(25, 45), uniform(0.5, 1)};
+    const reference::Design d{uniform(3.5, 7), uniform(0.7, 1.2), uniform(0.03, 0.15), uniform(0.004, 0.02), uniform(25, 45), uniform(0.5, 1)};
     const double L2 = uniform(0.3, 1.5);
     if (design % stride == 0) agreement.compare(d, L2, design);
   }
@@ -139,8 +139,8 @@ TEST_CASE("the shot agrees with the independent reference on 500 random designs"
 // has none either. The issue's own design is the first.
 TEST_CASE("releases at narrow maxima between step ends agree with the reference", "[reference][shot]") {
   const std::vector<reference::Design> designs{
-      {2.324262562133648 / 0.43196974412459677, 0.45949581858546434 / 2.324262562133648, 168.5891228353421 / 5000,
-       22.796138875393417 / 5000, 44.258495756036226, 0.9863316173552241},  // issue 26: Q +8.2e-04
+      {2.324262562133648 / 0.43196974412459677, 0.45949581858546434 / 2.324262562133648, 168.5891228353421 / 5000, 22.796138875393417 / 5000,
+       44.258495756036226, 0.9863316173552241},  // issue 26: Q +8.2e-04
       {5.984199, 0.306437, 0.058104, 0.010669, 45.4437, 0.837054},  // Q +3.6e-03
       {4.284906, 0.354257, 0.100691, 0.007267, 45.4872, 0.737451},  // Q +7.6e-05
       {4.350247, 0.286428, 0.116216, 0.007542, 41.7099, 0.937654},  // Q +3.2e-04
@@ -204,8 +204,8 @@ TEST_CASE("the release at the onset of growth of max F_Rh agrees with the refere
   const ShotResult ours = simulate_shot(d, ReleaseCriterion{}, IntegratorSettings{});
   const reference::Shot ref = reference::shoot({d.l, d.l4, d.mu_b, d.mu, d.theta_i_deg, d.F});
   const double time_unit = std::sqrt(engine.L2 / engine.material.g);  // [s]
-  std::printf("issue 12 kink: release %.3e s from the reference, R %.1e, Q %.1e relative\n",
-              (ours.release.t - ref.t_release) * time_unit, ours.release.range / ref.rho - 1, ours.release.quality / ref.Q - 1);
+  std::printf("issue 12 kink: release %.3e s from the reference, R %.1e, Q %.1e relative\n", (ours.release.t - ref.t_release) * time_unit,
+              ours.release.range / ref.rho - 1, ours.release.quality / ref.Q - 1);
   REQUIRE(ref.onset == pivot_horizontal);
   REQUIRE(ours.release_at_growth_of == pivot_horizontal);
   CHECK(std::abs(ours.release.t - ref.t_release) * time_unit < 1e-9);

@@ -56,8 +56,8 @@ TEST_CASE("10 000 random engines: a finite result or a named error each", "[robu
     e.M = log_uniform(random, 10, 1e6);
     e.m = e.M * log_uniform(random, 1e-5, 1);
     e.mb = e.M * log_uniform(random, 1e-5, 2);
-    INFO("engine " << k << ": L1 " << e.L1 << " L2 " << e.L2 << " L3 " << e.L3 << " L4 " << e.L4 << " M " << e.M << " m " << e.m
-                   << " mb " << e.mb << " theta " << e.theta_i_deg);
+    INFO("engine " << k << ": L1 " << e.L1 << " L2 " << e.L2 << " L3 " << e.L3 << " L4 " << e.L4 << " M " << e.M << " m " << e.m << " mb " << e.mb
+                   << " theta " << e.theta_i_deg);
     try {
       check_engine(e);
       const Verification v = verify_engine(e, ShotSettings{});

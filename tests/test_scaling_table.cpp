@@ -70,8 +70,7 @@ TEST_CASE("a bad constants file is refused with the file and the key named", "[t
   CHECK(table_error([](nlohmann::json& d) { d.erase("R0"); }) == "spoiled.json: top level: missing key 'R0'");
   CHECK(table_error([](nlohmann::json& d) { d["blocks"][0]["segments"][1]["branch"] = "none"; }) ==
         "spoiled.json: blocks[0].segments: segments [0, 0.4] and [0.3, 0.57] overlap; label them \"lower\" and \"upper\"");
-  CHECK(table_error([](nlohmann::json& d) { d["blocks"][2]["Z0"]["M"] = -1; }) ==
-        "spoiled.json: blocks[2].Z0.M: must be positive, got -1");
+  CHECK(table_error([](nlohmann::json& d) { d["blocks"][2]["Z0"]["M"] = -1; }) == "spoiled.json: blocks[2].Z0.M: must be positive, got -1");
 }
 
 // Issue 11: a table is checked as data. eq:ZRT's p_Z + 5 q_Z = n_Z must hold to one unit of the
@@ -81,8 +80,9 @@ TEST_CASE("a table whose constants break eq:ZRT, or with a doubled block, is ref
   CHECK(table_error([](nlohmann::json& d) {
           for (auto& segment : d["blocks"][0]["segments"])
             for (auto& [key, value] : segment["p"].items()) value = 0, segment["q"][key] = 0;
-        }) == "spoiled.json: blocks[0].segments[0]: p + 5 q = 0 for L1, not n = 1 as eq:ZRT requires (to 1e-12, what the printed "
-              "digits allow); correct p or q of L1");
+        }) ==
+        "spoiled.json: blocks[0].segments[0]: p + 5 q = 0 for L1, not n = 1 as eq:ZRT requires (to 1e-12, what the printed "
+        "digits allow); correct p or q of L1");
   CHECK(table_error([](nlohmann::json& d) { d["blocks"].push_back(d["blocks"][2]); }) ==
         "spoiled.json: blocks[3]: a second block for theta_i = 40 deg, F = 2/3; give each (theta_i, F) once");
   // The paper's (30 deg, 2/3) D pair itself: 0.0004 off, inside the 0.0006 its digits allow.

@@ -129,13 +129,11 @@ TEST_CASE("the same scaled design at another size gives the same Q", "[shot][phy
 // tab:Alcala_la_Vieja, right-hand columns: simulate each printed engine. Tolerance: the
 // printed output's half unit plus the effect of the printed engine's own rounding.
 TEST_CASE("tab:Alcala_la_Vieja ab initio, row Ca", "[shot][paper]") {
-  check_alcala_row("Alcala Ca", alcala_ca(), 0,
-                   {{"R", "150"}, {"T", "40.3"}, {"eps", "90.0"}, {"v", "37.7"}, {"h", "10.0"}, {"A", "40.3"}});
+  check_alcala_row("Alcala Ca", alcala_ca(), 0, {{"R", "150"}, {"T", "40.3"}, {"eps", "90.0"}, {"v", "37.7"}, {"h", "10.0"}, {"A", "40.3"}});
 }
 
 TEST_CASE("tab:Alcala_la_Vieja ab initio, row Ma 480 m", "[shot][paper]") {
-  check_alcala_row("Alcala Ma 480", alcala_ma_480(), 0,
-                   {{"R", "480"}, {"T", "124"}, {"eps", "92.8"}, {"v", "68.5"}, {"A", "39.1"}});
+  check_alcala_row("Alcala Ma 480", alcala_ma_480(), 0, {{"R", "480"}, {"T", "124"}, {"eps", "92.8"}, {"v", "68.5"}, {"A", "39.1"}});
 }
 
 // Known difference: h of row Ma 480 comes out 13.90 m against 13.8 m, 1.5 times its rounding
@@ -148,13 +146,11 @@ TEST_CASE("tab:Alcala_la_Vieja ab initio, row Ma 480 m, release height (known di
 }
 
 TEST_CASE("tab:Alcala_la_Vieja ab initio, row Ma 426 m", "[shot][paper]") {
-  check_alcala_row("Alcala Ma 426", alcala_ma_426(), 0,
-                   {{"R", "426"}, {"T", "111"}, {"eps", "92.5"}, {"v", "64.5"}, {"h", "13.5"}, {"A", "39.1"}});
+  check_alcala_row("Alcala Ma 426", alcala_ma_426(), 0, {{"R", "426"}, {"T", "111"}, {"eps", "92.5"}, {"v", "64.5"}, {"h", "13.5"}, {"A", "39.1"}});
 }
 
 TEST_CASE("tab:Alcala_la_Vieja ab initio, row Sa", "[shot][paper]") {
-  check_alcala_row("Alcala Sa", alcala_sa(), 0,
-                   {{"R", "250"}, {"T", "66.0"}, {"eps", "91.4"}, {"v", "49.1"}, {"h", "11.7"}, {"A", "39.7"}});
+  check_alcala_row("Alcala Sa", alcala_sa(), 0, {{"R", "250"}, {"T", "66.0"}, {"eps", "91.4"}, {"v", "49.1"}, {"h", "11.7"}, {"A", "39.7"}});
 }
 
 // Section 7.1 (sec:AVS): the Ma engine aimed at 426 m flies on to the target 54 m below, landing near
@@ -223,11 +219,13 @@ TEST_CASE("a counterweight below the base is warned with its time, and only when
     CHECK(!onset(F).slack_sling);
     CHECK(!onset(F).tip_below_base);
   }
-  const Verification v = verify_engine([] {
-    Engine e = alcala_ca();
-    e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, 1.2);
-    return e;
-  }(), ShotSettings{});
+  const Verification v = verify_engine(
+      [] {
+        Engine e = alcala_ca();
+        e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, 1.2);
+        return e;
+      }(),
+      ShotSettings{});
   REQUIRE(v.warnings.size() == 1);
   CHECK_THAT(v.warnings.front(), Catch::StartsWith("the counterweight passes below the engine's base at t = 0.7028 s"));
 }
@@ -245,8 +243,10 @@ TEST_CASE("a slack sling is warned at the time its tension changes sign", "[shot
   double last_before = 0, first_after = 0;
   for (const TracePoint& p : trace) {
     if (p.phase == Phase::released) break;
-    if (p.t <= *shot.slack_sling) last_before = p.snapshot.sling_tension;
-    else if (first_after == 0) first_after = p.snapshot.sling_tension;
+    if (p.t <= *shot.slack_sling)
+      last_before = p.snapshot.sling_tension;
+    else if (first_after == 0)
+      first_after = p.snapshot.sling_tension;
     if (p.t < *shot.slack_sling) CHECK(p.snapshot.sling_tension > -1e-9);  // taut until the onset
   }
   CHECK(last_before >= -1e-9);
@@ -316,7 +316,8 @@ TEST_CASE("a builder's load peaks are the largest values up to the release", "[s
 TEST_CASE("section 7: the Malvecino engine stores 120 kJ", "[shot][paper]") {
   std::printf("section 7, Malvecino (row Ma 426 m)\n");
   const Engine e = alcala_ma_426();
-  check_printed("Delta U [kJ]", potential_energy_drop(e) / 1e3, "120", input_rounding(e, [](const Engine& x) { return potential_energy_drop(x) / 1e3; }));
+  check_printed("Delta U [kJ]", potential_energy_drop(e) / 1e3, "120",
+                input_rounding(e, [](const Engine& x) { return potential_energy_drop(x) / 1e3; }));
 }
 
 // Section 7, Saone: the row Sa engine's 50 kg stones "arriving at ~185 km/h": the speed at the

@@ -78,10 +78,10 @@ std::optional<double> gnu_units(const std::string& expression, const std::string
 // to 1e-14 relative; the imperial factors are exact by definition in both.
 TEST_CASE("every unit's factor agrees with GNU units", "[units]") {
   const std::map<UnitDimension, std::string> si = {
-      {UnitDimension::length, "m"},   {UnitDimension::mass, "kg"},          {UnitDimension::energy, "J"},
-      {UnitDimension::dimensionless, "1"}, {UnitDimension::angle, "deg"},   {UnitDimension::acceleration, "m/s^2"},
-      {UnitDimension::pressure, "Pa"}, {UnitDimension::density, "kg/m^3"}, {UnitDimension::time, "s"},
-      {UnitDimension::speed, "m/s"},  {UnitDimension::force, "N"},          {UnitDimension::moment, "N*m"},
+      {UnitDimension::length, "m"},        {UnitDimension::mass, "kg"},        {UnitDimension::energy, "J"},
+      {UnitDimension::dimensionless, "1"}, {UnitDimension::angle, "deg"},      {UnitDimension::acceleration, "m/s^2"},
+      {UnitDimension::pressure, "Pa"},     {UnitDimension::density, "kg/m^3"}, {UnitDimension::time, "s"},
+      {UnitDimension::speed, "m/s"},       {UnitDimension::force, "N"},        {UnitDimension::moment, "N*m"},
       {UnitDimension::inertia, "kg*m^2"}};
   // Our spellings that GNU units writes otherwise.
   const std::map<std::string, std::string> spelled = {{"ftlbf", "ft*lbf"}, {"km/h", "km/hr"}};

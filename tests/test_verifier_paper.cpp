@@ -59,9 +59,8 @@ double pick(const Verification& v, const std::string& key) {
 
 // Simulates the printed engine and checks each expected column to the rounding of inputs and
 // outputs. Inputs marked exact in the paper (bold) are passed as e.g. "12" with extra digits.
-void check_row(const std::string& row, const std::vector<std::string>& inputs,
-               const std::function<Engine(const std::vector<double>&)>& build, const ShotSettings& settings,
-               const std::vector<Expected>& expected) {
+void check_row(const std::string& row, const std::vector<std::string>& inputs, const std::function<Engine(const std::vector<double>&)>& build,
+               const ShotSettings& settings, const std::vector<Expected>& expected) {
   std::vector<double> values;
   for (const auto& text : inputs) values.push_back(printed(text).value);
   const Verification v = verify_engine(build(values), settings);
@@ -104,9 +103,7 @@ struct LargeEffRow {
   const char* mb;
 };
 
-ScaledDesign large_eff_shape(const std::vector<double>& x) {
-  return {x[0], x[2] / x[1], x[4] / (x[3] * 1000), 0, 30, 1};
-}
+ScaledDesign large_eff_shape(const std::vector<double>& x) { return {x[0], x[2] / x[1], x[4] / (x[3] * 1000), 0, 30, 1}; }
 
 // The l = 17 engine of tab:Large_Eff, fitted to the table's capacity and released at max eps.
 ShotSettings at_max_efficiency() {
@@ -121,7 +118,7 @@ struct ReleaseAngles {
   Engine engine;
   Verification v;
   double theta_minus_180, psi, phi_minus_180;  // [deg], as tab:Large_Eff prints them
-  double counterweight_fall;                   // from rest to the release [m]
+  double counterweight_fall;  // from rest to the release [m]
 };
 
 ReleaseAngles fitted_release(const std::vector<double>& x) {
@@ -145,11 +142,33 @@ ReleaseAngles fitted_release(const std::vector<double>& x) {
 TEST_CASE("tab:Large_Eff with Q_eps: efficiencies near 99.5 % and the angles at release", "[verify][paper][stiff]") {
   const std::vector<std::pair<std::vector<std::string>, std::vector<Expected>>> rows = {
       {{"17", "0.800", "0.673", "270", "14.7"},
-       {{"eps", "99.53"}, {"theta", "-1.95"}, {"psi", "-1.98"}, {"phi", "45.1"}, {"A", "44.9"}, {"L1", "0.800"}, {"L2", "0.047"},
-        {"L4", "0.673"}, {"M", "270"}, {"m", "104", 1.5}, {"mb", "14.7"}, {"h", "2", 0.5}, {"fall", "0.09", 0.01}}},
+       {{"eps", "99.53"},
+        {"theta", "-1.95"},
+        {"psi", "-1.98"},
+        {"phi", "45.1"},
+        {"A", "44.9"},
+        {"L1", "0.800"},
+        {"L2", "0.047"},
+        {"L4", "0.673"},
+        {"M", "270"},
+        {"m", "104", 1.5},
+        {"mb", "14.7"},
+        {"h", "2", 0.5},
+        {"fall", "0.09", 0.01}}},
       {{"59", "14.9", "18.2", "71.5", "729"},
-       {{"eps", "99.50"}, {"theta", "-1.22"}, {"psi", "-0.91"}, {"phi", "47.6"}, {"A", "42.6"}, {"L1", "14.9"}, {"L2", "0.25"},
-        {"L4", "18.2"}, {"M", "71.5"}, {"m", "93.5"}, {"mb", "729"}, {"h", "40", 5}, {"fall", "0.5", 0.1}}},
+       {{"eps", "99.50"},
+        {"theta", "-1.22"},
+        {"psi", "-0.91"},
+        {"phi", "47.6"},
+        {"A", "42.6"},
+        {"L1", "14.9"},
+        {"L2", "0.25"},
+        {"L4", "18.2"},
+        {"M", "71.5"},
+        {"m", "93.5"},
+        {"mb", "729"},
+        {"h", "40", 5},
+        {"fall", "0.5", 0.1}}},
   };
   for (const auto& [inputs, expected] : rows) {
     std::vector<double> x;
@@ -170,8 +189,8 @@ TEST_CASE("tab:Large_Eff with Q_eps: efficiencies near 99.5 % and the angles at 
       return r.v.A_deg;
     };
     const ReleaseAngles ours = fitted_release(x);
-    std::printf("tab:Large_Eff l = %s (shape fitted to 450 m, 232 kJ): F_R = %.2f Mg, F_S_perp = %.0f mg\n", inputs[0].c_str(),
-                ours.v.FR_Mg, ours.v.FS_perp_mg);
+    std::printf("tab:Large_Eff l = %s (shape fitted to 450 m, 232 kJ): F_R = %.2f Mg, F_S_perp = %.0f mg\n", inputs[0].c_str(), ours.v.FR_Mg,
+                ours.v.FS_perp_mg);
     const double sling_tension_mg = ours.v.loads[sling_tension_load].value / (ours.engine.m * ours.engine.material.g);
     std::printf("  sling tension up to the release %.0f mg, release height %.2f m, counterweight fall %.3f m\n", sling_tension_mg, ours.v.h,
                 ours.counterweight_fall);
@@ -222,7 +241,7 @@ struct QRow {
   std::function<Engine(const std::vector<double>&)> build;
   double n;
   std::vector<Expected> expected;  // R, T, eps
-  const char* Q;       // the paper's
+  const char* Q;  // the paper's
   const char* Q_ours;  // ours at 4 digits, as docs/verifier.md lists it: pinned, so that a change of eq:F shows
 };
 
@@ -231,21 +250,81 @@ std::vector<QRow> optimised_rows() {
   auto sb2 = [](double F, double th, double l) { return [=](const std::vector<double>& x) { return sketchbook2_engine(F, th, l, x); }; };
   auto dn = [](double th) { return [=](const std::vector<double>& x) { return denny_engine(th, x); }; };
   return {
-      {"SketchBook-I n=1 F=1 30", {"6.13", "5.80", "14.3", "100.000", "660", "5.68"}, sb1(1, 30), 1, {{"R", "450"}, {"T", "235"}, {"eps", "93.1", 1.5}}, "7.41", "6.963"},
-      {"SketchBook-I n=1 F=2/3 30", {"6.20", "5.69", "16.9", "100.000", "601", "6.77"}, sb1(2.0 / 3, 30), 1, {{"R", "450"}, {"T", "234"}, {"eps", "92.6"}}, "6.43", "5.942"},
-      {"SketchBook-I n=1 F=2/3 40", {"6.48", "5.55", "19.1", "100.000", "622", "7.51"}, sb1(2.0 / 3, 40), 1, {{"R", "450"}, {"T", "234"}, {"eps", "91.6"}}, "5.55", "5.258"},
-      {"SketchBook-I n=5", {"6.31", "6.68", "15.6", "101", "611", "6.64"}, sb1(1, 30), 5, {{"R", "450"}, {"T", "235"}, {"eps", "97.5", 1.5}}, "6.38", "6.351"},
-      {"SketchBook-I n=0", {"6.60", "6.04", "13.4", "98.3", "807", "5.29"}, sb1(1, 30), 0, {{"R", "450"}, {"T", "235", 2.5}, {"eps", "87.8", 6}}, "8.11", "7.339"},
+      {"SketchBook-I n=1 F=1 30",
+       {"6.13", "5.80", "14.3", "100.000", "660", "5.68"},
+       sb1(1, 30),
+       1,
+       {{"R", "450"}, {"T", "235"}, {"eps", "93.1", 1.5}},
+       "7.41",
+       "6.963"},
+      {"SketchBook-I n=1 F=2/3 30",
+       {"6.20", "5.69", "16.9", "100.000", "601", "6.77"},
+       sb1(2.0 / 3, 30),
+       1,
+       {{"R", "450"}, {"T", "234"}, {"eps", "92.6"}},
+       "6.43",
+       "5.942"},
+      {"SketchBook-I n=1 F=2/3 40",
+       {"6.48", "5.55", "19.1", "100.000", "622", "7.51"},
+       sb1(2.0 / 3, 40),
+       1,
+       {{"R", "450"}, {"T", "234"}, {"eps", "91.6"}},
+       "5.55",
+       "5.258"},
+      {"SketchBook-I n=5",
+       {"6.31", "6.68", "15.6", "101", "611", "6.64"},
+       sb1(1, 30),
+       5,
+       {{"R", "450"}, {"T", "235"}, {"eps", "97.5", 1.5}},
+       "6.38",
+       "6.351"},
+      {"SketchBook-I n=0",
+       {"6.60", "6.04", "13.4", "98.3", "807", "5.29"},
+       sb1(1, 30),
+       0,
+       {{"R", "450"}, {"T", "235", 2.5}, {"eps", "87.8", 6}},
+       "8.11",
+       "7.339"},
       {"SketchBook-II #1", {"7.00", "26.8", "301", "1696"}, sb2(1, 25, 4.5), 1, {{"R", "426"}, {"T", "677"}, {"eps", "93.3", 2}}, "10.4", "9.400"},
       {"SketchBook-II #2", {"6.80", "26.0", "298", "1682"}, sb2(1, 30, 4.5), 1, {{"R", "407"}, {"T", "641"}, {"eps", "92.9"}}, "10.2", "9.359"},
       {"SketchBook-II #3", {"6.20", "23.7", "299", "1589"}, sb2(1, 40, 4.5), 1, {{"R", "341"}, {"T", "540"}, {"eps", "91.5", 3}}, "10.2", "9.485"},
       {"SketchBook-II #4", {"7.16", "33.4", "248", "1605"}, sb2(1, 30, 5.5), 1, {{"R", "540"}, {"T", "700", 1.5}, {"eps", "93.2"}}, "7.71", "7.203"},
-      {"SketchBook-II #5", {"6.76", "34.9", "343", "1653"}, sb2(2.0 / 3, 30, 5.5), 1, {{"R", "401"}, {"T", "726", 1.5}, {"eps", "91.6"}}, "8.79", "8.004"},
-      {"SketchBook-II #6", {"6.98", "38.7", "299", "1623"}, sb2(2.0 / 3, 30, 6.0), 1, {{"R", "482"}, {"T", "752"}, {"eps", "92.0", 2}}, "7.55", "6.922"},
+      {"SketchBook-II #5",
+       {"6.76", "34.9", "343", "1653"},
+       sb2(2.0 / 3, 30, 5.5),
+       1,
+       {{"R", "401"}, {"T", "726", 1.5}, {"eps", "91.6"}},
+       "8.79",
+       "8.004"},
+      {"SketchBook-II #6",
+       {"6.98", "38.7", "299", "1623"},
+       sb2(2.0 / 3, 30, 6.0),
+       1,
+       {{"R", "482"}, {"T", "752"}, {"eps", "92.0", 2}},
+       "7.55",
+       "6.922"},
       {"SketchBook-II #7", {"6.41", "45.9", "538", "1746"}, sb2(0.5, 30, 6.0), 1, {{"R", "297"}, {"T", "858"}, {"eps", "88.1", 2}}, "9.01", "8.183"},
-      {"Denny Max Q 45", {"0.93", "8.67", "5.25", "6.19", "13.3", "101", "629"}, dn(45), 1, {{"R", "425"}, {"T", "224"}, {"eps", "91.4"}}, "7.0", "6.701"},
-      {"Denny Max Q 30 F=1", {"1.00000", "7.15", "5.23", "5.69", "13.3", "101", "647"}, dn(30), 1, {{"R", "425"}, {"T", "224"}, {"eps", "93.3"}}, "7.8", "7.312"},
-      {"Denny Max Q 30 F=2/3", {"0.666667", "7.06", "5.30", "5.57", "15.7", "101", "591"}, dn(30), 1, {{"R", "425"}, {"T", "224"}, {"eps", "92.2"}}, "6.7", "6.222"},
+      {"Denny Max Q 45",
+       {"0.93", "8.67", "5.25", "6.19", "13.3", "101", "629"},
+       dn(45),
+       1,
+       {{"R", "425"}, {"T", "224"}, {"eps", "91.4"}},
+       "7.0",
+       "6.701"},
+      {"Denny Max Q 30 F=1",
+       {"1.00000", "7.15", "5.23", "5.69", "13.3", "101", "647"},
+       dn(30),
+       1,
+       {{"R", "425"}, {"T", "224"}, {"eps", "93.3"}},
+       "7.8",
+       "7.312"},
+      {"Denny Max Q 30 F=2/3",
+       {"0.666667", "7.06", "5.30", "5.57", "15.7", "101", "591"},
+       dn(30),
+       1,
+       {{"R", "425"}, {"T", "224"}, {"eps", "92.2"}},
+       "6.7",
+       "6.222"},
   };
 }
 
@@ -273,7 +352,8 @@ TEST_CASE("optimised engines of the paper: R, T and eps to rounding, and Q as do
     std::printf("  %-28s Q ours %.3f %% paper %s %% ratio %.3f\n", row.name.c_str(), Q, row.Q, ratio);
     check_printed(row.name + " Q ours", Q, row.Q_ours, 0);
     if (row.n == 5)
-      check_printed(row.name + " Q_5", Q, row.Q, input_rounding_effect(row.inputs, row.build, [&](const Engine& e) { return 100 * verify_engine(e, settings).Q; }));
+      check_printed(row.name + " Q_5", Q, row.Q,
+                    input_rounding_effect(row.inputs, row.build, [&](const Engine& e) { return 100 * verify_engine(e, settings).Q; }));
   }
 }
 
@@ -295,12 +375,11 @@ TEST_CASE("tab:Large_Eff l = 17 rings at appendix B's frequency", "[verify][pape
   }
   REQUIRE(zeros.size() >= 5);
   const double period = (zeros.back() - zeros[1]) / ((zeros.size() - 2) / 2.0);  // skip the first, transient zero
-  const double time_unit = std::sqrt(engine.L2 / engine.material.g);                        // section 3 [s]
+  const double time_unit = std::sqrt(engine.L2 / engine.material.g);  // section 3 [s]
   const ScaledDesign e = scaled_design(engine);
   const double omega = 1 / std::sqrt(e.L() / (e.L() + 1) * e.beam_inertia());
   const double simulated_hz = 1 / (period * time_unit), formula_hz = omega / (2 * M_PI * time_unit);
-  std::printf("tab:Large_Eff l = 17 ringing: simulated %.2f Hz, appendix B formula %.2f Hz, paper prints 42.2 Hz\n",
-              simulated_hz, formula_hz);
+  std::printf("tab:Large_Eff l = 17 ringing: simulated %.2f Hz, appendix B formula %.2f Hz, paper prints 42.2 Hz\n", simulated_hz, formula_hz);
   CHECK(std::abs(simulated_hz / formula_hz - 1) < 0.01);
 }
 
@@ -353,7 +432,7 @@ TEST_CASE("the optimum's Q for each optimised row of tab:Denny and tab:SketchBoo
   struct Row {
     const char* name;
     double R, T, theta_i_deg, F, n;  // [m], [J], [deg], scaled, eq:Q_n
-    double beta2;                    // the row's: Denny's 0.66 % at 45 deg, else 1/300
+    double beta2;  // the row's: Denny's 0.66 % at 45 deg, else 1/300
     const char* Q_paper;
     const char* Q_optimum;  // ours, pinned
   };
@@ -382,7 +461,8 @@ TEST_CASE("the optimum's Q for each optimised row of tab:Denny and tab:SketchBoo
       for (const auto& text : printed_row.inputs) x.push_back(printed(text).value);
       request.starts = {scaled_design(printed_row.build(x))};
       const Optimum from_printed = best_optimum(optimize(request));
-      std::printf("  (%s: from the calculator Q %.4f %%, from the printed engine %.4f %%)\n", row.name, 100 * best.objective, 100 * from_printed.objective);
+      std::printf("  (%s: from the calculator Q %.4f %%, from the printed engine %.4f %%)\n", row.name, 100 * best.objective,
+                  100 * from_printed.objective);
       if (from_printed.objective > best.objective) best = from_printed;
     }
     const double Q = 100 * best.objective;
@@ -393,8 +473,10 @@ TEST_CASE("the optimum's Q for each optimised row of tab:Denny and tab:SketchBoo
     // The finding: for n <= 1 the printed Q lies above the best any design reaches, beyond the
     // rounding of the printed value; for n = 5 some design reaches it.
     const double lowest_printed = printed(row.Q_paper).value - printed(row.Q_paper).half_unit;
-    if (row.n <= 1) CHECK(lowest_printed > Q);
-    else CHECK(Q >= lowest_printed);
+    if (row.n <= 1)
+      CHECK(lowest_printed > Q);
+    else
+      CHECK(Q >= lowest_printed);
   }
 }
 
@@ -426,7 +508,8 @@ TEST_CASE("tab:SketchBook-II rows 6 and 7: the printed L1 against Lb and l", "[v
     double F, L1_printed, L4, M_t, m, mb;
     double R, T_kJ, eps_percent;  // printed
   };
-  for (const Row& row : {Row{"#6", 2.0 / 3, 7.74, 6.98, 38.7, 299, 1623, 482, 752, 92.0}, Row{"#7", 0.5, 7.69, 6.41, 45.9, 538, 1746, 297, 858, 88.1}}) {
+  for (const Row& row :
+       {Row{"#6", 2.0 / 3, 7.74, 6.98, 38.7, 299, 1623, 482, 752, 92.0}, Row{"#7", 0.5, 7.69, 6.41, 45.9, 538, 1746, 297, 858, 88.1}}) {
     const double l = 6.0, from_bold = 9 * l / (l + 1);
     CHECK(std::abs(row.L1_printed - from_bold) > printed("7.74").half_unit);
     auto miss = [&](double L1) {
@@ -434,8 +517,9 @@ TEST_CASE("tab:SketchBook-II rows 6 and 7: the printed L1 against Lb and l", "[v
       return std::array<double, 3>{std::abs(v.capacity.R - row.R), std::abs(v.capacity.T / 1e3 - row.T_kJ), std::abs(100 * v.eps - row.eps_percent)};
     };
     const auto printed_miss = miss(row.L1_printed), bold_miss = miss(from_bold);
-    std::printf("tab:SketchBook-II %s: |R, T, eps - printed| with L1 = %.2f m: %.2f m, %.2f kJ, %.2f %%; with L1 = %.3f m: %.2f m, %.2f kJ, %.2f %%\n", row.name,
-                row.L1_printed, printed_miss[0], printed_miss[1], printed_miss[2], from_bold, bold_miss[0], bold_miss[1], bold_miss[2]);
+    std::printf(
+        "tab:SketchBook-II %s: |R, T, eps - printed| with L1 = %.2f m: %.2f m, %.2f kJ, %.2f %%; with L1 = %.3f m: %.2f m, %.2f kJ, %.2f %%\n",
+        row.name, row.L1_printed, printed_miss[0], printed_miss[1], printed_miss[2], from_bold, bold_miss[0], bold_miss[1], bold_miss[2]);
     for (int k = 0; k < 3; ++k) CHECK(printed_miss[k] < bold_miss[k]);
   }
 }

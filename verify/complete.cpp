@@ -25,15 +25,18 @@ int run_complete(const Options& o) {
     for (const char* name : {"scale", "extrapolate", "branch"})
       if (text.find("{{" + std::string(name) + "}}") != std::string::npos) only_calculator.push_back(option_word(name));
     text = with_words(text, option_word);
-    if (!only_calculator.empty()) text += " (" + join(only_calculator, " and ") + (only_calculator.size() > 1 ? " are options" : " is an option") + " of trebuchet-calc)";
+    if (!only_calculator.empty())
+      text += " (" + join(only_calculator, " and ") + (only_calculator.size() > 1 ? " are options" : " is an option") + " of trebuchet-calc)";
   };
   in_calculator_words(completion.calculator_note);
   if (completion.calculator)
     for (std::string& warning : completion.calculator->warnings) in_calculator_words(warning);
   const Completion* alternative = report.longest ? &*report.longest : nullptr;
   const std::string& longest_note = report.longest_note;
-  if (o.format == Format::json) std::cout << pretty_json(completion_json(completion, request.settings, alternative, longest_note));
-  else std::cout << completion_table(completion, request.settings, o.units, alternative, longest_note);
+  if (o.format == Format::json)
+    std::cout << pretty_json(completion_json(completion, request.settings, alternative, longest_note));
+  else
+    std::cout << completion_table(completion, request.settings, o.units, alternative, longest_note);
   return exit_success;
 }
 

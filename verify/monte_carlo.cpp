@@ -21,8 +21,9 @@ int run_monte_carlo(const Options& o, bool complete) {
   if (!o.input.empty()) throw Error(ErrorKind::usage, "ranges and spreads are for values given as flags; drop the file '" + o.input + "'");
   if (!o.series.empty()) throw Error(ErrorKind::usage, "--series writes the motion of one shot; a Monte Carlo run has many");
   if (o.design.R || o.design.T)
-    throw Error(ErrorKind::usage, "--R and --T check one shot against a predicted capacity; a Monte Carlo run reports the spread of R "
-                                  "and T instead: drop them, or give each value as one number");
+    throw Error(ErrorKind::usage,
+                "--R and --T check one shot against a predicted capacity; a Monte Carlo run reports the spread of R "
+                "and T instead: drop them, or give each value as one number");
   // The run's assumptions are those of each uncertain value at its first number (a range's low
   // end, a spread's mean). A design that is bad input there is refused before the run, with the
   // exit code of bad input: a range must hold only values that make an engine.
@@ -32,15 +33,22 @@ int run_monte_carlo(const Options& o, bool complete) {
   const int samples = o.samples.value_or(complete ? default_completion_samples : default_shot_samples);
   check_monte_carlo_work(samples, shots, complete ? "completions" : "shots");
   const auto start = std::chrono::steady_clock::now();
-  const MonteCarloSummary summary = trebuchet::run_monte_carlo(samples, o.seed, o.threads, [&](std::mt19937_64& random) {
-    return sample_outcome(request, random, option_word);
-  }, progress_bar(complete ? "completions" : "shots"));
+  const MonteCarloSummary summary = trebuchet::run_monte_carlo(
+      samples, o.seed, o.threads, [&](std::mt19937_64& random) { return sample_outcome(request, random, option_word); },
+      progress_bar(complete ? "completions" : "shots"));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<UncertainInput> inputs;
   for (const SpreadInput& spread : o.spreads) inputs.push_back(spread.input);
   const std::vector<FixedInput> fixed = fixed_inputs(request);
-  const MonteCarloReport report{summary, inputs, fixed, describe_release(settings), o.seed, complete ? "the completed engine" : "the shot",
-                                settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"), settings.air.has_value(), seconds,
+  const MonteCarloReport report{summary,
+                                inputs,
+                                fixed,
+                                describe_release(settings),
+                                o.seed,
+                                complete ? "the completed engine" : "the shot",
+                                settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"),
+                                settings.air.has_value(),
+                                seconds,
                                 thread_count(o.threads, static_cast<std::size_t>(summary.samples))};
   if (o.format == Format::json) {
     std::cout << pretty_json(monte_carlo_json(report));

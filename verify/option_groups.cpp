@@ -42,18 +42,24 @@ int draw_rank(const std::string& name) {
 // A value with a unit into `slot` (strictly positive with `positive`). With `spreads`, it may be a
 // range or a spread (uncertainty.hpp): the slot then holds its first number, and the spread is
 // kept for the Monte Carlo run.
-CLI::Option* value_option(CLI::App* app, Options& o, const std::string& name, Slot slot, UnitDimension dimension,
-                          const std::string& help, bool spreads = false, bool positive = false) {
-  return parsed_option(app, name, [&o, name, slot, dimension, spreads, positive](const std::string& text) {
-    const auto spread = parse_spread(text, dimension, name);
-    if (spread && !spreads)
-      throw Error(ErrorKind::usage, name + ": '" + text + "' is a range or a spread; give one value (ranges and spreads are for the "
-                                                          "engine's values, --theta, --psi-i, --target-level and the air, in shot and complete)");
-    slot_in(o, slot) = spread ? spread->a : positive ? parse_positive(text, dimension, name) : parse_value(text, dimension, name);
-    if (!spread) return;
-    const auto after = std::find_if(o.spreads.begin(), o.spreads.end(), [&](const SpreadInput& u) { return draw_rank(u.input.name) > draw_rank(name); });
-    o.spreads.insert(after, {{name, dimension, *spread}, slot.value, slot.setting});
-  }, help);
+CLI::Option* value_option(CLI::App* app, Options& o, const std::string& name, Slot slot, UnitDimension dimension, const std::string& help,
+                          bool spreads = false, bool positive = false) {
+  return parsed_option(
+      app, name,
+      [&o, name, slot, dimension, spreads, positive](const std::string& text) {
+        const auto spread = parse_spread(text, dimension, name);
+        if (spread && !spreads)
+          throw Error(ErrorKind::usage,
+                      name + ": '" + text +
+                          "' is a range or a spread; give one value (ranges and spreads are for the "
+                          "engine's values, --theta, --psi-i, --target-level and the air, in shot and complete)");
+        slot_in(o, slot) = spread ? spread->a : positive ? parse_positive(text, dimension, name) : parse_value(text, dimension, name);
+        if (!spread) return;
+        const auto after = std::find_if(o.spreads.begin(), o.spreads.end(),
+                                        [&](const SpreadInput& u) { return draw_rank(u.input.name) > draw_rank(name); });
+        o.spreads.insert(after, {{name, dimension, *spread}, slot.value, slot.setting});
+      },
+      help);
 }
 
 }  // namespace
@@ -67,8 +73,7 @@ static void input_option(CLI::App* app, Options& o, const InputField& field, boo
 // its own, material_options).
 void input_options(CLI::App* app, Options& o, unsigned operation, std::initializer_list<FieldGroup> groups, bool spreads) {
   for (const InputField& field : input_fields())
-    if ((field.operations & operation) && std::find(groups.begin(), groups.end(), field.group) != groups.end())
-      input_option(app, o, field, spreads);
+    if ((field.operations & operation) && std::find(groups.begin(), groups.end(), field.group) != groups.end()) input_option(app, o, field, spreads);
 }
 
 void engine_options(CLI::App* app, Options& o, bool spreads) {
@@ -87,33 +92,48 @@ void target_level_option(CLI::App* app, Options& o, bool spreads) {
 }
 
 void release_options(CLI::App* app, Options& o) {
-  parsed_option(app, "--quality", [&o](const std::string& text) { o.settings.base.criterion.release = parse_release(text, "--quality"); },
-                "what the release maximises: Q (eq:Q, eq:Q_n), eps (appendix B) or range (Denny) (default Q)");
-  parsed_option(app, "--n", [&o](const std::string& text) {
-    o.settings.base.criterion.n = parse_value(text, UnitDimension::dimensionless, "--n");
-    if (!(o.settings.base.criterion.n >= 0)) throw Error(ErrorKind::bad_number, "--n: '" + text + "' must be 0 or more (eq:Q_n)");
-  }, "exponent of eps in eq:Q_n (default 1)");
+  parsed_option(
+      app, "--quality", [&o](const std::string& text) { o.settings.base.criterion.release = parse_release(text, "--quality"); },
+      "what the release maximises: Q (eq:Q, eq:Q_n), eps (appendix B) or range (Denny) (default Q)");
+  parsed_option(
+      app, "--n",
+      [&o](const std::string& text) {
+        o.settings.base.criterion.n = parse_value(text, UnitDimension::dimensionless, "--n");
+        if (!(o.settings.base.criterion.n >= 0)) throw Error(ErrorKind::bad_number, "--n: '" + text + "' must be 0 or more (eq:Q_n)");
+      },
+      "exponent of eps in eq:Q_n (default 1)");
 }
 
 void integrator_options(CLI::App* app, Options& o) {
-  parsed_option(app, "--stepper", [&o](const std::string& text) { o.settings.base.integrator.stepper = parse_stepper(text, "--stepper"); },
-                "GSL odeiv2 stepper: " + stepper_names() + " (default " + stepper_name(IntegratorSettings{}.stepper) + ")");
+  parsed_option(
+      app, "--stepper", [&o](const std::string& text) { o.settings.base.integrator.stepper = parse_stepper(text, "--stepper"); },
+      "GSL odeiv2 stepper: " + stepper_names() + " (default " + stepper_name(IntegratorSettings{}.stepper) + ")");
   positive_option(app, "--rtol", o.settings.base.integrator.rtol, UnitDimension::dimensionless, "relative tolerance per step (default 1e-11)");
-  positive_option(app, "--atol", o.settings.base.integrator.atol, UnitDimension::dimensionless, "absolute tolerance per step, scaled units (default 1e-11)");
+  positive_option(app, "--atol", o.settings.base.integrator.atol, UnitDimension::dimensionless,
+                  "absolute tolerance per step, scaled units (default 1e-11)");
 }
 
 void format_option(CLI::App* app, Options& o, bool csv_too) {
-  parsed_option(app, "--units", [&o](const std::string& text) { o.units = parse_unit_system(text, "--units"); },
-                "si or imperial: how tables print values (imperial: ft, lb, lbf, ft·lbf, psi, with SI beside; JSON and CSV stay SI)");
-  parsed_option(app, "--format", [&o, csv_too](const std::string& text) {
-    if (text == "table") o.format = Format::table;
-    else if (text == "json") o.format = Format::json;
-    else if (text == "csv" && csv_too) o.format = Format::csv;
-    else throw Error(ErrorKind::usage, "--format: '" + text + "' is not a format; use table" + (csv_too ? ", json or csv" : " or json"));
-  }, csv_too ? "table, json or csv (default table)" : "table or json (default table)");
+  parsed_option(
+      app, "--units", [&o](const std::string& text) { o.units = parse_unit_system(text, "--units"); },
+      "si or imperial: how tables print values (imperial: ft, lb, lbf, ft·lbf, psi, with SI beside; JSON and CSV stay SI)");
+  parsed_option(
+      app, "--format",
+      [&o, csv_too](const std::string& text) {
+        if (text == "table")
+          o.format = Format::table;
+        else if (text == "json")
+          o.format = Format::json;
+        else if (text == "csv" && csv_too)
+          o.format = Format::csv;
+        else
+          throw Error(ErrorKind::usage, "--format: '" + text + "' is not a format; use table" + (csv_too ? ", json or csv" : " or json"));
+      },
+      csv_too ? "table, json or csv (default table)" : "table or json (default table)");
   if (csv_too)
-    parsed_option(app, "--digits", [&o](const std::string& text) { o.digits = parse_digits(text, "--digits"); },
-                  "significant digits of CSV numbers (default " + std::to_string(default_csv_digits) + "; 17: exact)");
+    parsed_option(
+        app, "--digits", [&o](const std::string& text) { o.digits = parse_digits(text, "--digits"); },
+        "significant digits of CSV numbers (default " + std::to_string(default_csv_digits) + "; 17: exact)");
 }
 
 void material_options(CLI::App* app, Options& o, const std::string& what, bool beta2) {
@@ -127,20 +147,25 @@ void material_options(CLI::App* app, Options& o, const std::string& what, bool b
     const std::string name = field.flag;
     const std::string help = row == &V::beta2 ? "allowed beam bending u2/L2 that sizes " + what + " (default: " + what + "'s own, else 1/300)"
                                               : std::string(field.help) + " (default: the input's, else " + field.fallback + ")";
-    parsed_option(app, name, [&o, name, member = member, dimension = field.dimension](const std::string& text) {
-      o.material.*member = parse_positive(text, dimension, name);
-    }, help);
+    parsed_option(
+        app, name,
+        [&o, name, member = member, dimension = field.dimension](const std::string& text) {
+          o.material.*member = parse_positive(text, dimension, name);
+        },
+        help);
   }
-  parsed_option(app, "--rupture", [&o](const std::string& text) {
-    o.material.modulus_of_rupture = parse_positive(text, UnitDimension::pressure, "--rupture");
-  }, "modulus of rupture of the beam's wood, the stress it breaks at (default 120MPa, 1 % of 12GPa, section 4)");
+  parsed_option(
+      app, "--rupture", [&o](const std::string& text) { o.material.modulus_of_rupture = parse_positive(text, UnitDimension::pressure, "--rupture"); },
+      "modulus of rupture of the beam's wood, the stress it breaks at (default 120MPa, 1 % of 12GPa, section 4)");
 }
 
 void block_options(CLI::App* app, Options& o) {
-  parsed_option(app, "--theta", [&o](const std::string& text) { o.design.theta_i_deg = parse_theta(text, "--theta"); },
-                "initial beam angle theta_i [deg] (default 30)");
-  parsed_option(app, "--F", [&o](const std::string& text) { o.design.F = parse_positive(text, UnitDimension::dimensionless, "--F"); },
-                "counterweight arm fraction (L2+L3)/H (default 2/3)");
+  parsed_option(
+      app, "--theta", [&o](const std::string& text) { o.design.theta_i_deg = parse_theta(text, "--theta"); },
+      "initial beam angle theta_i [deg] (default 30)");
+  parsed_option(
+      app, "--F", [&o](const std::string& text) { o.design.F = parse_positive(text, UnitDimension::dimensionless, "--F"); },
+      "counterweight arm fraction (L2+L3)/H (default 2/3)");
 }
 
 void threads_option(CLI::App* app, Options& o, const std::string& help) {
@@ -149,31 +174,40 @@ void threads_option(CLI::App* app, Options& o, const std::string& help) {
 
 // The air: shot's, complete's and calibrate's.
 void air_options(CLI::App* app, Options& o) {
-  app->add_flag("--air", o.settings.air, "fly through air (quadratic drag on a sphere) instead of vacuum; with --quality range the release maximises the range in air");
+  app->add_flag("--air", o.settings.air,
+                "fly through air (quadratic drag on a sphere) instead of vacuum; with --quality range the release maximises the range in air");
   app->add_flag("--drag-in-sling", o.settings.drag_in_sling,
                 "with --air: the air acts before the release too, on the projectile in the trough and the sling and on the rope (--rope-diameter)");
   value_option(app, o, "--air-density", Slot{nullptr, &SettingsValues::air_density}, UnitDimension::density,
                "density of the air (default 1.2kg/m3) [" + unit_list(UnitDimension::density) + "]", true, true);
-  parsed_option(app, "--cd", [&o](const std::string& text) {
-    if (text == "Re") o.settings.drag_of_reynolds = true;
-    else if (text.find_first_of("0123456789") == std::string::npos)
-      throw Error(ErrorKind::usage, "--cd: '" + text + "' is not a drag coefficient; give a number, e.g. 0.47, or Re for Cd(Re)");
-    else o.settings.drag_coefficient = parse_positive(text, UnitDimension::dimensionless, "--cd");
-  }, "drag coefficient of the sphere (default 0.47), or Re for Cd(Re) of a smooth sphere");
-  parsed_option(app, "--projectile", [&o](const std::string& text) {
-    if (text == "stone" || text == "iron") {
-      o.settings.projectile_density = text == "stone" ? 2500 : 7870;
-      return;
-    }
-    if (text.find_first_of("0123456789") == std::string::npos)
-      throw Error(ErrorKind::usage, "--projectile: '" + text + "' is not a projectile; give stone, iron or a density, e.g. 7870kg/m3");
-    o.settings.projectile_density = parse_positive(text, UnitDimension::density, "--projectile");
-  }, "stone (2500kg/m3, the default), iron (7870kg/m3) or a density: gives the sphere's size");
+  parsed_option(
+      app, "--cd",
+      [&o](const std::string& text) {
+        if (text == "Re")
+          o.settings.drag_of_reynolds = true;
+        else if (text.find_first_of("0123456789") == std::string::npos)
+          throw Error(ErrorKind::usage, "--cd: '" + text + "' is not a drag coefficient; give a number, e.g. 0.47, or Re for Cd(Re)");
+        else
+          o.settings.drag_coefficient = parse_positive(text, UnitDimension::dimensionless, "--cd");
+      },
+      "drag coefficient of the sphere (default 0.47), or Re for Cd(Re) of a smooth sphere");
+  parsed_option(
+      app, "--projectile",
+      [&o](const std::string& text) {
+        if (text == "stone" || text == "iron") {
+          o.settings.projectile_density = text == "stone" ? 2500 : 7870;
+          return;
+        }
+        if (text.find_first_of("0123456789") == std::string::npos)
+          throw Error(ErrorKind::usage, "--projectile: '" + text + "' is not a projectile; give stone, iron or a density, e.g. 7870kg/m3");
+        o.settings.projectile_density = parse_positive(text, UnitDimension::density, "--projectile");
+      },
+      "stone (2500kg/m3, the default), iron (7870kg/m3) or a density: gives the sphere's size");
   value_option(app, o, "--wind", Slot{nullptr, &SettingsValues::wind}, UnitDimension::speed,
                "horizontal wind toward the target, e.g. 5m/s or -20km/h (against) [" + unit_list(UnitDimension::speed) + "]", true);
-  parsed_option(app, "--range-from", [&o](const std::string& text) {
-    o.settings.base.range_from_release = parse_range_from(text, "--range-from");
-  }, "pivot (the paper's: to the target level, the default) or release (Denny's: from the release point back to its height)");
+  parsed_option(
+      app, "--range-from", [&o](const std::string& text) { o.settings.base.range_from_release = parse_range_from(text, "--range-from"); },
+      "pivot (the paper's: to the target level, the default) or release (Denny's: from the release point back to its height)");
 }
 
 // The air, and Monte Carlo: shot's and complete's.

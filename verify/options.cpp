@@ -12,15 +12,18 @@ namespace trebuchet::verify {
 Subcommands declare_subcommands(CLI::App& app, Options& o) {
   o.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   Subcommands s;
-  s.shot = app.add_subcommand("shot", "range, energy, efficiency, forces and quality at the best release of a design "
-                                      "(a JSON file, - for stdin, or flags), checked against a predicted capacity");
+  s.shot = app.add_subcommand("shot",
+                              "range, energy, efficiency, forces and quality at the best release of a design "
+                              "(a JSON file, - for stdin, or flags), checked against a predicted capacity");
   s.fit = app.add_subcommand("fit", "keep a design's shape (l, l4, mu_b, theta_i, F); fit mu and the size to --R and --T, then shoot");
   s.optimize = app.add_subcommand("optimize", "the ab-initio optimum for --R and --T (or --R and --m) at --theta and --F (section 5)");
-  s.derive_table = app.add_subcommand("derive-table", "re-derive tab:CPNC for --theta and --F: optimise along --X and fit eq:f_ZX "
-                                                      "(JSON for the calculator's --table)");
+  s.derive_table = app.add_subcommand("derive-table",
+                                      "re-derive tab:CPNC for --theta and --F: optimise along --X and fit eq:f_ZX "
+                                      "(JSON for the calculator's --table)");
   s.merge = app.add_subcommand("merge", "join the parts written by derive-table --shard into one table");
-  s.complete = app.add_subcommand("complete", "complete an engine from what a source attests (any of --Lb --L1 --L2 --H --L4 --M --m --mb --D "
-                                              "--theta --F): keep those, choose the rest for the highest Q (or --quality range)");
+  s.complete = app.add_subcommand("complete",
+                                  "complete an engine from what a source attests (any of --Lb --L1 --L2 --H --L4 --M --m --mb --D "
+                                  "--theta --F): keep those, choose the rest for the highest Q (or --quality range)");
 
   for (CLI::App* sub : {s.shot, s.fit}) {
     const bool shot = sub == s.shot;
@@ -35,8 +38,9 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
   }
   air_and_sampling_options(s.shot, o);
 
-  s.calibrate = app.add_subcommand("calibrate", "fit an engine's friction to the range it was measured to throw (--measured 34.4m±1.5m), "
-                                                "report the losses, and predict other projectiles (--predict-m) or counterweights (--predict-M)");
+  s.calibrate = app.add_subcommand("calibrate",
+                                   "fit an engine's friction to the range it was measured to throw (--measured 34.4m±1.5m), "
+                                   "report the losses, and predict other projectiles (--predict-m) or counterweights (--predict-M)");
   {
     CLI::App* c = s.calibrate;
     engine_options(c, o, false);
@@ -65,9 +69,12 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
   // The capacity to design for, and a beam ratio to hold; each positive.
   for (auto member : {&DesignValues::R, &DesignValues::T, &DesignValues::m, &DesignValues::l}) {
     const InputField& field = field_of(member);
-    parsed_option(opt, field.flag, [&o, name = std::string(field.flag), member = member, dimension = field.dimension](const std::string& text) {
-      o.design.*member = parse_positive(text, dimension, name);
-    }, option_help(field));
+    parsed_option(
+        opt, field.flag,
+        [&o, name = std::string(field.flag), member = member, dimension = field.dimension](const std::string& text) {
+          o.design.*member = parse_positive(text, dimension, name);
+        },
+        option_help(field));
   }
   for (CLI::App* sub : {s.optimize, s.derive_table}) {
     block_options(sub, o);

@@ -25,25 +25,25 @@ namespace trebuchet::verify {
 enum class Format { table, json, csv };
 
 struct Options {
-  std::string input;                     ///< a design file, "-" for stdin; empty: the flags
-  DesignValues design;                   ///< the table's flags (input_fields): the engine, --R and --T, complete's --Lb, --H, --l
-  double tolerance = 0.02;               ///< on a predicted R and T, relative
-  SettingsValues settings;               ///< the release, the integrator, the target level and the air
-  std::optional<MeasuredRange> measured; ///< calibrate: the measured range [m]
+  std::string input;  ///< a design file, "-" for stdin; empty: the flags
+  DesignValues design;  ///< the table's flags (input_fields): the engine, --R and --T, complete's --Lb, --H, --l
+  double tolerance = 0.02;  ///< on a predicted R and T, relative
+  SettingsValues settings;  ///< the release, the integrator, the target level and the air
+  std::optional<MeasuredRange> measured;  ///< calibrate: the measured range [m]
   std::vector<double> predict_m, predict_M;  ///< calibrate: masses to predict with [kg]
-  MaterialOverrides material;            ///< --beta2, --wood-density, --youngs-modulus, --rupture, --g
-  UnitSystem units = UnitSystem::si;     ///< --units: how tables print values
+  MaterialOverrides material;  ///< --beta2, --wood-density, --youngs-modulus, --rupture, --g
+  UnitSystem units = UnitSystem::si;  ///< --units: how tables print values
   Format format = Format::table;
   int digits = default_csv_digits;
-  std::string series, plot;              ///< output paths
-  double series_dt_s = 0;                ///< [s]
+  std::string series, plot;  ///< output paths
+  double series_dt_s = 0;  ///< [s]
   int threads = 1;
-  SweepSpec sweep;                       ///< derive-table: its X grid (the rest from the other options)
+  SweepSpec sweep;  ///< derive-table: its X grid (the rest from the other options)
   std::optional<Shard> shard;
-  std::vector<std::string> parts;        ///< merge
-  std::optional<int> samples;            ///< Monte Carlo; not given: default_shot_samples or default_completion_samples
+  std::vector<std::string> parts;  ///< merge
+  std::optional<int> samples;  ///< Monte Carlo; not given: default_shot_samples or default_completion_samples
   std::uint64_t seed = 1;
-  std::vector<SpreadInput> spreads;      ///< the values given as ranges or spreads, in the order they are drawn
+  std::vector<SpreadInput> spreads;  ///< the values given as ranges or spreads, in the order they are drawn
 };
 
 /// The subcommands, each with its options declared on it.

@@ -6,12 +6,12 @@
 
 namespace trebuchet::verify {
 
-int run_shot(const Options& options, bool fit);            // shot.cpp: shot and fit
+int run_shot(const Options& options, bool fit);  // shot.cpp: shot and fit
 int run_monte_carlo(const Options& options, bool complete);  // monte_carlo.cpp: a value given as a range or a spread
-int run_complete(const Options& options);                  // complete.cpp
-int run_calibrate(const Options& options);                 // calibrate.cpp
-int run_optimize(const Options& options);                  // tables.cpp
-int run_derive_table(const Options& options);              // tables.cpp
-int run_merge(const Options& options);                     // tables.cpp
+int run_complete(const Options& options);  // complete.cpp
+int run_calibrate(const Options& options);  // calibrate.cpp
+int run_optimize(const Options& options);  // tables.cpp
+int run_derive_table(const Options& options);  // tables.cpp
+int run_merge(const Options& options);  // tables.cpp
 
 }  // namespace trebuchet::verify

@@ -44,15 +44,18 @@ int run_many(const Options& o, const DesignInputs& in, const DesignCheck& check)
   const std::size_t count = in.rows.size();
   std::vector<DesignReport> reports(count);
   std::vector<std::optional<Error>> errors(count);
-  for_each_index(count, o.threads, [&](std::size_t i) {
-    try {
-      // Unreadable, or failed upstream (the calculator's "error" column).
-      if (!in.rows[i].error.empty()) throw Error(ErrorKind::usage, in.rows[i].error);
-      reports[i] = check_design(read_engine(in.rows[i].design, in.where[i]), check);
-    } catch (const Error& e) {
-      errors[i] = e;
-    }
-  }, progress_bar("designs"));
+  for_each_index(
+      count, o.threads,
+      [&](std::size_t i) {
+        try {
+          // Unreadable, or failed upstream (the calculator's "error" column).
+          if (!in.rows[i].error.empty()) throw Error(ErrorKind::usage, in.rows[i].error);
+          reports[i] = check_design(read_engine(in.rows[i].design, in.where[i]), check);
+        } catch (const Error& e) {
+          errors[i] = e;
+        }
+      },
+      progress_bar("designs"));
   std::vector<std::string> header = in.passed_columns;
   for (const std::string& column : verification_csv_header()) header.push_back(column);
   header.push_back("error");
@@ -102,19 +105,23 @@ int run_shot(const Options& o, bool fit) {
     in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}, an array of them, or CSV with a header (docs/csv.md)"),
                             o.input);
   } else if (!has_engine_flags(o.design)) {
-    throw Error(ErrorKind::usage, "no design; give a JSON or CSV file (or - for stdin), or flags like --L1 6.13m --L2 1.08m --F 1 --L4 5.8m --M 14.3t --m 100kg --mb 660kg");
+    throw Error(
+        ErrorKind::usage,
+        "no design; give a JSON or CSV file (or - for stdin), or flags like --L1 6.13m --L2 1.08m --F 1 --L4 5.8m --M 14.3t --m 100kg --mb 660kg");
   }
   const std::size_t count = o.input.empty() ? 1 : in.rows.size();
   // --R/--T on the command line give the capacity of a single design.
   if (!o.input.empty() && !in.single && (o.design.R || o.design.T))
-    throw Error(ErrorKind::usage, "--R and --T give the capacity of one design, but " + source_name(o.input) + " holds " +
-                                      std::to_string(count) + "; give R and T in each design instead");
+    throw Error(ErrorKind::usage,
+                "--R and --T give the capacity of one design, but " + source_name(o.input) + " holds " + std::to_string(count) +
+                    "; give R and T in each design instead");
   if (!o.series.empty() && count != 1)
     throw Error(ErrorKind::usage, "--series writes the motion of one design; the input holds " + std::to_string(count));
   if (!o.plot.empty() && count != 1) throw Error(ErrorKind::usage, "--plot draws one design; the input holds " + std::to_string(count));
   if (!o.series.empty()) refuse_output_over_input(o.series, "series", {o.input});
   if (!o.series.empty() && !o.plot.empty() && std::filesystem::weakly_canonical(o.series) == std::filesystem::weakly_canonical(o.plot))
-    throw Error(ErrorKind::usage, "--series and --plot name the same path '" + o.plot + "'; give the series a file and the pictures a folder of their own");
+    throw Error(ErrorKind::usage,
+                "--series and --plot name the same path '" + o.plot + "'; give the series a file and the pictures a folder of their own");
   if (!o.input.empty() && !in.single) return run_many(o, in, check);
 
   nlohmann::json passed = nlohmann::json::object();
@@ -124,9 +131,12 @@ int run_shot(const Options& o, bool fit) {
   EngineRecord record = engine_record(values, o.input.empty() ? "" : in.where.front());
   record.passed = std::move(passed);
   const DesignReport report = check_design(record, check);
-  if (o.format == Format::json) std::cout << pretty_json(report.json);
-  else if (o.format == Format::csv) std::cout << csv_line(verification_csv_header()) << csv_line(report.csv);
-  else std::cout << report.table;
+  if (o.format == Format::json)
+    std::cout << pretty_json(report.json);
+  else if (o.format == Format::csv)
+    std::cout << csv_line(verification_csv_header()) << csv_line(report.csv);
+  else
+    std::cout << report.table;
   return report.outside_tolerance ? exit_outside_tolerance : exit_success;
 }
 

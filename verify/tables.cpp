@@ -33,13 +33,17 @@ int print_derived(const nlohmann::ordered_json& json, const std::vector<double>&
 }  // namespace
 
 void sweep_options(CLI::App* derive, Options& o) {
-  parsed_option(derive, "--X", [&o](const std::string& text) {
-    char c1 = 0, c2 = 0, rest = 0;
-    if (std::sscanf(text.c_str(), "%lf%c%lf%c%lf%c", &o.sweep.X_from, &c1, &o.sweep.X_to, &c2, &o.sweep.X_step, &rest) != 5 || c1 != ':' || c2 != ':')
-      throw Error(ErrorKind::usage, "--X: '" + text + "' is not from:to:step; e.g. --X -0.55:0.55:0.05");
-  }, "X points, from:to:step (eq:Xi) (default -0.55:0.55:0.05)");
-  parsed_option(derive, "--shard", [&o](const std::string& text) { o.shard = parse_shard(text); },
-                "run part k of N of the X points, e.g. 2/8, for merge");
+  parsed_option(
+      derive, "--X",
+      [&o](const std::string& text) {
+        char c1 = 0, c2 = 0, rest = 0;
+        if (std::sscanf(text.c_str(), "%lf%c%lf%c%lf%c", &o.sweep.X_from, &c1, &o.sweep.X_to, &c2, &o.sweep.X_step, &rest) != 5 || c1 != ':' ||
+            c2 != ':')
+          throw Error(ErrorKind::usage, "--X: '" + text + "' is not from:to:step; e.g. --X -0.55:0.55:0.05");
+      },
+      "X points, from:to:step (eq:Xi) (default -0.55:0.55:0.05)");
+  parsed_option(
+      derive, "--shard", [&o](const std::string& text) { o.shard = parse_shard(text); }, "run part k of N of the X points, e.g. 2/8, for merge");
 }
 
 int run_optimize(const Options& o) {
@@ -52,8 +56,10 @@ int run_optimize(const Options& o) {
     all.push_back(optimum_json(optimum, seconds));
     if (o.format == Format::table) std::cout << optimum_table(optimum, request.settings, o.units) << "\n";
   }
-  if (o.format == Format::json) std::cout << pretty_json(all);
-  else std::cout << "wall time " << format_significant(seconds, 3) << " s\n";
+  if (o.format == Format::json)
+    std::cout << pretty_json(all);
+  else
+    std::cout << "wall time " << format_significant(seconds, 3) << " s\n";
   return exit_success;
 }
 
@@ -70,10 +76,11 @@ int run_derive_table(const Options& o) {
   // The work, decided before the run: the shard's X points at about 1100 shots each (an optimum).
   const long points = (static_cast<long>(sweep_grid(spec).size()) - part.shard.k + part.shard.n) / part.shard.n;
   if (points * shots_per_sweep_point > max_run_shots)
-    throw Error(ErrorKind::usage, "--X gives " + std::to_string(points) + " X points to this run, about " +
-                                      std::to_string(points * shots_per_sweep_point) + " shots, more than the " + std::to_string(max_run_shots) +
-                                      " a run may take (about 30 s on two cores); give at most " + std::to_string(max_run_shots / shots_per_sweep_point) +
-                                      " points a run: a coarser --X, or --shard k/N over several runs (docs/table_derivation.md)");
+    throw Error(ErrorKind::usage,
+                "--X gives " + std::to_string(points) + " X points to this run, about " + std::to_string(points * shots_per_sweep_point) +
+                    " shots, more than the " + std::to_string(max_run_shots) + " a run may take (about 30 s on two cores); give at most " +
+                    std::to_string(max_run_shots / shots_per_sweep_point) +
+                    " points a run: a coarser --X, or --shard k/N over several runs (docs/table_derivation.md)");
   const auto start = std::chrono::steady_clock::now();
   part.points = run_sweep(spec, part.shard, o.threads, progress_bar("X points"));
   int shots = 0;

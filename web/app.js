@@ -8,7 +8,8 @@
   // The library's table of inputs (api fields, docs/inputs.md), read once the module is ready:
   // the calculator's givens (the capacity first), complete's attested values and the engine's
   // values come from it, each with its label and dimension.
-  let INPUTS = [], QUANTITIES = [], EXAMPLES = {}, ATTESTED = [], ENGINE = [];
+  let INPUTS = [], QUANTITIES = [], ATTESTED = [], ENGINE = [];
+  const EXAMPLES = {};
   function readInputs() {
     INPUTS = JSON.parse(module.fields('{}')).fields;
     const givens = INPUTS.filter((f) => f.operations.includes('given'));

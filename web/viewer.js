@@ -66,7 +66,7 @@
     svg('rect', { x: 0, y: 0, width, height, fill: 'white' }, root);
     if (spec.title) text(root, width / 2, 18, spec.title, { 'text-anchor': 'middle', 'font-weight': 'bold', 'font-size': 13 });
     if (spec.subtitle) text(root, width / 2, 35, spec.subtitle, { 'text-anchor': 'middle', 'font-size': 11, fill: '#444' });
-    let xs = [], ys = [];
+    const xs = [], ys = [];
     for (const line of spec.lines)
       line.x.forEach((x, i) => { const y = line.y[i]; if (y !== null && isFinite(y) && isFinite(x)) { xs.push(x); ys.push(y); } });
     let [x0, x1] = spec.xRange || [Math.min(...xs), Math.max(...xs)];
@@ -367,7 +367,7 @@
     container.appendChild(tables);
     const f = s.frames, r = s.moments.release, tRelease = f.t[r], tEnd = tRelease + s.flight.time;
     // The engine's view holds every point of phases I and II; the flight's view the whole path.
-    let xs = [-0.3 * e.H, 0.3 * e.H], ys = [0, e.H];
+    const xs = [-0.3 * e.H, 0.3 * e.H], ys = [0, e.H];
     for (let i = 0; i < f.t.length; i++) {
       for (const k of ['hinge', 'counterweight', 'tip', 'projectile']) if (f[k + '_x'][i] !== null && (f.phase[i] !== 'III' || k !== 'projectile')) { xs.push(f[k + '_x'][i]); ys.push(f[k + '_y'][i]); }
     }

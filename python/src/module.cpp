@@ -13,8 +13,9 @@ PYBIND11_MODULE(_trebuchet, module) {
   module.doc() = "trebuchet's library as JSON requests (trebuchet/app/api.hpp); use the package trebuchet";
   namespace py = pybind11;
   const auto bind = [&](const char* name, trebuchet::api::Request request, const char* doc) {
-    module.def(name, [request](const std::string& text) { return trebuchet::api::answer_text(request, text, "docs/python.md"); }, py::arg("request"), doc,
-               py::call_guard<py::gil_scoped_release>());
+    module.def(
+        name, [request](const std::string& text) { return trebuchet::api::answer_text(request, text, "docs/python.md"); }, py::arg("request"), doc,
+        py::call_guard<py::gil_scoped_release>());
   };
   bind("design", trebuchet::api::design, "the calculator's design: JSON text in, JSON text out");
   bind("shot", trebuchet::api::shot, "one shot of a design");

@@ -44,9 +44,8 @@ void measure(const char* label, const std::vector<DesignRequest>& list, int runs
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
     rates.push_back(static_cast<double>(list.size()) / elapsed.count());
   }
-  std::printf("%-24s median %.3g designs/s (%d runs of %zu; min %.3g, max %.3g)  [checksum %.6g]\n", label,
-              median(rates), runs, list.size(), *std::min_element(rates.begin(), rates.end()),
-              *std::max_element(rates.begin(), rates.end()), checksum);
+  std::printf("%-24s median %.3g designs/s (%d runs of %zu; min %.3g, max %.3g)  [checksum %.6g]\n", label, median(rates), runs, list.size(),
+              *std::min_element(rates.begin(), rates.end()), *std::max_element(rates.begin(), rates.end()), checksum);
 }
 
 }  // namespace

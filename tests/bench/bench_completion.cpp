@@ -57,8 +57,8 @@ int main(int argc, char** argv) {
     const double seconds = median_seconds([&] { completion = complete_engine(c.request); }, budget);
     all.push_back(seconds);
     const Engine& e = completion.engine;
-    std::printf("%s,%.3f,%d,%.10g,%.6g,%.6g,%.6g,%.6g,%.6g\n", c.name.c_str(), 1e3 * seconds, completion.simulations, completion.verification.Q,
-                e.L1, e.L2, e.L4, e.M, e.m);
+    std::printf("%s,%.3f,%d,%.10g,%.6g,%.6g,%.6g,%.6g,%.6g\n", c.name.c_str(), 1e3 * seconds, completion.simulations, completion.verification.Q, e.L1,
+                e.L2, e.L4, e.M, e.m);
   }
   std::printf("# median of the cases' medians: %.3f ms\n", 1e3 * median(all));
 }

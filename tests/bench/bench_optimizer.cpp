@@ -40,10 +40,17 @@ int main(int argc, char** argv) {
   const std::vector<Case> cases = {
       {"tab:Denny Max Q (425 m, 224 kJ)", 425, 224e3, 30, 1},
       {"tab:SketchBook-I (450 m, 235 kJ)", 450, 235e3, 30, 2.0 / 3},
-      on_axis(-0.5, 30, 1), on_axis(0, 30, 1), on_axis(0.34, 30, 1), on_axis(0.55, 30, 1),
-      on_axis(0, 30, 2.0 / 3), on_axis(0, 40, 2.0 / 3), on_axis(0, 40, 1),
+      on_axis(-0.5, 30, 1),
+      on_axis(0, 30, 1),
+      on_axis(0.34, 30, 1),
+      on_axis(0.55, 30, 1),
+      on_axis(0, 30, 2.0 / 3),
+      on_axis(0, 40, 2.0 / 3),
+      on_axis(0, 40, 1),
   };
-  std::printf("capacity,median_wall_s,shots,Q_percent,long_search_shots,long_search_restarts,restarts_within_1e-4,long_search_Q_percent,Q_shortfall_percent\n");
+  std::printf(
+      "capacity,median_wall_s,shots,Q_percent,long_search_shots,long_search_restarts,restarts_within_1e-4,long_search_Q_percent,Q_shortfall_"
+      "percent\n");
   std::vector<double> walls, shortfalls;
   for (const Case& c : cases) {
     OptimizeRequest request;

@@ -54,7 +54,8 @@ void work_precision(const Design& d, double budget) {
   const Verification ref = verify_engine(d.engine, settings_for(d, Stepper::rk8pd, 1e-13));
   const Verification check = verify_engine(d.engine, settings_for(d, Stepper::rkck, 1e-13));
   std::fprintf(stderr, "%s: reference rk8pd 1e-13, cross-check rkck 1e-13: R %.1e T %.1e eps %.1e Q %.1e\n", d.name.c_str(),
-               relative(check.capacity.R, ref.capacity.R), relative(check.capacity.T, ref.capacity.T), relative(check.eps, ref.eps), relative(check.Q, ref.Q));
+               relative(check.capacity.R, ref.capacity.R), relative(check.capacity.T, ref.capacity.T), relative(check.eps, ref.eps),
+               relative(check.Q, ref.Q));
   std::printf("reference,%s,rkck,1e-13,,%.3e,%.3e,%.3e,%.3e,,cross-check\n", d.name.c_str(), relative(check.capacity.R, ref.capacity.R),
               relative(check.capacity.T, ref.capacity.T), relative(check.eps, ref.eps), relative(check.Q, ref.Q));
   // The defaults themselves (rtol = atol = 1e-11, off the grid below, where atol = rtol/10).
@@ -72,7 +73,8 @@ void work_precision(const Design& d, double budget) {
         const Verification v = verify_engine(d.engine, s);
         const double seconds = median_seconds([&] { verify_engine(d.engine, s); }, budget);
         std::printf("shot,%s,%s,%.0e,%.4e,%.3e,%.3e,%.3e,%.3e,%.2e,\n", d.name.c_str(), stepper_name(stepper).c_str(), tol, seconds,
-                    relative(v.capacity.R, ref.capacity.R), relative(v.capacity.T, ref.capacity.T), relative(v.eps, ref.eps), relative(v.Q, ref.Q), v.energy_drift);
+                    relative(v.capacity.R, ref.capacity.R), relative(v.capacity.T, ref.capacity.T), relative(v.eps, ref.eps), relative(v.Q, ref.Q),
+                    v.energy_drift);
       } catch (const Error& error) {
         std::string reason = error.what();
         reason = reason.substr(0, reason.find(';'));
@@ -91,9 +93,12 @@ void calculator_point(const char* name, double R, double T, double budget) {
   request.second = {Quantity::T, T};
   const ScalingTable& table = builtin_scaling_table();
   const OptimalEngine design = design_optimal_engine(table, request);
-  const double seconds = median_seconds([&] {
-    for (int k = 0; k < 1000; ++k) design_optimal_engine(table, request);
-  }, budget) / 1000;
+  const double seconds = median_seconds(
+                             [&] {
+                               for (int k = 0; k < 1000; ++k) design_optimal_engine(table, request);
+                             },
+                             budget) /
+      1000;
   const Verification v = verify_engine(design.engine, ShotSettings{});
   std::printf("calculator,%s,tab:CPNC,,%.4e,%.3e,%.3e,,,,\n", name, seconds, relative(v.capacity.R, R), relative(v.capacity.T, T));
 }
@@ -107,8 +112,8 @@ void optimizer_point(const char* name, double R, double T, double F, double budg
   const Optimum best = optimize(request).front();
   const double seconds = median_seconds([&] { optimize(request); }, budget);
   const Verification fresh = verify_engine(best.fit.engine, ShotSettings{});
-  std::printf("optimizer,%s,nmsimplex2,,%.4e,%.3e,%.3e,,,%d,Q=%.5g\n", name, seconds, relative(fresh.capacity.R, R),
-              relative(fresh.capacity.T, T), best.simulations, best.objective);
+  std::printf("optimizer,%s,nmsimplex2,,%.4e,%.3e,%.3e,,,%d,Q=%.5g\n", name, seconds, relative(fresh.capacity.R, R), relative(fresh.capacity.T, T),
+              best.simulations, best.objective);
 }
 
 // Cost against stiffness: the small-l4 shape of tab:Large_Eff with l from 4 to 60, at default

@@ -22,7 +22,7 @@ namespace {
 
 struct Scored {
   double R_deviation = 0, T_deviation = 0;  // of the design as the calculator gives it, relative
-  double Q_fitted = 0;                      // of its shape fitted to the capacity
+  double Q_fitted = 0;  // of its shape fitted to the capacity
 };
 
 Scored score(const ScalingTable& table, double R, double T, double theta_i_deg, double F) {
@@ -64,14 +64,14 @@ int main(int argc, char** argv) {
         request.capacity = capacity;
         request.theta_i_deg = block.theta_i_deg, request.F = block.F;
         const double optimum = best_optimum(optimize(request)).objective;
-        std::printf("%g,%.4f,%+.2f,%.2f,%.0f,%+.4f,%+.4f,%+.4f,%+.4f,%.4f,%.4f,%.4f\n", block.theta_i_deg, block.F, X, R, T, p.R_deviation, p.T_deviation,
-                    d.R_deviation, d.T_deviation, 100 * p.Q_fitted, 100 * d.Q_fitted, 100 * optimum);
+        std::printf("%g,%.4f,%+.2f,%.2f,%.0f,%+.4f,%+.4f,%+.4f,%+.4f,%.4f,%.4f,%.4f\n", block.theta_i_deg, block.F, X, R, T, p.R_deviation,
+                    p.T_deviation, d.R_deviation, d.T_deviation, 100 * p.Q_fitted, 100 * d.Q_fitted, 100 * optimum);
         sum_paper += p.Q_fitted / optimum, sum_derived += d.Q_fitted / optimum;
         derived_wins += d.Q_fitted > p.Q_fitted;
         ++count;
       }
-      std::printf("# theta %g F %.3f: mean Q / optimum Q: paper's table %.4f, re-derived %.4f; re-derived higher in %d of %d\n", block.theta_i_deg, block.F,
-                  sum_paper / count, sum_derived / count, derived_wins, count);
+      std::printf("# theta %g F %.3f: mean Q / optimum Q: paper's table %.4f, re-derived %.4f; re-derived higher in %d of %d\n", block.theta_i_deg,
+                  block.F, sum_paper / count, sum_derived / count, derived_wins, count);
     }
   } catch (const Error& e) {
     std::fprintf(stderr, "compare-tables: %s\n", e.what());

@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
     gp << "# Made by figure-fz (tests/bench/figure_fz.cpp) for scripts/figures.sh.\nset encoding utf8\n"
        << "set terminal svg size 1200,650 dynamic font 'sans,11'\nset output '" << argv[2] << "/" << tag << ".svg'\n"
        << "set logscale y\nset grid\nset samples 60\nset xrange [-0.6:0.6]\nunset key\n"
-       << "set multiplot layout 2,4 title \"fig:fZ_vs_X for θi = " << ours.theta_i_deg << "°, F = " << (tag.substr(tag.rfind('_') + 1)) 
+       << "set multiplot layout 2,4 title \"fig:fZ_vs_X for θi = " << ours.theta_i_deg << "°, F = " << (tag.substr(tag.rfind('_') + 1))
        << ": the sweep's optima (points), our fitted f_Z (lines) and the paper's (dashed)\\nall over the paper's Z0; X of eq:Xi\" noenhanced\n";
     for (Param param : all_params) {
       const int k = index(param);

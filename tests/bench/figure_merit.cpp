@@ -23,7 +23,7 @@ using namespace trebuchet;
 namespace {
 
 struct Sample {
-  double u[3];   // relative offsets of l, l4, mu_b from the optimum
+  double u[3];  // relative offsets of l, l4, mu_b from the optimum
   double q = 0;  // Q/Q_max; 0: no design delivers the capacity
 };
 
@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
   const char* labels[3] = {"l = L_1/L_2", "l_4 = L_4/L_1", "μ_b = m_b/M"};
   for (const char* file : {"merit_narrow.dat", "merit_wide.dat"})
     for (int k = 0; k < 3; ++k)
-      gp << (k == 2 ? "set xtics rotate by -30\n" : "set xtics norotate\n") << "set xlabel '" << labels[k] << "'\nset ylabel 'Q/Q_{max} [%]'\nplot '" << dir << "/" << file << "' using " << k + 1
-         << ":4 with points pt 7 ps 0.3 lc rgb '#1f5fbf'\n";
+      gp << (k == 2 ? "set xtics rotate by -30\n" : "set xtics norotate\n") << "set xlabel '" << labels[k] << "'\nset ylabel 'Q/Q_{max} [%]'\nplot '"
+         << dir << "/" << file << "' using " << k + 1 << ":4 with points pt 7 ps 0.3 lc rgb '#1f5fbf'\n";
   gp << "unset multiplot\n";
 }

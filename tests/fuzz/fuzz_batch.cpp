@@ -19,17 +19,18 @@
 extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
   std::istringstream input(std::string(reinterpret_cast<const char*>(data), size));
   try {
-    trebuchet::run_batch(input, trebuchet::builtin_scaling_table(), trebuchet::DesignRequest{},
-                         [](const std::vector<std::string>& passed) {
-                           for (const std::string& name : passed)
-                             if (!trebuchet::is_utf8(name)) std::abort();
-                         },
-                         [](const trebuchet::BatchRow& row) {
-                           if (row.design) require_writes([&] { trebuchet::design_csv_text(*row.design, 17); });
-                           for (const std::string& cell : row.passed)
-                             if (!trebuchet::is_utf8(cell)) std::abort();
-                           if (row.error && !trebuchet::is_utf8(row.error->what())) std::abort();
-                         });
+    trebuchet::run_batch(
+        input, trebuchet::builtin_scaling_table(), trebuchet::DesignRequest{},
+        [](const std::vector<std::string>& passed) {
+          for (const std::string& name : passed)
+            if (!trebuchet::is_utf8(name)) std::abort();
+        },
+        [](const trebuchet::BatchRow& row) {
+          if (row.design) require_writes([&] { trebuchet::design_csv_text(*row.design, 17); });
+          for (const std::string& cell : row.passed)
+            if (!trebuchet::is_utf8(cell)) std::abort();
+          if (row.error && !trebuchet::is_utf8(row.error->what())) std::abort();
+        });
   } catch (const trebuchet::Error&) {
   }
   return 0;

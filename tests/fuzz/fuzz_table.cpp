@@ -16,8 +16,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
   try {
-    const trebuchet::ScalingTable table =
-        trebuchet::parse_scaling_table(std::string(reinterpret_cast<const char*>(data), size), "fuzz");
+    const trebuchet::ScalingTable table = trebuchet::parse_scaling_table(std::string(reinterpret_cast<const char*>(data), size), "fuzz");
     for (const trebuchet::TableBlock& block : table.blocks) {
       trebuchet::DesignRequest request;
       request.first = {trebuchet::Quantity::R, 150};

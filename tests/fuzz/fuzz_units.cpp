@@ -12,9 +12,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   using trebuchet::UnitDimension;
-  for (UnitDimension d : {UnitDimension::length, UnitDimension::mass, UnitDimension::energy, UnitDimension::dimensionless,
-                          UnitDimension::angle, UnitDimension::acceleration, UnitDimension::pressure, UnitDimension::density,
-                          UnitDimension::time, UnitDimension::speed}) {
+  for (UnitDimension d : {UnitDimension::length, UnitDimension::mass, UnitDimension::energy, UnitDimension::dimensionless, UnitDimension::angle,
+                          UnitDimension::acceleration, UnitDimension::pressure, UnitDimension::density, UnitDimension::time, UnitDimension::speed}) {
     try {
       if (!std::isfinite(trebuchet::parse_value(text, d, "--x"))) std::abort();
     } catch (const trebuchet::Error& e) {

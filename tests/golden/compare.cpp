@@ -36,8 +36,8 @@ std::string read(const std::filesystem::path& path) {
 
 struct Renames {
   std::vector<std::pair<std::string, std::string>> text;  // old -> new, plain text
-  std::set<std::string> splice;                           // JSON objects whose members moved up one level
-  std::set<std::string> cost_keys;                        // JSON keys that report cost, not results
+  std::set<std::string> splice;  // JSON objects whose members moved up one level
+  std::set<std::string> cost_keys;  // JSON keys that report cost, not results
 };
 
 Renames read_renames(const std::string& path) {
@@ -48,9 +48,12 @@ Renames read_renames(const std::string& path) {
     if (line.empty() || line[0] == '#') continue;
     const auto tab = line.find('\t');
     const std::string a = line.substr(0, tab), b = tab == std::string::npos ? "" : line.substr(tab + 1);
-    if (a == "splice") r.splice.insert(b);
-    else if (a == "cost") r.cost_keys.insert(b);
-    else r.text.emplace_back(a, b);
+    if (a == "splice")
+      r.splice.insert(b);
+    else if (a == "cost")
+      r.cost_keys.insert(b);
+    else
+      r.text.emplace_back(a, b);
   }
   return r;
 }
@@ -183,8 +186,7 @@ int main(int argc, char** argv) {
       c.note("not run");
     } else {
       const int expected_code = std::stoi(file(expected_dir, ".code")), actual_code = std::stoi(file(actual_dir, ".code"));
-      if (expected_code != actual_code)
-        c.note("exit code " + std::to_string(expected_code) + " became " + std::to_string(actual_code));
+      if (expected_code != actual_code) c.note("exit code " + std::to_string(expected_code) + " became " + std::to_string(actual_code));
       std::string expected = file(expected_dir, ".out");
       for (const auto& [from, to] : renames.text)
         for (std::size_t at = expected.find(from); at != std::string::npos; at = expected.find(from, at + to.size()))
@@ -200,8 +202,8 @@ int main(int argc, char** argv) {
       if (expected_code <= 1) c.compare_text(file(expected_dir, ".err"), file(actual_dir, ".err"), "stderr", true);
     }
     std::set<std::string> added(c.added_keys.begin(), c.added_keys.end());
-    std::cout << (c.problems.empty() ? "same    " : "DIFFERS ") << name << "  (largest relative difference "
-              << c.worst << ", tolerance " << c.tolerance.rtol << " / " << c.tolerance.atol << (added.empty() ? "" : ", " + std::to_string(added.size()) + " keys added") << ")\n";
+    std::cout << (c.problems.empty() ? "same    " : "DIFFERS ") << name << "  (largest relative difference " << c.worst << ", tolerance "
+              << c.tolerance.rtol << " / " << c.tolerance.atol << (added.empty() ? "" : ", " + std::to_string(added.size()) + " keys added") << ")\n";
     for (const std::string& p : c.problems) std::cout << "    " << p << "\n";
     failed += !c.problems.empty();
   }

@@ -18,7 +18,7 @@ namespace {
 
 using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, 1, 1>>;
 using Vector6 = std::array<double, 6>;  // theta, psi, phi, then their rates
-constexpr int force_count = 4;          // F_S_perp, |F_R|, F_Rh, -F_Rh
+constexpr int force_count = 4;  // F_S_perp, |F_R|, F_Rh, -F_Rh
 using Forces = std::array<double, force_count>;
 
 // A point of the engine as a sum of pendulum arms, each length (sin a, -cos a) with
@@ -58,7 +58,7 @@ using Vec2 = Eigen::Matrix<S, 2, 1>;
 template <class S>
 struct Point {
   Vec2<S> position, velocity;
-  Vec2<S> bias;                     // its acceleration when every angular acceleration is zero
+  Vec2<S> bias;  // its acceleration when every angular acceleration is zero
   Eigen::Matrix<S, 2, 3> jacobian;  // d position / d (theta, psi, phi)
 };
 
@@ -83,7 +83,7 @@ Point<S> point_of(const std::array<Arm, N>& arms, const S* y) {
 template <class S>
 struct Motion {
   Eigen::Matrix<S, 3, 1> acceleration;  // theta'', psi'', phi''
-  S normal;                             // the trough's push on the projectile (phase I)
+  S normal;  // the trough's push on the projectile (phase I)
   std::array<S, force_count> forces;
   Point<S> projectile;
 };
@@ -97,9 +97,8 @@ Motion<S> motion(const Params& p, bool trough, const S* y) {
   const Vec2<S> up(S(0), S(1));
   Eigen::Matrix<S, 3, 3> mass = cw.jacobian.transpose() * cw.jacobian + p.mu * pr.jacobian.transpose() * pr.jacobian;
   mass(0, 0) += p.inertia;
-  const Eigen::Matrix<S, 3, 1> generalised = -cw.jacobian.transpose() * (up + cw.bias) -
-                                             p.mu * pr.jacobian.transpose() * (up + pr.bias) -
-                                             p.mu_b * cm.jacobian.transpose() * up;
+  const Eigen::Matrix<S, 3, 1> generalised = -cw.jacobian.transpose() * (up + cw.bias) - p.mu * pr.jacobian.transpose() * (up + pr.bias) -
+      p.mu_b * cm.jacobian.transpose() * up;
   Motion<S> m;
   m.projectile = pr;
   if (trough) {

@@ -18,14 +18,14 @@ struct Design {
 /// The release that maximises Q of eq:Q, with what the issue compares; scaled.
 struct Shot {
   double t_liftoff, t_release;
-  double rho;      ///< R/L2 from the pivot to impact at the base's level
-  double tau_e;    ///< T/(M g L2), eq:T with the height above the base
-  double eps;      ///< eq:Aux
-  double speed;    ///< v/(g L2)^(1/2)
-  double height;   ///< h/L2 above the base
-  double Q;        ///< eq:Q
+  double rho;  ///< R/L2 from the pivot to impact at the base's level
+  double tau_e;  ///< T/(M g L2), eq:T with the height above the base
+  double eps;  ///< eq:Aux
+  double speed;  ///< v/(g L2)^(1/2)
+  double height;  ///< h/L2 above the base
+  double Q;  ///< eq:Q
   int onset = -1;  ///< the release sits where this running extreme starts to grow (0 F_S_perp,
-                   ///< 1 |F_R|, 2 max F_Rh, 3 max -F_Rh); -1 at a smooth maximum
+      ///< 1 |F_R|, 2 max F_Rh, 3 max -F_Rh); -1 at a smooth maximum
 };
 
 /// Shoots `design`; throws std::runtime_error when it has no lift-off or no forward release.

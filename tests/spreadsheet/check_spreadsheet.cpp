@@ -118,9 +118,17 @@ void check_design(const Cells& sheet, const ScalingTable& table, const DesignReq
   ++designs;
   if (status != "ok") return fail(where + ": the sheet says '" + status + "', the calculator gives a design");
   const Engine& e = design->engine;
-  const std::pair<const char*, double> outputs[] = {
-      {"R", design->capacity.R}, {"T", design->capacity.T}, {"L1", e.L1}, {"L2", e.L2}, {"L3", e.L3}, {"L4", e.L4},
-      {"D", e.D}, {"M", e.M}, {"m", e.m}, {"mb", e.mb}, {"amplification", design->amplification}};
+  const std::pair<const char*, double> outputs[] = {{"R", design->capacity.R},
+                                                    {"T", design->capacity.T},
+                                                    {"L1", e.L1},
+                                                    {"L2", e.L2},
+                                                    {"L3", e.L3},
+                                                    {"L4", e.L4},
+                                                    {"D", e.D},
+                                                    {"M", e.M},
+                                                    {"m", e.m},
+                                                    {"mb", e.mb},
+                                                    {"amplification", design->amplification}};
   for (const auto& [label, value] : outputs) close_to(sheet, label, value, where);
   close_to(sheet, "T in kJ", design->capacity.T / 1e3, where);
   close_to(sheet, "M in t", e.M / 1e3, where);
@@ -138,8 +146,7 @@ struct Case {
   std::string name;
 };
 
-DesignRequest request_of(Quantity a, double va, Quantity b, double vb, const TableBlock& block, BranchChoice branch,
-                         const Material& material) {
+DesignRequest request_of(Quantity a, double va, Quantity b, double vb, const TableBlock& block, BranchChoice branch, const Material& material) {
   DesignRequest request = SpreadsheetInputs::example(a, va, b, vb);
   request.theta_i_deg = block.theta_i_deg;
   request.F = block.F;
@@ -175,14 +182,16 @@ std::vector<Case> cases(const ScalingTable& table) {
     const double X = segment->X_min + (0.05 + 0.9 * unit(random)) * (segment->X_max - segment->X_min);
     const Capacity capacity = capacity_at({X, -1 + 3 * unit(random)}, table.R0, table.T0);
     const SizeFactors to_material = size_factors(1, table.reference, 1, material);
-    const BranchChoice branch = segment->branch == Branch::none ? branches[k % 3] : (segment->branch == Branch::lower ? BranchChoice::lower : BranchChoice::automatic);
+    const BranchChoice branch = segment->branch == Branch::none ? branches[k % 3]
+                                                                : (segment->branch == Branch::lower ? BranchChoice::lower : BranchChoice::automatic);
     c.inputs.capacity = request_of(Quantity::R, capacity.R, Quantity::T, capacity.T * to_material.energy, *block, branch, material);
     // The other sheets take their givens from the calculator's (R, T) optimum.
     const OptimalEngine optimum = design_optimal_engine(table, c.inputs.capacity);
     // Every fifteenth case lies beyond the table (R eight times larger): the calculator refuses.
     if (k % 15 == 14) c.inputs.capacity.first.value *= 8;
     const Quantity other = log_linear[1 + static_cast<std::size_t>(k) % (log_linear.size() - 1)];
-    c.inputs.range_and_one = request_of(Quantity::R, optimum.capacity.R, other, quantity_value(optimum, other), *block, BranchChoice::automatic, material);
+    c.inputs.range_and_one = request_of(Quantity::R, optimum.capacity.R, other, quantity_value(optimum, other), *block, BranchChoice::automatic,
+                                        material);
     const auto [qi, qj] = pairs[static_cast<std::size_t>(k) % pairs.size()];
     c.inputs.any_pair = request_of(qi, quantity_value(optimum, qi), qj, quantity_value(optimum, qj), *block, BranchChoice::automatic, material);
     c.inputs.engine = optimum.engine;
@@ -213,8 +222,8 @@ int run(const fs::path& dir) {
         << value << "</value></prop></item>\n</oor:items>\n";
     // CSV of every sheet (-1), comma, quote, UTF-8, full precision rather than as shown.
     const std::string command = "soffice -env:UserInstallation=file://" + fs::absolute(profile).string() +
-                                " --headless --convert-to 'csv:Text - txt - csv (StarCalc):44,34,76,1,,0,false,true,false,false,false,-1' --outdir '" +
-                                (dir / mode).string() + "'" + files + " > '" + (dir / mode).string() + ".log' 2>&1";
+        " --headless --convert-to 'csv:Text - txt - csv (StarCalc):44,34,76,1,,0,false,true,false,false,false,-1' --outdir '" +
+        (dir / mode).string() + "'" + files + " > '" + (dir / mode).string() + ".log' 2>&1";
     if (std::system(command.c_str()) != 0) {
       std::cout << "FAIL LibreOffice did not convert the workbooks (see " << (dir / mode).string() << ".log); install libreoffice-calc-nogui\n";
       return 1;
@@ -234,8 +243,8 @@ int run(const fs::path& dir) {
     // The derived sheet against the calculator's fields of the same engine.
     const Engine& e = c.inputs.engine;
     const ScaledDesign s = scaled_design(e);
-    const std::pair<const char*, double> derived[] = {{"H", pivot_height(e)}, {"L3", e.L3}, {"Lb", beam_length(e)}, {"l", s.l},
-                                                      {"l4", s.l4}, {"L", e.L3 / e.L2}, {"mu", s.mu}, {"mu_b", s.mu_b}, {"K", s.K()}};
+    const std::pair<const char*, double> derived[] = {{"H", pivot_height(e)}, {"L3", e.L3}, {"Lb", beam_length(e)}, {"l", s.l},  {"l4", s.l4},
+                                                      {"L", e.L3 / e.L2},     {"mu", s.mu}, {"mu_b", s.mu_b},       {"K", s.K()}};
     for (const auto& [label, value] : derived) close_to(recalculated["derived"], label, value, c.name + " 'derived'");
     Engine under_material = e;
     under_material.material = c.inputs.material;
@@ -245,8 +254,16 @@ int run(const fs::path& dir) {
       DesignRequest scaled = c.inputs.capacity;
       const OptimalEngine model = scale_optimal_engine(design_optimal_engine(table, scaled), c.inputs.model_scale);
       const Engine& me = model.engine;
-      const std::pair<const char*, double> model_values[] = {{"R", model.capacity.R}, {"T", model.capacity.T}, {"L1", me.L1}, {"L2", me.L2},
-                                                             {"L3", me.L3}, {"L4", me.L4}, {"D", me.D}, {"M", me.M}, {"m", me.m}, {"mb", me.mb}};
+      const std::pair<const char*, double> model_values[] = {{"R", model.capacity.R},
+                                                             {"T", model.capacity.T},
+                                                             {"L1", me.L1},
+                                                             {"L2", me.L2},
+                                                             {"L3", me.L3},
+                                                             {"L4", me.L4},
+                                                             {"D", me.D},
+                                                             {"M", me.M},
+                                                             {"m", me.m},
+                                                             {"mb", me.mb}};
       for (const auto& [label, value] : model_values) close_to(recalculated["model scaling"], label, value, c.name + " 'model scaling'");
     } catch (const Error&) {
       // No full-size design: the model sheet has nothing to match.
@@ -254,8 +271,8 @@ int run(const fs::path& dir) {
   }
   std::cout << all.size() << " workbooks, " << std::size(sheets) << " sheets each: " << compared_cached
             << " numbers recalculated by LibreOffice against the cached ones, worst relative difference " << worst_cached << "; "
-            << compared_calculator << " outputs against the calculator, worst relative difference " << worst_calculator << "; "
-            << designs << " designs and " << refusals << " refusals of the calculator, each matched by the sheet's status\n";
+            << compared_calculator << " outputs against the calculator, worst relative difference " << worst_calculator << "; " << designs
+            << " designs and " << refusals << " refusals of the calculator, each matched by the sheet's status\n";
   std::cout << (failures == 0 ? "all agree\n" : std::to_string(failures) + " failures\n");
   return failures == 0 ? 0 : 1;
 }

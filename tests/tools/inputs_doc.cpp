@@ -15,8 +15,8 @@ using namespace trebuchet;
 std::string code(const std::string& text) { return "`" + text + "`"; }
 
 std::string operations(unsigned bits) {
-  const std::pair<unsigned, const char*> names[] = {{op_given, "calc given"}, {op_calculator, "calc"}, {op_shot, "shot"},
-                                                    {op_complete, "complete"}, {op_optimize, "optimize"}};
+  const std::pair<unsigned, const char*> names[] = {
+      {op_given, "calc given"}, {op_calculator, "calc"}, {op_shot, "shot"}, {op_complete, "complete"}, {op_optimize, "optimize"}};
   std::vector<std::string> out;
   for (const auto& [bit, name] : names)
     if (bits & bit) out.emplace_back(name);
@@ -38,12 +38,11 @@ int main() {
                "other key passes through and is named in the answer (`passed`). Operations: *calc given*,\n"
                "one of the calculator's two givens; *calc*, a setting of the calculator; *shot* (also fit,\n"
                "calibrate and a Monte Carlo run of shots), *complete* and *optimize*.\n\n";
-  const std::pair<FieldGroup, const char*> groups[] = {
-      {FieldGroup::engine, "The engine (eq:Parameters) and its initial angles"},
-      {FieldGroup::alternative, "Values that stand in for the engine's"},
-      {FieldGroup::capacity, "A capacity"},
-      {FieldGroup::material, "The material"},
-      {FieldGroup::part, "The engine as built"}};
+  const std::pair<FieldGroup, const char*> groups[] = {{FieldGroup::engine, "The engine (eq:Parameters) and its initial angles"},
+                                                       {FieldGroup::alternative, "Values that stand in for the engine's"},
+                                                       {FieldGroup::capacity, "A capacity"},
+                                                       {FieldGroup::material, "The material"},
+                                                       {FieldGroup::part, "The engine as built"}};
   for (const auto& [group, title] : groups) {
     std::cout << "## " << title << "\n\n| key | flag | unit | operations | default | range | meaning |\n|---|---|---|---|---|---|---|\n";
     for (const InputField& field : input_fields()) {
@@ -52,7 +51,8 @@ int main() {
       for (const char* alias : field.aliases) key += " (" + code(alias) + ")";
       const std::string unit = field.dimension == UnitDimension::angle ? "deg" : *field.unit ? field.unit : "–";
       std::cout << "| " << key << " | " << code(field.flag) << " | " << unit << " | " << operations(field.operations) << " | "
-                << (*field.fallback ? field.fallback : "") << " | " << field.range << " | " << field.help << " (e.g. " << code(field.example) << ") |\n";
+                << (*field.fallback ? field.fallback : "") << " | " << field.range << " | " << field.help << " (e.g. " << code(field.example)
+                << ") |\n";
     }
     std::cout << "\n";
   }

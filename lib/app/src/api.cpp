@@ -52,8 +52,9 @@ std::string key_word(std::string_view name) {
 std::optional<double> positive_value(const json& request, const std::string& key, UnitDimension dimension, bool zero_allowed = false) {
   const auto value = read_value(request, key, dimension, "");
   if (value && !(zero_allowed ? *value >= 0 : *value > 0))
-    throw Error(ErrorKind::bad_number, "{{" + key + "}} = " + format_significant(*value, 6) + " must be " +
-                                           (zero_allowed ? "0 or more" : "positive") + "; give a value " + (zero_allowed ? ">= 0" : "> 0"));
+    throw Error(ErrorKind::bad_number,
+                "{{" + key + "}} = " + format_significant(*value, 6) + " must be " + (zero_allowed ? "0 or more" : "positive") + "; give a value " +
+                    (zero_allowed ? ">= 0" : "> 0"));
   return value;
 }
 
@@ -114,7 +115,9 @@ SettingsValues settings_values_of(const json& request) {
     } else if (given.is_boolean() || given == "vacuum") {
       v.air = given == true;
     } else {
-      throw Error(ErrorKind::usage, "{{air}}: " + brief_json(given) + " is no air; give false (vacuum), true (the standard air) or an object like {\"wind\": \"5m/s\"}");
+      throw Error(
+          ErrorKind::usage,
+          "{{air}}: " + brief_json(given) + " is no air; give false (vacuum), true (the standard air) or an object like {\"wind\": \"5m/s\"}");
     }
   }
   return v;
@@ -152,7 +155,8 @@ DesignValues values_of(const json& object, unsigned operation, const std::string
     v.*field.member = read_value(plain, field.key, field.dimension, where);
     for (const char* alias : field.aliases)
       if (const auto value = read_value(plain, alias, field.dimension, where)) {
-        if (v.*field.member) throw Error(ErrorKind::usage, where + "." + field.key + " and " + where + "." + alias + " are one value given twice; keep one");
+        if (v.*field.member)
+          throw Error(ErrorKind::usage, where + "." + field.key + " and " + where + "." + alias + " are one value given twice; keep one");
         v.*field.member = value;
       }
   }
@@ -209,8 +213,9 @@ ordered_json design(const json& request) {
   if (givens.size() != 2) {
     std::vector<std::string> names;
     for (Quantity q : all_quantities) names.emplace_back(quantity_name(q));
-    throw Error(ErrorKind::given_count, "found " + std::to_string(givens.size()) + " given(s); give exactly two of " + join(names, ", ") +
-                                            ", e.g. {\"R\": \"150m\", \"m\": \"50kg\"}");
+    throw Error(ErrorKind::given_count,
+                "found " + std::to_string(givens.size()) + " given(s); give exactly two of " + join(names, ", ") +
+                    ", e.g. {\"R\": \"150m\", \"m\": \"50kg\"}");
   }
   r.first = givens[0], r.second = givens[1];
   const auto theta = read_value(request, request.contains("theta") ? "theta" : "theta_i_deg", UnitDimension::angle, "");
@@ -240,18 +245,21 @@ ordered_json optimize(const json& request) {
     const bool positive = field.group == FieldGroup::capacity || field.group == FieldGroup::material || field.member == &DesignValues::m;
     for (const char* name : names_of(field)) {
       const auto value = positive ? positive_value(request, name, field.dimension) : read_value(request, name, field.dimension, "");
-      if (value && v.*field.member) throw Error(ErrorKind::usage, std::string("{{") + field.key + "}} and {{" + name + "}} are one value given twice; keep one");
+      if (value && v.*field.member)
+        throw Error(ErrorKind::usage, std::string("{{") + field.key + "}} and {{" + name + "}} are one value given twice; keep one");
       if (value) v.*field.member = value;
     }
   }
   ordered_json all = ordered_json::array();
-  for (const Optimum& optimum : trebuchet::optimize(optimize_request(v, settings_of(request), overrides_of(request)))) all.push_back(optimum_json(optimum, 0));
+  for (const Optimum& optimum : trebuchet::optimize(optimize_request(v, settings_of(request), overrides_of(request))))
+    all.push_back(optimum_json(optimum, 0));
   return all;
 }
 
 ordered_json shot(const json& request) {
   require_keys(request, with_settings({"design", "tolerance", "fit", "series"}), "shot");
-  if (!request.contains("design")) throw Error(ErrorKind::usage, "{{design}} is missing; give the engine, e.g. {\"design\": {\"L1\": \"6.13m\", ...}}");
+  if (!request.contains("design"))
+    throw Error(ErrorKind::usage, "{{design}} is missing; give the engine, e.g. {\"design\": {\"L1\": \"6.13m\", ...}}");
   DesignCheck check;
   check.settings = settings_of(request);
   check.material = overrides_of(request);
@@ -260,15 +268,17 @@ ordered_json shot(const json& request) {
   const DesignReport report = check_design(read_engine(request["design"], "design"), check);
   ordered_json answer = report.json;
   // The series is of the engine the answer reports (fitted first with "fit"), from its shot.
-  if (flag_of(request, "series"))
-    answer["series"] = shot_series_json(shot_series(report.engine, check.settings, report.verification), report.engine);
+  if (flag_of(request, "series")) answer["series"] = shot_series_json(shot_series(report.engine, check.settings, report.verification), report.engine);
   return answer;
 }
 
 ordered_json complete(const json& request) {
   require_keys(request, with_settings({"attested"}), "complete");
-  if (!request.contains("attested")) throw Error(ErrorKind::usage, "{{attested}} is missing; give what the source attests, e.g. {\"attested\": {\"Lb\": \"9.5m\", \"M\": \"3t\", \"m\": \"50kg\"}}");
-  return completion_answer(completion_request(values_of(request["attested"], op_complete, "attested", middle), settings_of(request), overrides_of(request)));
+  if (!request.contains("attested"))
+    throw Error(ErrorKind::usage,
+                "{{attested}} is missing; give what the source attests, e.g. {\"attested\": {\"Lb\": \"9.5m\", \"M\": \"3t\", \"m\": \"50kg\"}}");
+  return completion_answer(
+      completion_request(values_of(request["attested"], op_complete, "attested", middle), settings_of(request), overrides_of(request)));
 }
 
 ordered_json monte_carlo(const json& request) {
@@ -278,7 +288,8 @@ ordered_json monte_carlo(const json& request) {
     throw Error(ErrorKind::usage, "give {{design}} (a shot of each sample) or {{attested}} (a completion of each sample), one of them");
   const std::string where = completes ? "attested" : "design";
   MonteCarloRequest run;
-  run.values = values_of(request[where], completes ? op_complete : op_shot, where, [](const Spread& s) { return s.a; }, &run.spreads);
+  run.values = values_of(
+      request[where], completes ? op_complete : op_shot, where, [](const Spread& s) { return s.a; }, &run.spreads);
   run.completes = completes;
   run.where = where;
   run.material = overrides_of(request);
@@ -286,10 +297,11 @@ ordered_json monte_carlo(const json& request) {
   const ShotSettings settings = shot_settings(run.settings);
   // As the program does: the design at each spread's first number must be an engine.
   const std::int64_t shots = shots_per_sample(run);
-  const double samples_given = read_value(request, "samples", UnitDimension::dimensionless, "")
-                                   .value_or(completes ? default_completion_samples : default_shot_samples);
+  const double samples_given =
+      read_value(request, "samples", UnitDimension::dimensionless, "").value_or(completes ? default_completion_samples : default_shot_samples);
   if (!(samples_given >= 1 && samples_given <= max_run_shots) || samples_given != std::floor(samples_given))
-    throw Error(ErrorKind::bad_number, "{{samples}} = " + format_significant(samples_given, 6) + " must be a whole number from 1 to " + std::to_string(max_run_shots));
+    throw Error(ErrorKind::bad_number,
+                "{{samples}} = " + format_significant(samples_given, 6) + " must be a whole number from 1 to " + std::to_string(max_run_shots));
   const int samples = static_cast<int>(samples_given);
   check_monte_carlo_work(samples, shots, completes ? "completions" : "shots");
   const double seed_value = read_value(request, "seed", UnitDimension::dimensionless, "").value_or(1);
@@ -307,8 +319,10 @@ ordered_json monte_carlo(const json& request) {
     ordered_json part = ordered_json::array();
     for (auto i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(first + count); ++i) {
       const SampleOutcome o = run_sample(seed, i, sample);
-      if (o.failure.empty()) part.push_back(o.values);
-      else part.push_back({{"failure", o.failure}, {"kind", kind_name(o.failure_kind)}});
+      if (o.failure.empty())
+        part.push_back(o.values);
+      else
+        part.push_back({{"failure", o.failure}, {"kind", kind_name(o.failure_kind)}});
     }
     return {{"samples", samples}, {"outcomes", part}};
   }
@@ -336,8 +350,16 @@ ordered_json monte_carlo(const json& request) {
   std::vector<UncertainInput> inputs;
   for (const SpreadInput& spread : run.spreads) inputs.push_back(spread.input);
   const std::vector<FixedInput> fixed = fixed_inputs(run);
-  const MonteCarloReport report{summary, inputs, fixed, describe_release(settings), seed, completes ? "the completed engine" : "the shot",
-                                settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"), settings.air.has_value(), 0, 1};
+  const MonteCarloReport report{summary,
+                                inputs,
+                                fixed,
+                                describe_release(settings),
+                                seed,
+                                completes ? "the completed engine" : "the shot",
+                                settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"),
+                                settings.air.has_value(),
+                                0,
+                                1};
   ordered_json answer = monte_carlo_json(report);
   answer.erase("wall_time_s");  // a time is the caller's to measure; the report is the same on any machine
   return answer;
@@ -356,9 +378,19 @@ ordered_json fields(const json& request) {
     ordered_json units = ordered_json::array();
     for (const UnitFactor& unit : unit_factors())
       if (unit.dimension == field.dimension) units.push_back(unit.suffix);
-    rows.push_back({{"key", field.key}, {"flag", field.flag}, {"aliases", field.aliases}, {"dimension", dimension_name(field.dimension)},
-                    {"unit", field.unit}, {"units", units}, {"group", group_names[static_cast<int>(field.group)]}, {"operations", operations},
-                    {"label", field.label}, {"help", field.help}, {"example", field.example}, {"default", field.fallback}, {"range", field.range}});
+    rows.push_back({{"key", field.key},
+                    {"flag", field.flag},
+                    {"aliases", field.aliases},
+                    {"dimension", dimension_name(field.dimension)},
+                    {"unit", field.unit},
+                    {"units", units},
+                    {"group", group_names[static_cast<int>(field.group)]},
+                    {"operations", operations},
+                    {"label", field.label},
+                    {"help", field.help},
+                    {"example", field.example},
+                    {"default", field.fallback},
+                    {"range", field.range}});
   }
   return {{"fields", rows}};
 }

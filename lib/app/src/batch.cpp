@@ -18,7 +18,7 @@ enum class ColumnRole { given, theta, F, branch, passed };
 
 struct Column {
   ColumnRole role;
-  std::string key;   // the given's quantity name, or the option's; the whole name when passed
+  std::string key;  // the given's quantity name, or the option's; the whole name when passed
   std::string unit;  // of bare numbers in the column, from the header ("R_m"); "" for SI
   std::optional<Quantity> quantity;  // a given's
 };
@@ -58,17 +58,18 @@ std::vector<Column> parse_header(const std::vector<std::string>& names) {
       std::string& names = column.role == ColumnRole::passed ? passed_names : given_names;
       if (column.role == ColumnRole::given || column.role == ColumnRole::passed) names += (names.empty() ? "'" : ", '") + column.key + "'";
     }
-    throw Error(ErrorKind::given_count, "batch header: found " + std::to_string(givens) + " given column(s)" +
-                                            (given_names.empty() ? "" : " (" + given_names + ")") +
-                                            "; name exactly two of R, T, L1, L2, L4, D, M, m, mb, Lb, l (e.g. 'R,m' or 'R_m,m_kg')" +
-                                            (passed_names.empty() ? "" : "; " + passed_names + " would pass through, not as givens"));
+    throw Error(ErrorKind::given_count,
+                "batch header: found " + std::to_string(givens) + " given column(s)" + (given_names.empty() ? "" : " (" + given_names + ")") +
+                    "; name exactly two of R, T, L1, L2, L4, D, M, m, mb, Lb, l (e.g. 'R,m' or 'R_m,m_kg')" +
+                    (passed_names.empty() ? "" : "; " + passed_names + " would pass through, not as givens"));
   }
   // A column passed through must not take the name of one the calculator writes (in CSV or JSON).
   const std::vector<std::string> written = design_output_names();
   for (const Column& column : columns)
     if (column.role == ColumnRole::passed && std::find(written.begin(), written.end(), column.key) != written.end())
-      throw Error(ErrorKind::usage, "batch header: the column '" + column.key + "' would pass through, but the output has a column '" +
-                                        column.key + "' of its own; rename it, e.g. '" + column.key + "_input'");
+      throw Error(ErrorKind::usage,
+                  "batch header: the column '" + column.key + "' would pass through, but the output has a column '" + column.key +
+                      "' of its own; rename it, e.g. '" + column.key + "_input'");
   return columns;
 }
 
@@ -79,7 +80,9 @@ DesignRequest parse_row(const std::vector<Column>& columns, const std::vector<st
     const Column& column = columns[k];
     const std::string value = column.role == ColumnRole::passed ? "" : cell_value(cells[k], column.unit, column.key);
     switch (column.role) {
-      case ColumnRole::given: givens.push_back({*column.quantity, parse_positive(value, unit_dimension(quantity_dimension(*column.quantity)), column.key)}); break;
+      case ColumnRole::given:
+        givens.push_back({*column.quantity, parse_positive(value, unit_dimension(quantity_dimension(*column.quantity)), column.key)});
+        break;
       case ColumnRole::theta: request.theta_i_deg = parse_theta(value, "theta"); break;
       case ColumnRole::F: request.F = parse_positive(value, UnitDimension::dimensionless, "F"); break;
       case ColumnRole::branch: request.branch = parse_branch_choice(value); break;

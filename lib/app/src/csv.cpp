@@ -111,8 +111,10 @@ bool CsvReader::read_line(std::string& line) {
   // further than an input may be long (/dev/zero has no end), and then the input ends here.
   for (; c != eof && c != '\n' && c != '\r'; c = buffer->sbumpc()) {
     nul |= c == 0;
-    if (++length <= max_line_bytes) line += static_cast<char>(c);
-    else if (length > max_input_bytes) break;
+    if (++length <= max_line_bytes)
+      line += static_cast<char>(c);
+    else if (length > max_input_bytes)
+      break;
   }
   if (c == '\r' && buffer->sgetc() == '\n') buffer->sbumpc();
   const std::string where = source_ + " line " + std::to_string(line_number_);
@@ -144,8 +146,9 @@ bool CsvReader::next(CsvRow& row) {
     const std::string where = source_ + " line " + std::to_string(line_number_);
     row.cells = split(line, separator_, where);
     if (row.cells.size() != header_.size())
-      throw Error(ErrorKind::usage, where + ": expected " + std::to_string(header_.size()) + " cells as in the header, found " +
-                                        std::to_string(row.cells.size()) + "; quote a cell that holds '" + std::string(1, separator_) + "'");
+      throw Error(ErrorKind::usage,
+                  where + ": expected " + std::to_string(header_.size()) + " cells as in the header, found " + std::to_string(row.cells.size()) +
+                      "; quote a cell that holds '" + std::string(1, separator_) + "'");
     return true;
   }
   return false;
@@ -156,8 +159,7 @@ std::optional<ColumnName> split_column_name(std::string_view name, const std::ve
   for (std::string_view key : keys) {
     if (name == key) return ColumnName{std::string(key), ""};
     // The longest key that prefixes the name with an underscore: "mb_kg" is mb, not m.
-    if (name.size() > key.size() + 1 && name.substr(0, key.size()) == key && name[key.size()] == '_' &&
-        (!best || key.size() > best->key.size())) {
+    if (name.size() > key.size() + 1 && name.substr(0, key.size()) == key && name[key.size()] == '_' && (!best || key.size() > best->key.size())) {
       std::string unit(name.substr(key.size() + 1));
       if (const auto under = unit.find('_'); under != std::string::npos) unit[under] = '/';  // kg_m3 -> kg/m3
       best = ColumnName{std::string(key), unit};
@@ -171,7 +173,8 @@ std::string cell_value(std::string_view cell, const std::string& unit, std::stri
   if (const auto comma = text.find(','); comma != std::string::npos) {
     const std::string what = std::string(column) + ": '" + text + "'";
     if (text.find('.') != std::string::npos || text.find(',', comma + 1) != std::string::npos)
-      throw Error(ErrorKind::bad_number, what + " mixes ',' and '.' or has two commas; write one decimal separator and no thousands separators, e.g. 1500.5");
+      throw Error(ErrorKind::bad_number,
+                  what + " mixes ',' and '.' or has two commas; write one decimal separator and no thousands separators, e.g. 1500.5");
     // "1,500" may be one and a half or fifteen hundred: refused. "0,500" and "1,5" are not in doubt.
     std::size_t digits_after = 0;
     while (comma + 1 + digits_after < text.size() && std::isdigit(static_cast<unsigned char>(text[comma + 1 + digits_after]))) ++digits_after;
@@ -179,9 +182,9 @@ std::string cell_value(std::string_view cell, const std::string& unit, std::stri
     while (integer_start > 0 && std::isdigit(static_cast<unsigned char>(text[integer_start - 1]))) --integer_start;
     const std::size_t digits_before = comma - integer_start;
     if (digits_after == 3 && digits_before >= 1 && digits_before <= 3 && text[integer_start] != '0')
-      throw Error(ErrorKind::bad_number, what + " could be a decimal comma or a thousands separator; write it without the comma (" +
-                                             text.substr(0, comma) + text.substr(comma + 1) + ") or with a point (" +
-                                             text.substr(0, comma) + "." + text.substr(comma + 1) + ")");
+      throw Error(ErrorKind::bad_number,
+                  what + " could be a decimal comma or a thousands separator; write it without the comma (" + text.substr(0, comma) +
+                      text.substr(comma + 1) + ") or with a point (" + text.substr(0, comma) + "." + text.substr(comma + 1) + ")");
     text[comma] = '.';
   }
   if (unit.empty() || text.empty()) return text;
@@ -215,8 +218,10 @@ std::string csv_cell(std::string_view text, char separator) {
 // With {fmt}: printf's %.*g, and the shortest text that reads back (as std::to_chars gives it),
 // at a fraction of snprintf's cost, which was half a large batch's time.
 void append_csv_number(std::string& out, double value, int digits) {
-  if (digits >= 17) fmt::format_to(std::back_inserter(out), FMT_COMPILE("{}"), value);
-  else fmt::format_to(std::back_inserter(out), FMT_COMPILE("{:.{}g}"), value, digits);
+  if (digits >= 17)
+    fmt::format_to(std::back_inserter(out), FMT_COMPILE("{}"), value);
+  else
+    fmt::format_to(std::back_inserter(out), FMT_COMPILE("{:.{}g}"), value, digits);
 }
 
 std::string csv_number(double value, int digits) {
@@ -229,8 +234,8 @@ int parse_digits(std::string_view text, std::string_view option) {
   int digits = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), digits);
   if (ec != std::errc() || end != text.data() + text.size() || digits < 1 || digits > 17)
-    throw Error(ErrorKind::usage, std::string(option) + ": '" + std::string(text) +
-                                      "' is not a number of significant digits; give 1 to 17 (17: every value exactly)");
+    throw Error(ErrorKind::usage,
+                std::string(option) + ": '" + std::string(text) + "' is not a number of significant digits; give 1 to 17 (17: every value exactly)");
   return digits;
 }
 

@@ -26,15 +26,15 @@ double required(const DesignValues& values, std::optional<double> DesignValues::
   if (values.*member) return *(values.*member);
   const InputField& field = field_of(member);
   const std::string key = field.key, example = field.example;
-  throw Error(ErrorKind::usage, (where.empty() ? "{{" + key + "}} is missing; give " + what + ", e.g. {{" + key + "}} " + example
-                                               : where + ": key \"" + key + "\" is missing; give " + what + ", e.g. \"" + key + "\": \"" + example + "\"") +
-                                    alternative);
+  throw Error(ErrorKind::usage,
+              (where.empty() ? "{{" + key + "}} is missing; give " + what + ", e.g. {{" + key + "}} " + example
+                             : where + ": key \"" + key + "\" is missing; give " + what + ", e.g. \"" + key + "\": \"" + example + "\"") +
+                  alternative);
 }
 
 }  // namespace
 
-std::optional<double> read_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension,
-                                 const std::string& where) {
+std::optional<double> read_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension, const std::string& where) {
   if (!object.contains(key) || object[key].is_null()) return std::nullopt;
   const nlohmann::json& value = object[key];
   const std::string name = engine_key_name(where, key);
@@ -55,7 +55,8 @@ void refuse_near_miss(const std::string& key, const std::vector<std::string>& kn
 
 DesignValues read_design_values(const nlohmann::json& object, const std::string& where, nlohmann::json* passed) {
   if (!object.is_object())
-    throw Error(ErrorKind::usage, (where.empty() ? std::string("input") : where) + ": expected a JSON object with keys L1, L2, L3 (or F), L4, M, m, mb, theta_i_deg");
+    throw Error(ErrorKind::usage,
+                (where.empty() ? std::string("input") : where) + ": expected a JSON object with keys L1, L2, L3 (or F), L4, M, m, mb, theta_i_deg");
   DesignValues v;
   for (const InputField& field : input_fields()) {
     if (!(field.operations & op_shot)) continue;
@@ -65,7 +66,8 @@ DesignValues read_design_values(const nlohmann::json& object, const std::string&
       const std::optional<double> aliased = read_value(object, alias, field.dimension, where);
       if (!aliased) continue;
       if (v.*field.member)
-        throw Error(ErrorKind::usage, engine_key_name(where, field.key) + " and " + engine_key_name(where, alias) + " are one value given twice; keep one");
+        throw Error(ErrorKind::usage,
+                    engine_key_name(where, field.key) + " and " + engine_key_name(where, alias) + " are one value given twice; keep one");
       v.*field.member = aliased;
     }
   }
@@ -75,8 +77,9 @@ DesignValues read_design_values(const nlohmann::json& object, const std::string&
   static const std::vector<std::string> written = [] {
     std::vector<std::string> names = design_output_names();
     for (const std::string& name : verification_output_names()) names.push_back(name);
-    names.insert(names.end(), {"passed", "simulations", "start", "iterations", "wall_time_s", "note", "attested", "implied", "chosen",
-                               "calculator", "calculator_note", "longest_range", "longest_range_note", "warnings", "notes"});
+    names.insert(names.end(),
+                 {"passed", "simulations", "start", "iterations", "wall_time_s", "note", "attested", "implied", "chosen", "calculator",
+                  "calculator_note", "longest_range", "longest_range_note", "warnings", "notes"});
     return names;
   }();
   for (const auto& [key, value] : object.items()) {
@@ -109,17 +112,22 @@ void engine_parts(const DesignValues& v, const std::string& where, EngineRecord&
   // The taper gives mb and D; flags may not give them too, and a file may only as the programs
   // write them, agreeing with the taper (checked in engine_record, once the taper is known).
   if ((v.D_tip || v.D_hinge) && where.empty()) {
-    if (v.mb) throw Error(ErrorKind::usage, name("D_hinge") + " and " + name("D_tip") + " give the beam's mass from its wood; leave out " + name("mb") + " (or the taper)");
-    if (v.D) throw Error(ErrorKind::usage, name("D_hinge") + " and " + name("D_tip") + " give the beam's diameter at the pivot; leave out " + name("D"));
+    if (v.mb)
+      throw Error(ErrorKind::usage,
+                  name("D_hinge") + " and " + name("D_tip") + " give the beam's mass from its wood; leave out " + name("mb") + " (or the taper)");
+    if (v.D)
+      throw Error(ErrorKind::usage, name("D_hinge") + " and " + name("D_tip") + " give the beam's diameter at the pivot; leave out " + name("D"));
   }
   p.beam_cm = v.beam_cm;
   p.beam_inertia = v.beam_inertia;
   p.beam_gyration = v.beam_gyration;  // I = mb k^2 with mb as the run has it (given_beam_inertia)
   p.D_hinge = v.D_hinge, p.D_tip = v.D_tip;
   if (v.box_width || v.box_height) {
-    if (!v.box_width || !v.box_height) throw Error(ErrorKind::usage, "a box counterweight needs both " + name("box_width") + " and " + name("box_height"));
+    if (!v.box_width || !v.box_height)
+      throw Error(ErrorKind::usage, "a box counterweight needs both " + name("box_width") + " and " + name("box_height"));
     if (v.counterweight_inertia)
-      throw Error(ErrorKind::usage, name("counterweight_inertia") + " and the box " + name("box_width") + " both give the counterweight's inertia; give one");
+      throw Error(ErrorKind::usage,
+                  name("counterweight_inertia") + " and the box " + name("box_width") + " both give the counterweight's inertia; give one");
     for (const auto& [value, key] : {std::pair{*v.box_width, "box_width"}, {*v.box_height, "box_height"}}) {
       if (!(value > 0)) throw Error(ErrorKind::bad_number, name(key) + " = " + format_significant(value, 6) + ": a side of the box must be positive");
       check_ordinary(value, 1e-6, 1e6, key, "m", "side of the counterweight's box");
@@ -141,13 +149,15 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   e.m = required(v, &V::m, where, "the projectile mass");
   // Without mb, a beam diameter gives it from the wood (eq:BeamMass), below.
   if ((v.mb && !v.D_tip && !v.D_hinge) || (!v.mb && !v.D && !v.D_tip && !v.D_hinge))
-    e.mb = required(v, &V::mb, where, "the beam mass", where.empty() ? ", or the beam's diameter {{D}}, from which it follows" : ", or \"D\", the beam's diameter");
+    e.mb = required(v, &V::mb, where, "the beam mass",
+                    where.empty() ? ", or the beam's diameter {{D}}, from which it follows" : ", or \"D\", the beam's diameter");
   e.theta_i_deg = v.theta_i_deg.value_or(standard_theta_i_deg);
   e.psi_i_deg = v.psi_i_deg.value_or(0);
   // D = 0 is how the outputs write "not given" (they read back); below 0 it is a mistake.
   if (v.D && !(*v.D >= 0))
-    throw Error(ErrorKind::bad_number, engine_key_name(where, "D") + " = " + format_significant(*v.D, 6) +
-                                           ": the beam diameter must not be negative; give it, or leave it out (0: not given)");
+    throw Error(ErrorKind::bad_number,
+                engine_key_name(where, "D") + " = " + format_significant(*v.D, 6) +
+                    ": the beam diameter must not be negative; give it, or leave it out (0: not given)");
   e.D = v.D.value_or(0);
   const std::string named = where.empty() ? std::string("flags") : where;
   // A program's options give one of them; a file may carry both, as the programs write them (below).
@@ -157,14 +167,15 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
     e.L3 = *v.L3;
   } else if (const auto F = v.F) {
     if (!(*F > 0))
-      throw Error(ErrorKind::bad_number, engine_key_name(where, "F") + " = " + format_significant(*F, 6) +
-                                             ": the counterweight arm fraction (L2 + L3)/H must be positive; the paper's are 1, 2/3 and 1/2");
+      throw Error(ErrorKind::bad_number,
+                  engine_key_name(where, "F") + " = " + format_significant(*F, 6) +
+                      ": the counterweight arm fraction (L2 + L3)/H must be positive; the paper's are 1, 2/3 and 1/2");
     e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, *F);
     if (e.theta_i_deg > 0 && e.theta_i_deg < 90 && e.L1 > 0 && e.L2 > 0 && !(e.L3 > 0))
-      throw Error(ErrorKind::bad_number, named + ": with F = " + format_significant(*F, 4) +
-                                             " and theta_i = " + format_significant(e.theta_i_deg, 4) + " deg, L2 + L3 = F L1 cos(theta_i) = " +
-                                             format_significant(*F * pivot_height(e), 4) + " m is not longer than L2 = " + format_significant(e.L2, 4) +
-                                             " m: no room for the counterweight arm; lower theta_i, raise F or lengthen L1");
+      throw Error(ErrorKind::bad_number,
+                  named + ": with F = " + format_significant(*F, 4) + " and theta_i = " + format_significant(e.theta_i_deg, 4) +
+                      " deg, L2 + L3 = F L1 cos(theta_i) = " + format_significant(*F * pivot_height(e), 4) + " m is not longer than L2 = " +
+                      format_significant(e.L2, 4) + " m: no room for the counterweight arm; lower theta_i, raise F or lengthen L1");
   } else {
     throw Error(ErrorKind::usage, named + ": give the counterweight arm L3 in metres, or the fraction F = (L2 + L3)/H, e.g. F = 2/3");
   }
@@ -174,7 +185,8 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   material.wood_density = v.wood_density.value_or(material.wood_density);
   material.g = v.g.value_or(material.g);
   engine_parts(v, where, in);
-  if (e.parts.D_tip && e.parts.D_hinge && *e.parts.D_tip > 0 && *e.parts.D_hinge > 0 && e.L1 > 0 && e.L2 > 0) {  // the tapered beam's mass and its diameter at the pivot
+  if (e.parts.D_tip && e.parts.D_hinge && *e.parts.D_tip > 0 && *e.parts.D_hinge > 0 && e.L1 > 0 &&
+      e.L2 > 0) {  // the tapered beam's mass and its diameter at the pivot
     e.mb = wood_beam_mass(e);
     e.D = tapered_beam(e.L1, e.L2, *e.parts.D_hinge, *e.parts.D_tip, material.wood_density).D_pivot;
     in.mb_from_D = true;
@@ -182,14 +194,18 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
     const auto name = [&](const char* key) { return engine_key_name(where, key); };
     for (const auto& [given, derived, key] : {std::tuple{v.mb, e.mb, "mb"}, {v.D, e.D, "D"}})
       if (given && !(std::abs(*given - derived) <= 1e-9 * derived))
-        throw Error(ErrorKind::usage, name("D_hinge") + " and " + name("D_tip") + " give " + name(key) + " = " + format_significant(derived, 9) +
-                                          " from the wood, but the input says " + format_significant(*given, 9) + "; leave out " + name(key) + " (or the taper)");
+        throw Error(ErrorKind::usage,
+                    name("D_hinge") + " and " + name("D_tip") + " give " + name(key) + " = " + format_significant(derived, 9) +
+                        " from the wood, but the input says " + format_significant(*given, 9) + "; leave out " + name(key) + " (or the taper)");
   }
   if (v.D && !v.mb && !v.D_tip) {  // eq:BeamMass: a round beam of the material's wood
-    if (!(e.D > 0)) throw Error(ErrorKind::bad_number, engine_key_name(where, "D") + " = 0 gives no beam; give the beam's diameter, or its mass " + engine_key_name(where, "mb"));
+    if (!(e.D > 0))
+      throw Error(ErrorKind::bad_number,
+                  engine_key_name(where, "D") + " = 0 gives no beam; give the beam's diameter, or its mass " + engine_key_name(where, "mb"));
     if (!(e.D <= 1e6))
-      throw Error(ErrorKind::bad_number, engine_key_name(where, "D") + " = " + format_significant(e.D, 6) +
-                                             " m is not of ordinary size for the beam diameter; give one from 1e-06 to 1e+06 m");
+      throw Error(ErrorKind::bad_number,
+                  engine_key_name(where, "D") + " = " + format_significant(e.D, 6) +
+                      " m is not of ordinary size for the beam diameter; give one from 1e-06 to 1e+06 m");
     e.mb = beam_mass(e.D, beam_length(e), material);
     in.mb_from_D = true;
   }
@@ -197,21 +213,23 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
     check_engine(e);
   } catch (const Error& error) {
     const std::string said = error.message([&](std::string_view key) { return engine_key_name(where, std::string(key)); });
-    throw Error(error.kind(), in.mb_from_D && said.find(engine_key_name(where, "mb")) != std::string::npos
-                                  ? said + " (mb = " + format_significant(e.mb, 4) + " kg follows from " + engine_key_name(where, "D") + " = " +
-                                        format_significant(e.D, 4) + " m by eq:BeamMass; give another " + engine_key_name(where, "D") + ")"
-                                  : said);
+    throw Error(error.kind(),
+                in.mb_from_D && said.find(engine_key_name(where, "mb")) != std::string::npos
+                    ? said + " (mb = " + format_significant(e.mb, 4) + " kg follows from " + engine_key_name(where, "D") + " = " +
+                        format_significant(e.D, 4) + " m by eq:BeamMass; give another " + engine_key_name(where, "D") + ")"
+                    : said);
   }
   // L3 and F both, as the programs write them: L3 is used, and F must agree with it to the
   // rounding of values written to 3 significant digits or more (2e-3, with room to spare).
   if (v.L3 && v.F && !(std::abs(arm_fraction(e) / *v.F - 1) <= 2e-2))
-    throw Error(ErrorKind::usage, named + ": L3 = " + format_significant(e.L3, 6) + " m gives F = (L2 + L3)/H = " +
-                                      format_significant(arm_fraction(e), 6) + ", not F = " + format_significant(*v.F, 6) +
-                                      "; both fix the counterweight arm, give one of them");
+    throw Error(ErrorKind::usage,
+                named + ": L3 = " + format_significant(e.L3, 6) + " m gives F = (L2 + L3)/H = " + format_significant(arm_fraction(e), 6) +
+                    ", not F = " + format_significant(*v.F, 6) + "; both fix the counterweight arm, give one of them");
   if (v.R.has_value() != v.T.has_value()) throw Error(ErrorKind::usage, named + ": a capacity needs both R and T; give both or neither");
   if (v.R && !(*v.R > 0 && *v.T > 0))
-    throw Error(ErrorKind::bad_number, named + ": R = " + format_significant(*v.R, 6) + " m, T = " + format_significant(*v.T, 6) +
-                                           " J: R and T must be positive; give the predicted range and energy, e.g. R = 150 m and T = 40 kJ");
+    throw Error(ErrorKind::bad_number,
+                named + ": R = " + format_significant(*v.R, 6) + " m, T = " + format_significant(*v.T, 6) +
+                    " J: R and T must be positive; give the predicted range and energy, e.g. R = 150 m and T = 40 kJ");
   if (v.R) in.capacity = Capacity{*v.R, *v.T, 0};
   return in;
 }
@@ -226,7 +244,7 @@ EngineRecord read_engine(const nlohmann::json& object, const std::string& where)
 DesignRows read_design_rows(std::istream& input, const std::string& source) {
   const std::vector<std::string> inputs = input_names(op_shot);
   const std::vector<std::string_view> engine_keys(inputs.begin(), inputs.end());
-  const std::vector<std::string_view> dropped = {"X", "Y", "Lb", "H", "l", "l4", "L", "mu", "mu_b", "K", "DeltaU", "amplification",
+  const std::vector<std::string_view> dropped = {"X",      "Y",        "Lb", "H", "l", "l4", "L", "mu", "mu_b", "K", "DeltaU", "amplification",
                                                  "branch", "warnings", "air"};
   CsvReader reader(input, source);
   // The verifier's own CSV (it alone has R_vacuum_m): its results are dropped, and the capacity
@@ -280,8 +298,9 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
   if (!has("mb") && !has("D") && !has("D_tip")) missing += (missing.empty() ? "" : ", ") + std::string("mb or D");
   if (!has("L3") && !has("F")) missing += (missing.empty() ? "" : ", ") + std::string("L3 or F");
   if (!missing.empty())
-    throw Error(ErrorKind::usage, source + " is neither JSON nor CSV of designs: its header lacks " + missing +
-                                      "; give a design object, an array of them, or CSV such as trebuchet-calc --batch writes");
+    throw Error(ErrorKind::usage,
+                source + " is neither JSON nor CSV of designs: its header lacks " + missing +
+                    "; give a design object, an array of them, or CSV such as trebuchet-calc --batch writes");
   while (true) {
     DesignRows::Row row;
     row.passed.assign(out.passed_columns.size(), "");

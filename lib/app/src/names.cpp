@@ -12,10 +12,17 @@ namespace {
 constexpr std::array<std::pair<Release, std::string_view>, 3> release_names = {
     {{Release::quality, "Q"}, {Release::efficiency, "eps"}, {Release::range, "range"}}};
 
-constexpr std::array<std::pair<Stepper, std::string_view>, 11> stepper_table = {
-    {{Stepper::rk2, "rk2"}, {Stepper::rk4, "rk4"}, {Stepper::rkf45, "rkf45"}, {Stepper::rkck, "rkck"},
-     {Stepper::rk8pd, "rk8pd"}, {Stepper::msadams, "msadams"}, {Stepper::rk1imp, "rk1imp"},
-     {Stepper::rk2imp, "rk2imp"}, {Stepper::rk4imp, "rk4imp"}, {Stepper::bsimp, "bsimp"}, {Stepper::msbdf, "msbdf"}}};
+constexpr std::array<std::pair<Stepper, std::string_view>, 11> stepper_table = {{{Stepper::rk2, "rk2"},
+                                                                                 {Stepper::rk4, "rk4"},
+                                                                                 {Stepper::rkf45, "rkf45"},
+                                                                                 {Stepper::rkck, "rkck"},
+                                                                                 {Stepper::rk8pd, "rk8pd"},
+                                                                                 {Stepper::msadams, "msadams"},
+                                                                                 {Stepper::rk1imp, "rk1imp"},
+                                                                                 {Stepper::rk2imp, "rk2imp"},
+                                                                                 {Stepper::rk4imp, "rk4imp"},
+                                                                                 {Stepper::bsimp, "bsimp"},
+                                                                                 {Stepper::msbdf, "msbdf"}}};
 
 template <class Enum, std::size_t N>
 std::string name_in(const std::array<std::pair<Enum, std::string_view>, N>& table, Enum value) {
@@ -37,8 +44,8 @@ std::string release_name(Release release) { return name_in(release_names, releas
 
 Release parse_release(std::string_view name, std::string_view option) {
   if (const Release* release = value_in(release_names, name)) return *release;
-  throw Error(ErrorKind::usage, std::string(option) + ": '" + std::string(name) +
-                                    "' is not a release criterion; use Q (eq:Q, eq:Q_n with {{n}}), eps or range");
+  throw Error(ErrorKind::usage,
+              std::string(option) + ": '" + std::string(name) + "' is not a release criterion; use Q (eq:Q, eq:Q_n with {{n}}), eps or range");
 }
 
 UnitSystem parse_unit_system(std::string_view name, std::string_view option) {

@@ -16,7 +16,8 @@ namespace {
 
 // Whether the open file `fd` is the file at `path` (through any link).
 bool same_file(int fd, const std::string& path) {
-  struct stat open {}, named {};
+  struct stat open {
+  }, named{};
   return fstat(fd, &open) == 0 && stat(path.c_str(), &named) == 0 && open.st_dev == named.st_dev && open.st_ino == named.st_ino;
 }
 
@@ -87,8 +88,9 @@ void PendingOutput::commit() {
   for (const fs::path& name : names)
     for (const std::string& input : inputs_)
       if (input != "-" && !input.empty() && fs::exists(fs::path(path_) / name, ec) && fs::equivalent(fs::path(path_) / name, input, ec))
-        throw Error(ErrorKind::usage, "{{" + option_ + "}}: '" + (fs::path(shown_) / name).string() + "' would overwrite the input '" + input +
-                                          "'; give another folder");
+        throw Error(
+            ErrorKind::usage,
+            "{{" + option_ + "}}: '" + (fs::path(shown_) / name).string() + "' would overwrite the input '" + input + "'; give another folder");
   for (const fs::path& name : names) {
     fs::rename(fs::path(temporary_) / name, fs::path(path_) / name, ec);
     if (ec) throw Error(ErrorKind::usage, fail + " (" + ec.message() + "); give a folder you can write to");
@@ -111,7 +113,8 @@ void refuse_output_over_input(const std::string& output, const std::string& opti
   for (const std::string& input : inputs) {
     if (input == "-") {  // stdin redirected from a file: that file is the input
       if (same_file(STDIN_FILENO, output))
-        throw Error(ErrorKind::usage, "{{" + option + "}}: '" + output + "' would overwrite the input, which stdin reads; give the output another name");
+        throw Error(ErrorKind::usage,
+                    "{{" + option + "}}: '" + output + "' would overwrite the input, which stdin reads; give the output another name");
       continue;
     }
     if (!input.empty() && fs::exists(input, ec) && fs::exists(output, ec) && fs::equivalent(output, input, ec))

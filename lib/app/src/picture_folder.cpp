@@ -33,9 +33,11 @@ void run_gnuplot(const std::filesystem::path& folder, const std::string& script)
     std::ifstream log(folder / "gnuplot.log");
     std::string said((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
     if (said.size() > 400) said = "..." + said.substr(said.size() - 400);
-    throw Error(ErrorKind::usage, "{{plot}}: gnuplot failed on " + script +
-                                      (child >= 0 && WIFEXITED(status) && WEXITSTATUS(status) == 127 ? " (gnuplot is not installed; apt-get install gnuplot-nox)"
-                                                                                                     : said.empty() ? "" : ": " + said));
+    throw Error(ErrorKind::usage,
+                "{{plot}}: gnuplot failed on " + script +
+                    (child >= 0 && WIFEXITED(status) && WEXITSTATUS(status) == 127 ? " (gnuplot is not installed; apt-get install gnuplot-nox)"
+                         : said.empty()                                            ? ""
+                                                                                   : ": " + said));
   }
 }
 
@@ -49,7 +51,9 @@ void write_picture_folder(const std::string& dir, const std::vector<PictureFile>
   for (const PictureFile& file : files) {
     std::ofstream out(folder / file.name);
     out << file.text;
-    if (!out) throw Error(ErrorKind::usage, "{{plot}}: cannot write " + (std::filesystem::path(dir) / file.name).string() + "; give a folder you can write to");
+    if (!out)
+      throw Error(ErrorKind::usage,
+                  "{{plot}}: cannot write " + (std::filesystem::path(dir) / file.name).string() + "; give a folder you can write to");
   }
   for (const std::string& script : scripts) run_gnuplot(folder, script);
   output.commit();

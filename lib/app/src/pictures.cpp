@@ -63,7 +63,8 @@ std::string engine_commands(const Engine& engine, const TracePoint& p, bool proj
       g << "set object circle at " << num(at.x) << "," << num(at.y) << " size " << num(radius) << " arc [" << num(std::min(from, to)) << ":"
         << num(std::max(from, to)) << "] nowedge fs empty border lc rgb '" << colour << "' lw 2 front\n";
       const double middle = radians((from + to) / 2);
-      label(text, {at.x + 1.35 * radius * std::cos(middle), at.y + 1.35 * radius * std::sin(middle)}, (std::string("center tc rgb '") + colour + "'").c_str());
+      label(text, {at.x + 1.35 * radius * std::cos(middle), at.y + 1.35 * radius * std::sin(middle)},
+            (std::string("center tc rgb '") + colour + "'").c_str());
     };
     const double r = 0.22 * std::min(engine.L1, H);
     arc({0, H}, r, 270 - theta, 270, {0, H - 1.3 * r}, "θ = " + format_significant(theta, 3) + "°", "#b22222");
@@ -75,7 +76,8 @@ std::string engine_commands(const Engine& engine, const TracePoint& p, bool proj
 
 std::string header(const std::string& terminal_and_output) {
   return "# Made by trebuchet-verify shot --plot; run with gnuplot in this folder.\n"
-         "set encoding utf8\nset datafile separator ','\n" + terminal_and_output + "\nset grid lc rgb '#dddddd'\nset key noenhanced\n";
+         "set encoding utf8\nset datafile separator ','\n" +
+      terminal_and_output + "\nset grid lc rgb '#dddddd'\nset key noenhanced\n";
 }
 
 // Text inside a gnuplot double-quoted string.
@@ -96,20 +98,21 @@ std::string warning_labels(const Verification& v, bool at_foot = false) {
   if (v.warnings.empty()) return "";
   // Large across a frame of its own; at the top of each of several small frames, clear of the engine.
   std::string g = "set style textbox opaque noborder\nset label 89 'NOT PHYSICAL' at graph 0.5, graph " + std::string(at_foot ? "0.93" : "0.5") +
-                  " center tc rgb '#cc0000' font '," + std::string(at_foot ? "16" : "40") + "' front\n";
+      " center tc rgb '#cc0000' font '," + std::string(at_foot ? "16" : "40") + "' front\n";
   for (std::size_t k = 0; k < v.warnings.size(); ++k)
     g += "set label " + std::to_string(90 + k) + " \"" + gnuplot_quoted(v.warnings[k]) + "\" at " +
-         (at_foot ? "screen 0.01, screen " + num(0.012 + 0.03 * k) : "graph 0.01, graph " + num(0.96 - 0.06 * k)) +
-         " left tc rgb '#cc0000' font ',10' noenhanced boxed front\n";
+        (at_foot ? "screen 0.01, screen " + num(0.012 + 0.03 * k) : "graph 0.01, graph " + num(0.96 - 0.06 * k)) +
+        " left tc rgb '#cc0000' font ',10' noenhanced boxed front\n";
   return g;
 }
 
 // The shot that was computed, for every picture's title: air or vacuum, then the release and the
 // target level as every report says them (describe_release).
 std::string scene_of(const ShotSettings& settings) {
-  const std::string air = settings.air ? "in air (Cd " + (settings.air->drag_coefficient ? format_significant(*settings.air->drag_coefficient, 3) : std::string("of Re")) +
-                                             (settings.air->wind != 0 ? ", wind " + format_significant(settings.air->wind, 3) + " m/s" : std::string()) + ")"
-                                       : std::string("in vacuum");
+  const std::string air = settings.air
+      ? "in air (Cd " + (settings.air->drag_coefficient ? format_significant(*settings.air->drag_coefficient, 3) : std::string("of Re")) +
+          (settings.air->wind != 0 ? ", wind " + format_significant(settings.air->wind, 3) + " m/s" : std::string()) + ")"
+      : std::string("in vacuum");
   return air + ", " + describe_release(settings);
 }
 
@@ -144,17 +147,19 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   release_csv << "t_s,Q_over_Q_release,eps_over_eps_release,R_over_R_release,FS_perp,FR,FRh_max,FRh_min\n";
   const ShotSeries::Moment& at = series.phase_two[series.release_row];
   for (const ShotSeries::Moment& row : series.phase_two) {
-    release_csv << num(row.t) << "," << num(row.quality / at.quality) << "," << num(row.efficiency / at.efficiency) << "," << num(row.range / at.range);
+    release_csv << num(row.t) << "," << num(row.quality / at.quality) << "," << num(row.efficiency / at.efficiency) << ","
+                << num(row.range / at.range);
     for (int k = 0; k < force_count; ++k) release_csv << "," << num(row.running_max[k] / series.final_extremes[k]);
     release_csv << "\n";
   }
   files.push_back({"release.csv", release_csv.str()});
 
   // 1. The engine at four moments, to scale, in one frame that holds all four with a margin.
-  const std::pair<std::size_t, std::string> panels[] = {{m.start, "at rest: θ_i = " + format_significant(engine.theta_i_deg, 3) + "°"},
-                                                        {m.liftoff, "lift-off, t = " + format_significant(seconds(m.liftoff), 3) + " s"},
-                                                        {m.peak_reaction, "largest pivot force, t_m = " + format_significant(seconds(m.peak_reaction), 3) + " s"},
-                                                        {m.release, "release, t_r = " + format_significant(seconds(m.release), 3) + " s"}};
+  const std::pair<std::size_t, std::string> panels[] = {
+      {m.start, "at rest: θ_i = " + format_significant(engine.theta_i_deg, 3) + "°"},
+      {m.liftoff, "lift-off, t = " + format_significant(seconds(m.liftoff), 3) + " s"},
+      {m.peak_reaction, "largest pivot force, t_m = " + format_significant(seconds(m.peak_reaction), 3) + " s"},
+      {m.release, "release, t_r = " + format_significant(seconds(m.release), 3) + " s"}};
   double x_lo = -0.3 * H, x_hi = 0.3 * H, y_lo = 0, y_hi = H;
   for (const auto& [i, title] : panels) {
     const Snapshot& s = trace[i].snapshot;
@@ -168,9 +173,9 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   engine_gp << header("set terminal svg size 1100,950 dynamic font 'sans,12'\nset output 'engine.svg'") << "set size ratio -1\nset xrange ["
             << num(x_lo - margin) << ":" << num(x_hi + margin) << "]\nset yrange [" << num(y_lo - margin) << ":" << num(y_hi + margin)
             << "]\nset xlabel 'x toward the target [m]'\nset ylabel 'height above the base [m]'\n"
-            << "set multiplot layout 2,2 title \"The engine to scale: L1 = " << format_significant(engine.L1, 3) << " m, L2 = "
-            << format_significant(engine.L2, 3) << " m, L3 = " << format_significant(engine.L3, 3) << " m, L4 = " << format_significant(engine.L4, 3)
-            << " m, H = " << format_significant(H, 3) << " m; " << gnuplot_quoted(scene)
+            << "set multiplot layout 2,2 title \"The engine to scale: L1 = " << format_significant(engine.L1, 3)
+            << " m, L2 = " << format_significant(engine.L2, 3) << " m, L3 = " << format_significant(engine.L3, 3)
+            << " m, L4 = " << format_significant(engine.L4, 3) << " m, H = " << format_significant(H, 3) << " m; " << gnuplot_quoted(scene)
             << "\\nθ: beam from the downward vertical, ψ: counterweight arm from the vertical, φ: sling from the horizontal\" noenhanced"
             << " margins 0.08,0.97,0.1,0.9 spacing 0.1,0.1\n";
   for (std::size_t k = 0; k < 4; ++k) {
@@ -189,47 +194,56 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   const double from_x = settings.range_from_release ? v.x : 0;  // R runs from the pivot, or from the release point (Denny's)
   const double arrow_y = impact.y - 0.02 * v.capacity.R;
   const std::string flight_title = settings.air ? "flight (air)" : "flight (vacuum)";
-  const std::string curves = "'shot.csv' every ::1 using (strcol(1) ne 'III' ? $17 : NaN):18 with lines lw 2 title 'counterweight', \\\n"
-                             "     '' every ::1 using (strcol(1) ne 'III' ? $19 : NaN):20 with lines lw 2 title 'beam tip', \\\n"
-                             "     '' every ::1 using 21:22 with lines lw 2 title 'projectile, phases I-II', \\\n"
-                             "     'flight.csv' every ::1 using 1:2 with lines lw 2 dt 2 title '" + flight_title + "', \\\n"
-                             "     " + num(impact.y) + " with lines lc rgb 'gray40' title '" +
-                             (settings.range_from_release ? "release height" : "target level") + "'\n";
+  const std::string curves =
+      "'shot.csv' every ::1 using (strcol(1) ne 'III' ? $17 : NaN):18 with lines lw 2 title 'counterweight', \\\n"
+      "     '' every ::1 using (strcol(1) ne 'III' ? $19 : NaN):20 with lines lw 2 title 'beam tip', \\\n"
+      "     '' every ::1 using 21:22 with lines lw 2 title 'projectile, phases I-II', \\\n"
+      "     'flight.csv' every ::1 using 1:2 with lines lw 2 dt 2 title '" +
+      flight_title +
+      "', \\\n"
+      "     " +
+      num(impact.y) + " with lines lc rgb 'gray40' title '" + (settings.range_from_release ? "release height" : "target level") + "'\n";
   paths << header("set terminal svg size 1200,540 dynamic font 'sans,12'\nset output 'paths.svg'")
-        << "set xlabel 'x toward the target [m]'\nset ylabel 'height above the base [m]'\nset key below\n" << warnings
-        << "set multiplot title \"" << gnuplot_quoted(scene) << "\" noenhanced\nset size 0.62,0.95\nset origin 0,0\nset title 'The whole shot' noenhanced\n"
+        << "set xlabel 'x toward the target [m]'\nset ylabel 'height above the base [m]'\nset key below\n"
+        << warnings << "set multiplot title \"" << gnuplot_quoted(scene)
+        << "\" noenhanced\nset size 0.62,0.95\nset origin 0,0\nset title 'The whole shot' noenhanced\n"
         << "set arrow 1 from " << num(from_x) << "," << num(arrow_y) << " to " << num(impact.x) << "," << num(arrow_y) << " heads lc rgb 'black'\n"
         << "set label 1 'R = " << format_significant(v.capacity.R, 4) << " m" << (settings.range_from_release ? " (from the release point)" : "")
         << "' at " << num((from_x + impact.x) / 2) << "," << num(arrow_y) << " offset 0,-1 center\n"
         << "set yrange [" << num(std::min(0.0, impact.y) - 0.06 * v.capacity.R) << ":*]\nplot " << curves
         << "unset arrow 1\nunset label 1\nset size 0.38,0.95\nset origin 0.62,0\nset size ratio -1\nset key off\n"
         << "set title 'Phases I and II, enlarged' noenhanced\nset xrange [" << num(-engine.L1 - engine.L4 - 0.5) << ":"
-        << num(std::max(engine.L1 + engine.L4, engine.L2 + engine.L3) + 0.5) << "]\nset yrange [-0.5:"
-        << num(H + engine.L1 + engine.L4 + 0.5) << "]\nplot " << curves << "unset multiplot\n";
+        << num(std::max(engine.L1 + engine.L4, engine.L2 + engine.L3) + 0.5) << "]\nset yrange [-0.5:" << num(H + engine.L1 + engine.L4 + 0.5)
+        << "]\nplot " << curves << "unset multiplot\n";
   files.push_back({"paths.gp", paths.str()});
 
   // 3. The forces against time, in kN, with multiples of M g on the right; the marks' names
   // stand above the frame, in two rows, clear of the curves and of each other.
   auto marks = [&](std::ostringstream& gp) {
-    const std::pair<std::size_t, const char*> at[] = {{m.liftoff, "lift-off"}, {m.first_extreme, "t_1"}, {m.peak_reaction, "t_m"},
-                                                      {m.second_extreme, "t_2"}, {m.release, "release"}};
+    const std::pair<std::size_t, const char*> at[] = {
+        {m.liftoff, "lift-off"}, {m.first_extreme, "t_1"}, {m.peak_reaction, "t_m"}, {m.second_extreme, "t_2"}, {m.release, "release"}};
     int row = 0;
     for (const auto& [i, name] : at)
       gp << "set arrow from " << num(seconds(i)) << ", graph 0 to " << num(seconds(i)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
-         << "set label '" << name << "' at " << num(seconds(i)) << ", graph " << (row++ % 2 ? "1.08" : "1.03") << " center tc rgb 'gray30' noenhanced\n";
+         << "set label '" << name << "' at " << num(seconds(i)) << ", graph " << (row++ % 2 ? "1.08" : "1.03")
+         << " center tc rgb 'gray30' noenhanced\n";
   };
   std::ostringstream forces;
   forces << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'forces.svg'")
          << "set xlabel 'time [s]'\nset ylabel 'force [kN]'\nset y2label \"force as a multiple of M·g (M = "
-         << gnuplot_quoted(quantity_text(engine.M, UnitDimension::mass, UnitSystem::si, 3)) << ", the counterweight)\" noenhanced\nset y2tics\nset link y2 via y/" << num(Mg_kN)
-         << " inverse y*" << num(Mg_kN) << "\nset format y2 '%.1f'\nset key below\nset tmargin 6\nset xrange [0:" << num(seconds(m.release) * 1.02) << "]\n"
-         << "set title \"Forces up to the release: t_1 and t_2 the extremes of F_Rh, t_m the largest pivot force\\n" << gnuplot_quoted(scene) << "\" noenhanced\n"
+         << gnuplot_quoted(quantity_text(engine.M, UnitDimension::mass, UnitSystem::si, 3))
+         << ", the counterweight)\" noenhanced\nset y2tics\nset link y2 via y/" << num(Mg_kN) << " inverse y*" << num(Mg_kN)
+         << "\nset format y2 '%.1f'\nset key below\nset tmargin 6\nset xrange [0:" << num(seconds(m.release) * 1.02) << "]\n"
+         << "set title \"Forces up to the release: t_1 and t_2 the extremes of F_Rh, t_m the largest pivot force\\n"
+         << gnuplot_quoted(scene) << "\" noenhanced\n"
          << warnings;
   marks(forces);
-  forces << "plot 'shot.csv' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($9*" << num(mg_kN) << ") with lines lw 2 title 'F_S⊥ (sling, across the beam)', \\\n"
+  forces << "plot 'shot.csv' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($9*" << num(mg_kN)
+         << ") with lines lw 2 title 'F_S⊥ (sling, across the beam)', \\\n"
          << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($27*" << num(mg_kN) << ") with lines lw 2 dt 4 title 'sling tension', \\\n"
          << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($10*" << num(Mg_kN) << ") with lines lw 2 title '|F_R| (pivot)', \\\n"
-         << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($11*" << num(Mg_kN) << ") with lines lw 2 title 'F_Rh (pivot, horizontal)', \\\n"
+         << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($11*" << num(Mg_kN)
+         << ") with lines lw 2 title 'F_Rh (pivot, horizontal)', \\\n"
          << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($13*" << num(Mg_kN) << ") with lines lw 2 title '|F_H| (hinge)', \\\n"
          << "     '' every ::1 using (strcol(1) eq 'I' ? $2 : NaN):($14*" << num(mg_kN) << ") with lines lw 2 title 'N (trough on the projectile)'\n";
   files.push_back({"forces.gp", forces.str()});
@@ -240,33 +254,37 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   const Snapshot& at_release = trace[m.release].snapshot;
   const double drop_kJ = d.energy_drop() * energy_kJ;
   const Snapshot& rest = trace.front().snapshot;
-  const double cw0 = rest.energies.counterweight * energy_kJ, beam0 = rest.energies.beam * energy_kJ, pr0 = rest.energies.projectile_potential * energy_kJ;
+  const double cw0 = rest.energies.counterweight * energy_kJ, beam0 = rest.energies.beam * energy_kJ,
+               pr0 = rest.energies.projectile_potential * energy_kJ;
   const double taken_kJ = (at_release.energies.projectile_kinetic + at_release.energies.projectile_potential) * energy_kJ - pr0;
   // An engine as built loses energy to friction and drag: the work they took (the series' last
   // five columns, 29 to 33) is drawn, and the total includes it.
   const bool losses = d.parts.dissipates();
   const std::string lost_kJ = "(($29+$30+$31+$32+$33)/1000)";
   energy << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'energy.svg'")
-         << "set xlabel 'time [s]'\nset ylabel 'energy gained since rest [kJ]'\nset key below\n" << warnings
-         << "set title \"Where the energy goes\\nat the release the projectile holds ε = " << format_significant(100 * v.eps, 3)
+         << "set xlabel 'time [s]'\nset ylabel 'energy gained since rest [kJ]'\nset key below\n"
+         << warnings << "set title \"Where the energy goes\\nat the release the projectile holds ε = " << format_significant(100 * v.eps, 3)
          << (losses ? " % of ΔU; the gap, 1 − ε, stays in beam and counterweight or went to friction and drag\\n"
                     : " % of ΔU; the gap, 1 − ε, stays in beam and counterweight\\n")
-         << (v.energy.flight_drag > 0 ? "after the release the air takes " + format_significant(v.energy.flight_drag / 1000, 3) + " kJ more in flight\\n"
-             : v.energy.flight_drag < 0 ? "after the release the wind gives " + format_significant(-v.energy.flight_drag / 1000, 3) + " kJ more in flight\\n"
-                                        : "")
+         << (v.energy.flight_drag > 0
+                 ? "after the release the air takes " + format_significant(v.energy.flight_drag / 1000, 3) + " kJ more in flight\\n"
+                 : v.energy.flight_drag < 0
+                 ? "after the release the wind gives " + format_significant(-v.energy.flight_drag / 1000, 3) + " kJ more in flight\\n"
+                 : "")
          << gnuplot_quoted(scene) << "\" noenhanced\n"
          << "set arrow from " << num(seconds(m.release)) << ", graph 0 to " << num(seconds(m.release)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
          << "set arrow from " << num(seconds(m.release)) << "," << num(taken_kJ) << " to " << num(seconds(m.release)) << "," << num(drop_kJ)
          << " heads lw 2 lc rgb 'red' front\nset label '1 − ε' at " << num(seconds(m.release)) << "," << num((taken_kJ + drop_kJ) / 2)
-         << " offset 0.5,0 tc rgb 'red' noenhanced\nset label 'release' at " << num(seconds(m.release)) << ", graph 0.5 rotate by 90 center offset -0.8,0\n"
+         << " offset 0.5,0 tc rgb 'red' noenhanced\nset label 'release' at " << num(seconds(m.release))
+         << ", graph 0.5 rotate by 90 center offset -0.8,0\n"
          << "plot 'shot.csv' every ::1 using 2:($23/1000-(" << num(cw0) << ")) with lines lw 2 title 'counterweight', \\\n"
          << "     '' every ::1 using 2:($24/1000-(" << num(beam0) << ")) with lines lw 2 title 'beam', \\\n"
          << "     '' every ::1 using 2:(strcol(1) ne 'III' ? ($25+$26)/1000-(" << num(pr0) << ") : " << num(taken_kJ)
          << ") with lines lw 2 title 'projectile (after the release: what it took)', \\\n"
          << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($25/1000) with lines lw 1 dt 2 title 'of which kinetic', \\\n"
          << (losses ? "     '' every ::1 using 2:" + lost_kJ + " with lines lw 2 lc rgb '#e377c2' title 'taken by friction and drag', \\\n" : "")
-         << "     '' every ::1 using 2:(($23+$24)/1000-(" << num(cw0 + beam0) << ")+(strcol(1) ne 'III' ? ($25+$26)/1000-(" << num(pr0) << ") : "
-         << num(taken_kJ) << ")" << (losses ? "+" + lost_kJ : "") << ") with lines lw 2 lc rgb 'black' title '"
+         << "     '' every ::1 using 2:(($23+$24)/1000-(" << num(cw0 + beam0) << ")+(strcol(1) ne 'III' ? ($25+$26)/1000-(" << num(pr0)
+         << ") : " << num(taken_kJ) << ")" << (losses ? "+" + lost_kJ : "") << ") with lines lw 2 lc rgb 'black' title '"
          << (losses ? "total with what the losses took (conserved)" : "total (conserved)") << "', \\\n"
          << "     " << num(drop_kJ) << " with lines dt 2 lc rgb 'gray30' title 'ΔU (eq:DU)'\n";
   files.push_back({"energy.gp", energy.str()});
@@ -278,12 +296,15 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
           << "set xlabel 'time [s]'\nset ylabel 'value over its value at the release'\nset key below\nset yrange [0:1.3]\n"
           << warnings << "set label 'release' at " << num(seconds(m.release)) << ", graph 0.95 offset 0.3,0\n"
           << "set title \"Phase II, and on as if the projectile were kept: " << objective
-          << " peaks at the release; the running extremes of eq:F switch on as they grow\\n" << gnuplot_quoted(scene) << "; Q, ε and R here at level 0 in vacuum\" noenhanced\n"
+          << " peaks at the release; the running extremes of eq:F switch on as they grow\\n"
+          << gnuplot_quoted(scene) << "; Q, ε and R here at level 0 in vacuum\" noenhanced\n"
           << "set arrow from " << num(seconds(m.release)) << ", graph 0 to " << num(seconds(m.release)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
           << "plot 'release.csv' every ::1 using 1:2 with lines lw 3 lc rgb 'black' title 'Q', \\\n"
           << "     '' every ::1 using 1:3 with lines lw 2 title 'ε', '' every ::1 using 1:4 with lines lw 2 title 'R', \\\n"
-          << "     '' every ::1 using 1:5 with lines lw 2 dt 2 title 'max F_S⊥ so far', '' every ::1 using 1:6 with lines lw 2 dt 2 title 'max |F_R| so far', \\\n"
-          << "     '' every ::1 using 1:7 with lines lw 2 dt 2 title 'max F_Rh so far', '' every ::1 using 1:8 with lines lw 2 dt 2 title 'max −F_Rh so far'\n";
+          << "     '' every ::1 using 1:5 with lines lw 2 dt 2 title 'max F_S⊥ so far', '' every ::1 using 1:6 with lines lw 2 dt 2 title 'max |F_R| "
+             "so far', \\\n"
+          << "     '' every ::1 using 1:7 with lines lw 2 dt 2 title 'max F_Rh so far', '' every ::1 using 1:8 with lines lw 2 dt 2 title 'max −F_Rh "
+             "so far'\n";
   files.push_back({"release.gp", release.str()});
 
   // 6. The animation: one frame every second sample of the engine, played at 4 % of real speed
@@ -296,7 +317,8 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   const double t_release = seconds(m.release);
   std::ostringstream anim;
   anim << "# Made by trebuchet-verify shot --plot; run with gnuplot in this folder.\n"
-       << "set encoding utf8\nset datafile separator ','\nset terminal gif animate delay " << delay << " size 800,600 font 'sans,11'\nset output 'shot.gif'\nset size ratio -1\n"
+       << "set encoding utf8\nset datafile separator ','\nset terminal gif animate delay " << delay
+       << " size 800,600 font 'sans,11'\nset output 'shot.gif'\nset size ratio -1\n"
        << "set xrange [" << num(-engine.L1 - engine.L4 - 1) << ":" << num(std::max(engine.L1 + engine.L4, engine.L2 + engine.L3) + 1) << "]\n"
        << "set yrange [" << num(std::min(-0.5, H - engine.L2 - engine.L3 - 0.5)) << ":" << num(H + engine.L1 + engine.L4 + 0.5)
        << "]\nset xlabel 'x toward the target [m]'\nset ylabel 'height [m]'\nset bmargin 5\n";
@@ -307,8 +329,9 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
     const bool on = trace[i].phase != Phase::released;
     anim << "unset arrow\nunset label\nunset object\n" << engine_commands(engine, trace[i], on, false, false) << warning_labels(v, true);
     if (!on) stone(stone_at(seconds(i) - t_release), 0.03 * H);
-    anim << "set title 't = " << format_significant(seconds(i), 3) << " s  (" << (on ? trace[i].phase == Phase::trough ? "phase I" : "phase II" : "released")
-         << ", slowed " << format_significant(slowed, 2) << " times)' noenhanced\nplot 0 lc rgb '#6b8e23' lw 2 notitle\n";
+    anim << "set title 't = " << format_significant(seconds(i), 3) << " s  ("
+         << (on ? trace[i].phase == Phase::trough ? "phase I" : "phase II" : "released") << ", slowed " << format_significant(slowed, 2)
+         << " times)' noenhanced\nplot 0 lc rgb '#6b8e23' lw 2 notitle\n";
   }
   const double flight_lo = std::min(-engine.L1 - engine.L4, impact.x) - 2, flight_hi = std::max(impact.x, engine.L1) + 2;
   double top = H + engine.L1;
@@ -341,18 +364,26 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
     return out;
   };
   html << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
-       << "<title>trebuchet shot</title>\n<style>\n" << viewer_style() << "main { display: block; }\n</style></head><body>\n"
-       << "<header><h1>One shot of a swinging-counterweight trebuchet</h1><p class=\"tagline\">Made by <code>trebuchet-verify shot --plot</code>: the model of "
-       << "Horsdal, appendix A. " << escaped(describe_assumptions(engine, settings)) << ".</p></header>\n<main><section id=\"shot\"><div id=\"viewer\"></div>\n"
+       << "<title>trebuchet shot</title>\n<style>\n"
+       << viewer_style() << "main { display: block; }\n</style></head><body>\n"
+       << "<header><h1>One shot of a swinging-counterweight trebuchet</h1><p class=\"tagline\">Made by <code>trebuchet-verify shot --plot</code>: "
+          "the model of "
+       << "Horsdal, appendix A. " << escaped(describe_assumptions(engine, settings))
+       << ".</p></header>\n<main><section id=\"shot\"><div id=\"viewer\"></div>\n"
        << "<h2>Pictures for print</h2><ul>\n";
   const std::pair<const char*, const char*> pictures[] = {
       {"engine.svg", "the engine to scale at rest, at lift-off, at the largest pivot force and at the release, with θ, ψ and φ"},
-      {"shot.gif", "the shot slowed down, then the whole flight"}, {"paths.svg", "the paths and the flight"},
-      {"forces.svg", "the forces up to the release"}, {"energy.svg", "where the energy goes"}, {"release.svg", "why the release is where it is"}};
+      {"shot.gif", "the shot slowed down, then the whole flight"},
+      {"paths.svg", "the paths and the flight"},
+      {"forces.svg", "the forces up to the release"},
+      {"energy.svg", "where the energy goes"},
+      {"release.svg", "why the release is where it is"}};
   for (const auto& [file, what] : pictures) html << "<li><a href=\"" << file << "\">" << file << "</a>: " << what << "</li>\n";
-  html << "</ul><p>The data: <a href=\"shot.csv\">shot.csv</a> (every sample), <a href=\"release.csv\">release.csv</a>, <a href=\"flight.csv\">flight.csv</a>. "
+  html << "</ul><p>The data: <a href=\"shot.csv\">shot.csv</a> (every sample), <a href=\"release.csv\">release.csv</a>, <a "
+          "href=\"flight.csv\">flight.csv</a>. "
           "docs/pictures.md explains each picture.</p></section></main>\n"
-       << "<script type=\"application/json\" id=\"shot-data\">" << data << "</script>\n<script>\n" << viewer_script() << "\n</script>\n"
+       << "<script type=\"application/json\" id=\"shot-data\">" << data << "</script>\n<script>\n"
+       << viewer_script() << "\n</script>\n"
        << "<script>TrebuchetViewer.render(document.getElementById('viewer'), JSON.parse(document.getElementById('shot-data').textContent), {units: '"
        << (units == UnitSystem::imperial ? "imperial" : "si") << "'});</script>\n</body></html>\n";
   files.push_back({"index.html", html.str()});
@@ -381,8 +412,8 @@ std::vector<PictureFile> histogram_pictures(const MonteCarloSummary& summary, co
        << "plot 'histogram.dat' using (bin(clamp($" << column << "))):(1) smooth frequency with boxes fs solid 0.5 lc rgb '#4682b4' notitle\n";
   };
   gp << "set terminal svg size 1100,450 dynamic font 'sans,12'\nset output 'histogram.svg'\n"
-     << "set multiplot layout 1,2 title \"" << title << "\\n" << summary.values.size() << " of " << summary.samples
-     << " samples worked; dashed: 5 and 95 %, red: the median\"\n"
+     << "set multiplot layout 1,2 title \"" << title << "\\n"
+     << summary.values.size() << " of " << summary.samples << " samples worked; dashed: 5 and 95 %, red: the median\"\n"
      << "set ylabel 'samples'\nset yrange [0:*]\nset tmargin 5\nset boxwidth 1 relative\nset grid ytics\n";
   panel(1, "range R [m]", 1, 0);
   panel(2, "energy at the target T [kJ]", 1e3, 1);

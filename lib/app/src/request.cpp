@@ -25,8 +25,8 @@ BranchChoice parse_branch_choice(std::string_view text) {
 double parse_theta(std::string_view text, std::string_view name) {
   const double degrees = parse_positive(text, UnitDimension::angle, name);
   if (degrees >= 90)
-    throw Error(ErrorKind::bad_number, std::string(name) + ": '" + std::string(text) +
-                                           "' must lie between 0 and 90 degrees (the beam angle from the vertical)");
+    throw Error(ErrorKind::bad_number,
+                std::string(name) + ": '" + std::string(text) + "' must lie between 0 and 90 degrees (the beam angle from the vertical)");
   return degrees;
 }
 

@@ -13,16 +13,20 @@ ShotSettings shot_settings(const SettingsValues& v) {
   settings.target_level = v.target_level.value_or(0);
   const bool air_details = v.air_density || v.drag_coefficient || v.drag_of_reynolds || v.projectile_density || v.wind;
   if (air_details && !v.air)
-    throw Error(ErrorKind::usage, "{{air_density}}, {{cd}}, {{projectile}} and {{wind}} describe the air; add {{air}} to fly through it (vacuum is the default)");
-  if (v.drag_in_sling && !v.air) throw Error(ErrorKind::usage, "{{drag_in_sling}} lets the air act before the release; add {{air}} (vacuum is the default)");
+    throw Error(ErrorKind::usage,
+                "{{air_density}}, {{cd}}, {{projectile}} and {{wind}} describe the air; add {{air}} to fly through it (vacuum is the default)");
+  if (v.drag_in_sling && !v.air)
+    throw Error(ErrorKind::usage, "{{drag_in_sling}} lets the air act before the release; add {{air}} (vacuum is the default)");
   settings.drag_in_sling = v.drag_in_sling;
   if (v.air) {
     Air air;
     if (v.air_density && !(*v.air_density > 0))
       throw Error(ErrorKind::bad_number, "{{air_density}}: " + format_significant(*v.air_density, 6) + " kg/m3 must be positive");
     air.density = v.air_density.value_or(air.density);
-    if (v.drag_of_reynolds) air.drag_coefficient.reset();
-    else if (v.drag_coefficient) air.drag_coefficient = v.drag_coefficient;
+    if (v.drag_of_reynolds)
+      air.drag_coefficient.reset();
+    else if (v.drag_coefficient)
+      air.drag_coefficient = v.drag_coefficient;
     air.projectile_density = v.projectile_density.value_or(air.projectile_density);
     air.wind = v.wind.value_or(0);
     settings.air = air;
@@ -46,7 +50,9 @@ CompletionRequest completion_request(const DesignValues& v, const ShotSettings& 
 
 OptimizeRequest optimize_request(const DesignValues& v, const ShotSettings& settings, const MaterialOverrides& material) {
   if (!v.R || v.T.has_value() == v.m.has_value())
-    throw Error(ErrorKind::usage, "optimize needs a capacity: {{R}} with {{T}}, or {{R}} with the stone's {{m}}; e.g. {{R}} 425m {{T}} 224kJ, or {{R}} 450m {{m}} 100kg");
+    throw Error(
+        ErrorKind::usage,
+        "optimize needs a capacity: {{R}} with {{T}}, or {{R}} with the stone's {{m}}; e.g. {{R}} 425m {{T}} 224kJ, or {{R}} 450m {{m}} 100kg");
   OptimizeRequest request;
   request.capacity = {*v.R, v.T.value_or(0), 0};
   request.projectile_mass = v.m;
@@ -67,8 +73,10 @@ MonteCarloRequest with_draws(const MonteCarloRequest& request, const std::functi
   MonteCarloRequest sample = request;
   for (const SpreadInput& spread : request.spreads) {
     const double drawn = value(spread.input.spread);
-    if (spread.value) sample.values.*spread.value = drawn;
-    else sample.settings.*spread.setting = drawn;
+    if (spread.value)
+      sample.values.*spread.value = drawn;
+    else
+      sample.settings.*spread.setting = drawn;
   }
   return sample;
 }

@@ -12,8 +12,8 @@ namespace trebuchet {
 void require_finite(const std::vector<Field>& fields) {
   for (const Field& field : fields)
     if (!std::isfinite(field.value))
-      throw Error(ErrorKind::bad_number, std::string("the engine's ") + field.key +
-                                             " is beyond the range of numbers (about 1e-308 to 1e308); give values of ordinary size");
+      throw Error(ErrorKind::bad_number,
+                  std::string("the engine's ") + field.key + " is beyond the range of numbers (about 1e-308 to 1e308); give values of ordinary size");
 }
 
 // The parts as built (FieldGroup::part), each in SI: the last CSV columns of the verifier, so
@@ -94,7 +94,8 @@ std::vector<std::string> part_cells(const Engine& engine, int digits) {
   nlohmann::ordered_json written;
   write_engine(written, engine);
   std::vector<std::string> cells;
-  for (const InputField* part : part_fields()) cells.push_back(written.contains(part->key) ? csv_number(written[part->key].get<double>(), digits) : "");
+  for (const InputField* part : part_fields())
+    cells.push_back(written.contains(part->key) ? csv_number(written[part->key].get<double>(), digits) : "");
   return cells;
 }
 

@@ -39,15 +39,20 @@ nlohmann::ordered_json calibration_json(const Calibration& c, const MeasuredRang
   out["shot"] = verification_json(c.shot, std::nullopt);
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const Prediction& prediction : predictions)
-    list.push_back({{"changed", prediction.changed}, {"R", prediction.R}, {"R_low", prediction.R_low}, {"R_high", prediction.R_high},
-                    {"T", prediction.shot.capacity.T}, {"eps", prediction.shot.eps}});
+    list.push_back({{"changed", prediction.changed},
+                    {"R", prediction.R},
+                    {"R_low", prediction.R_low},
+                    {"R_high", prediction.R_high},
+                    {"T", prediction.shot.capacity.T},
+                    {"eps", prediction.shot.eps}});
   out["predictions"] = list;
   out["simulations"] = c.simulations;
   require_finite_json(out, "the calibration");
   return out;
 }
 
-nlohmann::ordered_json completion_json(const Completion& c, const ShotSettings& settings, const Completion* longest, const std::string& longest_note) {
+nlohmann::ordered_json completion_json(const Completion& c, const ShotSettings& settings, const Completion* longest,
+                                       const std::string& longest_note) {
   nlohmann::ordered_json out;
   write_engine(out, c.engine);
   out["attested"] = c.attested;
@@ -57,8 +62,10 @@ nlohmann::ordered_json completion_json(const Completion& c, const ShotSettings& 
   const nlohmann::ordered_json shot = verification_json(c.verification);
   for (const auto& [key, value] : shot.items()) out[key] = value;
   out["assumptions"] = assumptions_json(c.engine, settings);
-  if (c.calculator) out["calculator"] = design_json(*c.calculator);
-  else out["calculator_note"] = c.calculator_note;
+  if (c.calculator)
+    out["calculator"] = design_json(*c.calculator);
+  else
+    out["calculator_note"] = c.calculator_note;
   if (longest) {
     nlohmann::ordered_json alternative;
     write_engine(alternative, longest->engine);

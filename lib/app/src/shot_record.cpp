@@ -38,25 +38,44 @@ namespace {
 // The figures of a shot, in the order of the JSON and CSV records. Throws Error(numerical) for
 // one that is not finite.
 std::vector<Field> verification_fields(const Verification& v) {
-  std::vector<Field> fields = {
-      {"R", v.capacity.R, "m"}, {"T", v.capacity.T, "J"}, {"R_vacuum", v.R_vacuum, "m"}, {"T_vacuum", v.T_vacuum, "J"}, {"eps", v.eps}, {"Q", v.Q}, {"force_factor", v.force_factor},
-      {"v", v.v, "m_s"}, {"h", v.h, "m"}, {"x", v.x, "m"}, {"A_deg", v.A_deg}, {"t_release", v.t_release, "s"},
-      {"t_liftoff", v.t_liftoff, "s"}, {"FS_perp_mg", v.FS_perp_mg}, {"FR_Mg", v.FR_Mg}, {"dFRh_Mg", v.dFRh_Mg},
-      {"FS_perp", v.FS_perp, "N"}, {"FR", v.FR, "N"}, {"dFRh", v.dFRh, "N"}};
+  std::vector<Field> fields = {{"R", v.capacity.R, "m"},
+                               {"T", v.capacity.T, "J"},
+                               {"R_vacuum", v.R_vacuum, "m"},
+                               {"T_vacuum", v.T_vacuum, "J"},
+                               {"eps", v.eps},
+                               {"Q", v.Q},
+                               {"force_factor", v.force_factor},
+                               {"v", v.v, "m_s"},
+                               {"h", v.h, "m"},
+                               {"x", v.x, "m"},
+                               {"A_deg", v.A_deg},
+                               {"t_release", v.t_release, "s"},
+                               {"t_liftoff", v.t_liftoff, "s"},
+                               {"FS_perp_mg", v.FS_perp_mg},
+                               {"FR_Mg", v.FR_Mg},
+                               {"dFRh_Mg", v.dFRh_Mg},
+                               {"FS_perp", v.FS_perp, "N"},
+                               {"FR", v.FR, "N"},
+                               {"dFRh", v.dFRh, "N"}};
   // The builder's loads (verification.hpp), each with its time; the beam's strength, 0 without a beam.
-  const char* load_names[load_count][2] = {{"sling_tension", "t_sling_tension"}, {"hinge_force", "t_hinge_force"},
-                                           {"pivot_force", "t_pivot_force"}, {"beam_moment", "t_beam_moment"}};
+  const char* load_names[load_count][2] = {
+      {"sling_tension", "t_sling_tension"}, {"hinge_force", "t_hinge_force"}, {"pivot_force", "t_pivot_force"}, {"beam_moment", "t_beam_moment"}};
   for (int k = 0; k < load_count; ++k) {
     fields.push_back({load_names[k][0], v.loads[k].value, k == beam_moment_load ? "N_m" : "N"});
     fields.push_back({load_names[k][1], v.loads[k].t, "s"});
   }
   const BeamStrength beam = v.beam.value_or(BeamStrength{});
-  fields.insert(fields.end(), {{"beam_D", beam.D, "m"}, {"beta2_implied", beam.beta2}, {"strain_at_rest", beam.strain_at_rest},
-                               {"strain_peak", beam.strain_peak}, {"stress_at_rest", beam.stress_at_rest, "Pa"},
-                               {"stress_peak", beam.stress_peak, "Pa"}, {"rupture_margin", beam.margin}, {"energy_drift", v.energy_drift}});
+  fields.insert(fields.end(),
+                {{"beam_D", beam.D, "m"},
+                 {"beta2_implied", beam.beta2},
+                 {"strain_at_rest", beam.strain_at_rest},
+                 {"strain_peak", beam.strain_peak},
+                 {"stress_at_rest", beam.stress_at_rest, "Pa"},
+                 {"stress_peak", beam.stress_peak, "Pa"},
+                 {"rupture_margin", beam.margin},
+                 {"energy_drift", v.energy_drift}});
   for (const Field& field : fields)
-    if (!std::isfinite(field.value))
-      throw Error(ErrorKind::numerical, std::string("the result ") + field.key + " is not finite; tighten {{rtol}}");
+    if (!std::isfinite(field.value)) throw Error(ErrorKind::numerical, std::string("the result ") + field.key + " is not finite; tighten {{rtol}}");
   return fields;
 }
 
@@ -64,9 +83,9 @@ std::vector<Field> verification_fields(const Verification& v) {
 // last CSV columns, so that the columns before them keep their places; in JSON, "energy".
 std::vector<Field> energy_fields(const Verification& v) {
   const Verification::EnergyBudget& e = v.energy;
-  std::vector<Field> fields = {{"energy_projectile", e.projectile, "J"}, {"energy_engine", e.engine, "J"},
-                               {"loss_axle", e.losses[axle_loss], "J"}, {"loss_hinge", e.losses[hinge_loss], "J"},
-                               {"loss_trough", e.losses[trough_loss], "J"}, {"loss_sling_drag", e.losses[projectile_drag_loss], "J"},
+  std::vector<Field> fields = {{"energy_projectile", e.projectile, "J"},          {"energy_engine", e.engine, "J"},
+                               {"loss_axle", e.losses[axle_loss], "J"},           {"loss_hinge", e.losses[hinge_loss], "J"},
+                               {"loss_trough", e.losses[trough_loss], "J"},       {"loss_sling_drag", e.losses[projectile_drag_loss], "J"},
                                {"loss_rope_drag", e.losses[rope_drag_loss], "J"}, {"loss_flight_drag", e.flight_drag, "J"}};
   for (const Field& field : fields)
     if (!std::isfinite(field.value)) throw Error(ErrorKind::numerical, std::string("the result ") + field.key + " is not finite; tighten {{rtol}}");
@@ -103,8 +122,9 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
   for (const Field& field : check_fields(check)) row.push_back(check ? csv_number(field.value, digits) : "");
   const nlohmann::ordered_json assumed = assumptions_json(engine, settings);
   const std::string air = settings.air ? describe_air(*settings.air, engine.m) : "vacuum";
-  row.insert(row.end(), {check ? (check->pass ? "yes" : "no") : "", air, assumed["release"].get<std::string>(),
-                         csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), join(v.warnings, "; "), join(v.notes, "; ")});
+  row.insert(row.end(),
+             {check ? (check->pass ? "yes" : "no") : "", air, assumed["release"].get<std::string>(), csv_number(settings.criterion.n, digits),
+              csv_number(settings.target_level, digits), join(v.warnings, "; "), join(v.notes, "; ")});
   for (const Field& field : energy_fields(v)) row.push_back(csv_number(field.value, digits));
   for (const std::string& cell : part_cells(engine, digits)) row.push_back(cell);
   row.push_back(csv_number(engine.psi_i_deg, digits));
@@ -127,9 +147,15 @@ nlohmann::ordered_json verification_json(const Verification& v, const std::optio
   nlohmann::ordered_json out;
   for (const Field& field : verification_fields(v)) out[field.key] = field.value;
   const Verification::EnergyBudget& e = v.energy;
-  out["energy"] = {{"delta_U", e.delta_U}, {"projectile", e.projectile}, {"engine", e.engine},
-                   {"losses", {{"axle", e.losses[axle_loss]}, {"hinge", e.losses[hinge_loss]}, {"trough", e.losses[trough_loss]},
-                               {"sling_drag", e.losses[projectile_drag_loss]}, {"rope_drag", e.losses[rope_drag_loss]}}},
+  out["energy"] = {{"delta_U", e.delta_U},
+                   {"projectile", e.projectile},
+                   {"engine", e.engine},
+                   {"losses",
+                    {{"axle", e.losses[axle_loss]},
+                     {"hinge", e.losses[hinge_loss]},
+                     {"trough", e.losses[trough_loss]},
+                     {"sling_drag", e.losses[projectile_drag_loss]},
+                     {"rope_drag", e.losses[rope_drag_loss]}}},
                    {"flight_drag", e.flight_drag}};
   out["warnings"] = v.warnings;
   out["notes"] = v.notes;

@@ -51,7 +51,9 @@ ShotSeries shot_series(const Engine& engine, const ShotSettings& settings, const
   const double flight_drop = settings.range_from_release ? 0 : v.h - settings.target_level;
   std::vector<Vec2> path;  // in the frame of the shot (target toward -x), height from the release [m]
   const auto end = fly({-v.x, 0}, {-v.v * std::cos(A), v.v * std::sin(A)}, flight_drop, drag, g, &path, 201);
-  if (!end) throw Error(ErrorKind::numerical, "the flight drawn did not come down where the shot's did (an internal error; please report it with the command)");
+  if (!end)
+    throw Error(ErrorKind::numerical,
+                "the flight drawn did not come down where the shot's did (an internal error; please report it with the command)");
   for (const Vec2& p : path) series.flight.push_back({-p.x, v.h + p.y});
   series.flight_time = end->time;
 
@@ -86,13 +88,35 @@ SitePoint ShotSeries::stone_at(double after) const {
 
 nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& engine) {
   const double Mg = engine.M * engine.material.g;  // [N]: the scaled forces' unit
-  const double energy_unit = Mg * engine.L2;        // [J], and the beam moment's [N m]
+  const double energy_unit = Mg * engine.L2;  // [J], and the beam moment's [N m]
   using json = nlohmann::ordered_json;
   json frames = json::object();
   // After the release the sling and projectile are gone: their values are null.
-  const char* columns[] = {"t", "theta_deg", "psi_deg", "phi_deg", "hinge_x", "hinge_y", "counterweight_x", "counterweight_y", "tip_x", "tip_y",
-                           "projectile_x", "projectile_y", "FS_perp", "sling_tension", "FR", "FRh", "FRv", "FH", "normal", "beam_moment",
-                           "E_counterweight", "E_beam", "E_projectile_kinetic", "E_projectile_potential", "W_lost"};
+  const char* columns[] = {"t",
+                           "theta_deg",
+                           "psi_deg",
+                           "phi_deg",
+                           "hinge_x",
+                           "hinge_y",
+                           "counterweight_x",
+                           "counterweight_y",
+                           "tip_x",
+                           "tip_y",
+                           "projectile_x",
+                           "projectile_y",
+                           "FS_perp",
+                           "sling_tension",
+                           "FR",
+                           "FRh",
+                           "FRv",
+                           "FH",
+                           "normal",
+                           "beam_moment",
+                           "E_counterweight",
+                           "E_beam",
+                           "E_projectile_kinetic",
+                           "E_projectile_potential",
+                           "W_lost"};
   for (const char* column : columns) frames[column] = json::array();
   frames["phase"] = json::array();
   for (const TracePoint& p : series.trace) {
@@ -102,14 +126,30 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
                     pr = site_point(s.projectile, engine);
     double lost = 0;  // the work of friction and drag so far
     for (double w : p.work) lost += w;
-    const std::optional<double> values[] = {p.t * series.time_unit, degrees(p.state.theta), degrees(p.state.psi),
-                                            gone ? std::nullopt : std::optional(degrees(p.state.phi)), hinge.x, hinge.y, cw.x, cw.y, tip.x, tip.y,
-                                            gone ? std::nullopt : std::optional(pr.x), gone ? std::nullopt : std::optional(pr.y),
-                                            s.sling_perpendicular * Mg, gone ? std::nullopt : std::optional(s.sling_tension * Mg),
-                                            force_values(s)[pivot_reaction] * Mg, s.pivot_reaction.x * Mg, s.pivot_reaction.y * Mg,
-                                            std::hypot(s.hinge_force.x, s.hinge_force.y) * Mg, s.normal_force * Mg, s.beam_moment * energy_unit,
-                                            s.energies.counterweight * energy_unit, s.energies.beam * energy_unit,
-                                            s.energies.projectile_kinetic * energy_unit, s.energies.projectile_potential * energy_unit,
+    const std::optional<double> values[] = {p.t * series.time_unit,
+                                            degrees(p.state.theta),
+                                            degrees(p.state.psi),
+                                            gone ? std::nullopt : std::optional(degrees(p.state.phi)),
+                                            hinge.x,
+                                            hinge.y,
+                                            cw.x,
+                                            cw.y,
+                                            tip.x,
+                                            tip.y,
+                                            gone ? std::nullopt : std::optional(pr.x),
+                                            gone ? std::nullopt : std::optional(pr.y),
+                                            s.sling_perpendicular * Mg,
+                                            gone ? std::nullopt : std::optional(s.sling_tension * Mg),
+                                            force_values(s)[pivot_reaction] * Mg,
+                                            s.pivot_reaction.x * Mg,
+                                            s.pivot_reaction.y * Mg,
+                                            std::hypot(s.hinge_force.x, s.hinge_force.y) * Mg,
+                                            s.normal_force * Mg,
+                                            s.beam_moment * energy_unit,
+                                            s.energies.counterweight * energy_unit,
+                                            s.energies.beam * energy_unit,
+                                            s.energies.projectile_kinetic * energy_unit,
+                                            s.energies.projectile_potential * energy_unit,
                                             lost * energy_unit};
     for (std::size_t k = 0; k < std::size(columns); ++k) frames[columns[k]].push_back(values[k] ? json(*values[k]) : json(nullptr));
     frames["phase"].push_back(p.phase == Phase::trough ? "I" : p.phase == Phase::lifted ? "II" : "III");
@@ -130,8 +170,12 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
   }
   return {{"pivot_height", pivot_height(engine)},
           {"energy_drop", potential_energy_drop(engine)},
-          {"moments", {{"liftoff", series.liftoff}, {"t1", series.first_extreme}, {"tm", series.peak_reaction}, {"t2", series.second_extreme},
-                       {"release", series.release}}},
+          {"moments",
+           {{"liftoff", series.liftoff},
+            {"t1", series.first_extreme},
+            {"tm", series.peak_reaction},
+            {"t2", series.second_extreme},
+            {"release", series.release}}},
           {"frames", frames},
           {"flight", flight},
           {"phase_two", phase_two},

@@ -32,12 +32,11 @@ std::string sheet_unit(const InputField& field) {
   return unit;
 }
 
-
 // A formula and its value, built together so that the text written to a cell and the value
 // cached beside it come from one expression: each equation of the workbook is written once.
 struct Expr {
   std::string f;  // spreadsheet formula text, references absolute
-  double v;       // its value
+  double v;  // its value
 };
 
 // A text cell or formula and its value.
@@ -94,9 +93,7 @@ struct Column {
   std::vector<double> v;
 };
 // The k-th element (from 1) of a column: INDEX(column, k).
-Expr element(const Column& column, const Expr& k) {
-  return {"INDEX(" + column.f + "," + k.f + ")", column.v.at(static_cast<std::size_t>(k.v) - 1)};
-}
+Expr element(const Column& column, const Expr& k) { return {"INDEX(" + column.f + "," + k.f + ")", column.v.at(static_cast<std::size_t>(k.v) - 1)}; }
 struct TextColumn {
   std::string f;
   std::vector<std::string> v;
@@ -109,15 +106,13 @@ Expr first_largest(const Column& column) {
   const auto it = std::max_element(column.v.begin(), column.v.end());
   return {"MATCH(MAX(" + column.f + ")," + column.f + ",0)", static_cast<double>(it - column.v.begin() + 1)};
 }
-Expr largest(const Column& column) {
-  return {"MAX(" + column.f + ")", *std::max_element(column.v.begin(), column.v.end())};
-}
+Expr largest(const Column& column) { return {"MAX(" + column.f + ")", *std::max_element(column.v.begin(), column.v.end())}; }
 
 struct Formats {
   lxw_workbook* book;
   lxw_format* title;
   lxw_format* heading;
-  lxw_format* input;   // cells the user types into
+  lxw_format* input;  // cells the user types into
   lxw_format* note;
   std::map<std::pair<int, bool>, lxw_format*> shown;  // by kind (below) and whether it is an input
 
@@ -162,7 +157,7 @@ class Sheet {
   std::string range(int first_row, int last_row, int first_col, int last_col = -1) const {
     if (last_col < 0) last_col = first_col;
     return prefix_ + "$" + column_name(first_col) + "$" + std::to_string(first_row + 1) + ":$" + column_name(last_col) + "$" +
-           std::to_string(last_row + 1);
+        std::to_string(last_row + 1);
   }
 
   void title(const std::string& text, const std::string& explanation) {
@@ -183,8 +178,8 @@ class Sheet {
   // cached as INF or NAN, which no spreadsheet reads as the formula's result.
   void require_finite(int row, int col, double value) const {
     if (!std::isfinite(value))
-      throw Error(ErrorKind::bad_number, "with these inputs the workbook's cell " + ref(row, col) +
-                                             " would be beyond the range of numbers; give values of ordinary size");
+      throw Error(ErrorKind::bad_number,
+                  "with these inputs the workbook's cell " + ref(row, col) + " would be beyond the range of numbers; give values of ordinary size");
   }
   Expr number(int row, int col, double value) {
     require_finite(row, col, value);
@@ -408,10 +403,13 @@ MaterialFactors write_material(lxw_workbook* book, Formats& formats, const Const
   auto k_D = [&](const Expr& gg, const Expr& r, const Expr& e) { return num(16) / num(3) * gg * r / e; };
   const Expr kM = s.formula_row(8, "k_M", k_M(g, rho, E), "kg/m4", "eq:kMkD: (4 pi/3) g rho^2 / E");
   const Expr kD = s.formula_row(9, "k_D", k_D(g, rho, E), "1/m", "eq:kMkD: (16/3) g rho / E");
-  const Expr kM0 = s.formula_row(10, "k_M of the table", k_M(c.g, c.wood_density, c.youngs_modulus), "kg/m4", "eq:kMkD with the constants sheet's material");
-  const Expr kD0 = s.formula_row(11, "k_D of the table", k_D(c.g, c.wood_density, c.youngs_modulus), "1/m", "eq:kMkD with the constants sheet's material");
+  const Expr kM0 = s.formula_row(10, "k_M of the table", k_M(c.g, c.wood_density, c.youngs_modulus), "kg/m4",
+                                 "eq:kMkD with the constants sheet's material");
+  const Expr kD0 = s.formula_row(11, "k_D of the table", k_D(c.g, c.wood_density, c.youngs_modulus), "1/m",
+                                 "eq:kMkD with the constants sheet's material");
   MaterialFactors f;
-  f.mass = s.formula_row(13, "mass factor", (kM / beta2) / (kM0 / c.beta2), "", "masses at equal lengths: M = K^2 (k_M/beta2) L2^4 (eq:ExtraScalings)");
+  f.mass = s.formula_row(13, "mass factor", (kM / beta2) / (kM0 / c.beta2), "",
+                         "masses at equal lengths: M = K^2 (k_M/beta2) L2^4 (eq:ExtraScalings)");
   f.diameter = s.formula_row(14, "diameter factor", sqrt((kD / beta2) / (kD0 / c.beta2)), "", "D = sqrt(K k_D/beta2) L2^1.5 (eq:ExtraScalings)");
   f.energy = s.formula_row(15, "energy factor", f.mass * g / c.g, "", "T in units of M g L2 (section 3)");
   f.g = g;
@@ -422,15 +420,16 @@ MaterialFactors write_material(lxw_workbook* book, Formats& formats, const Const
 // whose interval holds the solution's X (eq:Xi) chosen by a lookup. `fixed` says how many of the
 // givens' names are fixed (2 for R and T, 1 for R and one parameter, 0 for any pair).
 struct DesignResult {
-  Expr valid;                              // 1 when the request gives an engine, else 0
+  Expr valid;  // 1 when the request gives an engine, else 0
   Expr R, T, L1, L2, L3, L4, D, M, m, mb;  // what the model-scaling sheet takes from it
 };
 
-DesignResult write_design(lxw_workbook* book, Formats& formats, const std::string& name, const std::string& heading,
-                          const ConstantsSheet& c, const MaterialFactors& f, const DesignRequest& request, int fixed) {
+DesignResult write_design(lxw_workbook* book, Formats& formats, const std::string& name, const std::string& heading, const ConstantsSheet& c,
+                          const MaterialFactors& f, const DesignRequest& request, int fixed) {
   Sheet s(book, name, formats);
-  s.title(heading, "Type the yellow cells. The rows below solve eq:ZiZj_RT in every segment of the table and keep the one whose "
-                   "interval holds X; the engine follows from eq:ZRT.");
+  s.title(heading,
+          "Type the yellow cells. The rows below solve eq:ZiZj_RT in every segment of the table and keep the one whose "
+          "interval holds X; the engine follows from eq:ZRT.");
   std::array<Text, 2> names;
   std::array<Expr, 2> values;
   const Given givens[] = {request.first, request.second};
@@ -451,7 +450,8 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
     names[k] = k < fixed ? s.text_cell(row, 1, quantity) : s.input_text(row, 1, quantity);
     if (k >= fixed) s.choices(row, 1, quantities.data());
     s.describe(row + 1, which + " value", "", "a number in SI base units, as the unit beside it says: 250 for 250 m, 3110 for 3.11 t");
-    values[k] = s.number_input(row + 1, 1, givens[k].value, "Type a number alone, in the unit shown beside it (m, J or kg): 250 for 250 m, 3110 for 3.11 t.");
+    values[k] = s.number_input(row + 1, 1, givens[k].value,
+                               "Type a number alone, in the unit shown beside it (m, J or kg): 250 for 250 m, 3110 for 3.11 t.");
   }
   s.describe(7, "theta_i", "deg", "initial beam angle; the table has the blocks on the constants sheet");
   const Expr theta = s.number_input(7, 1, request.theta_i_deg, "Type the angle in degrees, a number from 0 to 90: 30 for 30 deg.", 0, 90);
@@ -469,10 +469,12 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
     // Its column among the quantity names, matched case-sensitively (0 if none).
     const Expr position{"SUMPRODUCT(EXACT(" + c.quantity_names + "," + names[k].f + ")*(COLUMN(" + c.quantity_names + ")-1))",
                         found == log_linear.end() ? 0.0 : static_cast<double>(found - log_linear.begin() + 1)};
-    k_of[k] = s.formula_row(11 + k, std::string(k == 0 ? "first" : "second") + " given's column", position, "", "its place among the quantities of the constants sheet");
+    k_of[k] = s.formula_row(11 + k, std::string(k == 0 ? "first" : "second") + " given's column", position, "",
+                            "its place among the quantities of the constants sheet");
     // Masses, D and T of the table are in its own material: divide by the factors (section 7).
-    const Expr factor{"CHOOSE(" + k_of[k].f + ",1," + f.energy.f + ",1,1,1," + f.diameter.f + "," + f.mass.f + "," + f.mass.f + "," + f.mass.f + ",1)",
-                      std::array<double, 10>{1, f.energy.v, 1, 1, 1, f.diameter.v, f.mass.v, f.mass.v, f.mass.v, 1}[static_cast<std::size_t>(k_of[k].v) - 1]};
+    const Expr factor{
+        "CHOOSE(" + k_of[k].f + ",1," + f.energy.f + ",1,1,1," + f.diameter.f + "," + f.mass.f + "," + f.mass.f + "," + f.mass.f + ",1)",
+        std::array<double, 10>{1, f.energy.v, 1, 1, 1, f.diameter.v, f.mass.v, f.mass.v, f.mass.v, 1}[static_cast<std::size_t>(k_of[k].v) - 1]};
     // The unit of the given's value, beside it.
     static const char* units[] = {"m", "J", "m", "m", "m", "m", "kg", "kg", "kg", "(pure number)"};
     std::string unit_choice = "CHOOSE(" + k_of[k].f;
@@ -485,7 +487,8 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
   // One row per segment: eq:ZiZj_RT, X (eq:Xi), whether X lies inside, and a score that prefers
   // the branch with the higher Q (lower below X_d, upper above; section 6.2), then depth inside.
   const int header = 40, first = 41, last = first + c.rows - 1;
-  const char* columns[] = {"segment", "block", "c1", "p1", "q1", "c2", "p2", "q2", "D_ij", "ln(R/R0)", "ln(T/T0)", "X", "inside", "allowed", "preferred", "depth", "score", "amplification"};
+  const char* columns[] = {"segment",  "block",    "c1", "p1",     "q1",      "c2",        "p2",    "q2",    "D_ij",
+                           "ln(R/R0)", "ln(T/T0)", "X",  "inside", "allowed", "preferred", "depth", "score", "amplification"};
   for (int k = 0; k < 18; ++k) s.heading(header, k, columns[k]);
   s.text(header - 1, 0, "Every segment of the table, solved (eq:ZiZj_RT); the highest score is the engine above.");
   Column lr_col, lt_col, score_col, amp_col;
@@ -498,7 +501,8 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
     // c, p or q (j = 0, 1, 2) of a given's law in this segment: column 3 (k - 1) + j + 1 of the laws.
     auto law = [&](int given, int j) {
       const std::size_t q = static_cast<std::size_t>(k_of[given].v) - 1;
-      return Expr{"INDEX(" + c.laws + "," + k.f + ",3*(" + k_of[given].f + "-1)+" + std::to_string(j + 1) + ")", c.law[q][j].v.at(static_cast<std::size_t>(r))};
+      return Expr{"INDEX(" + c.laws + "," + k.f + ",3*(" + k_of[given].f + "-1)+" + std::to_string(j + 1) + ")",
+                  c.law[q][j].v.at(static_cast<std::size_t>(r))};
     };
     const Expr c1 = s.formula(row, 2, law(0, 0)), p1 = s.formula(row, 3, law(0, 1)), q1 = s.formula(row, 4, law(0, 2));
     const Expr c2 = s.formula(row, 5, law(1, 0)), p2 = s.formula(row, 6, law(1, 1)), q2 = s.formula(row, 7, law(1, 2));
@@ -509,11 +513,13 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
     const Expr lt = s.formula(row, 10, (p1 * b2 - b1 * p2) / safe_det);
     const Expr X = s.formula(row, 11, (num(5) * lr - lt) / sqrt26);  // eq:XY_RT
     const Expr X_min = element(c.X_min, k), X_max = element(c.X_max, k);
-    const Expr inside = s.formula(row, 12, block * at_most(X_min - num(1e-12), X) * at_most(X, X_max + num(1e-12)) * (num(1) - below(abs(det), num(1e-12))));
+    const Expr inside = s.formula(row, 12,
+                                  block * at_most(X_min - num(1e-12), X) * at_most(X, X_max + num(1e-12)) * (num(1) - below(abs(det), num(1e-12))));
     const Text segment_branch = element(c.branch, k);
     const Expr allowed = s.formula(row, 13, either(either(is(segment_branch, "none"), automatic), same(segment_branch, branch)));
     const Expr X_d = element(c.X_d, k);
-    const Expr preferred = s.formula(row, 14, choose(is(segment_branch, "lower"), below(X, X_d), choose(is(segment_branch, "upper"), at_most(X_d, X), num(1))));
+    const Expr preferred = s.formula(
+        row, 14, choose(is(segment_branch, "lower"), below(X, X_d), choose(is(segment_branch, "upper"), at_most(X_d, X), num(1))));
     const Expr depth = s.formula(row, 15, min(X - X_min, X_max - X));
     const Expr score = s.formula(row, 16, inside * allowed * (num(10) + num(5) * automatic * preferred + depth));
     const Expr amplification = s.formula(row, 17, max(abs(q2) + abs(q1), abs(p2) + abs(p1)) / abs(safe_det));
@@ -533,13 +539,13 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
   };
   // The status first: a refused request leaves every result blank, so that it never looks like one.
   const Expr L1 = Z(Param::L1), L2 = Z(Param::L2), L3 = F * L1 * cos_deg(theta) - L2;
-  const Text status = choose(ok, choose(below(num(50), amplification), literal("refused: the pair barely fixes the capacity (amplification above 50)"),
-                                        choose(at_most(L3, num(0)), literal("refused: no room for the counterweight arm (L3 <= 0)"), literal("ok"))),
+  const Text status = choose(ok,
+                             choose(below(num(50), amplification), literal("refused: the pair barely fixes the capacity (amplification above 50)"),
+                                    choose(at_most(L3, num(0)), literal("refused: no room for the counterweight arm (L3 <= 0)"), literal("ok"))),
                              literal("no segment of the table holds these givens: X lies outside every interval of this block"));
   s.text_row(19, "status", status, "what the calculator would say; the results below are blank unless it is ok");
   DesignResult out;
-  out.valid = s.formula_row(20, "valid", ok * (num(1) - below(num(50), amplification)) * below(num(0), L3), "",
-                            "1 when the status is ok, else 0");
+  out.valid = s.formula_row(20, "valid", ok * (num(1) - below(num(50), amplification)) * below(num(0), L3), "", "1 when the status is ok, else 0");
   s.text_row(21, "segment branch", element(c.branch, k), "the branch of the chosen segment (section 6.2)");
   s.heading(22, 0, "the optimal engine");
   int row = 23;
@@ -565,7 +571,8 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
   output("M in t", out.M / num(1000), "t", "the same counterweight in tonnes");
   out.m = engine_output(&V::m, Z(Param::m) * f.mass, "eq:ZRT");
   out.mb = engine_output(&V::mb, Z(Param::mb) * f.mass, "eq:ZRT");
-  output("amplification", amplification, "", "relative change of R or T per relative change of a given (eq:ZiZj_RT); above 10 ill-conditioned, above 50 refused");
+  output("amplification", amplification, "",
+         "relative change of R or T per relative change of a given (eq:ZiZj_RT); above 10 ill-conditioned, above 50 refused");
   worksheet_print_area(s.raw(), 0, 0, static_cast<lxw_row_t>(row), 3);
   return out;
 }
@@ -609,8 +616,10 @@ void write_derived(lxw_workbook* book, Formats& formats, const Engine& e, const 
 void write_model_scaling(lxw_workbook* book, Formats& formats, const DesignResult& full, double scale) {
   Sheet s(book, "model scaling", formats);
   s.title("A model of the optimal engine (eq:ExtraScalings)",
-          "The full-size engine is the one on the sheet 'from R and T' (blank here when that sheet refuses its request). Lengths and R scale with lambda, D with lambda^1.5, masses with lambda^4, T with lambda^5.");
-  const Expr lambda = s.input_row(3, "lambda", scale, "", "size of the model over the full size; it opens on the 80 m model of Denny's table of the 425 m engine (80/425)");
+          "The full-size engine is the one on the sheet 'from R and T' (blank here when that sheet refuses its request). Lengths and R scale with "
+          "lambda, D with lambda^1.5, masses with lambda^4, T with lambda^5.");
+  const Expr lambda = s.input_row(3, "lambda", scale, "",
+                                  "size of the model over the full size; it opens on the 80 m model of Denny's table of the 425 m engine (80/425)");
   s.heading(5, 0, "quantity");
   s.heading(5, 1, "model");
   s.heading(5, 2, "unit");
@@ -679,9 +688,7 @@ DesignRequest SpreadsheetInputs::example(Quantity first, double first_value, Qua
   return request;
 }
 
-Engine SpreadsheetInputs::alcala_ca() {
-  return design_optimal_engine(builtin_scaling_table(), example(Quantity::R, 150, Quantity::m, 50)).engine;
-}
+Engine SpreadsheetInputs::alcala_ca() { return design_optimal_engine(builtin_scaling_table(), example(Quantity::R, 150, Quantity::m, 50)).engine; }
 
 void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& inputs, const std::string& path) {
   check_material(inputs.material);
@@ -689,8 +696,9 @@ void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& input
     table.block(sheet->theta_i_deg, sheet->F);  // the calculator's refusal of a (theta_i, F) the table lacks
     for (const Given& given : {sheet->first, sheet->second})
       if (given.quantity == Quantity::Lb)
-        throw Error(ErrorKind::given_count, "the workbook's pairs are log-linear (eq:RT_ZiZj), and Lb = L1 + L2 is not; give l = L1/L2 "
-                                            "instead, or design with Lb in trebuchet-calc itself");
+        throw Error(ErrorKind::given_count,
+                    "the workbook's pairs are log-linear (eq:RT_ZiZj), and Lb = L1 + L2 is not; give l = L1/L2 "
+                    "instead, or design with Lb in trebuchet-calc itself");
   }
   // Written under a temporary name and moved into place when closed: a failure leaves no half workbook.
   PendingOutput output(path, "spreadsheet");
@@ -714,13 +722,13 @@ void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& input
   format_set_font_color(formats.note, 0x555555);
   const ConstantsSheet constants = write_constants(book, formats, table);
   const MaterialFactors factors = write_material(book, formats, constants, inputs.material);
-  const DesignResult capacity =
-      write_design(book, formats, "from R and T", "The optimal engine for a capacity (R, T) (eq:ZRT)", constants, factors, inputs.capacity, 2);
+  const DesignResult capacity = write_design(book, formats, "from R and T", "The optimal engine for a capacity (R, T) (eq:ZRT)", constants, factors,
+                                             inputs.capacity, 2);
   worksheet_activate(workbook_get_worksheet_by_name(book, "from R and T"));  // it opens on the first design, not on the constants
   write_design(book, formats, "from R and one", "The optimal engine for R and one parameter (eq:RT_ZiZj with Z_i = R)", constants, factors,
                inputs.range_and_one, 1);
-  write_design(book, formats, "from any pair", "The optimal engine for any two givens (eq:RT_ZiZj, eq:ZiZj_RT)", constants, factors,
-               inputs.any_pair, 0);
+  write_design(book, formats, "from any pair", "The optimal engine for any two givens (eq:RT_ZiZj, eq:ZiZj_RT)", constants, factors, inputs.any_pair,
+               0);
   write_derived(book, formats, inputs.engine, factors.g);
   write_model_scaling(book, formats, capacity, inputs.model_scale);
   write_glossary(book, formats);

@@ -97,9 +97,7 @@ class Reader {
     throw Error(ErrorKind::data_file, origin_ + ": " + (path.empty() ? "top level" : path) + ": " + problem);
   }
 
-  static std::string join(const std::string& path, const std::string& key) {
-    return path.empty() ? key : path + "." + key;
-  }
+  static std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
 
   const json& member(const json& object, const std::string& path, const std::string& key) const {
     if (!object.is_object()) fail(path, "expected an object");
@@ -180,9 +178,12 @@ void check_exponents(const Reader& reader, const Segment& segment, const ParamVe
     const double p = segment.exponents(index(param), 0), q = segment.exponents(index(param), 1);
     const double allowed = last_digit_unit(texts, path + ".p." + name) + 5 * last_digit_unit(texts, path + ".q." + name) + 1e-12;
     if (!(std::abs(p + 5 * q - n[index(param)]) <= allowed))
-      reader.fail(path, "p + 5 q = " + format_significant(p + 5 * q, 6) + " for " + name + ", not n = " + format_number(n[index(param)]) +
-                            " as eq:ZRT requires (to " + format_significant(allowed, 2) + ", what the printed digits allow); "
-                            "correct p or q of " + name);
+      reader.fail(path,
+                  "p + 5 q = " + format_significant(p + 5 * q, 6) + " for " + name + ", not n = " + format_number(n[index(param)]) +
+                      " as eq:ZRT requires (to " + format_significant(allowed, 2) +
+                      ", what the printed digits allow); "
+                      "correct p or q of " +
+                      name);
   }
 }
 
@@ -205,9 +206,9 @@ void check_overlaps(const Reader& reader, const TableBlock& block, const std::st
       const bool overlap = std::max(s.X_min, t.X_min) < std::min(s.X_max, t.X_max);
       const bool labelled = s.branch != Branch::none && t.branch != Branch::none && s.branch != t.branch;
       if (overlap && !labelled)
-        reader.fail(path + ".segments", "segments [" + format_number(s.X_min) + ", " + format_number(s.X_max) +
-                                            "] and [" + format_number(t.X_min) + ", " + format_number(t.X_max) +
-                                            "] overlap; label them \"lower\" and \"upper\"");
+        reader.fail(path + ".segments",
+                    "segments [" + format_number(s.X_min) + ", " + format_number(s.X_max) + "] and [" + format_number(t.X_min) + ", " +
+                        format_number(t.X_max) + "] overlap; label them \"lower\" and \"upper\"");
     }
 }
 
@@ -224,8 +225,7 @@ TableBlock parse_block(const Reader& reader, const json& object, const std::stri
     block.segments.push_back(parse_segment(reader, segments[i], here));
     check_exponents(reader, block.segments.back(), n, here, texts);
   }
-  std::stable_sort(block.segments.begin(), block.segments.end(),
-                   [](const Segment& a, const Segment& b) { return a.X_min < b.X_min; });
+  std::stable_sort(block.segments.begin(), block.segments.end(), [](const Segment& a, const Segment& b) { return a.X_min < b.X_min; });
   check_overlaps(reader, block, path);
   return block;
 }
@@ -234,8 +234,9 @@ TableBlock parse_block(const Reader& reader, const json& object, const std::stri
 
 ScalingTable parse_scaling_table(std::string_view json_text, const std::string& origin) {  // tab:CPNC and its re-derivations
   if (json_depth(json_text) > max_json_depth)
-    throw Error(ErrorKind::data_file, origin + ": arrays or objects nest more than " + std::to_string(max_json_depth) +
-                                          " levels deep; give a table in the schema of data/cpnc.json");
+    throw Error(ErrorKind::data_file,
+                origin + ": arrays or objects nest more than " + std::to_string(max_json_depth) +
+                    " levels deep; give a table in the schema of data/cpnc.json");
   if (const auto key = duplicate_key(json_text))
     throw Error(ErrorKind::data_file, origin + ": the key \"" + *key + "\" is given twice in one object; keep one");
   json document;
@@ -260,18 +261,17 @@ ScalingTable parse_scaling_table(std::string_view json_text, const std::string& 
   table.R0 = reader.positive(document, "", "R0");
   table.T0 = reader.positive(document, "", "T0");
   const json& material = reader.member(document, "", "reference_material");
-  table.reference = {reader.positive(material, "reference_material", "beta2"),
-                     reader.positive(material, "reference_material", "youngs_modulus"),
-                     reader.positive(material, "reference_material", "wood_density"),
-                     reader.positive(material, "reference_material", "g")};
+  table.reference = {reader.positive(material, "reference_material", "beta2"), reader.positive(material, "reference_material", "youngs_modulus"),
+                     reader.positive(material, "reference_material", "wood_density"), reader.positive(material, "reference_material", "g")};
   table.n = reader.per_param(document, "", "n", true);
   const json& blocks = reader.array(document, "", "blocks");
   for (std::size_t i = 0; i < blocks.size(); ++i) {
     const std::string path = "blocks[" + std::to_string(i) + "]";
     const TableBlock block = parse_block(reader, blocks[i], path, table.n, numbers.texts);
     if (table.find_block(block.theta_i_deg, block.F))
-      reader.fail(path, "a second block for theta_i = " + format_number(block.theta_i_deg) + " deg, F = " + format_fraction(block.F) +
-                            "; give each (theta_i, F) once");
+      reader.fail(path,
+                  "a second block for theta_i = " + format_number(block.theta_i_deg) + " deg, F = " + format_fraction(block.F) +
+                      "; give each (theta_i, F) once");
     table.blocks.push_back(block);
   }
   return table;
@@ -335,10 +335,11 @@ Shard parse_shard(const std::string& text) {
     return ec == std::errc() && end == digits.data() + digits.size() && !digits.empty() && digits.front() != '-';
   };
   const std::string_view view(text);
-  if (slash == std::string::npos || !whole(view.substr(0, slash), shard.k) || !whole(view.substr(slash + 1), shard.n) ||
-      shard.n < 1 || shard.k < 1 || shard.k > shard.n)
-    throw Error(ErrorKind::usage, "{{shard}}: '" + text + "' is not a part; give k/N with 1 <= k <= N <= " +
-                                      std::to_string(std::numeric_limits<int>::max()) + ", e.g. 2/8");
+  if (slash == std::string::npos || !whole(view.substr(0, slash), shard.k) || !whole(view.substr(slash + 1), shard.n) || shard.n < 1 || shard.k < 1 ||
+      shard.k > shard.n)
+    throw Error(
+        ErrorKind::usage,
+        "{{shard}}: '" + text + "' is not a part; give k/N with 1 <= k <= N <= " + std::to_string(std::numeric_limits<int>::max()) + ", e.g. 2/8");
   return shard;
 }
 
@@ -410,8 +411,7 @@ nlohmann::ordered_json sweep_part_json(const SweepPart& part) {
 
 SweepPart read_sweep_part(const nlohmann::json& j, const std::string& origin) {
   // "kind" may be any JSON at all: compared only when it is a string.
-  if (!j.is_object() || !j.contains("kind") || !j["kind"].is_string() || j["kind"].get<std::string>() != part_kind)
-    fail(origin, "not a sweep part");
+  if (!j.is_object() || !j.contains("kind") || !j["kind"].is_string() || j["kind"].get<std::string>() != part_kind) fail(origin, "not a sweep part");
   const Reader reader(origin);
   SweepPart part;
   part.origin = origin;

@@ -19,8 +19,7 @@ namespace {
 std::string read_bounded(std::istream& in) {
   std::string text;
   char chunk[1 << 16];
-  while (text.size() <= max_input_bytes && in.read(chunk, sizeof chunk).gcount() > 0)
-    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+  while (text.size() <= max_input_bytes && in.read(chunk, sizeof chunk).gcount() > 0) text.append(chunk, static_cast<std::size_t>(in.gcount()));
   return text;
 }
 
@@ -50,8 +49,10 @@ std::string quote_huge_numbers(const std::string& text) {
     const char c = text[i];
     if (in_string) {
       out += c;
-      if (c == '\\' && i + 1 < text.size()) out += text[++i];
-      else if (c == '"') in_string = false;
+      if (c == '\\' && i + 1 < text.size())
+        out += text[++i];
+      else if (c == '"')
+        in_string = false;
       ++i;
     } else if (c == '"') {
       in_string = true;
@@ -79,8 +80,10 @@ std::size_t json_depth(std::string_view text) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (in_string) {
-      if (c == '\\') ++i;
-      else if (c == '"') in_string = false;
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        in_string = false;
     } else if (c == '"') {
       in_string = true;
     } else if (c == '[' || c == '{') {
@@ -207,14 +210,12 @@ std::string read_text(const std::string& path, std::string_view expected) {
 }
 
 nlohmann::json parse_json(const std::string& text, const std::string& source, std::string_view expected) {
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos)
-    throw Error(ErrorKind::usage, source + " is empty; give " + std::string(expected));
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw Error(ErrorKind::usage, source + " is empty; give " + std::string(expected));
   if (json_depth(text) > max_json_depth)
-    throw Error(ErrorKind::usage, source + " nests arrays or objects more than " + std::to_string(max_json_depth) +
-                                      " levels deep; give " + std::string(expected));
+    throw Error(ErrorKind::usage,
+                source + " nests arrays or objects more than " + std::to_string(max_json_depth) + " levels deep; give " + std::string(expected));
   const std::string quoted = quote_huge_numbers(text);  // so that no number stops the search for keys either
-  if (const auto key = duplicate_key(quoted))
-    throw Error(ErrorKind::usage, source + " gives the key \"" + *key + "\" twice in one object; keep one");
+  if (const auto key = duplicate_key(quoted)) throw Error(ErrorKind::usage, source + " gives the key \"" + *key + "\" twice in one object; keep one");
   try {
     return nlohmann::json::parse(quoted);
   } catch (const nlohmann::json::exception& e) {

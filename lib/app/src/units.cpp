@@ -45,8 +45,8 @@ constexpr std::array<Unit, 48> units = {{
     {"J", UnitDimension::energy, 1.0},
     {"kJ", UnitDimension::energy, 1e3},
     {"MJ", UnitDimension::energy, 1e6},
-    {"ft*lbf", UnitDimension::energy, foot * pound_force},
-    {"ftlbf", UnitDimension::energy, foot * pound_force},
+    {"ft*lbf", UnitDimension::energy, foot* pound_force},
+    {"ftlbf", UnitDimension::energy, foot* pound_force},
     {"deg", UnitDimension::angle, 1.0},
     {"m/s2", UnitDimension::acceleration, 1.0},
     {"m/s^2", UnitDimension::acceleration, 1.0},
@@ -73,13 +73,13 @@ constexpr std::array<Unit, 48> units = {{
     {"N*m", UnitDimension::moment, 1.0},
     {"kg*m2", UnitDimension::inertia, 1.0},
     {"kg*m^2", UnitDimension::inertia, 1.0},
-    {"lb*ft2", UnitDimension::inertia, pound * foot * foot},
+    {"lb*ft2", UnitDimension::inertia, pound* foot* foot},
 }};
 
 // How messages speak of each dimension.
 struct DimensionText {
-  std::string_view word;     // "a length"
-  std::string_view bare;     // unit of a bare number: "metres"
+  std::string_view word;  // "a length"
+  std::string_view bare;  // unit of a bare number: "metres"
   std::string_view example;  // a valid value: "150m"
 };
 
@@ -137,10 +137,14 @@ std::size_t parse_number_prefix(std::string_view text, double& value, const std:
 // `text` without the blanks it starts with: spaces, tabs, U+00A0 and U+202F.
 std::string_view skip_blanks(std::string_view text) {
   while (true) {
-    if (!text.empty() && (text.front() == ' ' || text.front() == '\t')) text.remove_prefix(1);
-    else if (text.rfind("\u00a0", 0) == 0) text.remove_prefix(2);
-    else if (text.rfind("\u202f", 0) == 0) text.remove_prefix(3);
-    else return text;
+    if (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
+      text.remove_prefix(1);
+    else if (text.rfind("\u00a0", 0) == 0)
+      text.remove_prefix(2);
+    else if (text.rfind("\u202f", 0) == 0)
+      text.remove_prefix(3);
+    else
+      return text;
   }
 }
 
@@ -211,8 +215,7 @@ double parse_value(std::string_view text, UnitDimension dimension, std::string_v
   if (number.malformed_fraction) throw Error(ErrorKind::bad_number, what + " is not a valid fraction; " + fix);
   const double value = number.value;
   std::string_view rest = text.substr(number.length);
-  if (!std::isfinite(value))
-    throw Error(ErrorKind::bad_number, what + " is not a finite number; " + fix);
+  if (!std::isfinite(value)) throw Error(ErrorKind::bad_number, what + " is not a finite number; " + fix);
 
   if (rest.empty()) return value;
   if (text.find("..") != std::string_view::npos || text.find("\u00b1") != std::string_view::npos || text.find("+-") != std::string_view::npos)
@@ -224,24 +227,23 @@ double parse_value(std::string_view text, UnitDimension dimension, std::string_v
   for (const Unit& unit : units) {
     if (unit.suffix != rest) continue;
     if (unit.dimension != dimension)
-      throw Error(ErrorKind::unknown_unit, what + " is " + std::string(dimension_text(unit.dimension).word) + ", but " +
-                                               std::string(name) + " is " + std::string(dimension_text(dimension).word) +
-                                               "; use " + unit_list(dimension) + " or a bare number in " +
-                                               std::string(dimension_text(dimension).bare));
+      throw Error(ErrorKind::unknown_unit,
+                  what + " is " + std::string(dimension_text(unit.dimension).word) + ", but " + std::string(name) + " is " +
+                      std::string(dimension_text(dimension).word) + "; use " + unit_list(dimension) + " or a bare number in " +
+                      std::string(dimension_text(dimension).bare));
     const double si = value * unit.to_si;
     if (!std::isfinite(si) || (si == 0 && value != 0))
       throw Error(ErrorKind::bad_number, what + " is beyond the range of numbers in SI units (about 1e-308 to 1e308); give a value of ordinary size");
     return si;
   }
-  throw Error(ErrorKind::unknown_unit, what + " has the unknown unit " + quoted(rest) + "; use " +
-                                           unit_list(dimension) + " or a bare number in " +
-                                           std::string(dimension_text(dimension).bare));
+  throw Error(ErrorKind::unknown_unit,
+              what + " has the unknown unit " + quoted(rest) + "; use " + unit_list(dimension) + " or a bare number in " +
+                  std::string(dimension_text(dimension).bare));
 }
 
 double parse_positive(std::string_view text, UnitDimension dimension, std::string_view name) {
   double value = parse_value(text, dimension, name);
-  if (!(value > 0))
-    throw Error(ErrorKind::bad_number, std::string(name) + ": " + quoted(text) + " must be positive; give a value > 0");
+  if (!(value > 0)) throw Error(ErrorKind::bad_number, std::string(name) + ": " + quoted(text) + " must be positive; give a value > 0");
   return value;
 }
 
@@ -259,8 +261,7 @@ std::optional<Spread> parse_spread(std::string_view text, UnitDimension dimensio
     std::string first = trimmed(text.substr(0, at)), second = trimmed(text.substr(at + separator.size()));
     if (second.find(separator) != std::string::npos || text.find(separator == ".." ? "\u00b1" : "..") != std::string_view::npos)
       throw Error(ErrorKind::bad_number, what + " has more than one '..' or '±'; write " + form);
-    if (first.empty() || second.empty())
-      throw Error(ErrorKind::bad_number, what + " lacks a side; write " + form);
+    if (first.empty() || second.empty()) throw Error(ErrorKind::bad_number, what + " lacks a side; write " + form);
     const std::string first_unit = unit_of(first, name), second_unit = unit_of(second, name);
     if (bare_number(first) && !second_unit.empty()) first += second_unit;
     if (bare_number(second) && !first_unit.empty()) second += first_unit;

@@ -30,8 +30,9 @@ DesignInputs read_design_inputs(const std::string& text, const std::string& path
     const std::vector<std::string> written = verification_output_names();
     for (const std::string& column : rows.passed_columns)
       if (std::find(written.begin(), written.end(), column) != written.end())
-        throw Error(ErrorKind::usage, source_name(path) + ": the column '" + column + "' would pass through, but the output has a column '" +
-                                          column + "' of its own; rename it, e.g. '" + column + "_input'");
+        throw Error(ErrorKind::usage,
+                    source_name(path) + ": the column '" + column + "' would pass through, but the output has a column '" + column +
+                        "' of its own; rename it, e.g. '" + column + "_input'");
     in.passed_columns = std::move(rows.passed_columns);
     in.rows = std::move(rows.rows);
     for (const auto& row : in.rows) in.where.push_back("line " + std::to_string(row.line));
@@ -63,11 +64,13 @@ void check_fixed_beam_ratio(double l, const std::string& name) {
   // Below l = 2 the long arm is hardly longer than the short one: no engine of the paper (l
   // from 3 to 59), and most shapes there leave no room for the counterweight arm at all.
   if (!(l >= 2))
-    throw Error(ErrorKind::usage, name + " " + format_significant(l, 4) + " is below the beam ratios the fixed-l search covers (2 to " +
-                                      format_number(max_beam_ratio) + "; the paper's engines have 3 to 59); give a larger " + name);
+    throw Error(ErrorKind::usage,
+                name + " " + format_significant(l, 4) + " is below the beam ratios the fixed-l search covers (2 to " + format_number(max_beam_ratio) +
+                    "; the paper's engines have 3 to 59); give a larger " + name);
   if (!(l < max_beam_ratio))
-    throw Error(ErrorKind::usage, name + " " + format_significant(l, 4) + " is beyond the optimizer's beam ratios (below " + format_number(max_beam_ratio) +
-                                      ", appendix B's largest is 59); give a smaller " + name);
+    throw Error(ErrorKind::usage,
+                name + " " + format_significant(l, 4) + " is beyond the optimizer's beam ratios (below " + format_number(max_beam_ratio) +
+                    ", appendix B's largest is 59); give a smaller " + name);
 }
 
 DesignReport check_design(const EngineRecord& record, const DesignCheck& check) {
@@ -79,8 +82,9 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   std::string fitted_table;
   if (check.fit) {
     if (engine.parts.any())
-      throw Error(ErrorKind::usage, "fit scales the paper's ideal engine to a capacity; an engine as built (friction, a beam or counterweight "
-                                    "as built, a rope) is checked by shot, or fitted to a measured range by calibrate");
+      throw Error(ErrorKind::usage,
+                  "fit scales the paper's ideal engine to a capacity; an engine as built (friction, a beam or counterweight "
+                  "as built, a rope) is checked by shot, or fitted to a measured range by calibrate");
     if (!record.capacity) throw Error(ErrorKind::usage, "fit needs a capacity; give {{R}} and {{T}}, or \"R\" and \"T\" in the input");
     const CapacityFit result = fit_capacity(scaled_design(engine), *record.capacity, engine.material, check.settings);
     engine = result.engine;
@@ -117,10 +121,11 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
 
 void check_monte_carlo_work(std::int64_t samples, std::int64_t shots_per_sample, const std::string& sampled) {
   if (samples * shots_per_sample <= max_run_shots) return;
-  throw Error(ErrorKind::usage, "{{samples}} " + std::to_string(samples) + " of " + sampled + " at " + std::to_string(shots_per_sample) +
-                                    " shot(s) each would take " + std::to_string(samples * shots_per_sample) + " shots, more than the " +
-                                    std::to_string(max_run_shots) + " a run may take (about 30 s on two cores); give {{samples}} " +
-                                    std::to_string(std::max<std::int64_t>(1, max_run_shots / shots_per_sample)) + " or fewer");
+  throw Error(ErrorKind::usage,
+              "{{samples}} " + std::to_string(samples) + " of " + sampled + " at " + std::to_string(shots_per_sample) + " shot(s) each would take " +
+                  std::to_string(samples * shots_per_sample) + " shots, more than the " + std::to_string(max_run_shots) +
+                  " a run may take (about 30 s on two cores); give {{samples}} " +
+                  std::to_string(std::max<std::int64_t>(1, max_run_shots / shots_per_sample)) + " or fewer");
 }
 
 std::int64_t shots_per_completion(const std::function<Completion()>& trial) {
@@ -135,17 +140,23 @@ std::int64_t shots_per_completion(const std::function<Completion()>& trial) {
 void refuse_when_no_sample_worked(const MonteCarloSummary& summary) {
   if (!summary.values.empty()) return;
   const SampleFailures& most = summary.failures.front();
-  throw Error(most.kind, "no sample worked; the most frequent reason (" + std::to_string(most.count) + " of " +
-                             std::to_string(summary.samples) + "), in its first sample: " + most.first);
+  throw Error(most.kind,
+              "no sample worked; the most frequent reason (" + std::to_string(most.count) + " of " + std::to_string(summary.samples) +
+                  "), in its first sample: " + most.first);
 }
 
 std::string describe_uncertain(const UncertainInput& u) {
   const Spread& s = u.spread;
-  const char* unit = u.dimension == UnitDimension::length ? " m" : u.dimension == UnitDimension::mass ? " kg"
-                     : u.dimension == UnitDimension::angle ? " deg" : u.dimension == UnitDimension::speed ? " m/s"
-                     : u.dimension == UnitDimension::density ? " kg/m3" : "";
-  return u.name + (s.kind == Spread::Kind::uniform ? " uniform " + format_significant(s.a, 6) + ".." + format_significant(s.b, 6)
-                                                   : " normal " + format_significant(s.a, 6) + "±" + format_significant(s.b, 6)) + unit;
+  const char* unit = u.dimension == UnitDimension::length ? " m"
+      : u.dimension == UnitDimension::mass                ? " kg"
+      : u.dimension == UnitDimension::angle               ? " deg"
+      : u.dimension == UnitDimension::speed               ? " m/s"
+      : u.dimension == UnitDimension::density             ? " kg/m3"
+                                                          : "";
+  return u.name +
+      (s.kind == Spread::Kind::uniform ? " uniform " + format_significant(s.a, 6) + ".." + format_significant(s.b, 6)
+                                       : " normal " + format_significant(s.a, 6) + "±" + format_significant(s.b, 6)) +
+      unit;
 }
 
 nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
@@ -157,7 +168,9 @@ nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
   nlohmann::ordered_json uncertain = nlohmann::ordered_json::array();
   for (const auto& [name, dimension, spread] : r.inputs) {
     const bool uniform = spread.kind == Spread::Kind::uniform;
-    uncertain.push_back({{"option", name}, {"distribution", uniform ? "uniform" : "normal"}, {uniform ? "from" : "mean", spread.a},
+    uncertain.push_back({{"option", name},
+                         {"distribution", uniform ? "uniform" : "normal"},
+                         {uniform ? "from" : "mean", spread.a},
                          {uniform ? "to" : "deviation", spread.b}});
   }
   out["uncertain"] = uncertain;
@@ -167,7 +180,8 @@ nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
   out["assumptions"] = r.assumptions;
   for (std::size_t k = 0; k < sample_names.size(); ++k)
     if (!summary.values.empty())
-      out["percentiles"][sample_names[k]] = {{"p5", summary.percentiles[k][0]}, {"p50", summary.percentiles[k][1]}, {"p95", summary.percentiles[k][2]}};
+      out["percentiles"][sample_names[k]] = {
+          {"p5", summary.percentiles[k][0]}, {"p50", summary.percentiles[k][1]}, {"p95", summary.percentiles[k][2]}};
   nlohmann::ordered_json failures = nlohmann::ordered_json::array();
   for (const SampleFailures& f : summary.failures) failures.push_back({{"reason", f.reason}, {"count", f.count}, {"first", f.first}});
   out["failures"] = failures;
@@ -202,8 +216,8 @@ std::string monte_carlo_table(const MonteCarloReport& r) {
   }
   if (fixed.empty()) fixed.push_back("none");
   std::ostringstream out;
-  out << "Monte Carlo: " << summary.samples << " samples (--seed " << r.seed << ") of " << r.subject << ", "
-      << format_significant(r.seconds, 3) << " s on " << r.threads << " thread(s)\n"
+  out << "Monte Carlo: " << summary.samples << " samples (--seed " << r.seed << ") of " << r.subject << ", " << format_significant(r.seconds, 3)
+      << " s on " << r.threads << " thread(s)\n"
       << "uncertain: " << join(described, ", ") << "\n"
       << "fixed: " << join(fixed, ", ") << "\n"
       << "assumptions: " << r.assumptions << "\n"

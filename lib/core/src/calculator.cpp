@@ -38,8 +38,7 @@ LogLaw param_law(const TableBlock& block, const Segment& segment, Param param) {
 }
 
 // Lb = L1 + L2 is the one given that is not log-linear.
-std::optional<LogLaw> log_law(const ScalingTable& table, const TableBlock& block, const Segment& segment,
-                              Quantity quantity) {
+std::optional<LogLaw> log_law(const ScalingTable& table, const TableBlock& block, const Segment& segment, Quantity quantity) {
   if (auto param = fitted_param(quantity)) return param_law(block, segment, *param);
   switch (quantity) {
     case Quantity::R: return LogLaw{std::log(table.R0), {1, 0}};
@@ -66,7 +65,7 @@ constexpr double warn_amplification = 10, max_amplification = 50;
 
 struct Candidate {
   const Segment* segment;
-  double lr, lt;          // log(R/R0), log(T/T0)
+  double lr, lt;  // log(R/R0), log(T/T0)
   double amplification;
   double X() const { return capacity_coordinates(lr, lt).X; }
   bool inside() const { return X() >= segment->X_min - 1e-12 && X() <= segment->X_max + 1e-12; }
@@ -86,8 +85,7 @@ Eigen::Matrix2d pair_matrix(const LogLaw& i, const LogLaw& j) {
 double amplification_of(const Eigen::Matrix2d& A) { return A.inverse().cwiseAbs().rowwise().sum().maxCoeff(); }
 
 // eq:ZiZj_RT: (lr, lt) from two log-linear givens; nullopt when D_ij = 0.
-std::optional<Candidate> invert_pair(const Segment& segment, const LogLaw& i, double log_i, const LogLaw& j,
-                                     double log_j) {
+std::optional<Candidate> invert_pair(const Segment& segment, const LogLaw& i, double log_i, const LogLaw& j, double log_j) {
   const Eigen::Matrix2d A = pair_matrix(i, j);
   if (std::abs(A.determinant()) < 1e-12) return std::nullopt;  // D_ij
   const Eigen::Vector2d capacity = A.inverse() * Eigen::Vector2d(log_i - i.c, log_j - j.c);
@@ -121,12 +119,16 @@ struct BeamLengthSolutions {
   double Lb_min = 0, Lb_max = 0;  // [m]
 };
 
-BeamLengthSolutions invert_with_beam_length(const TableBlock& block, const Segment& segment, const LogLaw& A,
-                                            double log_A, double log_Lb) {
+BeamLengthSolutions invert_with_beam_length(const TableBlock& block, const Segment& segment, const LogLaw& A, double log_A, double log_Lb) {
   const double norm = A.pq.norm();
   const double b = (log_A - A.c) / norm;
-  BeamLengthLine line{A.pq(0) / norm * b, A.pq(1) / norm * b, A.pq(1) / norm, -A.pq(0) / norm,
-                      param_law(block, segment, Param::L1), param_law(block, segment, Param::L2), log_Lb};
+  BeamLengthLine line{A.pq(0) / norm * b,
+                      A.pq(1) / norm * b,
+                      A.pq(1) / norm,
+                      -A.pq(0) / norm,
+                      param_law(block, segment, Param::L1),
+                      param_law(block, segment, Param::L2),
+                      log_Lb};
   // The part of the line inside the segment's X interval; X is constant along it when A
   // depends on X alone (the beam ratio l), and then the line is only bounded by sanity.
   const double dX = capacity_coordinates(line.dr, line.dt).X;  // X is linear in (lr, lt)
@@ -174,8 +176,8 @@ bool first_is_beam_length(const Given& first, const Given&) { return first.quant
 // For a request with R and a log-linear other given, the ranges of R the block covers with that
 // other given held, [R_lo, R_hi] in m: in each segment, eq:RT_ZiZj with X at the segment's ends
 // (X = (5 lr - lt)/sqrt(26), eq:XY_RT) fixes lr. Empty when the pair has no R.
-std::optional<std::pair<double, double>> R_range_for(const ScalingTable& table, const TableBlock& block, const Given& gi,
-                                                     const Given& gj, const SizeFactors& scaling) {
+std::optional<std::pair<double, double>> R_range_for(const ScalingTable& table, const TableBlock& block, const Given& gi, const Given& gj,
+                                                     const SizeFactors& scaling) {
   const Given& other = gi.quantity == Quantity::R ? gj : gi;
   if ((gi.quantity == Quantity::R) == (gj.quantity == Quantity::R)) return std::nullopt;
   // X is log-linear in the capacity too (eq:XY_RT): with the other given, eq:ZiZj_RT fixes lr.
@@ -221,12 +223,21 @@ std::optional<Candidate> seam_candidate(const std::vector<Candidate>& candidates
 // `cause` gives the start of the message, built only when one is thrown (the calculator's hot path).
 void require_representable(const OptimalEngine& d, const std::function<std::string()>& cause) {
   const Engine& e = d.engine;
-  const std::pair<const char*, double> positive[] = {{"R", d.capacity.R}, {"T", d.capacity.T}, {"L1", e.L1}, {"L2", e.L2}, {"L3", e.L3},
-                                                     {"L4", e.L4}, {"D", e.D}, {"M", e.M}, {"m", e.m}, {"mb", e.mb},
+  const std::pair<const char*, double> positive[] = {{"R", d.capacity.R},
+                                                     {"T", d.capacity.T},
+                                                     {"L1", e.L1},
+                                                     {"L2", e.L2},
+                                                     {"L3", e.L3},
+                                                     {"L4", e.L4},
+                                                     {"D", e.D},
+                                                     {"M", e.M},
+                                                     {"m", e.m},
+                                                     {"mb", e.mb},
                                                      {"Delta U", potential_energy_drop(e)}};
   auto fail = [&](const char* name, const char* how) {
-    throw Error(ErrorKind::bad_number, cause() + " gives an engine whose " + name + " is " + how +
-                                           " for a number (beyond about 1e-308 to 1e308); give values of ordinary size");
+    throw Error(
+        ErrorKind::bad_number,
+        cause() + " gives an engine whose " + name + " is " + how + " for a number (beyond about 1e-308 to 1e308); give values of ordinary size");
   };
   for (const auto& [name, value] : positive) {
     if (!std::isfinite(value)) fail(name, "too large");
@@ -237,15 +248,11 @@ void require_representable(const OptimalEngine& d, const std::function<std::stri
 
 std::string describe_given(const Given& given) {
   const Dimension dimension = quantity_dimension(given.quantity);
-  const char* unit = dimension == Dimension::length ? " m" : dimension == Dimension::mass ? " kg"
-                     : dimension == Dimension::energy                                 ? " J"
-                                                                                      : "";
+  const char* unit = dimension == Dimension::length ? " m" : dimension == Dimension::mass ? " kg" : dimension == Dimension::energy ? " J" : "";
   return std::string(quantity_name(given.quantity)) + " = " + format_significant(given.value, 6) + unit;
 }
 
-std::string describe_interval(double lo, double hi) {
-  return "[" + format_number(lo) + ", " + format_number(hi) + "]";
-}
+std::string describe_interval(double lo, double hi) { return "[" + format_number(lo) + ", " + format_number(hi) + "]"; }
 
 std::string describe_block(const TableBlock& block) {
   return "theta_i = " + format_number(block.theta_i_deg) + " deg, F = " + format_fraction(block.F);
@@ -258,8 +265,7 @@ bool branch_allowed(const Candidate& candidate, BranchChoice choice) {
 }
 
 // Picks one candidate; fills warnings about branches and ambiguities.
-Candidate choose(const std::vector<Candidate>& inside, const TableBlock& block, BranchChoice choice,
-                 std::vector<std::string>& warnings) {
+Candidate choose(const std::vector<Candidate>& inside, const TableBlock& block, BranchChoice choice, std::vector<std::string>& warnings) {
   std::vector<Candidate> allowed;
   for (const Candidate& c : inside)
     if (branch_allowed(c, choice)) allowed.push_back(c);
@@ -268,9 +274,9 @@ Candidate choose(const std::vector<Candidate>& inside, const TableBlock& block, 
     const Candidate& other = inside.front();
     throw Error(ErrorKind::out_of_range,
                 "the " + std::string(choice == BranchChoice::lower ? "lower" : "upper") +
-                    " branch has no optimum for these givens (the solution lies at X = " +
-                    format_significant(other.X(), 3) + " on the " + std::string(branch_name(other.segment->branch)) +
-                    " branch); use {{branch}} auto or {{branch}} " + std::string(branch_name(other.segment->branch)));
+                    " branch has no optimum for these givens (the solution lies at X = " + format_significant(other.X(), 3) + " on the " +
+                    std::string(branch_name(other.segment->branch)) + " branch); use {{branch}} auto or {{branch}} " +
+                    std::string(branch_name(other.segment->branch)));
   }
   if (choice != BranchChoice::automatic && allowed.front().segment->branch == Branch::none)
     warnings.push_back("{{branch}} " + std::string(choice == BranchChoice::lower ? "lower" : "upper") +
@@ -362,22 +368,22 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
   const Given& gi = request.first;
   const Given& gj = request.second;
   if (gi.quantity == gj.quantity)
-    throw Error(ErrorKind::given_count, "both givens are " + std::string(quantity_name(gi.quantity)) +
-                                            "; give two different quantities, e.g. {{R}} 150m {{m}} 50kg");
+    throw Error(ErrorKind::given_count,
+                "both givens are " + std::string(quantity_name(gi.quantity)) + "; give two different quantities, e.g. {{R}} 150m {{m}} 50kg");
   for (const Given& g : {gi, gj})
-    if (!(g.value > 0) || !std::isfinite(g.value))
-      throw Error(ErrorKind::bad_number, describe_given(g) + " must be a positive finite number");
+    if (!(g.value > 0) || !std::isfinite(g.value)) throw Error(ErrorKind::bad_number, describe_given(g) + " must be a positive finite number");
 
   const TableBlock* block = &table.block(request.theta_i_deg, request.F);
 
   const SizeFactors scaling = size_factors(1, table.reference, 1, request.material);
   const Material& m = request.material;
-  if (!(std::isfinite(scaling.mass) && std::isfinite(scaling.energy) && std::isfinite(scaling.diameter) && scaling.mass > 0 &&
-        scaling.diameter > 0 && scaling.energy > 0 && scaling.mass < 1e300 && scaling.mass > 1e-300))
-    throw Error(ErrorKind::bad_number, "the material (beta2 = " + format_significant(m.beta2, 3) + ", Young's modulus " +
-                                           format_significant(m.youngs_modulus, 3) + " Pa, wood density " + format_significant(m.wood_density, 3) +
-                                           " kg/m^3, g = " + format_significant(m.g, 3) + " m/s^2) scales the masses by " +
-                                           "a factor beyond the range of numbers; give values of ordinary size, e.g. the paper's 1/300, 12GPa, 700kg/m3, 9.81");
+  if (!(std::isfinite(scaling.mass) && std::isfinite(scaling.energy) && std::isfinite(scaling.diameter) && scaling.mass > 0 && scaling.diameter > 0 &&
+        scaling.energy > 0 && scaling.mass < 1e300 && scaling.mass > 1e-300))
+    throw Error(ErrorKind::bad_number,
+                "the material (beta2 = " + format_significant(m.beta2, 3) + ", Young's modulus " + format_significant(m.youngs_modulus, 3) +
+                    " Pa, wood density " + format_significant(m.wood_density, 3) + " kg/m^3, g = " + format_significant(m.g, 3) +
+                    " m/s^2) scales the masses by " +
+                    "a factor beyond the range of numbers; give values of ordinary size, e.g. the paper's 1/300, 12GPa, 700kg/m3, 9.81");
   const double log_i = std::log(gi.value / material_factor(gi.quantity, scaling));
   const double log_j = std::log(gj.value / material_factor(gj.quantity, scaling));
 
@@ -390,14 +396,13 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
       if (auto c = invert_pair(segment, *law_i, log_i, *law_j, log_j)) candidates.push_back(*c);
     } else {
       const bool first_is_Lb = !law_i;
-      const BeamLengthSolutions solved = invert_with_beam_length(
-          *block, segment, first_is_Lb ? *law_j : *law_i, first_is_Lb ? log_j : log_i, first_is_Lb ? log_i : log_j);
+      const BeamLengthSolutions solved = invert_with_beam_length(*block, segment, first_is_Lb ? *law_j : *law_i, first_is_Lb ? log_j : log_i,
+                                                                 first_is_Lb ? log_i : log_j);
       candidates.insert(candidates.end(), solved.found.begin(), solved.found.end());
       // A span beyond the range of numbers (an extreme l) says nothing; the message then names the inversion.
       if (solved.Lb_max > 0 && std::isfinite(solved.Lb_min) && std::isfinite(solved.Lb_max))
-        beam_length_spans += std::string(beam_length_spans.empty() ? "" : ", ") + format_significant(solved.Lb_min, 3) +
-                             " to " + format_significant(solved.Lb_max, 3) + " m in segment " +
-                             describe_interval(segment.X_min, segment.X_max);
+        beam_length_spans += std::string(beam_length_spans.empty() ? "" : ", ") + format_significant(solved.Lb_min, 3) + " to " +
+            format_significant(solved.Lb_max, 3) + " m in segment " + describe_interval(segment.X_min, segment.X_max);
     }
   }
 
@@ -418,35 +423,33 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
     std::string tried;
     for (const Candidate& c : candidates)
       tried += (tried.empty() ? "" : ", ") + std::string("X = ") + format_significant(c.X(), 3) + " in segment " +
-               describe_interval(c.segment->X_min, c.segment->X_max);
+          describe_interval(c.segment->X_min, c.segment->X_max);
     if (candidates.empty() || !request.extrapolate) {
       const bool both_capacity = (gi.quantity == Quantity::R || gi.quantity == Quantity::T) &&
-                                 (gj.quantity == Quantity::R || gj.quantity == Quantity::T);
+          (gj.quantity == Quantity::R || gj.quantity == Quantity::T);
       std::string message = both_capacity
-          ? "capacity " + pair() + " has X = " + format_significant(candidates.front().X(), 3) +
-                ", outside the interval " + covered() + " covered by tab:CPNC for " + describe_block(*block) +
-                "; raise T or lower R to lower X (X = (5 ln(R/R0) - ln(T/T0))/sqrt(26))"
+          ? "capacity " + pair() + " has X = " + format_significant(candidates.front().X(), 3) + ", outside the interval " + covered() +
+              " covered by tab:CPNC for " + describe_block(*block) + "; raise T or lower R to lower X (X = (5 ln(R/R0) - ln(T/T0))/sqrt(26))"
           : "no meaningful capacity for the pair " + pair() + " at " + describe_block(*block) + ": " +
-                (!beam_length_spans.empty() && candidates.empty()
-                     ? "optimal engines with " + describe_given(first_is_beam_length(gi, gj) ? gj : gi) +
-                           " have Lb from " + beam_length_spans
-                     : (tried.empty() ? std::string("no segment gives a solution") : "the inversion gives " + tried) +
-                           ", outside the covered interval " + covered());
+              (!beam_length_spans.empty() && candidates.empty()
+                   ? "optimal engines with " + describe_given(first_is_beam_length(gi, gj) ? gj : gi) + " have Lb from " + beam_length_spans
+                   : (tried.empty() ? std::string("no segment gives a solution") : "the inversion gives " + tried) +
+                       ", outside the covered interval " + covered());
       // In the user's terms: the ranges that work with the other given held.
       if (const auto range = R_range_for(table, *block, gi, gj, scaling)) {
         const Given& other = gi.quantity == Quantity::R ? gj : gi;
         message += "; with " + describe_given(other) + " the table covers R from " + format_significant(range->first, 3) + " m to " +
-                   format_significant(range->second, 3) + " m: change R to lie there, or change " +
-                   std::string(quantity_name(other.quantity));
+            format_significant(range->second, 3) + " m: change R to lie there, or change " + std::string(quantity_name(other.quantity));
       } else if (!both_capacity) {
         message += "; give another pair";
       }
       // A model of a full-size engine lies at the full-size engine's X: design that and scale it.
       const bool short_range = (gi.quantity == Quantity::R && gi.value < 0.25 * table.R0) ||
-                               (gj.quantity == Quantity::R && gj.value < 0.25 * table.R0);
+          (gj.quantity == Quantity::R && gj.value < 0.25 * table.R0);
       if (short_range)
-        message += "; for a small model of a full-size engine, design the full-size one and scale it, e.g. "
-                   "{{R}} 425m {{T}} 224kJ {{scale}} 80/425 (tab:Denny's 80 m model)";
+        message +=
+            "; for a small model of a full-size engine, design the full-size one and scale it, e.g. "
+            "{{R}} 425m {{T}} 224kJ {{scale}} 80/425 (tab:Denny's 80 m model)";
       message += request.extrapolate ? "; even {{extrapolate}} finds no segment that solves the pair"
                                      : "; or add {{extrapolate}} to use the nearest segment beyond its interval";
       throw Error(ErrorKind::out_of_range, message);
@@ -457,9 +460,9 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
     if (allowed.empty()) allowed = candidates;
     chosen = *std::min_element(allowed.begin(), allowed.end(),
                                [](const Candidate& a, const Candidate& b) { return a.outside_by() < b.outside_by(); });
-    result.warnings.push_back("extrapolated: X = " + format_significant(chosen.X(), 3) + " lies outside the interval " +
-                              covered() + " covered by tab:CPNC; constants of segment " +
-                              describe_interval(chosen.segment->X_min, chosen.segment->X_max) + " used beyond it");
+    result.warnings.push_back("extrapolated: X = " + format_significant(chosen.X(), 3) + " lies outside the interval " + covered() +
+                              " covered by tab:CPNC; constants of segment " + describe_interval(chosen.segment->X_min, chosen.segment->X_max) +
+                              " used beyond it");
   }
 
   const Segment& segment = *chosen.segment;
@@ -481,8 +484,9 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
   for (const Given& given : {gi, gj}) copy_given(given, result);  // exact, not a round trip through logarithms
   e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, request.F);
   if (!(e.L3 > 0))
-    throw Error(ErrorKind::out_of_range, "the design for " + pair() + " has no room for the counterweight arm (L3 = " +
-                                             format_significant(e.L3, 3) + " m); stay inside the covered interval " + covered());
+    throw Error(ErrorKind::out_of_range,
+                "the design for " + pair() + " has no room for the counterweight arm (L3 = " + format_significant(e.L3, 3) +
+                    " m); stay inside the covered interval " + covered());
   result.coordinates = capacity_coordinates(chosen.lr, chosen.lt);
   result.branch = segment.branch;
   result.segment_X_min = segment.X_min;
@@ -494,13 +498,12 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
   // 50 the capacity is uncertain by more than half and the pair is refused; above 10, warned.
   // The message is built only when it is printed: this is the calculator's hot path.
   auto conditioning = [&] {
-    return "a 1 % change of " + pair() + " moves R or T by up to " + format_significant(chosen.amplification, 2) +
-           " % (amplification, eq:ZiZj_RT)";
+    return "a 1 % change of " + pair() + " moves R or T by up to " + format_significant(chosen.amplification, 2) + " % (amplification, eq:ZiZj_RT)";
   };
   if (chosen.amplification > max_amplification)
-    throw Error(ErrorKind::given_count, "the pair " + pair() + " barely fixes the capacity: " + conditioning() +
-                                            ", above the limit of " + format_significant(max_amplification, 2) +
-                                            "; give a better-conditioned pair such as R and m, or M and m");
+    throw Error(ErrorKind::given_count,
+                "the pair " + pair() + " barely fixes the capacity: " + conditioning() + ", above the limit of " +
+                    format_significant(max_amplification, 2) + "; give a better-conditioned pair such as R and m, or M and m");
   if (chosen.amplification > warn_amplification) result.warnings.push_back("ill-conditioned pair: " + conditioning());
   require_representable(result, [&] { return "the request " + pair(); });
 
@@ -517,13 +520,12 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
         std::string steps;
         for (Param param : all_params) {
           const double percent = 100 * ((*result.branch_steps)[index(param)] - 1);
-          steps += (steps.empty() ? "" : ", ") + std::string("S_") + std::string(param_name(param)) + " = " +
-                   (percent >= 0 ? "+" : "") + format_significant(percent, 2) + "%";
+          steps += (steps.empty() ? "" : ", ") + std::string("S_") + std::string(param_name(param)) + " = " + (percent >= 0 ? "+" : "") +
+              format_significant(percent, 2) + "%";
         }
         result.warnings.push_back("X = " + format_significant(result.coordinates.X, 3) + " lies where a lower and an upper branch compete " +
-                                  describe_interval(overlap_lo, overlap_hi) + "; this is the " +
-                                  std::string(branch_name(segment.branch)) + " branch. At X_d = " +
-                                  format_number(*block->branch_switch_X) + " the optimum jumps by " + steps +
+                                  describe_interval(overlap_lo, overlap_hi) + "; this is the " + std::string(branch_name(segment.branch)) +
+                                  " branch. At X_d = " + format_number(*block->branch_switch_X) + " the optimum jumps by " + steps +
                                   " (eq:ZiZj_vs_X); {{branch}} lower|upper selects one");
       }
     }

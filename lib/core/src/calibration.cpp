@@ -37,18 +37,21 @@ Calibration calibrate(const Engine& engine, const MeasuredRange& measured, const
   check_engine(engine);
   check_shot_settings(settings);
   if (!(measured.range > 0))
-    throw Error(ErrorKind::bad_number, "{{measured}} = " + format_significant(measured.range, 6) + " m: give the measured range, e.g. {{measured}} 34.4m±1.5m");
+    throw Error(ErrorKind::bad_number,
+                "{{measured}} = " + format_significant(measured.range, 6) + " m: give the measured range, e.g. {{measured}} 34.4m±1.5m");
   if (!(measured.uncertainty >= 0 && measured.uncertainty < measured.range))
-    throw Error(ErrorKind::bad_number, "the measured range's uncertainty " + format_significant(measured.uncertainty, 6) +
-                                           " m must lie from 0 to the range itself; give it as {{measured}} 34.4m±1.5m");
+    throw Error(ErrorKind::bad_number,
+                "the measured range's uncertainty " + format_significant(measured.uncertainty, 6) +
+                    " m must lie from 0 to the range itself; give it as {{measured}} 34.4m±1.5m");
   Calibration out;
   const EngineParts& p = engine.parts;
   const bool has_friction = p.axle.friction > 0 || p.hinge.friction > 0 || p.trough_friction > 0;
   out.fitted = has_friction ? FrictionFit::scale : FrictionFit::pin_coefficient;
   if (!has_friction && !(p.axle.radius > 0 && p.hinge.radius > 0))
-    throw Error(ErrorKind::usage, "calibrate fits the engine's friction: give its coefficients ({{axle_friction}}, {{hinge_friction}}, "
-                                  "{{trough_friction}}), whose common scale it fits, or the pins' radii ({{axle_radius}} and {{hinge_radius}}), "
-                                  "and it fits one coefficient at both pins");
+    throw Error(ErrorKind::usage,
+                "calibrate fits the engine's friction: give its coefficients ({{axle_friction}}, {{hinge_friction}}, "
+                "{{trough_friction}}), whose common scale it fits, or the pins' radii ({{axle_radius}} and {{hinge_radius}}), "
+                "and it fits one coefficient at both pins");
   auto range_at = [&](double value) {
     ++out.simulations;
     return verify_engine(with_friction(engine, out.fitted, value), settings).capacity.R;
@@ -57,9 +60,11 @@ Calibration calibrate(const Engine& engine, const MeasuredRange& measured, const
   ++out.simulations;
   const double R0 = out.frictionless.capacity.R;
   if (!(measured.range < R0))
-    throw Error(ErrorKind::out_of_range, "the measured range " + format_significant(measured.range, 4) + " m is not shorter than the engine's without friction, " +
-                                             format_significant(R0, 4) + " m: friction only shortens a shot; check the engine's values, the air (--air) "
-                                             "and the target level");
+    throw Error(ErrorKind::out_of_range,
+                "the measured range " + format_significant(measured.range, 4) + " m is not shorter than the engine's without friction, " +
+                    format_significant(R0, 4) +
+                    " m: friction only shortens a shot; check the engine's values, the air (--air) "
+                    "and the target level");
   // The largest friction allowed, or, where the engine jams (or sticks) before it, the largest it
   // still runs with: bisected to 1e-6 of the allowed range between the last that ran and the first
   // that did not.
@@ -91,12 +96,12 @@ Calibration calibrate(const Engine& engine, const MeasuredRange& measured, const
     return find_root([&](double value) { return range_at(value) - range; }, 0, top, 0, 1e-9);
   };
   if (!(measured.range > R_top))
-    throw Error(ErrorKind::out_of_range, (out.jams_at ? "the strongest friction the engine runs with (" + format_significant(top, 4) +
-                                                            (out.fitted == FrictionFit::scale ? " times the coefficients" : " at both pins") +
-                                                            "; more jams it) throws "
-                                                      : "even friction coefficients of " + format_significant(largest_coefficient, 2) + " throw ") +
-                                             format_significant(R_top, 4) + " m, farther than the measured " + format_significant(measured.range, 4) +
-                                             " m: friction alone does not explain the shortfall; check the engine's values and the air");
+    throw Error(ErrorKind::out_of_range,
+                (out.jams_at ? "the strongest friction the engine runs with (" + format_significant(top, 4) +
+                         (out.fitted == FrictionFit::scale ? " times the coefficients" : " at both pins") + "; more jams it) throws "
+                             : "even friction coefficients of " + format_significant(largest_coefficient, 2) + " throw ") +
+                    format_significant(R_top, 4) + " m, farther than the measured " + format_significant(measured.range, 4) +
+                    " m: friction alone does not explain the shortfall; check the engine's values and the air");
   out.value = value_for(measured.range);
   out.value_low = value_for(measured.range + measured.uncertainty);
   out.value_high = value_for(measured.range - measured.uncertainty);

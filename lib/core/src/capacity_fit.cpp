@@ -14,8 +14,8 @@ namespace {
 // What the fit matches besides R: the energy T [J] (section 5) or the projectile's mass m [kg].
 enum class Matched { energy, mass };
 
-CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, double target, const Material& material,
-                      const ShotSettings& settings, double rtol) {
+CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, double target, const Material& material, const ShotSettings& settings,
+                      double rtol) {
   check_shot_settings(settings);
   check_material(material);
   CapacityFit fit;
@@ -45,10 +45,11 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
   // as a mass, so that every guess and trial below stays finite.
   check_ordinary(R, 1e-6, 1e6, "R", "m", "range");
   if (!(m_guess >= 1e-9 && m_guess <= 1e12))
-    throw Error(ErrorKind::bad_number, (matched == Matched::energy ? "{{T}} = " + format_significant(target, 4) + " J at {{R}} = " + format_significant(R, 4) +
-                                                                         " m asks a stone of about m = 2T/(gR)"
-                                                                   : std::string("the stone {{m}}")) +
-                                           ", outside the ordinary masses 1e-09 to 1e+12 kg; give a capacity of ordinary size");
+    throw Error(ErrorKind::bad_number,
+                (matched == Matched::energy ? "{{T}} = " + format_significant(target, 4) + " J at {{R}} = " + format_significant(R, 4) +
+                         " m asks a stone of about m = 2T/(gR)"
+                                            : std::string("the stone {{m}}")) +
+                    ", outside the ordinary masses 1e-09 to 1e+12 kg; give a capacity of ordinary size");
   const double drop_per_L2_5 = extra_scalings(shape.K(), 1.0, material).energy_unit * shape.energy_drop();  // Delta U at L2 = 1 m [J]
   const double L2_guess = std::pow(T_guess / (0.9 * drop_per_L2_5), 0.2);
   const bool warm = shape.mu > 0;
@@ -58,7 +59,7 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
   // way: outward in steps that double from 1 % (warm) or 5 % in mu, up to a factor 20, to the
   // first sign change of the error; shots that fail on the way are stepped over.
   const double first_step = warm ? 0.01 : 0.05, reach = 3.0;
-  bool any_shot = false;               // a shot on the walk ran
+  bool any_shot = false;  // a shot on the walk ran
   std::optional<Error> numerical_failure;  // the last shot whose integration failed
   auto error_or_nan = [&](double log_mu) {
     if (log_mu < std::log(1e-6) || log_mu > 0) return std::nan("");
@@ -94,10 +95,10 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
   if (!bracketed && !any_shot && numerical_failure)
     throw Error(ErrorKind::numerical, "every shot of the fit failed: " + numerical_failure->named_message());
   if (!bracketed)
-    throw Error(ErrorKind::out_of_range, "no projectile mass within a factor 20 of " +
-                                             (warm ? "the starting m/M = " + format_significant(shape.mu, 3)
-                                                   : "m = 2T/(gR) = " + format_significant(m_guess, 3) + " kg") +
-                                             " lets this shape " + goal + "; change the shape (l, l4, mu_b) or the capacity");
+    throw Error(ErrorKind::out_of_range,
+                "no projectile mass within a factor 20 of " +
+                    (warm ? "the starting m/M = " + format_significant(shape.mu, 3) : "m = 2T/(gR) = " + format_significant(m_guess, 3) + " kg") +
+                    " lets this shape " + goal + "; change the shape (l, l4, mu_b) or the capacity");
   const Trial found = trial(std::exp(find_root(log_error, lo, hi, 0.1 * rtol, 0)), settings.loads);
   fit.design = design;
   fit.engine = engine_of(design, found.L2, material);  // the one conversion to SI
@@ -108,26 +109,27 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
     throw Error(e.kind(), "the fitted engine: " + e.named_message());
   }
   if (!(fit.verification.eps <= 1))
-    throw Error(ErrorKind::numerical, "the fitted engine has eps = " + format_significant(fit.verification.eps, 4) +
-                                          " > 1: energy is not conserved (eq:Aux); tighten {{rtol}}");
+    throw Error(
+        ErrorKind::numerical,
+        "the fitted engine has eps = " + format_significant(fit.verification.eps, 4) + " > 1: energy is not conserved (eq:Aux); tighten {{rtol}}");
   if (!(std::abs(found.value / target - 1) <= rtol))
-    throw Error(ErrorKind::numerical, "the fit reached R = " + format_significant(fit.verification.capacity.R, 8) + " m with " +
-                                          (matched == Matched::energy ? "T = " + format_significant(found.value, 8) + " J"
-                                                                      : "m = " + format_significant(found.value, 8) + " kg") +
-                                          ", not within " + format_significant(rtol, 2) + " of the request: it jumps with mu here, as the "
-                                          "release moves from one maximum of the objective to another");
+    throw Error(
+        ErrorKind::numerical,
+        "the fit reached R = " + format_significant(fit.verification.capacity.R, 8) + " m with " +
+            (matched == Matched::energy ? "T = " + format_significant(found.value, 8) + " J" : "m = " + format_significant(found.value, 8) + " kg") +
+            ", not within " + format_significant(rtol, 2) +
+            " of the request: it jumps with mu here, as the "
+            "release moves from one maximum of the objective to another");
   return fit;
 }
 
 }  // namespace
 
-CapacityFit fit_capacity(const ScaledDesign& shape, const Capacity& capacity, const Material& material,
-                         const ShotSettings& settings, double rtol) {
+CapacityFit fit_capacity(const ScaledDesign& shape, const Capacity& capacity, const Material& material, const ShotSettings& settings, double rtol) {
   return fit_shape(shape, capacity.R, Matched::energy, capacity.T, material, settings, rtol);
 }
 
-CapacityFit fit_range_and_mass(const ScaledDesign& shape, double R, double m, const Material& material, const ShotSettings& settings,
-                               double rtol) {
+CapacityFit fit_range_and_mass(const ScaledDesign& shape, double R, double m, const Material& material, const ShotSettings& settings, double rtol) {
   return fit_shape(shape, R, Matched::mass, m, material, settings, rtol);
 }
 

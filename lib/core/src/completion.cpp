@@ -119,7 +119,6 @@ double objective_of(const Verification& v, const ReleaseCriterion& criterion) {
   return v.Q;
 }
 
-
 }  // namespace
 
 Completion complete_engine(const CompletionRequest& request) {
@@ -128,19 +127,32 @@ Completion complete_engine(const CompletionRequest& request) {
   const Attested& a = request.attested;
   Completion out;
   // Each attested value, positive (mb may be 0; theta_i is checked below with its range).
-  for (const auto& [value, name] : {std::pair{a.Lb, "Lb"}, {a.L1, "L1"}, {a.L2, "L2"}, {a.H, "H"}, {a.L4, "L4"}, {a.M, "M"}, {a.m, "m"},
-                                    {a.mb, "mb"}, {a.D, "D"}, {a.l, "l"}, {a.theta_i_deg, "theta_i"}, {a.F, "F"}}) {
+  for (const auto& [value, name] : {std::pair{a.Lb, "Lb"},
+                                    {a.L1, "L1"},
+                                    {a.L2, "L2"},
+                                    {a.H, "H"},
+                                    {a.L4, "L4"},
+                                    {a.M, "M"},
+                                    {a.m, "m"},
+                                    {a.mb, "mb"},
+                                    {a.D, "D"},
+                                    {a.l, "l"},
+                                    {a.theta_i_deg, "theta_i"},
+                                    {a.F, "F"}}) {
     if (!value) continue;
     const std::string key(name);
-    if (key == "mb" && !(*value >= 0))
-      throw Error(ErrorKind::bad_number, "{{mb}} = " + format_significant(*value, 6) + " must not be negative");
+    if (key == "mb" && !(*value >= 0)) throw Error(ErrorKind::bad_number, "{{mb}} = " + format_significant(*value, 6) + " must not be negative");
     if (key != "mb" && key != "theta_i" && !(*value > 0))
-      throw Error(ErrorKind::bad_number, "{{" + key + "}} = " + format_significant(*value, 6) + " must be positive; give the attested value, or leave it out");
+      throw Error(ErrorKind::bad_number,
+                  "{{" + key + "}} = " + format_significant(*value, 6) + " must be positive; give the attested value, or leave it out");
     // Of ordinary size, as an engine's own values are (check_engine): lengths and l from 1e-6
     // to 1e6, masses from 1e-9 to 1e12 kg, so that every value derived from them is finite.
-    if (key == "M" || key == "m" || (key == "mb" && *value > 0)) check_ordinary(*value, 1e-9, 1e12, key, "kg", "attested mass");
-    else if (key == "l" || key == "F") check_ordinary(*value, 1e-6, 1e6, key, "", "attested ratio");
-    else if (key != "theta_i" && key != "mb") check_ordinary(*value, 1e-6, 1e6, key, "m", "attested length");
+    if (key == "M" || key == "m" || (key == "mb" && *value > 0))
+      check_ordinary(*value, 1e-9, 1e12, key, "kg", "attested mass");
+    else if (key == "l" || key == "F")
+      check_ordinary(*value, 1e-6, 1e6, key, "", "attested ratio");
+    else if (key != "theta_i" && key != "mb")
+      check_ordinary(*value, 1e-6, 1e6, key, "m", "attested length");
     out.attested.push_back(key);
   }
 
@@ -148,15 +160,18 @@ Completion complete_engine(const CompletionRequest& request) {
   p.material = request.material;
   p.parts = request.parts;
   if (p.parts.beam_cm || p.parts.D_tip)
-    throw Error(ErrorKind::usage, "complete builds a uniform beam from the attested values; a beam as built ({{beam_cm}}, {{D_tip}}) is checked "
-                                  "by a shot of the whole engine instead");
+    throw Error(ErrorKind::usage,
+                "complete builds a uniform beam from the attested values; a beam as built ({{beam_cm}}, {{D_tip}}) is checked "
+                "by a shot of the whole engine instead");
   p.L4 = a.L4, p.M = a.M, p.m = a.m, p.mb = a.mb, p.D = a.D, p.Lb = a.Lb;
   // L1 from itself, or from Lb - L2, before H: with H it fixes theta_i, or H fixes L1.
   Known L1, L2;
   bool theta_from_H = false;
   if (a.L1) L1.add(*a.L1, "L1 = " + value_text(*a.L1, "m"));
   if (a.Lb && a.L2) {
-    if (!(*a.Lb > *a.L2)) throw Error(ErrorKind::usage, "the attested values conflict: Lb = " + value_text(*a.Lb, "m") + " is not longer than L2 = " + value_text(*a.L2, "m"));
+    if (!(*a.Lb > *a.L2))
+      throw Error(ErrorKind::usage,
+                  "the attested values conflict: Lb = " + value_text(*a.Lb, "m") + " is not longer than L2 = " + value_text(*a.L2, "m"));
     L1.add(*a.Lb - *a.L2, "Lb - L2 = " + value_text(*a.Lb - *a.L2, "m"));
   }
   if (a.theta_i_deg) {
@@ -166,18 +181,23 @@ Completion complete_engine(const CompletionRequest& request) {
   } else if (a.H && L1.value) {
     theta_from_H = true;
     if (!(*a.H < *L1.value))
-      throw Error(ErrorKind::usage, "the attested values conflict: the pivot height H = " + value_text(*a.H, "m") + " is not below the long arm's length, " + L1.source);
+      throw Error(
+          ErrorKind::usage,
+          "the attested values conflict: the pivot height H = " + value_text(*a.H, "m") + " is not below the long arm's length, " + L1.source);
     p.theta_i_deg = degrees(std::acos(*a.H / *L1.value));
     out.implied.push_back("theta_i (from H and L1)");
   }
-  if (a.H) L1.add(*a.H / std::cos(radians(p.theta_i_deg)), "H / cos(theta_i) = " + value_text(*a.H / std::cos(radians(p.theta_i_deg)), "m") +
-                                                               (a.theta_i_deg ? "" : " with the standard theta_i = 30 deg"));
+  if (a.H)
+    L1.add(*a.H / std::cos(radians(p.theta_i_deg)),
+           "H / cos(theta_i) = " + value_text(*a.H / std::cos(radians(p.theta_i_deg)), "m") +
+               (a.theta_i_deg ? "" : " with the standard theta_i = 30 deg"));
   if (a.l && a.Lb) L1.add(*a.Lb * *a.l / (*a.l + 1), "Lb l/(l + 1) = " + value_text(*a.Lb * *a.l / (*a.l + 1), "m"));
   if (a.L2) L2.add(*a.L2, "L2 = " + value_text(*a.L2, "m"));
   if (a.l && L1.value) L2.add(*L1.value / *a.l, "L1/l = " + value_text(*L1.value / *a.l, "m"));
   if (a.l && L2.value && !L1.value) L1.add(*L2.value * *a.l, "l L2 = " + value_text(*L2.value * *a.l, "m"));
   if (a.Lb && L1.value) {
-    if (!(*a.Lb > *L1.value)) throw Error(ErrorKind::usage, "the attested values conflict: Lb = " + value_text(*a.Lb, "m") + " is not longer than " + L1.source);
+    if (!(*a.Lb > *L1.value))
+      throw Error(ErrorKind::usage, "the attested values conflict: Lb = " + value_text(*a.Lb, "m") + " is not longer than " + L1.source);
     L2.add(*a.Lb - *L1.value, "Lb - L1 = " + value_text(*a.Lb - *L1.value, "m") + " (L1 from " + L1.source + ")");
   }
   p.L1 = L1.value, p.L2 = L2.value, p.l = a.l;
@@ -190,21 +210,25 @@ Completion complete_engine(const CompletionRequest& request) {
   if (a.mb && a.D && p.L1 && p.L2) {
     const double from_D = beam_mass(*a.D, *p.L1 + *p.L2, p.material);
     if (std::abs(from_D - *a.mb) > agreement * *a.mb)
-      throw Error(ErrorKind::usage, "the attested values conflict: mb = " + value_text(*a.mb, "kg") + ", but D = " + value_text(*a.D, "m") +
-                                        " gives mb = " + value_text(from_D, "kg") + " by eq:BeamMass with wood of " +
-                                        format_significant(p.material.wood_density, 4) + " kg/m3; drop one of them, or give {{wood_density}}");
+      throw Error(ErrorKind::usage,
+                  "the attested values conflict: mb = " + value_text(*a.mb, "kg") + ", but D = " + value_text(*a.D, "m") +
+                      " gives mb = " + value_text(from_D, "kg") + " by eq:BeamMass with wood of " + format_significant(p.material.wood_density, 4) +
+                      " kg/m3; drop one of them, or give {{wood_density}}");
   }
-  if (!a.mb) out.implied.push_back(a.D ? "mb (from D, eq:BeamMass)" : "D and mb (from beta2 = " + format_fraction(p.material.beta2) +
-                                                                           " and the wood, eq:bend_L2 and eq:BeamMass)");
+  if (!a.mb)
+    out.implied.push_back(a.D ? "mb (from D, eq:BeamMass)"
+                              : "D and mb (from beta2 = " + format_fraction(p.material.beta2) + " and the wood, eq:bend_L2 and eq:BeamMass)");
   // Q does not fix the size: without a length it grows as the engine shrinks, and without M or
   // m as the counterweight grows against the beam.
   if (!(a.Lb || a.L1 || a.L2 || a.H || a.L4) || !(a.M || a.m))
-    throw Error(ErrorKind::usage, "complete needs an attested length (Lb, L1, L2, H or L4) and the counterweight M or the stone m: "
-                                  "without them the best engine has no size, e.g. {{Lb}} 9.5m {{m}} 50kg");
+    throw Error(ErrorKind::usage,
+                "complete needs an attested length (Lb, L1, L2, H or L4) and the counterweight M or the stone m: "
+                "without them the best engine has no size, e.g. {{Lb}} 9.5m {{m}} 50kg");
   const ReleaseCriterion& criterion = request.settings.criterion;
   if (criterion.release == Release::range && (!a.M || !a.m))
-    throw Error(ErrorKind::usage, "the range grows without bound with a heavier counterweight or a lighter stone: give M and m "
-                                  "for {{quality}} range, or maximise Q (the default)");
+    throw Error(ErrorKind::usage,
+                "the range grows without bound with a heavier counterweight or a lighter stone: give M and m "
+                "for {{quality}} range, or maximise Q (the default)");
 
   const std::vector<double> x0 = start(p, out.chosen);
   double best = -1;
@@ -271,10 +295,11 @@ Completion complete_engine(const CompletionRequest& request) {
     cost(x0);
     minimize_simplex(cost, x0, 0.1, 1e-5, 600);
     if (blind_in_air)
-      throw Error(ErrorKind::out_of_range, "in " + describe_air(*search.air, 0) + " none of the " + std::to_string(out.simulations) +
-                                               " engines tried with these attested values works, where one of them works in vacuum" +
-                                               (last_failure ? " (the last tried: " + last_failure->named_message() + ")" : "") +
-                                               "; give less drag or a weaker headwind ({{wind}})");
+      throw Error(ErrorKind::out_of_range,
+                  "in " + describe_air(*search.air, 0) + " none of the " + std::to_string(out.simulations) +
+                      " engines tried with these attested values works, where one of them works in vacuum" +
+                      (last_failure ? " (the last tried: " + last_failure->named_message() + ")" : "") +
+                      "; give less drag or a weaker headwind ({{wind}})");
     if (!(best > 0))
       throw Error(last_failure && only_integration_failed ? ErrorKind::numerical : ErrorKind::out_of_range,
                   "no choice of " + join(out.chosen, ", ") + " gives a working engine with these attested values" +

@@ -9,8 +9,15 @@
 namespace trebuchet {
 
 Dynamics::Dynamics(const ScaledDesign& design)
-    : design_(design), theta_i_(radians(design.theta_i_deg)), cos_theta_i_(std::cos(theta_i_)), L_(design.L()),
-      inertia_(design.beam_inertia()), inv_l_(1 / design.l), inv_l4_(1 / design.l4), inv_L_(1 / L_), beam_cm_(design.beam_cm()),
+    : design_(design),
+      theta_i_(radians(design.theta_i_deg)),
+      cos_theta_i_(std::cos(theta_i_)),
+      L_(design.L()),
+      inertia_(design.beam_inertia()),
+      inv_l_(1 / design.l),
+      inv_l4_(1 / design.l4),
+      inv_L_(1 / L_),
+      beam_cm_(design.beam_cm()),
       dissipates_(design.parts.dissipates()) {
   const double L_psi = L_ + design.parts.counterweight_inertia / L_;  // eq:EOM_I_2 with the counterweight's own inertia
   psi_ratio_ = L_ / L_psi;
@@ -41,7 +48,7 @@ double Dynamics::complete_trough_state(State& s) const {
 struct detail::Coefficients {
   double l, l4, L, mu, mu_b, I, cos_theta_i;
   double inv_l, inv_l4, inv_L;  // the equations divide by l, l4 and L at every evaluation
-  double cm;                    // the beam's centre of mass from the pivot, (l - 1)/2 for the uniform rod
+  double cm;  // the beam's centre of mass from the pivot, (l - 1)/2 for the uniform rod
   double psi_ratio, inv_L_psi;  // L/L_psi and 1/L_psi, L_psi = L + I_c/L: 1 and 1/L for a point counterweight
   const BuiltParts* parts;
 };
@@ -58,8 +65,7 @@ struct Accel {
 // In the trough phi follows from theta (eq:EOM_I_3), so its sine and cosine do too.
 struct Trig {
   double st, ct, sp, cp, sf, cf;
-  Trig(const Coefficients& e, Phase phase, const State& s)
-      : st(std::sin(s.theta)), ct(std::cos(s.theta)), sp(std::sin(s.psi)), cp(std::cos(s.psi)) {
+  Trig(const Coefficients& e, Phase phase, const State& s) : st(std::sin(s.theta)), ct(std::cos(s.theta)), sp(std::sin(s.psi)), cp(std::cos(s.psi)) {
     if (phase == Phase::trough) {
       sf = (e.cos_theta_i - ct) * e.inv_l4;
       cf = std::sqrt(1 - sf * sf);
@@ -186,11 +192,11 @@ AirForces air_forces(const Coefficients& e, Phase phase, const State& s, const T
 
 // The forces between the bodies at given accelerations (Newton's laws for each body).
 struct Internal {
-  Vec2 hinge_force;          // F_H, on the counterweight
+  Vec2 hinge_force;  // F_H, on the counterweight
   Vec2 sling_on_projectile;  // the sling's pull on the projectile
-  Vec2 sling_on_tip;         // the sling's pull on the beam's tip
-  Vec2 pivot_reaction;       // F_R, on the beam
-  double normal_force = 0;   // trough on projectile (phase I)
+  Vec2 sling_on_tip;  // the sling's pull on the beam's tip
+  Vec2 pivot_reaction;  // F_R, on the beam
+  double normal_force = 0;  // trough on projectile (phase I)
   double trough_friction = 0;  // along x on the projectile (phase I)
   Vec2 projectile_acceleration;
   double phi_ddot = 0;
@@ -198,7 +204,8 @@ struct Internal {
 
 double sign(double x) { return (x > 0) - (x < 0); }
 
-[[gnu::always_inline]] inline Internal internal_forces(const Coefficients& e, Phase phase, const State& s, const Trig& trig, const Accel& a, const AirForces& air) {
+[[gnu::always_inline]] inline Internal internal_forces(const Coefficients& e, Phase phase, const State& s, const Trig& trig, const Accel& a,
+                                                       const AirForces& air) {
   Internal out;
   const double st = trig.st, ct = trig.ct, sp = trig.sp, cp = trig.cp, sf = trig.sf, cf = trig.cf;
   const double td = s.theta_dot, pd = s.psi_dot, fd = s.phi_dot;
@@ -231,8 +238,7 @@ double sign(double x) { return (x > 0) - (x < 0); }
   out.sling_on_tip = {-out.sling_on_projectile.x + air.on_rope.x, -out.sling_on_projectile.y + air.on_rope.y};
   // Beam (mass mu_b): mu_b a_CM = F_R - F_H (arm on beam) + sling on tip + mu_b g.
   const Vec2 cm_acc{e.cm * (ct * a.theta - st * td * td), e.cm * (st * a.theta + ct * td * td)};
-  out.pivot_reaction = {e.mu_b * cm_acc.x + out.hinge_force.x - out.sling_on_tip.x,
-                        e.mu_b * (cm_acc.y + 1) + out.hinge_force.y - out.sling_on_tip.y};
+  out.pivot_reaction = {e.mu_b * cm_acc.x + out.hinge_force.x - out.sling_on_tip.x, e.mu_b * (cm_acc.y + 1) + out.hinge_force.y - out.sling_on_tip.y};
   return out;
 }
 
@@ -314,8 +320,10 @@ bool evaluate(const Coefficients& e, Phase phase, const State& s, const Trig& tr
       }
       // The Jacobian of the residual, exact: d|F|/dq = F . dF/dq / |F|.
       const double n_pivot = norm(pivot), n_hinge = norm(hinge);
-      const double da0 = n_pivot > 0 ? law.axle * dot(pivot, pivot_theta) / n_pivot : 0, da1 = n_pivot > 0 ? law.axle * dot(pivot, pivot_psi) / n_pivot : 0;
-      const double dh0 = n_hinge > 0 ? law.hinge * dot(hinge, hinge_theta) / n_hinge : 0, dh1 = n_hinge > 0 ? law.hinge * dot(hinge, hinge_psi) / n_hinge : 0;
+      const double da0 = n_pivot > 0 ? law.axle * dot(pivot, pivot_theta) / n_pivot : 0,
+                   da1 = n_pivot > 0 ? law.axle * dot(pivot, pivot_psi) / n_pivot : 0;
+      const double dh0 = n_hinge > 0 ? law.hinge * dot(hinge, hinge_theta) / n_hinge : 0,
+                   dh1 = n_hinge > 0 ? law.hinge * dot(hinge, hinge_psi) / n_hinge : 0;
       const double j00 = da0 - dh0 + law.trough * trough_theta - 1, j01 = da1 - dh1 + law.trough * trough_psi, j10 = dh0, j11 = dh1 - 1;
       const double det = j00 * j11 - j01 * j10;
       if (!(std::abs(det) > 1e-12)) return false;
@@ -339,8 +347,8 @@ bool evaluate(const Coefficients& e, Phase phase, const State& s, const Trig& tr
 }  // namespace
 
 detail::Coefficients Dynamics::coefficients() const {
-  return {design_.l, design_.l4, L_, design_.mu, design_.mu_b, inertia_, cos_theta_i_, inv_l_, inv_l4_, inv_L_,
-          beam_cm_, psi_ratio_, inv_L_psi_, &design_.parts};
+  return {design_.l, design_.l4, L_,     design_.mu, design_.mu_b, inertia_,   cos_theta_i_,
+          inv_l_,    inv_l4_,    inv_L_, beam_cm_,   psi_ratio_,   inv_L_psi_, &design_.parts};
 }
 
 bool Dynamics::accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power) const {
@@ -407,15 +415,15 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   // own balance against it. A beam given only as a whole has no known short section: 0.
   if (const auto section = design_.short_section()) {
     out.beam_moment = st * out.hinge_force.y + ct * out.hinge_force.x + section->mass * -section->cm * st - section->inertia * a.theta;
-    if (design_.parts.hinge_friction > 0)
-      out.beam_moment += design_.parts.hinge_friction * norm(f.hinge_force) * sign(pd - td);
+    if (design_.parts.hinge_friction > 0) out.beam_moment += design_.parts.hinge_friction * norm(f.hinge_force) * sign(pd - td);
   }
 
   // Energy of each body, potential from the pivot's level: beam rotation, counterweight (its
   // centre's motion and its own turn), projectile (on the trough in phase I, absent in III).
   const double I = e.I;
   out.energies.beam = 0.5 * I * td * td - e.mu_b * e.cm * ct;
-  out.energies.counterweight = 0.5 * (td * td + e.L * e.L * pd * pd - 2 * e.L * (ct * cp + st * sp) * td * pd) + out.counterweight.y;  // cos(th - psi)
+  out.energies.counterweight = 0.5 * (td * td + e.L * e.L * pd * pd - 2 * e.L * (ct * cp + st * sp) * td * pd) +
+      out.counterweight.y;  // cos(th - psi)
   if (design_.parts.counterweight_inertia > 0) out.energies.counterweight += 0.5 * design_.parts.counterweight_inertia * pd * pd;
   if (phase != Phase::released) {
     const Vec2& v = out.projectile_velocity;

@@ -11,7 +11,7 @@
 namespace trebuchet {
 bool EngineParts::any() const {
   return beam_cm || beam_inertia || beam_gyration || D_hinge || D_tip || counterweight_inertia > 0 || axle.friction > 0 || hinge.friction > 0 ||
-         trough_friction > 0 || rope_diameter > 0;
+      trough_friction > 0 || rope_diameter > 0;
 }
 
 TaperedBeam tapered_beam(double L1, double L2, double D_hinge, double D_tip, double wood_density) {
@@ -56,8 +56,8 @@ double wood_beam_mass(const Engine& e) {
 }
 
 ScaledDesign scaled_design(const Engine& engine) {  // eq:Design
-  ScaledDesign out{engine.L1 / engine.L2, engine.L4 / engine.L1, engine.mb / engine.M, engine.m / engine.M, engine.theta_i_deg,
-                   arm_fraction(engine), engine.psi_i_deg};
+  ScaledDesign out{engine.L1 / engine.L2, engine.L4 / engine.L1, engine.mb / engine.M, engine.m / engine.M,
+                   engine.theta_i_deg,    arm_fraction(engine),  engine.psi_i_deg};
   const EngineParts& p = engine.parts;
   const double L2 = engine.L2, M = engine.M, inertia_unit = M * L2 * L2;  // section 3
   BuiltParts& b = out.parts;
@@ -100,8 +100,9 @@ namespace {
 void proportion_of_beam(const Engine& e) {
   const double Lb = e.L1 + e.L2;
   if (!(e.D <= 1e3 * Lb && Lb <= 1e3 * e.D))
-    throw Error(ErrorKind::bad_number, "{{D}} = " + format_significant(e.D, 6) + " m and the beam's length L1 + L2 = " + format_significant(Lb, 6) +
-                                           " m differ by more than a factor 10^3; give the beam's diameter in its own unit, e.g. {{D}} 25cm");
+    throw Error(ErrorKind::bad_number,
+                "{{D}} = " + format_significant(e.D, 6) + " m and the beam's length L1 + L2 = " + format_significant(Lb, 6) +
+                    " m differ by more than a factor 10^3; give the beam's diameter in its own unit, e.g. {{D}} 25cm");
 }
 // The parts of an engine as built (EngineParts), each within what a real engine can have.
 void check_parts(const Engine& e) {
@@ -111,23 +112,27 @@ void check_parts(const Engine& e) {
   // calibrate scales the coefficients up to 2 by their ratio, which must stay finite.
   const auto coefficient = [&](double mu, const char* key, const char* what) {
     if (!(mu == 0 || (mu >= 1e-6 && mu <= 2)))
-      throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + say(mu) + ": the coefficient of friction of " + what +
-                                             " must be 0 (none) or lie from 1e-06 to 2 (greased iron on iron is near 0.1, dry oak on iron near 0.5)");
+      throw Error(ErrorKind::bad_number,
+                  "{{" + std::string(key) + "}} = " + say(mu) + ": the coefficient of friction of " + what +
+                      " must be 0 (none) or lie from 1e-06 to 2 (greased iron on iron is near 0.1, dry oak on iron near 0.5)");
   };
   coefficient(p.axle.friction, "axle_friction", "the axle at the pivot");
   coefficient(p.hinge.friction, "hinge_friction", "the counterweight's hinge pin");
   coefficient(p.trough_friction, "trough_friction", "the projectile on the trough");
   const auto pin = [&](const Pin& pin, const char* friction_key, const char* radius_key, const char* what, double largest, const char* largest_text) {
     if (!(pin.radius >= 0))
-      throw Error(ErrorKind::bad_number, "{{" + std::string(radius_key) + "}} = " + say(pin.radius) + ": the radius of " + what + " must be positive");
+      throw Error(ErrorKind::bad_number,
+                  "{{" + std::string(radius_key) + "}} = " + say(pin.radius) + ": the radius of " + what + " must be positive");
     if (pin.friction > 0 && !(pin.radius > 0))
-      throw Error(ErrorKind::usage, "{{" + std::string(friction_key) + "}} needs the radius of " + what + " its friction acts at; give it, e.g. {{" +
-                                        radius_key + "}} 5cm");
+      throw Error(
+          ErrorKind::usage,
+          "{{" + std::string(friction_key) + "}} needs the radius of " + what + " its friction acts at; give it, e.g. {{" + radius_key + "}} 5cm");
     if (pin.radius > 0) {
       check_ordinary(pin.radius, 1e-6, 1e6, radius_key, "m", std::string("radius of ") + what);
       if (!(pin.radius < largest))
-        throw Error(ErrorKind::bad_number, "{{" + std::string(radius_key) + "}} = " + say(pin.radius) + " m: the radius of " + what +
-                                               " must be smaller than " + largest_text + ", " + say(largest) + " m");
+        throw Error(ErrorKind::bad_number,
+                    "{{" + std::string(radius_key) + "}} = " + say(pin.radius) + " m: the radius of " + what + " must be smaller than " +
+                        largest_text + ", " + say(largest) + " m");
     }
   };
   pin(p.axle, "axle_friction", "axle_radius", "the axle", std::min(e.L1, e.L2), "the shorter beam section");
@@ -139,9 +144,10 @@ void check_parts(const Engine& e) {
   if (p.beam_gyration) check_ordinary(*p.beam_gyration, 1e-6, 1e6, "beam_gyration", "m", "beam's radius of gyration about the pivot");
   const std::optional<double> inertia = given_beam_inertia(e);
   if (p.beam_cm.has_value() != inertia.has_value())
-    throw Error(ErrorKind::usage, std::string(p.beam_cm ? "{{beam_cm}} needs the beam's moment of inertia about the pivot too: give {{beam_inertia}}"
-                                                        : "{{beam_inertia}} needs the beam's centre of mass too: give {{beam_cm}}") +
-                                      " (or describe a tapered beam by {{D_hinge}} and {{D_tip}})");
+    throw Error(ErrorKind::usage,
+                std::string(p.beam_cm ? "{{beam_cm}} needs the beam's moment of inertia about the pivot too: give {{beam_inertia}}"
+                                      : "{{beam_inertia}} needs the beam's centre of mass too: give {{beam_cm}}") +
+                    " (or describe a tapered beam by {{D_hinge}} and {{D_tip}})");
   if (p.D_hinge.has_value() != p.D_tip.has_value())
     throw Error(ErrorKind::usage, "a tapered beam needs both end diameters: give {{D_hinge}} and {{D_tip}}");
   if (p.beam_cm && p.D_tip)
@@ -149,36 +155,42 @@ void check_parts(const Engine& e) {
   if (p.beam_cm) {
     if (!(e.mb > 0)) throw Error(ErrorKind::usage, "{{beam_cm}} describes a beam of mass {{mb}} = 0; give the beam's mass");
     if (!(*p.beam_cm > -e.L2 && *p.beam_cm < e.L1))
-      throw Error(ErrorKind::bad_number, "{{beam_cm}} = " + say(*p.beam_cm) + " m: the beam's centre of mass must lie on it, between -L2 = " +
-                                             say(-e.L2) + " m (toward the hinge) and L1 = " + say(e.L1) + " m (toward the tip)");
+      throw Error(ErrorKind::bad_number,
+                  "{{beam_cm}} = " + say(*p.beam_cm) + " m: the beam's centre of mass must lie on it, between -L2 = " + say(-e.L2) +
+                      " m (toward the hinge) and L1 = " + say(e.L1) + " m (toward the tip)");
     // About the pivot I = I_cm + mb c^2 >= mb c^2; and no part of the beam reaches beyond its
     // longer section (its thickness adds a few per cent at most).
     const double least = e.mb * *p.beam_cm * *p.beam_cm, most = 1.1 * e.mb * std::max(e.L1 * e.L1, e.L2 * e.L2);
     if (!(*inertia >= least && *inertia <= most))
-      throw Error(ErrorKind::bad_number, std::string(p.beam_gyration ? "{{beam_gyration}} = " + say(*p.beam_gyration) + " m gives I = mb k^2 = " : "{{beam_inertia}} = ") +
-                                             say(*inertia) + " kg m^2: a beam of " + say(e.mb) +
-                                             " kg with its centre of mass " + say(*p.beam_cm) + " m from the pivot has one from mb c^2 = " + say(least) +
-                                             " to " + say(most) + " kg m^2 about the pivot (a uniform beam: mb (L1^2 - L1 L2 + L2^2)/3)");
+      throw Error(ErrorKind::bad_number,
+                  std::string(p.beam_gyration ? "{{beam_gyration}} = " + say(*p.beam_gyration) + " m gives I = mb k^2 = " : "{{beam_inertia}} = ") +
+                      say(*inertia) + " kg m^2: a beam of " + say(e.mb) + " kg with its centre of mass " + say(*p.beam_cm) +
+                      " m from the pivot has one from mb c^2 = " + say(least) + " to " + say(most) +
+                      " kg m^2 about the pivot (a uniform beam: mb (L1^2 - L1 L2 + L2^2)/3)");
   }
   if (p.D_tip) {
     for (const auto& [value, key] : {std::pair{*p.D_hinge, "D_hinge"}, {*p.D_tip, "D_tip"}}) {
-      if (!(value > 0)) throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + say(value) + ": a diameter of the beam must be positive");
+      if (!(value > 0))
+        throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + say(value) + ": a diameter of the beam must be positive");
       check_ordinary(value, 1e-6, 1e6, key, "m", "diameter at the beam's end");
       if (!(value <= beam_length(e)))
-        throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + say(value) + " m is thicker than the beam is long, " +
-                                               say(beam_length(e)) + " m; give the diameter in its own unit, e.g. 30cm");
+        throw Error(ErrorKind::bad_number,
+                    "{{" + std::string(key) + "}} = " + say(value) + " m is thicker than the beam is long, " + say(beam_length(e)) +
+                        " m; give the diameter in its own unit, e.g. 30cm");
     }
   }
   if (!(p.counterweight_inertia >= 0))
     throw Error(ErrorKind::bad_number, "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + ": a moment of inertia must not be negative");
   // Its radius of gyration sqrt(I/M) beyond twice the arm: a counterweight that could not swing under the beam.
   if (!(p.counterweight_inertia <= e.M * 4 * e.L3 * e.L3))
-    throw Error(ErrorKind::bad_number, "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + " kg m^2 gives the counterweight a radius of gyration of " +
-                                           say(std::sqrt(p.counterweight_inertia / e.M)) + " m, more than twice its arm L3 = " + say(e.L3) +
-                                           " m; a box of width w and height h has M (w^2 + h^2)/12");
+    throw Error(ErrorKind::bad_number,
+                "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + " kg m^2 gives the counterweight a radius of gyration of " +
+                    say(std::sqrt(p.counterweight_inertia / e.M)) + " m, more than twice its arm L3 = " + say(e.L3) +
+                    " m; a box of width w and height h has M (w^2 + h^2)/12");
   if (!(p.rope_diameter >= 0 && p.rope_diameter <= e.L4 / 2))
-    throw Error(ErrorKind::bad_number, "{{rope_diameter}} = " + say(p.rope_diameter) + " m: the sling's rope must have a diameter from 0 (no drag) to half its length, " +
-                                           say(e.L4 / 2) + " m; a rope is a few centimetres thick");
+    throw Error(ErrorKind::bad_number,
+                "{{rope_diameter}} = " + say(p.rope_diameter) + " m: the sling's rope must have a diameter from 0 (no drag) to half its length, " +
+                    say(e.L4 / 2) + " m; a rope is a few centimetres thick");
   check_ordinary(p.rope_cd, 1e-3, 1e2, "rope_cd", "", "drag coefficient of the rope");
 }
 
@@ -187,15 +199,15 @@ void check_parts(const Engine& e) {
 void check_engine(const Engine& e) {
   auto positive = [&](double value, const char* key, const char* what) {
     if (!(value > 0))
-      throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + format_significant(value, 6) + ": the " + what +
-                                             " must be positive");
+      throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + format_significant(value, 6) + ": the " + what + " must be positive");
   };
   if (!(e.theta_i_deg > 0 && e.theta_i_deg < 90))
-    throw Error(ErrorKind::bad_number, "{{theta_i_deg}} = " + format_significant(e.theta_i_deg, 6) +
-                                           ": the initial beam angle must lie between 0 and 90 degrees");
+    throw Error(ErrorKind::bad_number,
+                "{{theta_i_deg}} = " + format_significant(e.theta_i_deg, 6) + ": the initial beam angle must lie between 0 and 90 degrees");
   if (!(std::abs(e.psi_i_deg) < 90))
-    throw Error(ErrorKind::bad_number, "{{psi_i_deg}} = " + format_significant(e.psi_i_deg, 6) +
-                                           ": the initial counterweight angle must lie between -90 and 90 degrees (0: hanging, unpropped)");
+    throw Error(ErrorKind::bad_number,
+                "{{psi_i_deg}} = " + format_significant(e.psi_i_deg, 6) +
+                    ": the initial counterweight angle must lie between -90 and 90 degrees (0: hanging, unpropped)");
   positive(e.L1, "L1", "long beam section");
   positive(e.L2, "L2", "short beam section");
   positive(e.L3, "L3", "counterweight arm (hinge to counterweight centre)");
@@ -209,8 +221,10 @@ void check_engine(const Engine& e) {
   positive(e.material.g, "g", "gravitational acceleration");
   // Sizes and proportions of ordinary range: within them every product the physics and its SI
   // outputs form (M g L2, sqrt(g L2), L1/L2 ...) stays finite, and the integrator sees an engine.
-  for (const auto& [value, key, what] : {std::tuple{e.L1, "L1", "long beam section"}, {e.L2, "L2", "short beam section"},
-                                         {e.L3, "L3", "counterweight arm"}, {e.L4, "L4", "sling length"}})
+  for (const auto& [value, key, what] : {std::tuple{e.L1, "L1", "long beam section"},
+                                         {e.L2, "L2", "short beam section"},
+                                         {e.L3, "L3", "counterweight arm"},
+                                         {e.L4, "L4", "sling length"}})
     check_ordinary(value, 1e-6, 1e6, key, "m", what);
   for (const auto& [value, key, what] : {std::tuple{e.M, "M", "counterweight mass"}, {e.m, "m", "projectile mass"}})
     check_ordinary(value, 1e-9, 1e12, key, "kg", what);
@@ -223,8 +237,9 @@ void check_engine(const Engine& e) {
   const auto proportion = [](double a, const char* key_a, double b, const char* key_b) {
     constexpr double widest = 1e6;
     if (!(a <= widest * b && b <= widest * a))
-      throw Error(ErrorKind::bad_number, "{{" + std::string(key_a) + "}} = " + format_significant(a, 6) + " and {{" + key_b + "}} = " +
-                                             format_significant(b, 6) + " differ by more than a factor 10^6; give an engine of ordinary proportions");
+      throw Error(ErrorKind::bad_number,
+                  "{{" + std::string(key_a) + "}} = " + format_significant(a, 6) + " and {{" + key_b + "}} = " + format_significant(b, 6) +
+                      " differ by more than a factor 10^6; give an engine of ordinary proportions");
   };
   proportion(e.L1, "L1", e.L2, "L2");
   proportion(e.L4, "L4", e.L1, "L1");
@@ -240,9 +255,7 @@ double pivot_height(const Engine& engine) { return engine.L1 * std::cos(radians(
 
 double arm_fraction(const Engine& engine) { return (engine.L2 + engine.L3) / pivot_height(engine); }
 
-double counterweight_arm(double L1, double L2, double theta_i_deg, double F) {
-  return F * L1 * std::cos(radians(theta_i_deg)) - L2;
-}
+double counterweight_arm(double L1, double L2, double theta_i_deg, double F) { return F * L1 * std::cos(radians(theta_i_deg)) - L2; }
 
 double potential_energy_drop(const Engine& engine) {
   return scaled_design(engine).energy_drop() * engine.M * engine.material.g * engine.L2;  // in units of M g L2 (section 3)

@@ -60,11 +60,12 @@ void check_ordinary(double value, double lowest, double highest, std::string_vie
   // Called for every shot: the text is built only when the value is refused.
   const std::string space = unit.empty() ? "" : " " + std::string(unit);
   if (!std::isfinite(value))
-    throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} is not a finite number for the " + std::string(what) + "; give one from " +
-                                           format_significant(lowest, 6) + " to " + format_significant(highest, 6) + space);
-  throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + format_significant(value, 6) + space + " is not of ordinary size for the " +
-                                         std::string(what) + "; give one from " + format_significant(lowest, 6) + " to " +
-                                         format_significant(highest, 6) + space);
+    throw Error(ErrorKind::bad_number,
+                "{{" + std::string(key) + "}} is not a finite number for the " + std::string(what) + "; give one from " +
+                    format_significant(lowest, 6) + " to " + format_significant(highest, 6) + space);
+  throw Error(ErrorKind::bad_number,
+              "{{" + std::string(key) + "}} = " + format_significant(value, 6) + space + " is not of ordinary size for the " + std::string(what) +
+                  "; give one from " + format_significant(lowest, 6) + " to " + format_significant(highest, 6) + space);
 }
 
 }  // namespace trebuchet

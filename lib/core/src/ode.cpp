@@ -252,7 +252,8 @@ Losses PhaseIntegrator::work(const OdeVector& y) const {
 OdeVector PhaseIntegrator::derivative(const OdeVector& y) {
   OdeVector dy{};
   if (equations(0, y.data(), dy.data(), &context_) != GSL_SUCCESS)
-    throw Error(ErrorKind::numerical, context_.friction_unsettled ? unsettled_friction : "the equations of motion failed at an accepted state; tighten {{rtol}}");
+    throw Error(ErrorKind::numerical,
+                context_.friction_unsettled ? unsettled_friction : "the equations of motion failed at an accepted state; tighten {{rtol}}");
   return dy;
 }
 

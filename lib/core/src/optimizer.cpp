@@ -48,7 +48,9 @@ std::vector<Start> starts_for(const OptimizeRequest& r) {
     d.extrapolate = true;
     try {
       const OptimalEngine design = design_optimal_engine(builtin_scaling_table(), d);
-      const std::string name = branch == BranchChoice::automatic ? "calculator" : branch == BranchChoice::lower ? "calculator, lower branch" : "calculator, upper branch";
+      const std::string name = branch == BranchChoice::automatic ? "calculator"
+          : branch == BranchChoice::lower                        ? "calculator, lower branch"
+                                                                 : "calculator, upper branch";
       const ScaledDesign shape = scaled_design(design.engine);
       bool seen = false;
       for (const Start& s : starts) seen = seen || (std::abs(s.shape.l / shape.l - 1) < 1e-9 && std::abs(s.shape.l4 / shape.l4 - 1) < 1e-9);
@@ -92,8 +94,8 @@ struct Search {
     if (request->fixed_l && (shape.l4 < 1) != (branch_below_one)) return 0;
     try {
       const CapacityFit fit = request->projectile_mass
-                                  ? fit_range_and_mass(shape, request->capacity.R, *request->projectile_mass, request->material, request->settings)
-                                  : fit_capacity(shape, request->capacity, request->material, request->settings);
+          ? fit_range_and_mass(shape, request->capacity.R, *request->projectile_mass, request->material, request->settings)
+          : fit_capacity(shape, request->capacity, request->material, request->settings);
       simulations += fit.simulations;
       // The model must hold up to the release (no warning: the sling pulls, the counterweight
       // and the tip stay above the base); an optimum outside it is no engine.
@@ -109,9 +111,7 @@ struct Search {
     }
   }
 
-  double objective_of(const Verification& v) const {
-    return request->settings.criterion.release == Release::efficiency ? v.eps : v.Q;
-  }
+  double objective_of(const Verification& v) const { return request->settings.criterion.release == Release::efficiency ? v.eps : v.Q; }
 };
 
 Optimum search_from(const OptimizeRequest& request, const Start& start) {
@@ -143,26 +143,26 @@ Optimum search_from(const OptimizeRequest& request, const Start& start) {
     x = best_point;
     out.start_design.l4 = std::exp(x[0]), out.start_design.mu_b = std::exp(x[1]);
   }
-  out.iterations = minimize_simplex([&](const std::vector<double>& point) { return search.cost(point, fixed.theta_i_deg, fixed.F); }, x,
-                                    0.05, request.shape_tolerance, 400);
+  out.iterations = minimize_simplex([&](const std::vector<double>& point) { return search.cost(point, fixed.theta_i_deg, fixed.F); }, x, 0.05,
+                                    request.shape_tolerance, 400);
   // A search in which every shape failed in its integration is a numerical failure, named by the last.
   if (!(search.best > 0))
-    throw Error(search.only_integration_failed ? ErrorKind::numerical : ErrorKind::out_of_range, "no shape near the " + start.name + " start delivers " +
-                                             format_significant(request.capacity.R, 4) + " m with " +
-                                             (request.projectile_mass ? format_significant(*request.projectile_mass, 4) + " kg stones"
-                                                                      : format_significant(request.capacity.T / 1e3, 4) + " kJ") +
-                                             " (the last shape tried: " +
-                                             search.last_failure + "); try another capacity, theta_i or F");
+    throw Error(search.only_integration_failed ? ErrorKind::numerical : ErrorKind::out_of_range,
+                "no shape near the " + start.name + " start delivers " + format_significant(request.capacity.R, 4) + " m with " +
+                    (request.projectile_mass ? format_significant(*request.projectile_mass, 4) + " kg stones"
+                                             : format_significant(request.capacity.T / 1e3, 4) + " kJ") +
+                    " (the last shape tried: " + search.last_failure + "); try another capacity, theta_i or F");
   out.fit = search.best_fit;
   out.objective = search.best;
   out.simulations = search.simulations;
   if (request.fixed_l) {
     const ScaledDesign& found = out.fit.design;
     if (std::abs(found.l4 - 1) < 0.01)
-      out.note = "the best shape on this side lies at its edge, l4 = 1: the objective grows toward the other side, and this side has no maximum of its own";
+      out.note =
+          "the best shape on this side lies at its edge, l4 = 1: the objective grows toward the other side, and this side has no maximum of its own";
     else if (found.mu_b < 2 * least_searched_mu_b)
       out.note = "the best shape lies at the lightest beam searched, mu_b = " + format_significant(found.mu_b, 2) +
-                 ": the objective still grows toward a beam of no mass";
+          ": the objective still grows toward a beam of no mass";
   }
   return out;
 }
@@ -178,11 +178,12 @@ std::vector<Optimum> optimize(const OptimizeRequest& request) {
   check_ordinary(request.F, 1e-6, 1e6, "F", "", "counterweight arm fraction (L2 + L3)/H");
   const double l_min = 1 / (request.F * std::cos(radians(request.theta_i_deg)));
   if (!(request.F > 0 && request.theta_i_deg > 0 && request.theta_i_deg < 90) || !(l_min < max_beam_ratio))
-    throw Error(ErrorKind::out_of_range, "theta_i = " + format_significant(request.theta_i_deg, 4) + " deg with F = " +
-                                             format_significant(request.F, 4) + " leaves room for the counterweight arm (L2 + L3 = F L1 cos(theta_i) > L2) "
-                                             "only for a beam ratio l = L1/L2 above " + format_significant(l_min, 3) +
-                                             ", beyond any engine of the paper (l < " + format_number(max_beam_ratio) +
-                                             "); lower theta_i or raise F (the paper's are 30 or 40 deg and 1, 2/3 or 1/2)");
+    throw Error(ErrorKind::out_of_range,
+                "theta_i = " + format_significant(request.theta_i_deg, 4) + " deg with F = " + format_significant(request.F, 4) +
+                    " leaves room for the counterweight arm (L2 + L3 = F L1 cos(theta_i) > L2) "
+                    "only for a beam ratio l = L1/L2 above " +
+                    format_significant(l_min, 3) + ", beyond any engine of the paper (l < " + format_number(max_beam_ratio) +
+                    "); lower theta_i or raise F (the paper's are 30 or 40 deg and 1, 2/3 or 1/2)");
   std::vector<Optimum> optima;
   std::string reasons;
   bool all_numerical = true;

@@ -42,8 +42,9 @@ const TableBlock* ScalingTable::find_block(double theta_i_deg, double F) const {
 
 const TableBlock& ScalingTable::block(double theta_i_deg, double F) const {
   if (const TableBlock* found = find_block(theta_i_deg, F)) return *found;
-  throw Error(ErrorKind::out_of_range, "tab:CPNC has no constants for theta_i = " + format_number(theta_i_deg) + " deg with F = " +
-                                           format_fraction(F) + "; it has " + block_list() + " ({{theta_i_deg}}, {{F}})");
+  throw Error(ErrorKind::out_of_range,
+              "tab:CPNC has no constants for theta_i = " + format_number(theta_i_deg) + " deg with F = " + format_fraction(F) + "; it has " +
+                  block_list() + " ({{theta_i_deg}}, {{F}})");
 }
 
 std::string ScalingTable::block_list() const {

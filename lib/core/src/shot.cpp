@@ -57,8 +57,7 @@ class PhaseRecord {
     ForceValues forces;
   };
 
-  PhaseRecord(PhaseIntegrator& integrator, ForceExtremes before, Onsets& onsets)
-      : integrator_(integrator), before_(before), onsets_(onsets) {
+  PhaseRecord(PhaseIntegrator& integrator, ForceExtremes before, Onsets& onsets) : integrator_(integrator), before_(before), onsets_(onsets) {
     samples_.reserve(128);  // a phase takes 20 to 70 steps at the defaults
   }
 
@@ -151,7 +150,6 @@ class PhaseRecord {
   }
 
  private:
-
   Snapshot snapshot_at(double time) const { return integrator_.machine().snapshot(integrator_.phase(), integrator_.state(y_at(time))); }
 
   ForceValues forces_at(double time) const { return force_values(snapshot_at(time)); }
@@ -236,7 +234,8 @@ Candidate release_time(const Objective& objective, double lo, double hi, const s
   const auto slope = [&](double t) {
     for (const Point& known : slopes)
       if (known.x == t) return known.f;
-    const double value = 8 * (objective(t + slope_step) - objective(t - slope_step)) - (objective(t + 2 * slope_step) - objective(t - 2 * slope_step));
+    const double value = 8 * (objective(t + slope_step) - objective(t - slope_step)) -
+        (objective(t + 2 * slope_step) - objective(t - 2 * slope_step));
     slopes.push_back({t, value});
     return value;
   };
@@ -293,8 +292,7 @@ struct PinWatch {
 
 // The motion of one phase over [t_begin, t_end] for the series: the step ends in it, or with
 // dt > 0 the continuous solution at every multiple of dt after t_begin (at 0 too) and t_end.
-void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, const PhaseRecord& record, double t_begin,
-                  double t_end, double dt) {
+void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, const PhaseRecord& record, double t_begin, double t_end, double dt) {
   if (!trace) return;
   auto add = [&](double t, const OdeVector& y) {
     const State s = integrator.state(y);
@@ -315,8 +313,8 @@ void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, c
 // step ends, or every dt > 0 (each integrated anew from the step it falls in). Where friction
 // holds a pin after the release (StickWatch), the model, which leaves sticking out, ends there,
 // and so does the series.
-void trace_released(const Machine& dynamics, const ScaledDesign& e, const IntegratorSettings& settings, const State& release,
-                    const Losses& work, double t_release, double dt, std::vector<TracePoint>& trace) {
+void trace_released(const Machine& dynamics, const ScaledDesign& e, const IntegratorSettings& settings, const State& release, const Losses& work,
+                    double t_release, double dt, std::vector<TracePoint>& trace) {
   PhaseIntegrator released(dynamics, Phase::released, settings);
   OdeVector y = {release.theta, release.psi, release.theta_dot, release.psi_dot};
   for (std::size_t k = 0; k + 4 < released.dimension(); ++k) y[4 + k] = work[k];
@@ -369,8 +367,8 @@ std::array<double, load_count> load_values(const Snapshot& s) {
   return {s.sling_tension, std::hypot(s.hinge_force.x, s.hinge_force.y), force_values(s)[pivot_reaction], std::abs(s.beam_moment)};
 }
 
-ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criterion, double t, const State& s,
-                           const Snapshot& snap, ForceExtremes extremes) {
+ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criterion, double t, const State& s, const Snapshot& snap,
+                           ForceExtremes extremes) {
   extremes.add(force_values(snap));
   ReleasePoint r;
   r.t = t;
@@ -394,8 +392,8 @@ ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criter
   return r;
 }
 
-ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
-                         std::vector<TracePoint>* trace, double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads) {
+ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterion, const IntegratorSettings& settings, std::vector<TracePoint>* trace,
+                         double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads) {
   if (!(e.L() > 0))
     fail("no room for the counterweight arm: L3/L2 = F l cos(theta_i) - 1 = " + format_significant(e.L(), 4) +
          " <= 0 (eq:Design); raise F or l, or lower theta_i");
@@ -430,8 +428,9 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
       fail("step budget of " + std::to_string(settings.max_steps) + " steps exceeded in " + phase +
            "; loosen {{rtol}} or choose a higher-order {{stepper}}");
     if (pins.hinge_holds(e, s))
-      fail("the hinge pin's friction makes the counterweight stick to the beam and slip, which the model leaves out "
-           "(docs/verifier.md, \"Real engines\"); give a smaller {{hinge_friction}} or {{hinge_radius}}");
+      fail(
+          "the hinge pin's friction makes the counterweight stick to the beam and slip, which the model leaves out "
+          "(docs/verifier.md, \"Real engines\"); give a smaller {{hinge_friction}} or {{hinge_radius}}");
     return pins.axle_holds(e, s);
   };
 
@@ -456,8 +455,9 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     const bool axle_holds = count_step("phase I", trough.state(y));
     // Friction that stops the beam holds it (Coulomb's law at rest): the engine jams.
     if (axle_holds || (dynamics.dissipates() && !(y[2] > 0)))
-      fail("friction stops the beam before the projectile lifts off: the engine jams; give smaller friction coefficients or pin radii "
-           "({{axle_friction}}, {{hinge_friction}}, {{trough_friction}})");
+      fail(
+          "friction stops the beam before the projectile lifts off: the engine jams; give smaller friction coefficients or pin radii "
+          "({{axle_friction}}, {{hinge_friction}}, {{trough_friction}})");
     if (std::cos(trough.state(y).phi) < abandon_trough_cos_phi)
       fail("the sling stands vertical in the trough (phi -> 90 deg) before lift-off; lengthen the sling L4 or lighten the projectile m");
     snap = dynamics.snapshot(Phase::trough, trough.state(y));
@@ -480,8 +480,9 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     phase1.add(trough.step_end(t, y, snap), snap);
     track_energy(snap, trough.work(y));
     if (y[0] >= M_PI || t >= settings.max_time)
-      fail("the projectile never lifts off: the trough still carries it when the beam is upright; "
-           "change the sling length L4 or the masses");
+      fail(
+          "the projectile never lifts off: the trough still carries it when the beam is upright; "
+          "change the sling length L4 or the masses");
   }
   record_trace(trace, trough, phase1, 0, t, trace_dt);
 
@@ -523,8 +524,8 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   const std::string no_forward_release = "no release sends the projectile forward: over phase II it never flies toward the target";
   if (!(best_quality > 0)) fail(no_forward_release);
   if (result.energy_drift > settings.max_energy_drift)
-    fail("energy drift " + format_significant(result.energy_drift, 3) + " of Delta U exceeds " +
-         format_significant(settings.max_energy_drift, 3) + "; tighten {{rtol}} or choose another {{stepper}}");
+    fail("energy drift " + format_significant(result.energy_drift, 3) + " of Delta U exceeds " + format_significant(settings.max_energy_drift, 3) +
+         "; tighten {{rtol}} or choose another {{stepper}}");
 
   // The release search (docs/verifier.md, "Release"). The objective is smooth between the onsets
   // of growth of the running extremes, so its maximum over phase II lies at an onset or at the
@@ -578,7 +579,8 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     const auto trough_points = phase1.load_points(k, result.t_liftoff, phase1.samples().back().loads[k]);
     const auto lifted_points = phase2.load_points(k, t_release, at_release[k]);
     const auto highest = [](const std::vector<Point>& points) {
-      return static_cast<std::size_t>(std::max_element(points.begin(), points.end(), [](const Point& a, const Point& b) { return a.f < b.f; }) - points.begin());
+      return static_cast<std::size_t>(std::max_element(points.begin(), points.end(), [](const Point& a, const Point& b) { return a.f < b.f; }) -
+                                      points.begin());
     };
     const std::size_t top_trough = highest(trough_points), top_lifted = highest(lifted_points);
     result.loads[k] = lifted_points[top_lifted].f > trough_points[top_trough].f ? phase2.refined_load_peak(k, lifted_points, top_lifted)

@@ -10,7 +10,7 @@ namespace trebuchet {
 /// Minimises f from x0 with initial steps `step` in every coordinate, until the simplex is
 /// smaller than `size` (gsl_multimin_test_size) or after `max_iterations`. Returns the
 /// iterations; f sees every point tried, so the caller keeps what it needs of the best.
-int minimize_simplex(const std::function<double(const std::vector<double>&)>& f, const std::vector<double>& x0, double step,
-                     double size, int max_iterations);
+int minimize_simplex(const std::function<double(const std::vector<double>&)>& f, const std::vector<double>& x0, double step, double size,
+                     int max_iterations);
 
 }  // namespace trebuchet

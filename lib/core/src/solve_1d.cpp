@@ -33,24 +33,22 @@ std::optional<double> root_between(const std::function<double(double)>& f, doubl
   for (int k = 0; k < max_iterations; ++k) {
     if (gsl_root_fsolver_iterate(solver.get()) != GSL_SUCCESS) break;
     root = gsl_root_fsolver_root(solver.get());
-    if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver.get()), gsl_root_fsolver_x_upper(solver.get()), epsabs,
-                               epsrel) != GSL_CONTINUE)
-      break;
+    if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver.get()), gsl_root_fsolver_x_upper(solver.get()), epsabs, epsrel) != GSL_CONTINUE) break;
   }
   return root;
 }
 
 double find_root(const std::function<double(double)>& f, double lo, double hi, double epsabs, double epsrel) {
   if (const auto root = root_between(f, lo, hi, epsabs, epsrel)) return *root;
-  throw Error(ErrorKind::numerical, "a root search was given [" + format_number(lo) + ", " + format_number(hi) +
-                                        "], where the function does not change sign (an internal bracketing error)");
+  throw Error(ErrorKind::numerical,
+              "a root search was given [" + format_number(lo) + ", " + format_number(hi) +
+                  "], where the function does not change sign (an internal bracketing error)");
 }
 
 double peak_between(const std::function<double(double)>& f, double lo, double estimate, double hi, double slope_step, double epsabs) {
   const auto slope = [&](double x) { return f(x + slope_step) - f(x - slope_step); };
   const double inner_lo = lo + slope_step, inner_hi = hi - slope_step, near = (hi - lo) / 20;
-  if (const auto root = root_between(slope, std::max(inner_lo, estimate - near), std::min(inner_hi, estimate + near), epsabs, 0))
-    return *root;
+  if (const auto root = root_between(slope, std::max(inner_lo, estimate - near), std::min(inner_hi, estimate + near), epsabs, 0)) return *root;
   return root_between(slope, inner_lo, inner_hi, epsabs, 0).value_or(estimate);
 }
 

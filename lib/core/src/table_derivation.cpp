@@ -37,17 +37,13 @@ ParamVector fitted_params(const Engine& e) { return (ParamVector() << e.L1, e.L2
 struct Block {
   SweepSpec spec;  // the first part's
   std::string first_origin;
-  std::map<double, SweepPoint> points;       // by X
-  std::map<double, std::string> origin_of;   // the part each point came from, for messages
+  std::map<double, SweepPoint> points;  // by X
+  std::map<double, std::string> origin_of;  // the part each point came from, for messages
 };
 
-[[noreturn]] void fail(const std::string& where, const std::string& problem) {
-  throw Error(ErrorKind::data_file, where + ": " + problem);
-}
+[[noreturn]] void fail(const std::string& where, const std::string& problem) { throw Error(ErrorKind::data_file, where + ": " + problem); }
 
-std::string block_name(const SweepSpec& spec) {
-  return "block theta " + format_number(spec.theta_i_deg) + " deg, F " + format_fraction(spec.F);
-}
+std::string block_name(const SweepSpec& spec) { return "block theta " + format_number(spec.theta_i_deg) + " deg, F " + format_fraction(spec.F); }
 
 // eq:f_ZX fitted for every parameter over the points.
 struct SegmentFit {
@@ -63,8 +59,7 @@ SegmentFit fit_segment(const std::vector<const SweepPoint*>& points, const Param
     std::vector<double> X, f;
     for (const SweepPoint* point : points) {
       X.push_back(point->X);
-      f.push_back(fitted_params(point->engine)[index(param)] / Z0[index(param)] /
-                  std::pow(point->capacity.R / R0, n_Z[index(param)]));
+      f.push_back(fitted_params(point->engine)[index(param)] / Z0[index(param)] / std::pow(point->capacity.R / R0, n_Z[index(param)]));
     }
     out.fits[index(param)] = fit_exponential(X, f);
     out.worst = std::max(out.worst, out.fits[index(param)].max_deviation);
@@ -123,7 +118,7 @@ void derive_block(const Block& block, double R0, DerivedTable& out) {
       const ExponentialFit& f = fit.fits[index(param)];
       segment.a[index(param)] = f.a;
       segment.exponents(index(param), 0) = n_Z[index(param)] + 5 * f.b;  // eq:ZRT: p_Z
-      segment.exponents(index(param), 1) = -f.b;                         // q_Z
+      segment.exponents(index(param), 1) = -f.b;  // q_Z
       quality.fit_max_deviation[index(param)] = f.max_deviation;
     }
     table_block.segments.push_back(segment);
@@ -137,14 +132,13 @@ void derive_block(const Block& block, double R0, DerivedTable& out) {
 }
 
 bool same_reference(const SweepSpec& a, const SweepSpec& b) {
-  return a.R0 == b.R0 && a.T0 == b.T0 && a.material.beta2 == b.material.beta2 &&
-         a.material.youngs_modulus == b.material.youngs_modulus && a.material.wood_density == b.material.wood_density &&
-         a.material.g == b.material.g;
+  return a.R0 == b.R0 && a.T0 == b.T0 && a.material.beta2 == b.material.beta2 && a.material.youngs_modulus == b.material.youngs_modulus &&
+      a.material.wood_density == b.material.wood_density && a.material.g == b.material.g;
 }
 
 bool same_grid_and_criterion(const SweepSpec& a, const SweepSpec& b) {
   return a.X_from == b.X_from && a.X_to == b.X_to && a.X_step == b.X_step && a.criterion.release == b.criterion.release &&
-         a.criterion.n == b.criterion.n;
+      a.criterion.n == b.criterion.n;
 }
 
 }  // namespace
@@ -162,12 +156,13 @@ DerivedTable derive_table(const std::vector<SweepPart>& parts) {
       block.first_origin = part.origin;
     }
     if (!same_grid_and_criterion(part.spec, block.spec))
-      fail(part.origin, "its X grid or quality differs from that of " + block.first_origin + " for the same " +
-                            block_name(part.spec) + "; run every shard with the same {{X}} and {{quality}}");
+      fail(part.origin,
+           "its X grid or quality differs from that of " + block.first_origin + " for the same " + block_name(part.spec) +
+               "; run every shard with the same {{X}} and {{quality}}");
     for (const SweepPoint& point : part.points) {
       if (!block.points.emplace(point.X, point).second)
-        fail(part.origin, block_name(part.spec) + ": X = " + format_number(point.X) + " is also in " + block.origin_of[point.X] +
-                              "; give each shard once");
+        fail(part.origin,
+             block_name(part.spec) + ": X = " + format_number(point.X) + " is also in " + block.origin_of[point.X] + "; give each shard once");
       block.origin_of[point.X] = part.origin;
     }
   }
@@ -177,7 +172,9 @@ DerivedTable derive_table(const std::vector<SweepPart>& parts) {
   table.provenance = {
       {"source", "trebuchet-verify derive-table: the ab-initio optimum (appendix A, section 5) at each X point of the sweep, Y = 0 (eq:XY_RT)"},
       {"law", "Z/Z0 = a_Z (R/R0)^p_Z (T/T0)^q_Z (eq:ZRT), p_Z = n_Z + 5 b_Z, q_Z = -b_Z from f_Z = a_Z exp(b_Z sqrt(26) X) (eq:f_ZX)"},
-      {"fit", "least squares of log f_Z against X, separately for X <= 0 and X >= 0; fit_max_deviation is the largest |fit/f_Z - 1| over a segment's points"},
+      {"fit",
+       "least squares of log f_Z against X, separately for X <= 0 and X >= 0; fit_max_deviation is the largest |fit/f_Z - 1| over a segment's "
+       "points"},
       {"branches", "one optimum per X point under this program's Q (docs/table_derivation.md); optima_found counts distinct optima from the starts"}};
   table.R0 = first.spec.R0;
   table.T0 = first.spec.T0;

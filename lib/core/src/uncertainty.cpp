@@ -37,10 +37,11 @@ SampleOutcome run_sample(std::uint64_t seed, std::size_t i, const std::function<
   return sample(random);
 }
 
-MonteCarloSummary run_monte_carlo(int samples, std::uint64_t seed, int threads,
-                                  const std::function<SampleOutcome(std::mt19937_64& random)>& sample, const Progress& progress) {
+MonteCarloSummary run_monte_carlo(int samples, std::uint64_t seed, int threads, const std::function<SampleOutcome(std::mt19937_64& random)>& sample,
+                                  const Progress& progress) {
   std::vector<SampleOutcome> outcomes(static_cast<std::size_t>(samples));
-  for_each_index(outcomes.size(), threads, [&](std::size_t i) { outcomes[i] = run_sample(seed, i, sample); }, progress);
+  for_each_index(
+      outcomes.size(), threads, [&](std::size_t i) { outcomes[i] = run_sample(seed, i, sample); }, progress);
   return summarize_samples(outcomes);
 }
 
@@ -66,7 +67,8 @@ MonteCarloSummary summarize_samples(const std::vector<SampleOutcome>& outcomes) 
       for (const auto& v : summary.values) column.push_back(v[k]);
       std::sort(column.begin(), column.end());
       for (int p = 0; p < 3; ++p)
-        summary.percentiles[k][static_cast<std::size_t>(p)] = gsl_stats_quantile_from_sorted_data(column.data(), 1, column.size(), std::array{0.05, 0.5, 0.95}[static_cast<std::size_t>(p)]);
+        summary.percentiles[k][static_cast<std::size_t>(p)] = gsl_stats_quantile_from_sorted_data(
+            column.data(), 1, column.size(), std::array{0.05, 0.5, 0.95}[static_cast<std::size_t>(p)]);
     }
   return summary;
 }

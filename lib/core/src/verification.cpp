@@ -25,8 +25,9 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   const double drop = out.h - target_level;  // release to target level [m]
   const double apex = out.h + (vy > 0 ? vy * vy / (2 * g) : 0);  // highest point of the flight above the base [m]
   if (!(target_level <= apex))
-    throw Error(ErrorKind::usage, "the target level " + format_significant(target_level, 4) + " m lies above the apex of the flight, " +
-                                      format_significant(apex, 4) + " m above the engine's base; give a target level below it");
+    throw Error(ErrorKind::usage,
+                "the target level " + format_significant(target_level, 4) + " m lies above the apex of the flight, " + format_significant(apex, 4) +
+                    " m above the engine's base; give a target level below it");
   out.R_vacuum = vacuum_range({behind, 0}, {vx, vy}, drop, g);
   out.capacity.R = out.R_vacuum;
   // eq:T at the target level: the height above it is drop/L2, scaled; M g L2 turns tau_e into joules.
@@ -45,7 +46,7 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
         throw Error(end_drop < 0 ? ErrorKind::usage : ErrorKind::numerical,
                     "the flight through " + describe_air(*air, engine.m) + " did not come down to its end" +
                         (end_drop < 0 ? ": the target level " + format_significant(target_level, 4) +
-                                            " m lies above the apex of the flight in air (drag lowers it); give a lower target level"
+                                 " m lies above the apex of the flight in air (drag lowers it); give a lower target level"
                                       : "; give the air, the wind and the projectile's density values of ordinary size"));
       range = end->range, end_velocity = end->velocity;
       if (!air->drag_coefficient) {
@@ -55,7 +56,8 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
         const double fastest = std::max(std::hypot(vx + air->wind, vy), std::hypot(end_velocity.x + air->wind, end_velocity.y));
         const double reynolds = drag.reynolds_per_speed * fastest;
         if (reynolds > max_fitted_reynolds)
-          out.notes.push_back("the flight reaches Re = " + format_significant(reynolds, 2) + ", beyond the 1e6 to which Morrison's Cd(Re) was fitted: "
+          out.notes.push_back("the flight reaches Re = " + format_significant(reynolds, 2) +
+                              ", beyond the 1e6 to which Morrison's Cd(Re) was fitted: "
                               "the range in air is an extrapolation there (a fixed drag coefficient is another choice)");
       }
     } else {
@@ -65,9 +67,10 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
     out.capacity.R = range_from_release ? range + behind : range;
     // A headwind can blow the projectile back behind the engine: no range to report.
     if (air && !(out.capacity.R > 0))
-      throw Error(ErrorKind::out_of_range, "the flight through " + describe_air(*air, engine.m) + " ends " + format_significant(-out.capacity.R, 4) +
-                                               " m behind the " + (range_from_release ? "release point" : "pivot") +
-                                               ": the air blows the projectile back; give a weaker headwind ({{wind}}) or less drag");
+      throw Error(ErrorKind::out_of_range,
+                  "the flight through " + describe_air(*air, engine.m) + " ends " + format_significant(-out.capacity.R, 4) + " m behind the " +
+                      (range_from_release ? "release point" : "pivot") +
+                      ": the air blows the projectile back; give a weaker headwind ({{wind}}) or less drag");
     out.capacity.T = engine.m * (end_velocity.x * end_velocity.x + end_velocity.y * end_velocity.y) / 2;
     if (air) out.energy.flight_drag = engine.m * (out.v * out.v / 2 + g * end_drop) - out.capacity.T;
   }
@@ -102,12 +105,13 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
     const double implied_density = engine.mb / beam_mass(engine.D, beam_length(engine), engine.material) * engine.material.wood_density;
     if (std::abs(implied_density / engine.material.wood_density - 1) > 0.1)
       out.notes.push_back("D = " + format_significant(engine.D, 3) + " m and mb = " + format_significant(engine.mb, 4) + " kg make a wood of " +
-                          format_significant(implied_density, 3) + " kg/m3 (eq:BeamMass), not " + format_significant(engine.material.wood_density, 3) +
-                          ": the motion uses mb, the stress D");
+                          format_significant(implied_density, 3) + " kg/m3 (eq:BeamMass), not " +
+                          format_significant(engine.material.wood_density, 3) + ": the motion uses mb, the stress D");
   }
   auto warn = [&](const std::optional<double>& t, const std::string& what) {
-    if (t) out.warnings.push_back(what + " at t = " + format_significant(*t * time_unit, 4) + " s, before the release at " +
-                                  format_significant(out.t_release, 4) + " s: the model no longer holds there, and the figures are not physical");
+    if (t)
+      out.warnings.push_back(what + " at t = " + format_significant(*t * time_unit, 4) + " s, before the release at " +
+                             format_significant(out.t_release, 4) + " s: the model no longer holds there, and the figures are not physical");
   };
   warn(shot.slack_sling, "the sling goes slack (it would push the projectile)");
   warn(shot.counterweight_below_base, "the counterweight passes below the engine's base");
@@ -145,20 +149,22 @@ Verification verify_engine(const Engine& engine, const ShotSettings& settings, s
   check_engine(engine);  // as given, its material too: a caller may have changed either since it was read
   check_shot_settings(settings);
   if (engine.parts.rope_diameter > 0 && !(settings.air && settings.drag_in_sling))
-    throw Error(ErrorKind::usage, "{{rope_diameter}} gives the drag on the sling's rope, which acts only when the air acts before the release; "
-                                  "add {{drag_in_sling}} (with {{air}}), or leave the rope's diameter out");
+    throw Error(ErrorKind::usage,
+                "{{rope_diameter}} gives the drag on the sling's rope, which acts only when the air acts before the release; "
+                "add {{drag_in_sling}} (with {{air}}), or leave the rope's diameter out");
   const double time_unit = std::sqrt(engine.L2 / engine.material.g);  // section 3 [s]
   const ReleaseCriterion criterion = release_criterion(engine, settings);
   if (trace && trace_dt_s > 0) {
     // The series runs to twice the release (shot.hpp); its size is known before it is written.
     const double duration_s = 2 * simulate_shot(shot_design(engine, settings), criterion, settings.integrator).release.t * time_unit;
     if (!(duration_s / trace_dt_s <= max_series_points))
-      throw Error(ErrorKind::bad_number, "{{series_dt}} = " + format_significant(trace_dt_s, 6) + " s would cut the " +
-                                             format_significant(duration_s, 4) + " s of the series into more than " +
-                                             std::to_string(static_cast<long>(max_series_points)) + " points; give at least " +
-                                             format_significant(duration_s / max_series_points, 2) + " s");
+      throw Error(ErrorKind::bad_number,
+                  "{{series_dt}} = " + format_significant(trace_dt_s, 6) + " s would cut the " + format_significant(duration_s, 4) +
+                      " s of the series into more than " + std::to_string(static_cast<long>(max_series_points)) + " points; give at least " +
+                      format_significant(duration_s / max_series_points, 2) + " s");
   }
-  const ShotResult shot = simulate_shot(shot_design(engine, settings), criterion, settings.integrator, trace, trace_dt_s / time_unit, nullptr, settings.loads);
+  const ShotResult shot = simulate_shot(shot_design(engine, settings), criterion, settings.integrator, trace, trace_dt_s / time_unit, nullptr,
+                                        settings.loads);
   return verification_of(engine, shot, settings.target_level, settings.air, settings.range_from_release);
 }
 

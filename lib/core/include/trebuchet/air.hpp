@@ -14,11 +14,11 @@ namespace trebuchet {
 
 /// The air and the projectile's make. Defaults: a stone sphere in still air at sea level.
 struct Air {
-  double density = 1.2;                ///< of the air [kg/m^3]
+  double density = 1.2;  ///< of the air [kg/m^3]
   std::optional<double> drag_coefficient = 0.47;  ///< Cd of a sphere; nullopt: Cd(Re), drag_coefficient_of
-  double projectile_density = 2500;    ///< stone [kg/m^3]; iron 7870
-  double viscosity = 1.81e-5;          ///< dynamic viscosity of air at 15 degC [Pa s], for Re
-  double wind = 0;                     ///< horizontal wind toward the target (against it: < 0) [m/s]
+  double projectile_density = 2500;  ///< stone [kg/m^3]; iron 7870
+  double viscosity = 1.81e-5;  ///< dynamic viscosity of air at 15 degC [Pa s], for Re
+  double wind = 0;  ///< horizontal wind toward the target (against it: < 0) [m/s]
 };
 
 /// Refuses (Error(bad_number), naming {{air_density}}, {{projectile}}, {{cd}} or {{wind}}) air
@@ -38,9 +38,9 @@ Drag scaled(const Drag& drag, double L2, double g);
 /// Where a flight ends. Positions are relative to the pivot, as in the shot: x > 0 behind it,
 /// the target toward -x.
 struct FlightEnd {
-  double range = 0;    ///< -x at the end: from the pivot toward the target
-  double time = 0;     ///< of flight
-  Vec2 velocity;       ///< at the end
+  double range = 0;  ///< -x at the end: from the pivot toward the target
+  double time = 0;  ///< of flight
+  Vec2 velocity;  ///< at the end
 };
 
 /// The flight from `position` with `velocity` until it comes down through the level `drop`

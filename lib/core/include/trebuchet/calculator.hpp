@@ -30,22 +30,22 @@ struct DesignRequest {
   Given first{Quantity::R, 0};
   Given second{Quantity::T, 0};
   double theta_i_deg = standard_theta_i_deg;  ///< initial beam angle [deg]; tab:CPNC has 30 and 40
-  double F = standard_F;       ///< (L2 + L3)/H, scaled; tab:CPNC has 1 and 2/3
+  double F = standard_F;  ///< (L2 + L3)/H, scaled; tab:CPNC has 1 and 2/3
   BranchChoice branch = BranchChoice::automatic;
-  Material material{};         ///< may differ from the table's; masses, D and T follow by size_factors
-  bool extrapolate = false;    ///< use the nearest segment when X is outside all of them
-  double scale = 1;            ///< print the optimum at this factor of its size (a model), scaled
+  Material material{};  ///< may differ from the table's; masses, D and T follow by size_factors
+  bool extrapolate = false;  ///< use the nearest segment when X is outside all of them
+  double scale = 1;  ///< print the optimum at this factor of its size (a model), scaled
 };
 
 /// An optimal engine with the capacity it is designed for.
 struct OptimalEngine {
-  Engine engine;              ///< with the request's material
-  Capacity capacity;          ///< range in vacuum and energy eq:T at the engine's base level [m], [J]
+  Engine engine;  ///< with the request's material
+  Capacity capacity;  ///< range in vacuum and energy eq:T at the engine's base level [m], [J]
   CapacityCoordinates coordinates;  ///< X, Y of eq:XY_RT in the table's material (masses and T rescaled), scaled
   Branch branch = Branch::none;
-  double segment_X_min = 0;   ///< interval of the tab:CPNC segment used
+  double segment_X_min = 0;  ///< interval of the tab:CPNC segment used
   double segment_X_max = 0;
-  double F = 0;               ///< (L2 + L3)/H, scaled
+  double F = 0;  ///< (L2 + L3)/H, scaled
   /// Worst-case relative error of R or T per relative error of the givens (1 for R, T given);
   /// large values mean a near-singular pair (small |D_ij| of eq:ZiZj_RT).
   double amplification = 1;

@@ -15,7 +15,7 @@ namespace trebuchet {
 
 /// A range measured in the field, from where the settings measure it [m].
 struct MeasuredRange {
-  double range = 0;        ///< [m]
+  double range = 0;  ///< [m]
   double uncertainty = 0;  ///< one standard deviation [m]; 0: none given
 };
 
@@ -25,15 +25,15 @@ enum class FrictionFit { scale, pin_coefficient };
 
 struct Calibration {
   FrictionFit fitted = FrictionFit::scale;
-  double value = 0;                  ///< the scale, or mu at both pins, that matches the range
+  double value = 0;  ///< the scale, or mu at both pins, that matches the range
   double value_low = 0, value_high = 0;  ///< those that match the range plus and minus its uncertainty (low: the longer range)
   /// The band's short end lies beyond the strongest friction the engine runs with: value_high
   /// is that friction, not the one matching the range less its uncertainty.
   bool band_clipped = false;
-  std::optional<double> jams_at;     ///< the friction value at which the engine jams, when below coefficients of 2
-  Engine engine;                     ///< with the fitted friction
-  Verification shot;                 ///< of the calibrated engine
-  Verification frictionless;         ///< of the same engine without friction
+  std::optional<double> jams_at;  ///< the friction value at which the engine jams, when below coefficients of 2
+  Engine engine;  ///< with the fitted friction
+  Verification shot;  ///< of the calibrated engine
+  Verification frictionless;  ///< of the same engine without friction
   int simulations = 0;
 };
 
@@ -50,7 +50,7 @@ Calibration calibrate(const Engine& engine, const MeasuredRange& measured, const
 /// A calibrated engine's range with another projectile or counterweight, and its band from the
 /// calibration's.
 struct Prediction {
-  std::string changed;   ///< "m = 60 kg"
+  std::string changed;  ///< "m = 60 kg"
   Engine engine;
   double R = 0, R_low = 0, R_high = 0;  ///< at the fitted value and at the ends of its band [m]
   Verification shot;

@@ -5,8 +5,8 @@
 namespace trebuchet {
 
 struct Capacity {
-  double R = 0;             ///< range from the pivot to the impact at the target level [m]
-  double T = 0;             ///< kinetic energy at the target level, eq:T [J]
+  double R = 0;  ///< range from the pivot to the impact at the target level [m]
+  double T = 0;  ///< kinetic energy at the target level, eq:T [J]
   double target_level = 0;  ///< target height relative to the engine's base [m], e.g. -54
 };
 

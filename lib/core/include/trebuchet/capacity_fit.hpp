@@ -14,10 +14,10 @@
 namespace trebuchet {
 
 struct CapacityFit {
-  ScaledDesign design;        ///< the shape with its fitted mu
-  Engine engine;              ///< the design at the size that delivers the capacity, in SI
+  ScaledDesign design;  ///< the shape with its fitted mu
+  Engine engine;  ///< the design at the size that delivers the capacity, in SI
   Verification verification;  ///< of `engine`, level 0, at the shot settings of the fit
-  int simulations = 0;        ///< shots it took
+  int simulations = 0;  ///< shots it took
 };
 
 /// Fits mu and the size of `shape` so that its shot lands at R [m] with T [J] at level 0
@@ -27,8 +27,8 @@ struct CapacityFit {
 /// Error(out_of_range) when no mu within a factor 20 of the guess m = 2T/(g R) reaches T, and
 /// Error(numerical) when T jumps with mu at the root (the release moves between maxima). The
 /// engine it returns passes check_engine, has eps <= 1 and its shot conserved energy.
-CapacityFit fit_capacity(const ScaledDesign& shape, const Capacity& capacity, const Material& material,
-                         const ShotSettings& settings, double rtol = 1e-6);
+CapacityFit fit_capacity(const ScaledDesign& shape, const Capacity& capacity, const Material& material, const ShotSettings& settings,
+                         double rtol = 1e-6);
 
 /// As fit_capacity, for a range R [m] and a projectile mass m [kg] (a capacity as historians
 /// state it): mu and the size are fitted so that the shot lands at R with m = mu M, each to

@@ -18,16 +18,16 @@ namespace trebuchet {
 /// What a source gives, in SI units; any subset.
 struct Attested {
   std::optional<double> Lb, L1, L2, H, L4;  ///< beam length, beam sections, pivot height, sling [m]
-  std::optional<double> M, m, mb;           ///< counterweight, projectile, beam [kg]
-  std::optional<double> D;                  ///< beam diameter [m]
-  std::optional<double> l;                  ///< beam ratio L1/L2, scaled
-  std::optional<double> theta_i_deg;        ///< [deg]
-  std::optional<double> F;                  ///< arm fraction (L2 + L3)/H, scaled
+  std::optional<double> M, m, mb;  ///< counterweight, projectile, beam [kg]
+  std::optional<double> D;  ///< beam diameter [m]
+  std::optional<double> l;  ///< beam ratio L1/L2, scaled
+  std::optional<double> theta_i_deg;  ///< [deg]
+  std::optional<double> F;  ///< arm fraction (L2 + L3)/H, scaled
 };
 
 struct CompletionRequest {
   Attested attested;
-  Material material{};      ///< beta2 and the wood: the beam's D and mb when they are not attested
+  Material material{};  ///< beta2 and the wood: the beam's D and mb when they are not attested
   ShotSettings settings{};  ///< the release criterion (Q, or the range), air, target level, integrator
   /// The engine's parts as built that do not depend on the values searched: the pins' friction,
   /// the counterweight's own inertia, the rope. A beam as built is refused: complete builds a
@@ -36,11 +36,11 @@ struct CompletionRequest {
 };
 
 struct Completion {
-  Engine engine;                     ///< with every attested value as given
-  Verification verification;         ///< its shot under the request's settings
-  std::vector<std::string> attested; ///< the quantities given, e.g. "Lb", "M", "m"
+  Engine engine;  ///< with every attested value as given
+  Verification verification;  ///< its shot under the request's settings
+  std::vector<std::string> attested;  ///< the quantities given, e.g. "Lb", "M", "m"
   std::vector<std::string> implied;  ///< those that follow from them, e.g. "L2" from Lb and L1
-  std::vector<std::string> chosen;   ///< those the search chose
+  std::vector<std::string> chosen;  ///< those the search chose
   int simulations = 0;
   /// The calculator's optimum for the engine's own capacity in vacuum at the base's level, to
   /// show how far the chosen values sit from an optimal engine; or why there is none.

@@ -28,15 +28,15 @@ struct BuiltParts {
   struct Section {
     double mass = 0, cm = 0, inertia = 0;
   };
-  std::optional<Beam> beam;             ///< none: the uniform rod of section 2
+  std::optional<Beam> beam;  ///< none: the uniform rod of section 2
   /// The short section, pivot to hinge, of a beam given as built (cm < 0), for the bending moment
   /// at the pivot; none where the beam is given only as a whole.
   std::optional<Section> short_section;
-  double counterweight_inertia = 0;     ///< about the counterweight's own centre of mass
-  double axle_friction = 0;             ///< the axle's friction circle over L2, r mu/sqrt(1 + mu^2)/L2 (Coulomb)
-  double hinge_friction = 0;            ///< the same for the counterweight's hinge pin
-  double trough_friction = 0;           ///< mu of the projectile sliding on the trough
-  std::optional<Drag> drag;             ///< the air on the projectile in phases I and II
+  double counterweight_inertia = 0;  ///< about the counterweight's own centre of mass
+  double axle_friction = 0;  ///< the axle's friction circle over L2, r mu/sqrt(1 + mu^2)/L2 (Coulomb)
+  double hinge_friction = 0;  ///< the same for the counterweight's hinge pin
+  double trough_friction = 0;  ///< mu of the projectile sliding on the trough
+  std::optional<Drag> drag;  ///< the air on the projectile in phases I and II
   /// rho_air Cd d L2^2/(2 M) of the sling's rope of diameter d: its drag per scaled length is
   /// this times the square of the air's speed across it. Acts only with `drag`.
   double rope_drag = 0;
@@ -47,12 +47,12 @@ struct BuiltParts {
 
 /// Historical engines start at rest with psi_i = phi_i = 0 (section 2).
 struct ScaledDesign {
-  double l = 0;     ///< L1/L2, scaled
-  double l4 = 0;    ///< L4/L1, scaled
+  double l = 0;  ///< L1/L2, scaled
+  double l4 = 0;  ///< L4/L1, scaled
   double mu_b = 0;  ///< mb/M, scaled
-  double mu = 0;    ///< m/M, scaled; a capacity fit sets it (section 4)
+  double mu = 0;  ///< m/M, scaled; a capacity fit sets it (section 4)
   double theta_i_deg = standard_theta_i_deg;  ///< initial beam angle from the downward vertical [deg]
-  double F = standard_F;                      ///< (L2 + L3)/H, H = L1 cos theta_i (section 2), scaled
+  double F = standard_F;  ///< (L2 + L3)/H, H = L1 cos theta_i (section 2), scaled
   /// Initial counterweight angle psi_i [deg], one of the initial conditions: 0 hangs straight down, as
   /// historical engines were never propped (section 2). Measured from the downward vertical in
   /// the sense theta grows during a shot; a prop that holds the counterweight toward the pivot

@@ -14,10 +14,10 @@ inline constexpr double max_fitted_reynolds = 1e6;
 /// Drag in the units of a flight: SI, or scaled by L2 and sqrt(L2/g) (section 3). The drag
 /// acceleration is -Cd per_length |u| u, u the velocity through the air.
 struct Drag {
-  double per_length = 0;            ///< rho_air A / (2 m), A the sphere's cross-section
+  double per_length = 0;  ///< rho_air A / (2 m), A the sphere's cross-section
   std::optional<double> drag_coefficient;  ///< constant Cd; nullopt: Cd(reynolds_per_speed |u|)
-  double reynolds_per_speed = 0;    ///< rho_air d / viscosity
-  double wind = 0;                  ///< toward the target
+  double reynolds_per_speed = 0;  ///< rho_air d / viscosity
+  double wind = 0;  ///< toward the target
   /// Cd at the speed |u| through the air.
   double coefficient_at(double speed) const { return drag_coefficient ? *drag_coefficient : drag_coefficient_of(reynolds_per_speed * speed); }
 };

@@ -62,11 +62,11 @@ class Dynamics final : public Machine {
  private:
   ScaledDesign design_;
   double theta_i_, cos_theta_i_;  // [rad], scaled
-  double L_, inertia_;            // eq:Design, section 2; scaled
-  double inv_l_, inv_l4_, inv_L_; // their reciprocals, so that evaluations multiply
-  double beam_cm_;                 // ScaledDesign::beam_cm
-  double psi_ratio_, inv_L_psi_;   // L/L_psi and 1/L_psi, L_psi = L + I_c/L (dynamics.cpp)
-  bool dissipates_;                // BuiltParts::dissipates
+  double L_, inertia_;  // eq:Design, section 2; scaled
+  double inv_l_, inv_l4_, inv_L_;  // their reciprocals, so that evaluations multiply
+  double beam_cm_;  // ScaledDesign::beam_cm
+  double psi_ratio_, inv_L_psi_;  // L/L_psi and 1/L_psi, L_psi = L + I_c/L (dynamics.cpp)
+  bool dissipates_;  // BuiltParts::dissipates
   detail::Coefficients coefficients() const;
 };
 

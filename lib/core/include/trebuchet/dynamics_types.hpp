@@ -13,7 +13,7 @@ enum class Phase { trough, lifted, released };
 
 /// A state of the engine, scaled. In phase I, phi and phi_dot follow from eq:EOM_I_3.
 struct State {
-  double theta = 0, psi = 0, phi = 0;              ///< [rad]
+  double theta = 0, psi = 0, phi = 0;  ///< [rad]
   double theta_dot = 0, psi_dot = 0, phi_dot = 0;  ///< scaled angular speeds
 };
 
@@ -36,24 +36,24 @@ using Losses = std::array<double, loss_count>;
 /// Angular accelerations and the internal forces at one state, scaled (forces in Mg).
 struct Snapshot {
   double theta_ddot = 0, psi_ddot = 0, phi_ddot = 0;
-  Vec2 hinge, counterweight, tip;        ///< relative to the pivot, scaled
+  Vec2 hinge, counterweight, tip;  ///< relative to the pivot, scaled
   Vec2 projectile, projectile_velocity;  ///< relative to the pivot, scaled
-  Vec2 pivot_reaction;   ///< F_R: force of the frame on the beam at the pivot
-  Vec2 hinge_force;      ///< F_H: force of the arm on the counterweight
-  Vec2 sling_on_tip;     ///< force of the sling on the beam tip
+  Vec2 pivot_reaction;  ///< F_R: force of the frame on the beam at the pivot
+  Vec2 hinge_force;  ///< F_H: force of the arm on the counterweight
+  Vec2 sling_on_tip;  ///< force of the sling on the beam tip
   double sling_perpendicular = 0;  ///< F_S_perp: component of the sling's pull on the tip against the beam's turn
-  double normal_force = 0;         ///< trough on projectile (phase I; 0 after)
-  double sling_tension = 0;        ///< pull of the sling on the projectile along it (< 0: it would push, the sling is slack)
-  double counterweight_height = 0; ///< of the counterweight above the engine's base (< 0: below it)
-  double tip_height = 0;           ///< of the beam's tip above the engine's base (< 0: below it)
+  double normal_force = 0;  ///< trough on projectile (phase I; 0 after)
+  double sling_tension = 0;  ///< pull of the sling on the projectile along it (< 0: it would push, the sling is slack)
+  double counterweight_height = 0;  ///< of the counterweight above the engine's base (< 0: below it)
+  double tip_height = 0;  ///< of the beam's tip above the engine's base (< 0: below it)
   /// Bending moment in the beam at the pivot, in M g L2: what the short section passes to the
   /// long one, > 0 turning the long arm up. Held at rest with the beam level it is the M g L2 of
   /// eq:Strain plus the short section's own weight, mu_b/(2(l + 1)); in the shot the beam's
   /// rigid turn adds its inertia.
   double beam_moment = 0;
-  BodyEnergies energies;           ///< phase III: the projectile's are 0
-  double energy = 0;               ///< kinetic + potential of all bodies, scaled; conserved without losses
-  Losses loss_power{};             ///< the power each loss takes out of the bodies (< 0: the wind gives)
+  BodyEnergies energies;  ///< phase III: the projectile's are 0
+  double energy = 0;  ///< kinetic + potential of all bodies, scaled; conserved without losses
+  Losses loss_power{};  ///< the power each loss takes out of the bodies (< 0: the wind gives)
 };
 
 }  // namespace trebuchet

@@ -15,7 +15,7 @@ namespace trebuchet {
 /// journal in its bearing; mu r F to first order).
 struct Pin {
   double friction = 0;  ///< coefficient of sliding friction mu, scaled
-  double radius = 0;    ///< r [m]
+  double radius = 0;  ///< r [m]
 };
 
 /// What a real engine adds to the paper's ideal one (docs/verifier.md, "Real engines"); each
@@ -32,11 +32,11 @@ struct EngineParts {
   /// end to D_tip at the long one [m]; it gives mb, the centre of mass, the inertia, and D at the pivot.
   std::optional<double> D_hinge, D_tip;
   double counterweight_inertia = 0;  ///< about the counterweight's own centre of mass [kg m^2]
-  Pin axle;                          ///< the axle at the pivot
-  Pin hinge;                         ///< the counterweight's hinge pin
-  double trough_friction = 0;        ///< mu of the projectile on the trough, scaled
-  double rope_diameter = 0;          ///< of the sling's rope, for its drag in air [m]; 0: none
-  double rope_cd = 1.2;              ///< Cd of the rope across the flow (a long cylinder), scaled
+  Pin axle;  ///< the axle at the pivot
+  Pin hinge;  ///< the counterweight's hinge pin
+  double trough_friction = 0;  ///< mu of the projectile on the trough, scaled
+  double rope_diameter = 0;  ///< of the sling's rope, for its drag in air [m]; 0: none
+  double rope_cd = 1.2;  ///< Cd of the rope across the flow (a long cylinder), scaled
 
   /// Whether any part is given: the engine is not the paper's ideal one.
   bool any() const;
@@ -45,18 +45,18 @@ struct EngineParts {
 /// A swinging counterweight trebuchet at rest before a shot (psi_i = phi_i = 0, section 2).
 /// theta_i is measured between the long beam section and the downward vertical.
 struct Engine {
-  double L1 = 0;           ///< long beam section, pivot to spigot [m]
-  double L2 = 0;           ///< short beam section, pivot to hinge [m]
-  double L3 = 0;           ///< counterweight arm, hinge to counterweight [m]
-  double L4 = 0;           ///< sling, spigot to projectile [m]
-  double D = 0;            ///< beam diameter [m]; not in the equations of motion
-  double M = 0;            ///< counterweight mass [kg]
-  double m = 0;            ///< projectile mass [kg]
-  double mb = 0;           ///< beam mass [kg]
+  double L1 = 0;  ///< long beam section, pivot to spigot [m]
+  double L2 = 0;  ///< short beam section, pivot to hinge [m]
+  double L3 = 0;  ///< counterweight arm, hinge to counterweight [m]
+  double L4 = 0;  ///< sling, spigot to projectile [m]
+  double D = 0;  ///< beam diameter [m]; not in the equations of motion
+  double M = 0;  ///< counterweight mass [kg]
+  double m = 0;  ///< projectile mass [kg]
+  double mb = 0;  ///< beam mass [kg]
   double theta_i_deg = standard_theta_i_deg;  ///< initial beam angle theta_i [deg]
-  double psi_i_deg = 0;    ///< initial counterweight angle [deg]: 0 unpropped (design.hpp gives the sign)
-  Material material{};     ///< beta2, wood and g: what sized it, and the g it is shot under
-  EngineParts parts{};     ///< as built; empty: the paper's ideal engine
+  double psi_i_deg = 0;  ///< initial counterweight angle [deg]: 0 unpropped (design.hpp gives the sign)
+  Material material{};  ///< beta2, wood and g: what sized it, and the g it is shot under
+  EngineParts parts{};  ///< as built; empty: the paper's ideal engine
 };
 
 /// The scaled design of eq:Design, with F from the counterweight arm, and the engine's parts
@@ -88,9 +88,9 @@ Engine engine_of(const ScaledDesign& design, double L2, const Material& material
 /// parameter by its key, "{{L4}}" (error.hpp).
 void check_engine(const Engine& engine);
 
-double beam_length(const Engine& engine);    ///< Lb = L1 + L2 [m]
-double pivot_height(const Engine& engine);   ///< H = L1 cos(theta_i) [m]
-double arm_fraction(const Engine& engine);   ///< F = (L2 + L3)/H, section 2, scaled
+double beam_length(const Engine& engine);  ///< Lb = L1 + L2 [m]
+double pivot_height(const Engine& engine);  ///< H = L1 cos(theta_i) [m]
+double arm_fraction(const Engine& engine);  ///< F = (L2 + L3)/H, section 2, scaled
 
 /// L3 from L2 + L3 = F H, H = L1 cos(theta_i) (section 2) [m].
 double counterweight_arm(double L1, double L2, double theta_i_deg, double F);

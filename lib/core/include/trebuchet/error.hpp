@@ -11,14 +11,14 @@
 namespace trebuchet {
 
 enum class ErrorKind {
-  usage,         ///< unknown option, malformed command line or input file
-  given_count,   ///< not exactly two givens, or a pair the calculator cannot take
-  bad_number,    ///< not a number, not finite, or not positive
+  usage,  ///< unknown option, malformed command line or input file
+  given_count,  ///< not exactly two givens, or a pair the calculator cannot take
+  bad_number,  ///< not a number, not finite, or not positive
   unknown_unit,  ///< unit suffix unknown, or of the wrong dimension
   out_of_range,  ///< no segment of tab:CPNC covers the request, or no engine delivers the capacity
-  data_file,     ///< constants table or sweep part missing, malformed or inconsistent
-  batch_rows,    ///< a batch finished, but some of its rows failed
-  numerical,     ///< the numerical method failed or lost accuracy (named in the message)
+  data_file,  ///< constants table or sweep part missing, malformed or inconsistent
+  batch_rows,  ///< a batch finished, but some of its rows failed
+  numerical,  ///< the numerical method failed or lost accuracy (named in the message)
 };
 
 /// `text` with each {{name}} in it written as word(name) (what Error::message does); for the

@@ -7,10 +7,10 @@ namespace trebuchet {
 
 /// The paper's defaults are those of eq:kMkD.
 struct Material {
-  double beta2 = 1.0 / 300;      ///< allowed bending of the short beam section u2/L2, eq:bend_L2, scaled
+  double beta2 = 1.0 / 300;  ///< allowed bending of the short beam section u2/L2, eq:bend_L2, scaled
   double youngs_modulus = 12e9;  ///< Young's modulus of the beam's wood [Pa]
-  double wood_density = 700;     ///< density of the beam's wood [kg/m^3]
-  double g = 9.81;               ///< gravitational acceleration [m/s^2]
+  double wood_density = 700;  ///< density of the beam's wood [kg/m^3]
+  double g = 9.81;  ///< gravitational acceleration [m/s^2]
   /// The stress beyond which the wood breaks [Pa]; section 4: "often near 1 % of M_e".
   double modulus_of_rupture = 120e6;
 };
@@ -30,8 +30,8 @@ double k_D(const Material& material);
 /// M = K^2 (k_M/beta2) L2^4, D = sqrt(K k_D/beta2) L2^(3/2), and the energy unit M g L2 of
 /// section 3, so that T = M g L2 tau_e.
 struct ExtraScalings {
-  double M;            ///< counterweight mass [kg]
-  double D;            ///< beam diameter [m]
+  double M;  ///< counterweight mass [kg]
+  double D;  ///< beam diameter [m]
   double energy_unit;  ///< M g L2 [J]
 };
 
@@ -53,13 +53,14 @@ double beam_diameter(double mb, double Lb, const Material& material);
 /// How hard the counterweight bends a round beam of diameter D (section 4), and how close the
 /// wood comes to breaking.
 struct BeamStrength {
-  double D = 0;               ///< beam diameter [m]
-  double beta2 = 0;           ///< u2/L2 of eq:bend_L2 that the counterweight gives it, scaled
-  double strain_at_rest = 0;  ///< eq:Strain at the pivot, the beam level under the counterweight (being cocked; the beam's own weight left out, as there), scaled
+  double D = 0;  ///< beam diameter [m]
+  double beta2 = 0;  ///< u2/L2 of eq:bend_L2 that the counterweight gives it, scaled
+  double strain_at_rest =
+      0;  ///< eq:Strain at the pivot, the beam level under the counterweight (being cocked; the beam's own weight left out, as there), scaled
   double stress_at_rest = 0;  ///< M_e times it [Pa]
-  double strain_peak = 0;     ///< from the largest bending moment at the pivot during the shot, scaled
-  double stress_peak = 0;     ///< [Pa]
-  double margin = 0;          ///< the modulus of rupture over the larger stress, scaled
+  double strain_peak = 0;  ///< from the largest bending moment at the pivot during the shot, scaled
+  double stress_peak = 0;  ///< [Pa]
+  double margin = 0;  ///< the modulus of rupture over the larger stress, scaled
 };
 /// The strength of a beam of diameter `D` [m] at short arm `L2` [m] under a counterweight `M`
 /// [kg], whose largest bending moment at the pivot in the shot is `peak_moment` [N m]: the

@@ -15,13 +15,13 @@ namespace trebuchet {
 inline constexpr double max_beam_ratio = 60;
 
 struct OptimizeRequest {
-  Capacity capacity;                           ///< R [m] and T [J] at level 0
+  Capacity capacity;  ///< R [m] and T [J] at level 0
   /// m [kg]: optimise for the range R and this projectile mass, T free (capacity.T is not used).
   std::optional<double> projectile_mass;
-  double theta_i_deg = standard_theta_i_deg;   ///< [deg]
-  double F = standard_F;                       ///< (L2 + L3)/H, scaled
+  double theta_i_deg = standard_theta_i_deg;  ///< [deg]
+  double F = standard_F;  ///< (L2 + L3)/H, scaled
   Material material{};
-  ShotSettings settings{};        ///< release criterion (Q, Q_n or Q_eps) and integrator
+  ShotSettings settings{};  ///< release criterion (Q, Q_n or Q_eps) and integrator
   double shape_tolerance = 1e-4;  ///< simplex size in log shape at which a search stops, scaled
   std::vector<ScaledDesign> starts;  ///< when given, searches start at these shapes instead of the calculator's designs
   /// Appendix B: hold the beam ratio l = L1/L2 at this value and search (l4, mu_b) alone, on
@@ -30,12 +30,12 @@ struct OptimizeRequest {
 };
 
 struct Optimum {
-  std::string start;            ///< where the search began ("calculator, lower branch", ...)
-  ScaledDesign start_design;    ///< the shape it began from
-  CapacityFit fit;              ///< the best engine (its design, SI engine and shot) and the shots of its last fit
-  double objective = 0;         ///< the maximised quality
-  int simulations = 0;          ///< shots over the whole search
-  int iterations = 0;           ///< simplex iterations
+  std::string start;  ///< where the search began ("calculator, lower branch", ...)
+  ScaledDesign start_design;  ///< the shape it began from
+  CapacityFit fit;  ///< the best engine (its design, SI engine and shot) and the shots of its last fit
+  double objective = 0;  ///< the maximised quality
+  int simulations = 0;  ///< shots over the whole search
+  int iterations = 0;  ///< simplex iterations
   /// With a fixed l: where the best shape found is no interior maximum of its side, why (it
   /// lies at l4 = 1, the side's edge, or at the least mu_b searched); empty otherwise.
   std::string note;

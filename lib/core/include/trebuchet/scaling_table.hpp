@@ -17,8 +17,7 @@ namespace trebuchet {
 /// The seven fitted parameters, in the column order of tab:CPNC.
 enum class Param { L1, L2, L4, D, M, m, mb };
 inline constexpr int param_count = 7;
-inline constexpr std::array<Param, param_count> all_params = {Param::L1, Param::L2, Param::L4, Param::D,
-                                                              Param::M,  Param::m,  Param::mb};
+inline constexpr std::array<Param, param_count> all_params = {Param::L1, Param::L2, Param::L4, Param::D, Param::M, Param::m, Param::mb};
 std::string_view param_name(Param param);
 inline int index(Param param) { return static_cast<int>(param); }
 
@@ -36,31 +35,31 @@ struct Segment {
   double X_min;
   double X_max;
   Branch branch;
-  ParamVector a;                                   ///< a_Z, scaled
+  ParamVector a;  ///< a_Z, scaled
   Eigen::Matrix<double, param_count, 2> exponents;  ///< rows (p_Z, q_Z), scaled
 };
 
 /// One (theta_i, F) block of tab:CPNC.
 struct TableBlock {
-  double theta_i_deg;                       ///< initial beam angle [deg]
-  double F;                                 ///< (L2 + L3)/H, scaled
-  ParamVector Z0;                           ///< optimum at (R0, T0) [m or kg]
-  std::optional<double> branch_switch_X;    ///< X_d where lower and upper branch are equally good
-  std::vector<Segment> segments;            ///< sorted by X_min
+  double theta_i_deg;  ///< initial beam angle [deg]
+  double F;  ///< (L2 + L3)/H, scaled
+  ParamVector Z0;  ///< optimum at (R0, T0) [m or kg]
+  std::optional<double> branch_switch_X;  ///< X_d where lower and upper branch are equally good
+  std::vector<Segment> segments;  ///< sorted by X_min
 
   double X_covered_min() const;
   double X_covered_max() const;
 };
 
 struct ScalingTable {
-  std::string origin;                       ///< file name, or "built-in" for data/cpnc.json; not written
-  std::string name;                         ///< e.g. "tab:CPNC"
+  std::string origin;  ///< file name, or "built-in" for data/cpnc.json; not written
+  std::string name;  ///< e.g. "tab:CPNC"
   /// Where the constants come from, in words: (key, text) pairs in order ("source", "law", ...).
   std::vector<std::pair<std::string, std::string>> provenance;
-  double R0;                                ///< reference range [m]
-  double T0;                                ///< reference energy [J]
-  Material reference;                       ///< material, beta2 and g of the fits
-  ParamVector n;                            ///< exponents n_Z of eq:f_ZX
+  double R0;  ///< reference range [m]
+  double T0;  ///< reference energy [J]
+  Material reference;  ///< material, beta2 and g of the fits
+  ParamVector n;  ///< exponents n_Z of eq:f_ZX
   std::vector<TableBlock> blocks;
 
   /// The block for (theta_i, F), or nullptr.

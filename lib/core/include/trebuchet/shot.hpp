@@ -17,26 +17,26 @@ namespace trebuchet {
 
 /// The projectile's state and the engine's figures at one moment of phase II, scaled.
 struct ReleasePoint {
-  double t = 0;                 ///< scaled time
+  double t = 0;  ///< scaled time
   State state;
-  Vec2 position, velocity;      ///< projectile, relative to the pivot
-  double height = 0;            ///< above the engine's base (l cos th_i + y), in L2
-  double range = 0;             ///< rho: pivot to impact at level 0, in L2; <= 0: not forward
+  Vec2 position, velocity;  ///< projectile, relative to the pivot
+  double height = 0;  ///< above the engine's base (l cos th_i + y), in L2
+  double range = 0;  ///< rho: pivot to impact at level 0, in L2; <= 0: not forward
   double energy_at_target = 0;  ///< tau_e = T/(M g L2), eq:Aux, level 0
-  double efficiency = 0;        ///< eps = T/Delta U, eq:Aux
+  double efficiency = 0;  ///< eps = T/Delta U, eq:Aux
   /// Running extremes of the forces of eq:F over [0, t], in Mg, peaks between step ends
   /// included (found on the continuous solution).
   ForceExtremes extremes;
-  double force_factor = 0;      ///< F of eq:F
-  double quality = 0;           ///< Q of eq:Q or eq:Q_n, at level 0
-  double objective = 0;         ///< what the release maximises: Q, eps or the range
+  double force_factor = 0;  ///< F of eq:F
+  double quality = 0;  ///< Q of eq:Q or eq:Q_n, at level 0
+  double objective = 0;  ///< what the release maximises: Q, eps or the range
 };
 
 /// The figures of a release at scaled time t from state s (with its snapshot), given the running
 /// extremes of eq:F before t; the objective follows the criterion. Q (or Q_n), the range and the
 /// objective stay 0 where the projectile would not fly forward from above the base.
-ReleasePoint release_point(const ScaledDesign& design, const ReleaseCriterion& criterion, double t, const State& s,
-                           const Snapshot& snapshot, ForceExtremes extremes_before);
+ReleasePoint release_point(const ScaledDesign& design, const ReleaseCriterion& criterion, double t, const State& s, const Snapshot& snapshot,
+                           ForceExtremes extremes_before);
 
 /// What a builder sizes the parts for, scaled: the sling's tension (ropes), the force at the
 /// counterweight's hinge (its pin), the pivot force (the axle and the frame), all in M g, and
@@ -52,10 +52,10 @@ struct LoadPeak {
 };
 
 struct ShotResult {
-  double t_liftoff = 0;         ///< scaled
+  double t_liftoff = 0;  ///< scaled
   ReleasePoint release;
-  double energy_drift = 0;      ///< max |E(t) + W(t) - E(0)| / Delta U over phases I and II, W the work of the losses
-  long steps = 0;               ///< accepted steps, both phases
+  double energy_drift = 0;  ///< max |E(t) + W(t) - E(0)| / Delta U over phases I and II, W the work of the losses
+  long steps = 0;  ///< accepted steps, both phases
   std::array<LoadPeak, load_count> loads;  ///< by LoadIndex; all 0 unless asked for (simulate_shot)
   /// The work each loss took from the bodies up to the release, scaled (M g L2); all 0 for the
   /// ideal engine. With them, the energy of the bodies at the release and Delta U balance.
@@ -64,9 +64,9 @@ struct ShotResult {
   /// the objective); none when it sits at a smooth maximum.
   std::optional<ForceIndex> release_at_growth_of;
   // Where the model stops holding before the release, the scaled time it starts; none when it holds.
-  std::optional<double> slack_sling;               ///< the sling would push the projectile (tension < 0)
+  std::optional<double> slack_sling;  ///< the sling would push the projectile (tension < 0)
   std::optional<double> counterweight_below_base;  ///< the counterweight passes below the engine's base
-  std::optional<double> tip_below_base;            ///< the beam's tip passes below the engine's base
+  std::optional<double> tip_below_base;  ///< the beam's tip passes below the engine's base
 };
 
 /// One moment of the motion for a time series (--series), scaled.

@@ -18,10 +18,10 @@ namespace trebuchet {
 
 struct SweepSpec {
   double theta_i_deg = standard_theta_i_deg;  ///< [deg]
-  double F = standard_F;                      ///< (L2 + L3)/H, scaled
+  double F = standard_F;  ///< (L2 + L3)/H, scaled
   double X_from = -0.55, X_to = 0.55, X_step = 0.05;  ///< X of eq:Xi, scaled
   double R0 = 240, T0 = 26e3;  ///< reference capacity of tab:CPNC [m], [J]
-  Material material{};         ///< beta2, wood and g of the engines (section 4)
+  Material material{};  ///< beta2, wood and g of the engines (section 4)
   ReleaseCriterion criterion{};  ///< what each optimum maximises: eq:Q, eq:Q_n or Q_eps
 };
 
@@ -40,13 +40,13 @@ struct Shard {
 
 /// The optimum at one X point (capacity_at(X, 0)), or the reason there is none.
 struct SweepPoint {
-  double X = 0;                 ///< scaled
-  Capacity capacity;            ///< [m], [J], level 0
-  std::string error;            ///< empty when the point has an optimum
-  Engine engine;                ///< the optimum, fitted to the capacity
-  Verification shot;            ///< its shot at the best release (Q, eps, force_factor, theta_release_deg travel in parts)
-  int simulations = 0;          ///< shots of the whole search
-  int optima_found = 0;         ///< distinct optima from the starts (two where branches compete)
+  double X = 0;  ///< scaled
+  Capacity capacity;  ///< [m], [J], level 0
+  std::string error;  ///< empty when the point has an optimum
+  Engine engine;  ///< the optimum, fitted to the capacity
+  Verification shot;  ///< its shot at the best release (Q, eps, force_factor, theta_release_deg travel in parts)
+  int simulations = 0;  ///< shots of the whole search
+  int optima_found = 0;  ///< distinct optima from the starts (two where branches compete)
 };
 
 /// Optimises every point of the shard, thread_count(threads, points) at a time (parallel.hpp),

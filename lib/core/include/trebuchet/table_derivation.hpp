@@ -12,8 +12,8 @@ namespace trebuchet {
 
 /// a and b of f(X) = a exp(b sqrt(26) X) (eq:f_MX), fitted by least squares in log f.
 struct ExponentialFit {
-  double a = 0;              ///< scaled
-  double b = 0;              ///< scaled
+  double a = 0;  ///< scaled
+  double b = 0;  ///< scaled
   double max_deviation = 0;  ///< largest |fit/f - 1| over the points, scaled
 };
 
@@ -22,8 +22,8 @@ ExponentialFit fit_exponential(const std::vector<double>& X, const std::vector<d
 
 /// How well a derived segment fits its sweep points.
 struct SegmentFitQuality {
-  int points = 0;                  ///< sweep points in the segment
-  ParamVector fit_max_deviation;   ///< largest |fit/f_Z - 1| per parameter, scaled
+  int points = 0;  ///< sweep points in the segment
+  ParamVector fit_max_deviation;  ///< largest |fit/f_Z - 1| per parameter, scaled
 };
 
 /// A constants table with what it was derived from: per block of `table`, the quality of each
@@ -31,7 +31,7 @@ struct SegmentFitQuality {
 struct DerivedTable {
   ScalingTable table;
   std::vector<std::vector<SegmentFitQuality>> fits;  ///< [block][segment]
-  std::vector<std::vector<SweepPoint>> sweeps;       ///< [block][point]
+  std::vector<std::vector<SweepPoint>> sweeps;  ///< [block][point]
 };
 
 /// Joins sweep parts into a constants table. Blocks are sorted by (theta_i, F) and points by

@@ -36,7 +36,7 @@ struct SampleOutcome {
 struct SampleFailures {
   std::string reason;  ///< the message to its first ';', its numbers written # so that alike failures count together
   int count = 0;
-  std::string first;   ///< the whole message of the first sample that failed so, numbers and all
+  std::string first;  ///< the whole message of the first sample that failed so, numbers and all
   ErrorKind kind = ErrorKind::numerical;  ///< that sample's
 };
 
@@ -44,16 +44,16 @@ inline constexpr std::array<const char*, 4> sample_names = {"R", "T", "eps", "v"
 
 struct MonteCarloSummary {
   int samples = 0;
-  std::vector<std::array<double, 4>> values;            ///< of the samples that worked, in sample order
-  std::array<std::array<double, 3>, 4> percentiles{};   ///< 5, 50 and 95 % of R, T, eps, v
-  std::vector<SampleFailures> failures;                 ///< by reason, the most frequent first
+  std::vector<std::array<double, 4>> values;  ///< of the samples that worked, in sample order
+  std::array<std::array<double, 3>, 4> percentiles{};  ///< 5, 50 and 95 % of R, T, eps, v
+  std::vector<SampleFailures> failures;  ///< by reason, the most frequent first
 };
 
 /// Runs `sample` for samples 0 .. n - 1 on `threads` threads. Sample i draws from its own
 /// generator, seeded from (seed, i), so the result is the same on any number of threads.
 /// `progress` hears of every sample done.
-MonteCarloSummary run_monte_carlo(int samples, std::uint64_t seed, int threads,
-                                  const std::function<SampleOutcome(std::mt19937_64& random)>& sample, const Progress& progress = {});
+MonteCarloSummary run_monte_carlo(int samples, std::uint64_t seed, int threads, const std::function<SampleOutcome(std::mt19937_64& random)>& sample,
+                                  const Progress& progress = {});
 
 /// Sample i of a run under `seed` alone, as run_monte_carlo runs it: a run split into parts (the
 /// browser page's Web Workers) gives the same samples as the whole.

@@ -15,10 +15,10 @@
 namespace trebuchet {
 
 struct ShotSettings {
-  double target_level = 0;     ///< target height relative to the engine's base [m], e.g. -54
+  double target_level = 0;  ///< target height relative to the engine's base [m], e.g. -54
   ReleaseCriterion criterion{};
   IntegratorSettings integrator{};
-  std::optional<Air> air;      ///< none: vacuum (the paper's, and the default)
+  std::optional<Air> air;  ///< none: vacuum (the paper's, and the default)
   /// Denny's range (section 6.3): from the release point to where the flight dips below the
   /// release height, instead of from the pivot to the target level.
   bool range_from_release = false;
@@ -42,30 +42,30 @@ void check_shot_settings(const ShotSettings& settings);
 
 /// What trebuchet-verify reports, in SI units (angles in degrees).
 struct Verification {
-  Capacity capacity;       ///< range and energy (eq:T) at the end of the flight, under the settings' air and range definition
-  double R_vacuum = 0;     ///< the paper's range: in vacuum, from the pivot to the target level [m]
-  double T_vacuum = 0;     ///< the paper's energy at the target level, in vacuum (eq:T) [J]
-  double eps = 0;          ///< efficiency T/Delta U at level 0, eq:Aux
-  double Q = 0;            ///< quality at the release, eq:Q or eq:Q_n (with the n of the settings)
-  double force_factor = 0; ///< F of eq:F, scaled
-  double v = 0;            ///< release speed [m/s]
-  double h = 0;            ///< release height above the base [m]
-  double x = 0;            ///< release position from the pivot toward the target, as on the site (report.hpp): < 0 behind the pivot [m]
-  double A_deg = 0;        ///< initial climb [deg]
+  Capacity capacity;  ///< range and energy (eq:T) at the end of the flight, under the settings' air and range definition
+  double R_vacuum = 0;  ///< the paper's range: in vacuum, from the pivot to the target level [m]
+  double T_vacuum = 0;  ///< the paper's energy at the target level, in vacuum (eq:T) [J]
+  double eps = 0;  ///< efficiency T/Delta U at level 0, eq:Aux
+  double Q = 0;  ///< quality at the release, eq:Q or eq:Q_n (with the n of the settings)
+  double force_factor = 0;  ///< F of eq:F, scaled
+  double v = 0;  ///< release speed [m/s]
+  double h = 0;  ///< release height above the base [m]
+  double x = 0;  ///< release position from the pivot toward the target, as on the site (report.hpp): < 0 behind the pivot [m]
+  double A_deg = 0;  ///< initial climb [deg]
   double theta_release_deg = 0;  ///< beam angle at release from the downward vertical [deg]; 180 is upright (section 6.2: below it, lower branch)
-  double t_release = 0;    ///< [s]
-  double t_liftoff = 0;    ///< [s]
-  double FS_perp_mg = 0;   ///< largest perpendicular sling force on the beam / (m g), scaled
-  double FR_Mg = 0;        ///< largest |pivot reaction| / (M g), scaled
-  double dFRh_Mg = 0;      ///< largest minus smallest horizontal pivot reaction / (M g), scaled
+  double t_release = 0;  ///< [s]
+  double t_liftoff = 0;  ///< [s]
+  double FS_perp_mg = 0;  ///< largest perpendicular sling force on the beam / (m g), scaled
+  double FR_Mg = 0;  ///< largest |pivot reaction| / (M g), scaled
+  double dFRh_Mg = 0;  ///< largest minus smallest horizontal pivot reaction / (M g), scaled
   double FS_perp = 0, FR = 0, dFRh = 0;  ///< the same three forces [N]
-  double energy_drift = 0; ///< max |E(t) - E(0)| / Delta U over phases I and II, scaled
+  double energy_drift = 0;  ///< max |E(t) - E(0)| / Delta U over phases I and II, scaled
   /// The largest loads a builder sizes parts for (shot.hpp: LoadIndex), over phases I and II up
   /// to the release, with their times: the sling's tension, the force on the counterweight's
   /// hinge pin and on the axle at the pivot [N], the bending moment in the beam at the pivot [N m].
   struct Load {
     double value = 0;  ///< [N] or [N m]
-    double t = 0;      ///< [s]
+    double t = 0;  ///< [s]
   };
   std::array<Load, load_count> loads;
   /// The beam's bending and stress (material.hpp), with D as given or, failing that, from mb by
@@ -92,8 +92,8 @@ struct Verification {
 /// The SI figures of a shot of `engine` (of scaled design shot_design(engine, ...)), its flight in
 /// vacuum or through `air`, to the target level or (range_from_release) back to the release
 /// height. Throws Error(usage) when the target level lies above the apex of the flight.
-Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level,
-                             const std::optional<Air>& air = std::nullopt, bool range_from_release = false);
+Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level, const std::optional<Air>& air = std::nullopt,
+                             bool range_from_release = false);
 
 /// The release criterion of a shot of `engine` under `settings`: under Release::range it
 /// maximises the range as the settings define it, in their air and from where they measure.
@@ -106,17 +106,16 @@ inline constexpr double max_series_points = 1e6;
 /// does. With `trace`, the motion is appended to it (scaled, see simulate_shot): at the step
 /// ends, or every trace_dt_s seconds; a trace_dt_s that gives more than max_series_points is
 /// refused (Error(bad_number), {{series_dt}}) before the series is drawn.
-Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace = nullptr,
-                           double trace_dt_s = 0);
+Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace = nullptr, double trace_dt_s = 0);
 
 /// A predicted capacity (from the calculator, in vacuum as the paper's) against the shot's own
 /// in vacuum (R_vacuum, T_vacuum), whatever air the shot flew through.
 struct CapacityCheck {
-  Capacity predicted;           ///< [m], [J]
-  double deviation_R = 0;       ///< simulated/predicted - 1
+  Capacity predicted;  ///< [m], [J]
+  double deviation_R = 0;  ///< simulated/predicted - 1
   double deviation_T = 0;
-  double tolerance = 0;         ///< relative
-  bool pass = false;            ///< both deviations within the tolerance
+  double tolerance = 0;  ///< relative
+  bool pass = false;  ///< both deviations within the tolerance
 };
 
 CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance);

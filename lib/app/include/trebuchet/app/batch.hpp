@@ -17,7 +17,7 @@ namespace trebuchet {
 
 /// One data row's outcome: exactly one of design and error is non-null.
 struct BatchRow {
-  int line;                            ///< line number in the input, from 1
+  int line;  ///< line number in the input, from 1
   const std::vector<std::string>& passed;  ///< the pass-through cells, in the order of the header
   const OptimalEngine* design;
   const Error* error;

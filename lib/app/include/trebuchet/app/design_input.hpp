@@ -20,7 +20,7 @@ namespace trebuchet {
 struct EngineRecord {
   Engine engine;
   std::optional<Capacity> capacity;  ///< "R" and "T", both or neither (level 0)
-  bool mb_from_D = false;            ///< mb was not given: it follows from D and the wood (eq:BeamMass)
+  bool mb_from_D = false;  ///< mb was not given: it follows from D and the wood (eq:BeamMass)
   nlohmann::json passed = nlohmann::json::object();  ///< the keys no reader knows, as given: an answer names them
 };
 
@@ -60,10 +60,10 @@ EngineRecord read_engine(const nlohmann::json& object, const std::string& where)
 struct DesignRows {
   std::vector<std::string> passed_columns;  ///< columns that are no engine key, e.g. site, in order
   struct Row {
-    int line = 0;                      ///< line number in the input
-    nlohmann::json design;             ///< the engine keys as strings with units, for read_engine
-    std::vector<std::string> passed;   ///< the pass-through cells
-    std::string error;                 ///< a row that cannot be read, or an "error" cell written upstream
+    int line = 0;  ///< line number in the input
+    nlohmann::json design;  ///< the engine keys as strings with units, for read_engine
+    std::vector<std::string> passed;  ///< the pass-through cells
+    std::string error;  ///< a row that cannot be read, or an "error" cell written upstream
   };
   std::vector<Row> rows;
 };

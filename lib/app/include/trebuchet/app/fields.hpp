@@ -19,8 +19,8 @@ namespace trebuchet {
 struct DesignValues {
   std::optional<double> L1, L2, L3, F, L4, M, m, mb, D, theta_i_deg, psi_i_deg;
   std::optional<double> beta2, youngs_modulus, wood_density, g;  ///< the material; eq:kMkD's where empty
-  std::optional<double> R, T;                                     ///< a capacity to check: both or neither
-  std::optional<double> Lb, H, l;                                 ///< attested (complete) or given (the calculator)
+  std::optional<double> R, T;  ///< a capacity to check: both or neither
+  std::optional<double> Lb, H, l;  ///< attested (complete) or given (the calculator)
   /// The engine as built (EngineParts): the beam by its centre of mass and inertia (or radius of
   /// gyration), or tapered; the counterweight's inertia or box; the pins' friction; the rope.
   std::optional<double> beam_cm, beam_inertia, beam_gyration, D_hinge, D_tip, counterweight_inertia, box_width, box_height;
@@ -29,11 +29,11 @@ struct DesignValues {
 
 /// The operations that take an input, a bit each.
 enum Operation : unsigned {
-  op_given = 1,       ///< a given of trebuchet-calc and api::design (two of them)
+  op_given = 1,  ///< a given of trebuchet-calc and api::design (two of them)
   op_calculator = 2,  ///< a setting of the calculator (theta_i, F, the material)
-  op_shot = 4,        ///< an engine: shot, fit, calibrate, a Monte Carlo run of shots
-  op_complete = 8,    ///< an attested value of complete
-  op_optimize = 16,   ///< the capacity and the settings of optimize
+  op_shot = 4,  ///< an engine: shot, fit, calibrate, a Monte Carlo run of shots
+  op_complete = 8,  ///< an attested value of complete
+  op_optimize = 16,  ///< the capacity and the settings of optimize
 };
 
 /// What an input describes: the engine's values of eq:Parameters and its initial angles; a value
@@ -44,18 +44,18 @@ enum class FieldGroup { engine, alternative, material, capacity, part };
 
 struct InputField {
   std::optional<double> DesignValues::*member;
-  const char* key;                   ///< the JSON key, the CSV column's stem and the Python key: "theta_i_deg"
-  const char* flag;                  ///< the programs' option: "--theta"
+  const char* key;  ///< the JSON key, the CSV column's stem and the Python key: "theta_i_deg"
+  const char* flag;  ///< the programs' option: "--theta"
   std::vector<const char*> aliases;  ///< other names it is read under ("theta"): every one documented stays
   UnitDimension dimension;
-  const char* unit;                  ///< its SI unit in a CSV column ("m": "L4_m"), "" for a pure number or an angle in degrees
+  const char* unit;  ///< its SI unit in a CSV column ("m": "L4_m"), "" for a pure number or an angle in degrees
   FieldGroup group;
-  unsigned operations;               ///< Operation bits
-  const char* label;                 ///< a few words, for the page and the workbook: "sling"
-  const char* help;                  ///< one line, for --help and the docs
-  const char* example;               ///< a value as typed: "5.80m"
-  const char* fallback;              ///< the value taken when it is not given, in words; "" for none
-  const char* range;                 ///< the values the library takes, in words (the core checks them)
+  unsigned operations;  ///< Operation bits
+  const char* label;  ///< a few words, for the page and the workbook: "sling"
+  const char* help;  ///< one line, for --help and the docs
+  const char* example;  ///< a value as typed: "5.80m"
+  const char* fallback;  ///< the value taken when it is not given, in words; "" for none
+  const char* range;  ///< the values the library takes, in words (the core checks them)
 };
 
 /// Every input, in the order the programs list them.

@@ -21,12 +21,12 @@ namespace trebuchet {
 /// The settings of a shot as given: the release and the target (in `base`, with the integrator),
 /// the target level, and the air, which its details describe only when `air` is on.
 struct SettingsValues {
-  ShotSettings base;                    ///< criterion, integrator, range_from_release; its air and level are set from the values below
-  std::optional<double> target_level;   ///< [m]; 0 when not given
+  ShotSettings base;  ///< criterion, integrator, range_from_release; its air and level are set from the values below
+  std::optional<double> target_level;  ///< [m]; 0 when not given
   bool air = false;
   std::optional<double> air_density, drag_coefficient, projectile_density, wind;  ///< [kg/m^3], -, [kg/m^3], [m/s]
-  bool drag_of_reynolds = false;        ///< Cd(Re) of a smooth sphere instead of a constant Cd
-  bool drag_in_sling = false;           ///< the air acts before the release too
+  bool drag_of_reynolds = false;  ///< Cd(Re) of a smooth sphere instead of a constant Cd
+  bool drag_in_sling = false;  ///< the air acts before the release too
 };
 
 /// The settings of a shot from their values, checked (check_shot_settings): details of the air
@@ -46,7 +46,7 @@ OptimizeRequest optimize_request(const DesignValues& values, const ShotSettings&
 /// A value of a Monte Carlo run given as a range or a spread, and where its draw goes: a design's
 /// value or a setting's (the target level, the wind, the air's density).
 struct SpreadInput {
-  UncertainInput input;                                 ///< named as its user gave it ("--M", "M")
+  UncertainInput input;  ///< named as its user gave it ("--M", "M")
   std::optional<double> DesignValues::*value = nullptr;
   std::optional<double> SettingsValues::*setting = nullptr;
 };
@@ -58,8 +58,8 @@ struct MonteCarloRequest {
   SettingsValues settings;
   MaterialOverrides material;
   std::vector<SpreadInput> spreads;  ///< in the order they are drawn
-  bool completes = false;            ///< complete each sample (attested values) instead of shooting it
-  std::string where;                 ///< how messages name the design's values: "" flags ("--L4"), "design" a request's ("design.L4")
+  bool completes = false;  ///< complete each sample (attested values) instead of shooting it
+  std::string where;  ///< how messages name the design's values: "" flags ("--L4"), "design" a request's ("design.L4")
 };
 
 /// The values and settings of a sample: each spread set to value(its spread).

@@ -28,11 +28,11 @@ struct Moments {
 /// or vacuum, and Q, eps and R over phase II, on past the release as if the projectile were kept.
 struct ShotSeries {
   Verification verification;
-  std::vector<TracePoint> trace;    ///< phases I and II up to the release, then phase III (shot.hpp)
-  double time_unit = 1;             ///< sqrt(L2/g), the scaled time's unit (section 3) [s]
+  std::vector<TracePoint> trace;  ///< phases I and II up to the release, then phase III (shot.hpp)
+  double time_unit = 1;  ///< sqrt(L2/g), the scaled time's unit (section 3) [s]
   std::size_t liftoff = 0, peak_reaction = 0, first_extreme = 0, second_extreme = 0, release = 0;  ///< indices into trace
-  std::vector<SitePoint> flight;    ///< the projectile from the release to the end of its flight [m]
-  double flight_time = 0;           ///< [s]
+  std::vector<SitePoint> flight;  ///< the projectile from the release to the end of its flight [m]
+  double flight_time = 0;  ///< [s]
   /// A moment of phase II taken as a release (shot.hpp's release_point): Q is the Q_n the shot
   /// maximised, R the range at level 0 in vacuum; the extremes of eq:F so far.
   struct Moment {
@@ -41,8 +41,8 @@ struct ShotSeries {
     ForceValues running_max;
   };
   std::vector<Moment> phase_two;
-  std::size_t release_row = 0;      ///< the release, in phase_two
-  ForceValues final_extremes{};     ///< eq:F's extremes up to the release, scaled
+  std::size_t release_row = 0;  ///< the release, in phase_two
+  ForceValues final_extremes{};  ///< eq:F's extremes up to the release, scaled
   /// The projectile `after` seconds past the release (at the flight's end once it has landed).
   SitePoint stone_at(double after) const;
 };

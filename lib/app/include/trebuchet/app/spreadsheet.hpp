@@ -13,12 +13,12 @@ namespace trebuchet {
 
 /// The values the workbook opens on; the defaults are the paper's examples.
 struct SpreadsheetInputs {
-  DesignRequest capacity = example(Quantity::R, 425, Quantity::T, 224e3);      ///< Denny's engine, the "Present" row
-  DesignRequest range_and_one = example(Quantity::R, 150, Quantity::m, 50);    ///< Alcalá la Vieja, site Ca
-  DesignRequest any_pair = example(Quantity::M, 10e3, Quantity::m, 100);       ///< Denny's (M, m)
-  Engine engine = alcala_ca();   ///< the derived-quantities sheet's engine
+  DesignRequest capacity = example(Quantity::R, 425, Quantity::T, 224e3);  ///< Denny's engine, the "Present" row
+  DesignRequest range_and_one = example(Quantity::R, 150, Quantity::m, 50);  ///< Alcalá la Vieja, site Ca
+  DesignRequest any_pair = example(Quantity::M, 10e3, Quantity::m, 100);  ///< Denny's (M, m)
+  Engine engine = alcala_ca();  ///< the derived-quantities sheet's engine
   double model_scale = 80.0 / 425;  ///< Denny's 80 m model, on the (R, T) sheet's engine
-  Material material{};           ///< beta2, Young's modulus, wood density and g of the designs
+  Material material{};  ///< beta2, Young's modulus, wood density and g of the designs
 
   static DesignRequest example(Quantity first, double first_value, Quantity second, double second_value);
   static Engine alcala_ca();

@@ -24,8 +24,8 @@ namespace trebuchet {
 struct DesignInputs {
   std::vector<std::string> passed_columns;  ///< CSV columns that pass through, e.g. site
   std::vector<DesignRows::Row> rows;
-  std::vector<std::string> where;           ///< how messages name each row: "design[2]", "line 3"
-  bool single = true;                       ///< one object: an error ends the run
+  std::vector<std::string> where;  ///< how messages name each row: "design[2]", "line 3"
+  bool single = true;  ///< one object: an error ends the run
 };
 
 /// The designs in `text`, read from `path` ("-": standard input): JSON if the file is named
@@ -48,22 +48,22 @@ struct MaterialOverrides {
 struct DesignCheck {
   ShotSettings settings;
   MaterialOverrides material;
-  double tolerance = 0.02;              ///< relative, on a predicted R and T
-  bool fit = false;                     ///< fit the design's shape to its capacity first
-  bool csv = false;                     ///< also the CSV cells of each design
+  double tolerance = 0.02;  ///< relative, on a predicted R and T
+  bool fit = false;  ///< fit the design's shape to its capacity first
+  bool csv = false;  ///< also the CSV cells of each design
   int csv_digits = default_csv_digits;
-  std::string series_path;              ///< write the motion here (CSV) when not empty
-  double series_dt_s = 0;               ///< [s]; 0: at the integrator's steps
-  std::string plot_dir;                 ///< draw the shot into this folder when not empty
-  std::vector<std::string> inputs;      ///< the run's input files, which no picture may replace
-  UnitSystem units = UnitSystem::si;    ///< of the table
+  std::string series_path;  ///< write the motion here (CSV) when not empty
+  double series_dt_s = 0;  ///< [s]; 0: at the integrator's steps
+  std::string plot_dir;  ///< draw the shot into this folder when not empty
+  std::vector<std::string> inputs;  ///< the run's input files, which no picture may replace
+  UnitSystem units = UnitSystem::si;  ///< of the table
 };
 
 /// One design checked: its record as JSON, as a table and (with check.csv) as CSV cells, and whether a capacity
 /// it carries was met within the tolerance.
 struct DesignReport {
-  Engine engine;               ///< the engine shot (with check.fit, the fitted one)
-  Verification verification;   ///< its shot
+  Engine engine;  ///< the engine shot (with check.fit, the fitted one)
+  Verification verification;  ///< its shot
   nlohmann::ordered_json json;
   std::string table;
   std::vector<std::string> csv;
