@@ -26,10 +26,10 @@ DesignValues ca_engine() {
   return v;
 }
 
-// The key of every {{name}} an error speaks of.
-bool names_key(const Error& error, const std::string& key) {
+// Whether an error speaks of the field, by its key or an alias ({{name}}).
+bool names_field(const Error& error, const InputField& field) {
   for (const std::string& name : error.names())
-    if (name == key) return true;
+    if (find_field(name) == &field) return true;
   return false;
 }
 
@@ -76,7 +76,7 @@ TEST_CASE("a value beyond the range a row states is refused, naming the row", "[
         FAIL("accepted");
       } catch (const Error& e) {
         INFO(e.what());
-        CHECK((names_key(e, field.key) || std::string(e.what()).find(std::string("design.") + field.key) != std::string::npos));
+        CHECK((names_field(e, field) || std::string(e.what()).find(std::string("design.") + field.key) != std::string::npos));
       }
       ++probed;
     }

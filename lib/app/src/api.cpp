@@ -45,6 +45,7 @@ std::string key_word(std::string_view name) {
   if (name == "wind") return "air.wind";
   if (name == "drag_in_sling") return "air.drag_in_sling";
   if (name == "tol") return "tolerance";
+  if (const InputField* field = find_field(name)) return field->key;  // an input's key, as the request gives it
   return std::string(name);
 }
 

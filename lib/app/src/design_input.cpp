@@ -179,11 +179,8 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   } else {
     throw Error(ErrorKind::usage, named + ": give the counterweight arm L3 in metres, or the fraction F = (L2 + L3)/H, e.g. F = 2/3");
   }
-  Material& material = e.material;
-  material.beta2 = v.beta2.value_or(material.beta2);
-  material.youngs_modulus = v.youngs_modulus.value_or(material.youngs_modulus);
-  material.wood_density = v.wood_density.value_or(material.wood_density);
-  material.g = v.g.value_or(material.g);
+  e.material = material_of(v, e.material);  // eq:kMkD's where not given
+  const Material& material = e.material;
   engine_parts(v, where, in);
   if (e.parts.D_tip && e.parts.D_hinge && *e.parts.D_tip > 0 && *e.parts.D_hinge > 0 && e.L1 > 0 &&
       e.L2 > 0) {  // the tapered beam's mass and its diameter at the pivot

@@ -40,9 +40,7 @@ CompletionRequest completion_request(const DesignValues& v, const ShotSettings& 
   Attested& a = request.attested;
   a.Lb = v.Lb, a.L1 = v.L1, a.L2 = v.L2, a.H = v.H, a.L4 = v.L4, a.M = v.M, a.m = v.m, a.mb = v.mb, a.D = v.D, a.l = v.l;
   a.theta_i_deg = v.theta_i_deg, a.F = v.F;
-  MaterialOverrides given;
-  given.beta2 = v.beta2, given.youngs_modulus = v.youngs_modulus, given.wood_density = v.wood_density, given.g = v.g;
-  request.material = material.over(given.over(Material{}));
+  request.material = material.over(material_of(v, Material{}));
   request.settings = settings;
   request.parts = independent_parts(v);
   return request;
@@ -58,9 +56,7 @@ OptimizeRequest optimize_request(const DesignValues& v, const ShotSettings& sett
   request.projectile_mass = v.m;
   request.theta_i_deg = v.theta_i_deg.value_or(standard_theta_i_deg);
   request.F = v.F.value_or(standard_F);
-  MaterialOverrides given;
-  given.beta2 = v.beta2, given.youngs_modulus = v.youngs_modulus, given.wood_density = v.wood_density, given.g = v.g;
-  request.material = material.over(given.over(Material{}));
+  request.material = material.over(material_of(v, Material{}));
   request.settings = settings;
   if (v.l) {
     check_fixed_beam_ratio(*v.l, "{{l}}");

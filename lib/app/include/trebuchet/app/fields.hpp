@@ -1,4 +1,4 @@
-// The one table of an engine's inputs: every value a user gives the calculator, a shot, a
+// The one table of an engine's inputs (its rows: inputs.def): every value a user gives the calculator, a shot, a
 // completion or an optimum, declared once with its names, dimension, unit, default, range and
 // help. The programs' flags, the JSON keys and CSV columns, the Python module's dicts, the
 // page's inputs (api::fields), the workbook's labels and docs/inputs.md all come from it.
@@ -10,21 +10,17 @@
 #include <string_view>
 #include <vector>
 
+#include "trebuchet/material.hpp"
 #include "trebuchet/app/units.hpp"
 
 namespace trebuchet {
 
 /// The values of a design as given (a JSON object, a CSV row or a program's options), in SI
-/// units, angles in degrees; a value not given is empty. One member per row of input_fields().
+/// units, angles in degrees; a value not given is empty. One member per row of inputs.def.
 struct DesignValues {
-  std::optional<double> L1, L2, L3, F, L4, M, m, mb, D, theta_i_deg, psi_i_deg;
-  std::optional<double> beta2, youngs_modulus, wood_density, g;  ///< the material; eq:kMkD's where empty
-  std::optional<double> R, T;  ///< a capacity to check: both or neither
-  std::optional<double> Lb, H, l;  ///< attested (complete) or given (the calculator)
-  /// The engine as built (EngineParts): the beam by its centre of mass and inertia (or radius of
-  /// gyration), or tapered; the counterweight's inertia or box; the pins' friction; the rope.
-  std::optional<double> beam_cm, beam_inertia, beam_gyration, D_hinge, D_tip, counterweight_inertia, box_width, box_height;
-  std::optional<double> axle_friction, axle_radius, hinge_friction, hinge_radius, trough_friction, rope_diameter, rope_cd;
+#define TREBUCHET_INPUT(key, ...) std::optional<double> key;
+#include "trebuchet/app/inputs.def"
+#undef TREBUCHET_INPUT
 };
 
 /// The operations that take an input, a bit each.
@@ -56,9 +52,10 @@ struct InputField {
   const char* example;  ///< a value as typed: "5.80m"
   const char* fallback;  ///< the value taken when it is not given, in words; "" for none
   const char* range;  ///< the values the library takes, in words (the core checks them)
+  double Material::*material;  ///< the member of Material it sets; nullptr for none
 };
 
-/// Every input, in the order the programs list them.
+/// Every input, in the order the programs list them (inputs.def).
 const std::vector<InputField>& input_fields();
 
 /// The row of a member of DesignValues.
@@ -76,6 +73,9 @@ inline const char* key_of(std::optional<double> DesignValues::*member) { return 
 /// A row's help for a program's option: the help, its default and the units it takes
 /// ("sling length, spigot to projectile [m, cm, mm, km, ft, in]").
 std::string option_help(const InputField& field);
+
+/// `base` with the material values given in `values` (the rows with a Material member).
+Material material_of(const DesignValues& values, Material base);
 
 /// The CSV column of a row written in SI: the key with its unit ("L4_m"; "theta_i_deg").
 std::string csv_column_of(const InputField& field);
