@@ -116,6 +116,24 @@ try:
 except trebuchet.TrebuchetError:
     pass
 
+# A near miss is refused with the name meant, as the program refuses it; a settings keyword no
+# request takes is refused; another key of a design passes through, named in the answer.
+near = dict(ca, theta_i=45)
+done = shot_by_program(near)
+for request, expected in [(lambda: trebuchet.shot(near), done.stderr.strip().split(": ", 1)[1]),
+                          (lambda: trebuchet.shot(ca, relase="eps"), 'shot: unknown key "relase"; did you mean "release"?')]:
+    try:
+        request()
+        failures.append(f"not refused: {expected}")
+    except trebuchet.TrebuchetError as e:
+        if str(e) != expected or e.kind != "usage":
+            failures.append(f"near miss: {str(e)!r} ({e.kind}) against {expected!r}")
+passed = trebuchet.shot(dict(ca, site="Ca")).get("passed")
+if passed != {"site": "Ca"}:
+    failures.append(f"a site's name did not pass through: {passed}")
+if not any(f["key"] == "L4" and f["flag"] == "--L4" for f in trebuchet.fields()):
+    failures.append("fields() lacks L4")
+
 # Monte Carlo: the samples as arrays, their percentiles the report's.
 mc = trebuchet.monte_carlo(dict(ca, M="3t..3.2t"), samples=300, seed=7)
 done = program(VERIFY, "shot", "--L1", "4.13m", "--L2", "0.88m", "--F", "2/3", "--L4", "3.55m", "--M", "3t..3.2t", "--m", "50kg", "--mb", "174kg",
