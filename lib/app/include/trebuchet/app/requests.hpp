@@ -59,7 +59,7 @@ struct MonteCarloRequest {
   MaterialOverrides material;
   std::vector<SpreadInput> spreads;  ///< in the order they are drawn
   bool completes = false;  ///< complete each sample (attested values) instead of shooting it
-  std::string where;  ///< how messages name the design's values: "" flags ("--L4"), "design" a request's ("design.L4")
+  std::string where;  ///< how messages name the design's values: "" flags ("--M"), "design" a request's ("design.M")
 };
 
 /// The values and settings of a sample: each spread set to value(its spread).
