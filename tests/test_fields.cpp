@@ -98,7 +98,13 @@ TEST_CASE("a near miss is named with the key meant, and other keys pass through"
   CHECK(near_miss("M_kg", shot) == "M");
   CHECK(near_miss("thta_i_deg", shot) == "theta_i_deg");  // two edits of a long name
   CHECK(near_miss("l1", shot) == "L1");  // a name of two letters: its case alone
-  CHECK(near_miss("L_4", shot).empty());  // ... not an edit (as the flags suggest)
+  CHECK(near_miss("L_4", shot) == "L4");  // a hand's variants: underscores, hyphens, blanks, case
+  CHECK(near_miss("g ", shot) == "g");
+  CHECK(near_miss("m_b", shot) == "mb");
+  CHECK(near_miss("L4m", shot) == "L4");  // a unit put on without an underscore
+  CHECK(near_miss("theta_degrees", shot) == "theta_i_deg");
+  CHECK(near_miss("g_m_s2", shot) == "g");  // a CSV column's name, in JSON
+  CHECK(near_miss("rope_diam", shot).empty());  // an abbreviation: passed through, named
   CHECK(near_miss("site", shot).empty());
   CHECK(near_miss("comment", shot).empty());
   CHECK(near_miss("Lb", shot).empty());  // complete's, not a shot's: a shot's output key, read back silently

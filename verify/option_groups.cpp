@@ -145,8 +145,9 @@ void material_options(CLI::App* app, Options& o, const std::string& what, bool b
     const InputField& field = field_of(row);
     if (row == &V::beta2 && !beta2) continue;
     const std::string name = field.flag;
-    const std::string help = row == &V::beta2 ? "allowed beam bending u2/L2 that sizes " + what + " (default: " + what + "'s own, else 1/300)"
-                                              : std::string(field.help) + " (default: the input's, else " + field.fallback + ")";
+    const std::string units = field.dimension == UnitDimension::dimensionless ? "" : " [" + unit_list(field.dimension) + "]";
+    const std::string help = row == &V::beta2 ? "allowed beam bending u2/L2 that sizes " + what + " (default: its own, else 1/300)"
+                                              : std::string(field.help) + " (default: the design's, else " + field.fallback + ")" + units;
     parsed_option(
         app, name,
         [&o, name, member = member, dimension = field.dimension](const std::string& text) {

@@ -22,7 +22,7 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
                                       "(JSON for the calculator's --table)");
   s.merge = app.add_subcommand("merge", "join the parts written by derive-table --shard into one table");
   s.complete = app.add_subcommand("complete",
-                                  "complete an engine from what a source attests (any of --Lb --L1 --L2 --H --L4 --M --m --mb --D "
+                                  "complete an engine from what a source attests (any of --Lb --L1 --L2 --H --l --L4 --M --m --mb --D "
                                   "--theta --F): keep those, choose the rest for the highest Q (or --quality range)");
 
   for (CLI::App* sub : {s.shot, s.fit}) {

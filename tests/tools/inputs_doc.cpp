@@ -1,6 +1,7 @@
 // inputs-doc: docs/inputs.md, written from the table of inputs (lib/app fields.hpp). The test
 // docs.inputs holds the page to it; after a change of the table, regenerate the page with
 //   build/tests/inputs-doc > docs/inputs.md
+#include <algorithm>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -49,7 +50,8 @@ int main() {
       if (field.group != group) continue;
       std::string key = code(field.key);
       for (const char* alias : field.aliases) key += " (" + code(alias) + ")";
-      const std::string unit = field.dimension == UnitDimension::angle ? "deg" : *field.unit ? field.unit : "–";
+      std::string unit = field.dimension == UnitDimension::angle ? "deg" : *field.unit ? field.unit : "–";
+      std::replace(unit.begin(), unit.end(), '_', '/');  // kg_m3, as a CSV column writes it: kg/m3
       std::cout << "| " << key << " | " << code(field.flag) << " | " << unit << " | " << operations(field.operations) << " | "
                 << (*field.fallback ? field.fallback : "") << " | " << field.range << " | " << field.help << " (e.g. " << code(field.example)
                 << ") |\n";

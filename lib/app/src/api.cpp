@@ -73,7 +73,8 @@ void require_keys(const json& request, const std::vector<std::string>& known, co
 const std::vector<std::string> settings_keys = {"air", "release", "n", "target_level", "range_from", "modulus_of_rupture"};
 
 std::vector<std::string> with_settings(std::vector<std::string> keys) {
-  keys.insert(keys.end(), settings_keys.begin(), settings_keys.end());
+  for (const std::string& key : settings_keys)
+    if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
   return keys;
 }
 
@@ -136,10 +137,9 @@ MaterialOverrides overrides_of(const json& request) {
 // The values of a request's object (a design's or the attested) that `operation` takes, each
 // given as a range or a spread taken at `at`(spread) and, with `spreads`, kept there with where
 // its draws go. A key near an input's name is refused with that name.
-DesignValues values_of(const json& object, unsigned operation, const std::string& where, const std::function<double(const Spread&)>& at,
+DesignValues values_of(const json& object, unsigned operation, const std::string& where, const std::function<double(const Spread&)>& at, json& passed,
                        std::vector<SpreadInput>* spreads = nullptr) {
   if (!object.is_object()) throw Error(ErrorKind::usage, where + ": expected a JSON object");
-  if (operation == op_complete) require_keys(object, input_names(op_complete), where);
   json plain = object;
   for (const auto& [key, value] : object.items()) {
     const InputField* field = find_field(key);
@@ -149,7 +149,14 @@ DesignValues values_of(const json& object, unsigned operation, const std::string
       if (spreads) spreads->push_back({{key, field->dimension, *spread}, field->member, nullptr});
     }
   }
-  if (operation != op_complete) return read_design_values(plain, where);
+  if (operation != op_complete) return read_design_values(plain, where, &passed);
+  // Attested values: a near miss is refused, any other key passes through, named in the answer.
+  const std::vector<std::string> known = input_names(op_complete);
+  for (const auto& [key, value] : object.items())
+    if (std::find(known.begin(), known.end(), key) == known.end()) {
+      refuse_near_miss(key, known, where);
+      passed[key] = value;
+    }
   DesignValues v;
   for (const InputField& field : input_fields()) {
     if (!(field.operations & op_complete)) continue;
@@ -278,8 +285,11 @@ ordered_json complete(const json& request) {
   if (!request.contains("attested"))
     throw Error(ErrorKind::usage,
                 "{{attested}} is missing; give what the source attests, e.g. {\"attested\": {\"Lb\": \"9.5m\", \"M\": \"3t\", \"m\": \"50kg\"}}");
-  return completion_answer(
-      completion_request(values_of(request["attested"], op_complete, "attested", middle), settings_of(request), overrides_of(request)));
+  json passed = json::object();
+  const DesignValues attested = values_of(request["attested"], op_complete, "attested", middle, passed);
+  ordered_json answer = completion_answer(completion_request(attested, settings_of(request), overrides_of(request)));
+  if (!passed.empty()) answer["passed"] = passed;  // the attested keys no reader knows, as given
+  return answer;
 }
 
 ordered_json monte_carlo(const json& request) {
@@ -289,8 +299,9 @@ ordered_json monte_carlo(const json& request) {
     throw Error(ErrorKind::usage, "give {{design}} (a shot of each sample) or {{attested}} (a completion of each sample), one of them");
   const std::string where = completes ? "attested" : "design";
   MonteCarloRequest run;
+  json passed = json::object();
   run.values = values_of(
-      request[where], completes ? op_complete : op_shot, where, [](const Spread& s) { return s.a; }, &run.spreads);
+      request[where], completes ? op_complete : op_shot, where, [](const Spread& s) { return s.a; }, passed, &run.spreads);
   run.completes = completes;
   run.where = where;
   run.material = overrides_of(request);
@@ -363,6 +374,7 @@ ordered_json monte_carlo(const json& request) {
                                 1};
   ordered_json answer = monte_carlo_json(report);
   answer.erase("wall_time_s");  // a time is the caller's to measure; the report is the same on any machine
+  if (!passed.empty()) answer["passed"] = passed;
   return answer;
 }
 

@@ -8,7 +8,9 @@
 #include "trebuchet/app/csv.hpp"
 #include "trebuchet/app/request.hpp"
 #include "trebuchet/app/schema.hpp"
+#include "trebuchet/app/design_input.hpp"
 #include "trebuchet/app/design_record.hpp"
+#include "trebuchet/app/fields.hpp"
 #include "trebuchet/app/units.hpp"
 
 namespace trebuchet {
@@ -26,10 +28,15 @@ struct Column {
 std::vector<Column> parse_header(const std::vector<std::string>& names) {
   std::vector<std::string_view> keys = {"theta", "theta_i_deg", "F", "branch"};
   for (Quantity quantity : all_quantities) keys.push_back(quantity_name(quantity));
+  // What a batch reads, for the near misses of a column meant as one of them ("Theta", "theta_i").
+  std::vector<std::string> read = input_names(op_given);
+  for (const char* name : names_of(field_of(&DesignValues::theta_i_deg))) read.emplace_back(name);
+  read.insert(read.end(), {key_of(&DesignValues::F), "branch"});
   std::vector<Column> columns;
   int givens = 0;
   for (const std::string& name : names) {
     const auto split = split_column_name(name, keys);
+    if (split && !split->unit.empty() && !is_unit_word(split->unit)) refuse_near_miss(name, read, "batch header");
     Column column{ColumnRole::passed, name, "", std::nullopt};
     if (split && (split->unit.empty() || (split->key != "F" && split->key != "branch" && split->key != "theta_i_deg"))) {
       column.key = split->key, column.unit = split->unit;
@@ -52,6 +59,8 @@ std::vector<Column> parse_header(const std::vector<std::string>& names) {
     givens += column.role == ColumnRole::given;
     columns.push_back(column);
   }
+  for (const Column& column : columns)
+    if (column.role == ColumnRole::passed) refuse_near_miss(column.key, read, "batch header");
   if (givens != 2) {
     std::string given_names, passed_names;
     for (const Column& column : columns) {

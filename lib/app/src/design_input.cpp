@@ -74,9 +74,14 @@ DesignValues read_design_values(const nlohmann::json& object, const std::string&
   // The other keys: what the programs write (read back, as CSV columns are), a near miss, or
   // the caller's own (a site's name), passed through.
   static const std::vector<std::string> known = input_names(op_shot);
+  // The programs' JSON keys: their CSV columns that are an input's key with a unit ("L4_m") are
+  // near misses in JSON, where a value carries its unit in its text.
   static const std::vector<std::string> written = [] {
-    std::vector<std::string> names = design_output_names();
-    for (const std::string& name : verification_output_names()) names.push_back(name);
+    std::vector<std::string> names;
+    for (const auto& list : {design_output_names(), verification_output_names()})
+      for (const std::string& name : list)
+        if (std::none_of(input_fields().begin(), input_fields().end(), [&](const InputField& field) { return unit_column_of(name, field); }))
+          names.push_back(name);
     names.insert(names.end(),
                  {"passed", "simulations", "start", "iterations", "wall_time_s", "note", "attested", "implied", "chosen", "calculator",
                   "calculator_note", "longest_range", "longest_range_note", "warnings", "notes"});
@@ -267,9 +272,16 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
       columns.push_back({Column::engine, {header == "predicted_R_m" ? "R" : "T", header == "predicted_R_m" ? "m" : "J"}});
     } else if (own_output && std::find(results.begin(), results.end(), header) != results.end()) {
       columns.push_back({Column::dropped, {header, ""}});
-    } else if (const auto name = split_column_name(header, engine_keys);
-               name && (name->unit.empty() || is_unit_word(name->unit) || near_miss(header, inputs).empty())) {
-      const std::string key = find_field(name->key)->key;  // an alias ("theta") read as its key
+    } else if (const auto name = split_column_name(header, engine_keys)) {
+      const InputField& field = *find_field(name->key);
+      const std::string key = field.key;  // an alias ("theta") read as its key
+      if (!name->unit.empty() && !is_unit_word(name->unit)) {  // "theta_i", "L4_fet": the header's fault, not each row's
+        refuse_near_miss(header, inputs, source);
+        throw Error(ErrorKind::unknown_unit,
+                    source + ": the column '" + header + "' gives " + key + " in '" + name->unit + "', which is no unit of " +
+                        dimension_name(field.dimension) + "; name it " + key + " with one of " + unit_list(field.dimension) + " (e.g. " +
+                        csv_column_of(field) + "), or " + key + " alone");
+      }
       for (std::size_t k = 0; k < columns.size(); ++k)
         if (columns[k].role == Column::engine && columns[k].name.key == key)
           throw Error(ErrorKind::usage, source + ": the columns '" + reader.header()[k] + "' and '" + header + "' both give " + key + "; keep one");

@@ -87,20 +87,48 @@ bool near_name(std::string_view word, std::string_view name) {
   return edit_distance(word, name) <= allowed;
 }
 
+namespace {
+
+// A name as a hand may vary it: without blanks, underscores and hyphens, in lower case ("L_4 ",
+// "l4" and "L-4" are all "l4").
+std::string plain(std::string_view name) {
+  std::string out;
+  for (char c : name)
+    if (c != ' ' && c != '_' && c != '-' && c != '\t') out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// Whether `rest` is a unit: "ft", "kg", "m_s2" (a CSV column's "m/s2"), or, for an angle,
+// a word for degrees ("deg", "degree", "degrees").
+bool unit_words(std::string_view rest, UnitDimension dimension) {
+  std::string unit(rest);
+  std::replace(unit.begin(), unit.end(), '_', '/');
+  return is_unit_word(unit) || (dimension == UnitDimension::angle && unit.rfind("deg", 0) == 0);
+}
+
+}  // namespace
+
+bool unit_column_of(std::string_view name, const InputField& field) {
+  const std::string_view key = field.key;
+  return name.size() > key.size() + 1 && name.substr(0, key.size()) == key && name[key.size()] == '_' &&
+      unit_words(name.substr(key.size() + 1), field.dimension);
+}
+
 std::string near_miss(std::string_view word, const std::vector<std::string>& known) {
-  // An input's name with its unit left off, or another unit put on: "theta_i" (theta_i_deg),
-  // "L4_ft", "M_kg", "theta_deg".
+  // An input's name as a hand varies it ("L_4", "L4 ", "m_b"), with its unit left off ("theta_i"
+  // for theta_i_deg), or with a unit put on ("L4_ft", "M_kg", "L4m", "theta_degrees").
   for (const InputField& field : input_fields()) {
     if (std::find(known.begin(), known.end(), field.key) == known.end()) continue;  // not this reader's
-    std::string_view key = field.key;
+    const std::string_view key = field.key;
     const std::string_view stem = field.dimension == UnitDimension::angle ? key.substr(0, key.rfind("_deg")) : key;
-    std::vector<std::string_view> names{stem};
+    std::vector<std::string_view> names{key, stem};
     for (const char* alias : field.aliases) names.emplace_back(alias);
     for (std::string_view name : names) {
-      if (word == name && word != key) return field.key;
-      if (word.size() > name.size() + 1 && word.substr(0, name.size()) == name && word[name.size()] == '_' &&
-          is_unit_word(word.substr(name.size() + 1)))
-        return field.key;
+      if (word != key && plain(word) == plain(name)) return field.key;
+      for (const std::size_t gap : {std::size_t{0}, std::size_t{1}}) {  // "L4m", "L4_m", "r_m"
+        if (word.size() <= name.size() + gap || plain(word.substr(0, name.size())) != plain(name) || (gap && word[name.size()] != '_')) continue;
+        if (unit_words(word.substr(name.size() + gap), field.dimension)) return field.key;
+      }
     }
   }
   std::string best;

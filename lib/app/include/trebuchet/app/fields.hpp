@@ -88,13 +88,18 @@ std::size_t edit_distance(std::string_view a, std::string_view b);
 /// edit for names of up to 4 letters, two for longer ones (the flags' rule for their suggestions).
 bool near_name(std::string_view word, std::string_view name);
 
-/// The name a key `word` that no reader knows was meant as, or empty: a name of `known` near it
-/// (near_name), or an input's key or alias with its unit suffix left off or changed ("theta_i",
-/// "L4_ft", "M_kg" for "M"). The nearest wins.
+/// The name a key `word` that no reader knows was meant as, or empty: an input of `known` whose
+/// key or alias it is but for blanks, underscores, hyphens and case ("L_4", "L4 ", "m_b"), or with
+/// its unit left off or put on ("theta_i", "L4_ft", "M_kg", "L4m", "theta_degrees"); else the
+/// name of `known` nearest to it within near_name.
 std::string near_miss(std::string_view word, const std::vector<std::string>& known);
 
 /// "length", "mass", ...: a dimension's name, as fields_json writes it.
 const char* dimension_name(UnitDimension dimension);
+
+/// Whether `name` is the row's key with a unit put on, as a CSV column names it ("L4_m", "L4_ft",
+/// "g_m_s2"): in JSON, a near miss of the key.
+bool unit_column_of(std::string_view name, const InputField& field);
 
 /// The keys and aliases of the inputs that `operations` take (any of its bits).
 std::vector<std::string> input_names(unsigned operations);
