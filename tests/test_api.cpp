@@ -97,7 +97,8 @@ TEST_CASE("api requests are refused by name, with the fix", "[api]") {
   // An attested key near an input's name is refused with it; another key passes through, named.
   CHECK_THAT(refusal(api::complete, {{"attested", {{"Lb", "9.5m"}, {"M", "3t"}, {"m", "50kg"}, {"L_b", 1}}}}).what(),
              Catch::Contains("attested: unknown key \"L_b\"; did you mean \"Lb\"?"));
-  CHECK(api::complete({{"attested", {{"Lb", "9.5m"}, {"M", "3t"}, {"m", "50kg"}, {"source", "Villard"}}}})["passed"] == json{{"source", "Villard"}});
+  CHECK(api::complete({{"attested", {{"Lb", "9.5m"}, {"M", "3t"}, {"m", "50kg"}, {"source", "Villard"}}}})["passed"].dump() ==
+        R"({"source":"Villard"})");
 }
 
 TEST_CASE("api::monte_carlo split into parts is the whole run", "[api]") {
