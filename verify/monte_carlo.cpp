@@ -37,8 +37,7 @@ int run_monte_carlo(const Options& o, bool complete) {
       samples, o.seed, o.threads, [&](std::mt19937_64& random) { return sample_outcome(request, random, option_word); },
       progress_bar(complete ? "completions" : "shots"));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::vector<UncertainInput> inputs;
-  for (const SpreadInput& spread : o.spreads) inputs.push_back(spread.input);
+  const std::vector<UncertainInput> inputs = uncertain_inputs(request);
   const std::vector<FixedInput> fixed = fixed_inputs(request);
   const MonteCarloReport report{summary,
                                 inputs,

@@ -359,8 +359,7 @@ ordered_json monte_carlo(const json& request) {
   }
   const MonteCarloSummary summary = summarize_samples(outcomes);
   refuse_when_no_sample_worked(summary);
-  std::vector<UncertainInput> inputs;
-  for (const SpreadInput& spread : run.spreads) inputs.push_back(spread.input);
+  const std::vector<UncertainInput> inputs = uncertain_inputs(run);
   const std::vector<FixedInput> fixed = fixed_inputs(run);
   const MonteCarloReport report{summary,
                                 inputs,

@@ -105,6 +105,12 @@ std::int64_t shots_per_sample(const MonteCarloRequest& request) {
   return shots_per_completion([&] { return complete_engine(completion_request(first.values, settings, first.material)); });
 }
 
+std::vector<UncertainInput> uncertain_inputs(const MonteCarloRequest& request) {
+  std::vector<UncertainInput> inputs;
+  for (const SpreadInput& spread : request.spreads) inputs.push_back(spread.input);
+  return inputs;
+}
+
 std::vector<FixedInput> fixed_inputs(const MonteCarloRequest& request) {
   std::vector<FixedInput> fixed;
   for (const bool completion_only : {true, false})

@@ -36,21 +36,4 @@ Dimension quantity_dimension(Quantity quantity) {
   }
 }
 
-std::string_view quantity_description(Quantity quantity) {
-  switch (quantity) {
-    case Quantity::R: return "range";
-    case Quantity::T: return "energy at target";
-    case Quantity::L1: return "long beam section";
-    case Quantity::L2: return "short beam section";
-    case Quantity::L4: return "sling length";
-    case Quantity::D: return "beam diameter";
-    case Quantity::M: return "counterweight mass";
-    case Quantity::m: return "projectile mass";
-    case Quantity::mb: return "beam mass";
-    case Quantity::Lb: return "beam length";
-    case Quantity::l: return "beam ratio L1/L2";
-  }
-  return "?";
-}
-
 }  // namespace trebuchet

@@ -36,7 +36,4 @@ std::optional<Quantity> quantity_from_name(std::string_view name);
 
 Dimension quantity_dimension(Quantity quantity);
 
-/// A plain-words description for messages ("projectile mass").
-std::string_view quantity_description(Quantity quantity);
-
 }  // namespace trebuchet

@@ -72,6 +72,9 @@ Verification sample_verification(const MonteCarloRequest& sample);
 /// the first values make an engine: bad input there is thrown, as the run's.
 std::int64_t shots_per_sample(const MonteCarloRequest& request);
 
+/// The run's uncertain inputs, as its user named them, in the order they are drawn.
+std::vector<UncertainInput> uncertain_inputs(const MonteCarloRequest& request);
+
 /// The values the run holds fixed, in the order the report lists them: what a completion alone
 /// takes (Lb, H, l), then the others of the table's order (the engine's, its parts, its
 /// material), none of them spread.
