@@ -61,7 +61,8 @@ int run_calibrate(const Options& o) {
   Engine engine = record.engine;
   engine.material = o.material.over(engine.material);
   if (record.mb_from_D) engine.mb = wood_beam_mass(engine);  // in the wood of the run
-  const ShotSettings settings = settings_of(o);
+  ShotSettings settings = settings_of(o);
+  settings.release_at = record.release_at;  // the release the measured engine made, when known
   for (double m : o.predict_m) check_ordinary(m, 1e-9, 1e12, "predict_m", "kg", "projectile mass to predict with");
   for (double M : o.predict_M) check_ordinary(M, 1e-9, 1e12, "predict_M", "kg", "counterweight mass to predict with");
   if (!o.series.empty()) refuse_output_over_input(o.series, "series", {o.input});
@@ -74,7 +75,9 @@ int run_calibrate(const Options& o) {
     check.plot_dir = o.plot;
     check.inputs = {o.input};
     check.units = o.units;
-    check_design(EngineRecord{calibration.engine, std::nullopt, false}, check);
+    EngineRecord calibrated;
+    calibrated.engine = calibration.engine;
+    check_design(calibrated, check);
   }
   std::vector<Prediction> predictions;
   for (double m : o.predict_m) {

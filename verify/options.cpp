@@ -28,7 +28,7 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
   for (CLI::App* sub : {s.shot, s.fit}) {
     const bool shot = sub == s.shot;
     engine_options(sub, o, shot);
-    if (shot) input_options(sub, o, op_shot, {FieldGroup::part}, true);
+    if (shot) input_options(sub, o, op_shot, {FieldGroup::release, FieldGroup::part}, true);
     target_level_option(sub, o, shot);
     threads_option(sub, o, "threads for an array of designs (default: the cores); the output is the same on any number");
     release_options(sub, o);
@@ -44,7 +44,7 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
   {
     CLI::App* c = s.calibrate;
     engine_options(c, o, false);
-    input_options(c, o, op_shot, {FieldGroup::part}, false);
+    input_options(c, o, op_shot, {FieldGroup::release, FieldGroup::part}, false);
     measured_options(c, o);
     target_level_option(c, o, false);
     release_options(c, o);

@@ -17,6 +17,7 @@ namespace {
 DesignCheck design_check(const Options& o, bool fit) {
   DesignCheck check;
   check.settings = settings_of(o);
+  check.settings.release_at = release_of(o.design, "");
   check.material = o.material;
   check.tolerance = o.tolerance;
   check.fit = fit;
@@ -33,7 +34,9 @@ DesignCheck design_check(const Options& o, bool fit) {
 // Whether the flags give an engine's value or part (the material and the capacity are settings of a file's designs too).
 bool has_engine_flags(const DesignValues& d) {
   for (const InputField& field : input_fields())
-    if ((field.operations & op_shot) && field.group != FieldGroup::material && field.group != FieldGroup::capacity && d.*field.member) return true;
+    if ((field.operations & op_shot) && field.group != FieldGroup::material && field.group != FieldGroup::capacity &&
+        field.group != FieldGroup::release && d.*field.member)
+      return true;
   return false;
 }
 

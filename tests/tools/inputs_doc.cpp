@@ -43,6 +43,7 @@ int main() {
                                                        {FieldGroup::alternative, "Values that stand in for the engine's"},
                                                        {FieldGroup::capacity, "A capacity"},
                                                        {FieldGroup::material, "The material"},
+                                                       {FieldGroup::release, "A release the builder sets (at most one)"},
                                                        {FieldGroup::part, "The engine as built"}};
   for (const auto& [group, title] : groups) {
     std::cout << "## " << title << "\n\n| key | flag | unit | operations | default | range | meaning |\n|---|---|---|---|---|---|---|\n";

@@ -381,7 +381,7 @@ ordered_json fields(const json& request) {
   require_keys(request, {}, "fields");
   const std::pair<unsigned, const char*> operation_names[] = {
       {op_given, "given"}, {op_calculator, "design"}, {op_shot, "shot"}, {op_complete, "complete"}, {op_optimize, "optimize"}};
-  const char* const group_names[] = {"engine", "alternative", "material", "capacity", "part"};
+  const char* const group_names[] = {"engine", "alternative", "material", "capacity", "release", "part"};
   ordered_json rows = ordered_json::array();
   for (const InputField& field : input_fields()) {
     ordered_json operations = ordered_json::array();

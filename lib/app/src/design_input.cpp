@@ -143,6 +143,30 @@ void engine_parts(const DesignValues& v, const std::string& where, EngineRecord&
 
 }  // namespace
 
+std::optional<SetRelease> release_of(const DesignValues& v, const std::string& where) {
+  using V = DesignValues;
+  const std::pair<std::optional<double> V::*, ReleaseBy> kinds[] = {
+      {&V::release_time, ReleaseBy::time}, {&V::release_angle_deg, ReleaseBy::velocity_angle}, {&V::pin_angle_deg, ReleaseBy::pin_angle}};
+  std::optional<SetRelease> out;
+  std::vector<std::string> given;
+  for (const auto& [member, by] : kinds) {
+    if (!(v.*member)) continue;
+    given.push_back(engine_key_name(where, field_of(member).key));
+    out = SetRelease{by, *(v.*member)};
+  }
+  if (given.size() > 1) throw Error(ErrorKind::usage, join(given, " and ") + " each set the release; give one of them");
+  if (out) {
+    ShotSettings settings;
+    settings.release_at = out;
+    try {
+      check_shot_settings(settings);
+    } catch (const Error& error) {
+      throw Error(error.kind(), error.message([&](std::string_view key) { return engine_key_name(where, std::string(key)); }));
+    }
+  }
+  return out;
+}
+
 EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   EngineRecord in;
   Engine& e = in.engine;
@@ -228,6 +252,7 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
                 named + ": L3 = " + format_significant(e.L3, 6) + " m gives F = (L2 + L3)/H = " + format_significant(arm_fraction(e), 6) +
                     ", not F = " + format_significant(*v.F, 6) + "; both fix the counterweight arm, give one of them");
   if (v.R.has_value() != v.T.has_value()) throw Error(ErrorKind::usage, named + ": a capacity needs both R and T; give both or neither");
+  in.release_at = release_of(v, where);
   if (v.R && !(*v.R > 0 && *v.T > 0))
     throw Error(ErrorKind::bad_number,
                 named + ": R = " + format_significant(*v.R, 6) + " m, T = " + format_significant(*v.T, 6) +

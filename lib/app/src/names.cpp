@@ -42,6 +42,12 @@ const Enum* value_in(const std::array<std::pair<Enum, std::string_view>, N>& tab
 
 std::string release_name(Release release) { return name_in(release_names, release); }
 
+std::string release_by_name(ReleaseBy by) {
+  constexpr std::array<std::pair<ReleaseBy, std::string_view>, 3> names{
+      {{ReleaseBy::time, "time"}, {ReleaseBy::velocity_angle, "velocity_angle"}, {ReleaseBy::pin_angle, "pin_angle"}}};
+  return name_in(names, by);
+}
+
 Release parse_release(std::string_view name, std::string_view option) {
   if (const Release* release = value_in(release_names, name)) return *release;
   throw Error(ErrorKind::usage,

@@ -28,10 +28,19 @@ std::string cell(const std::string& label, const std::string& value) {
 
 }  // namespace
 
+std::string describe_given_release(const SetRelease& release) {
+  switch (release.by) {
+    case ReleaseBy::time: return "the time " + format_significant(release.value, 6) + " s";
+    case ReleaseBy::velocity_angle: return "the velocity angle " + format_significant(release.value, 6) + " deg";
+    case ReleaseBy::pin_angle: return "the pin angle " + format_significant(release.value, 6) + " deg";
+  }
+  return "";
+}
+
 std::string describe_release(const ShotSettings& settings) {
   const ReleaseCriterion& c = settings.criterion;
-  const std::string rule = c.release == Release::quality
-      ? (c.n == 1 ? "where Q peaks (eq:Q)" : "where Q_n peaks (eq:Q_n, n = " + format_significant(c.n, 3) + ")")
+  const std::string rule = settings.release_at ? "at " + describe_given_release(*settings.release_at) + " (given)"
+      : c.release == Release::quality    ? (c.n == 1 ? "where Q peaks (eq:Q)" : "where Q_n peaks (eq:Q_n, n = " + format_significant(c.n, 3) + ")")
       : c.release == Release::efficiency ? "where eps peaks (Q_eps, appendix B)"
                                          : "where the range peaks (Denny's criterion)";
   return "release " + rule + ", " +
@@ -189,7 +198,7 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
       << "eps = " << sig(100 * v.eps, 4) << " %   Q = " << sig(100 * v.Q, 4) << " %   force factor = " << sig(v.force_factor, 4) << " (eq:F)\n"
       << "release: v = " << q(v.v, UnitDimension::speed) << ", h = " << q(v.h, UnitDimension::length) << ", "
       << q(std::abs(v.x), UnitDimension::length) << (v.x < 0 ? " behind the pivot" : " ahead of the pivot") << " (x = " << sig(v.x, 4)
-      << " m), A = " << sig(v.A_deg, 4) << " deg\n"
+      << " m), A = " << sig(v.A_deg, 4) << " deg, pin angle " << sig(v.pin_angle_deg, 4) << " deg\n"
       << "times: lift-off " << sig(v.t_liftoff, 4) << " s, release " << sig(v.t_release, 4) << " s\n"
       << "forces of eq:F: F_S_perp = " << q(v.FS_perp, UnitDimension::force) << " = " << sig(v.FS_perp_mg, 4)
       << " m·g, F_R = " << q(v.FR, UnitDimension::force) << " = " << sig(v.FR_Mg, 4) << " M·g, dF_Rh = " << q(v.dFRh, UnitDimension::force) << " = "

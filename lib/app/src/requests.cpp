@@ -92,6 +92,7 @@ Verification sample_verification(const MonteCarloRequest& sample) {
   ShotSettings settings = shot_settings(sample.settings);
   if (sample.completes) return complete_engine(completion_request(sample.values, settings, sample.material)).verification;
   settings.loads = false;  // a sample reports R, T, eps and v
+  settings.release_at = release_of(sample.values, sample.where);
   return verify_engine(sample_engine(sample), settings);
 }
 

@@ -28,12 +28,17 @@ nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings
   out["theta_i_deg"] = engine.theta_i_deg;
   out["F"] = arm_fraction(engine);
   out["release"] = release_name(settings.criterion.release);
+  if (const auto& at = settings.release_at)  // given: the release is there, and "release" names what Q is
+    out["release_at"] = {{"by", release_by_name(at->by)}, {"value", at->value}, {"unit", at->by == ReleaseBy::time ? "s" : "deg"}};
   out["n"] = settings.criterion.n;
   out["target_level"] = settings.target_level;
   return out;
 }
 
 namespace {
+
+// The pin angle at the release (verification.hpp), apart from the input pin_angle_deg that sets one.
+constexpr const char* pin_angle_column = "pin_angle_at_release_deg";
 
 // The figures of a shot, in the order of the JSON and CSV records. Throws Error(numerical) for
 // one that is not finite.
@@ -109,6 +114,7 @@ std::vector<std::string> verification_csv_header() {
   for (const Field& field : energy_fields(v)) header.push_back(csv_column(field));
   for (const std::string& column : part_columns()) header.push_back(column);
   header.push_back("psi_i_deg");
+  header.push_back(pin_angle_column);  // last, so that the columns before it keep their places
   return header;
 }
 
@@ -123,17 +129,22 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
   const nlohmann::ordered_json assumed = assumptions_json(engine, settings);
   const std::string air = settings.air ? describe_air(*settings.air, engine.m) : "vacuum";
   row.insert(row.end(),
-             {check ? (check->pass ? "yes" : "no") : "", air, assumed["release"].get<std::string>(), csv_number(settings.criterion.n, digits),
-              csv_number(settings.target_level, digits), join(v.warnings, "; "), join(v.notes, "; ")});
+             {check ? (check->pass ? "yes" : "no") : "", air,
+              settings.release_at ? release_by_name(settings.release_at->by) + " " + csv_number(settings.release_at->value, digits) +
+                      (settings.release_at->by == ReleaseBy::time ? " s" : " deg")
+                                  : assumed["release"].get<std::string>(),
+              csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), join(v.warnings, "; "), join(v.notes, "; ")});
   for (const Field& field : energy_fields(v)) row.push_back(csv_number(field.value, digits));
   for (const std::string& cell : part_cells(engine, digits)) row.push_back(cell);
   row.push_back(csv_number(engine.psi_i_deg, digits));
+  row.push_back(csv_number(v.pin_angle_deg, digits));
   return row;
 }
 
 std::vector<std::string> verification_output_names() {
   std::vector<std::string> names = verification_csv_header();
   for (const Field& field : verification_fields(Verification{})) names.push_back(field.key);
+  names.push_back(pin_angle_column);
   names.insert(names.end(), {"predicted", "deviation", "tolerance", "engine", "assumptions", "error", "exit_code", "energy"});
   return names;
 }
@@ -145,7 +156,10 @@ void require_finite(const Verification& v) {
 
 nlohmann::ordered_json verification_json(const Verification& v, const std::optional<CapacityCheck>& check) {
   nlohmann::ordered_json out;
-  for (const Field& field : verification_fields(v)) out[field.key] = field.value;
+  for (const Field& field : verification_fields(v)) {
+    out[field.key] = field.value;
+    if (field.key == std::string("A_deg")) out[pin_angle_column] = v.pin_angle_deg;  // the release's angles together
+  }
   const Verification::EnergyBudget& e = v.energy;
   out["energy"] = {{"delta_U", e.delta_U},
                    {"projectile", e.projectile},

@@ -77,6 +77,8 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   Engine engine = record.engine;
   engine.material = check.material.over(engine.material);
   if (record.mb_from_D) engine.mb = wood_beam_mass(engine);  // in the wood of the run
+  ShotSettings settings = check.settings;  // the run's release over the design's own
+  if (!settings.release_at) settings.release_at = record.release_at;
   DesignReport out;
   nlohmann::ordered_json simulated;
   std::string fitted_table;
@@ -92,18 +94,18 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
     fitted_table = "fitted engine (" + std::to_string(result.simulations) + " shots):\n" + engine_table(engine, check.units);
   }
   std::vector<TracePoint> trace;
-  const Verification v = verify_engine(engine, check.settings, check.series_path.empty() ? nullptr : &trace, check.series_dt_s);
+  const Verification v = verify_engine(engine, settings, check.series_path.empty() ? nullptr : &trace, check.series_dt_s);
   std::optional<CapacityCheck> capacity;
   if (record.capacity) capacity = check_capacity(v, *record.capacity, check.tolerance);
   out.json = verification_json(v, capacity);
-  out.table = fitted_table + verification_table(engine, check.settings, v, capacity, check.units);
-  if (check.csv) out.csv = verification_csv_row(engine, check.settings, v, capacity, check.csv_digits);
+  out.table = fitted_table + verification_table(engine, settings, v, capacity, check.units);
+  if (check.csv) out.csv = verification_csv_row(engine, settings, v, capacity, check.csv_digits);
   // The engine simulated (for fit, the fitted one, with its shots) and what the shot assumed.
   nlohmann::ordered_json engine_json;
   write_engine(engine_json, engine);
   if (check.fit) engine_json.update(simulated);
   out.json["engine"] = engine_json;
-  out.json["assumptions"] = assumptions_json(engine, check.settings);
+  out.json["assumptions"] = assumptions_json(engine, settings);
   if (!record.passed.empty()) {  // the design's keys no reader knows, as given
     out.json["passed"] = record.passed;
     std::vector<std::string> keys;
@@ -111,7 +113,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
     out.table += "passed through, not read: " + join(keys, ", ") + "\n";
   }
   if (!check.plot_dir.empty())
-    write_picture_folder(check.plot_dir, shot_pictures(engine, check.settings, v, out.json, check.units), picture_scripts(), check.inputs);
+    write_picture_folder(check.plot_dir, shot_pictures(engine, settings, v, out.json, check.units), picture_scripts(), check.inputs);
   if (!check.series_path.empty()) write_output_file(check.series_path, trace_csv(trace, engine), "series");
   out.outside_tolerance = capacity && !capacity->pass;
   out.engine = engine;

@@ -344,24 +344,87 @@ void trace_released(const Machine& dynamics, const ScaledDesign& e, const Integr
   }
 }
 
-// The range the release maximises under Release::range: in vacuum from the pivot to level 0
-// (the paper's), else through the criterion's drag, or Denny's, from the release point to where
-// the flight dips below the release height (section 6.3); 0 where the flight never comes down.
+// The range the release maximises under Release::range: in vacuum from the pivot to the
+// criterion's target level (level 0 is the paper's), else through the criterion's drag, or
+// Denny's, from the release point to where the flight dips below the release height (section
+// 6.3); 0 where the flight never comes down to its end.
 double objective_range(const ReleasePoint& r, const ReleaseCriterion& criterion) {
-  if (!criterion.drag && !criterion.range_from_release) return r.range;
-  const double drop = criterion.range_from_release ? 0 : r.height;
+  if (!criterion.drag && !criterion.range_from_release && criterion.target_level == 0) return r.range;
+  const double drop = criterion.range_from_release ? 0 : r.height - criterion.target_level;
   double range = 0;
   if (criterion.drag) {
     const auto end = fly(r.position, r.velocity, drop, *criterion.drag, 1);
     if (!end) return 0;
     range = end->range;
   } else {
+    if (!(r.velocity.y * r.velocity.y + 2 * drop > 0)) return 0;  // the target level lies above the apex
     range = vacuum_range(r.position, r.velocity, drop, 1);
   }
-  return criterion.range_from_release ? range + r.position.x : range;
+  range = criterion.range_from_release ? range + r.position.x : range;
+  return std::max(range, 0.0);
+}
+
+// The angle a moved by whole turns to within half a turn of `near` [rad].
+double unwrapped_near(double a, double near) { return near + std::remainder(a - near, 2 * M_PI); }
+
+// What a given release watches at scaled time t: how far it is still ahead of the release,
+// positive before it and falling through 0 there. The angles are unwrapped near `near` [rad],
+// so that they run on continuously through the throw.
+double watched_value(ReleaseBy by, double t, const Snapshot& s, double near) {
+  switch (by) {
+    case ReleaseBy::time: return t;
+    case ReleaseBy::velocity_angle: return unwrapped_near(velocity_angle(s), near);
+    case ReleaseBy::pin_angle: return unwrapped_near(pin_angle(s), near);
+  }
+  return t;
+}
+double ahead_of(const GivenRelease& given, double watched) { return given.by == ReleaseBy::time ? given.value - watched : watched - given.value; }
+
+// A watched value as the user gives it: seconds or degrees.
+std::string shown(const GivenRelease& given, double watched) {
+  return given.by == ReleaseBy::time ? format_significant(watched * given.time_unit, 5) + " s" : format_significant(degrees(watched), 5) + " deg";
+}
+
+// What a given release saw over phase II: its value at lift-off and its extremes after, and
+// the values at which the projectile would fly forward.
+struct ReleaseWatch {
+  double at_liftoff = 0, last = 0, lowest = 0, highest = 0;
+  double forward_lo = INFINITY, forward_hi = -INFINITY;
+  std::optional<std::size_t> crossed;  // the first sample past the release
+  double near = 0;  // the value at the sample before it, which the root's values are unwrapped near
+  bool forward_ended = false;  // the values are those of the first forward stretch only
+  void add(double value, bool forward) {
+    last = value, lowest = std::min(lowest, value), highest = std::max(highest, value);
+    if (forward && !forward_ended) forward_lo = std::min(forward_lo, value), forward_hi = std::max(forward_hi, value);
+    forward_ended = forward_ended || (!forward && forward_lo <= forward_hi);
+  }
+};
+
+// Error(bad_number) for a given release that does not come after lift-off, or that throws the
+// projectile backward, naming the values that do occur (docs/verifier.md, "A given release").
+[[noreturn]] void refuse_given_release(const GivenRelease& given, const ReleaseWatch& watch, const std::string& what) {
+  static const char* names[] = {"{{release_time}}", "{{release_angle}}", "{{pin_angle}}"};
+  static const char* quantities[] = {"the time", "the projectile's velocity angle", "the pin angle"};
+  const int k = static_cast<int>(given.by);
+  const bool rises = given.by == ReleaseBy::time;
+  std::string message = std::string(names[k]) + " = " + shown(given, given.value) + ": " + what + "; after lift-off " + quantities[k] +
+      " runs from " + shown(given, watch.at_liftoff) + " to " + shown(given, rises ? watch.highest : std::max(watch.lowest, -M_PI));
+  if (watch.forward_lo <= watch.forward_hi)
+    message += ", and the projectile flies forward for values from about " + shown(given, rises ? watch.forward_lo : watch.forward_hi) + " to " +
+        shown(given, rises ? watch.forward_hi : watch.forward_lo);
+  else
+    message += ", and no release in it throws the projectile forward";
+  throw Error(ErrorKind::bad_number, message);
 }
 
 }  // namespace
+
+double velocity_angle(const Snapshot& s) { return std::atan2(s.projectile_velocity.y, -s.projectile_velocity.x); }
+
+double pin_angle(const Snapshot& s) {
+  const Vec2 arm = s.tip, sling{s.projectile.x - s.tip.x, s.projectile.y - s.tip.y};
+  return std::atan2(-(arm.x * sling.y - arm.y * sling.x), arm.x * sling.x + arm.y * sling.y);
+}
 
 std::array<double, load_count> load_values(const Snapshot& s) {
   return {s.sling_tension, std::hypot(s.hinge_force.x, s.hinge_force.y), force_values(s)[pivot_reaction], std::abs(s.beam_moment)};
@@ -381,6 +444,8 @@ ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criter
   r.efficiency = efficiency(r.energy_at_target, e.energy_drop());
   r.extremes = extremes;
   r.force_factor = force_factor(extremes, e.mu);
+  r.velocity_angle = velocity_angle(snap);
+  r.pin_angle = pin_angle(snap);
   if (r.range > 0) {
     r.quality = quality(r.range, e.l, e.mu, r.efficiency, r.force_factor, criterion.n);
     switch (criterion.release) {
@@ -501,28 +566,61 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   };
   auto point_at = [&](double time) { return point_from(time, phase2.y_at(time)); };
   // The objective at every step end of phase II, in the order of the samples.
-  std::vector<double> sampled{point_at(t).objective};
+  const ReleasePoint at_liftoff = point_at(t);
+  std::vector<double> sampled{at_liftoff.objective};
   double best_quality = sampled.front();
+  // A given release watches its value from lift-off on; one already past there would release in the trough.
+  const std::optional<GivenRelease>& given = criterion.given;
+  ReleaseWatch watch;
+  bool given_in_trough = false;
+  if (given) {
+    watch.at_liftoff = watch.lowest = watch.highest = watched_value(given->by, t, lift_snapshot, M_PI / 2);
+    watch.add(watch.at_liftoff, at_liftoff.range > 0);
+    given_in_trough = !(ahead_of(*given, watch.at_liftoff) > 0);
+  }
   h = 1e-3;
-  while (true) {
+  // One step of phase II; whether the shot ends there: the beam has turned over, or friction
+  // has stopped it (it would hold it there) or holds it at round-off, or the time is out. A given
+  // release must come in the beam's forward swing: its range ends where the beam stops turning.
+  const auto step_ends_shot = [&]() {
     if (!lifted.step(t, y.data(), settings.max_time, h))
       fail(lifted.friction_unsettled() ? unsettled_friction : "integrator failure in phase II; tighten {{rtol}} or choose another {{stepper}}");
     const State s = lifted.state(y);
     const bool axle_holds = count_step("phase II", s);
     snap = dynamics.snapshot(Phase::lifted, s);
     track_energy(snap, lifted.work(y));
-    const double quality_here = release_point(e, criterion, t, s, snap, phase2.samples().back().extremes).objective;
+    const ReleasePoint here = release_point(e, criterion, t, s, snap, phase2.samples().back().extremes);
     phase2.add(lifted.step_end(t, y, snap), snap);
-    sampled.push_back(quality_here);
-    best_quality = std::max(best_quality, quality_here);
-    // Past the maximum: the objective has fallen to half of it, or the beam has turned over, or
-    // friction has stopped it (it would hold it there), or holds it at round-off.
-    if ((best_quality > 0 && quality_here < 0.5 * best_quality) || s.theta > dynamics.theta_i() + 2 * M_PI || t >= settings.max_time ||
-        (dynamics.dissipates() && !(s.theta_dot > 0)) || axle_holds)
-      break;
+    sampled.push_back(here.objective);
+    best_quality = std::max(best_quality, here.objective);
+    if (given) {
+      const double before = watch.last;
+      watch.add(watched_value(given->by, t, snap, before), here.range > 0);
+      if (!given_in_trough && !watch.crossed && !(ahead_of(*given, watch.last) > 0)) watch.crossed = phase2.samples().size() - 1, watch.near = before;
+    }
+    // An angle below -180 deg has passed every value it could be given.
+    const bool angle_spent = given && given->by != ReleaseBy::time && watch.last < -M_PI;
+    return s.theta > dynamics.theta_i() + 2 * M_PI || t >= settings.max_time || ((given || dynamics.dissipates()) && !(s.theta_dot > 0)) ||
+        axle_holds || angle_spent;
+  };
+  // Past the release: the objective has fallen to half its maximum, or two steps past a given
+  // release, so that the running extremes of eq:F before it are refined as an optimum's are.
+  const auto past_release = [&]() {
+    if (given) return watch.crossed && phase2.samples().size() > *watch.crossed + 2;
+    return best_quality > 0 && sampled.back() < 0.5 * best_quality;
+  };
+  while (!step_ends_shot() && !past_release()) {
   }
+  // A given release that cannot be made is refused with the values the whole swing runs through.
+  const auto refuse_given = [&](const std::string& what) {
+    while (!step_ends_shot()) {
+    }
+    refuse_given_release(*given, watch, what);
+  };
+  if (given_in_trough) refuse_given("the release would come before lift-off, with the projectile still in the trough");
+  if (given && !watch.crossed) refuse_given("the release never comes: the beam's forward swing ends first");
   const std::string no_forward_release = "no release sends the projectile forward: over phase II it never flies toward the target";
-  if (!(best_quality > 0)) fail(no_forward_release);
+  if (!given && !(best_quality > 0)) fail(no_forward_release);
   if (result.energy_drift > settings.max_energy_drift)
     fail("energy drift " + format_significant(result.energy_drift, 3) + " of Delta U exceeds " + format_significant(settings.max_energy_drift, 3) +
          "; tighten {{rtol}} or choose another {{stepper}}");
@@ -536,37 +634,60 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   // step end between them). An onset higher than every candidate so far is searched too, within
   // its step.
   const auto& samples = phase2.samples();
-  const auto objective = [&](double time) { return point_at(time).objective; };
-  const std::size_t last = samples.size() - 1;
-  // The onsets of phase II; none is sought in a step whose ends both have the objective at 0,
-  // where the projectile would not fly forward.
-  std::vector<PhaseRecord::Onset> onsets_ii;
-  for (std::size_t j = 0; j < last; ++j)
-    if (sampled[j] > 0 || sampled[j + 1] > 0)
-      for (const auto& onset : phase2.growth_onsets(samples[j].t, samples[j + 1].t)) onsets_ii.push_back(onset);
-  Candidate found{samples.front().t, 0, std::nullopt};
-  auto search = [&](std::size_t first, std::size_t end) {
-    std::vector<double> scan;
-    for (std::size_t i = first + 1; i < end; ++i) scan.push_back(samples[i].t);
-    const Candidate c = release_time(objective, samples[first].t, samples[end].t, scan, onsets_ii);
-    if (c.value > found.value) found = c;
+  const auto optimal_release = [&]() {
+    const auto objective = [&](double time) { return point_at(time).objective; };
+    const std::size_t last = samples.size() - 1;
+    // The onsets of phase II; none is sought in a step whose ends both have the objective at 0,
+    // where the projectile would not fly forward.
+    std::vector<PhaseRecord::Onset> onsets_ii;
+    for (std::size_t j = 0; j < last; ++j)
+      if (sampled[j] > 0 || sampled[j + 1] > 0)
+        for (const auto& onset : phase2.growth_onsets(samples[j].t, samples[j + 1].t)) onsets_ii.push_back(onset);
+    Candidate found{samples.front().t, 0, std::nullopt};
+    auto search = [&](std::size_t first, std::size_t end) {
+      std::vector<double> scan;
+      for (std::size_t i = first + 1; i < end; ++i) scan.push_back(samples[i].t);
+      const Candidate c = release_time(objective, samples[first].t, samples[end].t, scan, onsets_ii);
+      if (c.value > found.value) found = c;
+    };
+    for (std::size_t i = 0; i <= last; ++i) {
+      const bool peak = (i == 0 || sampled[i] >= sampled[i - 1]) && (i == last || sampled[i] >= sampled[i + 1]);
+      if (peak && sampled[i] > 0) search(i > 0 ? i - 1 : 0, std::min(i + 1, last));
+    }
+    for (const auto& onset : onsets_ii) {
+      if (!(objective(onset.t) > found.value)) continue;
+      const std::size_t step_start = phase2.base_of(onset.t);
+      search(step_start, std::min(step_start + 1, last));
+    }
+    // Sampled values within round-off of 0 can leave no candidate with the objective above it.
+    if (!(found.value > 0)) fail(no_forward_release);
+    return found;
   };
-  for (std::size_t i = 0; i <= last; ++i) {
-    const bool peak = (i == 0 || sampled[i] >= sampled[i - 1]) && (i == last || sampled[i] >= sampled[i + 1]);
-    if (peak && sampled[i] > 0) search(i > 0 ? i - 1 : 0, std::min(i + 1, last));
+  // A given release is the root of its watched value on the continuous solution, within the step
+  // it was crossed in, each value integrated anew from the step's start (y_exact_at).
+  const auto given_release = [&]() {
+    if (given->by == ReleaseBy::time) return given->value;
+    const std::size_t i = *watch.crossed;
+    const auto ahead = [&](double time) {
+      const State s = lifted.state(phase2.y_exact_at(time));
+      return ahead_of(*given, watched_value(given->by, time, dynamics.snapshot(Phase::lifted, s), watch.near));
+    };
+    return find_root(ahead, samples[i - 1].t, samples[i].t, 1e-13, 0);
+  };
+  double t_release = 0;
+  if (given) {
+    t_release = given_release();
+  } else {
+    const Candidate found = optimal_release();
+    t_release = found.t;
+    result.release_at_growth_of = found.at_onset;
   }
-  for (const auto& onset : onsets_ii) {
-    if (!(objective(onset.t) > found.value)) continue;
-    const std::size_t step_start = phase2.base_of(onset.t);
-    search(step_start, std::min(step_start + 1, last));
-  }
-  // Sampled values within round-off of 0 can leave no candidate with the objective above it.
-  if (!(found.value > 0)) fail(no_forward_release);
-  const double t_release = found.t;
-  result.release_at_growth_of = found.at_onset;
   const OdeVector y_release = phase2.y_exact_at(t_release);
   result.release = point_from(t_release, y_release);
   result.work = lifted.work(y_release);
+  if (given && !(result.release.range > 0))
+    refuse_given("released there, the projectile does not fly forward from above the engine's base (its velocity angle is " +
+                 format_significant(degrees(result.release.velocity_angle), 4) + " deg)");
   // Only what happens before the release invalidates the shot.
   auto before_release = [&](const std::optional<double>& t) { return t && *t <= t_release ? t : std::nullopt; };
   result.slack_sling = before_release(onsets[0]);

@@ -22,6 +22,7 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   out.x = -behind;
   out.A_deg = degrees(std::atan2(vy, -vx));
   out.theta_release_deg = degrees(r.state.theta);
+  out.pin_angle_deg = degrees(r.pin_angle);
   const double drop = out.h - target_level;  // release to target level [m]
   const double apex = out.h + (vy > 0 ? vy * vy / (2 * g) : 0);  // highest point of the flight above the base [m]
   if (!(target_level <= apex))
@@ -126,12 +127,25 @@ void check_shot_settings(const ShotSettings& settings) {
   // eq:Q_n asks n >= 0. Beyond max_quality_exponent, eps^n of an engine's eps (0.5 to 0.98)
   // falls below 1e-6 or flattens Q_n to round-off, and no release or design is preferred.
   check_ordinary(settings.criterion.n, 0, max_quality_exponent, "n", "", "exponent of eps in eq:Q_n");
+  if (const auto& at = settings.release_at) {
+    if (at->by == ReleaseBy::time)
+      check_ordinary(at->value, 1e-9, 1e6, "release_time", "s", "release time after the start");
+    else
+      check_ordinary(
+          at->value, -180, 180, at->by == ReleaseBy::pin_angle ? "pin_angle" : "release_angle", "deg",
+          at->by == ReleaseBy::pin_angle ? "pin angle between the long arm and the sling" : "projectile's velocity angle above the horizontal");
+  }
 }
 
 ReleaseCriterion release_criterion(const Engine& engine, const ShotSettings& settings) {
   ReleaseCriterion criterion = settings.criterion;
   if (settings.air) criterion.drag = scaled(drag_of(*settings.air, engine.m), engine.L2, engine.material.g);
   criterion.range_from_release = settings.range_from_release;
+  criterion.target_level = settings.target_level / engine.L2;
+  if (const auto& at = settings.release_at) {
+    const double time_unit = std::sqrt(engine.L2 / engine.material.g);  // section 3 [s]
+    criterion.given = GivenRelease{at->by, at->by == ReleaseBy::time ? at->value / time_unit : radians(at->value), time_unit};
+  }
   return criterion;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include "trebuchet/air.hpp"
 #include "trebuchet/dynamics.hpp"
@@ -19,8 +20,24 @@ enum class Release { quality, efficiency, range };
 /// tab:SketchBook-I uses 0 to 5.
 inline constexpr double max_quality_exponent = 20;
 
+/// A release the user sets instead of an optimum: by the time after the start (t = 0 when the
+/// beam leaves rest at theta_i), by the projectile's velocity angle above the horizontal toward
+/// the target, or by the pin angle from the long arm (pivot to tip) to the sling (tip to
+/// projectile). Each is the first crossing after lift-off: the time rising to the value, an
+/// angle falling to it (docs/verifier.md, "A given release").
+enum class ReleaseBy { time, velocity_angle, pin_angle };
+struct GivenRelease {
+  ReleaseBy by = ReleaseBy::time;
+  double value = 0;  ///< scaled time, or [rad]
+  double time_unit = 1;  ///< [s] per scaled time: the messages give seconds
+};
+
 struct ReleaseCriterion {
   Release release = Release::quality;
+  /// A release set by the user: the shot releases there, and `release` only names what Q is.
+  std::optional<GivenRelease> given;
+  /// For Release::range: the level the range is measured at, above the engine's base (scaled, in L2).
+  double target_level = 0;
   double n = 1;  ///< exponent of eps in eq:Q_n; Q is reported with it whatever the release
   /// For Release::range: the drag the range is flown through (scaled, air.hpp; none: vacuum),
   /// and whether the range is Denny's, from the release point to where the flight dips below

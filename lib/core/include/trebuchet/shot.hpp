@@ -30,7 +30,17 @@ struct ReleasePoint {
   double force_factor = 0;  ///< F of eq:F
   double quality = 0;  ///< Q of eq:Q or eq:Q_n, at level 0
   double objective = 0;  ///< what the release maximises: Q, eps or the range
+  double velocity_angle = 0;  ///< of the projectile above the horizontal toward the target [rad], in (-pi, pi]
+  double pin_angle = 0;  ///< from the long arm (pivot to tip) to the sling (tip to projectile) [rad], in (-pi, pi]
 };
+
+/// The projectile's velocity angle above the horizontal toward the target (-x) [rad], in (-pi, pi].
+double velocity_angle(const Snapshot& snapshot);
+
+/// The pin angle [rad], in (-pi, pi]: from the long arm (pivot to tip) to the sling (tip to
+/// projectile), positive while the sling trails the arm; the geometric angle between them
+/// while positive (it starts obtuse, eq:InitialConditions, and closes through the throw).
+double pin_angle(const Snapshot& snapshot);
 
 /// The figures of a release at scaled time t from state s (with its snapshot), given the running
 /// extremes of eq:F before t; the objective follows the criterion. Q (or Q_n), the range and the

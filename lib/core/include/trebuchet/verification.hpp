@@ -14,9 +14,17 @@
 
 namespace trebuchet {
 
+/// A release the user sets (quality.hpp, GivenRelease), as given: the time after the start [s],
+/// or the velocity or pin angle [deg].
+struct SetRelease {
+  ReleaseBy by = ReleaseBy::time;
+  double value = 0;  ///< [s] or [deg]
+};
+
 struct ShotSettings {
   double target_level = 0;  ///< target height relative to the engine's base [m], e.g. -54
-  ReleaseCriterion criterion{};
+  ReleaseCriterion criterion{};  ///< the optimum's criterion; its given release and target level follow from the fields here (release_criterion)
+  std::optional<SetRelease> release_at;  ///< none: the release is the criterion's optimum
   IntegratorSettings integrator{};
   std::optional<Air> air;  ///< none: vacuum (the paper's, and the default)
   /// Denny's range (section 6.3): from the release point to where the flight dips below the
@@ -35,8 +43,9 @@ struct ShotSettings {
 /// the air before the release when the settings ask for it (BuiltParts::drag, rope_drag).
 ScaledDesign shot_design(const Engine& engine, const ShotSettings& settings);
 
-/// Refuses settings no shot can run under: check_integrator, check_air, and a target level
-/// beyond 1e6 m either way ({{target_level}}). Searches that try many shots call it first, so
+/// Refuses settings no shot can run under: check_integrator, check_air, a target level
+/// beyond 1e6 m either way ({{target_level}}), a release time outside 1e-9 to 1e6 s
+/// ({{release_time}}) and a release angle outside -180 to 180 deg ({{release_angle}}, {{pin_angle}}). Searches that try many shots call it first, so
 /// that bad settings are reported as such, not as engines that failed.
 void check_shot_settings(const ShotSettings& settings);
 
@@ -51,7 +60,8 @@ struct Verification {
   double v = 0;  ///< release speed [m/s]
   double h = 0;  ///< release height above the base [m]
   double x = 0;  ///< release position from the pivot toward the target, as on the site (report.hpp): < 0 behind the pivot [m]
-  double A_deg = 0;  ///< initial climb [deg]
+  double A_deg = 0;  ///< initial climb: the velocity angle at the release [deg]
+  double pin_angle_deg = 0;  ///< the pin angle at the release, from the long arm to the sling (shot.hpp) [deg]
   double theta_release_deg = 0;  ///< beam angle at release from the downward vertical [deg]; 180 is upright (section 6.2: below it, lower branch)
   double t_release = 0;  ///< [s]
   double t_liftoff = 0;  ///< [s]
@@ -96,7 +106,8 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
                              bool range_from_release = false);
 
 /// The release criterion of a shot of `engine` under `settings`: under Release::range it
-/// maximises the range as the settings define it, in their air and from where they measure.
+/// maximises the range as the settings define it, in their air, from where they measure and to
+/// their target level; with release_at it releases there instead (scaled).
 ReleaseCriterion release_criterion(const Engine& engine, const ShotSettings& settings);
 
 /// The most points a series sampled every trace_dt_s may hold (about 100 MB of CSV).

@@ -11,6 +11,7 @@
 
 #include "trebuchet/capacity.hpp"
 #include "trebuchet/engine.hpp"
+#include "trebuchet/verification.hpp"
 #include "trebuchet/app/fields.hpp"
 #include "trebuchet/app/units.hpp"
 
@@ -21,6 +22,7 @@ struct EngineRecord {
   Engine engine;
   std::optional<Capacity> capacity;  ///< "R" and "T", both or neither (level 0)
   bool mb_from_D = false;  ///< mb was not given: it follows from D and the wood (eq:BeamMass)
+  std::optional<SetRelease> release_at;  ///< the release its builder set (release_time, release_angle_deg or pin_angle_deg)
   nlohmann::json passed = nlohmann::json::object();  ///< the keys no reader knows, as given: an answer names them
 };
 
@@ -42,6 +44,11 @@ DesignValues read_design_values(const nlohmann::json& object, const std::string&
 /// Refuses `key`, which no reader of `known` takes, when it is near one of them:
 /// 'where: unknown key "theta_i"; did you mean "theta_i_deg"?' (Error(usage)).
 void refuse_near_miss(const std::string& key, const std::vector<std::string>& known, const std::string& where);
+
+/// The release that a design's values set, by time, velocity angle or pin angle; none when they
+/// set none. Throws Error(usage) for more than one, Error(bad_number) for a value out of range,
+/// naming the keys as engine_record does.
+std::optional<SetRelease> release_of(const DesignValues& values, const std::string& where);
 
 /// The engine of a design's values: L3, or F = (L2 + L3)/H, theta_i 30 deg unless given, the
 /// material of eq:kMkD where not given; checked (check_engine). `where` names the design in

@@ -34,9 +34,9 @@ enum Operation : unsigned {
 
 /// What an input describes: the engine's values of eq:Parameters and its initial angles; a value
 /// that stands in for one of them (F for L3, D for mb, Lb, H and l for L1 and L2); the material;
-/// a capacity; or a part of the engine as built. A Monte Carlo run may spread all but the
-/// material and the capacity.
-enum class FieldGroup { engine, alternative, material, capacity, part };
+/// a capacity; a release the builder sets; or a part of the engine as built. A Monte Carlo run
+/// may spread all but the material and the capacity.
+enum class FieldGroup { engine, alternative, material, capacity, release, part };
 
 struct InputField {
   std::optional<double> DesignValues::*member;

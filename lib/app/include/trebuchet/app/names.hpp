@@ -15,6 +15,9 @@ namespace trebuchet {
 /// "Q", "eps" or "range".
 std::string release_name(Release release);
 
+/// "time", "velocity_angle" or "pin_angle": how a given release is set.
+std::string release_by_name(ReleaseBy by);
+
 /// The release criterion of a name; Error(usage) names `option`, the text and the choices.
 Release parse_release(std::string_view name, std::string_view option);
 

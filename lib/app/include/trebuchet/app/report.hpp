@@ -37,6 +37,9 @@ std::string describe_assumptions(const Engine& engine, const ShotSettings& setti
 /// Its release rule and target level (or Denny's range) alone.
 std::string describe_release(const ShotSettings& settings);
 
+/// A given release in words: "the pin angle 40 deg".
+std::string describe_given_release(const SetRelease& release);
+
 /// Two indented lines with units: Lb, H and the lengths; the masses and D.
 std::string engine_table(const Engine& engine, UnitSystem units = UnitSystem::si);
 
