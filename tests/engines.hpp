@@ -36,6 +36,16 @@ inline Engine denny_standard() {
   return e;
 }
 
+/// The laboratory engine of arXiv 2502.19442, as the peer Trebuchator takes its dimensions from
+/// the paper: the beam as built (4.86 kg, its centre of mass 0.465 m toward the tip, 1.85 kg m2
+/// about the pivot) and the 717 g projectile (the light shot's is 68.5 g).
+inline Engine laboratory_engine(double m = 0.717) {
+  Engine e;
+  e.L1 = 0.975, e.L2 = 0.25, e.L3 = 0.515, e.L4 = 0.87, e.theta_i_deg = 31.513, e.M = 53.9, e.m = m, e.mb = 4.86;
+  e.parts.beam_cm = 0.465, e.parts.beam_inertia = 1.85;
+  return e;
+}
+
 /// A scaled design given by L = L3/L2 rather than F, as appendix A writes the equations.
 inline ScaledDesign design_with_L(double l, double l4, double L, double mu, double mu_b, double theta_i_deg) {
   return {l, l4, mu_b, mu, theta_i_deg, (L + 1) / (l * std::cos(radians(theta_i_deg)))};

@@ -200,12 +200,12 @@ class Reference {
  public:
   explicit Reference(const Design& d) : p_(params_of(d)), trough_(p_, true), lifted_(p_, false) {}
 
-  Shot shoot() {
+  // The motion up to where Q has fallen to half its best, and the running extremes of eq:F.
+  void run() {
     run_phase_one();
     run_phase_two();
     refine_peaks();
     build_running();
-    return release();
   }
 
  private:
@@ -357,6 +357,7 @@ class Reference {
     return quality(p_, m.projectile, extremes).derivatives()(0);
   }
 
+ public:
   // The release, sought over the whole of phase II, independently of where any sample is
   // highest (issue 26): every onset of growth of a running extreme (a force below its extreme at
   // one grid point that passes it by the next, or at a refined peak between them; bisection on
@@ -412,6 +413,38 @@ class Reference {
       const Evaluation e = evaluate(t);
       if (e.q > at.q) t_release = t, at = e;
     }
+    Shot shot = figures(t_release, at);
+    for (const auto& onset : onsets)
+      if (onset.first == t_release) shot.onset = onset.second;
+    return shot;
+  }
+
+  // The release where the projectile's velocity angle above the horizontal toward the target,
+  // atan2(vy, -vx), falling, first reaches alpha after lift-off: the grid interval where it
+  // passes alpha (unwrapped from one grid point to the next), then bisection on it.
+  Shot release_at_velocity_angle(double alpha) {
+    const auto angle_at = [&](double t, double near) {
+      const Vec2<double> v = lifted_.motion_at(state_at(t)).projectile.velocity;
+      return near + std::remainder(std::atan2(v(1), -v(0)) - near, 2 * M_PI);
+    };
+    double previous = angle_at(two_.front().t, M_PI / 2);
+    for (std::size_t j = 1; j < two_.size(); ++j) {
+      const double here = angle_at(two_[j].t, previous);
+      if (previous > alpha && !(here > alpha)) {
+        double x = two_[j - 1].t, z = two_[j].t;
+        for (int n = 0; n < bisections; ++n) {
+          const double mid = (x + z) / 2;
+          (angle_at(mid, previous) > alpha ? x : z) = mid;
+        }
+        return figures(z, evaluate(z));
+      }
+      previous = here;
+    }
+    throw std::runtime_error("reference: the velocity angle is not reached before Q falls to half its best");
+  }
+
+ private:
+  Shot figures(double t_release, const Evaluation& at) const {
     Shot shot{};
     shot.t_liftoff = t_liftoff_, shot.t_release = t_release;
     const Point<double>& pr = at.m.projectile;
@@ -422,8 +455,6 @@ class Reference {
     shot.tau_e = p_.mu * (shot.speed * shot.speed / 2 + shot.height);
     shot.eps = shot.tau_e / p_.energy_drop;
     shot.Q = at.q;
-    for (const auto& onset : onsets)
-      if (onset.first == t_release) shot.onset = onset.second;
     return shot;
   }
 
@@ -448,7 +479,16 @@ class Reference {
 
 Shot shoot(const Design& design) {
   gsl_set_error_handler_off();
-  return Reference(design).shoot();
+  Reference reference(design);
+  reference.run();
+  return reference.release();
+}
+
+Shot shoot_at_velocity_angle(const Design& design, double angle_deg) {
+  gsl_set_error_handler_off();
+  Reference reference(design);
+  reference.run();
+  return reference.release_at_velocity_angle(angle_deg * M_PI / 180);
 }
 
 }  // namespace reference

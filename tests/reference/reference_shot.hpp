@@ -31,4 +31,10 @@ struct Shot {
 /// Shoots `design`; throws std::runtime_error when it has no lift-off or no forward release.
 Shot shoot(const Design& design);
 
+/// Shoots `design` released where the projectile's velocity angle above the horizontal toward
+/// the target, falling, first reaches angle_deg after lift-off (the library's release_angle_deg);
+/// its Q uses the running extremes up to there. Throws std::runtime_error when it is not reached
+/// before Q falls to half its best.
+Shot shoot_at_velocity_angle(const Design& design, double angle_deg);
+
 }  // namespace reference
