@@ -118,7 +118,7 @@ std::string scene_of(const ShotSettings& settings) {
 
 }  // namespace
 
-std::vector<std::string> picture_scripts() { return {"engine.gp", "paths.gp", "forces.gp", "energy.gp", "release.gp", "animation.gp"}; }
+std::vector<std::string> picture_scripts() { return {"engine.gp", "paths.gp", "forces.gp", "energy.gp", "release.gp", "pin.gp", "animation.gp"}; }
 
 std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings, const Verification& verification,
                                        const nlohmann::ordered_json& report, UnitSystem units) {
@@ -307,7 +307,28 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
              "so far'\n";
   files.push_back({"release.gp", release.str()});
 
-  // 6. The animation: one frame every second sample of the engine, played at 4 % of real speed
+  // 6. The pin: R and Q of the releases at pin angles 20 deg either side of this shot's, each
+  // over its value here; a builder reads how exactly the pin must be bent.
+  std::vector<double> pins;
+  for (int k = -20; k <= 20; ++k) pins.push_back(v.pin_angle_deg + k);
+  std::ostringstream pin_csv;
+  pin_csv << "pin_angle_deg,R_m,Q\n";
+  for (const PinShot& shot : pin_scan(engine, settings, pins))
+    pin_csv << num(shot.pin_angle_deg) << "," << (shot.R ? num(*shot.R) : "NaN") << "," << (shot.Q ? num(*shot.Q) : "NaN") << "\n";
+  files.push_back({"pin.csv", pin_csv.str()});
+  std::ostringstream pin;
+  pin << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'pin.svg'")
+      << "set xlabel 'pin angle between the long arm and the sling at the release [deg]'\nset ylabel 'R [m]'\nset y2label 'Q [%]'\n"
+      << "set ytics nomirror\nset y2tics\nset key below\n"
+      << warnings << "set title \"The pin: a release at each pin angle; this shot's, " << format_significant(v.pin_angle_deg, 4) << "°, is marked\\n"
+      << gnuplot_quoted(scene) << "\" noenhanced\n"
+      << "set arrow from " << num(v.pin_angle_deg) << ", graph 0 to " << num(v.pin_angle_deg) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
+      << "set label 'this shot' at " << num(v.pin_angle_deg) << ", graph 0.95 offset 0.3,0\n"
+      << "plot 'pin.csv' every ::1 using 1:2 with linespoints lw 2 pt 7 ps 0.5 title 'R' axes x1y1, \\\n"
+      << "     '' every ::1 using 1:($3*100) with linespoints lw 2 pt 7 ps 0.5 title 'Q' axes x1y2\n";
+  files.push_back({"pin.gp", pin.str()});
+
+  // 7. The animation: one frame every second sample of the engine, played at 4 % of real speed
   // or slower, the stone flying on after the release; then the whole flight to its end, zoomed
   // out, at about real speed.
   const std::size_t stride = 2;
@@ -377,7 +398,8 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
       {"paths.svg", "the paths and the flight"},
       {"forces.svg", "the forces up to the release"},
       {"energy.svg", "where the energy goes"},
-      {"release.svg", "why the release is where it is"}};
+      {"release.svg", "why the release is where it is"},
+      {"pin.svg", "R and Q against the pin angle"}};
   for (const auto& [file, what] : pictures) html << "<li><a href=\"" << file << "\">" << file << "</a>: " << what << "</li>\n";
   html << "</ul><p>The data: <a href=\"shot.csv\">shot.csv</a> (every sample), <a href=\"release.csv\">release.csv</a>, <a "
           "href=\"flight.csv\">flight.csv</a>. "

@@ -106,6 +106,27 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   if (check.fit) engine_json.update(simulated);
   out.json["engine"] = engine_json;
   out.json["assumptions"] = assumptions_json(engine, settings);
+  if (!settings.release_at) {  // the pin to bend for this optimum, and what a degree or two of error costs
+    std::vector<double> pins;
+    for (double offset : pin_tolerance_offsets) pins.push_back(v.pin_angle_deg + offset);
+    nlohmann::ordered_json tolerance = nlohmann::ordered_json::array();
+    std::vector<std::string> lost;
+    for (const PinShot& shot : pin_scan(engine, settings, pins)) {
+      const double offset = shot.pin_angle_deg - v.pin_angle_deg;
+      const std::string signed_offset = (offset > 0 ? "+" : "") + format_significant(offset, 2) + " deg: ";
+      if (shot.R) {
+        const double change = *shot.R - v.capacity.R;
+        tolerance.push_back({{"pin_angle_deg", shot.pin_angle_deg}, {"R", *shot.R}, {"R_change", change}});
+        lost.push_back(signed_offset + (change > 0 ? "+" : "") + quantity_text(change, UnitDimension::length, check.units, 3));
+      } else {
+        tolerance.push_back({{"pin_angle_deg", shot.pin_angle_deg}, {"R", nullptr}, {"R_change", nullptr}});
+        lost.push_back(signed_offset + "no release");
+      }
+    }
+    out.json["pin_tolerance"] = tolerance;
+    out.table += "pin to bend for this release: " + format_significant(v.pin_angle_deg, 4) + " deg; R changes with the pin off by " +
+        join(lost, ", ") + "\n";
+  }
   if (!record.passed.empty()) {  // the design's keys no reader knows, as given
     out.json["passed"] = record.passed;
     std::vector<std::string> keys;

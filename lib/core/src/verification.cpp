@@ -182,6 +182,24 @@ Verification verify_engine(const Engine& engine, const ShotSettings& settings, s
   return verification_of(engine, shot, settings.target_level, settings.air, settings.range_from_release);
 }
 
+std::vector<PinShot> pin_scan(const Engine& engine, ShotSettings settings, const std::vector<double>& pins_deg) {
+  settings.loads = false;
+  check_shot_settings(settings);
+  std::vector<PinShot> out;
+  for (double pin : pins_deg) {
+    PinShot shot{pin, std::nullopt, std::nullopt};
+    settings.release_at = SetRelease{ReleaseBy::pin_angle, pin};
+    try {
+      const Verification v = verify_engine(engine, settings);
+      shot.R = v.capacity.R, shot.Q = v.Q;
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::bad_number && e.kind() != ErrorKind::numerical && e.kind() != ErrorKind::out_of_range) throw;
+    }
+    out.push_back(shot);
+  }
+  return out;
+}
+
 CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance) {
   // From a part in 10^12 (round-off of the shot) to a factor of 10^3.
   check_ordinary(tolerance, 1e-12, 1e3, "tol", "", "relative tolerance on the predicted R and T");

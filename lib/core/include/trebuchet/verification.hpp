@@ -119,6 +119,21 @@ inline constexpr double max_series_points = 1e6;
 /// refused (Error(bad_number), {{series_dt}}) before the series is drawn.
 Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace = nullptr, double trace_dt_s = 0);
 
+/// The shot of `engine` released at a given pin angle: its range (as the settings measure it)
+/// and Q, or none where that release cannot be made (in the trough, never reached, or backward).
+struct PinShot {
+  double pin_angle_deg = 0;  ///< [deg]
+  std::optional<double> R, Q;  ///< [m], scaled
+};
+
+/// The shots released at each of `pins_deg` [deg], without the builder's loads: how the range
+/// and Q change as the pin is bent (the best pin's tolerance, the chart of --plot). Bad settings
+/// are thrown as verify_engine throws them.
+std::vector<PinShot> pin_scan(const Engine& engine, ShotSettings settings, const std::vector<double>& pins_deg);
+
+/// The pin angles either side of an optimum's whose range loss a shot reports [deg].
+inline constexpr double pin_tolerance_offsets[] = {-2, -1, 1, 2};
+
 /// A predicted capacity (from the calculator, in vacuum as the paper's) against the shot's own
 /// in vacuum (R_vacuum, T_vacuum), whatever air the shot flew through.
 struct CapacityCheck {
