@@ -37,6 +37,7 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
     material_options(sub, o, "the design", !shot);
   }
   air_and_sampling_options(s.shot, o);
+  air_options(s.fit, o);
 
   s.calibrate = app.add_subcommand("calibrate",
                                    "fit an engine's friction to the range it was measured to throw (--measured 34.4m±1.5m), "
@@ -83,6 +84,7 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
   }
   integrator_options(opt, o);
   format_option(opt, o, false);
+  air_options(opt, o);
 
   CLI::App* derive = s.derive_table;
   sweep_options(derive, o);

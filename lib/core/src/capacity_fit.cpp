@@ -25,14 +25,44 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
   struct Trial {
     ShotResult shot;
     double L2, value;  // [m]; T [J] or m [kg]
+    std::optional<Verification> measured;  // the shot in SI, where the range is measured in air, to a target level or from the release
+  };
+  // In vacuum to level 0 from the pivot the range scales with the size: L2 = R/rho. Through
+  // air, to another level or from the release point it does not: the size is then solved for,
+  // by the secant method on log R against log L2 from that estimate (R grows about as L2), to
+  // 0.1 rtol of R, each step a shot measured as verify_engine measures it.
+  const bool scales = !settings.air && !settings.range_from_release && settings.target_level == 0;
+  auto measured_at = [&](double L2, bool find_loads) {
+    ShotSettings at = settings;
+    at.loads = find_loads;
+    ++fit.simulations;
+    return verify_engine(engine_of(design, L2, material), at);
   };
   auto trial = [&](double mu, bool find_loads = false) {
     design.mu = mu;
-    Trial out{simulate_shot(design, settings.criterion, settings.integrator, nullptr, 0, nullptr, find_loads), 0, 0};
+    Trial out{simulate_shot(design, settings.criterion, settings.integrator, nullptr, 0, nullptr, find_loads && scales), 0, 0, std::nullopt};
     ++fit.simulations;
     out.L2 = R / out.shot.release.range;
+    if (!scales) {
+      double log_L2 = std::log(out.L2), log_R = std::log(measured_at(out.L2, false).capacity.R), slope = 1;  // R about proportional to L2
+      for (int step = 0; step < 30 && !(std::abs(log_R - std::log(R)) <= 0.1 * rtol); ++step) {
+        const double next = log_L2 + (std::log(R) - log_R) / slope;
+        const double log_R_next = std::log(measured_at(std::exp(next), false).capacity.R);
+        // The slope from steps too short to rise above the shot's round-off (1e-11) is not taken.
+        if (std::abs(next - log_L2) > 1e-7) slope = (log_R_next - log_R) / (next - log_L2);
+        log_L2 = next, log_R = log_R_next;
+        if (!(slope > 0.05))
+          throw Error(ErrorKind::out_of_range,
+                      "the range " + std::string(settings.air ? "through the air " : "") +
+                          "does not grow with the engine's size here; no size of this shape reaches " + format_significant(R, 4) + " m");
+      }
+      out.L2 = std::exp(log_L2);
+      out.measured = measured_at(out.L2, find_loads);
+    }
     const ExtraScalings sizes = extra_scalings(design.K(), out.L2, material);  // eq:ExtraScalings
-    out.value = matched == Matched::energy ? sizes.energy_unit * out.shot.release.energy_at_target : mu * sizes.M;
+    out.value = matched == Matched::mass ? mu * sizes.M
+        : out.measured                   ? out.measured->capacity.T
+                                         : sizes.energy_unit * out.shot.release.energy_at_target;
     return out;
   };
   auto log_error = [&](double log_mu) { return std::log(trial(std::exp(log_mu)).value / target); };
@@ -102,7 +132,7 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
   const Trial found = trial(std::exp(find_root(log_error, lo, hi, 0.1 * rtol, 0)), settings.loads);
   fit.design = design;
   fit.engine = engine_of(design, found.L2, material);  // the one conversion to SI
-  fit.verification = verification_of(fit.engine, found.shot, 0);
+  fit.verification = found.measured ? *found.measured : verification_of(fit.engine, found.shot, 0);
   try {
     check_engine(fit.engine);
   } catch (const Error& e) {
@@ -112,7 +142,7 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
     throw Error(
         ErrorKind::numerical,
         "the fitted engine has eps = " + format_significant(fit.verification.eps, 4) + " > 1: energy is not conserved (eq:Aux); tighten {{rtol}}");
-  if (!(std::abs(found.value / target - 1) <= rtol))
+  if (!(std::abs(found.value / target - 1) <= rtol) || !(std::abs(fit.verification.capacity.R / R - 1) <= rtol))
     throw Error(
         ErrorKind::numerical,
         "the fit reached R = " + format_significant(fit.verification.capacity.R, 8) + " m with " +

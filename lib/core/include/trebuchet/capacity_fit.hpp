@@ -16,12 +16,15 @@ namespace trebuchet {
 struct CapacityFit {
   ScaledDesign design;  ///< the shape with its fitted mu
   Engine engine;  ///< the design at the size that delivers the capacity, in SI
-  Verification verification;  ///< of `engine`, level 0, at the shot settings of the fit
+  Verification verification;  ///< of `engine`, at the shot settings of the fit
   int simulations = 0;  ///< shots it took
 };
 
-/// Fits mu and the size of `shape` so that its shot lands at R [m] with T [J] at level 0
-/// (capacity.target_level is not used), each to `rtol` relative. The search for mu starts from
+/// Fits mu and the size of `shape` so that its shot lands at R [m] with T [J], each to `rtol`
+/// relative, both measured as verify_engine measures them under `settings`: at its target level,
+/// through its air, from the pivot or from the release (capacity.target_level is not used). In
+/// vacuum to level 0 from the pivot, the paper's, one shot gives the size (section 5); otherwise
+/// the size is solved for by shots of the engine in SI. The search for mu starts from
 /// shape.mu when it is positive (a warm start, e.g. a neighbouring shape's fitted mu), else from
 /// the guess m = 2T/(g R) of section 4. Throws
 /// Error(out_of_range) when no mu within a factor 20 of the guess m = 2T/(g R) reaches T, and
