@@ -116,6 +116,28 @@ TEST_CASE("api::monte_carlo split into parts is the whole run", "[api]") {
   together["outcomes"] = outcomes;
   CHECK(api::monte_carlo(together).dump() == whole.dump());
   CHECK(whole["worked"] == 6);
+  // The drawn inputs travel with the parts: each sample's M is within its range, beside its R.
+  const auto& draws = whole["draws"];
+  REQUIRE(draws["M"].size() == 6);
+  for (std::size_t i = 0; i < 6; ++i) {
+    CHECK(draws["M"][i].get<double>() >= 2500);
+    CHECK(draws["M"][i].get<double>() <= 3500);
+    CHECK(draws["R"][i].get<double>() > 0);
+  }
+}
+
+TEST_CASE("api::monte_carlo with a claim: its odds agree with the samples' own ranges", "[api]") {
+  const json request = {{"attested", {{"Lb", "9.5m"}, {"M", "2t..4t"}, {"m", "50kg"}}}, {"samples", 40}, {"claim", "170m"}, {"release", "range"}};
+  const auto answer = api::monte_carlo(request);
+  int reached = 0;
+  for (const auto& R : answer["draws"]["R"]) reached += R.get<double>() >= 170;
+  CHECK(answer["claim"]["reached"] == reached);
+  CHECK(answer["claim"]["probability"].get<double>() == Approx(reached / 40.0).epsilon(1e-15));
+  CHECK(reached > 0);
+  CHECK(reached < 40);  // the range of M straddles the claim
+  // M is the only input drawn: it leads the ranking, and a heavier counterweight throws farther.
+  CHECK(answer["sensitivity"]["ranking"][0]["input"] == "M");
+  CHECK(answer["sensitivity"]["ranking"][0]["spearman_R"].get<double>() > 0.9);
 }
 
 TEST_CASE("api::complete applies the request's modulus of rupture, as the program's --rupture", "[api]") {

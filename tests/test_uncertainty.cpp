@@ -1,6 +1,8 @@
 // Uncertain inputs and the Monte Carlo run (issue 14, part 3).
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/uncertainty.hpp"
@@ -55,4 +57,41 @@ TEST_CASE("a Monte Carlo run is the same on any number of threads, and new with 
   CHECK(one.percentiles[1][1] == Approx(50).margin(4 * 0.064));
   CHECK(one.percentiles[1][0] == Approx(50 - 1.645 * 5).margin(4 * 0.109));
   CHECK(one.percentiles[1][2] == Approx(50 + 1.645 * 5).margin(4 * 0.109));
+}
+
+TEST_CASE("a claim's odds carry Wilson's 95 % interval", "[uncertainty]") {
+  // Wilson's score interval at z = 1.96, from its formula by hand: 0 of 10 gives 0 to
+  // z^2/(n + z^2) = 0.2775; 5 of 10 gives 0.5 -+ 0.2634 (to 1e-4, the figures' rounding).
+  const auto summary_of = [](int reached, int n) {
+    std::vector<SampleOutcome> outcomes(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i)
+      outcomes[static_cast<std::size_t>(i)] = {{i < reached ? 200.0 : 100.0, 1, 0.5, 30}, {double(i)}, "", ErrorKind::numerical};
+    return summarize_samples(outcomes);
+  };
+  const ClaimAssessment none = assess_claim(summary_of(0, 10), 150);
+  CHECK(none.reached == 0);
+  CHECK(none.low == 0);
+  CHECK(none.high == Approx(0.2775).margin(1e-4));
+  const ClaimAssessment half = assess_claim(summary_of(5, 10), 150);
+  CHECK(half.probability == 0.5);
+  CHECK(half.low == Approx(0.2366).margin(1e-4));
+  CHECK(half.high == Approx(0.7634).margin(1e-4));
+  // The samples that reach it drew 0 to 4: their median is 2.
+  REQUIRE(half.median_reaching.size() == 1);
+  CHECK(half.median_reaching[0] == 2);
+}
+
+TEST_CASE("the rank correlation ranks an input that moves R monotonically above one that does not", "[uncertainty]") {
+  // R = x^3 (monotone: Spearman's rho is exactly 1 whatever the shape), y drawn apart from it:
+  // its rho is near 0 within the sampling error 1/sqrt(n - 1) = 0.03 of 1000 samples (3 of them).
+  std::mt19937_64 random(7);
+  std::vector<SampleOutcome> outcomes;
+  for (int i = 0; i < 1000; ++i) {
+    const double x = std::uniform_real_distribution<double>(1, 2)(random), y = std::uniform_real_distribution<double>(1, 2)(random);
+    outcomes.push_back({{x * x * x, 1, 0.5, 30}, {y, x}, "", ErrorKind::numerical});
+  }
+  const std::vector<double> rho = rank_correlations_with_range(summarize_samples(outcomes));
+  REQUIRE(rho.size() == 2);
+  CHECK(std::abs(rho[0]) < 0.1);
+  CHECK(rho[1] == Approx(1).margin(1e-12));
 }

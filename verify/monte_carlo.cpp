@@ -9,6 +9,7 @@
 #include "program.hpp"
 #include "run.hpp"
 #include "trebuchet/app/fields.hpp"
+#include "trebuchet/app/output_files.hpp"
 #include "trebuchet/app/text_input.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/parallel.hpp"
@@ -20,6 +21,7 @@ namespace trebuchet::verify {
 int run_monte_carlo(const Options& o, bool complete) {
   if (!o.input.empty()) throw Error(ErrorKind::usage, "ranges and spreads are for values given as flags; drop the file '" + o.input + "'");
   if (!o.series.empty()) throw Error(ErrorKind::usage, "--series writes the motion of one shot; a Monte Carlo run has many");
+  if (!o.draws.empty()) refuse_output_over_input(o.draws, "draws", {o.input});
   if (o.design.R || o.design.T)
     throw Error(ErrorKind::usage,
                 "--R and --T check one shot against a predicted capacity; a Monte Carlo run reports the spread of R "
@@ -48,7 +50,8 @@ int run_monte_carlo(const Options& o, bool complete) {
                                 settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"),
                                 settings.air.has_value(),
                                 seconds,
-                                thread_count(o.threads, static_cast<std::size_t>(summary.samples))};
+                                thread_count(o.threads, static_cast<std::size_t>(summary.samples)),
+                                o.claim};
   if (o.format == Format::json) {
     std::cout << pretty_json(monte_carlo_json(report));
   } else if (o.format == Format::csv) {
@@ -58,6 +61,7 @@ int run_monte_carlo(const Options& o, bool complete) {
   } else {
     std::cout << monte_carlo_table(report);
   }
+  if (!o.draws.empty()) write_output_file(o.draws, monte_carlo_draws_csv(report, o.digits), "draws");
   refuse_when_no_sample_worked(summary);  // after the report of the failures; no histogram
   if (!o.plot.empty()) {
     std::vector<std::string> described;

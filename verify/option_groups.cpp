@@ -219,6 +219,15 @@ void air_and_sampling_options(CLI::App* app, Options& o) {
                      std::to_string(default_shot_samples) + " for a shot, " + std::to_string(default_completion_samples) + " for complete)");
   integer_option(app, "--seed", o.seed, std::uint64_t{0}, std::uint64_t{0}, "0 or more",
                  "seed of the Monte Carlo draws: the same seed, the same result (default 1)");
+  parsed_option(
+      app, "--claim",
+      [&o](const std::string& text) {
+        o.claim = parse_positive(text, UnitDimension::length, "--claim");
+        check_ordinary(*o.claim, 1e-6, 1e6, "claim", "m", "claimed range");
+      },
+      "with ranges or spreads: a claimed range, e.g. 300m; report how many samples reach it and which inputs matter [" +
+          unit_list(UnitDimension::length) + "]");
+  app->add_option("--draws", o.draws, "with ranges or spreads: write every sample's drawn inputs and its R, T, eps and v to this CSV file");
   air_options(app, o);
 }
 

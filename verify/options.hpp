@@ -43,6 +43,8 @@ struct Options {
   std::vector<std::string> parts;  ///< merge
   std::optional<int> samples;  ///< Monte Carlo; not given: default_shot_samples or default_completion_samples
   std::uint64_t seed = 1;
+  std::optional<double> claim;  ///< Monte Carlo: a claimed range whose odds to report [m]
+  std::string draws;  ///< Monte Carlo: write every sample's drawn inputs and outputs here (CSV)
   std::vector<SpreadInput> spreads;  ///< the values given as ranges or spreads, in the order they are drawn
 };
 

@@ -94,19 +94,20 @@ def complete(attested, **settings):
 
 def monte_carlo(design=None, *, attested=None, samples=10000, seed=1, **settings):
     """A Monte Carlo run over values given as ranges ("2.5t..3.5t") or spreads ("3.5m±0.2m"), of
-    shots (design) or completions (attested). The answer is the programs' report, with
-    "samples_R", "samples_T", "samples_eps", "samples_v": arrays over the samples in order (NaN
-    where a sample failed)."""
+    shots (design) or completions (attested). The answer is the programs' report; its "draws"
+    holds, as arrays over the samples in order, each drawn input under its key and R, T, eps and
+    v (NaN where a sample failed), with "failure" the messages (None where it worked). With
+    claim="300m", "claim" gives the fraction of samples that reach it. "samples_R", "samples_T",
+    "samples_eps", "samples_v" are the draws' R, T, eps and v."""
     if (design is None) == (attested is None):
         raise TrebuchetError("give a design (for shots) or attested values (for completions), one of them", "usage", ["design", "attested"])
     request = dict(settings, samples=samples, seed=seed)
     request["design" if design is not None else "attested"] = design if design is not None else attested
     parts = _call(_trebuchet.monte_carlo, dict(request, first=0, count=samples))
-    outcomes = parts["outcomes"]
-    answer = _call(_trebuchet.monte_carlo, dict(request, outcomes=outcomes))
-    values = np.array([o if isinstance(o, list) else [np.nan] * 4 for o in outcomes], dtype=float).reshape(-1, 4)
-    for k, name in enumerate(["R", "T", "eps", "v"]):
-        answer["samples_" + name] = values[:, k]
+    answer = _call(_trebuchet.monte_carlo, dict(request, outcomes=parts["outcomes"]))
+    _arrays(answer["draws"])
+    for name in ["R", "T", "eps", "v"]:
+        answer["samples_" + name] = answer["draws"][name]
     return answer
 
 

@@ -143,6 +143,15 @@ for key in ("percentiles", "worked"):
     compare("monte carlo", {key: mc[key]}, {key: theirs[key]})
 if mc["samples_R"].shape != (300,) or not np.all(np.isfinite(mc["samples_R"])):
     failures.append("monte carlo: samples_R is not 300 finite ranges")
+# The drawn inputs beside the outputs: each M within its range, and the same as the program's.
+if mc["draws"]["M"].shape != (300,) or not np.all((mc["draws"]["M"] >= 3000) & (mc["draws"]["M"] <= 3200)):
+    failures.append("monte carlo: draws of M are not 300 values from 3 t to 3.2 t")
+if list(mc["draws"]["M"]) != theirs["draws"]["--M"]:
+    failures.append("monte carlo: the drawn M differ from the program's")
+# A claim's odds from the arrays themselves.
+claimed = trebuchet.monte_carlo(dict(ca, M="3t..3.2t"), samples=300, seed=7, claim="150m")
+if claimed["claim"]["reached"] != int(np.sum(claimed["samples_R"] >= 150)):
+    failures.append("monte carlo: the claim's count differs from the samples reaching it")
 
 for failure in failures:
     print("FAIL", failure)

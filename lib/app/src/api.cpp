@@ -293,7 +293,7 @@ ordered_json complete(const json& request) {
 }
 
 ordered_json monte_carlo(const json& request) {
-  require_keys(request, with_settings({"design", "attested", "samples", "seed", "first", "count", "outcomes"}), "monte_carlo");
+  require_keys(request, with_settings({"design", "attested", "samples", "seed", "first", "count", "outcomes", "claim"}), "monte_carlo");
   const bool completes = request.contains("attested");
   if (completes == request.contains("design"))
     throw Error(ErrorKind::usage, "give {{design}} (a shot of each sample) or {{attested}} (a completion of each sample), one of them");
@@ -321,6 +321,8 @@ ordered_json monte_carlo(const json& request) {
     throw Error(ErrorKind::bad_number, "{{seed}} = " + format_significant(seed_value, 17) + " must be a whole number from 0 to 2^53");
   const auto seed = static_cast<std::uint64_t>(seed_value);
   const auto sample = [&](std::mt19937_64& random) { return sample_outcome(run, random, key_word); };
+  const std::optional<double> claim = positive_value(request, "claim", UnitDimension::length);
+  if (claim) check_ordinary(*claim, 1e-6, 1e6, "claim", "m", "claimed range");
 
   std::vector<SampleOutcome> outcomes;
   if (request.contains("first") || request.contains("count")) {  // one worker's part
@@ -331,10 +333,13 @@ ordered_json monte_carlo(const json& request) {
     ordered_json part = ordered_json::array();
     for (auto i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(first + count); ++i) {
       const SampleOutcome o = run_sample(seed, i, sample);
-      if (o.failure.empty())
-        part.push_back(o.values);
-      else
-        part.push_back({{"failure", o.failure}, {"kind", kind_name(o.failure_kind)}});
+      if (o.failure.empty()) {  // R, T, eps, v, then the drawn inputs
+        ordered_json values(o.values);
+        for (double x : o.drawn) values.push_back(x);
+        part.push_back(values);
+      } else {
+        part.push_back({{"failure", o.failure}, {"kind", kind_name(o.failure_kind)}, {"drawn", o.drawn}});
+      }
     }
     return {{"samples", samples}, {"outcomes", part}};
   }
@@ -342,15 +347,27 @@ ordered_json monte_carlo(const json& request) {
     const json& given = request["outcomes"];
     if (!given.is_array() || given.size() != static_cast<std::size_t>(samples))
       throw Error(ErrorKind::usage, "{{outcomes}} must hold one outcome for each of the " + std::to_string(samples) + " samples, in order");
+    const std::size_t drawn_count = run.spreads.size();
     for (const json& o : given) {
       SampleOutcome outcome;
-      if (o.is_array() && o.size() == 4 && std::all_of(o.begin(), o.end(), [](const json& x) { return x.is_number(); })) {
+      const auto numbers = [&](const json& a) {
+        return a.is_array() && a.size() == 4 + drawn_count && std::all_of(a.begin(), a.end(), [](const json& x) { return x.is_number(); });
+      };
+      const auto drawn_ok = [&](const json& a) {
+        return a.is_array() && a.size() == drawn_count && std::all_of(a.begin(), a.end(), [](const json& x) { return x.is_number(); });
+      };
+      if (numbers(o)) {
         for (std::size_t k = 0; k < 4; ++k) outcome.values[k] = o[k].get<double>();
-      } else if (o.is_object() && o.contains("failure") && o["failure"].is_string() && (!o.contains("kind") || o["kind"].is_string())) {
+        for (std::size_t k = 4; k < o.size(); ++k) outcome.drawn.push_back(o[k].get<double>());
+      } else if (o.is_object() && o.contains("failure") && o["failure"].is_string() && (!o.contains("kind") || o["kind"].is_string()) &&
+                 o.contains("drawn") && drawn_ok(o["drawn"])) {
         outcome.failure = o["failure"].get<std::string>();
         outcome.failure_kind = kind_of(o.value("kind", "numerical"));
+        outcome.drawn = o["drawn"].get<std::vector<double>>();
       } else {
-        throw Error(ErrorKind::usage, "{{outcomes}}: " + brief_json(o) + " is no outcome; give [R, T, eps, v] or {\"failure\": ...}");
+        throw Error(ErrorKind::usage,
+                    "{{outcomes}}: " + brief_json(o) + " is no outcome; give [R, T, eps, v, then the " + std::to_string(drawn_count) +
+                        " drawn inputs] or {\"failure\": ..., \"drawn\": [...]}, as a part of the run gives them");
       }
       outcomes.push_back(outcome);
     }
@@ -370,7 +387,8 @@ ordered_json monte_carlo(const json& request) {
                                 settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"),
                                 settings.air.has_value(),
                                 0,
-                                1};
+                                1,
+                                claim};
   ordered_json answer = monte_carlo_json(report);
   answer.erase("wall_time_s");  // a time is the caller's to measure; the report is the same on any machine
   if (!passed.empty()) answer["passed"] = passed;

@@ -127,7 +127,10 @@ std::vector<FixedInput> fixed_inputs(const MonteCarloRequest& request) {
 SampleOutcome sample_outcome(const MonteCarloRequest& request, std::mt19937_64& random, const std::function<std::string(std::string_view)>& word) {
   SampleOutcome outcome;
   try {
-    const Verification v = sample_verification(with_draws(request, [&](const Spread& s) { return draw(s, random); }));
+    const Verification v = sample_verification(with_draws(request, [&](const Spread& s) {
+      outcome.drawn.push_back(draw(s, random));  // with_draws asks each spread once, in the run's order
+      return outcome.drawn.back();
+    }));
     outcome.values = {v.capacity.R, v.capacity.T, v.eps, v.v};
   } catch (const Error& e) {
     outcome.failure = e.message(word);

@@ -182,6 +182,34 @@ std::string describe_uncertain(const UncertainInput& u) {
       unit;
 }
 
+namespace {
+
+// The inputs' places, the strongest rank correlation with R first (ties in the run's order).
+std::vector<std::size_t> by_influence(const std::vector<double>& rho) {
+  std::vector<std::size_t> order(rho.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return std::abs(rho[a]) > std::abs(rho[b]); });
+  return order;
+}
+
+// A drawn input's CSV column: its key with its SI unit, "M_kg", "theta_i_deg", "wind_m_s".
+std::string draw_column(const UncertainInput& input) {
+  std::string key = input.name.substr(input.name.find_first_not_of('-'));
+  std::replace(key.begin(), key.end(), '-', '_');
+  if (const InputField* field = find_field(key)) return csv_column_of(*field);
+  for (const InputField& field : input_fields())
+    if (input.name == field.flag) return csv_column_of(field);
+  // A setting's (the target level, the wind, the air's density): its SI unit as the CSV columns write it.
+  switch (input.dimension) {
+    case UnitDimension::length: return key + "_m";
+    case UnitDimension::speed: return key + "_m_s";
+    case UnitDimension::density: return key + "_kg_m3";
+    default: return key;
+  }
+}
+
+}  // namespace
+
 nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
   const MonteCarloSummary& summary = r.summary;
   nlohmann::ordered_json out;
@@ -209,7 +237,68 @@ nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
   for (const SampleFailures& f : summary.failures) failures.push_back({{"reason", f.reason}, {"count", f.count}, {"first", f.first}});
   out["failures"] = failures;
   out["air"] = r.in_air ? "air" : "vacuum";
+  if (r.claim) {
+    const ClaimAssessment c = assess_claim(summary, *r.claim);
+    nlohmann::ordered_json medians = nlohmann::ordered_json::object();
+    for (std::size_t k = 0; k < r.inputs.size(); ++k)
+      medians[r.inputs[k].name] = k < c.median_reaching.size() ? nlohmann::ordered_json(c.median_reaching[k]) : nlohmann::ordered_json(nullptr);
+    out["claim"] = {{"R", c.claim},
+                    {"reached", c.reached},
+                    {"worked", c.worked},
+                    {"probability", c.probability},
+                    {"interval_95", {c.low, c.high}},
+                    {"interval_method", "Wilson score"},
+                    {"median_reaching", medians}};
+  }
+  const std::vector<double> rho = rank_correlations_with_range(summary);
+  if (!rho.empty()) {
+    nlohmann::ordered_json ranking = nlohmann::ordered_json::array();
+    for (std::size_t k : by_influence(rho)) ranking.push_back({{"input", r.inputs[k].name}, {"spearman_R", rho[k]}});
+    out["sensitivity"] = {{"method", "Spearman's rank correlation of each drawn input with R, over the samples that worked"}, {"ranking", ranking}};
+  }
+  nlohmann::ordered_json draws = nlohmann::ordered_json::object();
+  for (std::size_t k = 0; k < r.inputs.size(); ++k) {
+    nlohmann::ordered_json column = nlohmann::ordered_json::array();
+    for (const SampleOutcome& o : summary.outcomes) column.push_back(k < o.drawn.size() ? nlohmann::ordered_json(o.drawn[k]) : nullptr);
+    draws[r.inputs[k].name] = column;
+  }
+  for (std::size_t q = 0; q < sample_names.size(); ++q) {
+    nlohmann::ordered_json column = nlohmann::ordered_json::array();
+    for (const SampleOutcome& o : summary.outcomes) column.push_back(o.failure.empty() ? nlohmann::ordered_json(o.values[q]) : nullptr);
+    draws[sample_names[q]] = column;
+  }
+  nlohmann::ordered_json failed = nlohmann::ordered_json::array();
+  for (const SampleOutcome& o : summary.outcomes)
+    failed.push_back(o.failure.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(o.failure));
+  draws["failure"] = failed;
+  out["draws"] = draws;
   out["wall_time_s"] = r.seconds;
+  return out;
+}
+
+std::string monte_carlo_draws_csv(const MonteCarloReport& r, int digits) {
+  std::vector<std::string> header{"sample"};
+  for (const UncertainInput& input : r.inputs) header.push_back(draw_column(input));
+  header.insert(header.end(), {"R_m", "T_J", "eps", "v_m_s"});
+  if (r.claim) header.push_back("reaches_claim");
+  header.push_back("failure");
+  std::string out = join(header, ",") + "\n";
+  for (std::size_t i = 0; i < r.summary.outcomes.size(); ++i) {
+    const SampleOutcome& o = r.summary.outcomes[i];
+    out += std::to_string(i);
+    for (std::size_t k = 0; k < r.inputs.size(); ++k) {
+      out += ',';
+      if (k < o.drawn.size()) append_csv_number(out, o.drawn[k], digits);
+    }
+    for (double value : o.values) {
+      out += ',';
+      if (o.failure.empty()) append_csv_number(out, value, digits);
+    }
+    if (r.claim) out += o.failure.empty() ? (o.values[0] >= *r.claim ? ",yes" : ",no") : ",";
+    out += ',';
+    append_csv_cell(out, o.failure);
+    out += '\n';
+  }
   return out;
 }
 
@@ -263,6 +352,33 @@ std::string monte_carlo_table(const MonteCarloReport& r) {
   out << "failed: " << summary.samples - static_cast<int>(summary.values.size()) << " samples";
   for (const SampleFailures& f : summary.failures) out << "; " << f.count << " " << f.reason;
   out << "\n";
+  // An input's value in words, as its user gave it: "--M 3.6 t".
+  const auto value_of = [&](std::size_t k, double value) {
+    return r.inputs[k].name + " " + quantity_text(value, r.inputs[k].dimension, UnitSystem::si, 3);
+  };
+  if (r.claim && !summary.values.empty()) {
+    const ClaimAssessment c = assess_claim(summary, *r.claim);
+    out << "claim R >= " << format_significant(c.claim, 4) << " m: reached by " << c.reached << " of the " << c.worked << " samples that worked, "
+        << format_significant(100 * c.probability, 3) << " % (95 %: " << format_significant(100 * c.low, 3) << " to "
+        << format_significant(100 * c.high, 3) << " %, Wilson)\n";
+    if (!c.median_reaching.empty()) {
+      std::vector<std::string> medians;
+      for (std::size_t k = 0; k < c.median_reaching.size(); ++k) {
+        std::vector<double> all;
+        for (const std::vector<double>& drawn : summary.drawn) all.push_back(drawn[k]);
+        std::sort(all.begin(), all.end());
+        medians.push_back(value_of(k, c.median_reaching[k]) +
+                          " (all: " + quantity_text(all[all.size() / 2], r.inputs[k].dimension, UnitSystem::si, 3) + ")");
+      }
+      out << "  the samples that reach it, at their median: " << join(medians, ", ") << "\n";
+    }
+  }
+  const std::vector<double> rho = rank_correlations_with_range(summary);
+  if (!rho.empty()) {
+    std::vector<std::string> ranked;
+    for (std::size_t k : by_influence(rho)) ranked.push_back(r.inputs[k].name + " " + (rho[k] >= 0 ? "+" : "") + format_significant(rho[k], 2));
+    out << "what moves R most (Spearman's rank correlation with R): " << join(ranked, ", ") << "\n";
+  }
   return out.str();
 }
 

@@ -2,6 +2,7 @@
 
 #include <gsl/gsl_statistics_double.h>
 
+#include <cmath>
 #include <algorithm>
 #include <map>
 #include <regex>
@@ -49,9 +50,11 @@ MonteCarloSummary summarize_samples(const std::vector<SampleOutcome>& outcomes) 
   MonteCarloSummary summary;
   summary.samples = static_cast<int>(outcomes.size());
   std::map<std::string, std::size_t> reasons;  // each reason's place in summary.failures
+  summary.outcomes = outcomes;
   for (const SampleOutcome& o : outcomes) {
     if (o.failure.empty()) {
       summary.values.push_back(o.values);
+      summary.drawn.push_back(o.drawn);
       continue;
     }
     const std::string reason = failure_reason(o.failure);
@@ -71,6 +74,43 @@ MonteCarloSummary summarize_samples(const std::vector<SampleOutcome>& outcomes) 
             column.data(), 1, column.size(), std::array{0.05, 0.5, 0.95}[static_cast<std::size_t>(p)]);
     }
   return summary;
+}
+
+ClaimAssessment assess_claim(const MonteCarloSummary& summary, double claim) {
+  ClaimAssessment out;
+  out.claim = claim;
+  out.worked = static_cast<int>(summary.values.size());
+  std::vector<std::vector<double>> reaching(summary.drawn.empty() ? 0 : summary.drawn.front().size());
+  for (std::size_t i = 0; i < summary.values.size(); ++i) {
+    if (!(summary.values[i][0] >= claim)) continue;
+    ++out.reached;
+    for (std::size_t k = 0; k < reaching.size() && k < summary.drawn[i].size(); ++k) reaching[k].push_back(summary.drawn[i][k]);
+  }
+  if (out.worked == 0) return out;
+  // Wilson's score interval at 95 % (z = 1.96) for reached of worked.
+  const double n = out.worked, p = out.reached / n, z = 1.959963984540054;
+  const double centre = (p + z * z / (2 * n)) / (1 + z * z / n), half = z / (1 + z * z / n) * std::sqrt(p * (1 - p) / n + z * z / (4 * n * n));
+  out.probability = p, out.low = std::max(0.0, centre - half), out.high = std::min(1.0, centre + half);
+  if (out.reached > 0)
+    for (std::vector<double>& column : reaching) {
+      std::sort(column.begin(), column.end());
+      out.median_reaching.push_back(gsl_stats_median_from_sorted_data(column.data(), 1, column.size()));
+    }
+  return out;
+}
+
+std::vector<double> rank_correlations_with_range(const MonteCarloSummary& summary) {
+  const std::size_t n = summary.values.size();
+  if (n < 3 || summary.drawn.front().empty()) return {};
+  std::vector<double> R(n), work(2 * n), out;
+  for (std::size_t i = 0; i < n; ++i) R[i] = summary.values[i][0];
+  for (std::size_t k = 0; k < summary.drawn.front().size(); ++k) {
+    std::vector<double> input(n);
+    for (std::size_t i = 0; i < n; ++i) input[i] = summary.drawn[i][k];
+    const double rho = gsl_stats_spearman(input.data(), 1, R.data(), 1, n, work.data());
+    out.push_back(std::isfinite(rho) ? rho : 0);  // a constant column has no rank correlation
+  }
+  return out;
 }
 
 }  // namespace trebuchet

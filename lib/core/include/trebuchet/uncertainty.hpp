@@ -28,6 +28,7 @@ double draw(const Spread& spread, std::mt19937_64& random);
 /// What one sample gives: R [m], T [J], eps and the release speed v [m/s], or why it failed.
 struct SampleOutcome {
   std::array<double, 4> values{};
+  std::vector<double> drawn;  ///< the run's uncertain inputs as this sample drew them, in their order (SI; angles in degrees)
   std::string failure;  ///< empty when the sample worked
   ErrorKind failure_kind = ErrorKind::numerical;  ///< what kind of failure (error.hpp): bad input or numerical
 };
@@ -45,6 +46,8 @@ inline constexpr std::array<const char*, 4> sample_names = {"R", "T", "eps", "v"
 struct MonteCarloSummary {
   int samples = 0;
   std::vector<std::array<double, 4>> values;  ///< of the samples that worked, in sample order
+  std::vector<std::vector<double>> drawn;  ///< their drawn inputs, beside `values`
+  std::vector<SampleOutcome> outcomes;  ///< every sample's, worked or not, in sample order
   std::array<std::array<double, 3>, 4> percentiles{};  ///< 5, 50 and 95 % of R, T, eps, v
   std::vector<SampleFailures> failures;  ///< by reason, the most frequent first
 };
@@ -61,5 +64,22 @@ SampleOutcome run_sample(std::uint64_t seed, std::size_t i, const std::function<
 
 /// The summary of a run's outcomes, given in sample order.
 MonteCarloSummary summarize_samples(const std::vector<SampleOutcome>& outcomes);
+
+/// How often the samples that worked reach a claimed range: the fraction whose R is at least
+/// the claim, with its 95 % Wilson score interval (binomial; sound for fractions near 0 or 1
+/// and few samples), and the median of each drawn input over the samples that reach it.
+struct ClaimAssessment {
+  double claim = 0;  ///< R [m]
+  int reached = 0, worked = 0;
+  double probability = 0, low = 0, high = 0;
+  std::vector<double> median_reaching;  ///< by input; empty when none reaches the claim
+};
+ClaimAssessment assess_claim(const MonteCarloSummary& summary, double claim);
+
+/// How much each drawn input moves R: Spearman's rank correlation of the input with R over the
+/// samples that worked (GSL's gsl_stats_spearman), which a monotone effect of any shape shows
+/// and the other inputs' independent draws do not bias. By input, in the run's order; 0 for an
+/// input or an R that does not vary. Empty with fewer than 3 samples that worked.
+std::vector<double> rank_correlations_with_range(const MonteCarloSummary& summary);
 
 }  // namespace trebuchet

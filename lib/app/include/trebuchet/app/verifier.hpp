@@ -138,11 +138,18 @@ struct MonteCarloReport {
   bool in_air;
   double seconds;
   int threads;
+  std::optional<double> claim;  ///< a claimed range [m] whose odds the run reports (assess_claim)
 };
+/// The report as JSON: with the claim's odds, the inputs ranked by their rank correlation with R
+/// ("sensitivity"), and every sample's drawn inputs beside its outputs ("draws", by column).
 nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& report);
 /// The percentiles as CSV: a row for each of R_m, T_J, eps, v_m_s with p5, p50, p95 in SI
 /// units and `digits` significant digits (no rows when no sample worked).
 std::string monte_carlo_csv(const MonteCarloReport& report, int digits);
 std::string monte_carlo_table(const MonteCarloReport& report);
+/// Every sample as a CSV row: its number, its drawn inputs (SI columns: "M_kg", "theta_i_deg"),
+/// R_m, T_J, eps, v_m_s (empty where it failed), whether it reaches the claim (with one), and
+/// its failure. `digits` significant digits.
+std::string monte_carlo_draws_csv(const MonteCarloReport& report, int digits);
 
 }  // namespace trebuchet
