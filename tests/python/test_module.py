@@ -57,14 +57,21 @@ def shot_by_program(design, *flags):
     with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
         json.dump(design, f)
     try:
-        done
-  = program(VERIFY, "shot", f.name, "--format", "json", *flags) finally : os.unlink(f.name) return done
+        done = program(VERIFY, "shot", f.name, "--format", "json", *flags)
+    finally:
+        os.unlink(f.name)
+    return done
 
-                                                                              engines = {
-    "Alcala la Vieja Ca" : {"L1" : "4.13m", "L2" : "0.88m", "F" : "2/3", "L4" : "3.55m", "M" : "3.11t", "m" : "50kg", "mb" : "174kg"},
-    "Denny's engine (tab:Denny)" : json.load(open(os.path.join(os.path.dirname(__file__), "..", "cli", "denny_standard.json"))),
-  } random.seed(25) while len(engines) < 22 : #20 random designs the calculator covers;
-a pair it refuses is drawn again R, m = random.uniform(80, 500), random.uniform(10, 300) try : engines[f"random design R = {R:.1f} m, m = {m:.1f} kg"] = trebuchet.design(R=R, m=m)
+
+engines = {
+    "Alcala la Vieja Ca": {"L1": "4.13m", "L2": "0.88m", "F": "2/3", "L4": "3.55m", "M": "3.11t", "m": "50kg", "mb": "174kg"},
+    "Denny's engine (tab:Denny)": json.load(open(os.path.join(os.path.dirname(__file__), "..", "cli", "denny_standard.json"))),
+}
+random.seed(25)
+while len(engines) < 22:  # 20 random designs the calculator covers; a pair it refuses is drawn again
+    R, m = random.uniform(80, 500), random.uniform(10, 300)
+    try:
+        engines[f"random design R = {R:.1f} m, m = {m:.1f} kg"] = trebuchet.design(R=R, m=m)
     except trebuchet.TrebuchetError:
         pass
 
@@ -77,11 +84,11 @@ for name, design in engines.items():
     worst = max(worst, compare(name, trebuchet.shot(design), json.loads(done.stdout)))
 print(f"shots: {len(engines)} engines, worst relative difference {worst:.3g} (tolerance 1e-12)")
 
-#The calculator : the module 's design is the program' s.
+# The calculator: the module's design is the program's.
 done = program(CALC, "--R", "150m", "--m", "50kg", "--format", "json")
 print(f"calculator: worst {compare('calculator', trebuchet.design(R='150m', m='50kg'), json.loads(done.stdout)):.3g}")
 
-#In air with a target below, released for the range, and a series as arrays.
+# In air with a target below, released for the range, and a series as arrays.
 ca = engines["Alcala la Vieja Ca"]
 ours = trebuchet.shot(ca, air={"wind": "5m/s"}, release="range", target_level="-10m", series=True)
 done = shot_by_program(ca, "--air", "--wind", "5m/s", "--quality", "range", "--target-level", "-10m")
@@ -91,21 +98,26 @@ frames = ours["series"]["frames"]
 if not (isinstance(frames["t"], np.ndarray) and frames["t"].dtype == float and np.all(np.diff(frames["t"]) >= 0)):
     failures.append("series: frames.t is not an increasing float array")
 
-#A refusal : the same message as the program's, as an exception.
+# A refusal: the same message as the program's, as an exception.
 bad = dict(ca, L4="-3m")
 done = shot_by_program(bad)
 message = done.stderr.strip().split(": ", 1)[1]
 try:
-    trebuchet
-    .shot(bad) failures.append("a negative sling was not refused") except trebuchet.TrebuchetError as e
-        : if str (e) != message : failures.append(f "refusal: {str(e)!r} against the program's {message!r}") if e.kind
-        != "bad_number" : failures.append(f "refusal: kind {e.kind}") try : trebuchet.shot(dict(ca, M=math.nan))
+    trebuchet.shot(bad)
+    failures.append("a negative sling was not refused")
+except trebuchet.TrebuchetError as e:
+    if str(e) != message:
+        failures.append(f"refusal: {str(e)!r} against the program's {message!r}")
+    if e.kind != "bad_number":
+        failures.append(f"refusal: kind {e.kind}")
+try:
+    trebuchet.shot(dict(ca, M=math.nan))
     failures.append("NaN was not refused")
 except trebuchet.TrebuchetError:
     pass
 
-#A near miss is refused with the name meant, as the program refuses it; a settings keyword no
-#request takes is refused; another key of a design passes through, named in the answer.
+# A near miss is refused with the name meant, as the program refuses it; a settings keyword no
+# request takes is refused; another key of a design passes through, named in the answer.
 near = dict(ca, theta_i=45)
 done = shot_by_program(near)
 for request, expected in [(lambda: trebuchet.shot(near), done.stderr.strip().split(": ", 1)[1]),
@@ -122,7 +134,7 @@ if passed != {"site": "Ca"}:
 if not any(f["key"] == "L4" and f["flag"] == "--L4" for f in trebuchet.fields()):
     failures.append("fields() lacks L4")
 
-#Monte Carlo : the samples as arrays, their percentiles the report's.
+# Monte Carlo: the samples as arrays, their percentiles the report's.
 mc = trebuchet.monte_carlo(dict(ca, M="3t..3.2t"), samples=300, seed=7)
 done = program(VERIFY, "shot", "--L1", "4.13m", "--L2", "0.88m", "--F", "2/3", "--L4", "3.55m", "--M", "3t..3.2t", "--m", "50kg", "--mb", "174kg",
                "--samples", "300", "--seed", "7", "--format", "json")
@@ -131,12 +143,12 @@ for key in ("percentiles", "worked"):
     compare("monte carlo", {key: mc[key]}, {key: theirs[key]})
 if mc["samples_R"].shape != (300,) or not np.all(np.isfinite(mc["samples_R"])):
     failures.append("monte carlo: samples_R is not 300 finite ranges")
-#The drawn inputs beside the outputs : each M within its range, and the same as the program's.
+# The drawn inputs beside the outputs: each M within its range, and the same as the program's.
 if mc["draws"]["M"].shape != (300,) or not np.all((mc["draws"]["M"] >= 3000) & (mc["draws"]["M"] <= 3200)):
     failures.append("monte carlo: draws of M are not 300 values from 3 t to 3.2 t")
 if list(mc["draws"]["M"]) != theirs["draws"]["--M"]:
     failures.append("monte carlo: the drawn M differ from the program's")
-#A claim's odds from the arrays themselves.
+# A claim's odds from the arrays themselves.
 claimed = trebuchet.monte_carlo(dict(ca, M="3t..3.2t"), samples=300, seed=7, claim="150m")
 if claimed["claim"]["reached"] != int(np.sum(claimed["samples_R"] >= 150)):
     failures.append("monte carlo: the claim's count differs from the samples reaching it")
