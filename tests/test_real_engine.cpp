@@ -305,6 +305,34 @@ TEST_CASE("calibration recovers a known friction from a synthetic measured range
   }
 }
 
+TEST_CASE("calibration with a given release explains the range step by step from the optimum to the friction", "[real][release]") {
+  // The laboratory engine (arXiv 2502.19442) released by a pin of 30 deg through standard air,
+  // its pins 2 cm and 1 cm: a synthetic measured range from mu = 0.3 is explained step by step,
+  // each step the shot of its own conditions (the same shots made here apart), the last at the
+  // measured range to the fit's 1e-9 (find_root's tolerance on R's root).
+  Engine lab = testing::laboratory_engine();
+  lab.parts.axle.radius = 0.02, lab.parts.hinge.radius = 0.01;
+  ShotSettings settings;
+  settings.air = Air{};
+  settings.release_at = SetRelease{ReleaseBy::pin_angle, 30};
+  const double measured = verify_engine(with_friction(lab, FrictionFit::pin_coefficient, 0.3), settings).capacity.R;
+  const Calibration c = calibrate(lab, {measured, 1.5}, settings);
+  REQUIRE(c.steps.size() == 4);
+  ShotSettings vacuum_optimum;
+  ShotSettings vacuum_release = vacuum_optimum;
+  vacuum_release.release_at = settings.release_at;
+  CHECK(c.steps[0].R == verify_engine(lab, vacuum_optimum).capacity.R);
+  CHECK(c.steps[1].R == verify_engine(lab, vacuum_release).capacity.R);
+  CHECK(c.steps[2].R == verify_engine(lab, settings).capacity.R);
+  CHECK(c.steps[3].R == Approx(measured).epsilon(1e-8));
+  CHECK(c.value == Approx(0.3).epsilon(1e-6));
+  for (const CalibrationStep& step : c.steps) std::printf("%8.4f m  %s\n", step.R, step.what.c_str());
+  // Each condition shortens this shot: the pin of 30 deg lies below the optimum's (35 deg).
+  CHECK(c.steps[1].R < c.steps[0].R);
+  CHECK(c.steps[2].R < c.steps[1].R);
+  CHECK(c.steps[3].R < c.steps[2].R);
+}
+
 TEST_CASE("calibration works below the friction at which the engine jams", "[real]") {
   // Pins so wide that coefficients near 0.4 already stop the beam: the fit searches below the
   // jam, finds the coefficient that threw the range, and says where the jam lies.

@@ -155,7 +155,13 @@ std::string calibration_table(const Calibration& c, const MeasuredRange& measure
   out << "measured: R = " << q(measured.range, UnitDimension::length)
       << (measured.uncertainty > 0 ? " ± " + q(measured.uncertainty, UnitDimension::length) : std::string()) << "\n"
       << "without friction the engine throws " << q(c.frictionless.capacity.R, UnitDimension::length) << " (" << describe_assumptions(e, settings)
-      << ")\n";
+      << ")\n"
+      << "the range, step by step:\n";
+  for (const CalibrationStep& step : c.steps) {
+    std::string figure = q(step.R, UnitDimension::length);
+    figure.resize(std::max<std::size_t>(figure.size(), 10), ' ');
+    out << "  " << figure << "  " << step.what << "\n";
+  }
   const std::string band = measured.uncertainty > 0 ? " (" + sig(c.value_low) + " to " + sig(c.value_high) + " for the range's ± 1 sigma" +
           (c.band_clipped ? "; the short end is clipped at the strongest friction the engine runs with" : "") + ")"
                                                     : "";

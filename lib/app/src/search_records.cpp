@@ -26,6 +26,9 @@ nlohmann::ordered_json calibration_json(const Calibration& c, const MeasuredRang
   out["engine"] = engine;
   out["assumptions"] = assumptions_json(c.engine, settings);
   out["measured"] = {{"R", measured.range}, {"uncertainty", measured.uncertainty}};
+  nlohmann::ordered_json steps = nlohmann::ordered_json::array();
+  for (const CalibrationStep& step : c.steps) steps.push_back({{"step", step.what}, {"R", step.R}});
+  out["steps"] = steps;
   out["fitted"] = c.fitted == FrictionFit::scale ? "scale" : "pin_coefficient";
   out["value"] = c.value;
   out["value_low"] = c.value_low;

@@ -23,7 +23,15 @@ struct MeasuredRange {
 /// engine with none, one coefficient mu at both pins (axle and hinge), on their given radii.
 enum class FrictionFit { scale, pin_coefficient };
 
+/// One step of the explanation of a measured range, in a fixed order: the ideal engine at its
+/// optimum in vacuum, then the given release, then the given air, then the fitted friction.
+struct CalibrationStep {
+  std::string what;  ///< "the given release"
+  double R = 0;  ///< the range after this step, measured as the settings measure it [m]
+};
+
 struct Calibration {
+  std::vector<CalibrationStep> steps;  ///< what each condition does to the range, in order
   FrictionFit fitted = FrictionFit::scale;
   double value = 0;  ///< the scale, or mu at both pins, that matches the range
   double value_low = 0, value_high = 0;  ///< those that match the range plus and minus its uncertainty (low: the longer range)
@@ -41,7 +49,8 @@ struct Calibration {
 /// scale, or mu at both pins.
 Engine with_friction(const Engine& engine, FrictionFit fitted, double value);
 
-/// Fits the friction to the measured range. Throws Error(usage) for an engine without
+/// Fits the friction to the measured range, after explaining what it can by the settings'
+/// release and air (Calibration::steps), which the messages of its refusals repeat. Throws Error(usage) for an engine without
 /// friction and without the pins' radii; Error(out_of_range) when the frictionless engine does
 /// not reach the range (no friction lengthens a shot) or when the largest friction allowed
 /// (coefficients of 2) still throws farther.
