@@ -49,6 +49,8 @@ int run_calibrate(const Options& o) {
   DesignValues values = o.design;
   std::string where;
   if (!o.input.empty()) {
+    if (has_engine_flags(o.design))
+      throw Error(ErrorKind::usage, "the engine comes from '" + o.input + "'; drop the engine flags (--L1 ... --axle-radius), or drop the file");
     const DesignInputs in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}"), o.input);
     // One engine: an object, or an array or CSV of one row.
     if (in.rows.size() != 1)
@@ -62,7 +64,8 @@ int run_calibrate(const Options& o) {
   engine.material = o.material.over(engine.material);
   if (record.mb_from_D) engine.mb = wood_beam_mass(engine);  // in the wood of the run
   ShotSettings settings = settings_of(o);
-  settings.release_at = record.release_at;  // the release the measured engine made, when known
+  settings.release_at = release_of(o.design, "");  // the release the measured engine made, when known: the flags' over the file's
+  if (!settings.release_at) settings.release_at = record.release_at;
   for (double m : o.predict_m) check_ordinary(m, 1e-9, 1e12, "predict_m", "kg", "projectile mass to predict with");
   for (double M : o.predict_M) check_ordinary(M, 1e-9, 1e12, "predict_M", "kg", "counterweight mass to predict with");
   if (!o.series.empty()) refuse_output_over_input(o.series, "series", {o.input});

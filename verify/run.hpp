@@ -14,4 +14,8 @@ int run_optimize(const Options& options);  // tables.cpp
 int run_derive_table(const Options& options);  // tables.cpp
 int run_merge(const Options& options);  // tables.cpp
 
+/// Whether the flags give an engine's value or part, which a design file gives instead (shot.cpp);
+/// the material, the capacity and the release are settings of a file's designs too.
+bool has_engine_flags(const DesignValues& design);
+
 }  // namespace trebuchet::verify

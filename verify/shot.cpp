@@ -31,15 +31,6 @@ DesignCheck design_check(const Options& o, bool fit) {
   return check;
 }
 
-// Whether the flags give an engine's value or part (the material and the capacity are settings of a file's designs too).
-bool has_engine_flags(const DesignValues& d) {
-  for (const InputField& field : input_fields())
-    if ((field.operations & op_shot) && field.group != FieldGroup::material && field.group != FieldGroup::capacity &&
-        field.group != FieldGroup::release && d.*field.member)
-      return true;
-  return false;
-}
-
 // Many designs: every one is tried, on every core; a failing one is reported in its place, the
 // others kept. Each design's report goes to its own slot, and all are printed in input order, so
 // the output is the same on any number of threads.
@@ -98,6 +89,14 @@ int run_many(const Options& o, const DesignInputs& in, const DesignCheck& check)
 }
 
 }  // namespace
+
+bool has_engine_flags(const DesignValues& d) {
+  for (const InputField& field : input_fields())
+    if ((field.operations & op_shot) && field.group != FieldGroup::material && field.group != FieldGroup::capacity &&
+        field.group != FieldGroup::release && d.*field.member)
+      return true;
+  return false;
+}
 
 int run_shot(const Options& o, bool fit) {
   const DesignCheck check = design_check(o, fit);

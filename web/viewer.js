@@ -202,13 +202,25 @@
   // ---- the viewer ---------------------------------------------------------------------------
   function escapeHtml(s) { return String(s).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]); }
 
+  // How the range changes with the pin bent a degree or two off this optimum's (none for a given release).
+  function pinTolerance(shot) {
+    if (!shot.pin_tolerance) return '';
+    const parts = shot.pin_tolerance.map((p) => {
+      const off = p.pin_angle_deg - shot.pin_angle_at_release_deg;
+      return (off > 0 ? '+' : '') + significant(off, 2) + '°: ' + (p.R_change === null ? 'no release' : (p.R_change > 0 ? '+' : '') + significant(p.R_change, 3) + ' m');
+    });
+    return ' (R with the pin off by ' + parts.join(', ') + ')';
+  }
+
   // What the shot assumed, in words, from its "assumptions".
   function describeAssumptions(shot, system) {
     const a = shot.assumptions;
     const air = a.air === 'vacuum' ? 'in vacuum' : 'in air (Cd ' + (typeof a.air.drag_coefficient === 'number' ? a.air.drag_coefficient : 'of Re') +
       (a.air.wind ? ', wind ' + quantity(a.air.wind, 'speed', system) : '') + ')';
-    const release = a.release === 'Q' ? (a.n === 1 ? 'released where Q peaks (eq:Q)' : 'released where Q_n peaks (eq:Q_n, n = ' + a.n + ')')
-      : a.release === 'eps' ? 'released where ε peaks' : 'released where the range peaks';
+    const given = a.release_at && { time: 'at the time ', velocity_angle: 'at the velocity angle ', pin_angle: 'at the pin angle ' }[a.release_at.by];
+    const release = given ? 'released ' + given + significant(a.release_at.value, 6) + (a.release_at.unit === 's' ? ' s' : '°') + ' (given)'
+      : a.release === 'Q' ? (a.n === 1 ? 'released where Q peaks (eq:Q)' : 'released where Q_n peaks (eq:Q_n, n = ' + a.n + ')')
+        : a.release === 'eps' ? 'released where ε peaks' : 'released where the range peaks';
     const target = a.range_from === 'release' ? "range from the release point back to its height (Denny's)" : 'target level ' + quantity(a.target_level, 'length', system);
     return air + ', ' + release + ', ' + target + ', g = ' + quantity(a.g, 'acceleration', system);
   }
@@ -336,7 +348,8 @@
         significant(shot.force_factor, 4)), 'eq:Q: ρ̃ = R/L1 (the range at level 0 in vacuum over the long arm), μ = m/M, ε the efficiency, 𝓕 the force factor of eq:F')}
       ${row('force factor 𝓕', significant(shot.force_factor, 4), 'eq:F: the largest internal forces, as a multiple of the weights')}
       ${row('release speed v', q(shot.v, 'speed'))}
-      ${row('release angle', significant(shot.A_deg, 4) + '°')}
+      ${row('release angle', significant(shot.A_deg, 4) + '°', 'the velocity angle of the projectile above the horizontal at the release')}
+      ${row('pin angle', significant(shot.pin_angle_at_release_deg, 4) + '°' + pinTolerance(shot), 'the angle between the long arm and the sling at the release: the pin a builder bends to release there')}
       ${row('release at', significant(shot.t_release, 4) + ' s, ' + q(shot.h, 'length') + ' up, ' + q(Math.abs(shot.x), 'length') + (shot.x < 0 ? ' behind' : ' before') + ' the pivot')}
       ${lossRows}
       </table><table class="tv-figures"><caption>the builder's loads (largest up to the release)</caption>

@@ -94,7 +94,19 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
     fitted_table = "fitted engine (" + std::to_string(result.simulations) + " shots):\n" + engine_table(engine, check.units);
   }
   std::vector<TracePoint> trace;
-  const Verification v = verify_engine(engine, settings, check.series_path.empty() ? nullptr : &trace, check.series_dt_s);
+  const auto shoot = [&] {
+    try {
+      return verify_engine(engine, settings, check.series_path.empty() ? nullptr : &trace, check.series_dt_s);
+    } catch (const Error& e) {
+      // A release the design itself sets is named by its key, as the design gives it ("pin_angle_deg").
+      if (!record.release_at || check.settings.release_at) throw;
+      throw Error(e.kind(), e.message([](std::string_view key) {
+        const InputField* field = find_field(key);
+        return field && field->group == FieldGroup::release ? std::string(field->key) : "{{" + std::string(key) + "}}";
+      }));
+    }
+  };
+  const Verification v = shoot();
   std::optional<CapacityCheck> capacity;
   if (record.capacity) capacity = check_capacity(v, *record.capacity, check.tolerance);
   out.json = verification_json(v, capacity);

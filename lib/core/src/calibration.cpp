@@ -84,8 +84,7 @@ Calibration calibrate(const Engine& engine, const MeasuredRange& measured, const
   if (!(measured.range < R0))
     throw Error(ErrorKind::out_of_range,
                 "the measured range " + format_significant(measured.range, 4) + " m is not shorter than the engine's without friction, " +
-                    format_significant(R0, 4) +
-                    " m" + explained() +
+                    format_significant(R0, 4) + " m" + explained() +
                     ": friction only shortens a shot; check the engine's values, the release, the air (--air) "
                     "and the target level");
   // The largest friction allowed, or, where the engine jams (or sticks) before it, the largest it
