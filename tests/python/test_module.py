@@ -98,6 +98,13 @@ frames = ours["series"]["frames"]
 if not (isinstance(frames["t"], np.ndarray) and frames["t"].dtype == float and np.all(np.diff(frames["t"]) >= 0)):
     failures.append("series: frames.t is not an increasing float array")
 
+# A release set by its pin angle, as a design key: the program's shot, the same key in its file.
+ours = trebuchet.shot(dict(ca, pin_angle_deg=30))
+theirs = json.loads(shot_by_program(dict(ca, pin_angle_deg=30)).stdout)
+print(f"pin angle 30 deg: worst {compare('pin angle', ours, theirs):.3g}")
+if abs(ours["pin_angle_at_release_deg"] - 30) > 1e-9:
+    failures.append(f"pin angle: released at {ours['pin_angle_at_release_deg']} deg, not 30")
+
 # A refusal: the same message as the program's, as an exception.
 bad = dict(ca, L4="-3m")
 done = shot_by_program(bad)

@@ -194,6 +194,22 @@ try {
   check(shown.assumptions.air !== 'vacuum' && closeness < 1e-9 && verified.engine.L4 === shown.engine.L4,
     `the downloaded design reads in trebuchet-verify and is the shot shown: R ${verified.R} m natively, ${shown.R} m in the page, relative ${closeness.toExponential(2)}`);
 
+  // ---- 5b. a release set by its pin angle is the program's ---------------------------------------
+  // The same engine released where the sling's angle to the long arm closes to 30 deg: the page's
+  // shot is the program's (--pin-angle 30) within 1e-9 in R, and releases at that pin to 1e-9 deg.
+  await page.selectOption('#release-by', 'pin_angle_deg');
+  await page.fill('#release-value', '30deg');
+  const pinned = await page.evaluate(() => window.trebuchet.current());
+  const pinnedNative = native(verify, [file, '--format', 'json', '--air', '--pin-angle', '30']);
+  const pinCloseness = Math.abs(pinnedNative.R - pinned.R) / pinnedNative.R;
+  check(pinned.assumptions.release_at && pinned.assumptions.release_at.by === 'pin_angle' && Math.abs(pinned.pin_angle_at_release_deg - 30) < 1e-9 &&
+    pinCloseness < 1e-9, `a release at a pin of 30 deg is the program's: R ${pinnedNative.R} m natively, ${pinned.R} m in the page, relative ${pinCloseness.toExponential(2)}`);
+  // A pin the sling passes in the trough is refused in the page with the program's words.
+  await page.fill('#release-value', '175deg');
+  const trough = await page.textContent('#viewer');
+  check(/before lift-off/.test(trough), `a pin passed in the trough is refused: "${trough.slice(0, 120)}"`);
+  await page.selectOption('#release-by', 'optimum');
+
   // ---- 6. Monte Carlo over Web Workers is the run of one module ---------------------------------
   const request = { attested: { Lb: '9.5m', M: '2.5t..3.5t', m: '50kg' }, samples: 40, seed: 7 };
   const [whole, parts] = await page.evaluate(async (r) => [window.trebuchet.monteCarlo(r), await window.trebuchet.monteCarloParallel(r)], request);

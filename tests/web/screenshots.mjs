@@ -30,6 +30,10 @@ const views = {
     await page.fill('#target-level', '-20m');
     await page.evaluate(() => window.trebuchet.viewer().setTime(2.2));
   },
+  pin: async (page) => {  // a release at a pin of 30 deg: the settings and the shot's pin angle
+    await page.selectOption('#release-by', 'pin_angle_deg');
+    await page.fill('#release-value', '30deg');
+  },
   refused: async (page) => { await page.fill('#first', '5000m'); },
   imperial: async (page) => { await page.selectOption('#units', 'imperial'); },
 };
