@@ -12,7 +12,7 @@ cmake --build build -j"$(nproc)" --target trebuchet-verify figure-xy figure-fz f
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 build/verify/trebuchet-verify shot --L1 4.13m --L2 0.88m --F 2/3 --L4 3.55m --M 3.11t --m 50kg --mb 174kg --plot "$work" >/dev/null
-for picture in engine paths forces energy release; do cp "$work/$picture.svg" "docs/figures/$picture.svg"; done
+for picture in engine paths forces energy release pin; do cp "$work/$picture.svg" "docs/figures/$picture.svg"; done
 build/tests/figure-xy > docs/figures/xy.gp   # fig:XY from the built-in tab:CPNC
 gnuplot docs/figures/xy.gp
 for script in $(build/tests/figure-fz data/cpnc-derived.json docs/figures); do gnuplot "$script"; done   # fig:fZ_vs_X

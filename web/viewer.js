@@ -271,7 +271,7 @@
     const p = s.phase_two;
     const objective = shot.assumptions.release === 'Q' ? 'Q' : shot.assumptions.release === 'eps' ? 'ε' : 'R';
     const release = chart({ width,
-      title: `Phase II, on as if the projectile were kept: ${objective} peaks at the release`,
+      title: `Phase II, on as if the projectile were kept: ${shot.assumptions.release_at ? 'this shot is released as given' : objective + ' peaks at the release'}`,
       subtitle: 'each over its value at the release; Q, ε and R here at level 0 in vacuum; dashed: the extremes of eq:F so far',
       xLabel: 'time [s]', yLabel: 'value over its value at the release', xName: 't', xUnit: 's', yRange: [0, 1.3],
       lines: [
@@ -298,7 +298,19 @@
         { name: shot.assumptions.range_from === 'release' ? 'release height' : 'target level', colour: '#999', dash: '2 3', x: [fromX / lengthSize, end[0] / lengthSize], y: [end[1] / lengthSize, end[1] / lengthSize] },
       ],
     });
-    return { forces, energy, release, paths };
+    // R and Q against the pin angle: the shot released at each pin 20 degrees either side of its own.
+    const pinScan = s.pins;
+    const pin = pinScan && chart({ width,
+      title: 'The pin: R and Q of a release at each pin angle',
+      subtitle: `this shot's pin angle, ${significant(shot.pin_angle_at_release_deg, 4)}°, marked; each over its value here`,
+      xLabel: 'pin angle between the long arm and the sling at the release [°]', yLabel: 'value over its value in this shot', xName: 'pin', xUnit: '°',
+      lines: [
+        { name: 'R', colour: '#2ca02c', width: 2.5, x: pinScan.pin_angle_deg, y: pinScan.R.map((v) => (v === null ? null : v / shot.R)) },
+        { name: 'Q', colour: 'black', x: pinScan.pin_angle_deg, y: pinScan.Q.map((v) => (v === null ? null : v / shot.Q)) },
+      ],
+      marks: [{ name: 'this shot', x: shot.pin_angle_at_release_deg }],
+    });
+    return pin ? { forces, energy, release, paths, pin } : { forces, energy, release, paths };
   }
 
   // The viewer into `container`: figures, warnings, the animation and the charts. `options`:
@@ -472,6 +484,7 @@
       energy: 'Each body\'s energy gained since rest. The counterweight falls and gives up its energy; the beam takes a little, the projectile the most. ΔU is what beam and counterweight give up once they have fallen to their final rest; the dashed brown line is what they still hold above that rest, (1 − ε) ΔU at the release, while the projectile holds ε ΔU. The total is constant: with no friction nothing else takes a share; an engine given with friction or drag before the release shows what they took, and the total counts it.',
       release: 'Section 5: the release is where the chosen criterion peaks. An extreme\'s dashed line is flat while its force stays below the largest so far.',
       paths: 'The counterweight, the beam\'s tip and the projectile through phases I and II, then the flight.',
+      pin: 'A builder bends the pin to release the sling at one angle between the long arm and the sling. Each point is the shot released at that pin: how far it throws (R) and its quality (Q), over this shot\'s.',
     };
     const grid = document.createElement('div');
     grid.className = 'tv-charts';

@@ -234,7 +234,7 @@ try {
     execFileSync(verify, ['shot', ...engineFlags, ...flags, '--plot', join(folder, name)], { stdio: 'ignore' });
     const report = await open(browser, pathToFileURL(join(folder, name, 'index.html')).href, undefined, false);
     const shown = await report.page.evaluate(() => ({ text: document.querySelector('.tv-head').innerText, charts: document.querySelectorAll('.tv-chart svg').length }));
-    check(expect.test(shown.text) && !(name === 'air' && /in vacuum/.test(shown.text)) && shown.charts === 4 && report.problems.length === 0,
+    check(expect.test(shown.text) && !(name === 'air' && /in vacuum/.test(shown.text)) && shown.charts === 5 && report.problems.length === 0,
       `trebuchet-verify shot --plot (${name}): index.html draws the shot with the page's viewer, 4 charts, "${(shown.text.match(expect) || ['nothing'])[0].slice(0, 80)}"`);
     await report.context.close();
   }

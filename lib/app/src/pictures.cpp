@@ -295,8 +295,9 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   release << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'release.svg'")
           << "set xlabel 'time [s]'\nset ylabel 'value over its value at the release'\nset key below\nset yrange [0:1.3]\n"
           << warnings << "set label 'release' at " << num(seconds(m.release)) << ", graph 0.95 offset 0.3,0\n"
-          << "set title \"Phase II, and on as if the projectile were kept: " << objective
-          << " peaks at the release; the running extremes of eq:F switch on as they grow\\n"
+          << "set title \"Phase II, and on as if the projectile were kept: "
+          << (settings.release_at ? "this shot is released as given" : objective + " peaks at the release")
+          << "; the running extremes of eq:F switch on as they grow\\n"
           << gnuplot_quoted(scene) << "; Q, ε and R here at level 0 in vacuum\" noenhanced\n"
           << "set arrow from " << num(seconds(m.release)) << ", graph 0 to " << num(seconds(m.release)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
           << "plot 'release.csv' every ::1 using 1:2 with lines lw 3 lc rgb 'black' title 'Q', \\\n"
@@ -307,13 +308,11 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
              "so far'\n";
   files.push_back({"release.gp", release.str()});
 
-  // 6. The pin: R and Q of the releases at pin angles 20 deg either side of this shot's, each
-  // over its value here; a builder reads how exactly the pin must be bent.
-  std::vector<double> pins;
-  for (int k = -20; k <= 20; ++k) pins.push_back(v.pin_angle_deg + k);
+  // 6. The pin: R and Q of the releases at pin angles 20 deg either side of this shot's (the
+  // series' pin scan), each over its value here; a builder reads how exactly the pin must be bent.
   std::ostringstream pin_csv;
   pin_csv << "pin_angle_deg,R_m,Q\n";
-  for (const PinShot& shot : pin_scan(engine, settings, pins))
+  for (const PinShot& shot : series.pins)
     pin_csv << num(shot.pin_angle_deg) << "," << (shot.R ? num(*shot.R) : "NaN") << "," << (shot.Q ? num(*shot.Q) : "NaN") << "\n";
   files.push_back({"pin.csv", pin_csv.str()});
   std::ostringstream pin;
@@ -323,7 +322,7 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
       << warnings << "set title \"The pin: a release at each pin angle; this shot's, " << format_significant(v.pin_angle_deg, 4) << "°, is marked\\n"
       << gnuplot_quoted(scene) << "\" noenhanced\n"
       << "set arrow from " << num(v.pin_angle_deg) << ", graph 0 to " << num(v.pin_angle_deg) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
-      << "set label 'this shot' at " << num(v.pin_angle_deg) << ", graph 0.95 offset 0.3,0\n"
+      << "set label 'this shot' at " << num(v.pin_angle_deg) << ", graph 0.05 offset 0.3,0\n"
       << "plot 'pin.csv' every ::1 using 1:2 with linespoints lw 2 pt 7 ps 0.5 title 'R' axes x1y1, \\\n"
       << "     '' every ::1 using 1:($3*100) with linespoints lw 2 pt 7 ps 0.5 title 'Q' axes x1y2\n";
   files.push_back({"pin.gp", pin.str()});

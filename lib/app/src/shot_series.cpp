@@ -76,6 +76,9 @@ ShotSeries shot_series(const Engine& engine, const ShotSettings& settings, const
     if (i == m.release) series.release_row = series.phase_two.size();
     series.phase_two.push_back({p.t * time_unit, r.quality, r.efficiency, r.range, running.max});
   }
+  std::vector<double> pins;
+  for (int k = -10; k <= 10; ++k) pins.push_back(v.pin_angle_deg + 2 * k);
+  series.pins = pin_scan(engine, settings, pins);
   return series;
 }
 
@@ -168,6 +171,13 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
     const char* extremes[] = {"FS_perp", "FR", "FRh_max", "FRh_min"};
     for (int k = 0; k < force_count; ++k) phase_two[extremes[k]].push_back(row.running_max[k] / series.final_extremes[k]);
   }
+  // R [m] and Q against the pin angle [deg]; null where a pin gives no release.
+  json pins = {{"pin_angle_deg", json::array()}, {"R", json::array()}, {"Q", json::array()}};
+  for (const PinShot& shot : series.pins) {
+    pins["pin_angle_deg"].push_back(shot.pin_angle_deg);
+    pins["R"].push_back(shot.R ? json(*shot.R) : json(nullptr));
+    pins["Q"].push_back(shot.Q ? json(*shot.Q) : json(nullptr));
+  }
   return {{"pivot_height", pivot_height(engine)},
           {"energy_drop", potential_energy_drop(engine)},
           {"moments",
@@ -179,7 +189,8 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
           {"frames", frames},
           {"flight", flight},
           {"phase_two", phase_two},
-          {"release_row", series.release_row}};
+          {"release_row", series.release_row},
+          {"pins", pins}};
 }
 
 }  // namespace trebuchet

@@ -150,6 +150,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   if (!check.series_path.empty()) write_output_file(check.series_path, trace_csv(trace, engine), "series");
   out.outside_tolerance = capacity && !capacity->pass;
   out.engine = engine;
+  out.settings = settings;
   out.verification = v;
   return out;
 }

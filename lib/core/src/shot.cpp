@@ -606,7 +606,11 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   // Past the release: the objective has fallen to half its maximum, or two steps past a given
   // release, so that the running extremes of eq:F before it are refined as an optimum's are.
   const auto past_release = [&]() {
-    if (given) return watch.crossed && phase2.samples().size() > *watch.crossed + 2;
+    // With `unreleased` asked for, phase II goes on as an optimum's window would (to half the
+    // objective's best), so that the pictures show what the given release gave up.
+    if (given)
+      return watch.crossed && phase2.samples().size() > *watch.crossed + 2 &&
+          (!unreleased || (best_quality > 0 && sampled.back() < 0.5 * best_quality));
     return best_quality > 0 && sampled.back() < 0.5 * best_quality;
   };
   while (!step_ends_shot() && !past_release()) {

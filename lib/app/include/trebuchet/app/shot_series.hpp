@@ -25,7 +25,8 @@ struct Moments {
 /// A shot as the pictures and the viewer (web/viewer.js) show it: its figures, its motion sampled
 /// about 200 times up to the release and on to the ground after it, its flight to the end
 /// (the target level, or back at the release height for Denny's range) through the settings' air
-/// or vacuum, and Q, eps and R over phase II, on past the release as if the projectile were kept.
+/// or vacuum, Q, eps and R over phase II, on past the release as if the projectile were kept, and
+/// R and Q against the pin angle.
 struct ShotSeries {
   Verification verification;
   std::vector<TracePoint> trace;  ///< phases I and II up to the release, then phase III (shot.hpp)
@@ -43,6 +44,9 @@ struct ShotSeries {
   std::vector<Moment> phase_two;
   std::size_t release_row = 0;  ///< the release, in phase_two
   ForceValues final_extremes{};  ///< eq:F's extremes up to the release, scaled
+  /// The shot released at pin angles 20 deg either side of its own, every 2 deg (pin_scan): R
+  /// and Q against the pin, which pin.svg and the viewer's pin chart draw.
+  std::vector<PinShot> pins;
   /// The projectile `after` seconds past the release (at the flight's end once it has landed).
   SitePoint stone_at(double after) const;
 };

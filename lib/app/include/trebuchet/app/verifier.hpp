@@ -63,6 +63,7 @@ struct DesignCheck {
 /// it carries was met within the tolerance.
 struct DesignReport {
   Engine engine;  ///< the engine shot (with check.fit, the fitted one)
+  ShotSettings settings;  ///< those it was shot under: the check's, with the design's own release where the check sets none
   Verification verification;  ///< its shot
   nlohmann::ordered_json json;
   std::string table;
