@@ -276,7 +276,8 @@ ordered_json shot(const json& request) {
   const DesignReport report = check_design(read_engine(request["design"], "design"), check);
   ordered_json answer = report.json;
   // The series is of the engine the answer reports (fitted first with "fit"), from its shot.
-  if (flag_of(request, "series")) answer["series"] = shot_series_json(shot_series(report.engine, report.settings, report.verification), report.engine);
+  if (flag_of(request, "series"))
+    answer["series"] = shot_series_json(shot_series(report.engine, report.settings, report.verification), report.engine);
   return answer;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "given_release.hpp"
 #include "gsl_errors.hpp"
 #include "ode.hpp"
 #include "solve_1d.hpp"
@@ -364,67 +365,7 @@ double objective_range(const ReleasePoint& r, const ReleaseCriterion& criterion)
   return std::max(range, 0.0);
 }
 
-// The angle a moved by whole turns to within half a turn of `near` [rad].
-double unwrapped_near(double a, double near) { return near + std::remainder(a - near, 2 * M_PI); }
-
-// What a given release watches at scaled time t: how far it is still ahead of the release,
-// positive before it and falling through 0 there. The angles are unwrapped near `near` [rad],
-// so that they run on continuously through the throw.
-double watched_value(ReleaseBy by, double t, const Snapshot& s, double near) {
-  switch (by) {
-    case ReleaseBy::time: return t;
-    case ReleaseBy::velocity_angle: return unwrapped_near(velocity_angle(s), near);
-    case ReleaseBy::pin_angle: return unwrapped_near(pin_angle(s), near);
-  }
-  return t;
-}
-double ahead_of(const GivenRelease& given, double watched) { return given.by == ReleaseBy::time ? given.value - watched : watched - given.value; }
-
-// A watched value as the user gives it: seconds or degrees.
-std::string shown(const GivenRelease& given, double watched) {
-  return given.by == ReleaseBy::time ? format_significant(watched * given.time_unit, 5) + " s" : format_significant(degrees(watched), 5) + " deg";
-}
-
-// What a given release saw over phase II: its value at lift-off and its extremes after, and
-// the values at which the projectile would fly forward.
-struct ReleaseWatch {
-  double at_liftoff = 0, last = 0, lowest = 0, highest = 0;
-  double forward_lo = INFINITY, forward_hi = -INFINITY;
-  std::optional<std::size_t> crossed;  // the first sample past the release
-  double near = 0;  // the value at the sample before it, which the root's values are unwrapped near
-  bool forward_ended = false;  // the values are those of the first forward stretch only
-  void add(double value, bool forward) {
-    last = value, lowest = std::min(lowest, value), highest = std::max(highest, value);
-    if (forward && !forward_ended) forward_lo = std::min(forward_lo, value), forward_hi = std::max(forward_hi, value);
-    forward_ended = forward_ended || (!forward && forward_lo <= forward_hi);
-  }
-};
-
-// Error(bad_number) for a given release that does not come after lift-off, or that throws the
-// projectile backward, naming the values that do occur (docs/verifier.md, "A given release").
-[[noreturn]] void refuse_given_release(const GivenRelease& given, const ReleaseWatch& watch, const std::string& what) {
-  static const char* names[] = {"{{release_time}}", "{{release_angle}}", "{{pin_angle}}"};
-  static const char* quantities[] = {"the time", "the projectile's velocity angle", "the pin angle"};
-  const int k = static_cast<int>(given.by);
-  const bool rises = given.by == ReleaseBy::time;
-  std::string message = std::string(names[k]) + " = " + shown(given, given.value) + ": " + what + "; after lift-off " + quantities[k] +
-      " runs from " + shown(given, watch.at_liftoff) + " to " + shown(given, rises ? watch.highest : std::max(watch.lowest, -M_PI));
-  if (watch.forward_lo <= watch.forward_hi)
-    message += ", and the projectile flies forward for values from about " + shown(given, rises ? watch.forward_lo : watch.forward_hi) + " to " +
-        shown(given, rises ? watch.forward_hi : watch.forward_lo);
-  else
-    message += ", and no release in it throws the projectile forward";
-  throw Error(ErrorKind::bad_number, message);
-}
-
 }  // namespace
-
-double velocity_angle(const Snapshot& s) { return std::atan2(s.projectile_velocity.y, -s.projectile_velocity.x); }
-
-double pin_angle(const Snapshot& s) {
-  const Vec2 arm = s.tip, sling{s.projectile.x - s.tip.x, s.projectile.y - s.tip.y};
-  return std::atan2(-(arm.x * sling.y - arm.y * sling.x), arm.x * sling.x + arm.y * sling.y);
-}
 
 std::array<double, load_count> load_values(const Snapshot& s) {
   return {s.sling_tension, std::hypot(s.hinge_force.x, s.hinge_force.y), force_values(s)[pivot_reaction], std::abs(s.beam_moment)};

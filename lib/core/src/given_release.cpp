@@ -1,0 +1,63 @@
+#include "given_release.hpp"
+
+#include <algorithm>
+
+#include "trebuchet/angles.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/shot.hpp"
+
+namespace trebuchet {
+
+namespace {
+
+// The angle a moved by whole turns to within half a turn of `near` [rad].
+double unwrapped_near(double a, double near) { return near + std::remainder(a - near, 2 * M_PI); }
+
+// A watched value as the user gives it: seconds or degrees.
+std::string shown(const GivenRelease& given, double watched) {
+  return given.by == ReleaseBy::time ? format_significant(watched * given.time_unit, 5) + " s" : format_significant(degrees(watched), 5) + " deg";
+}
+
+}  // namespace
+
+double watched_value(ReleaseBy by, double t, const Snapshot& s, double near) {
+  switch (by) {
+    case ReleaseBy::time: return t;
+    case ReleaseBy::velocity_angle: return unwrapped_near(velocity_angle(s), near);
+    case ReleaseBy::pin_angle: return unwrapped_near(pin_angle(s), near);
+  }
+  return t;
+}
+
+double ahead_of(const GivenRelease& given, double watched) { return given.by == ReleaseBy::time ? given.value - watched : watched - given.value; }
+
+void ReleaseWatch::add(double value, bool forward) {
+  last = value, lowest = std::min(lowest, value), highest = std::max(highest, value);
+  if (forward && !forward_ended) forward_lo = std::min(forward_lo, value), forward_hi = std::max(forward_hi, value);
+  forward_ended = forward_ended || (!forward && forward_lo <= forward_hi);
+}
+
+void refuse_given_release(const GivenRelease& given, const ReleaseWatch& watch, const std::string& what) {
+  static const char* names[] = {"{{release_time}}", "{{release_angle}}", "{{pin_angle}}"};
+  static const char* quantities[] = {"the time", "the projectile's velocity angle", "the pin angle"};
+  const int k = static_cast<int>(given.by);
+  const bool rises = given.by == ReleaseBy::time;
+  std::string message = std::string(names[k]) + " = " + shown(given, given.value) + ": " + what + "; after lift-off " + quantities[k] +
+      " runs from " + shown(given, watch.at_liftoff) + " to " + shown(given, rises ? watch.highest : std::max(watch.lowest, -M_PI));
+  if (watch.forward_lo <= watch.forward_hi)
+    message += ", and the projectile flies forward for values from about " + shown(given, rises ? watch.forward_lo : watch.forward_hi) + " to " +
+        shown(given, rises ? watch.forward_hi : watch.forward_lo);
+  else
+    message += ", and no release in it throws the projectile forward";
+  throw Error(ErrorKind::bad_number, message);
+}
+
+double velocity_angle(const Snapshot& s) { return std::atan2(s.projectile_velocity.y, -s.projectile_velocity.x); }
+
+double pin_angle(const Snapshot& s) {
+  const Vec2 arm = s.tip, sling{s.projectile.x - s.tip.x, s.projectile.y - s.tip.y};
+  return std::atan2(-(arm.x * sling.y - arm.y * sling.x), arm.x * sling.x + arm.y * sling.y);
+}
+
+}  // namespace trebuchet
