@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "engines.hpp"
 #include "reference/reference_shot.hpp"
@@ -145,4 +146,19 @@ TEST_CASE("the range optimum at a target level beats a fine scan of release time
     if (level > -2.0) CHECK(std::abs(optimum.t_release - previous_t) > 1e-4);
     previous_t = optimum.t_release;
   }
+}
+
+TEST_CASE("a pin scan leaves out the pins whose shot cannot be made, and keeps the others", "[release]") {
+  // Row Ca's flight peaks 40.14 m above the base: with the target 40 m up, a pin a degree or two
+  // flatter throws lower and never comes down to the target (refused), a steeper one does. The
+  // scan must report both, not fail as a whole; at the shot's own pin it is the shot itself.
+  ShotSettings high;
+  high.target_level = 40;
+  const Verification shot = verify_engine(alcala_ca(), high);
+  const std::vector<PinShot> scan = pin_scan(alcala_ca(), high, {shot.pin_angle_deg - 2, shot.pin_angle_deg, shot.pin_angle_deg + 2});
+  REQUIRE(scan.size() == 3);
+  CHECK(!scan[0].R);
+  REQUIRE(scan[1].R);
+  CHECK(relative(*scan[1].R, shot.capacity.R) < 1e-9);
+  CHECK(scan[2].R);
 }

@@ -207,7 +207,7 @@
     if (!shot.pin_tolerance) return '';
     const parts = shot.pin_tolerance.map((p) => {
       const off = p.pin_angle_deg - shot.pin_angle_at_release_deg;
-      return (off > 0 ? '+' : '') + significant(off, 2) + '°: ' + (p.R_change === null ? 'no release' : (p.R_change > 0 ? '+' : '') + significant(p.R_change, 3) + ' m');
+      return (off > 0 ? '+' : '') + significant(off, 2) + '°: ' + (p.R_change === null ? 'refused' : (p.R_change > 0 ? '+' : '') + significant(p.R_change, 3) + ' m');
     });
     return ' (R with the pin off by ' + parts.join(', ') + ')';
   }

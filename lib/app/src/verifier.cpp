@@ -132,7 +132,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
         lost.push_back(signed_offset + (change > 0 ? "+" : "") + quantity_text(change, UnitDimension::length, check.units, 3));
       } else {
         tolerance.push_back({{"pin_angle_deg", shot.pin_angle_deg}, {"R", nullptr}, {"R_change", nullptr}});
-        lost.push_back(signed_offset + "no release");
+        lost.push_back(signed_offset + "refused");
       }
     }
     out.json["pin_tolerance"] = tolerance;

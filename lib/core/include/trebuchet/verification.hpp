@@ -120,7 +120,8 @@ inline constexpr double max_series_points = 1e6;
 Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace = nullptr, double trace_dt_s = 0);
 
 /// The shot of `engine` released at a given pin angle: its range (as the settings measure it)
-/// and Q, or none where that release cannot be made (in the trough, never reached, or backward).
+/// and Q, or none where that release cannot be made (in the trough, never reached, backward, or
+/// with a flight that does not come down to the target level).
 struct PinShot {
   double pin_angle_deg = 0;  ///< [deg]
   std::optional<double> R, Q;  ///< [m], scaled
