@@ -57,12 +57,18 @@ int main(int argc, char** argv) {
     if (!options.input.empty() && options.input != "-" && !std::filesystem::exists(options.input, unreadable_input))
       if (const std::string hint = did_you_mean(app, options.input); !hint.empty())
         throw Error(ErrorKind::usage, "there is no file '" + options.input + "' to read" + hint);
-    // --samples and --seed mean something only to a Monte Carlo run.
-    for (CLI::App* s : {sub.shot, sub.complete})
-      if (s->parsed() && options.spreads.empty() && (s->count("--samples") > 0 || s->count("--seed") > 0))
+    // --samples and --seed set a Monte Carlo run, --claim and --draws report one: only a run with a range or a spread has them.
+    for (CLI::App* s : {sub.shot, sub.complete}) {
+      if (!s->parsed() || !options.spreads.empty()) continue;
+      if (s->count("--samples") > 0 || s->count("--seed") > 0)
         throw Error(ErrorKind::usage,
                     "--samples and --seed set a Monte Carlo run; give a value as a range (2.5t..3.5t) or a spread "
                     "(3.5m±0.2m), or drop them");
+      if (s->count("--claim") > 0 || s->count("--draws") > 0)
+        throw Error(ErrorKind::usage,
+                    "--claim and --draws report a Monte Carlo run; give a value as a range (2.5t..3.5t) or a spread "
+                    "(3.5m±0.2m), or drop them");
+    }
     if (sub.shot->parsed()) return options.spreads.empty() ? run_shot(options, false) : run_monte_carlo(options, false);
     if (sub.fit->parsed()) return run_shot(options, true);
     if (sub.optimize->parsed()) return run_optimize(options);

@@ -144,15 +144,13 @@ void engine_parts(const DesignValues& v, const std::string& where, EngineRecord&
 }  // namespace
 
 std::optional<SetRelease> release_of(const DesignValues& v, const std::string& where) {
-  using V = DesignValues;
-  const std::pair<std::optional<double> V::*, ReleaseBy> kinds[] = {
-      {&V::release_time, ReleaseBy::time}, {&V::release_angle_deg, ReleaseBy::velocity_angle}, {&V::pin_angle_deg, ReleaseBy::pin_angle}};
   std::optional<SetRelease> out;
   std::vector<std::string> given;
-  for (const auto& [member, by] : kinds) {
-    if (!(v.*member)) continue;
-    given.push_back(engine_key_name(where, field_of(member).key));
-    out = SetRelease{by, *(v.*member)};
+  for (const ReleaseBy by : {ReleaseBy::time, ReleaseBy::velocity_angle, ReleaseBy::pin_angle}) {
+    const InputField& field = release_field(by);
+    if (!(v.*field.member)) continue;
+    given.push_back(engine_key_name(where, field.key));
+    out = SetRelease{by, *(v.*field.member)};
   }
   if (given.size() > 1) throw Error(ErrorKind::usage, join(given, " and ") + " each set the release; give one of them");
   if (out) {
@@ -282,6 +280,8 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
   if (own_output) {
     std::vector<std::string> inputs = part_columns();
     inputs.push_back("psi_i_deg");
+    for (const InputField& field : input_fields())  // a given release reads back
+      if (field.group == FieldGroup::release) inputs.push_back(csv_column_of(field));
     for (const Field& field : engine_fields(Engine{})) inputs.push_back(csv_column(field));
     for (const std::string& column : verification_csv_header())
       if (std::find(inputs.begin(), inputs.end(), column) == inputs.end()) results.push_back(column);

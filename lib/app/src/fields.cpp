@@ -38,6 +38,15 @@ const InputField& field_of(std::optional<double> DesignValues::*member) {
   return *row;
 }
 
+const InputField& release_field(ReleaseBy by) {
+  switch (by) {
+    case ReleaseBy::velocity_angle: return field_of(&DesignValues::release_angle_deg);
+    case ReleaseBy::pin_angle: return field_of(&DesignValues::pin_angle_deg);
+    case ReleaseBy::time: break;
+  }
+  return field_of(&DesignValues::release_time);
+}
+
 const InputField* find_field(std::string_view name) {
   for (const InputField& field : input_fields()) {
     if (name == field.key) return &field;

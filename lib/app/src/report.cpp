@@ -245,7 +245,12 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
       << (shot_design(engine, settings).parts.dissipates() ? ", with the work of the losses" : "") << "\n";
   for (const std::string& w : v.warnings) out << "warning: " << w << "\n";
   for (const std::string& n : v.notes) out << "note: " << n << "\n";
-  if (check) {
+  if (check && check->as_measured) {
+    out << "requested: R = " << q(check->predicted.R, UnitDimension::length, 5) << " (" << (check->deviation_R >= 0 ? "+" : "")
+        << sig(100 * check->deviation_R, 3) << " %), T = " << q(check->predicted.T, UnitDimension::energy, 5) << " ("
+        << (check->deviation_T >= 0 ? "+" : "") << sig(100 * check->deviation_T, 3) << " %): " << (check->pass ? "pass" : "FAIL") << " at tolerance "
+        << sig(100 * check->tolerance, 3) << " %, against this shot as it measures them\n";
+  } else if (check) {
     out << "predicted, in vacuum: R = " << q(check->predicted.R, UnitDimension::length, 5) << " (" << (check->deviation_R >= 0 ? "+" : "")
         << sig(100 * check->deviation_R, 3) << " %), T = " << q(check->predicted.T, UnitDimension::energy, 5) << " ("
         << (check->deviation_T >= 0 ? "+" : "") << sig(100 * check->deviation_T, 3) << " %): " << (check->pass ? "pass" : "FAIL") << " at tolerance "

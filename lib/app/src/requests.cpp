@@ -100,7 +100,13 @@ std::int64_t shots_per_sample(const MonteCarloRequest& request) {
   const MonteCarloRequest first = with_draws(request, [](const Spread& s) { return s.a; });
   const ShotSettings settings = shot_settings(first.settings);
   if (!request.completes) {
-    sample_engine(first);
+    // Bad input at the first values (a release that cannot be made, say) ends the run before it
+    // starts; a numerical failure there is one sample's, counted with the run's.
+    try {
+      sample_verification(first);
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::numerical) throw;
+    }
     return 1;
   }
   return shots_per_completion([&] { return complete_engine(completion_request(first.values, settings, first.material)); });

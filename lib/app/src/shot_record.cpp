@@ -40,6 +40,14 @@ namespace {
 // The pin angle at the release (verification.hpp), apart from the input pin_angle_deg that sets one.
 constexpr const char* pin_angle_column = "pin_angle_at_release_deg";
 
+// The inputs that set a release (FieldGroup::release), in the table's order.
+std::vector<const InputField*> release_fields() {
+  std::vector<const InputField*> fields;
+  for (const InputField& field : input_fields())
+    if (field.group == FieldGroup::release) fields.push_back(&field);
+  return fields;
+}
+
 // The figures of a shot, in the order of the JSON and CSV records. Throws Error(numerical) for
 // one that is not finite.
 std::vector<Field> verification_fields(const Verification& v) {
@@ -114,7 +122,8 @@ std::vector<std::string> verification_csv_header() {
   for (const Field& field : energy_fields(v)) header.push_back(csv_column(field));
   for (const std::string& column : part_columns()) header.push_back(column);
   header.push_back("psi_i_deg");
-  header.push_back(pin_angle_column);  // last, so that the columns before it keep their places
+  header.push_back(pin_angle_column);  // after the earlier columns, so that they keep their places
+  for (const InputField* field : release_fields()) header.push_back(csv_column_of(*field));  // a given release, which reads back
   return header;
 }
 
@@ -129,15 +138,16 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
   const nlohmann::ordered_json assumed = assumptions_json(engine, settings);
   const std::string air = settings.air ? describe_air(*settings.air, engine.m) : "vacuum";
   row.insert(row.end(),
-             {check ? (check->pass ? "yes" : "no") : "", air,
-              settings.release_at ? release_by_name(settings.release_at->by) + " " + csv_number(settings.release_at->value, digits) +
-                      (settings.release_at->by == ReleaseBy::time ? " s" : " deg")
-                                  : assumed["release"].get<std::string>(),
-              csv_number(settings.criterion.n, digits), csv_number(settings.target_level, digits), join(v.warnings, "; "), join(v.notes, "; ")});
+             {check ? (check->pass ? "yes" : "no") : "", air, assumed["release"].get<std::string>(), csv_number(settings.criterion.n, digits),
+              csv_number(settings.target_level, digits), join(v.warnings, "; "), join(v.notes, "; ")});
   for (const Field& field : energy_fields(v)) row.push_back(csv_number(field.value, digits));
   for (const std::string& cell : part_cells(engine, digits)) row.push_back(cell);
   row.push_back(csv_number(engine.psi_i_deg, digits));
   row.push_back(csv_number(v.pin_angle_deg, digits));
+  for (const InputField* field : release_fields()) {
+    const bool given = settings.release_at && &release_field(settings.release_at->by) == field;
+    row.push_back(given ? csv_number(settings.release_at->value, digits) : "");
+  }
   return row;
 }
 
@@ -145,7 +155,7 @@ std::vector<std::string> verification_output_names() {
   std::vector<std::string> names = verification_csv_header();
   for (const Field& field : verification_fields(Verification{})) names.push_back(field.key);
   names.push_back(pin_angle_column);
-  names.insert(names.end(), {"predicted", "deviation", "tolerance", "engine", "assumptions", "error", "exit_code", "energy"});
+  names.insert(names.end(), {"predicted", "deviation", "tolerance", "against", "engine", "assumptions", "error", "exit_code", "energy"});
   return names;
 }
 
@@ -177,6 +187,7 @@ nlohmann::ordered_json verification_json(const Verification& v, const std::optio
     out["predicted"] = {{"R", check->predicted.R}, {"T", check->predicted.T}};
     out["deviation"] = {{"R", check->deviation_R}, {"T", check->deviation_T}};
     out["tolerance"] = check->tolerance;
+    out["against"] = check->as_measured ? "measured" : "vacuum";  // fit's requested capacity, or the calculator's in vacuum
     out["pass"] = check->pass;
   }
   return out;

@@ -1,5 +1,7 @@
 #include "trebuchet/app/verifier.hpp"
 
+#include <gsl/gsl_statistics_double.h>
+
 #include <algorithm>
 #include <fstream>
 #include <sstream>
@@ -83,6 +85,10 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   nlohmann::ordered_json simulated;
   std::string fitted_table;
   if (check.fit) {
+    if (settings.release_at)
+      throw Error(ErrorKind::usage,
+                  "fit sizes the engine for a release at its optimum; a release the design sets ({{release_time}}, {{release_angle}}, "
+                  "{{pin_angle}}) is shot by shot; leave it out to fit");
     if (engine.parts.any())
       throw Error(ErrorKind::usage,
                   "fit scales the paper's ideal engine to a capacity; an engine as built (friction, a beam or counterweight "
@@ -108,13 +114,19 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   };
   const Verification v = shoot();
   std::optional<CapacityCheck> capacity;
-  if (record.capacity) capacity = check_capacity(v, *record.capacity, check.tolerance);
+  // fit designs for the capacity as the shot measures it (through its air, to its level, from where
+  // it measures); a capacity to check is the calculator's, in vacuum. In vacuum to level 0 from
+  // the pivot the two are the same.
+  const bool measured = check.fit && (settings.air || settings.range_from_release || settings.target_level != 0);
+  if (record.capacity) capacity = check_capacity(v, *record.capacity, check.tolerance, measured);
   out.json = verification_json(v, capacity);
   out.table = fitted_table + verification_table(engine, settings, v, capacity, check.units);
   if (check.csv) out.csv = verification_csv_row(engine, settings, v, capacity, check.csv_digits);
   // The engine simulated (for fit, the fitted one, with its shots) and what the shot assumed.
   nlohmann::ordered_json engine_json;
   write_engine(engine_json, engine);
+  if (const auto& at = settings.release_at)  // the release its builder set, so that the record reads back
+    engine_json[release_field(at->by).key] = at->value;
   if (check.fit) engine_json.update(simulated);
   out.json["engine"] = engine_json;
   out.json["assumptions"] = assumptions_json(engine, settings);
@@ -205,6 +217,15 @@ std::vector<std::size_t> by_influence(const std::vector<double>& rho) {
   return order;
 }
 
+// The median of input k over the samples that worked (0 when none did).
+double median_drawn(const MonteCarloSummary& summary, std::size_t k) {
+  std::vector<double> all;
+  for (const std::vector<double>& drawn : summary.drawn) all.push_back(drawn[k]);
+  if (all.empty()) return 0;
+  std::sort(all.begin(), all.end());
+  return gsl_stats_median_from_sorted_data(all.data(), 1, all.size());
+}
+
 // A drawn input's CSV column: its key with its SI unit, "M_kg", "theta_i_deg", "wind_m_s".
 std::string draw_column(const UncertainInput& input) {
   std::string key = input.name.substr(input.name.find_first_not_of('-'));
@@ -252,7 +273,8 @@ nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
   out["air"] = r.in_air ? "air" : "vacuum";
   if (r.claim) {
     const ClaimAssessment c = assess_claim(summary, *r.claim);
-    nlohmann::ordered_json medians = nlohmann::ordered_json::object();
+    nlohmann::ordered_json medians = nlohmann::ordered_json::object(), medians_all = nlohmann::ordered_json::object();
+    for (std::size_t k = 0; k < r.inputs.size(); ++k) medians_all[r.inputs[k].name] = median_drawn(summary, k);
     for (std::size_t k = 0; k < r.inputs.size(); ++k)
       medians[r.inputs[k].name] = k < c.median_reaching.size() ? nlohmann::ordered_json(c.median_reaching[k]) : nlohmann::ordered_json(nullptr);
     out["claim"] = {{"R", c.claim},
@@ -261,7 +283,8 @@ nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
                     {"probability", c.probability},
                     {"interval_95", {c.low, c.high}},
                     {"interval_method", "Wilson score"},
-                    {"median_reaching", medians}};
+                    {"median_reaching", medians},
+                    {"median_all", medians_all}};
   }
   const std::vector<double> rho = rank_correlations_with_range(summary);
   if (!rho.empty()) {
@@ -377,11 +400,8 @@ std::string monte_carlo_table(const MonteCarloReport& r) {
     if (!c.median_reaching.empty()) {
       std::vector<std::string> medians;
       for (std::size_t k = 0; k < c.median_reaching.size(); ++k) {
-        std::vector<double> all;
-        for (const std::vector<double>& drawn : summary.drawn) all.push_back(drawn[k]);
-        std::sort(all.begin(), all.end());
         medians.push_back(value_of(k, c.median_reaching[k]) +
-                          " (all: " + quantity_text(all[all.size() / 2], r.inputs[k].dimension, UnitSystem::si, 3) + ")");
+                          " (all: " + quantity_text(median_drawn(summary, k), r.inputs[k].dimension, UnitSystem::si, 3) + ")");
       }
       out << "  the samples that reach it, at their median: " << join(medians, ", ") << "\n";
     }

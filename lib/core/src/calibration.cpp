@@ -123,8 +123,8 @@ Calibration calibrate(const Engine& engine, const MeasuredRange& measured, const
                          (out.fitted == FrictionFit::scale ? " times the coefficients" : " at both pins") + "; more jams it) throws "
                              : "even friction coefficients of " + format_significant(largest_coefficient, 2) + " throw ") +
                     format_significant(R_top, 4) + " m, farther than the measured " + format_significant(measured.range, 4) + " m" + explained() +
-                    ": friction alone does not explain the shortfall; check the engine's values, the release ({{release_time}} or "
-                    "{{pin_angle}}) and the air");
+                    ": friction alone does not explain the shortfall; check the engine's values, the release ({{release_time}}, "
+                    "{{release_angle}} or {{pin_angle}}) and the air");
   out.value = value_for(measured.range);
   out.value_low = value_for(measured.range + measured.uncertainty);
   out.value_high = value_for(measured.range - measured.uncertainty);

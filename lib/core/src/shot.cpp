@@ -508,6 +508,9 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   auto point_at = [&](double time) { return point_from(time, phase2.y_at(time)); };
   // The objective at every step end of phase II, in the order of the samples.
   const ReleasePoint at_liftoff = point_at(t);
+  // The highest apex, in vacuum, of the flights that a release at a step end sends forward
+  // (scaled, above the base): what a target level above every flight is told.
+  double highest_apex = 0;
   std::vector<double> sampled{at_liftoff.objective};
   double best_quality = sampled.front();
   // A given release watches its value from lift-off on; one already past there would release in the trough.
@@ -534,6 +537,7 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     phase2.add(lifted.step_end(t, y, snap), snap);
     sampled.push_back(here.objective);
     best_quality = std::max(best_quality, here.objective);
+    if (here.range > 0) highest_apex = std::max(highest_apex, here.height + std::pow(std::max(here.velocity.y, 0.0), 2) / 2);  // scaled, g = 1
     if (given) {
       const double before = watch.last;
       watch.add(watched_value(given->by, t, snap, before), here.range > 0);
@@ -554,18 +558,29 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
           (!unreleased || (best_quality > 0 && sampled.back() < 0.5 * best_quality));
     return best_quality > 0 && sampled.back() < 0.5 * best_quality;
   };
-  while (!step_ends_shot() && !past_release()) {
+  bool ended = false;  // the shot ended (not merely past the release)
+  while (!(ended = step_ends_shot()) && !past_release()) {
   }
-  // A given release that cannot be made is refused with the values the whole swing runs through.
+  // A given release that cannot be made is refused with the values the whole swing runs through:
+  // where the search stopped past it, the swing is followed on to its end.
   const auto refuse_given = [&](const std::string& what) {
-    while (!step_ends_shot()) {
-    }
+    while (!ended) ended = step_ends_shot();
     refuse_given_release(*given, watch, what);
   };
   if (given_in_trough) refuse_given("the release would come before lift-off, with the projectile still in the trough");
   if (given && !watch.crossed) refuse_given("the release never comes: the beam's forward swing ends first");
-  const std::string no_forward_release = "no release sends the projectile forward: over phase II it never flies toward the target";
-  if (!given && !(best_quality > 0)) fail(no_forward_release);
+  // No release with a positive objective: under Release::range with a target level above the
+  // base, the flights go forward but none comes down at that level; else none goes forward.
+  const auto fail_no_forward_release = [&] {
+    if (criterion.release == Release::range && !criterion.range_from_release && criterion.target_level > 0 && highest_apex > 0)
+      throw Error(ErrorKind::usage,
+                  "{{target_level}} = " + format_significant(criterion.target_level * criterion.length_unit, 4) +
+                      " m lies above the flight of every release: the highest apex, in vacuum, is about " +
+                      format_significant(highest_apex * criterion.length_unit, 4) + " m above the engine's base" +
+                      (criterion.drag ? " (the air lowers it)" : "") + "; give a lower target level");
+    fail("no release sends the projectile forward: over phase II it never flies toward the target");
+  };
+  if (!given && !(best_quality > 0)) fail_no_forward_release();
   if (result.energy_drift > settings.max_energy_drift)
     fail("energy drift " + format_significant(result.energy_drift, 3) + " of Delta U exceeds " + format_significant(settings.max_energy_drift, 3) +
          "; tighten {{rtol}} or choose another {{stepper}}");
@@ -605,7 +620,7 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
       search(step_start, std::min(step_start + 1, last));
     }
     // Sampled values within round-off of 0 can leave no candidate with the objective above it.
-    if (!(found.value > 0)) fail(no_forward_release);
+    if (!(found.value > 0)) fail_no_forward_release();
     return found;
   };
   // A given release is the root of its watched value on the continuous solution, within the step
@@ -631,8 +646,10 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   result.release = point_from(t_release, y_release);
   result.work = lifted.work(y_release);
   if (given && !(result.release.range > 0))
-    refuse_given("released there, the projectile does not fly forward from above the engine's base (its velocity angle is " +
-                 format_significant(degrees(result.release.velocity_angle), 4) + " deg)");
+    refuse_given("released there, the projectile does not fly forward from above the engine's base" +
+                 (given->by == ReleaseBy::velocity_angle
+                      ? std::string()
+                      : " (its velocity angle is " + format_significant(degrees(result.release.velocity_angle), 4) + " deg)"));
   // Only what happens before the release invalidates the shot.
   auto before_release = [&](const std::optional<double>& t) { return t && *t <= t_release ? t : std::nullopt; };
   result.slack_sling = before_release(onsets[0]);

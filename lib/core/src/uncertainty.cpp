@@ -90,7 +90,10 @@ ClaimAssessment assess_claim(const MonteCarloSummary& summary, double claim) {
   // Wilson's score interval at 95 % (z = 1.96) for reached of worked.
   const double n = out.worked, p = out.reached / n, z = 1.959963984540054;
   const double centre = (p + z * z / (2 * n)) / (1 + z * z / n), half = z / (1 + z * z / n) * std::sqrt(p * (1 - p) / n + z * z / (4 * n * n));
-  out.probability = p, out.low = std::max(0.0, centre - half), out.high = std::min(1.0, centre + half);
+  out.probability = p;
+  // At 0 or all reached, an end is 0 or 1 exactly (the formula's round-off would leave 1e-17).
+  out.low = out.reached == 0 ? 0 : std::max(0.0, centre - half);
+  out.high = out.reached == out.worked ? 1 : std::min(1.0, centre + half);
   if (out.reached > 0)
     for (std::vector<double>& column : reaching) {
       std::sort(column.begin(), column.end());
@@ -108,7 +111,7 @@ std::vector<double> rank_correlations_with_range(const MonteCarloSummary& summar
     std::vector<double> input(n);
     for (std::size_t i = 0; i < n; ++i) input[i] = summary.drawn[i][k];
     const double rho = gsl_stats_spearman(input.data(), 1, R.data(), 1, n, work.data());
-    out.push_back(std::isfinite(rho) ? rho : 0);  // a constant column has no rank correlation
+    out.push_back(std::isfinite(rho) ? std::clamp(rho, -1.0, 1.0) : 0);  // a constant column has none; round-off can pass +-1
   }
   return out;
 }

@@ -142,6 +142,7 @@ ReleaseCriterion release_criterion(const Engine& engine, const ShotSettings& set
   if (settings.air) criterion.drag = scaled(drag_of(*settings.air, engine.m), engine.L2, engine.material.g);
   criterion.range_from_release = settings.range_from_release;
   criterion.target_level = settings.target_level / engine.L2;
+  criterion.length_unit = engine.L2;
   if (const auto& at = settings.release_at) {
     const double time_unit = std::sqrt(engine.L2 / engine.material.g);  // section 3 [s]
     criterion.given = GivenRelease{at->by, at->by == ReleaseBy::time ? at->value / time_unit : radians(at->value), time_unit};
@@ -201,13 +202,14 @@ std::vector<PinShot> pin_scan(const Engine& engine, ShotSettings settings, const
   return out;
 }
 
-CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance) {
+CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance, bool as_measured) {
   // From a part in 10^12 (round-off of the shot) to a factor of 10^3.
   check_ordinary(tolerance, 1e-12, 1e3, "tol", "", "relative tolerance on the predicted R and T");
   CapacityCheck c;
   c.predicted = predicted, c.tolerance = tolerance;
-  c.deviation_R = v.R_vacuum / predicted.R - 1;
-  c.deviation_T = v.T_vacuum / predicted.T - 1;
+  c.as_measured = as_measured;
+  c.deviation_R = (as_measured ? v.capacity.R : v.R_vacuum) / predicted.R - 1;
+  c.deviation_T = (as_measured ? v.capacity.T : v.T_vacuum) / predicted.T - 1;
   c.pass = std::abs(c.deviation_R) <= tolerance && std::abs(c.deviation_T) <= tolerance;
   return c;
 }

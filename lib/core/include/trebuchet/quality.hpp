@@ -38,6 +38,7 @@ struct ReleaseCriterion {
   std::optional<GivenRelease> given;
   /// For Release::range: the level the range is measured at, above the engine's base (scaled, in L2).
   double target_level = 0;
+  double length_unit = 1;  ///< [m] per scaled length (L2): the messages give metres
   double n = 1;  ///< exponent of eps in eq:Q_n; Q is reported with it whatever the release
   /// For Release::range: the drag the range is flown through (scaled, air.hpp; none: vacuum),
   /// and whether the range is Denny's, from the release point to where the flight dips below

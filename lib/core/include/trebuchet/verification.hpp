@@ -136,15 +136,17 @@ std::vector<PinShot> pin_scan(const Engine& engine, ShotSettings settings, const
 inline constexpr double pin_tolerance_offsets[] = {-2, -1, 1, 2};
 
 /// A predicted capacity (from the calculator, in vacuum as the paper's) against the shot's own
-/// in vacuum (R_vacuum, T_vacuum), whatever air the shot flew through.
+/// in vacuum (R_vacuum, T_vacuum), whatever air the shot flew through; or, as_measured, a
+/// requested one (fit's) against the shot as it measures them (its air, level and range).
 struct CapacityCheck {
   Capacity predicted;  ///< [m], [J]
   double deviation_R = 0;  ///< simulated/predicted - 1
   double deviation_T = 0;
   double tolerance = 0;  ///< relative
   bool pass = false;  ///< both deviations within the tolerance
+  bool as_measured = false;  ///< against the shot's capacity as measured, not the vacuum one
 };
 
-CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance);
+CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance, bool as_measured = false);
 
 }  // namespace trebuchet

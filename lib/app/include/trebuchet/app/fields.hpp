@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "trebuchet/quality.hpp"
 #include "trebuchet/material.hpp"
 #include "trebuchet/app/units.hpp"
 
@@ -54,6 +55,9 @@ struct InputField {
   const char* range;  ///< the values the library takes, in words (the core checks them)
   double Material::*material;  ///< the member of Material it sets; nullptr for none
 };
+
+/// The input that sets a release in the form `by` (quality.hpp): release_time, release_angle_deg or pin_angle_deg.
+const InputField& release_field(ReleaseBy by);
 
 /// Every input, in the order the programs list them (inputs.def).
 const std::vector<InputField>& input_fields();

@@ -69,7 +69,7 @@ MonteCarloRequest with_draws(const MonteCarloRequest& request, const std::functi
 Verification sample_verification(const MonteCarloRequest& sample);
 
 /// The shots a sample takes (1, or those of a completion at the first values), checking that
-/// the first values make an engine: bad input there is thrown, as the run's.
+/// the first values make an engine and its shot: bad input there is thrown, as the run's.
 std::int64_t shots_per_sample(const MonteCarloRequest& request);
 
 /// The run's uncertain inputs, as its user named them, in the order they are drawn.
