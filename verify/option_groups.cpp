@@ -84,6 +84,15 @@ void engine_options(CLI::App* app, Options& o, bool spreads) {
   positive_option(app, "--series-dt", o.series_dt_s, UnitDimension::time,
                   "sample the series every this many seconds (e.g. 5ms) instead of at the integrator's steps");
   app->add_option("--plot", o.plot, "draw the shot into this folder: SVG pictures, an animated GIF and index.html (needs gnuplot)");
+  machine_option(app, o);
+}
+
+void machine_option(CLI::App* app, Options& o) {
+  parsed_option(
+      app, "--machine", [&o](const std::string& text) { o.design.machine = parse_machine(text, "--machine"); },
+      "the machine: hinged (the paper's counterweight on its arm L3), fixed (bolted to the short arm, its centre L3 beyond the arm's "
+      "end) or floating-arm (the axle rolling on a rail, the counterweight L3 below its pin in a vertical guide) (default hinged; "
+      "docs/machines.md)");
 }
 
 void target_level_option(CLI::App* app, Options& o, bool spreads) {

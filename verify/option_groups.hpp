@@ -16,6 +16,8 @@ namespace trebuchet::verify {
 void input_options(CLI::App* app, Options& o, unsigned operation, std::initializer_list<FieldGroup> groups, bool spreads);
 /// The design file, the engine and its capacity (input_options), --tol, --series, --series-dt, --plot.
 void engine_options(CLI::App* app, Options& o, bool spreads);
+/// --machine (design.hpp, MachineKind).
+void machine_option(CLI::App* app, Options& o);
 void target_level_option(CLI::App* app, Options& o, bool spreads);
 /// --quality and --n.
 void release_options(CLI::App* app, Options& o);

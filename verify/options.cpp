@@ -85,6 +85,7 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
   integrator_options(opt, o);
   format_option(opt, o, false);
   air_options(opt, o);
+  machine_option(opt, o);
 
   CLI::App* derive = s.derive_table;
   sweep_options(derive, o);

@@ -4,7 +4,8 @@
 For every kind of engine (the paper's, propped, a beam given by its centre of mass and inertia
 or radius of gyration, a tapered beam, a beam of a given diameter, a box counterweight or one
 with its inertia, friction at each pin and in the trough, a rope in the air before the release,
-a release given by its pin angle, velocity angle or time):
+a release given by its pin angle, velocity angle or time, the fixed counterweight and the
+floating arm):
   - the `engine` member of `shot --format json`, fed back as a design, gives the same record,
     every number equal to the last bit (JSON numbers are written to round-trip doubles);
   - the CSV of `shot --format csv --digits 17`, fed back, gives the same row (with the "error"
@@ -35,6 +36,8 @@ KINDS = {
     "pin_angle": ["--mb", "174kg", "--pin-angle", "30"],
     "release_angle": ["--mb", "174kg", "--release-angle", "40"],
     "release_time": ["--mb", "174kg", "--release-time", "1s"],
+    "fixed": ["--mb", "174kg", "--machine", "fixed", "--counterweight-inertia", "300"],
+    "floating_arm": ["--mb", "174kg", "--machine", "floating-arm"],
 }
 SETTINGS_FLAGS = {"--air", "--drag-in-sling"}
 

@@ -8,6 +8,7 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/app/design_record.hpp"
+#include "trebuchet/app/names.hpp"
 #include "trebuchet/app/shot_record.hpp"
 #include "trebuchet/app/text_input.hpp"
 #include "trebuchet/app/units.hpp"
@@ -71,9 +72,19 @@ DesignValues read_design_values(const nlohmann::json& object, const std::string&
       v.*field.member = aliased;
     }
   }
+  if (object.contains(machine_key) && !object[machine_key].is_null()) {
+    const nlohmann::json& machine = object[machine_key];
+    const std::string name = engine_key_name(where, machine_key);
+    if (!machine.is_string()) throw Error(ErrorKind::usage, name + ": " + brief_json(machine) + " is not a machine's name; use " + machine_names());
+    v.machine = parse_machine(machine.get<std::string>(), name);
+  }
   // The other keys: what the programs write (read back, as CSV columns are), a near miss, or
   // the caller's own (a site's name), passed through.
-  static const std::vector<std::string> known = input_names(op_shot);
+  static const std::vector<std::string> known = [] {
+    std::vector<std::string> names = input_names(op_shot);
+    names.push_back(machine_key);
+    return names;
+  }();
   // The programs' JSON keys: their CSV columns that are an input's key with a unit ("L4_m") are
   // near misses in JSON, where a value carries its unit in its text.
   static const std::vector<std::string> written = [] {
@@ -180,6 +191,7 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
                     where.empty() ? ", or the beam's diameter {{D}}, from which it follows" : ", or \"D\", the beam's diameter");
   e.theta_i_deg = v.theta_i_deg.value_or(standard_theta_i_deg);
   e.psi_i_deg = v.psi_i_deg.value_or(0);
+  e.machine = v.machine.value_or(MachineKind::hinged);
   // D = 0 is how the outputs write "not given" (they read back); below 0 it is a mistake.
   if (v.D && !(*v.D >= 0))
     throw Error(ErrorKind::bad_number,
@@ -198,7 +210,9 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
                   engine_key_name(where, "F") + " = " + format_significant(*F, 6) +
                       ": the counterweight arm fraction (L2 + L3)/H must be positive; the paper's are 1, 2/3 and 1/2");
     e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, *F);
-    if (e.theta_i_deg > 0 && e.theta_i_deg < 90 && e.L1 > 0 && e.L2 > 0 && !(e.L3 > 0))
+    const bool at_arm_end = e.machine != MachineKind::hinged && std::abs(e.L3) <= 1e-12 * e.L2;  // F = L2/H, within its rounding
+    if (at_arm_end) e.L3 = 0;
+    if (e.theta_i_deg > 0 && e.theta_i_deg < 90 && e.L1 > 0 && e.L2 > 0 && !(e.L3 > 0) && !at_arm_end)
       throw Error(ErrorKind::bad_number,
                   named + ": with F = " + format_significant(*F, 4) + " and theta_i = " + format_significant(e.theta_i_deg, 4) +
                       " deg, L2 + L3 = F L1 cos(theta_i) = " + format_significant(*F * pivot_height(e), 4) + " m is not longer than L2 = " +
@@ -280,6 +294,7 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
   if (own_output) {
     std::vector<std::string> inputs = part_columns();
     inputs.push_back("psi_i_deg");
+    inputs.push_back(machine_key);
     for (const InputField& field : input_fields())  // a given release reads back
       if (field.group == FieldGroup::release) inputs.push_back(csv_column_of(field));
     for (const Field& field : engine_fields(Engine{})) inputs.push_back(csv_column(field));
@@ -287,7 +302,7 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
       if (std::find(inputs.begin(), inputs.end(), column) == inputs.end()) results.push_back(column);
   }
   struct Column {
-    enum { engine, dropped, passed, error } role;
+    enum { engine, machine, dropped, passed, error } role;
     ColumnName name;
   };
   std::vector<Column> columns;
@@ -315,6 +330,8 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
       columns.push_back({Column::dropped, {header, ""}});
     } else if (header == "error") {
       columns.push_back({Column::error, {header, ""}});
+    } else if (header == machine_key) {
+      columns.push_back({Column::machine, {header, ""}});
     } else {
       refuse_near_miss(header, inputs, source);  // "theta_i", "L_4": meant as an input, not passed through
       columns.push_back({Column::passed, {header, ""}});
@@ -351,6 +368,8 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
       for (std::size_t k = 0; k < columns.size(); ++k)
         if (columns[k].role == Column::engine && !cells.cells[k].empty())
           row.design[columns[k].name.key] = cell_value(cells.cells[k], columns[k].name.unit, reader.header()[k]);
+        else if (columns[k].role == Column::machine && !cells.cells[k].empty())
+          row.design[machine_key] = cells.cells[k];
     } catch (const Error& e) {
       row.line = cells.line;
       row.error = e.what();

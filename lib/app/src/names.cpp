@@ -12,6 +12,9 @@ namespace {
 constexpr std::array<std::pair<Release, std::string_view>, 3> release_names = {
     {{Release::quality, "Q"}, {Release::efficiency, "eps"}, {Release::range, "range"}}};
 
+constexpr std::array<std::pair<MachineKind, std::string_view>, 3> machine_table = {
+    {{MachineKind::hinged, "hinged"}, {MachineKind::fixed, "fixed"}, {MachineKind::floating_arm, "floating-arm"}}};
+
 constexpr std::array<std::pair<Stepper, std::string_view>, 11> stepper_table = {{{Stepper::rk2, "rk2"},
                                                                                  {Stepper::rk4, "rk4"},
                                                                                  {Stepper::rkf45, "rkf45"},
@@ -52,6 +55,18 @@ Release parse_release(std::string_view name, std::string_view option) {
   if (const Release* release = value_in(release_names, name)) return *release;
   throw Error(ErrorKind::usage,
               std::string(option) + ": '" + std::string(name) + "' is not a release criterion; use Q (eq:Q, eq:Q_n with {{n}}), eps or range");
+}
+
+std::string machine_name(MachineKind machine) { return name_in(machine_table, machine); }
+
+std::string machine_names() { return "hinged, fixed or floating-arm"; }
+
+MachineKind parse_machine(std::string_view name, std::string_view option) {
+  if (const MachineKind* machine = value_in(machine_table, name)) return *machine;
+  if (name == "floating_arm") return MachineKind::floating_arm;
+  throw Error(ErrorKind::usage,
+              std::string(option) + ": '" + std::string(name) + "' is not a machine" + (name == "whipper" ? " built yet (docs/machines.md)" : "") +
+                  "; use " + machine_names());
 }
 
 UnitSystem parse_unit_system(std::string_view name, std::string_view option) {

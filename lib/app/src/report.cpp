@@ -97,6 +97,16 @@ std::string design_table(const OptimalEngine& design, UnitSystem units) {
 
 namespace {
 
+// The machine after "engine simulated", none for the paper's.
+std::string machine_title(MachineKind machine) {
+  switch (machine) {
+    case MachineKind::fixed: return " (fixed counterweight, its centre L3 beyond the short arm's end)";
+    case MachineKind::floating_arm: return " (floating arm, its counterweight L3 below its pin; lengths along the ground from the guide's line)";
+    case MachineKind::hinged: break;
+  }
+  return "";
+}
+
 // The parts of an engine as built, a line of the report; empty for the paper's ideal engine.
 std::string describe_parts(const Engine& engine, UnitSystem units) {
   const EngineParts& p = engine.parts;
@@ -191,27 +201,31 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
   auto q = [&](double si, UnitDimension dimension, int digits = 4) { return quantity_text(si, dimension, units, digits); };
   const double g = engine.material.g, mg = engine.m * g, Mg = engine.M * g;
   std::ostringstream out;
-  out << "engine simulated:\n"
+  const bool floating = engine.machine == MachineKind::floating_arm;
+  const char* origin = floating ? " the guide's line" : " the pivot";  // where lengths along the ground start
+  out << "engine simulated" << machine_title(engine.machine) << ":\n"
       << engine_table(engine, units) << "  theta_i = " << sig(engine.theta_i_deg, 4)
       << " deg, arm fraction (L2 + L3)/H = " << sig(arm_fraction(engine), 4)
       << (engine.psi_i_deg != 0 ? ", counterweight propped at psi_i = " + sig(engine.psi_i_deg, 4) + " deg" : std::string()) << "\n"
       << describe_parts(engine, units) << "assumptions: " << describe_assumptions(engine, settings) << "\n"
       << "R = " << q(v.capacity.R, UnitDimension::length, 5) << "   T = " << q(v.capacity.T, UnitDimension::energy, 5) << "   "
       << (settings.range_from_release ? "back at the release height" : "at the target level")
-      << (settings.air || settings.range_from_release ? "; the paper's range, in vacuum from the pivot: " + q(v.R_vacuum, UnitDimension::length, 5)
-                                                      : std::string())
+      << (settings.air || settings.range_from_release
+              ? "; the paper's range, in vacuum from" + std::string(origin) + ": " + q(v.R_vacuum, UnitDimension::length, 5)
+              : std::string())
       << "\n"
       << "eps = " << sig(100 * v.eps, 4) << " %   Q = " << sig(100 * v.Q, 4) << " %   force factor = " << sig(v.force_factor, 4) << " (eq:F)\n"
       << "release: v = " << q(v.v, UnitDimension::speed) << ", h = " << q(v.h, UnitDimension::length) << ", "
-      << q(std::abs(v.x), UnitDimension::length) << (v.x < 0 ? " behind the pivot" : " ahead of the pivot") << " (x = " << sig(v.x, 4)
+      << q(std::abs(v.x), UnitDimension::length) << (v.x < 0 ? " behind" : " ahead of") << origin << " (x = " << sig(v.x, 4)
       << " m), A = " << sig(v.A_deg, 4) << " deg, pin angle " << sig(v.pin_angle_deg, 4) << " deg\n"
       << "times: lift-off " << sig(v.t_liftoff, 4) << " s, release " << sig(v.t_release, 4) << " s\n"
       << "forces of eq:F: F_S_perp = " << q(v.FS_perp, UnitDimension::force) << " = " << sig(v.FS_perp_mg, 4)
       << " m·g, F_R = " << q(v.FR, UnitDimension::force) << " = " << sig(v.FR_Mg, 4) << " M·g, dF_Rh = " << q(v.dFRh, UnitDimension::force) << " = "
       << sig(v.dFRh_Mg, 4) << " M·g\n";
   if (settings.loads) {
-    const char* names[load_count] = {"sling tension (rope)      ", "counterweight hinge pin   ", "pivot axle                ",
-                                     "beam, bending at the pivot"};
+    const char* names[load_count] = {"sling tension (rope)      ",
+                                     engine.machine == MachineKind::fixed ? "counterweight's mounting  " : "counterweight hinge pin   ",
+                                     floating ? "axle on its rail          " : "pivot axle                ", "beam, bending at the pivot"};
     const double weight[load_count] = {mg, Mg, Mg, Mg * engine.L2};
     out << "largest loads up to the release, to size the parts:\n";
     const bool moment_known = scaled_design(engine).short_section().has_value();

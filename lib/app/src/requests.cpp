@@ -56,6 +56,11 @@ OptimizeRequest optimize_request(const DesignValues& v, const ShotSettings& sett
   request.projectile_mass = v.m;
   request.theta_i_deg = v.theta_i_deg.value_or(standard_theta_i_deg);
   request.F = v.F.value_or(standard_F);
+  request.machine = v.machine.value_or(MachineKind::hinged);
+  if (request.machine != MachineKind::hinged && v.F)
+    throw Error(ErrorKind::usage,
+                "{{F}}: optimize builds the fixed counterweight and the floating arm with the counterweight at the short arm's end (L3 = 0); "
+                "leave out {{F}}");
   request.material = material.over(material_of(v, Material{}));
   request.settings = settings;
   if (v.l) {

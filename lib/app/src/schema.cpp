@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "trebuchet/app/csv.hpp"
+#include "trebuchet/app/names.hpp"
 #include "trebuchet/error.hpp"
 
 namespace trebuchet {
@@ -74,6 +75,7 @@ void write_engine(nlohmann::ordered_json& out, const Engine& engine) {
   require_finite(fields);
   for (const Field& field : fields) out[field.key] = field.value;
   if (engine.psi_i_deg != 0) out[key_of(&DesignValues::psi_i_deg)] = engine.psi_i_deg;  // only a propped engine carries it
+  if (engine.machine != MachineKind::hinged) out[machine_key] = machine_name(engine.machine);  // the paper's engine is the one without
   // The parts as built, as given, so that the engine reads back the same.
   using V = DesignValues;
   const EngineParts& p = engine.parts;

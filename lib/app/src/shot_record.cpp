@@ -124,6 +124,7 @@ std::vector<std::string> verification_csv_header() {
   header.push_back("psi_i_deg");
   header.push_back(pin_angle_column);  // after the earlier columns, so that they keep their places
   for (const InputField* field : release_fields()) header.push_back(csv_column_of(*field));  // a given release, which reads back
+  header.push_back(machine_key);
   return header;
 }
 
@@ -148,6 +149,7 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
     const bool given = settings.release_at && &release_field(settings.release_at->by) == field;
     row.push_back(given ? csv_number(settings.release_at->value, digits) : "");
   }
+  row.push_back(machine_name(engine.machine));
   return row;
 }
 

@@ -6,7 +6,11 @@
 
 namespace trebuchet {
 
-double ScaledDesign::L() const { return F * l * std::cos(radians(theta_i_deg)) - 1; }  // eq:Design, section 2
+double ScaledDesign::L() const {  // eq:Design, section 2
+  const double L = F * l * std::cos(radians(theta_i_deg)) - 1;
+  // The other machines' counterweight at the short arm's end, F = 1/(l cos theta_i), within rounding.
+  return machine != MachineKind::hinged && std::abs(L) <= 1e-12 ? 0 : L;
+}
 
 double ScaledDesign::K() const { return (l + 1) / mu_b; }  // eq:kMkD
 
@@ -20,8 +24,11 @@ std::optional<BuiltParts::Section> ScaledDesign::short_section() const {
   return BuiltParts::Section{mass, -0.5, mass / 3};
 }
 
+double ScaledDesign::counterweight_lever() const { return machine == MachineKind::fixed ? 1 + L() : 1; }
+
 double ScaledDesign::energy_drop() const {  // eq:DU, and the propped counterweight's extra height
-  return (1 - mu_b * beam_cm()) * (1 + std::cos(radians(theta_i_deg))) + L() * (1 - std::cos(radians(psi_i_deg)));
+  const double drop = (counterweight_lever() - mu_b * beam_cm()) * (1 + std::cos(radians(theta_i_deg)));
+  return machine == MachineKind::hinged ? drop + L() * (1 - std::cos(radians(psi_i_deg))) : drop;
 }
 
 }  // namespace trebuchet

@@ -58,6 +58,7 @@ double wood_beam_mass(const Engine& e) {
 ScaledDesign scaled_design(const Engine& engine) {  // eq:Design
   ScaledDesign out{engine.L1 / engine.L2, engine.L4 / engine.L1, engine.mb / engine.M, engine.m / engine.M,
                    engine.theta_i_deg,    arm_fraction(engine),  engine.psi_i_deg};
+  out.machine = engine.machine;
   const EngineParts& p = engine.parts;
   const double L2 = engine.L2, M = engine.M, inertia_unit = M * L2 * L2;  // section 3
   BuiltParts& b = out.parts;
@@ -85,13 +86,14 @@ Engine engine_of(const ScaledDesign& design, double L2, const Material& material
   e.psi_i_deg = design.psi_i_deg;
   e.L2 = L2;
   e.L1 = design.l * L2;
-  e.L3 = counterweight_arm(e.L1, L2, design.theta_i_deg, design.F);
+  e.L3 = design.machine == MachineKind::hinged ? counterweight_arm(e.L1, L2, design.theta_i_deg, design.F) : design.L() * L2;
   e.L4 = design.l4 * e.L1;
   e.M = size.M;
   e.D = size.D;
   e.m = design.mu * e.M;
   e.mb = design.mu_b * e.M;
   e.material = material;
+  e.machine = design.machine;
   return e;
 }
 
@@ -182,7 +184,7 @@ void check_parts(const Engine& e) {
   if (!(p.counterweight_inertia >= 0))
     throw Error(ErrorKind::bad_number, "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + ": a moment of inertia must not be negative");
   // Its radius of gyration sqrt(I/M) beyond twice the arm: a counterweight that could not swing under the beam.
-  if (!(p.counterweight_inertia <= e.M * 4 * e.L3 * e.L3))
+  if (e.machine == MachineKind::hinged && !(p.counterweight_inertia <= e.M * 4 * e.L3 * e.L3))
     throw Error(ErrorKind::bad_number,
                 "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + " kg m^2 gives the counterweight a radius of gyration of " +
                     say(std::sqrt(p.counterweight_inertia / e.M)) + " m, more than twice its arm L3 = " + say(e.L3) +
@@ -210,7 +212,17 @@ void check_engine(const Engine& e) {
                     ": the initial counterweight angle must lie between -90 and 90 degrees (0: hanging, unpropped)");
   positive(e.L1, "L1", "long beam section");
   positive(e.L2, "L2", "short beam section");
-  positive(e.L3, "L3", "counterweight arm (hinge to counterweight centre)");
+  const bool hinged = e.machine == MachineKind::hinged;  // the others may set their counterweight's centre at the arm's end
+  if (hinged)
+    positive(e.L3, "L3", "counterweight arm (hinge to counterweight centre)");
+  else if (!(e.L3 >= 0))
+    throw Error(ErrorKind::bad_number,
+                "{{L3}} = " + format_significant(e.L3, 6) +
+                    ": the counterweight's centre beyond the short arm's end (or below its pin) must not be negative");
+  if (!hinged && e.psi_i_deg != 0)
+    throw Error(
+        ErrorKind::bad_number,
+        "{{psi_i_deg}} = " + format_significant(e.psi_i_deg, 6) + ": only the hinged counterweight can be propped; leave it out for this machine");
   positive(e.L4, "L4", "sling length");
   positive(e.M, "M", "counterweight mass");
   positive(e.m, "m", "projectile mass");
@@ -221,11 +233,10 @@ void check_engine(const Engine& e) {
   positive(e.material.g, "g", "gravitational acceleration");
   // Sizes and proportions of ordinary range: within them every product the physics and its SI
   // outputs form (M g L2, sqrt(g L2), L1/L2 ...) stays finite, and the integrator sees an engine.
-  for (const auto& [value, key, what] : {std::tuple{e.L1, "L1", "long beam section"},
-                                         {e.L2, "L2", "short beam section"},
-                                         {e.L3, "L3", "counterweight arm"},
-                                         {e.L4, "L4", "sling length"}})
+  for (const auto& [value, key, what] :
+       {std::tuple{e.L1, "L1", "long beam section"}, {e.L2, "L2", "short beam section"}, {e.L4, "L4", "sling length"}})
     check_ordinary(value, 1e-6, 1e6, key, "m", what);
+  if (hinged || e.L3 > 0) check_ordinary(e.L3, 1e-6, 1e6, "L3", "m", "counterweight arm");
   for (const auto& [value, key, what] : {std::tuple{e.M, "M", "counterweight mass"}, {e.m, "m", "projectile mass"}})
     check_ordinary(value, 1e-9, 1e12, key, "kg", what);
   if (e.mb > 0) check_ordinary(e.mb, 1e-9, 1e12, "mb", "kg", "beam mass");
@@ -243,7 +254,7 @@ void check_engine(const Engine& e) {
   };
   proportion(e.L1, "L1", e.L2, "L2");
   proportion(e.L4, "L4", e.L1, "L1");
-  proportion(e.L3, "L3", e.L2, "L2");
+  if (hinged || e.L3 > 0) proportion(e.L3, "L3", e.L2, "L2");
   proportion(e.m, "m", e.M, "M");
   if (e.mb > 0) proportion(e.mb, "mb", e.M, "M");
   check_parts(e);

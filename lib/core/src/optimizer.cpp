@@ -23,6 +23,14 @@ struct Start {
 // The lightest beam of a fixed-l search's grid, mu_b = mb/M.
 constexpr double least_searched_mu_b = 1e-6;
 
+// The shape built as the request's machine: the paper's holds F; the fixed counterweight and the
+// floating arm hold their counterweight at the short arm's end (L3 = 0: F = 1/(l cos theta_i)),
+// where a builder puts it and where F, which would move it along the arm, means nothing.
+void build_as_requested(ScaledDesign& shape, const OptimizeRequest& r) {
+  shape.machine = r.machine;
+  if (r.machine != MachineKind::hinged) shape.F = 1 / (shape.l * std::cos(radians(shape.theta_i_deg)));
+}
+
 // The calculator's optimum for the capacity on each branch it has, as starting shapes.
 std::vector<Start> starts_for(const OptimizeRequest& r) {
   std::vector<Start> starts;
@@ -31,6 +39,7 @@ std::vector<Start> starts_for(const OptimizeRequest& r) {
     // each search keeps to its side, from the best point of a grid there (search_from).
     starts.push_back({"smaller-l4 branch", {*r.fixed_l, 0.85, 1e-3, 0, r.theta_i_deg, r.F}});
     starts.push_back({"larger-l4 branch", {*r.fixed_l, 1.2, 1e-3, 0, r.theta_i_deg, r.F}});
+    for (Start& s : starts) build_as_requested(s.shape, r);
     return starts;
   }
   for (ScaledDesign shape : r.starts) {
@@ -67,6 +76,7 @@ std::vector<Start> starts_for(const OptimizeRequest& r) {
   for (Start& s : starts) {
     s.shape.theta_i_deg = r.theta_i_deg, s.shape.F = r.F;
     if (!(s.shape.L() > 0)) s.shape.l = 1.5 * l_min;
+    build_as_requested(s.shape, r);
   }
   return starts;
 }
@@ -89,7 +99,8 @@ struct Search {
     // With a fixed l the simplex moves in (log l4, log mu_b) alone.
     const std::size_t at = request->fixed_l ? 0 : 1;
     const double l = request->fixed_l ? *request->fixed_l : std::exp(x[0]);
-    const ScaledDesign shape{l, std::exp(x[at]), std::exp(x[at + 1]), warm_mu, theta, F};
+    ScaledDesign shape{l, std::exp(x[at]), std::exp(x[at + 1]), warm_mu, theta, F};
+    build_as_requested(shape, *request);
     // Each branch keeps its side of l4 = 1 (appendix B): a step across it scores nothing.
     if (request->fixed_l && (shape.l4 < 1) != (branch_below_one)) return 0;
     try {

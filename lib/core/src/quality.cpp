@@ -7,7 +7,9 @@ namespace trebuchet {
 
 ForceValues force_values(const Snapshot& s) {
   const Vec2& r = s.pivot_reaction;  // of order M g: no overflow to guard against, as hypot would
-  return {s.sling_perpendicular, std::sqrt(r.x * r.x + r.y * r.y), r.x, -r.x};
+  // The frame is pushed along the ground at the pivot, and at the floating arm's guide, whose rail takes none.
+  const double horizontal = r.x + s.guide_force.x;
+  return {s.sling_perpendicular, std::sqrt(r.x * r.x + r.y * r.y), horizontal, -horizontal};
 }
 
 void ForceExtremes::add(const ForceValues& values) {

@@ -400,14 +400,7 @@ ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criter
 
 ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterion, const IntegratorSettings& settings, std::vector<TracePoint>* trace,
                          double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads) {
-  if (!(e.L() > 0))
-    fail("no room for the counterweight arm: L3/L2 = F l cos(theta_i) - 1 = " + format_significant(e.L(), 4) +
-         " <= 0 (eq:Design); raise F or l, or lower theta_i");
-  const Dynamics dynamics(e);
-  if (!(1 - e.mu_b * e.beam_cm() > 0))
-    fail("the beam cannot turn: " + std::string(e.parts.beam ? "mu_b c (c its centre of mass from the pivot, in L2) = " : "mu_b (l - 1)/2 = ") +
-         format_significant(e.mu_b * e.beam_cm(), 4) + " >= 1, its long arm outweighs the counterweight (eq:DU); lighten the beam or shorten L1");
-  return simulate_shot(dynamics, criterion, settings, trace, trace_dt, unreleased, find_loads);
+  return simulate_shot(*machine_of(e), criterion, settings, trace, trace_dt, unreleased, find_loads);
 }
 
 ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criterion, const IntegratorSettings& settings,

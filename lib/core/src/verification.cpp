@@ -87,7 +87,7 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   const double Mg = engine.M * g;
   {  // the energy budget at the release, in M g L2, then in J
     const ScaledDesign design = scaled_design(engine);
-    const Snapshot at_release = Dynamics(design).snapshot(Phase::lifted, r.state);
+    const Snapshot at_release = machine_of(design)->snapshot(Phase::lifted, r.state);
     const double at_rest = design.mu_b * design.beam_cm() - 1 - design.L();  // upright beam, hanging counterweight, from the pivot's level
     const double energy_unit = Mg * L2;
     out.energy.delta_U = design.energy_drop() * energy_unit;

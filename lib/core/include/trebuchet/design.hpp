@@ -45,6 +45,14 @@ struct BuiltParts {
   bool dissipates() const { return axle_friction > 0 || hinge_friction > 0 || trough_friction > 0 || drag.has_value(); }
 };
 
+/// The machine a design is built as (docs/machines.md). The paper's engine hangs its
+/// counterweight from a hinge at the short arm's end, on an arm L3 (appendix A). The fixed
+/// counterweight bolts it to the short arm, its centre L3 beyond the arm's end, turning with the
+/// beam (Trebuchator's "fixed": its hanger is more short arm). The floating arm's axle rolls on
+/// a level rail while the counterweight, pinned to the short arm's end and hanging L3 below the
+/// pin, falls in a vertical guide without turning (Trebuchator's "floating").
+enum class MachineKind { hinged, fixed, floating_arm };
+
 /// Historical engines start at rest with psi_i = phi_i = 0 (section 2).
 struct ScaledDesign {
   double l = 0;  ///< L1/L2, scaled
@@ -60,8 +68,10 @@ struct ScaledDesign {
   /// of row 2 is psi_i = -4.6 deg).
   double psi_i_deg = 0;
   BuiltParts parts{};  ///< the engine as built; empty: the paper's ideal engine
+  MachineKind machine = MachineKind::hinged;  ///< the paper's unless chosen
 
-  /// L = L3/L2 = F l cos(theta_i) - 1 (eq:Design), scaled.
+  /// L = L3/L2 = F l cos(theta_i) - 1 (eq:Design), scaled; for the fixed counterweight and the
+  /// floating arm 0 where that is within 1e-12 of it (their counterweight at the arm's end).
   double L() const;
   /// K = (l + 1)/mu_b (eq:kMkD), scaled.
   double K() const;
@@ -74,9 +84,12 @@ struct ScaledDesign {
   /// The beam's short section as a body: for the uniform rod mass mu_b/(l + 1), centre at -1/2
   /// and inertia mu_b/(3 (l + 1)); none for a beam given only as a whole.
   std::optional<BuiltParts::Section> short_section() const;
+  /// The counterweight's centre's distance from the pivot along the beam when it turns with it,
+  /// as its weight's lever (in L2): 1 + L for the fixed counterweight, 1 (the hinge) for the others.
+  double counterweight_lever() const;
   /// Delta U/(M g L2) of eq:DU: (1 - mu_b c)(1 + cos theta_i), c = beam_cm() ((l - 1)/2 in the
   /// paper), plus L (1 - cos psi_i) for a propped counterweight, which starts that much higher
-  /// above its final rest.
+  /// above its final rest: (lever - mu_b c)(1 + cos theta_i) for the other machines.
   double energy_drop() const;
 };
 

@@ -40,6 +40,7 @@ struct Snapshot {
   Vec2 projectile, projectile_velocity;  ///< relative to the pivot, scaled
   Vec2 pivot_reaction;  ///< F_R: force of the frame on the beam at the pivot
   Vec2 hinge_force;  ///< F_H: force of the arm on the counterweight
+  Vec2 guide_force;  ///< of the frame's guide on the counterweight (the floating arm's; 0 for the others)
   Vec2 sling_on_tip;  ///< force of the sling on the beam tip
   double sling_perpendicular = 0;  ///< F_S_perp: component of the sling's pull on the tip against the beam's turn
   double normal_force = 0;  ///< trough on projectile (phase I; 0 after)

@@ -57,6 +57,9 @@ struct Engine {
   double psi_i_deg = 0;  ///< initial counterweight angle [deg]: 0 unpropped (design.hpp gives the sign)
   Material material{};  ///< beta2, wood and g: what sized it, and the g it is shot under
   EngineParts parts{};  ///< as built; empty: the paper's ideal engine
+  /// The machine it is built as; for the fixed counterweight and the floating arm L3 places the
+  /// counterweight's centre beyond the short arm's end, or below its pin, and may be 0 (design.hpp).
+  MachineKind machine = MachineKind::hinged;
 };
 
 /// The scaled design of eq:Design, with F from the counterweight arm, and the engine's parts

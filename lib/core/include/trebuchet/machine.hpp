@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 
 #include "trebuchet/design.hpp"
 #include "trebuchet/dynamics_types.hpp"
@@ -46,5 +47,11 @@ class Machine {
   /// work of each loss (Losses).
   virtual bool dissipates() const = 0;
 };
+
+/// The machine a design is built as (ScaledDesign::machine): the paper's engine (Dynamics), the
+/// fixed counterweight or the floating arm. Throws Error(numerical) for a design that cannot
+/// shoot: no room for the hinged counterweight's arm, a counterweight inside the short arm or
+/// above its pin (L < 0), or a beam whose long arm outweighs the counterweight.
+std::unique_ptr<Machine> machine_of(const ScaledDesign& design);
 
 }  // namespace trebuchet

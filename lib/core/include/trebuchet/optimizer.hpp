@@ -20,6 +20,9 @@ struct OptimizeRequest {
   std::optional<double> projectile_mass;
   double theta_i_deg = standard_theta_i_deg;  ///< [deg]
   double F = standard_F;  ///< (L2 + L3)/H, scaled
+  /// The machine every shape is built as; the fixed counterweight and the floating arm with the
+  /// counterweight at the short arm's end (L3 = 0), F unused.
+  MachineKind machine = MachineKind::hinged;
   Material material{};
   ShotSettings settings{};  ///< release criterion (Q, Q_n or Q_eps) and integrator
   double shape_tolerance = 1e-4;  ///< simplex size in log shape at which a search stops, scaled

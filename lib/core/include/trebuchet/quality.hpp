@@ -48,7 +48,8 @@ struct ReleaseCriterion {
 };
 
 /// The forces of eq:F at one moment, in M g: F_S_perp, |F_R|, F_Rh and -F_Rh, so that every
-/// running extreme is a running maximum (F_Rh is tracked both ways).
+/// running extreme is a running maximum (F_Rh is tracked both ways). F_Rh is the frame's horizontal
+/// force on the machine: at the pivot, and the floating arm's at its guide, as its rail takes none.
 enum ForceIndex { sling_perpendicular, pivot_reaction, pivot_horizontal, pivot_horizontal_negated };
 inline constexpr int force_count = 4;
 using ForceValues = std::array<double, force_count>;

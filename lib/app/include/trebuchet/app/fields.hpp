@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "trebuchet/design.hpp"
 #include "trebuchet/quality.hpp"
 #include "trebuchet/material.hpp"
 #include "trebuchet/app/units.hpp"
@@ -22,7 +23,13 @@ struct DesignValues {
 #define TREBUCHET_INPUT(key, ...) std::optional<double> key;
 #include "trebuchet/app/inputs.def"
 #undef TREBUCHET_INPUT
+  /// The machine, a name rather than a number (names.hpp): --machine, the JSON key and CSV
+  /// column "machine"; empty: the paper's hinged counterweight.
+  std::optional<MachineKind> machine;
 };
+
+/// The key, CSV column and Python key of DesignValues::machine; its flag is "--machine".
+inline constexpr const char* machine_key = "machine";
 
 /// The operations that take an input, a bit each.
 enum Operation : unsigned {

@@ -1,11 +1,12 @@
 // The names by which users and files choose the library's options: the release criterion
-// (--quality, and "quality" in sweep parts) and the stepper (--stepper). Kept apart from the
+// (--quality, and "quality" in sweep parts), the machine (--machine) and the stepper (--stepper). Kept apart from the
 // physics, which knows only the enums.
 #pragma once
 
 #include <string>
 #include <string_view>
 
+#include "trebuchet/design.hpp"
 #include "trebuchet/integrator.hpp"
 #include "trebuchet/quality.hpp"
 #include "trebuchet/app/units.hpp"
@@ -24,6 +25,16 @@ Release parse_release(std::string_view name, std::string_view option);
 /// Whether the range runs from the release point: "pivot" (the paper's) or "release" (Denny's);
 /// Error(usage) names `option`, the text and the choices.
 bool parse_range_from(std::string_view name, std::string_view option);
+
+/// "hinged", "fixed" or "floating-arm" (design.hpp, MachineKind).
+std::string machine_name(MachineKind machine);
+
+/// "hinged, fixed or floating-arm", for messages and help.
+std::string machine_names();
+
+/// The machine of a name ("floating_arm" too); Error(usage) names `option`, the text and the
+/// choices, and says so of the whipper, which is not built yet.
+MachineKind parse_machine(std::string_view name, std::string_view option);
 
 /// "si" or "imperial"; Error(usage) names `option` and the choices.
 UnitSystem parse_unit_system(std::string_view name, std::string_view option);

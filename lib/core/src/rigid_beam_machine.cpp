@@ -1,0 +1,136 @@
+#include "trebuchet/rigid_beam_machine.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "trebuchet/angles.hpp"
+#include "trebuchet/error.hpp"
+
+namespace trebuchet {
+
+RigidBeamMachine::RigidBeamMachine(const ScaledDesign& design, MachineKind kind, const char* name)
+    : design_(design), theta_i_(radians(design.theta_i_deg)) {
+  if (design.parts.dissipates())
+    throw Error(ErrorKind::usage, std::string("the ") + name + " takes no friction or drag before the release yet; leave them out");
+  design_.machine = kind;  // its Delta U and lever (ScaledDesign::energy_drop)
+  design_.psi_i_deg = 0;  // the counterweight moves with the beam: nothing to prop
+  weight_ = design_.counterweight_lever() - design_.mu_b * design_.beam_cm();
+}
+
+RigidBeamMachine::Share RigidBeamMachine::body_inertia(double th) const {
+  // The beam's centre c along it moves with the pivot: its speed is (a' + c cos th, c sin th) th',
+  // so its kinetic energy is (I + mu_b (a'^2 + 2 a' c cos th)) th'^2/2, I about the pivot.
+  const Path a = pivot_path(th);
+  const double mu_b = design_.mu_b, c = design_.beam_cm();
+  const Share cw = counterweight_share(th);
+  return {design_.beam_inertia() + mu_b * (a.slope * a.slope + 2 * a.slope * c * std::cos(th)) + cw.inertia,
+          mu_b * (2 * a.slope * a.curve + 2 * c * (a.curve * std::cos(th) - a.slope * std::sin(th))) + cw.slope};
+}
+
+// From the Lagrangian T = J(th) th'^2/2 + mu |p'|^2/2, V = G cos th + mu p_y (docs/machines.md),
+// the projectile p = (a + l sin th - s cos phi, -l cos th - s sin phi),
+// s = l l4 the sling in L2, each term of p a function of one coordinate, so that
+// p'' = p_th th'' + p_phi phi'' + p_thth th'^2 + p_phiphi phi'^2, and with y the unit upward:
+//   Phase I: the trough holds p_y (cos th + l4 sin phi = cos th_i), one degree of freedom; with
+//     k = dp_x/dth = a' + l (cos th + sin th tan phi):
+//     (J + mu k^2) th'' + (J'/2 + mu k k_th) th'^2 = G sin th.
+//   Phase II:  J th'' + J' th'^2/2 - G sin th + mu p_th . (p'' + y) = 0,  p_phi . (p'' + y) = 0.
+//   Phase III: the body alone, J th'' + J' th'^2/2 = G sin th.
+std::array<double, 3> RigidBeamMachine::accelerations_of(Phase phase, const State& s) const {
+  const double l = design_.l, l4 = design_.l4, mu = design_.mu, G = weight_, th = s.theta, w2 = s.theta_dot * s.theta_dot;
+  const Share J = body_inertia(th);
+  if (phase == Phase::released) {
+    const double th_dd = (G * std::sin(th) - J.slope * w2 / 2) / J.inertia;
+    return {th_dd, th_dd, 0};
+  }
+  const Path a = pivot_path(th);
+  if (phase == Phase::trough) {
+    const double sin_phi = std::sin(s.phi), cos_phi = std::cos(s.phi), tan_phi = sin_phi / cos_phi;
+    const double k = a.slope + l * (std::cos(th) + std::sin(th) * tan_phi);
+    const double k_th = a.curve + l * (-std::sin(th) + std::cos(th) * tan_phi + std::sin(th) * std::sin(th) / (l4 * cos_phi * cos_phi * cos_phi));
+    const double th_dd = (G * std::sin(th) - (J.slope / 2 + mu * k * k_th) * w2) / (J.inertia + mu * k * k);
+    const double phi_dd = (std::cos(th) * w2 + std::sin(th) * th_dd + l4 * sin_phi * s.phi_dot * s.phi_dot) /
+        (l4 * cos_phi);  // eq:EOM_I_3 twice differentiated
+    return {th_dd, th_dd, phi_dd};
+  }
+  const double sling = l * l4, sp = std::sin(s.phi), cp = std::cos(s.phi);
+  const Vec2 p_th{a.slope + l * std::cos(th), l * std::sin(th)}, p_phi{sling * sp, -sling * cp};
+  // p's acceleration without th'' and phi'', plus the weight's unit: p_thth th'^2 + p_phiphi phi'^2 + y
+  const Vec2 rest{(a.curve - l * std::sin(th)) * w2 + sling * cp * s.phi_dot * s.phi_dot,
+                  l * std::cos(th) * w2 + sling * sp * s.phi_dot * s.phi_dot + 1};
+  const auto dot = [](Vec2 u, Vec2 v) { return u.x * v.x + u.y * v.y; };
+  const double a11 = J.inertia + mu * dot(p_th, p_th), a12 = mu * dot(p_th, p_phi), a22 = mu * dot(p_phi, p_phi);
+  const double b1 = G * std::sin(th) - J.slope * w2 / 2 - mu * dot(p_th, rest), b2 = -mu * dot(p_phi, rest);
+  const double det = a11 * a22 - a12 * a12;
+  const double th_dd = (b1 * a22 - a12 * b2) / det, phi_dd = (a11 * b2 - a12 * b1) / det;
+  return {th_dd, th_dd, phi_dd};
+}
+
+double RigidBeamMachine::trough_cos_phi(double theta) const {
+  const double sin_phi = (std::cos(theta_i_) - std::cos(theta)) / design_.l4;
+  return sin_phi * sin_phi < 1 ? std::sqrt(1 - sin_phi * sin_phi) : 0;
+}
+
+double RigidBeamMachine::complete_trough_state(State& s) const {
+  const double cos_phi = trough_cos_phi(s.theta);
+  if (!(cos_phi > 0)) return 0;
+  s.phi = std::asin((std::cos(theta_i_) - std::cos(s.theta)) / design_.l4);  // eq:EOM_I_3
+  s.phi_dot = std::sin(s.theta) * s.theta_dot / (design_.l4 * cos_phi);
+  return cos_phi;
+}
+
+bool RigidBeamMachine::accelerations(Phase phase, const State& given, std::array<double, 3>& out, Losses*) const {
+  State state = given;
+  if (phase == Phase::trough && !(complete_trough_state(state) > 0)) return false;  // the seam's contract: phi follows from theta there
+  out = accelerations_of(phase, state);
+  return std::isfinite(out[0]) && std::isfinite(out[2]);
+}
+
+Snapshot RigidBeamMachine::snapshot(Phase phase, const State& given) const {
+  State s = given;
+  if (phase == Phase::trough) complete_trough_state(s);
+  const ScaledDesign& e = design_;
+  const double l = e.l, l4 = e.l4, mu = e.mu, th = s.theta, th_d = s.theta_dot, st = std::sin(th), ct = std::cos(th);
+  const auto a = accelerations_of(phase, s);
+  const Path path = pivot_path(th);
+  const Vec2 pivot{path.x, 0}, pivot_acceleration{path.slope * a[0] + path.curve * th_d * th_d, 0};
+  Snapshot out;
+  out.theta_ddot = a[0], out.psi_ddot = a[1], out.phi_ddot = a[2];
+  out.tip = {pivot.x + l * st, -l * ct};
+  // A point at r (sin th, -cos th) of the beam accelerates by the pivot's plus r times this.
+  const Vec2 along{ct * a[0] - st * th_d * th_d, st * a[0] + ct * th_d * th_d};
+  const double base = -l * std::cos(theta_i_);  // the engine's base, below the pivot's level
+  out.tip_height = out.tip.y - base;
+  const double c = e.beam_cm();
+  out.energies.beam = (e.beam_inertia() + e.mu_b * (path.slope * path.slope + 2 * path.slope * c * ct)) * th_d * th_d / 2 - e.mu_b * c * ct;
+  if (phase != Phase::released) {
+    const double sp = std::sin(s.phi), cp = std::cos(s.phi), phi_d = s.phi_dot, sling = l * l4;
+    out.projectile = {out.tip.x - sling * cp, out.tip.y - sling * sp};
+    out.projectile_velocity = {(path.slope + l * ct) * th_d + sling * sp * phi_d, l * st * th_d - sling * cp * phi_d};
+    const Vec2 p_dd{pivot_acceleration.x + l * along.x + sling * (sp * a[2] + cp * phi_d * phi_d),
+                    l * along.y + sling * (-cp * a[2] + sp * phi_d * phi_d)};
+    // The sling pulls the projectile toward the tip along u = (cos phi, sin phi); in the trough
+    // the trough's normal force holds its height.
+    out.sling_tension = phase == Phase::trough ? mu * p_dd.x / cp : mu * (p_dd.x * cp + p_dd.y * sp + sp);
+    out.normal_force = phase == Phase::trough ? mu - out.sling_tension * sp : 0;
+    out.sling_on_tip = {-out.sling_tension * cp, -out.sling_tension * sp};
+    // The tip moves along (cos th, sin th) as theta grows; the sling pulls against that.
+    out.sling_perpendicular = -(out.sling_on_tip.x * ct + out.sling_on_tip.y * st);
+    const Vec2& v = out.projectile_velocity;
+    out.energies.projectile_kinetic = mu * (v.x * v.x + v.y * v.y) / 2;
+    out.energies.projectile_potential = mu * out.projectile.y;
+  }
+  // The beam of mass mu_b, its centre c along it, moves under its weight, the sling's pull, the
+  // counterweight's force and the frame's.
+  const Vec2 need{e.mu_b * (pivot_acceleration.x + c * along.x) - out.sling_on_tip.x, e.mu_b * (c * along.y + 1) - out.sling_on_tip.y};
+  const double counterweight_moment = counterweight_forces(out, s, a[0], pivot, need, base);
+  out.pivot_reaction = {out.hinge_force.x + need.x, out.hinge_force.y + need.y};
+  // The short section passes the long one what turns it and the counterweight about the pivot:
+  // its weight, its share of the pivot's acceleration and the counterweight's pull, less its own turn.
+  if (const auto section = e.short_section())
+    out.beam_moment = counterweight_moment - section->mass * section->cm * (st + ct * pivot_acceleration.x) - section->inertia * a[0];
+  out.energy = out.energies.beam + out.energies.counterweight + out.energies.projectile_kinetic + out.energies.projectile_potential;
+  return out;
+}
+
+}  // namespace trebuchet
