@@ -55,6 +55,21 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
     air_options(c, o);
   }
 
+  s.compare = app.add_subcommand("compare",
+                                 "one engine's parts built as each machine, hinged, fixed and floating-arm, side by side: range, eps, "
+                                 "the release, the pin to bend and the peak loads");
+  {
+    CLI::App* c = s.compare;
+    c->add_option("input", o.input, "JSON file with a design, or CSV with one row (docs/csv.md); - for stdin");
+    input_options(c, o, op_shot, {FieldGroup::engine, FieldGroup::alternative, FieldGroup::release, FieldGroup::part}, false);
+    target_level_option(c, o, false);
+    release_options(c, o);
+    integrator_options(c, o);
+    format_option(c, o, true);
+    material_options(c, o, "the design", false);
+    air_options(c, o);
+  }
+
   CLI::App* c = s.complete;
   air_and_sampling_options(c, o);
   input_options(c, o, op_complete, {FieldGroup::engine, FieldGroup::alternative, FieldGroup::part}, true);

@@ -50,7 +50,7 @@ struct Options {
 
 /// The subcommands, each with its options declared on it.
 struct Subcommands {
-  CLI::App *shot, *fit, *optimize, *derive_table, *merge, *complete, *calibrate;
+  CLI::App *shot, *fit, *optimize, *derive_table, *merge, *complete, *calibrate, *compare;
 };
 Subcommands declare_subcommands(CLI::App& app, Options& options);
 

@@ -8,6 +8,7 @@
 #include "run.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/parallel.hpp"
+#include "trebuchet/app/names.hpp"
 #include "trebuchet/app/output_files.hpp"
 #include "trebuchet/app/text_input.hpp"
 
@@ -106,6 +107,9 @@ int run_shot(const Options& o, bool fit) {
       throw Error(ErrorKind::usage, "the engine comes from '" + o.input + "'; drop the engine flags (--L1 ... --theta), or drop the file");
     in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}, an array of them, or CSV with a header (docs/csv.md)"),
                             o.input);
+    if (o.design.machine)  // --machine builds every design of the file as that machine
+      for (DesignRows::Row& row : in.rows)
+        if (row.design.is_object()) row.design[machine_key] = machine_name(*o.design.machine);
   } else if (!has_engine_flags(o.design)) {
     throw Error(
         ErrorKind::usage,

@@ -25,7 +25,7 @@
   const state = {
     view: 'design', units: 'si', pair: 'R,m', first: ['R', '300m'], second: ['m', '50kg'], theta: '30', F: '2/3',
     air: false, cd: '0.47', wind: '0m/s', release: 'Q', target_level: '0m', range_from: 'pivot', release_by: 'optimum', release_value: '',
-    edit: null, attested: { Lb: '9.5m', M: '3t', m: '50kg' }, samples: '200',
+    machine: 'hinged', edit: null, attested: { Lb: '9.5m', M: '3t', m: '50kg' }, samples: '200',
   };
   let designed = null;   // the calculator's design (JSON), or null when refused
   let shown = null;      // the engine the shot is of (engine keys), and its shot
@@ -70,11 +70,13 @@
     if (state.air) s.air = { drag_coefficient: /^re$/i.test(state.cd.trim()) ? 'Re' : state.cd, wind: state.wind };
     return s;
   }
-  // The engine with the release its builder set, when one is set (release_time, release_angle_deg
-  // or pin_angle_deg, keys of the table of inputs' release group).
-  function withRelease(engine) {
-    if (state.release_by === 'optimum' || !state.release_value.trim()) return engine;
-    return Object.assign({}, engine, { [state.release_by]: state.release_value });
+  // The engine as the machine chosen (its key "machine", none for the paper's) with the release
+  // its builder set, when one is set (release_time, release_angle_deg or pin_angle_deg, keys of
+  // the table of inputs' release group).
+  function asBuilt(engine) {
+    const built = state.machine === 'hinged' ? Object.assign({}, engine) : Object.assign({}, engine, { machine: state.machine });
+    if (state.release_by === 'optimum' || !state.release_value.trim()) return built;
+    return Object.assign(built, { [state.release_by]: state.release_value });
   }
   // The engine keys a design or shot answer carries, as the programs read them back: the
   // engine's values, its diameter and its material (F follows from L3).
@@ -104,6 +106,7 @@
     theta: (v) => ['30', '40'].includes(v), F: (v) => ['1', '2/3'].includes(v), air: (v) => typeof v === 'boolean',
     cd: isText, wind: isText, release: (v) => ['Q', 'eps', 'range'].includes(v), target_level: isText,
     release_by: (v) => ['optimum', 'pin_angle_deg', 'release_angle_deg', 'release_time'].includes(v), release_value: isText,
+    machine: (v) => ['hinged', 'fixed', 'floating-arm'].includes(v),
     range_from: (v) => ['pivot', 'release'].includes(v), samples: isText,
     // An edited engine: keys of a shot's design, each a finite number, the engine's own values positive.
     edit: (v) => v === null || (typeof v === 'object' && !Array.isArray(v) && Object.keys(v).length > 0 &&
@@ -177,7 +180,7 @@
 
   // ---- the shot -------------------------------------------------------------------------------
   function runShot(engine, title) {
-    const answer = call('shot', Object.assign({ design: withRelease(engine), series: true }, settings()));
+    const answer = call('shot', Object.assign({ design: asBuilt(engine), series: true }, settings()));
     if (answer.error) {
       shown = null;
       $('viewer').innerHTML = `<div class="message refused">${escapeHtml(answer.error)}</div>`;
@@ -429,7 +432,7 @@
       $('F').querySelector('option[value="1"]').disabled = forty;
       if (forty && $('F').value === '1') { $('F').value = '2/3'; state.F = '2/3'; }
     };
-    const fields = [['theta', 'theta'], ['F', 'F'], ['cd', 'cd'], ['wind', 'wind'], ['release', 'release'], ['release-by', 'release_by'], ['release-value', 'release_value'],
+    const fields = [['theta', 'theta'], ['F', 'F'], ['cd', 'cd'], ['wind', 'wind'], ['release', 'release'], ['release-by', 'release_by'], ['release-value', 'release_value'], ['machine', 'machine'],
       ['target-level', 'target_level'], ['range-from', 'range_from'], ['samples', 'samples']];
     for (const [id, key] of fields) {
       $(id).value = state[key];

@@ -160,11 +160,21 @@
     const f = shot.series.frames, H = shot.series.pivot_height, e = shot.engine;
     const P = (x, y) => to(x, y);
     const line = (a, b, colour, w, dash) => svg('line', { x1: a[0], y1: a[1], x2: b[0], y2: b[1], stroke: colour, 'stroke-width': w, 'stroke-linecap': 'round', 'stroke-dasharray': dash || '' }, g);
-    const pivot = P(0, H), hinge = P(f.hinge_x[i], f.hinge_y[i]), cw = P(f.counterweight_x[i], f.counterweight_y[i]), tip = P(f.tip_x[i], f.tip_y[i]);
-    line(P(-0.3 * H, 0), pivot, COLOURS.frame, 4);
-    line(P(0.3 * H, 0), pivot, COLOURS.frame, 4);
+    const machine = e.machine || 'hinged';
+    const pivot = P(f.pivot_x[i], H), hinge = P(f.hinge_x[i], f.hinge_y[i]), cw = P(f.counterweight_x[i], f.counterweight_y[i]), tip = P(f.tip_x[i], f.tip_y[i]);
+    if (machine === 'floating-arm') {
+      // The rail the axle rolls on, on two posts, and the guide the counterweight falls in.
+      const back = -e.L2 - 0.15 * H, front = 0.15 * H;
+      line(P(back, H), P(front, H), COLOURS.frame, 4);
+      line(P(back, 0), P(back, H), COLOURS.frame, 4);
+      line(P(front, 0), P(front, H), COLOURS.frame, 4);
+      line(P(0, 0), P(0, H + e.L2), COLOURS.frame, 2, '3 4');
+    } else {
+      line(P(-0.3 * H, 0), pivot, COLOURS.frame, 4);
+      line(P(0.3 * H, 0), pivot, COLOURS.frame, 4);
+    }
     line(hinge, tip, COLOURS.beam, 6);
-    line(hinge, cw, '#222', 2);
+    if (machine === 'fixed') line(hinge, cw, COLOURS.beam, 6); else line(hinge, cw, '#222', 2);
     svg('circle', { cx: cw[0], cy: cw[1], r: Math.max(4, (0.12 * e.L2 + 0.04 * H) * scale), fill: COLOURS.weight }, g);
     svg('circle', { cx: pivot[0], cy: pivot[1], r: 3.5, fill: 'black' }, g);
     const released = f.phase[i] === 'III';
@@ -188,9 +198,11 @@
       const r = Math.max(14, 0.22 * Math.min(e.L1, H) * scale);
       line(pivot, [pivot[0], pivot[1] + 1.3 * r], COLOURS.theta, 1, '4 3');
       arc(pivot, r, 270 - theta, 270, COLOURS.theta, 'θ ' + significant(theta, 3) + '°');
-      const rh = Math.max(12, 0.6 * e.L3 * scale);
-      line(hinge, [hinge[0], hinge[1] + 0.8 * e.L3 * scale], COLOURS.psi, 1, '4 3');
-      arc(hinge, rh, 270 - psi, 270, COLOURS.psi, 'ψ ' + significant(psi, 3) + '°');
+      if (machine === 'hinged') {  // the others' counterweight has no angle of its own
+        const rh = Math.max(12, 0.6 * e.L3 * scale);
+        line(hinge, [hinge[0], hinge[1] + 0.8 * e.L3 * scale], COLOURS.psi, 1, '4 3');
+        arc(hinge, rh, 270 - psi, 270, COLOURS.psi, 'ψ ' + significant(psi, 3) + '°');
+      }
       if (!released && phi !== null) {
         const rt = Math.max(12, 0.35 * e.L4 * scale);
         line(tip, [tip[0] + 0.5 * e.L4 * scale, tip[1]], COLOURS.phi, 1, '4 3');
@@ -222,7 +234,9 @@
       : a.release === 'Q' ? (a.n === 1 ? 'released where Q peaks (eq:Q)' : 'released where Q_n peaks (eq:Q_n, n = ' + a.n + ')')
         : a.release === 'eps' ? 'released where ε peaks' : 'released where the range peaks';
     const target = a.range_from === 'release' ? "range from the release point back to its height (Denny's)" : 'target level ' + quantity(a.target_level, 'length', system);
-    return air + ', ' + release + ', ' + target + ', g = ' + quantity(a.g, 'acceleration', system);
+    const machine = { fixed: 'built as a fixed counterweight (its centre L3 beyond the short arm), ',
+      'floating-arm': "built as a floating arm (the counterweight L3 below its pin, in a guide; ranges from the guide's line), " }[shot.engine.machine] || '';
+    return machine + air + ', ' + release + ', ' + target + ', g = ' + quantity(a.g, 'acceleration', system);
   }
 
   const FORCE_LINES = [
@@ -362,7 +376,7 @@
       ${row('release speed v', q(shot.v, 'speed'))}
       ${row('release angle', significant(shot.A_deg, 4) + '°', 'the velocity angle of the projectile above the horizontal at the release')}
       ${row('pin angle', significant(shot.pin_angle_at_release_deg, 4) + '°' + pinTolerance(shot), 'the angle between the long arm and the sling at the release: the pin a builder bends to release there')}
-      ${row('release at', significant(shot.t_release, 4) + ' s, ' + q(shot.h, 'length') + ' up, ' + q(Math.abs(shot.x), 'length') + (shot.x < 0 ? ' behind' : ' before') + ' the pivot')}
+      ${row('release at', significant(shot.t_release, 4) + ' s, ' + q(shot.h, 'length') + ' up, ' + q(Math.abs(shot.x), 'length') + (shot.x < 0 ? ' behind' : ' before') + (shot.engine.machine === 'floating-arm' ? " the guide's line" : ' the pivot'))}
       ${lossRows}
       </table><table class="tv-figures"><caption>the builder's loads (largest up to the release)</caption>
       ${loads.map(([name, v, t]) => row(name, q(v, 'force') + ' at ' + significant(t, 3) + ' s')).join('')}
@@ -511,7 +525,7 @@
   // The series as CSV: one row per frame, SI units.
   function seriesCsv(shot) {
     const f = shot.series.frames, columns = Object.keys(f);
-    const unit = { t: 's', hinge_x: 'm', hinge_y: 'm', counterweight_x: 'm', counterweight_y: 'm', tip_x: 'm', tip_y: 'm', projectile_x: 'm', projectile_y: 'm',
+    const unit = { t: 's', pivot_x: 'm', hinge_x: 'm', hinge_y: 'm', counterweight_x: 'm', counterweight_y: 'm', tip_x: 'm', tip_y: 'm', projectile_x: 'm', projectile_y: 'm',
       FS_perp: 'N', sling_tension: 'N', FR: 'N', FRh: 'N', FRv: 'N', FH: 'N', normal: 'N', beam_moment: 'N_m', E_counterweight: 'J', E_beam: 'J',
       E_projectile_kinetic: 'J', E_projectile_potential: 'J' };
     const lines = [columns.map((c) => (unit[c] ? c + '_' + unit[c] : c)).join(',')];

@@ -105,6 +105,14 @@ print(f"pin angle 30 deg: worst {compare('pin angle', ours, theirs):.3g}")
 if abs(ours["pin_angle_at_release_deg"] - 30) > 1e-9:
     failures.append(f"pin angle: released at {ours['pin_angle_at_release_deg']} deg, not 30")
 
+# The other machines, as a design key: the program's shot, bit for bit, and the machine in the record.
+for machine in ("fixed", "floating-arm"):
+    ours = trebuchet.shot(dict(ca, machine=machine))
+    theirs = json.loads(shot_by_program(dict(ca, machine=machine)).stdout)
+    compare(machine, ours, theirs)
+    if ours["engine"].get("machine") != machine:
+        failures.append(f"{machine}: the record's engine does not name its machine")
+
 # A refusal: the same message as the program's, as an exception.
 bad = dict(ca, L4="-3m")
 done = shot_by_program(bad)

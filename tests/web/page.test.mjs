@@ -210,6 +210,18 @@ try {
   check(/before lift-off/.test(trough), `a pin passed in the trough is refused: "${trough.slice(0, 120)}"`);
   await page.selectOption('#release-by', 'optimum');
 
+  // ---- 5c. the machine chosen is the program's --machine -----------------------------------------
+  // The same engine built as a floating arm: the page's shot is the program's within 1e-9 in R, its
+  // record names the machine, and the picture's pivot rolls (its x changes through the shot).
+  await page.selectOption('#machine', 'floating-arm');
+  const floating = await page.evaluate(() => window.trebuchet.current());
+  const floatingNative = native(verify, [file, '--format', 'json', '--air', '--machine', 'floating-arm']);
+  const floatingCloseness = Math.abs(floatingNative.R - floating.R) / floatingNative.R;
+  const pivots = floating.series.frames.pivot_x;
+  check(floating.engine.machine === 'floating-arm' && floatingCloseness < 1e-9 && Math.max(...pivots) - Math.min(...pivots) > 0.5 * floating.engine.L2,
+    `a floating arm is the program's: R ${floatingNative.R} m natively, ${floating.R} m in the page, relative ${floatingCloseness.toExponential(2)}; the pivot rolls over ${Math.max(...pivots) - Math.min(...pivots)} m`);
+  await page.selectOption('#machine', 'hinged');
+
   // ---- 6. Monte Carlo over Web Workers is the run of one module ---------------------------------
   const request = { attested: { Lb: '9.5m', M: '2.5t..3.5t', m: '50kg' }, samples: 40, seed: 7 };
   const [whole, parts] = await page.evaluate(async (r) => [window.trebuchet.monteCarlo(r), await window.trebuchet.monteCarloParallel(r)], request);

@@ -34,6 +34,10 @@ const views = {
     await page.selectOption('#release-by', 'pin_angle_deg');
     await page.fill('#release-value', '30deg');
   },
+  machine: async (page) => {  // the optimal engine built as a floating arm, mid-swing: its rail, guide and rolling axle
+    await page.selectOption('#machine', 'floating-arm');
+    await page.evaluate(() => window.trebuchet.viewer().setTime(0.9));
+  },
   refused: async (page) => { await page.fill('#first', '5000m'); },
   imperial: async (page) => { await page.selectOption('#units', 'imperial'); },
 };

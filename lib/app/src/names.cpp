@@ -59,6 +59,10 @@ Release parse_release(std::string_view name, std::string_view option) {
 
 std::string machine_name(MachineKind machine) { return name_in(machine_table, machine); }
 
+std::string machine_words(MachineKind machine) {
+  return machine == MachineKind::hinged ? "engine" : machine_name(machine) + (machine == MachineKind::fixed ? "-counterweight engine" : " engine");
+}
+
 std::string machine_names() { return "hinged, fixed or floating-arm"; }
 
 MachineKind parse_machine(std::string_view name, std::string_view option) {

@@ -7,6 +7,7 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/quality.hpp"
+#include "trebuchet/app/names.hpp"
 #include "trebuchet/app/output_files.hpp"
 #include "trebuchet/app/report.hpp"
 #include "trebuchet/app/units.hpp"
@@ -23,8 +24,8 @@ std::string num(double x) { return format_significant(x, 6); }
 std::string engine_commands(const Engine& engine, const TracePoint& p, bool projectile_on, bool labels, bool angles) {
   const Snapshot& s = p.snapshot;
   const double H = pivot_height(engine);
-  const SitePoint hinge = site_point(s.hinge, engine), cw = site_point(s.counterweight, engine), tip = site_point(s.tip, engine),
-                  pr = site_point(s.projectile, engine);
+  const SitePoint pivot = site_point(s.pivot, engine), hinge = site_point(s.hinge, engine), cw = site_point(s.counterweight, engine),
+                  tip = site_point(s.tip, engine), pr = site_point(s.projectile, engine);
   std::ostringstream g;
   auto segment = [&](SitePoint a, SitePoint b, const char* style) {
     g << "set arrow from " << num(a.x) << "," << num(a.y) << " to " << num(b.x) << "," << num(b.y) << " nohead " << style << "\n";
@@ -33,25 +34,35 @@ std::string engine_commands(const Engine& engine, const TracePoint& p, bool proj
     g << "set label \"" << text << "\" at " << num(at.x) << "," << num(at.y) << " " << where << " font \",12\" front\n";
   };
   const double foot = 0.3 * H;
-  segment({-foot, 0}, {0, H}, "lw 3 lc rgb '#8b5a2b'");
-  segment({foot, 0}, {0, H}, "lw 3 lc rgb '#8b5a2b'");
+  if (engine.machine == MachineKind::floating_arm) {
+    // The rail the axle rolls on, over the pivot's travel (from the guide to L2 behind it), on
+    // two posts; the guide the counterweight falls in, from the base to above its start.
+    const double back = -engine.L2 - 0.15 * H, front = 0.15 * H;
+    segment({back, H}, {front, H}, "lw 3 lc rgb '#8b5a2b'");
+    segment({back, 0}, {back, H}, "lw 3 lc rgb '#8b5a2b'");
+    segment({front, 0}, {front, H}, "lw 3 lc rgb '#8b5a2b'");
+    segment({0, 0}, {0, H + engine.L2}, "lw 2 dt 3 lc rgb '#8b5a2b'");
+  } else {
+    segment({-foot, 0}, pivot, "lw 3 lc rgb '#8b5a2b'");
+    segment({foot, 0}, pivot, "lw 3 lc rgb '#8b5a2b'");
+  }
   segment(hinge, tip, "lw 5 lc rgb '#a0522d'");
-  segment(hinge, cw, "lw 2 lc rgb 'black'");
+  segment(hinge, cw, engine.machine == MachineKind::fixed ? "lw 5 lc rgb '#a0522d'" : "lw 2 lc rgb 'black'");  // bolted on, or hung
   g << "set object circle at " << num(cw.x) << "," << num(cw.y) << " size " << num(0.12 * engine.L2 + 0.04 * H)
     << " fc rgb '#555555' fs solid front\n";
-  g << "set object circle at 0," << num(H) << " size " << num(0.015 * H) << " fc rgb 'black' fs solid front\n";
+  g << "set object circle at " << num(pivot.x) << "," << num(H) << " size " << num(0.015 * H) << " fc rgb 'black' fs solid front\n";
   if (projectile_on) {
     segment(tip, pr, "lw 2 lc rgb '#1f5fbf' front");
     g << "set object circle at " << num(pr.x) << "," << num(pr.y) << " size " << num(0.03 * H) << " fc rgb '#d62728' fs solid front\n";
   }
   if (labels) {
     auto mid = [](SitePoint a, SitePoint b) { return SitePoint{(a.x + b.x) / 2, (a.y + b.y) / 2}; };
-    label("L_1", mid({0, H}, tip), "offset -2.2,0.3");
-    label("L_2", mid({0, H}, hinge), "offset -2.2,0.6");
-    label("L_3", mid(hinge, cw), "offset 1,0");
+    label("L_1", mid(pivot, tip), "offset -2.2,0.3");
+    label("L_2", mid(pivot, hinge), "offset -2.2,0.6");
+    if (engine.L3 > 0) label("L_3", mid(hinge, cw), "offset 1,0");
     if (projectile_on) label("L_4", mid(tip, pr), "offset 0,0.8 center");
-    segment({0, 0}, {0, H}, "lw 1 dt 2 lc rgb 'gray40'");
-    label("H", {0, H / 2}, "offset 0.5,0");
+    segment({pivot.x, 0}, pivot, "lw 1 dt 2 lc rgb 'gray40'");
+    label("H", {pivot.x, H / 2}, "offset 0.5,0");
   }
   if (angles) {
     // Each angle from its reference line (dashed) to its part, as an arc; site angles in degrees
@@ -67,8 +78,9 @@ std::string engine_commands(const Engine& engine, const TracePoint& p, bool proj
             (std::string("center tc rgb '") + colour + "'").c_str());
     };
     const double r = 0.22 * std::min(engine.L1, H);
-    arc({0, H}, r, 270 - theta, 270, {0, H - 1.3 * r}, "θ = " + format_significant(theta, 3) + "°", "#b22222");
-    arc(hinge, 0.6 * engine.L3, 270 - psi, 270, {hinge.x, hinge.y - 0.8 * engine.L3}, "ψ = " + format_significant(psi, 3) + "°", "#1f7a1f");
+    arc(pivot, r, 270 - theta, 270, {pivot.x, H - 1.3 * r}, "θ = " + format_significant(theta, 3) + "°", "#b22222");
+    if (engine.machine == MachineKind::hinged)  // the others' counterweight has no angle of its own
+      arc(hinge, 0.6 * engine.L3, 270 - psi, 270, {hinge.x, hinge.y - 0.8 * engine.L3}, "ψ = " + format_significant(psi, 3) + "°", "#1f7a1f");
     arc(tip, 0.35 * engine.L4, -phi, 0, {tip.x + 0.5 * engine.L4, tip.y}, "φ = " + format_significant(phi, 3) + "°", "#1f5fbf");
   }
   return g.str();
@@ -173,10 +185,13 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   engine_gp << header("set terminal svg size 1100,950 dynamic font 'sans,12'\nset output 'engine.svg'") << "set size ratio -1\nset xrange ["
             << num(x_lo - margin) << ":" << num(x_hi + margin) << "]\nset yrange [" << num(y_lo - margin) << ":" << num(y_hi + margin)
             << "]\nset xlabel 'x toward the target [m]'\nset ylabel 'height above the base [m]'\n"
-            << "set multiplot layout 2,2 title \"The engine to scale: L1 = " << format_significant(engine.L1, 3)
+            << "set multiplot layout 2,2 title \"The " << machine_words(engine.machine) << " to scale: L1 = " << format_significant(engine.L1, 3)
             << " m, L2 = " << format_significant(engine.L2, 3) << " m, L3 = " << format_significant(engine.L3, 3)
             << " m, L4 = " << format_significant(engine.L4, 3) << " m, H = " << format_significant(H, 3) << " m; " << gnuplot_quoted(scene)
-            << "\\nθ: beam from the downward vertical, ψ: counterweight arm from the vertical, φ: sling from the horizontal\" noenhanced"
+            << (engine.machine == MachineKind::hinged
+                    ? "\\nθ: beam from the downward vertical, ψ: counterweight arm from the vertical, φ: sling from the horizontal"
+                    : "\\nθ: beam from the downward vertical, φ: sling from the horizontal")
+            << "\" noenhanced"
             << " margins 0.08,0.97,0.1,0.9 spacing 0.1,0.1\n";
   for (std::size_t k = 0; k < 4; ++k) {
     const TracePoint& p = trace[panels[k].first];

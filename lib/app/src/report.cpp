@@ -394,7 +394,7 @@ std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine
          "FS_perp_mg,FR_Mg,FRh_Mg,FRv_Mg,FH_Mg,normal_mg,energy_J,energy_drift,"
          "counterweight_x_m,counterweight_y_m,tip_x_m,tip_y_m,projectile_x_m,projectile_y_m,"
          "E_counterweight_J,E_beam_J,E_projectile_kinetic_J,E_projectile_potential_J,sling_tension_mg,beam_moment_MgL2,"
-         "W_axle_J,W_hinge_J,W_trough_J,W_sling_drag_J,W_rope_drag_J\n";
+         "W_axle_J,W_hinge_J,W_trough_J,W_sling_drag_J,W_rope_drag_J,pivot_x_m\n";
   for (const TracePoint& p : trace) {
     const Snapshot& s = p.snapshot;
     if (p.phase == Phase::released && !released) {  // without the projectile, energy is conserved anew
@@ -414,7 +414,7 @@ std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine
                           gone ? none : p.state.phi_dot / time_unit,
                           s.sling_perpendicular / scaled.mu,
                           force_values(s)[pivot_reaction],
-                          s.pivot_reaction.x,
+                          force_values(s)[pivot_horizontal],
                           s.pivot_reaction.y,
                           std::hypot(s.hinge_force.x, s.hinge_force.y),
                           s.normal_force / scaled.mu,
@@ -436,7 +436,8 @@ std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine
                           p.work[hinge_loss] * energy_unit,
                           p.work[trough_loss] * energy_unit,
                           p.work[projectile_drag_loss] * energy_unit,
-                          p.work[rope_drag_loss] * energy_unit};
+                          p.work[rope_drag_loss] * energy_unit,
+                          site_point(s.pivot, engine).x};
     out << (p.phase == Phase::trough ? "I" : p.phase == Phase::lifted ? "II" : "III");
     for (double x : row) out << "," << (std::isnan(x) ? std::string() : format_number(finite_or_error(x)));
     out << "\n";

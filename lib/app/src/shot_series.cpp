@@ -21,8 +21,9 @@ Moments moments_of(const std::vector<TracePoint>& trace) {
     m.release = i;
     const double reaction = force_values(s)[pivot_reaction];
     if (reaction > largest) largest = reaction, m.peak_reaction = i;
-    if (s.pivot_reaction.x > most) most = s.pivot_reaction.x, most_at = i;
-    if (s.pivot_reaction.x < least) least = s.pivot_reaction.x, least_at = i;
+    const double horizontal = force_values(s)[pivot_horizontal];  // the frame's (the floating arm's at its guide)
+    if (horizontal > most) most = horizontal, most_at = i;
+    if (horizontal < least) least = horizontal, least_at = i;
   }
   m.first_extreme = std::min(most_at, least_at), m.second_extreme = std::max(most_at, least_at);
   return m;
@@ -99,6 +100,7 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
                            "theta_deg",
                            "psi_deg",
                            "phi_deg",
+                           "pivot_x",
                            "hinge_x",
                            "hinge_y",
                            "counterweight_x",
@@ -125,14 +127,15 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
   for (const TracePoint& p : series.trace) {
     const Snapshot& s = p.snapshot;
     const bool gone = p.phase == Phase::released;
-    const SitePoint hinge = site_point(s.hinge, engine), cw = site_point(s.counterweight, engine), tip = site_point(s.tip, engine),
-                    pr = site_point(s.projectile, engine);
+    const SitePoint pivot = site_point(s.pivot, engine), hinge = site_point(s.hinge, engine), cw = site_point(s.counterweight, engine),
+                    tip = site_point(s.tip, engine), pr = site_point(s.projectile, engine);
     double lost = 0;  // the work of friction and drag so far
     for (double w : p.work) lost += w;
     const std::optional<double> values[] = {p.t * series.time_unit,
                                             degrees(p.state.theta),
                                             degrees(p.state.psi),
                                             gone ? std::nullopt : std::optional(degrees(p.state.phi)),
+                                            pivot.x,
                                             hinge.x,
                                             hinge.y,
                                             cw.x,
@@ -144,7 +147,7 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
                                             s.sling_perpendicular * Mg,
                                             gone ? std::nullopt : std::optional(s.sling_tension * Mg),
                                             force_values(s)[pivot_reaction] * Mg,
-                                            s.pivot_reaction.x * Mg,
+                                            force_values(s)[pivot_horizontal] * Mg,
                                             s.pivot_reaction.y * Mg,
                                             std::hypot(s.hinge_force.x, s.hinge_force.y) * Mg,
                                             s.normal_force * Mg,

@@ -13,6 +13,7 @@
 #include "trebuchet/app/pictures.hpp"
 #include "trebuchet/app/report.hpp"
 #include "trebuchet/app/csv.hpp"
+#include "trebuchet/app/names.hpp"
 #include "trebuchet/app/shot_record.hpp"
 #include "trebuchet/app/output_files.hpp"
 #include "trebuchet/app/text_input.hpp"
@@ -164,6 +165,68 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   out.engine = engine;
   out.settings = settings;
   out.verification = v;
+  return out;
+}
+
+std::vector<MachineComparison> compare_machines(const EngineRecord& record, const DesignCheck& check) {
+  DesignCheck plain = check;
+  plain.series_path.clear(), plain.plot_dir.clear();
+  std::vector<MachineComparison> out;
+  for (MachineKind machine : {MachineKind::hinged, MachineKind::fixed, MachineKind::floating_arm}) {
+    MachineComparison one{machine, std::nullopt, std::nullopt};
+    EngineRecord built = record;
+    built.engine.machine = machine;
+    try {
+      check_engine(built.engine);  // what one machine takes another may not (L3 = 0, a propped counterweight)
+      one.report = check_design(built, plain);
+    } catch (const Error& e) {
+      one.error = e;
+    }
+    out.push_back(std::move(one));
+  }
+  return out;
+}
+
+std::string comparison_table(const std::vector<MachineComparison>& comparison, UnitSystem units,
+                             const std::function<std::string(std::string_view)>& word) {
+  const auto q = [&](double si, UnitDimension dimension) { return quantity_text(si, dimension, units, 4); };
+  const auto sig = [](double x) { return format_significant(x, 4); };
+  using Row = std::pair<const char*, std::function<std::string(const DesignReport&)>>;
+  const std::vector<Row> rows = {
+      {"range R", [&](const DesignReport& r) { return q(r.verification.capacity.R, UnitDimension::length); }},
+      {"energy T", [&](const DesignReport& r) { return q(r.verification.capacity.T, UnitDimension::energy); }},
+      {"efficiency eps", [&](const DesignReport& r) { return sig(100 * r.verification.eps) + " %"; }},
+      {"quality Q", [&](const DesignReport& r) { return sig(100 * r.verification.Q) + " %"; }},
+      {"release time", [&](const DesignReport& r) { return sig(r.verification.t_release) + " s"; }},
+      {"release angle A", [&](const DesignReport& r) { return sig(r.verification.A_deg) + " deg"; }},
+      {"pin angle to bend", [&](const DesignReport& r) { return sig(r.verification.pin_angle_deg) + " deg"; }},
+      {"peak axle load", [&](const DesignReport& r) { return q(r.verification.loads[pivot_load].value, UnitDimension::force); }},
+      {"peak sling tension", [&](const DesignReport& r) { return q(r.verification.loads[sling_tension_load].value, UnitDimension::force); }},
+      {"peak counterweight pin", [&](const DesignReport& r) { return q(r.verification.loads[hinge_load].value, UnitDimension::force); }},
+  };
+  const int label = 24, width = 16;
+  std::ostringstream out;
+  const auto cell = [&](const std::string& text, int w) {
+    out << text << std::string(text.size() < static_cast<std::size_t>(w) ? w - text.size() : 1, ' ');
+  };
+  out << "the same parts built as each machine (docs/machines.md), each released at its own optimum or at the release given:\n";
+  cell("", label);
+  for (const MachineComparison& c : comparison) cell(machine_name(c.machine), width);
+  out << "\n";
+  for (const auto& [name, value] : rows) {
+    cell(name, label);
+    for (const MachineComparison& c : comparison) cell(c.report ? value(*c.report) : "refused", width);
+    out << "\n";
+  }
+  for (const MachineComparison& c : comparison)
+    if (c.error) out << machine_name(c.machine) << ": " << c.error->message(word) << "\n";
+  return out.str();
+}
+
+nlohmann::ordered_json comparison_json(const std::vector<MachineComparison>& comparison, const std::function<std::string(std::string_view)>& word) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const MachineComparison& c : comparison)
+    out.push_back(c.report ? c.report->json : nlohmann::ordered_json{{"machine", machine_name(c.machine)}, {"error", c.error->message(word)}});
   return out;
 }
 

@@ -96,6 +96,7 @@ Snapshot RigidBeamMachine::snapshot(Phase phase, const State& given) const {
   const Vec2 pivot{path.x, 0}, pivot_acceleration{path.slope * a[0] + path.curve * th_d * th_d, 0};
   Snapshot out;
   out.theta_ddot = a[0], out.psi_ddot = a[1], out.phi_ddot = a[2];
+  out.pivot = pivot;
   out.tip = {pivot.x + l * st, -l * ct};
   // A point at r (sin th, -cos th) of the beam accelerates by the pivot's plus r times this.
   const Vec2 along{ct * a[0] - st * th_d * th_d, st * a[0] + ct * th_d * th_d};

@@ -36,8 +36,10 @@ using Losses = std::array<double, loss_count>;
 /// Angular accelerations and the internal forces at one state, scaled (forces in Mg).
 struct Snapshot {
   double theta_ddot = 0, psi_ddot = 0, phi_ddot = 0;
-  Vec2 hinge, counterweight, tip;  ///< relative to the pivot, scaled
-  Vec2 projectile, projectile_velocity;  ///< relative to the pivot, scaled
+  /// Positions relative to the frame's origin at the pivot's height, scaled: the pivot, which
+  /// stays there but for the floating arm's (its origin is the guide's line).
+  Vec2 pivot, hinge, counterweight, tip;
+  Vec2 projectile, projectile_velocity;  ///< relative to the frame's origin, scaled
   Vec2 pivot_reaction;  ///< F_R: force of the frame on the beam at the pivot
   Vec2 hinge_force;  ///< F_H: force of the arm on the counterweight
   Vec2 guide_force;  ///< of the frame's guide on the counterweight (the floating arm's; 0 for the others)

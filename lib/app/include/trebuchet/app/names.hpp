@@ -29,6 +29,10 @@ bool parse_range_from(std::string_view name, std::string_view option);
 /// "hinged", "fixed" or "floating-arm" (design.hpp, MachineKind).
 std::string machine_name(MachineKind machine);
 
+/// The machine in words, for titles: "engine" for the paper's, "fixed-counterweight engine",
+/// "floating-arm engine".
+std::string machine_words(MachineKind machine);
+
 /// "hinged, fixed or floating-arm", for messages and help.
 std::string machine_names();
 

@@ -75,6 +75,26 @@ struct DesignReport {
 /// writes the series and the pictures it asks for.
 DesignReport check_design(const EngineRecord& record, const DesignCheck& check);
 
+/// The same engine, its parts, masses and lengths, built as each machine (compare, docs/machines.md):
+/// its report, or why it cannot be built or shot so.
+struct MachineComparison {
+  MachineKind machine = MachineKind::hinged;
+  std::optional<DesignReport> report;
+  std::optional<Error> error;
+};
+
+/// Shoots `record`'s engine as the hinged counterweight, the fixed counterweight and the floating
+/// arm under `check` (no series or pictures), each refusal kept in its place.
+std::vector<MachineComparison> compare_machines(const EngineRecord& record, const DesignCheck& check);
+
+/// The comparison side by side: range, efficiency, the release, the pin to bend and the peak
+/// loads, a column a machine, then what refused a machine (its names written by `word`, error.hpp).
+std::string comparison_table(const std::vector<MachineComparison>& comparison, UnitSystem units,
+                             const std::function<std::string(std::string_view)>& word);
+
+/// An array, one shot record a machine, or {"machine", "error"} where it was refused.
+nlohmann::ordered_json comparison_json(const std::vector<MachineComparison>& comparison, const std::function<std::string(std::string_view)>& word);
+
 /// What complete reports: the completion and, unless it is already for the range, the engine of
 /// the longest range for the same attested values ("could it throw that far?"), or why there is
 /// none (its message with names written by `word`, error.hpp).

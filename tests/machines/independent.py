@@ -1,0 +1,183 @@
+#!/usr/bin/env python3
+"""independent.py VERIFY: each machine's shot against an integration written apart (issue 36).
+
+Each machine is written here as its bodies' positions in metres, as functions of its angles, in
+SI units (g = 9.81 m/s2): nothing of the program's scaling, equations or integrator. SymPy derives
+the equations of motion from the Lagrangian T - V of those positions; SciPy's DOP853 integrates
+them at rtol = atol = 1e-13:
+  - phase I, the projectile on the trough at the base's level: the sling's angle follows the beam's,
+    sin(phi) = (H - L1 cos(theta))/L4 with H = L1 cos(theta_i); the trough's normal force is
+    m g - S sin(phi), S the sling's pull, m x'' = S cos(phi); lift-off where it reaches 0;
+  - phase II, the projectile in the sling, until the release at a given time;
+  - the flight in vacuum to the base's level, its range measured as the program measures it
+    (from the pivot, or from the floating arm's guide).
+The program shoots the same engine released at the same time (--release-time), and the two
+ranges must agree within 1e-8 (issue 36's bound): each integration is good to about 1e-10 of
+the range at its tolerances, and a change of physics (a counterweight 1e-6 heavier, a beam's
+inertia off by a part in 1e6) moves the range by more than 1e-8.
+"""
+import json
+import math
+import subprocess
+import sys
+
+import sympy as sp
+from scipy.integrate import solve_ivp
+
+VERIFY = sys.argv[1]
+G = 9.81
+L1, L2, L4, M, m, mb, THETA_I = 4.13, 0.88, 3.55, 3110.0, 50.0, 174.0, 30.0
+H = L1 * math.cos(math.radians(THETA_I))
+ENGINES = {  # machine: (L3 [m], the counterweight's own inertia [kg m2], a release time [s] that throws forward)
+    "hinged": (1.2, 0.0, 1.0),
+    "fixed": (0.3, 250.0, 1.3),
+    "floating-arm": (0.4, 0.0, 1.2),
+}
+
+t = sp.symbols("t")
+theta, psi, phi = (sp.Function(name)(t) for name in ("theta", "psi", "phi"))
+
+
+def beam(pivot_x):
+    """The uniform beam from -L2 to L1 about a pivot at (pivot_x, 0): kinetic and potential energy."""
+    c = (L1 - L2) / 2  # its centre, toward the tip
+    own = mb * (L1 + L2) ** 2 / 12  # about its centre
+    x = pivot_x + c * sp.sin(theta)
+    y = -c * sp.cos(theta)
+    return mb * (sp.diff(x, t) ** 2 + sp.diff(y, t) ** 2) / 2 + own * sp.diff(theta, t) ** 2 / 2, mb * G * y
+
+
+def point(mass, x, y):
+    return mass * (sp.diff(x, t) ** 2 + sp.diff(y, t) ** 2) / 2, mass * G * y
+
+
+def machine(kind, L3, inertia):
+    """The bodies' energies, the tip's position and the angles, for one machine."""
+    pivot_x = L2 * sp.sin(theta) if kind == "floating-arm" else 0  # the floating arm's pin stays at x = 0
+    tip = (pivot_x + L1 * sp.sin(theta), -L1 * sp.cos(theta))
+    bodies = [beam(pivot_x)]
+    if kind == "hinged":  # a point counterweight on its arm, hung from the short arm's end
+        bodies.append(point(M, -L2 * sp.sin(theta) + L3 * sp.sin(psi), L2 * sp.cos(theta) - L3 * sp.cos(psi)))
+        angles = [theta, psi]
+    elif kind == "fixed":  # bolted on, L2 + L3 from the pivot, turning with the beam
+        r = L2 + L3
+        kinetic, potential = point(M, -r * sp.sin(theta), r * sp.cos(theta))
+        bodies.append((kinetic + inertia * sp.diff(theta, t) ** 2 / 2, potential))
+        angles = [theta]
+    else:  # in the guide at x = 0, L3 below its pin
+        bodies.append(point(M, 0 * theta, L2 * sp.cos(theta) - L3))
+        angles = [theta]
+    return bodies, tip, angles
+
+
+def equations(lagrangian, angles):
+    """The accelerations as functions of (angles, speeds), from Lagrange's equations."""
+    speeds = [sp.diff(a, t) for a in angles]
+    accelerations = [sp.diff(a, t, 2) for a in angles]
+    lagrange = [sp.diff(sp.diff(lagrangian, v), t) - sp.diff(lagrangian, a) for a, v in zip(angles, speeds)]
+    q = sp.symbols(f"q0:{len(angles)}")
+    w = sp.symbols(f"w0:{len(angles)}")
+    plain = {}
+    for k in range(len(angles)):
+        plain[speeds[k]] = w[k]
+    A = sp.Matrix([[sp.diff(e, a) for a in accelerations] for e in lagrange])
+    b = sp.Matrix([e.subs({a: 0 for a in accelerations}) for e in lagrange])
+    to_plain = lambda e: e.subs(plain).subs({angles[k]: q[k] for k in range(len(angles))})
+    A, b = A.applyfunc(to_plain), b.applyfunc(to_plain)
+    solve_A = sp.lambdify([q, w], A, "numpy")
+    solve_b = sp.lambdify([q, w], b, "numpy")
+    return solve_A, solve_b
+
+
+def accelerations_of(solve, state):
+    import numpy as np
+
+    n = len(state) // 2
+    A = np.array(solve[0](state[:n], state[n:]), dtype=float)
+    b = np.array(solve[1](state[:n], state[n:]), dtype=float).reshape(-1)
+    return np.linalg.solve(A, -b)
+
+
+def shoot(kind):
+    L3, inertia, release_time = ENGINES[kind]
+    bodies, tip, angles = machine(kind, L3, inertia)
+    beam_and_counterweight = sum(k - v for k, v in bodies)
+    # Phase I: the projectile slides on the trough at y = -H; phi from the sling's length.
+    phi_trough = sp.asin((H - L1 * sp.cos(theta)) / L4)
+    trough_x = tip[0] - L4 * sp.cos(phi_trough)
+    projectile_kinetic = m * sp.diff(trough_x, t) ** 2 / 2
+    phase_one = equations(beam_and_counterweight + projectile_kinetic, angles)
+    # Phase II: the projectile in the sling.
+    px, py = tip[0] - L4 * sp.cos(phi), tip[1] - L4 * sp.sin(phi)
+    kinetic, potential = point(m, px, py)
+    lifted_angles = angles + [phi]
+    phase_two = equations(beam_and_counterweight + kinetic - potential, lifted_angles)
+
+    n1 = len(angles)
+    q = sp.symbols(f"q0:{n1}")
+    w = sp.symbols(f"w0:{n1}")
+    dd = sp.symbols(f"a0:{n1}")
+    plain = {}
+    for k, a in enumerate(angles):
+        plain[sp.diff(a, t, 2)] = dd[k]
+        plain[sp.diff(a, t)] = w[k]
+    x_dd = sp.diff(trough_x, t, 2).subs(plain).subs({a: q[k] for k, a in enumerate(angles)})
+    phi_plain = phi_trough.subs({a: q[k] for k, a in enumerate(angles)})
+    horizontal = sp.lambdify([q, w, dd], x_dd, "numpy")
+    sling_angle = sp.lambdify([q], phi_plain, "numpy")
+    phi_rate = sp.lambdify([q, w], sp.diff(phi_trough, t).subs(plain).subs({a: q[k] for k, a in enumerate(angles)}), "numpy")
+
+    def rhs_one(_, y):
+        return list(y[n1:]) + list(accelerations_of(phase_one, y))
+
+    def normal_force(_, y):
+        a = accelerations_of(phase_one, y)
+        pull = m * horizontal(y[:n1], y[n1:], a) / math.cos(sling_angle(y[:n1]))
+        return m * G - pull * math.sin(sling_angle(y[:n1]))
+
+    normal_force.terminal, normal_force.direction = True, -1
+    start = [math.radians(THETA_I)] + ([0.0] if kind == "hinged" else []) + [0.0] * n1
+    one = solve_ivp(rhs_one, (0, 5), start, method="DOP853", rtol=1e-13, atol=1e-13, events=normal_force)
+    assert one.status == 1, f"{kind}: no lift-off"
+    t_lift, y_lift = one.t_events[0][0], one.y_events[0][0]
+    lifted = list(y_lift[:n1]) + [float(sling_angle(y_lift[:n1]))] + list(y_lift[n1:]) + [float(phi_rate(y_lift[:n1], y_lift[n1:]))]
+
+    def rhs_two(_, y):
+        return list(y[n1 + 1 :]) + list(accelerations_of(phase_two, y))
+
+    two = solve_ivp(rhs_two, (t_lift, release_time), lifted, method="DOP853", rtol=1e-13, atol=1e-13)
+    y = two.y[:, -1]
+    n2 = n1 + 1
+    at = {a: y[k] for k, a in enumerate(lifted_angles)}
+    rates = {sp.diff(a, t): y[n2 + k] for k, a in enumerate(lifted_angles)}
+    x, z = float(px.subs(at)), float(py.subs(at))
+    vx = float(sp.diff(px, t).subs(rates).subs(at))
+    vz = float(sp.diff(py, t).subs(rates).subs(at))
+    # The flight in vacuum down to the base's level, y = -H.
+    height = z + H
+    fall = (vz + math.sqrt(vz * vz + 2 * G * height)) / G
+    return t_lift, -(x + vx * fall)
+
+
+def program(kind):
+    L3, inertia, release_time = ENGINES[kind]
+    flags = ["--L1", f"{L1}m", "--L2", f"{L2}m", "--L3", f"{L3}m", "--L4", f"{L4}m", "--M", f"{M}kg", "--m", f"{m}kg", "--mb", f"{mb}kg"]
+    flags += ["--theta", str(THETA_I), "--machine", kind, "--release-time", f"{release_time}s", "--format", "json"]
+    if inertia:
+        flags += ["--counterweight-inertia", str(inertia)]
+    out = subprocess.run([VERIFY, "shot"] + flags, capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    record = json.loads(out.stdout)
+    return record["t_liftoff"], record["R"]
+
+
+failed = 0
+for kind in ENGINES:
+    t_lift, R = shoot(kind)
+    their_lift, their_R = program(kind)
+    difference = abs(their_R / R - 1)
+    ok = difference < 1e-8 and abs(their_lift - t_lift) < 1e-8
+    failed += not ok
+    print(f"{kind}: range {their_R:.12g} m against the independent {R:.12g} m ({difference:.1e}); "
+          f"lift-off {their_lift:.12g} s against {t_lift:.12g} s: {'ok' if ok else 'FAILED'}")
+sys.exit(1 if failed else 0)

@@ -1,0 +1,61 @@
+// compare: one engine's parts built as each machine, side by side (docs/machines.md).
+#include <iostream>
+
+#include "program.hpp"
+#include "run.hpp"
+#include "trebuchet/app/names.hpp"
+#include "trebuchet/app/text_input.hpp"
+#include "trebuchet/app/verifier.hpp"
+
+namespace trebuchet::verify {
+
+int run_compare(const Options& o) {
+  DesignCheck check;
+  check.settings = settings_of(o);
+  check.settings.release_at = release_of(o.design, "");
+  check.material = o.material;
+  check.units = o.units;
+  check.csv = o.format == Format::csv;
+  check.csv_digits = o.digits;
+  check.inputs = {o.input};
+  if (!o.input.empty() && has_engine_flags(o.design))
+    throw Error(ErrorKind::usage, "the engine comes from '" + o.input + "'; drop the engine flags (--L1 ... --theta), or drop the file");
+  nlohmann::json passed = nlohmann::json::object();
+  DesignValues values = o.design;
+  std::string where;
+  if (!o.input.empty()) {
+    const DesignInputs in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}, or CSV with one row"), o.input);
+    if (!in.single || in.rows.size() != 1) throw Error(ErrorKind::usage, "compare takes one design; " + source_name(o.input) + " holds more");
+    where = in.where.front();
+    values = read_design_values(in.rows.front().design, where, &passed);
+  } else if (!has_engine_flags(o.design)) {
+    throw Error(ErrorKind::usage,
+                "no design; give a JSON or CSV file, or flags like --L1 4.13m --L2 0.88m --L3 0.6m --L4 3.55m --M 3.11t --m 50kg --mb 174kg");
+  }
+  // Read as a machine that takes it (L3 = 0 is not the hinged engine's, a prop only its); each
+  // machine then checks what it takes.
+  values.machine = values.psi_i_deg.value_or(0) != 0 ? MachineKind::hinged : MachineKind::fixed;
+  const std::vector<MachineComparison> comparison = compare_machines(engine_record(values, where), check);
+  int code = exit_success, refused = 0;
+  for (const MachineComparison& c : comparison)
+    if (c.error) ++refused, code = std::max(code, exit_code(Program::verify, c.error->kind()));
+  if (o.format == Format::json) {
+    std::cout << pretty_json(comparison_json(comparison, option_word));
+  } else if (o.format == Format::csv) {
+    std::vector<std::string> header = verification_csv_header();
+    header.push_back("error");
+    std::cout << csv_line(header);
+    for (const MachineComparison& c : comparison) {
+      std::vector<std::string> cells = c.report ? c.report->csv : std::vector<std::string>(header.size() - 2, "");
+      if (!c.report) cells.push_back(machine_name(c.machine));  // the machine column, last of the shot's
+      cells.push_back(c.error ? c.error->message(option_word) : "");
+      std::cout << csv_line(cells);
+    }
+  } else {
+    std::cout << comparison_table(comparison, o.units, option_word);
+  }
+  // Every machine refused: the engine's fault, reported as the worst refusal; else what shot stands.
+  return refused == static_cast<int>(comparison.size()) ? code : exit_success;
+}
+
+}  // namespace trebuchet::verify
