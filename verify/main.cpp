@@ -14,7 +14,7 @@
 
 namespace {
 
-const char* const subcommand_names[] = {"shot", "fit", "optimize", "derive-table", "merge", "complete", "calibrate", "compare"};
+const char* const subcommand_names[] = {"shot", "fit", "optimize", "derive-table", "merge", "complete", "calibrate", "compare", "contest"};
 
 // `trebuchet-verify design.json` means `trebuchet-verify shot design.json`: the subcommand
 // `shot` is inserted unless argv names a subcommand or asks for the overall help or the version.
@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
     if (sub.complete->parsed()) return options.spreads.empty() ? run_complete(options) : run_monte_carlo(options, true);
     if (sub.calibrate->parsed()) return run_calibrate(options);
     if (sub.compare->parsed()) return run_compare(options);
+    if (sub.contest->parsed()) return run_contest(options);
     return run_merge(options);
   });
 }

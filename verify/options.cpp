@@ -70,6 +70,61 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
     air_options(c, o);
   }
 
+  s.contest = app.add_subcommand("contest",
+                                 "the best engine of a --machine for a projectile --m within a contest's limits (--max-width, --max-height, "
+                                 "--max-M, --max-axle-load, --max-acceleration), with the pin to bend, and the Pareto front of range "
+                                 "against the axle's load (--pareto)");
+  {
+    CLI::App* c = s.contest;
+    machine_option(c, o);
+    for (auto member : {&DesignValues::m, &DesignValues::D}) {
+      const InputField& field = field_of(member);
+      parsed_option(
+          c, field.flag,
+          [&o, name = std::string(field.flag), member = member, dimension = field.dimension](const std::string& text) {
+            o.design.*member = parse_positive(text, dimension, name);
+          },
+          member == &DesignValues::m ? "the contest's projectile mass [" + unit_list(field.dimension) + "]"
+                                     : "the beam's diameter, of the wood (--wood-density): its mass per metre [" + unit_list(field.dimension) + "]");
+    }
+    parsed_option(
+        c, "--mb-per-m", [&o](const std::string& text) { o.beam_per_m = parse_value(text, UnitDimension::dimensionless, "--mb-per-m"); },
+        "the beam's mass per metre of its length [kg/m], instead of --D");
+    const InputField& theta = field_of(&DesignValues::theta_i_deg);
+    parsed_option(
+        c, theta.flag, [&o](const std::string& text) { o.design.theta_i_deg = parse_value(text, UnitDimension::angle, "--theta"); },
+        option_help(theta));
+    const std::pair<const char*, UnitDimension> limits[contest_limit_count] = {{"--max-width", UnitDimension::length},
+                                                                               {"--max-height", UnitDimension::length},
+                                                                               {"--max-M", UnitDimension::mass},
+                                                                               {"--max-axle-load", UnitDimension::force},
+                                                                               {"--max-acceleration", UnitDimension::acceleration}};
+    const char* const words[contest_limit_count] = {"the width of the box the engine must keep within from rest through the release",
+                                                    "its height above the base", "the largest counterweight", "the largest peak load on the axle",
+                                                    "the largest peak acceleration of the projectile"};
+    for (int k = 0; k < contest_limit_count; ++k)
+      parsed_option(
+          c, limits[k].first,
+          [&o, k, name = std::string(limits[k].first), dimension = limits[k].second](const std::string& text) {
+            o.limits[k] = parse_positive(text, dimension, name);
+          },
+          std::string(words[k]) + " [" + unit_list(limits[k].second) + "]");
+    parsed_option(
+        c, "--objective",
+        [&o](const std::string& text) {
+          if (text != "range" && text != "eps") throw Error(ErrorKind::usage, "--objective: '" + text + "' is not an objective; use range or eps");
+          o.efficiency = text == "eps";
+        },
+        "what to maximise: range (released where the range peaks) or eps (released where eps peaks) (default range)");
+    integer_option(c, "--pareto", o.pareto, 2, 200, "2 to 200", "also the Pareto front of this many optima, range against the axle's load");
+    c->add_option("--plot", o.plot, "with --pareto, draw the front into this folder (pareto.svg, needs gnuplot)");
+    target_level_option(c, o, false);
+    integrator_options(c, o);
+    format_option(c, o, false);
+    material_options(c, o, "the beam", false);
+    air_options(c, o);
+  }
+
   CLI::App* c = s.complete;
   air_and_sampling_options(c, o);
   input_options(c, o, op_complete, {FieldGroup::engine, FieldGroup::alternative, FieldGroup::part}, true);

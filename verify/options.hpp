@@ -11,6 +11,7 @@
 
 #include "trebuchet/calibration.hpp"
 #include "trebuchet/completion.hpp"
+#include "trebuchet/contest.hpp"
 #include "trebuchet/sweep.hpp"
 #include "trebuchet/verification.hpp"
 #include "trebuchet/app/requests.hpp"
@@ -46,11 +47,15 @@ struct Options {
   std::optional<double> claim;  ///< Monte Carlo: a claimed range whose odds to report [m]
   std::string draws;  ///< Monte Carlo: write every sample's drawn inputs and outputs here (CSV)
   std::vector<SpreadInput> spreads;  ///< the values given as ranges or spreads, in the order they are drawn
+  ContestLimits limits;  ///< contest: --max-width ... --max-acceleration
+  std::optional<double> beam_per_m;  ///< contest: the beam's mass per metre [kg/m]
+  bool efficiency = false;  ///< contest: --objective eps
+  int pareto = 0;  ///< contest: points of the Pareto front; 0: none
 };
 
 /// The subcommands, each with its options declared on it.
 struct Subcommands {
-  CLI::App *shot, *fit, *optimize, *derive_table, *merge, *complete, *calibrate, *compare;
+  CLI::App *shot, *fit, *optimize, *derive_table, *merge, *complete, *calibrate, *compare, *contest;
 };
 Subcommands declare_subcommands(CLI::App& app, Options& options);
 

@@ -14,6 +14,7 @@ int run_optimize(const Options& options);  // tables.cpp
 int run_derive_table(const Options& options);  // tables.cpp
 int run_merge(const Options& options);  // tables.cpp
 int run_compare(const Options& options);  // compare.cpp
+int run_contest(const Options& options);  // contest.cpp
 
 /// Whether the flags give an engine's value or part, which a design file gives instead (shot.cpp);
 /// the material, the capacity and the release are settings of a file's designs too.

@@ -1,0 +1,32 @@
+// What trebuchet-verify contest reports (contest.hpp, docs/machines.md): the best engine within a
+// contest's limits as a shot's record, what each limit measures on it and whether it binds, and
+// the Pareto front of the objective against the axle's load, as a table, JSON and a chart.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "trebuchet/contest.hpp"
+#include "trebuchet/app/pictures.hpp"
+#include "trebuchet/app/units.hpp"
+
+namespace trebuchet {
+
+/// "max_width", ...: each limit's key, as JSON and the programs' flags (--max-width) name it.
+const char* contest_limit_key(ContestLimit limit);
+
+/// A limit binds where the engine's measure is within 1e-6 of it.
+bool binds(const ContestEngine& engine, const ContestRequest& request, ContestLimit limit);
+
+/// The best engine's shot record (shot_record.hpp), with "limits": {key: {measured, limit, binds}}
+/// and, when a front is given, "pareto": [{axle_load, R, eps, M, L1, L2, L3, L4, pin_angle_deg}].
+nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequest& request, const std::vector<ContestEngine>& front);
+
+/// The best engine's shot as a table, its limits, and the front's rows.
+std::string contest_table(const ContestEngine& best, const ContestRequest& request, const std::vector<ContestEngine>& front, UnitSystem units);
+
+/// The front as pareto.csv and a gnuplot script pareto.gp that draws pareto.svg.
+std::vector<PictureFile> pareto_pictures(const std::vector<ContestEngine>& front, const ContestRequest& request);
+
+}  // namespace trebuchet

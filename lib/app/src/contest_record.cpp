@@ -1,0 +1,118 @@
+#include "trebuchet/app/contest_record.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "trebuchet/format.hpp"
+#include "trebuchet/app/names.hpp"
+#include "trebuchet/app/report.hpp"
+#include "trebuchet/app/shot_record.hpp"
+
+namespace trebuchet {
+namespace {
+
+const char* const limit_words[contest_limit_count] = {"box width", "box height", "counterweight M", "peak axle load", "peak acceleration"};
+const UnitDimension limit_dimensions[contest_limit_count] = {UnitDimension::length, UnitDimension::length, UnitDimension::mass, UnitDimension::force,
+                                                             UnitDimension::acceleration};
+
+}  // namespace
+
+const char* contest_limit_key(ContestLimit limit) {
+  static const char* const keys[contest_limit_count] = {"max_width", "max_height", "max_M", "max_axle_load", "max_acceleration"};
+  return keys[limit];
+}
+
+bool binds(const ContestEngine& engine, const ContestRequest& request, ContestLimit limit) {
+  const auto& given = request.limits[limit];
+  return given && std::abs(engine.measured[limit] / *given - 1) <= 1e-6;
+}
+
+nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequest& request, const std::vector<ContestEngine>& front) {
+  nlohmann::ordered_json out = verification_json(best.verification);
+  out["pin_to_bend_deg"] = best.verification.pin_angle_deg;
+  nlohmann::ordered_json engine;
+  write_engine(engine, best.engine);
+  out["engine"] = engine;
+  out["assumptions"] = assumptions_json(best.engine, request.settings);
+  out["objective"] = request.efficiency ? "eps" : "R";
+  out["shots"] = best.shots;
+  nlohmann::ordered_json limits = nlohmann::ordered_json::object();
+  for (int k = 0; k < contest_limit_count; ++k) {
+    const auto limit = static_cast<ContestLimit>(k);
+    nlohmann::ordered_json one{{"measured", best.measured[k]}};
+    one["limit"] = request.limits[k] ? nlohmann::ordered_json(*request.limits[k]) : nlohmann::ordered_json(nullptr);
+    one["binds"] = binds(best, request, limit);
+    limits[contest_limit_key(limit)] = one;
+  }
+  out["limits"] = limits;
+  if (!front.empty()) {
+    nlohmann::ordered_json points = nlohmann::ordered_json::array();
+    for (const ContestEngine& p : front)
+      points.push_back({{"axle_load", p.measured[axle_limit]},
+                        {"R", p.verification.capacity.R},
+                        {"eps", p.verification.eps},
+                        {"M", p.engine.M},
+                        {"L1", p.engine.L1},
+                        {"L2", p.engine.L2},
+                        {"L3", p.engine.L3},
+                        {"L4", p.engine.L4},
+                        {"pin_angle_deg", p.verification.pin_angle_deg}});
+    out["pareto"] = points;
+  }
+  return out;
+}
+
+std::string contest_table(const ContestEngine& best, const ContestRequest& request, const std::vector<ContestEngine>& front, UnitSystem units) {
+  std::ostringstream out;
+  out << "the best " << machine_words(request.machine) << " for " << (request.efficiency ? "eps" : "the range") << " within the limits ("
+      << best.shots << " shots; docs/machines.md):\n"
+      << verification_table(best.engine, request.settings, best.verification, std::nullopt, units)
+      << "pin to bend for this release: " << format_significant(best.verification.pin_angle_deg, 4) << " deg\nlimits:\n";
+  bool any = false;
+  for (int k = 0; k < contest_limit_count; ++k) {
+    const auto limit = static_cast<ContestLimit>(k);
+    const std::string measured = quantity_text(best.measured[k], limit_dimensions[k], units, 5);
+    out << "  " << limit_words[k] << std::string(20 - std::string(limit_words[k]).size(), ' ') << measured
+        << (request.limits[k] ? std::string(std::max<std::size_t>(1, 16 - measured.size()), ' ') + "limit " +
+                    quantity_text(*request.limits[k], limit_dimensions[k], units, 5) + (binds(best, request, limit) ? ": binds" : "")
+                              : std::string())
+        << "\n";
+    any = any || binds(best, request, limit);
+  }
+  if (!any)
+    out << "  no limit binds: the engine stops short of them where the model stops holding (a larger one would put its counterweight or tip below "
+           "the base)\n";
+  if (!front.empty()) {
+    out << "Pareto front of " << (request.efficiency ? "eps" : "the range") << " against the peak axle load (" << front.size() << " optima):\n"
+        << "  axle load       R               eps       M               pin to bend\n";
+    for (const ContestEngine& p : front) {
+      const std::string load = quantity_text(p.measured[axle_limit], UnitDimension::force, units, 4);
+      const std::string range = quantity_text(p.verification.capacity.R, UnitDimension::length, units, 5);
+      const std::string eps = format_significant(100 * p.verification.eps, 4) + " %";
+      const std::string mass = quantity_text(p.engine.M, UnitDimension::mass, units, 4);
+      out << "  " << load << std::string(std::max<std::size_t>(1, 16 - load.size()), ' ') << range
+          << std::string(std::max<std::size_t>(1, 16 - range.size()), ' ') << eps << std::string(std::max<std::size_t>(1, 10 - eps.size()), ' ')
+          << mass << std::string(std::max<std::size_t>(1, 16 - mass.size()), ' ') << format_significant(p.verification.pin_angle_deg, 4) << " deg\n";
+    }
+  }
+  return out.str();
+}
+
+std::vector<PictureFile> pareto_pictures(const std::vector<ContestEngine>& front, const ContestRequest& request) {
+  std::ostringstream data;
+  data << "axle_load_kN,R_m,eps\n";
+  for (const ContestEngine& p : front)
+    data << format_significant(p.measured[axle_limit] / 1e3, 9) << "," << format_significant(p.verification.capacity.R, 9) << ","
+         << format_significant(p.verification.eps, 9) << "\n";
+  std::ostringstream gp;
+  gp << "# Made by trebuchet-verify contest --plot; run with gnuplot in this folder.\n"
+     << "set encoding utf8\nset datafile separator ','\nset terminal svg size 900,600 dynamic font 'sans,13'\nset output 'pareto.svg'\n"
+     << "set grid lc rgb '#dddddd'\nset key noenhanced top left\n"
+     << "set title \"The best " << machine_words(request.machine) << " for each largest axle load, within the other limits\" noenhanced\n"
+     << "set xlabel 'peak load on the axle [kN]'\nset ylabel '" << (request.efficiency ? "efficiency eps" : "range R [m]") << "'\n"
+     << "plot 'pareto.csv' every ::1 using 1:" << (request.efficiency ? 3 : 2)
+     << " with linespoints lw 2 pt 7 lc rgb '#1f5fbf' title 'Pareto front'\n";
+  return {{"pareto.csv", data.str()}, {"pareto.gp", gp.str()}};
+}
+
+}  // namespace trebuchet

@@ -1,0 +1,69 @@
+// The best engine under a contest's limits (issue 36, docs/machines.md): for a given projectile,
+// machine and beam, the lengths and the counterweight that throw farthest (or most efficiently)
+// within a bounding box, a largest counterweight, a largest peak load on the axle and a largest
+// peak acceleration of the projectile; the Pareto front of range against the axle's load; and,
+// when no engine meets the limits, the fewest of them that cannot be met together.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "trebuchet/engine.hpp"
+#include "trebuchet/verification.hpp"
+
+namespace trebuchet {
+
+/// The limits a contest sets, each optional.
+enum ContestLimit { width_limit, height_limit, mass_limit, axle_limit, acceleration_limit };
+inline constexpr int contest_limit_count = 5;
+/// width and height of the bounding box [m], counterweight mass [kg], peak axle load [N], peak
+/// acceleration of the projectile [m/s2].
+using ContestLimits = std::array<std::optional<double>, contest_limit_count>;
+
+struct ContestRequest {
+  MachineKind machine = MachineKind::hinged;
+  double projectile_mass = 0;  ///< m [kg], as the contest gives it
+  double beam_mass_per_length = 0;  ///< the beam's mass per metre [kg/m]: mb = this times L1 + L2
+  double theta_i_deg = standard_theta_i_deg;  ///< held [deg]
+  Material material{};
+  ShotSettings settings{};  ///< the release (its criterion's optimum, or a given one), air, target level
+  bool efficiency = false;  ///< maximise eps instead of the range
+  ContestLimits limits{};
+};
+
+/// One engine of a contest, with what each limit measures on it (in the limits' units) and
+/// whether it meets them all.
+struct ContestEngine {
+  Engine engine;
+  Verification verification;
+  std::array<double, contest_limit_count> measured{};
+  double objective = 0;  ///< R [m] or eps
+  bool feasible = false;
+  int shots = 0;  ///< of the search that found it
+};
+
+/// The measures of the limits on `engine` under `settings`: the bounding box of the pivot, the
+/// beam, the counterweight, the sling and the projectile from rest through the release (the
+/// base at the bottom, sampled every 0.02 (L2/g)^(1/2) and at the release), its counterweight
+/// mass, its peak axle load, and the projectile's peak acceleration up to the release.
+std::array<double, contest_limit_count> contest_measures(const Engine& engine, const ShotSettings& settings, Verification* verification = nullptr);
+
+/// The best engine: Nelder-Mead in the logs of L1/L2, L4/L1, m/M, L2 (and L3/L2 for the hinged
+/// machine; the others hold their counterweight at the short arm's end), the limits as exact
+/// penalties, M at its limit where that binds, then the size pushed to the largest that meets
+/// the limits (bisection to 1e-10), so that a limit that binds is met with equality. Throws
+/// Error(bad_number) for a request no engine could meet (no projectile, no beam), Error(out_of_range)
+/// when no engine meets the limits, naming the fewest limits that cannot be met together.
+ContestEngine contest_optimum(const ContestRequest& request);
+
+/// The fewest limits of the request that no engine the search finds meets together; empty when
+/// it meets them all.
+std::vector<ContestLimit> conflicting_limits(const ContestRequest& request);
+
+/// The Pareto front of the objective against the peak axle load: `points` optima, the axle's
+/// limit from a fifth of the unlimited optimum's load up to that load, each under the request's
+/// other limits; those that meet their limits, by rising axle load.
+std::vector<ContestEngine> pareto_front(const ContestRequest& request, int points);
+
+}  // namespace trebuchet

@@ -1,0 +1,274 @@
+#include "trebuchet/contest.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "simplex.hpp"
+#include "trebuchet/angles.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+
+namespace trebuchet {
+namespace {
+
+// How messages name each limit ({{key}}: the programs' flag, error.hpp).
+const char* const limit_keys[contest_limit_count] = {"max_width", "max_height", "max_M", "max_axle_load", "max_acceleration"};
+
+// A candidate: L1/L2, L4/L1, m/M, L2 [m] and, for the hinged machine, L3/L2.
+struct Shape {
+  double l = 4, l4 = 0.9, mu = 0.02, L2 = 1, L = 0.8;
+};
+
+Engine engine_of_shape(const ContestRequest& r, const Shape& s) {
+  Engine e;
+  e.machine = r.machine;
+  e.theta_i_deg = r.theta_i_deg;
+  e.material = r.material;
+  e.L2 = s.L2;
+  e.L1 = s.l * s.L2;
+  e.L3 = r.machine == MachineKind::hinged ? s.L * s.L2 : 0;  // the others' counterweight at the short arm's end
+  e.L4 = s.l4 * e.L1;
+  e.m = r.projectile_mass;
+  e.M = r.projectile_mass / s.mu;
+  e.mb = r.beam_mass_per_length * (e.L1 + e.L2);
+  return e;
+}
+
+// How far the measures lie beyond the limits given, each as a fraction of its limit; 0 when they meet them all.
+double violation(const std::array<double, contest_limit_count>& measured, const ContestLimits& limits) {
+  double sum = 0;
+  for (int k = 0; k < contest_limit_count; ++k)
+    if (limits[k]) sum += std::max(0.0, measured[k] / *limits[k] - 1);
+  return sum;
+}
+
+struct Search {
+  const ContestRequest* request = nullptr;
+  double mu_least = 0;  // m over the largest counterweight: M at its limit where the search would pass it
+  bool hinged = false;
+  int shots = 0;
+  std::optional<ContestEngine> best;  // the best that meets the limits
+  double least_violation = 1e300;
+
+  Shape shape_of(const std::vector<double>& x) const {
+    Shape s{std::exp(x[0]), std::exp(x[1]), std::max(std::exp(x[2]), mu_least), std::exp(x[3]), 0};
+    if (hinged) s.L = std::exp(x[4]);
+    return s;
+  }
+  std::vector<double> point_of(const Shape& s) const {
+    std::vector<double> x{std::log(s.l), std::log(s.l4), std::log(s.mu), std::log(s.L2)};
+    if (hinged) x.push_back(std::log(s.L));
+    return x;
+  }
+
+  // Minus the objective of a candidate that meets the limits; how far it misses them otherwise
+  // (above every one that meets them); a candidate that cannot be built or shot, more still.
+  double cost(const Shape& s) {
+    ++shots;
+    if (!(s.l > 1.05 && s.l < 60 && s.l4 > 0.05 && s.l4 < 20 && s.mu < 1 && s.L2 > 1e-3 && s.L2 < 1e3 && s.L < 20)) return 1e6;
+    try {
+      ContestEngine c;
+      c.engine = engine_of_shape(*request, s);
+      c.measured = contest_measures(c.engine, request->settings, &c.verification);
+      c.objective = request->efficiency ? c.verification.eps : c.verification.capacity.R;
+      if (!c.verification.warnings.empty()) return 1e5;  // the model stops holding before the release: no engine
+      const double missed = violation(c.measured, request->limits);
+      c.feasible = missed == 0;
+      if (!c.feasible) {
+        least_violation = std::min(least_violation, missed);
+        return missed;
+      }
+      if (!best || c.objective > best->objective) best = c;
+      return -c.objective;
+    } catch (const Error&) {
+      return 1e6;
+    }
+  }
+
+  // The size scales the range and the box, not the shape's accelerations: the best shape is
+  // grown (or shrunk) to the largest size that meets the limits, by bisection in log L2.
+  void push_size() {
+    if (!best) return;
+    Shape s;
+    s.l = best->engine.L1 / best->engine.L2, s.l4 = best->engine.L4 / best->engine.L1, s.mu = best->engine.m / best->engine.M;
+    s.L2 = best->engine.L2, s.L = best->engine.L3 / best->engine.L2;
+    const double start = s.L2;
+    double low = 0, high = 0;  // log of the factor: feasible at low, not at high
+    bool bracketed = false;
+    for (int k = 1; k <= 40 && !bracketed; ++k) {
+      Shape grown = s;
+      grown.L2 = start * std::exp(0.05 * k);
+      const double before = best->objective;
+      if (cost(grown) > 0)
+        bracketed = true, high = 0.05 * k;
+      else if (!(best->objective > before))
+        return;  // a larger engine does no better: the size does not bind
+      else
+        low = 0.05 * k;
+    }
+    if (!bracketed) return;
+    for (int k = 0; k < 40 && high - low > 1e-10; ++k) {
+      const double middle = (low + high) / 2;
+      Shape trial = s;
+      trial.L2 = start * std::exp(middle);
+      (cost(trial) > 0 ? high : low) = middle;
+    }
+  }
+};
+
+Search search_from(const ContestRequest& r, const Shape& start) {
+  Search search;
+  search.request = &r;
+  search.hinged = r.machine == MachineKind::hinged;
+  if (r.limits[mass_limit]) search.mu_least = r.projectile_mass / *r.limits[mass_limit];
+  Shape first = start;
+  first.mu = std::max(first.mu, search.mu_least);
+  minimize_simplex([&](const std::vector<double>& x) { return search.cost(search.shape_of(x)); }, search.point_of(first), 0.25, 1e-5, 500);
+  search.push_size();
+  return search;
+}
+
+// The starting shapes: the paper's proportions, and a shorter beam with a longer sling, each at
+// a size within the box when one is given.
+std::vector<Shape> starts_of(const ContestRequest& r) {
+  std::vector<Shape> starts{Shape{}, Shape{3, 1.2, 0.02, 1, 1}};
+  const double box = std::min(r.limits[width_limit].value_or(1e300), r.limits[height_limit].value_or(1e300));
+  for (Shape& s : starts) s.L2 = box < 1e300 ? 0.15 * box / s.l : 1;
+  return starts;
+}
+
+// The better of two searches: one that meets the limits, then the larger objective.
+Search better(Search a, Search b) {
+  b.shots += a.shots, a.shots = b.shots;
+  if (!a.best) return b;
+  if (!b.best) return a;
+  return b.best->objective > a.best->objective ? b : a;
+}
+
+// The best of the searches from each start, and from `warm` first when given.
+Search search_all(const ContestRequest& r, const std::optional<Shape>& warm = std::nullopt) {
+  Search found;
+  found.request = &r;
+  if (warm) found = search_from(r, *warm);
+  for (const Shape& start : starts_of(r)) found = better(found, search_from(r, start));
+  return found;
+}
+
+Shape shape_of_engine(const Engine& e) {
+  Shape s;
+  s.l = e.L1 / e.L2, s.l4 = e.L4 / e.L1, s.mu = e.m / e.M, s.L2 = e.L2, s.L = e.L3 > 0 ? e.L3 / e.L2 : 0.8;
+  return s;
+}
+
+void check_request(const ContestRequest& r) {
+  if (!(r.projectile_mass > 0 && r.projectile_mass < 1e12))
+    throw Error(ErrorKind::bad_number, "{{m}} = " + format_significant(r.projectile_mass, 6) + ": the contest's projectile mass must be positive");
+  if (!(r.beam_mass_per_length >= 0 && r.beam_mass_per_length < 1e9))
+    throw Error(
+        ErrorKind::bad_number,
+        "the beam's mass per metre, " + format_significant(r.beam_mass_per_length, 6) + " kg/m, must be 0 or more; give {{mb_per_m}} or {{D}}");
+  for (int k = 0; k < contest_limit_count; ++k)
+    if (r.limits[k] && !(*r.limits[k] > 0 && std::isfinite(*r.limits[k])))
+      throw Error(ErrorKind::bad_number,
+                  "{{" + std::string(limit_keys[k]) + "}} = " + format_significant(*r.limits[k], 6) + ": a limit must be positive");
+  check_shot_settings(r.settings);
+}
+
+}  // namespace
+
+std::array<double, contest_limit_count> contest_measures(const Engine& engine, const ShotSettings& given, Verification* verification) {
+  check_engine(engine);
+  ShotSettings settings = given;
+  settings.loads = true;
+  const ScaledDesign d = shot_design(engine, settings);
+  std::vector<TracePoint> trace;
+  const ShotResult shot = simulate_shot(d, release_criterion(engine, settings), settings.integrator, &trace, 0.02, nullptr, true);
+  const Verification v = verification_of(engine, shot, settings.target_level, settings.air, settings.range_from_release);
+  // Heights above the base, which the box stands on; x along the ground.
+  const double base = d.l * std::cos(radians(d.theta_i_deg));
+  double x_low = 1e300, x_high = -1e300, y_low = 0, y_high = base, acceleration = 0;
+  for (const TracePoint& p : trace) {
+    if (p.phase == Phase::released) continue;
+    const Snapshot& s = p.snapshot;
+    for (const Vec2& at : {s.pivot, s.hinge, s.counterweight, s.tip, s.projectile}) {
+      x_low = std::min(x_low, at.x), x_high = std::max(x_high, at.x);
+      y_low = std::min(y_low, at.y + base), y_high = std::max(y_high, at.y + base);
+    }
+    // The sling's pull (the tip feels its opposite), the trough's push and the weight, over the projectile's mass.
+    acceleration = std::max(acceleration, std::hypot(-s.sling_on_tip.x, -s.sling_on_tip.y + s.normal_force - d.mu) / d.mu);
+  }
+  if (verification) *verification = v;
+  return {(x_high - x_low) * engine.L2, (y_high - y_low) * engine.L2, engine.M, v.loads[pivot_load].value, acceleration * engine.material.g};
+}
+
+ContestEngine contest_optimum(const ContestRequest& request) {
+  check_request(request);
+  const Search search = search_all(request);
+  if (!search.best) {
+    const std::vector<ContestLimit> conflict = conflicting_limits(request);
+    std::string names;
+    for (ContestLimit k : conflict) names += (names.empty() ? "" : " and ") + std::string("{{") + limit_keys[k] + "}}";
+    throw Error(ErrorKind::out_of_range,
+                "no engine found meets " + names +
+                    (conflict.size() > 1 ? " together, though it meets any fewer of them; loosen one of them"
+                                         : "; loosen it (the search met every other limit)"));
+  }
+  ContestEngine best = *search.best;
+  best.shots = search.shots;
+  return best;
+}
+
+std::vector<ContestLimit> conflicting_limits(const ContestRequest& request) {
+  std::vector<ContestLimit> given;
+  for (int k = 0; k < contest_limit_count; ++k)
+    if (request.limits[k]) given.push_back(static_cast<ContestLimit>(k));
+  // The subsets by size, the smallest first: the first that no search meets.
+  for (std::size_t size = 1; size <= given.size(); ++size)
+    for (unsigned mask = 0; mask < (1u << given.size()); ++mask) {
+      if (static_cast<std::size_t>(__builtin_popcount(mask)) != size) continue;
+      ContestRequest some = request;
+      some.limits = {};
+      std::vector<ContestLimit> chosen;
+      for (std::size_t i = 0; i < given.size(); ++i)
+        if (mask & (1u << i)) some.limits[given[i]] = request.limits[given[i]], chosen.push_back(given[i]);
+      if (!search_all(some).best) return chosen;
+    }
+  return {};
+}
+
+std::vector<ContestEngine> pareto_front(const ContestRequest& request, int points) {
+  check_request(request);
+  if (!(points >= 2 && points <= 200)) throw Error(ErrorKind::bad_number, "{{points}} = " + std::to_string(points) + ": give 2 to 200 points");
+  ContestRequest free = request;
+  free.limits[axle_limit].reset();
+  const ContestEngine top = contest_optimum(free);
+  const double most = request.limits[axle_limit] ? std::min(*request.limits[axle_limit], top.measured[axle_limit]) : top.measured[axle_limit];
+  // Every engine found, from the largest load down, each search warm from the last optimum: the
+  // front's point at a load is the best of them all within it (a search that stopped short is
+  // bettered by one that went farther at a smaller load).
+  std::vector<ContestEngine> found{top};
+  std::optional<Shape> warm = shape_of_engine(top.engine);
+  std::vector<double> loads;
+  for (int k = points - 1; k >= 0; --k) {
+    ContestRequest limited = request;
+    limited.limits[axle_limit] = most * (0.2 + 0.8 * k / (points - 1));
+    loads.push_back(*limited.limits[axle_limit]);
+    Search search = search_from(limited, *warm);
+    if (!search.best) search = search_all(limited);  // the warm start could not reach this load
+    if (!search.best) continue;
+    search.best->shots = search.shots;
+    found.push_back(*search.best);
+    warm = shape_of_engine(search.best->engine);
+  }
+  std::vector<ContestEngine> front;
+  for (auto load = loads.rbegin(); load != loads.rend(); ++load) {
+    const ContestEngine* best = nullptr;
+    for (const ContestEngine& c : found)
+      if (c.measured[axle_limit] <= *load && (!best || c.objective > best->objective)) best = &c;
+    if (best && (front.empty() || best->objective > front.back().objective)) front.push_back(*best);
+  }
+  return front;
+}
+
+}  // namespace trebuchet
