@@ -19,6 +19,7 @@
 #include "trebuchet/app/design_record.hpp"
 #include "trebuchet/app/spreadsheet.hpp"
 #include "trebuchet/app/fields.hpp"
+#include "trebuchet/app/names.hpp"
 #include "trebuchet/app/request.hpp"
 #include "trebuchet/scaling_table.hpp"
 #include "trebuchet/app/table_json.hpp"
@@ -44,6 +45,7 @@ struct Options {
   std::string digits;  // empty: default_csv_digits
   std::string spreadsheet;
   std::string units = "si";
+  std::string machine;  // empty: the paper's, tab:CPNC
 };
 
 Material material_from(const Options& options, const Material& reference) {
@@ -60,7 +62,7 @@ void print(const OptimalEngine& design, const std::string& format, int digits, U
   if (format == "json")
     std::cout << pretty_json(design_json(design));
   else if (format == "csv")
-    std::cout << csv_line(design_csv_header()) << design_csv_text(design, digits) << "\n";
+    std::cout << csv_line(design_csv_header(design.engine.machine)) << design_csv_text(design, digits) << "\n";
   else
     std::cout << design_table(design, units);
 }
@@ -74,14 +76,21 @@ OptimalEngine in_option_words(OptimalEngine design) {
   return design;
 }
 
-int run(const Options& options, bool format_given) {
+int run(const Options& options, bool format_given, bool F_given) {
   if (options.format != "table" && options.format != "csv" && options.format != "json")
     throw Error(ErrorKind::usage, "--format: '" + options.format + "' is not a format; use table, csv or json");
   const int digits = options.digits.empty() ? default_csv_digits : parse_digits(options.digits, "--digits");
   const UnitSystem units = parse_unit_system(options.units, "--units");  // read first, whatever the mode
   if (!options.spreadsheet.empty()) refuse_output_over_input(options.spreadsheet, "spreadsheet", {options.table_file, options.batch});
+  const MachineKind machine = options.machine.empty() ? MachineKind::hinged : parse_machine(options.machine, "--machine");
+  if (!options.machine.empty() && !options.table_file.empty())
+    throw Error(ErrorKind::usage, "--table: a table names its own machine (its key \"machine\"); drop --machine");
+  if (machine != MachineKind::hinged && F_given)
+    throw Error(ErrorKind::usage, "--F: the " + machine_name(machine) + " machine's table holds the counterweight at the short arm's end; drop --F");
+  if (machine != MachineKind::hinged && !options.spreadsheet.empty())
+    throw Error(ErrorKind::usage, "--spreadsheet writes the paper's engine's calculator (tab:CPNC); drop --machine");
   const ScalingTable table_from_file = options.table_file.empty() ? ScalingTable{} : load_scaling_table(options.table_file);
-  const ScalingTable& table = options.table_file.empty() ? builtin_scaling_table() : table_from_file;
+  const ScalingTable& table = options.table_file.empty() ? builtin_scaling_table(machine) : table_from_file;
 
   DesignRequest request;
   request.theta_i_deg = parse_theta(options.theta, "--theta");
@@ -137,7 +146,7 @@ int run(const Options& options, bool format_given) {
     const bool json = options.format == "json";
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
     std::vector<std::string> passed_columns;
-    const std::size_t design_columns = design_csv_header().size();
+    const std::size_t design_columns = design_csv_header(table.machine).size();
     const auto progress = progress_bar("rows");  // a file's rows are not counted ahead: no total
     std::size_t rows_done = 0;
     // A row is printed only once it is whole, so that a failure cannot leave half a row. A
@@ -148,7 +157,7 @@ int run(const Options& options, bool format_given) {
           passed_columns = passed;
           std::vector<std::string> header = {"line"};
           header.insert(header.end(), passed.begin(), passed.end());
-          for (const std::string& column : design_csv_header()) header.push_back(column);
+          for (const std::string& column : design_csv_header(table.machine)) header.push_back(column);
           header.push_back("error");
           if (!json) std::cout << csv_line(header);
         },
@@ -239,6 +248,9 @@ int main(int argc, char** argv) {
   app.add_option("--spreadsheet", options.spreadsheet,
                  "write the calculator as a workbook with live formulas (.xlsx), opened on the paper's examples or on the givens");
   app.add_option("--table", options.table_file, "constants file in the schema of data/cpnc.json");
+  app.add_option("--machine", options.machine,
+                 "hinged (the paper's, tab:CPNC), fixed or floating-arm: the optimal engine of that machine, its counterweight at the "
+                 "short arm's end, from its own scaling table (data/cpnc-fixed.json, data/cpnc-floating-arm.json; docs/machines.md)");
 
-  return run_program(app, Program::calc, argc, argv, [&] { return run(options, app.count("--format") > 0); });
+  return run_program(app, Program::calc, argc, argv, [&] { return run(options, app.count("--format") > 0, app.count("--F") > 0); });
 }

@@ -158,6 +158,7 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
   machine_option(opt, o);
 
   CLI::App* derive = s.derive_table;
+  machine_option(derive, o);
   sweep_options(derive, o);
   threads_option(derive, o, "threads (default: the cores)");
   s.merge->add_option("parts", o.parts, "the files written by derive-table --shard k/N")->required();

@@ -70,6 +70,10 @@ int run_derive_table(const Options& o) {
   spec = o.sweep;
   spec.theta_i_deg = o.design.theta_i_deg.value_or(standard_theta_i_deg);
   spec.F = o.design.F.value_or(standard_F);
+  spec.machine = o.design.machine.value_or(MachineKind::hinged);
+  if (spec.machine != MachineKind::hinged && o.design.F)
+    throw Error(ErrorKind::usage,
+                "{{F}}: the fixed counterweight's and the floating arm's tables hold the counterweight at the short arm's end; leave out {{F}}");
   spec.material = o.material.over(Material{});
   spec.criterion = o.settings.base.criterion;
   if (o.shard) part.shard = *o.shard;

@@ -26,6 +26,7 @@ nlohmann::ordered_json design_json(const OptimalEngine& design) {
   require_finite(fields);
   nlohmann::ordered_json out = nlohmann::ordered_json::object();
   for (const Field& field : fields) out[field.key] = field.value;
+  if (design.engine.machine != MachineKind::hinged) out[machine_key] = machine_name(design.engine.machine);
   out["branch"] = branch_name(design.branch);
   out["air"] = "vacuum";  // R and T: the paper's, in vacuum
   if (design.scaled_from)
@@ -39,17 +40,18 @@ nlohmann::ordered_json design_json(const OptimalEngine& design) {
   return out;
 }
 
-std::vector<std::string> design_csv_header() {
+std::vector<std::string> design_csv_header(MachineKind machine) {
   std::vector<std::string> header;
   for (const Field& field : design_fields(OptimalEngine{})) header.push_back(csv_column(field));
   header.insert(header.end(), {"branch", "warnings", "air"});
+  if (machine != MachineKind::hinged) header.push_back(machine_key);
   return header;
 }
 
 std::vector<std::string> design_output_names() {
   std::vector<std::string> names = design_csv_header();
   for (const Field& field : design_fields(OptimalEngine{})) names.push_back(field.key);
-  names.insert(names.end(), {"scaled_from", "branch_steps", "line", "error", "exit_code"});
+  names.insert(names.end(), {"scaled_from", "branch_steps", "line", "error", "exit_code", machine_key});
   return names;
 }
 
@@ -84,6 +86,7 @@ std::string design_csv_text(const OptimalEngine& design, int digits) {
   text += ',';
   append_csv_cell(text, join(design.warnings, "; "));
   text += ",vacuum";
+  if (design.engine.machine != MachineKind::hinged) text += "," + machine_name(design.engine.machine);
   return text;
 }
 

@@ -7,6 +7,7 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/app/design_record.hpp"
 #include "trebuchet/app/fields.hpp"
+#include "trebuchet/app/names.hpp"
 #include "trebuchet/app/shot_record.hpp"
 #include "trebuchet/app/units.hpp"
 #include "trebuchet/format.hpp"
@@ -61,7 +62,10 @@ std::string design_table(const OptimalEngine& design, UnitSystem units) {
   auto mass = [&](double kg) { return quantity_text(kg, UnitDimension::mass, units); };
   auto energy = [&](double J) { return quantity_text(J, UnitDimension::energy, units); };
   std::string t;
-  t += "Optimal engine from tab:CPNC: theta_i = " + format_number(e.theta_i_deg) + " deg, F = " + format_fraction(design.F) +
+  t += (e.machine == MachineKind::hinged
+            ? "Optimal engine from tab:CPNC: theta_i = " + format_number(e.theta_i_deg) + " deg, F = " + format_fraction(design.F)
+            : "Optimal " + machine_words(e.machine) + " from its scaling table (data/cpnc-" + machine_name(e.machine) +
+                ".json, docs/machines.md), its counterweight at the short arm's end: theta_i = " + format_number(e.theta_i_deg) + " deg") +
       ", beta2 = " + format_fraction(e.material.beta2) + ", " +
       (design.branch == Branch::none ? std::string("segment") : std::string(branch_name(design.branch)) + " branch") + " X in [" +
       format_number(design.segment_X_min) + ", " + format_number(design.segment_X_max) + "]\n";
@@ -71,7 +75,8 @@ std::string design_table(const OptimalEngine& design, UnitSystem units) {
         " (eq:ExtraScalings); the capacity below is the model's\n";
   t += "  capacity       " + cell("R", length(design.capacity.R)) + cell("T", energy(design.capacity.T)) +
       cell("X", format_significant(design.coordinates.X, 3)) + cell("Y", format_significant(design.coordinates.Y, 3)) + "\n";
-  t += "                 in vacuum, from the pivot to the base's level (trebuchet-verify shot --air flies it through air)\n";
+  t += std::string("                 in vacuum, from ") + (e.machine == MachineKind::floating_arm ? "the guide's line" : "the pivot") +
+      " to the base's level (trebuchet-verify shot --air flies it through air)\n";
   using V = DesignValues;  // the engine's values under their keys (fields.hpp)
   t += "  beam           " + cell(key_of(&V::L1), length(e.L1)) + cell(key_of(&V::L2), length(e.L2)) + cell(key_of(&V::Lb), length(beam_length(e))) +
       cell(key_of(&V::H), length(pivot_height(e))) + "\n";

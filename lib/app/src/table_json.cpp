@@ -213,10 +213,14 @@ void check_overlaps(const Reader& reader, const TableBlock& block, const std::st
 }
 
 TableBlock parse_block(const Reader& reader, const json& object, const std::string& path, const ParamVector& n,
-                       const std::map<std::string, std::string>& texts) {
+                       const std::map<std::string, std::string>& texts, MachineKind machine) {
   TableBlock block{};
   block.theta_i_deg = reader.positive(object, path, "theta_i_deg");
-  block.F = reader.positive(object, path, "F");
+  // Another machine's block has its counterweight at the short arm's end, "L": 0 (L3/L2), not an F.
+  if (machine == MachineKind::hinged)
+    block.F = reader.positive(object, path, "F");
+  else if (reader.number(object, path, "L") != 0)
+    reader.fail(path + ".L", "the table's engines have their counterweight at the short arm's end: L must be 0");
   block.Z0 = reader.per_param(object, path, "Z0", true);
   if (object.contains("branch_switch_X")) block.branch_switch_X = reader.number(object, path, "branch_switch_X");
   const json& segments = reader.array(object, path, "segments");
@@ -258,6 +262,7 @@ ScalingTable parse_scaling_table(std::string_view json_text, const std::string& 
         if (text.is_string()) table.provenance.emplace_back(key, text.get<std::string>());
     }
   }
+  if (document.contains("machine")) table.machine = parse_machine(reader.text(document, "", "machine"), "machine");
   table.R0 = reader.positive(document, "", "R0");
   table.T0 = reader.positive(document, "", "T0");
   const json& material = reader.member(document, "", "reference_material");
@@ -267,7 +272,7 @@ ScalingTable parse_scaling_table(std::string_view json_text, const std::string& 
   const json& blocks = reader.array(document, "", "blocks");
   for (std::size_t i = 0; i < blocks.size(); ++i) {
     const std::string path = "blocks[" + std::to_string(i) + "]";
-    const TableBlock block = parse_block(reader, blocks[i], path, table.n, numbers.texts);
+    const TableBlock block = parse_block(reader, blocks[i], path, table.n, numbers.texts, table.machine);
     if (table.find_block(block.theta_i_deg, block.F))
       reader.fail(path,
                   "a second block for theta_i = " + format_number(block.theta_i_deg) + " deg, F = " + format_fraction(block.F) +
@@ -292,6 +297,7 @@ nlohmann::ordered_json scaling_table_json(const ScalingTable& table) {
   out["name"] = table.name;
   if (!table.provenance.empty())
     for (const auto& [key, text] : table.provenance) out["provenance"][key] = text;
+  if (table.machine != MachineKind::hinged) out["machine"] = machine_name(table.machine);
   out["R0"] = table.R0;
   out["T0"] = table.T0;
   out["reference_material"] = material_json(table.reference);
@@ -300,7 +306,10 @@ nlohmann::ordered_json scaling_table_json(const ScalingTable& table) {
   for (const TableBlock& block : table.blocks) {
     nlohmann::ordered_json b;
     b["theta_i_deg"] = block.theta_i_deg;
-    b["F"] = block.F;
+    if (table.machine == MachineKind::hinged)
+      b["F"] = block.F;
+    else
+      b["L"] = 0;  // L3/L2: the counterweight at the short arm's end
     if (block.branch_switch_X) b["branch_switch_X"] = *block.branch_switch_X;
     b["Z0"] = param_json(block.Z0);
     nlohmann::ordered_json segments = nlohmann::ordered_json::array();
@@ -397,6 +406,7 @@ nlohmann::ordered_json sweep_part_json(const SweepPart& part) {
   out["kind"] = part_kind;
   out["theta_i_deg"] = spec.theta_i_deg;
   out["F"] = spec.F;
+  if (spec.machine != MachineKind::hinged) out["machine"] = machine_name(spec.machine);
   out["X_from"] = spec.X_from, out["X_to"] = spec.X_to, out["X_step"] = spec.X_step;
   out["R0"] = spec.R0, out["T0"] = spec.T0;
   out["reference_material"] = material_json(spec.material);
@@ -419,6 +429,7 @@ SweepPart read_sweep_part(const nlohmann::json& j, const std::string& origin) {
     SweepSpec& spec = part.spec;
     spec.theta_i_deg = reader.positive(j, "", "theta_i_deg");
     spec.F = reader.positive(j, "", "F");
+    if (j.contains("machine")) spec.machine = parse_machine(reader.text(j, "", "machine"), "machine");
     spec.X_from = reader.number(j, "", "X_from"), spec.X_to = reader.number(j, "", "X_to"), spec.X_step = reader.positive(j, "", "X_step");
     spec.R0 = reader.positive(j, "", "R0"), spec.T0 = reader.positive(j, "", "T0");
     const json& material = reader.member(j, "", "reference_material");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <Eigen/Dense>
 #include <cmath>
+#include <string_view>
 #include <functional>
 #include <limits>
 
@@ -241,7 +242,8 @@ void require_representable(const OptimalEngine& d, const std::function<std::stri
   };
   for (const auto& [name, value] : positive) {
     if (!std::isfinite(value)) fail(name, "too large");
-    if (!(value > std::numeric_limits<double>::min())) fail(name, "too small");
+    const bool at_arm_end = e.machine != MachineKind::hinged && std::string_view(name) == "L3" && value == 0;  // the other machines' counterweight
+    if (!(value > std::numeric_limits<double>::min()) && !at_arm_end) fail(name, "too small");
   }
   if (!std::isfinite(d.coordinates.X) || !std::isfinite(d.coordinates.Y)) fail("capacity (X, Y)", "too far from R0, T0");
 }
@@ -252,10 +254,18 @@ std::string describe_given(const Given& given) {
   return std::string(quantity_name(given.quantity)) + " = " + format_significant(given.value, 6) + unit;
 }
 
+// The table in messages: tab:CPNC, or another machine's.
+std::string table_words(const ScalingTable& table) {
+  return table.machine == MachineKind::hinged
+      ? "tab:CPNC"
+      : "the " + std::string(table.machine == MachineKind::fixed ? "fixed" : "floating-arm") + " machine's table";
+}
+
 std::string describe_interval(double lo, double hi) { return "[" + format_number(lo) + ", " + format_number(hi) + "]"; }
 
 std::string describe_block(const TableBlock& block) {
-  return "theta_i = " + format_number(block.theta_i_deg) + " deg, F = " + format_fraction(block.F);
+  return "theta_i = " + format_number(block.theta_i_deg) + " deg" +
+      (block.F > 0 ? ", F = " + format_fraction(block.F) : std::string(", the counterweight at the short arm's end"));  // another machine's: F = 0
 }
 
 bool branch_allowed(const Candidate& candidate, BranchChoice choice) {
@@ -427,10 +437,10 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
     if (candidates.empty() || !request.extrapolate) {
       const bool both_capacity = (gi.quantity == Quantity::R || gi.quantity == Quantity::T) &&
           (gj.quantity == Quantity::R || gj.quantity == Quantity::T);
-      std::string message = both_capacity
-          ? "capacity " + pair() + " has X = " + format_significant(candidates.front().X(), 3) + ", outside the interval " + covered() +
-              " covered by tab:CPNC for " + describe_block(*block) + "; raise T or lower R to lower X (X = (5 ln(R/R0) - ln(T/T0))/sqrt(26))"
-          : "no meaningful capacity for the pair " + pair() + " at " + describe_block(*block) + ": " +
+      std::string message = both_capacity ? "capacity " + pair() + " has X = " + format_significant(candidates.front().X(), 3) +
+              ", outside the interval " + covered() + " covered by " + table_words(table) + " for " + describe_block(*block) +
+              "; raise T or lower R to lower X (X = (5 ln(R/R0) - ln(T/T0))/sqrt(26))"
+                                          : "no meaningful capacity for the pair " + pair() + " at " + describe_block(*block) + ": " +
               (!beam_length_spans.empty() && candidates.empty()
                    ? "optimal engines with " + describe_given(first_is_beam_length(gi, gj) ? gj : gi) + " have Lb from " + beam_length_spans
                    : (tried.empty() ? std::string("no segment gives a solution") : "the inversion gives " + tried) +
@@ -460,8 +470,8 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
     if (allowed.empty()) allowed = candidates;
     chosen = *std::min_element(allowed.begin(), allowed.end(),
                                [](const Candidate& a, const Candidate& b) { return a.outside_by() < b.outside_by(); });
-    result.warnings.push_back("extrapolated: X = " + format_significant(chosen.X(), 3) + " lies outside the interval " + covered() +
-                              " covered by tab:CPNC; constants of segment " + describe_interval(chosen.segment->X_min, chosen.segment->X_max) +
+    result.warnings.push_back("extrapolated: X = " + format_significant(chosen.X(), 3) + " lies outside the interval " + covered() + " covered by " +
+                              table_words(table) + "; constants of segment " + describe_interval(chosen.segment->X_min, chosen.segment->X_max) +
                               " used beyond it");
   }
 
@@ -482,8 +492,9 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
   result.capacity.R = table.R0 * std::exp(chosen.lr);
   result.capacity.T = table.T0 * std::exp(chosen.lt) * scaling.energy;
   for (const Given& given : {gi, gj}) copy_given(given, result);  // exact, not a round trip through logarithms
-  e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, request.F);
-  if (!(e.L3 > 0))
+  e.machine = table.machine;
+  e.L3 = table.machine == MachineKind::hinged ? counterweight_arm(e.L1, e.L2, e.theta_i_deg, request.F) : 0;  // the others' at the arm's end
+  if (table.machine == MachineKind::hinged && !(e.L3 > 0))
     throw Error(ErrorKind::out_of_range,
                 "the design for " + pair() + " has no room for the counterweight arm (L3 = " + format_significant(e.L3, 3) +
                     " m); stay inside the covered interval " + covered());
@@ -491,7 +502,7 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
   result.branch = segment.branch;
   result.segment_X_min = segment.X_min;
   result.segment_X_max = segment.X_max;
-  result.F = request.F;
+  result.F = table.machine == MachineKind::hinged ? request.F : arm_fraction(e);
   result.amplification = chosen.amplification;
   // The constants of tab:CPNC reproduce the ab-initio optimum to about 1 % (docs/verifier.md);
   // the inversion multiplies that, and any error of the givens, by the amplification. Above

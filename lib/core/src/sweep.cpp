@@ -45,7 +45,7 @@ SweepPoint optimize_point(const SweepSpec& spec, double X) {
   point.capacity = capacity_at({X, 0}, spec.R0, spec.T0);
   OptimizeRequest request;
   request.capacity = point.capacity;
-  request.theta_i_deg = spec.theta_i_deg, request.F = spec.F;
+  request.theta_i_deg = spec.theta_i_deg, request.F = spec.F, request.machine = spec.machine;
   request.material = spec.material;
   request.settings.criterion = spec.criterion;
   try {

@@ -43,7 +43,10 @@ struct Block {
 
 [[noreturn]] void fail(const std::string& where, const std::string& problem) { throw Error(ErrorKind::data_file, where + ": " + problem); }
 
-std::string block_name(const SweepSpec& spec) { return "block theta " + format_number(spec.theta_i_deg) + " deg, F " + format_fraction(spec.F); }
+std::string block_name(const SweepSpec& spec) {
+  return "block theta " + format_number(spec.theta_i_deg) + " deg" +
+      (spec.machine == MachineKind::hinged ? ", F " + format_fraction(spec.F) : std::string());
+}
 
 // eq:f_ZX fitted for every parameter over the points.
 struct SegmentFit {
@@ -98,7 +101,7 @@ void derive_block(const Block& block, double R0, DerivedTable& out) {
     fail(name, "no optimum at X = 0, which sets Z0 (tab:CPNC); give an X interval that holds 0");
   TableBlock table_block{};
   table_block.theta_i_deg = block.spec.theta_i_deg;
-  table_block.F = block.spec.F;
+  table_block.F = block.spec.machine == MachineKind::hinged ? block.spec.F : 0;  // the others' counterweight at the arm's end
   table_block.Z0 = fitted_params(zero->second.engine);
   // The paper fits below and above X = 0 separately (tab:CPNC); so do we, and split further
   // where one exponential does not fit.
@@ -133,7 +136,7 @@ void derive_block(const Block& block, double R0, DerivedTable& out) {
 
 bool same_reference(const SweepSpec& a, const SweepSpec& b) {
   return a.R0 == b.R0 && a.T0 == b.T0 && a.material.beta2 == b.material.beta2 && a.material.youngs_modulus == b.material.youngs_modulus &&
-      a.material.wood_density == b.material.wood_density && a.material.g == b.material.g;
+      a.material.wood_density == b.material.wood_density && a.material.g == b.material.g && a.machine == b.machine;
 }
 
 bool same_grid_and_criterion(const SweepSpec& a, const SweepSpec& b) {
@@ -149,8 +152,9 @@ DerivedTable derive_table(const std::vector<SweepPart>& parts) {
   const SweepPart& first = parts.front();
   for (const SweepPart& part : parts) {
     if (!same_reference(part.spec, first.spec))
-      fail(part.origin, "its R0, T0 or reference_material differs from that of " + first.origin + "; merge sweeps of one reference only");
-    Block& block = blocks[{part.spec.theta_i_deg, part.spec.F}];
+      fail(part.origin, "its R0, T0, reference_material or machine differs from that of " + first.origin + "; merge sweeps of one reference only");
+    // Another machine's counterweight sits at the short arm's end: its blocks differ in theta_i alone.
+    Block& block = blocks[{part.spec.theta_i_deg, part.spec.machine == MachineKind::hinged ? part.spec.F : 0}];
     if (block.first_origin.empty()) {
       block.spec = part.spec;
       block.first_origin = part.origin;
@@ -169,6 +173,7 @@ DerivedTable derive_table(const std::vector<SweepPart>& parts) {
   DerivedTable out;
   ScalingTable& table = out.table;
   table.name = "tab:CPNC re-derived ab initio";
+  table.machine = first.spec.machine;
   table.provenance = {
       {"source", "trebuchet-verify derive-table: the ab-initio optimum (appendix A, section 5) at each X point of the sweep, Y = 0 (eq:XY_RT)"},
       {"law", "Z/Z0 = a_Z (R/R0)^p_Z (T/T0)^q_Z (eq:ZRT), p_Z = n_Z + 5 b_Z, q_Z = -b_Z from f_Z = a_Z exp(b_Z sqrt(26) X) (eq:f_ZX)"},

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "trebuchet/design.hpp"
 #include "trebuchet/material.hpp"
 
 namespace trebuchet {
@@ -42,7 +43,7 @@ struct Segment {
 /// One (theta_i, F) block of tab:CPNC.
 struct TableBlock {
   double theta_i_deg;  ///< initial beam angle [deg]
-  double F;  ///< (L2 + L3)/H, scaled
+  double F;  ///< (L2 + L3)/H, scaled; 0 in a table of another machine, whose counterweight sits at the short arm's end (L3 = 0)
   ParamVector Z0;  ///< optimum at (R0, T0) [m or kg]
   std::optional<double> branch_switch_X;  ///< X_d where lower and upper branch are equally good
   std::vector<Segment> segments;  ///< sorted by X_min
@@ -61,8 +62,11 @@ struct ScalingTable {
   Material reference;  ///< material, beta2 and g of the fits
   ParamVector n;  ///< exponents n_Z of eq:f_ZX
   std::vector<TableBlock> blocks;
+  /// The machine its engines are built as (docs/machines.md): the paper's, or one whose
+  /// counterweight sits at the short arm's end, whose blocks differ in theta_i alone.
+  MachineKind machine = MachineKind::hinged;
 
-  /// The block for (theta_i, F), or nullptr.
+  /// The block for (theta_i, F) (for another machine, theta_i: F is not its shape), or nullptr.
   const TableBlock* find_block(double theta_i_deg, double F) const;
   /// The block for (theta_i, F); Error(out_of_range) naming {{theta_i_deg}}, {{F}} and the
   /// blocks there are, when the table has none.
@@ -74,5 +78,9 @@ struct ScalingTable {
 /// tab:CPNC from data/cpnc.json, compiled into the library (generated from the file when the
 /// library is configured; the application layer's parse of the file gives the same table, a test).
 const ScalingTable& builtin_scaling_table();
+
+/// The scaling table of a machine, compiled in the same way: tab:CPNC for the hinged engine,
+/// data/cpnc-fixed.json and data/cpnc-floating-arm.json for the others (docs/machines.md).
+const ScalingTable& builtin_scaling_table(MachineKind machine);
 
 }  // namespace trebuchet

@@ -18,7 +18,8 @@ namespace trebuchet {
 
 struct SweepSpec {
   double theta_i_deg = standard_theta_i_deg;  ///< [deg]
-  double F = standard_F;  ///< (L2 + L3)/H, scaled
+  double F = standard_F;  ///< (L2 + L3)/H, scaled; not the other machines' (their counterweight at the arm's end)
+  MachineKind machine = MachineKind::hinged;  ///< the machine every optimum is built as
   double X_from = -0.55, X_to = 0.55, X_step = 0.05;  ///< X of eq:Xi, scaled
   double R0 = 240, T0 = 26e3;  ///< reference capacity of tab:CPNC [m], [J]
   Material material{};  ///< beta2, wood and g of the engines (section 4)

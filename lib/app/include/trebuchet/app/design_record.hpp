@@ -21,8 +21,9 @@ nlohmann::ordered_json design_json(const OptimalEngine& design);
 
 /// The design's CSV columns, keys with units (R_m, T_J, ...), branch, warnings and air (vacuum), and one
 /// design's cells with `digits` significant digits, quoted where they must be and joined by commas
-/// (no line feed): a batch appends them to a row.
-std::vector<std::string> design_csv_header();
+/// (no line feed): a batch appends them to a row. A table of another machine adds its column
+/// "machine" last (docs/machines.md), so that its designs read back as that machine.
+std::vector<std::string> design_csv_header(MachineKind machine = MachineKind::hinged);
 /// Every name the calculator's outputs use (CSV columns, JSON keys, a batch's line and error):
 /// a column of a batch passed through must not take one of them.
 std::vector<std::string> design_output_names();
