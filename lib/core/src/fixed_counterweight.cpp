@@ -9,6 +9,8 @@ namespace trebuchet {
 
 FixedCounterweight::FixedCounterweight(const ScaledDesign& design)
     : RigidBeamMachine(design, MachineKind::fixed, "fixed counterweight"), distance_(design_.counterweight_lever()) {
+  if (design.parts.hinge_friction > 0)
+    throw Error(ErrorKind::usage, "the fixed counterweight is bolted to the beam: it has no hinge pin; leave out {{hinge_friction}}");
   if (!(design.L() >= 0))
     throw Error(ErrorKind::numerical,
                 "the fixed counterweight's centre lies inside the short arm: L3/L2 = F l cos(theta_i) - 1 = " + format_significant(design.L(), 4) +

@@ -4,14 +4,15 @@
 #include <string>
 
 #include "trebuchet/angles.hpp"
+#include "trebuchet/dynamics.hpp"
 #include "trebuchet/error.hpp"
 
 namespace trebuchet {
 
 RigidBeamMachine::RigidBeamMachine(const ScaledDesign& design, MachineKind kind, const char* name)
     : design_(design), theta_i_(radians(design.theta_i_deg)) {
-  if (design.parts.dissipates())
-    throw Error(ErrorKind::usage, std::string("the ") + name + " takes no friction or drag before the release yet; leave them out");
+  if (design.parts.rope_drag > 0)
+    throw Error(ErrorKind::usage, std::string("the ") + name + " takes no drag on the sling's rope yet; leave out {{rope_diameter}}");
   design_.machine = kind;  // its Delta U and lever (ScaledDesign::energy_drop)
   design_.psi_i_deg = 0;  // the counterweight moves with the beam: nothing to prop
   weight_ = design_.counterweight_lever() - design_.mu_b * design_.beam_cm();
@@ -36,22 +37,24 @@ RigidBeamMachine::Share RigidBeamMachine::body_inertia(double th) const {
 //     (J + mu k^2) th'' + (J'/2 + mu k k_th) th'^2 = G sin th.
 //   Phase II:  J th'' + J' th'^2/2 - G sin th + mu p_th . (p'' + y) = 0,  p_phi . (p'' + y) = 0.
 //   Phase III: the body alone, J th'' + J' th'^2/2 = G sin th.
-std::array<double, 3> RigidBeamMachine::accelerations_of(Phase phase, const State& s) const {
+//   Friction and the air add their generalized forces Q_theta and Q_phi to the right-hand sides.
+std::array<double, 3> RigidBeamMachine::accelerations_of(Phase phase, const State& s, Generalized extra) const {
   const double l = design_.l, l4 = design_.l4, mu = design_.mu, G = weight_, th = s.theta, w2 = s.theta_dot * s.theta_dot;
   const Share J = body_inertia(th);
+  const double turns = counterweight_turns() ? 1 : 0;  // psi'' = theta'', or 0
   if (phase == Phase::released) {
-    const double th_dd = (G * std::sin(th) - J.slope * w2 / 2) / J.inertia;
-    return {th_dd, th_dd, 0};
+    const double th_dd = (G * std::sin(th) + extra.theta - J.slope * w2 / 2) / J.inertia;
+    return {th_dd, turns * th_dd, 0};
   }
   const Path a = pivot_path(th);
   if (phase == Phase::trough) {
     const double sin_phi = std::sin(s.phi), cos_phi = std::cos(s.phi), tan_phi = sin_phi / cos_phi;
     const double k = a.slope + l * (std::cos(th) + std::sin(th) * tan_phi);
     const double k_th = a.curve + l * (-std::sin(th) + std::cos(th) * tan_phi + std::sin(th) * std::sin(th) / (l4 * cos_phi * cos_phi * cos_phi));
-    const double th_dd = (G * std::sin(th) - (J.slope / 2 + mu * k * k_th) * w2) / (J.inertia + mu * k * k);
+    const double th_dd = (G * std::sin(th) + extra.theta - (J.slope / 2 + mu * k * k_th) * w2) / (J.inertia + mu * k * k);
     const double phi_dd = (std::cos(th) * w2 + std::sin(th) * th_dd + l4 * sin_phi * s.phi_dot * s.phi_dot) /
         (l4 * cos_phi);  // eq:EOM_I_3 twice differentiated
-    return {th_dd, th_dd, phi_dd};
+    return {th_dd, turns * th_dd, phi_dd};
   }
   const double sling = l * l4, sp = std::sin(s.phi), cp = std::cos(s.phi);
   const Vec2 p_th{a.slope + l * std::cos(th), l * std::sin(th)}, p_phi{sling * sp, -sling * cp};
@@ -60,10 +63,10 @@ std::array<double, 3> RigidBeamMachine::accelerations_of(Phase phase, const Stat
                   l * std::cos(th) * w2 + sling * sp * s.phi_dot * s.phi_dot + 1};
   const auto dot = [](Vec2 u, Vec2 v) { return u.x * v.x + u.y * v.y; };
   const double a11 = J.inertia + mu * dot(p_th, p_th), a12 = mu * dot(p_th, p_phi), a22 = mu * dot(p_phi, p_phi);
-  const double b1 = G * std::sin(th) - J.slope * w2 / 2 - mu * dot(p_th, rest), b2 = -mu * dot(p_phi, rest);
+  const double b1 = G * std::sin(th) + extra.theta - J.slope * w2 / 2 - mu * dot(p_th, rest), b2 = extra.phi - mu * dot(p_phi, rest);
   const double det = a11 * a22 - a12 * a12;
   const double th_dd = (b1 * a22 - a12 * b2) / det, phi_dd = (a11 * b2 - a12 * b1) / det;
-  return {th_dd, th_dd, phi_dd};
+  return {th_dd, turns * th_dd, phi_dd};
 }
 
 double RigidBeamMachine::trough_cos_phi(double theta) const {
@@ -79,19 +82,79 @@ double RigidBeamMachine::complete_trough_state(State& s) const {
   return cos_phi;
 }
 
-bool RigidBeamMachine::accelerations(Phase phase, const State& given, std::array<double, 3>& out, Losses*) const {
+bool RigidBeamMachine::accelerations(Phase phase, const State& given, std::array<double, 3>& out, Losses* loss_power) const {
   State state = given;
   if (phase == Phase::trough && !(complete_trough_state(state) > 0)) return false;  // the seam's contract: phi follows from theta there
-  out = accelerations_of(phase, state);
+  if (!dissipates()) {
+    out = accelerations_of(phase, state, {});
+  } else {
+    const std::optional<Snapshot> snapshot = resisted(phase, state);
+    if (!snapshot) return false;
+    out = {snapshot->theta_ddot, snapshot->psi_ddot, snapshot->phi_ddot};
+    if (loss_power) *loss_power = snapshot->loss_power;
+  }
   return std::isfinite(out[0]) && std::isfinite(out[2]);
 }
 
 Snapshot RigidBeamMachine::snapshot(Phase phase, const State& given) const {
   State s = given;
   if (phase == Phase::trough) complete_trough_state(s);
+  if (!dissipates()) return snapshot_with(phase, s, accelerations_of(phase, s, {}), {}, 0);
+  const std::optional<Snapshot> out = resisted(phase, s);
+  if (!out) throw Error(ErrorKind::numerical, unsettled_friction);
+  return *out;
+}
+
+// Coulomb's friction at the axle (and at the floating arm's pin) against the beam's turn, and in
+// the trough against the projectile's slide, takes the forces that carry it; those depend on the
+// accelerations, which depend on the friction: a fixed point, reached in a few rounds for any
+// friction the model holds. The air's drag on the projectile, -mu Cd k |u| u with u its velocity
+// through the air (air.hpp), depends on the state alone. Each enters as its generalized force.
+std::optional<Snapshot> RigidBeamMachine::resisted(Phase phase, const State& s) const {
+  const BuiltParts& parts = design_.parts;
+  const double l = design_.l, sling = l * design_.l4, th = s.theta, turn = (s.theta_dot > 0) - (s.theta_dot < 0);
+  const Path path = pivot_path(th);
+  const Vec2 p_th{path.slope + l * std::cos(th), l * std::sin(th)}, p_phi{sling * std::sin(s.phi), -sling * std::cos(s.phi)};
+  const double k = phase == Phase::trough ? path.slope + l * (std::cos(th) + std::sin(th) * std::tan(s.phi)) : 0;  // dp_x/dtheta in the trough
+  const Vec2 v = phase == Phase::released ? Vec2{} : Vec2{p_th.x * s.theta_dot + p_phi.x * s.phi_dot, p_th.y * s.theta_dot + p_phi.y * s.phi_dot};
+  Vec2 drag{};
+  if (parts.drag && phase != Phase::released) {
+    const Vec2 u{v.x + parts.drag->wind, v.y};  // the air moves toward -x (air.hpp)
+    const double speed = std::hypot(u.x, u.y), factor = -design_.mu * parts.drag->coefficient_at(speed) * parts.drag->per_length * speed;
+    drag = {factor * u.x, factor * u.y};
+  }
+  const Generalized air = phase == Phase::trough ? Generalized{drag.x * k, 0}
+                                                 : Generalized{drag.x * p_th.x + drag.y * p_th.y, drag.x * p_phi.x + drag.y * p_phi.y};
+  const double slide = (v.x > 0) - (v.x < 0);
+  std::array<double, 3> a = accelerations_of(phase, s, air);
+  double friction = 0;  // the trough's on the projectile, along x
+  for (int round = 0; round < 60; ++round) {
+    Snapshot snap = snapshot_with(phase, s, a, drag, friction);
+    const double axle = parts.axle_friction * std::hypot(snap.pivot_reaction.x, snap.pivot_reaction.y);
+    const double pin = counterweight_turns() ? 0 : parts.hinge_friction * std::hypot(snap.hinge_force.x, snap.hinge_force.y);
+    const double trough = phase == Phase::trough ? -parts.trough_friction * std::max(snap.normal_force, 0.0) * slide : 0;
+    Generalized q = air;
+    q.theta += trough * k - (axle + pin) * turn;
+    const std::array<double, 3> next = accelerations_of(phase, s, q);
+    const bool settled = std::abs(next[0] - a[0]) <= 1e-14 * (1 + std::abs(a[0])) && std::abs(next[2] - a[2]) <= 1e-14 * (1 + std::abs(a[2])) &&
+        std::abs(trough - friction) <= 1e-14 * (1 + std::abs(friction));
+    a = next, friction = trough;
+    if (settled) {
+      snap = snapshot_with(phase, s, a, drag, friction);
+      snap.loss_power[axle_loss] = axle * std::abs(s.theta_dot);
+      snap.loss_power[hinge_loss] = pin * std::abs(s.theta_dot);
+      snap.loss_power[trough_loss] = std::abs(friction * v.x);
+      snap.loss_power[projectile_drag_loss] = -(drag.x * v.x + drag.y * v.y);
+      if (design_.short_section()) snap.beam_moment -= pin * turn;  // the pin's friction holds the short section back
+      return snap;
+    }
+  }
+  return std::nullopt;
+}
+
+Snapshot RigidBeamMachine::snapshot_with(Phase phase, const State& s, const std::array<double, 3>& a, Vec2 drag, double friction) const {
   const ScaledDesign& e = design_;
   const double l = e.l, l4 = e.l4, mu = e.mu, th = s.theta, th_d = s.theta_dot, st = std::sin(th), ct = std::cos(th);
-  const auto a = accelerations_of(phase, s);
   const Path path = pivot_path(th);
   const Vec2 pivot{path.x, 0}, pivot_acceleration{path.slope * a[0] + path.curve * th_d * th_d, 0};
   Snapshot out;
@@ -110,10 +173,12 @@ Snapshot RigidBeamMachine::snapshot(Phase phase, const State& given) const {
     out.projectile_velocity = {(path.slope + l * ct) * th_d + sling * sp * phi_d, l * st * th_d - sling * cp * phi_d};
     const Vec2 p_dd{pivot_acceleration.x + l * along.x + sling * (sp * a[2] + cp * phi_d * phi_d),
                     l * along.y + sling * (-cp * a[2] + sp * phi_d * phi_d)};
-    // The sling pulls the projectile toward the tip along u = (cos phi, sin phi); in the trough
-    // the trough's normal force holds its height.
-    out.sling_tension = phase == Phase::trough ? mu * p_dd.x / cp : mu * (p_dd.x * cp + p_dd.y * sp + sp);
-    out.normal_force = phase == Phase::trough ? mu - out.sling_tension * sp : 0;
+    // The sling pulls the projectile toward the tip along u = (cos phi, sin phi), beside its
+    // weight, the air and, in the trough, the trough's friction and its normal force, which
+    // holds the projectile's height.
+    out.sling_tension = phase == Phase::trough ? (mu * p_dd.x - friction - drag.x) / cp
+                                               : mu * (p_dd.x * cp + p_dd.y * sp + sp) - drag.x * cp - drag.y * sp;
+    out.normal_force = phase == Phase::trough ? mu - out.sling_tension * sp - drag.y : 0;
     out.sling_on_tip = {-out.sling_tension * cp, -out.sling_tension * sp};
     // The tip moves along (cos th, sin th) as theta grows; the sling pulls against that.
     out.sling_perpendicular = -(out.sling_on_tip.x * ct + out.sling_on_tip.y * st);

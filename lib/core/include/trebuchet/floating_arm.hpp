@@ -31,6 +31,7 @@ class FloatingArm final : public RigidBeamMachine {
   Rail rail_;
   double hanger_;  // L: the counterweight's centre below its pin (L2)
   Path pivot_path(double theta) const override;
+  bool counterweight_turns() const override { return false; }
   Share counterweight_share(double theta) const override;
   double counterweight_forces(Snapshot& out, const State& state, double theta_ddot, Vec2 pivot, Vec2 need, double base) const override;
 };

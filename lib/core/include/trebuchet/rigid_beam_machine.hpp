@@ -6,10 +6,13 @@
 // follows the beam (psi'' = theta''), phi is the sling's angle. A machine gives the pivot's path
 // a(theta) (it stays at the height of the frame's pivot), the counterweight's share of the
 // body's inertia and its forces; the equations of the three phases follow here from the
-// Lagrangian (docs/machines.md, "The equations").
+// Lagrangian (docs/machines.md, "The equations"). The engine as built adds the axle's friction,
+// the floating arm's pin's, the trough's and the air on the projectile before the release, as
+// generalized forces (docs/machines.md, "Friction and air").
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include "trebuchet/design.hpp"
 #include "trebuchet/machine.hpp"
@@ -24,12 +27,17 @@ class RigidBeamMachine : public Machine {
   double complete_trough_state(State& state) const override;
   Snapshot snapshot(Phase phase, const State& state) const override;
   bool accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power = nullptr) const override;
-  bool dissipates() const override { return false; }
+  bool dissipates() const override { return design_.parts.dissipates(); }
 
  protected:
-  /// `design` built as `kind`, which the user knows as `name`; friction and drag before the
-  /// release are refused (Error(usage)), a propped counterweight is not this machine's (psi_i = 0).
+  /// `design` built as `kind`, which the user knows as `name`; the sling's rope drag is refused
+  /// (Error(usage)), a propped counterweight is not this machine's (psi_i = 0).
   RigidBeamMachine(const ScaledDesign& design, MachineKind kind, const char* name);
+
+  /// Whether the counterweight turns with the beam (the fixed one) or keeps its attitude (the
+  /// floating arm's, in its guide): psi follows theta, or stays 0. Its pin's friction, if it has
+  /// a pin, acts on the beam's turn relative to it.
+  virtual bool counterweight_turns() const = 0;
 
   /// The pivot's position along x and its first two derivatives in theta, scaled (L2).
   struct Path {
@@ -60,7 +68,17 @@ class RigidBeamMachine : public Machine {
   double weight_;  // G = lever - mu_b c: the body's potential is G cos(theta), scaled (M g L2)
   /// The body's inertia J(theta) about theta (beam and counterweight) and dJ/dtheta.
   Share body_inertia(double theta) const;
-  std::array<double, 3> accelerations_of(Phase phase, const State& state) const;
+  /// Generalized forces on theta and phi (M g L2) besides gravity's.
+  struct Generalized {
+    double theta = 0, phi = 0;
+  };
+  std::array<double, 3> accelerations_of(Phase phase, const State& state, Generalized extra) const;
+  /// The snapshot of a state whose accelerations are `a`, with the air's force on the projectile
+  /// `drag` and the trough's friction `friction` (along x), scaled.
+  Snapshot snapshot_with(Phase phase, const State& state, const std::array<double, 3>& a, Vec2 drag, double friction) const;
+  /// The accelerations with the losses, settled by fixed-point iteration on the forces they
+  /// depend on, and the snapshot there with each loss's power; none where they do not settle.
+  std::optional<Snapshot> resisted(Phase phase, const State& state) const;
 };
 
 }  // namespace trebuchet
