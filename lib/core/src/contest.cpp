@@ -50,6 +50,7 @@ struct Search {
   int shots = 0;
   std::optional<ContestEngine> best;  // the best that meets the limits
   double least_violation = 1e300;
+  bool until_feasible = false;  // whether any engine meets the limits is all that is asked
 
   Shape shape_of(const std::vector<double>& x) const {
     Shape s{std::exp(x[0]), std::exp(x[1]), std::max(std::exp(x[2]), mu_least), std::exp(x[3]), 0};
@@ -65,6 +66,7 @@ struct Search {
   // Minus the objective of a candidate that meets the limits; how far it misses them otherwise
   // (above every one that meets them); a candidate that cannot be built or shot, more still.
   double cost(const Shape& s) {
+    if (until_feasible && best) return -1e300;  // answered: the simplex, all alike, shrinks to its end
     ++shots;
     if (!(s.l > 1.05 && s.l < 60 && s.l4 > 0.05 && s.l4 < 20 && s.mu < 1 && s.L2 > 1e-3 && s.L2 < 1e3 && s.L < 20)) return 1e6;
     try {
@@ -117,15 +119,16 @@ struct Search {
   }
 };
 
-Search search_from(const ContestRequest& r, const Shape& start) {
+Search search_from(const ContestRequest& r, const Shape& start, bool until_feasible = false) {
   Search search;
   search.request = &r;
+  search.until_feasible = until_feasible;
   search.hinged = r.machine == MachineKind::hinged;
   if (r.limits[mass_limit]) search.mu_least = r.projectile_mass / *r.limits[mass_limit];
   Shape first = start;
   first.mu = std::max(first.mu, search.mu_least);
   minimize_simplex([&](const std::vector<double>& x) { return search.cost(search.shape_of(x)); }, search.point_of(first), 0.25, 1e-5, 500);
-  search.push_size();
+  if (!until_feasible) search.push_size();
   return search;
 }
 
@@ -146,13 +149,39 @@ Search better(Search a, Search b) {
   return b.best->objective > a.best->objective ? b : a;
 }
 
-// The best of the searches from each start, and from `warm` first when given.
-Search search_all(const ContestRequest& r, const std::optional<Shape>& warm = std::nullopt) {
+// The best of the searches from each start, and from `warm` first when given; with
+// `until_feasible`, the first engine found that meets the limits.
+Search search_all(const ContestRequest& r, const std::optional<Shape>& warm = std::nullopt, bool until_feasible = false) {
   Search found;
   found.request = &r;
-  if (warm) found = search_from(r, *warm);
-  for (const Shape& start : starts_of(r)) found = better(found, search_from(r, start));
+  if (warm) found = search_from(r, *warm, until_feasible);
+  for (const Shape& start : starts_of(r)) {
+    if (until_feasible && found.best) break;
+    found = better(found, search_from(r, start, until_feasible));
+  }
   return found;
+}
+
+// The fewest of the request's limits that no search meets together; the whole set without a
+// search when `whole_fails` says it is already known to fail.
+std::vector<ContestLimit> fewest_conflicting(const ContestRequest& request, bool whole_fails) {
+  std::vector<ContestLimit> given;
+  for (int k = 0; k < contest_limit_count; ++k)
+    if (request.limits[k]) given.push_back(static_cast<ContestLimit>(k));
+  // The subsets by size, the smallest first: the first that no search meets.
+  for (std::size_t size = 1; size <= given.size(); ++size) {
+    if (size == given.size() && whole_fails) return given;
+    for (unsigned mask = 0; mask < (1u << given.size()); ++mask) {
+      if (static_cast<std::size_t>(__builtin_popcount(mask)) != size) continue;
+      ContestRequest some = request;
+      some.limits = {};
+      std::vector<ContestLimit> chosen;
+      for (std::size_t i = 0; i < given.size(); ++i)
+        if (mask & (1u << i)) some.limits[given[i]] = request.limits[given[i]], chosen.push_back(given[i]);
+      if (!search_all(some, std::nullopt, true).best) return chosen;
+    }
+  }
+  return {};
 }
 
 Shape shape_of_engine(const Engine& e) {
@@ -206,7 +235,7 @@ ContestEngine contest_optimum(const ContestRequest& request) {
   check_request(request);
   const Search search = search_all(request);
   if (!search.best) {
-    const std::vector<ContestLimit> conflict = conflicting_limits(request);
+    const std::vector<ContestLimit> conflict = fewest_conflicting(request, true);
     std::string names;
     for (ContestLimit k : conflict) names += (names.empty() ? "" : " and ") + std::string("{{") + limit_keys[k] + "}}";
     throw Error(ErrorKind::out_of_range,
@@ -219,23 +248,7 @@ ContestEngine contest_optimum(const ContestRequest& request) {
   return best;
 }
 
-std::vector<ContestLimit> conflicting_limits(const ContestRequest& request) {
-  std::vector<ContestLimit> given;
-  for (int k = 0; k < contest_limit_count; ++k)
-    if (request.limits[k]) given.push_back(static_cast<ContestLimit>(k));
-  // The subsets by size, the smallest first: the first that no search meets.
-  for (std::size_t size = 1; size <= given.size(); ++size)
-    for (unsigned mask = 0; mask < (1u << given.size()); ++mask) {
-      if (static_cast<std::size_t>(__builtin_popcount(mask)) != size) continue;
-      ContestRequest some = request;
-      some.limits = {};
-      std::vector<ContestLimit> chosen;
-      for (std::size_t i = 0; i < given.size(); ++i)
-        if (mask & (1u << i)) some.limits[given[i]] = request.limits[given[i]], chosen.push_back(given[i]);
-      if (!search_all(some).best) return chosen;
-    }
-  return {};
-}
+std::vector<ContestLimit> conflicting_limits(const ContestRequest& request) { return fewest_conflicting(request, false); }
 
 std::vector<ContestEngine> pareto_front(const ContestRequest& request, int points) {
   check_request(request);
