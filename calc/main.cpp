@@ -85,12 +85,14 @@ int run(const Options& options, bool format_given, bool F_given) {
   const MachineKind machine = options.machine.empty() ? MachineKind::hinged : parse_machine(options.machine, "--machine");
   if (!options.machine.empty() && !options.table_file.empty())
     throw Error(ErrorKind::usage, "--table: a table names its own machine (its key \"machine\"); drop --machine");
-  if (machine != MachineKind::hinged && F_given)
-    throw Error(ErrorKind::usage, "--F: the " + machine_name(machine) + " machine's table holds the counterweight at the short arm's end; drop --F");
+
   if (machine != MachineKind::hinged && !options.spreadsheet.empty())
     throw Error(ErrorKind::usage, "--spreadsheet writes the paper's engine's calculator (tab:CPNC); drop --machine");
   const ScalingTable table_from_file = options.table_file.empty() ? ScalingTable{} : load_scaling_table(options.table_file);
   const ScalingTable& table = options.table_file.empty() ? builtin_scaling_table(machine) : table_from_file;
+  if (table.machine != MachineKind::hinged && F_given)
+    throw Error(ErrorKind::usage,
+                "--F: the " + machine_name(table.machine) + " machine's table holds the counterweight at the short arm's end; drop --F");
 
   DesignRequest request;
   request.theta_i_deg = parse_theta(options.theta, "--theta");

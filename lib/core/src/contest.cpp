@@ -39,7 +39,7 @@ Engine engine_of_shape(const ContestRequest& r, const Shape& s) {
 double violation(const std::array<double, contest_limit_count>& measured, const ContestLimits& limits) {
   double sum = 0;
   for (int k = 0; k < contest_limit_count; ++k)
-    if (limits[k]) sum += std::max(0.0, measured[k] / *limits[k] - 1);
+    if (limits[k]) sum += std::max(0.0, measured[k] / *limits[k] - 1 - 1e-12);  // M = m/(m/M) may round a part in 1e16 above its limit
   return sum;
 }
 
@@ -49,7 +49,7 @@ struct Search {
   bool hinged = false;
   int shots = 0;
   std::optional<ContestEngine> best;  // the best that meets the limits
-  double least_violation = 1e300;
+  std::string last_failure;  // why the last candidate that could not be shot failed
   bool until_feasible = false;  // whether any engine meets the limits is all that is asked
 
   Shape shape_of(const std::vector<double>& x) const {
@@ -74,16 +74,17 @@ struct Search {
       c.engine = engine_of_shape(*request, s);
       c.measured = contest_measures(c.engine, request->settings, &c.verification);
       c.objective = request->efficiency ? c.verification.eps : c.verification.capacity.R;
-      if (!c.verification.warnings.empty()) return 1e5;  // the model stops holding before the release: no engine
+      if (!c.verification.warnings.empty()) {  // the model stops holding before the release: no engine
+        last_failure = c.verification.warnings.front();
+        return 1e5;
+      }
       const double missed = violation(c.measured, request->limits);
       c.feasible = missed == 0;
-      if (!c.feasible) {
-        least_violation = std::min(least_violation, missed);
-        return missed;
-      }
+      if (!c.feasible) return missed;
       if (!best || c.objective > best->objective) best = c;
       return -c.objective;
-    } catch (const Error&) {
+    } catch (const Error& e) {
+      last_failure = e.named_message();
       return 1e6;
     }
   }
@@ -236,12 +237,16 @@ ContestEngine contest_optimum(const ContestRequest& request) {
   const Search search = search_all(request);
   if (!search.best) {
     const std::vector<ContestLimit> conflict = fewest_conflicting(request, true);
+    if (conflict.empty())
+      throw Error(ErrorKind::out_of_range,
+                  "no engine the search tried could be built and shot" +
+                      (search.last_failure.empty() ? std::string() : " (the last: " + search.last_failure + ")") +
+                      "; give a projectile, beam and angle of ordinary size, or limits that allow one");
     std::string names;
     for (ContestLimit k : conflict) names += (names.empty() ? "" : " and ") + std::string("{{") + limit_keys[k] + "}}";
     throw Error(ErrorKind::out_of_range,
                 "no engine found meets " + names +
-                    (conflict.size() > 1 ? " together, though it meets any fewer of them; loosen one of them"
-                                         : "; loosen it (the search met every other limit)"));
+                    (conflict.size() > 1 ? " together, though it meets any fewer of them; loosen one of them" : "; loosen it"));
   }
   ContestEngine best = *search.best;
   best.shots = search.shots;

@@ -23,7 +23,11 @@ double checked_hanger(const ScaledDesign& design, FloatingArm::Rail rail) {
 }  // namespace
 
 FloatingArm::FloatingArm(const ScaledDesign& design, Rail rail)
-    : RigidBeamMachine(design, MachineKind::floating_arm, "floating arm"), rail_(rail), hanger_(checked_hanger(design, rail)) {}
+    : RigidBeamMachine(design, MachineKind::floating_arm, "floating arm"), rail_(rail), hanger_(checked_hanger(design, rail)) {
+  if (design.parts.counterweight_inertia > 0)
+    throw Error(ErrorKind::usage,
+                "the floating arm's counterweight does not turn in its guide: its own inertia does not enter; leave out {{counterweight_inertia}}");
+}
 
 // Rolling, the pin stays on the guide's line: pivot - (sin th, -cos th) has x = 0. Locked, with
 // no guide, lengths are measured from the pivot, as the fixed machine's.

@@ -13,8 +13,9 @@ namespace trebuchet {
 class FixedCounterweight final : public RigidBeamMachine {
  public:
   /// `design`'s l, l4, L, mu, mu_b, theta_i and its beam (the uniform rod, or as built), and the
-  /// counterweight's own inertia (parts.counterweight_inertia). Error(usage) for friction or
-  /// drag before the release, Error(numerical) for L < 0 (as machine_of).
+  /// counterweight's own inertia (parts.counterweight_inertia), and the losses as built but a
+  /// hinge pin's (it has none) and the rope's drag: Error(usage) for those, Error(numerical) for
+  /// L < 0 (as machine_of).
   explicit FixedCounterweight(const ScaledDesign& design);
 
  private:

@@ -3,7 +3,7 @@
 // with its centre L3 below the pin, falls in a vertical guide without turning. The guide holds
 // the pin on its line, x = 0, so that the pivot sits at x = sin(theta) and the counterweight
 // falls straight through 1 + cos(theta_i) (in L2), pulling the beam round as the axle rolls
-// toward the target and back. Lengths are measured from the guide's line at the pivot's height:
+// along the rail, L2 sin(theta) behind the guide. Lengths are measured from the guide's line at the pivot's height:
 // the range too, as Trebuchator measures it (its origin is the guide). The sling and its trough
 // are the paper's (rigid_beam_machine.hpp); the counterweight's own inertia does not enter, as
 // it does not turn. Delta U is (1 - mu_b c)(1 + cos theta_i) (ScaledDesign::energy_drop).
@@ -23,7 +23,8 @@ class FloatingArm final : public RigidBeamMachine {
   enum class Rail { rolling, locked };
 
   /// `design`'s l, l4, L (the counterweight's centre below its pin), mu, mu_b, theta_i and its
-  /// beam. Error(usage) for friction or drag before the release, Error(numerical) for L < 0 or,
+  /// beam, and the losses as built but the rope's drag. Error(usage) for that and for the
+  /// counterweight's own inertia (it does not turn), Error(numerical) for L < 0 or,
   /// with the rail locked, L > 0 (the counterweight would swing on its pin: the hinged engine).
   explicit FloatingArm(const ScaledDesign& design, Rail rail = Rail::rolling);
 
