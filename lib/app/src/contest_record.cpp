@@ -17,11 +17,6 @@ const UnitDimension limit_dimensions[contest_limit_count] = {UnitDimension::leng
 
 }  // namespace
 
-const char* contest_limit_key(ContestLimit limit) {
-  static const char* const keys[contest_limit_count] = {"max_width", "max_height", "max_M", "max_axle_load", "max_acceleration"};
-  return keys[limit];
-}
-
 bool binds(const ContestEngine& engine, const ContestRequest& request, ContestLimit limit) {
   const auto& given = request.limits[limit];
   return given && std::abs(engine.measured[limit] / *given - 1) <= 1e-6;

@@ -12,9 +12,6 @@
 namespace trebuchet {
 namespace {
 
-// How messages name each limit ({{key}}: the programs' flag, error.hpp).
-const char* const limit_keys[contest_limit_count] = {"max_width", "max_height", "max_M", "max_axle_load", "max_acceleration"};
-
 // A candidate: L1/L2, L4/L1, m/M, L2 [m] and, for the hinged machine, L3/L2.
 struct Shape {
   double l = 4, l4 = 0.9, mu = 0.02, L2 = 1, L = 0.8;
@@ -201,11 +198,17 @@ void check_request(const ContestRequest& r) {
   for (int k = 0; k < contest_limit_count; ++k)
     if (r.limits[k] && !(*r.limits[k] > 0 && std::isfinite(*r.limits[k])))
       throw Error(ErrorKind::bad_number,
-                  "{{" + std::string(limit_keys[k]) + "}} = " + format_significant(*r.limits[k], 6) + ": a limit must be positive");
+                  "{{" + std::string(contest_limit_key(static_cast<ContestLimit>(k))) + "}} = " + format_significant(*r.limits[k], 6) +
+                      ": a limit must be positive");
   check_shot_settings(r.settings);
 }
 
 }  // namespace
+
+const char* contest_limit_key(ContestLimit limit) {
+  static const char* const keys[contest_limit_count] = {"max_width", "max_height", "max_M", "max_axle_load", "max_acceleration"};
+  return keys[limit];
+}
 
 std::array<double, contest_limit_count> contest_measures(const Engine& engine, const ShotSettings& given, Verification* verification) {
   check_engine(engine);
@@ -243,7 +246,7 @@ ContestEngine contest_optimum(const ContestRequest& request) {
                       (search.last_failure.empty() ? std::string() : " (the last: " + search.last_failure + ")") +
                       "; give a projectile, beam and angle of ordinary size, or limits that allow one");
     std::string names;
-    for (ContestLimit k : conflict) names += (names.empty() ? "" : " and ") + std::string("{{") + limit_keys[k] + "}}";
+    for (ContestLimit k : conflict) names += (names.empty() ? "" : " and ") + std::string("{{") + contest_limit_key(k) + "}}";
     throw Error(ErrorKind::out_of_range,
                 "no engine found meets " + names +
                     (conflict.size() > 1 ? " together, though it meets any fewer of them; loosen one of them" : "; loosen it"));

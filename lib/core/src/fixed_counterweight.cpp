@@ -19,7 +19,7 @@ FixedCounterweight::FixedCounterweight(const ScaledDesign& design)
 
 // The counterweight, mass 1 at 1 + L along the short arm, turns with the beam: its kinetic
 // energy is ((1 + L)^2 + I_c) th'^2/2.
-RigidBeamMachine::Share FixedCounterweight::counterweight_share(double) const {
+RigidBeamMachine::Share FixedCounterweight::counterweight_share(double, const Path&) const {
   return {distance_ * distance_ + design_.parts.counterweight_inertia, 0};
 }
 

@@ -38,8 +38,7 @@ RigidBeamMachine::Path FloatingArm::pivot_path(double th) const {
 
 // The pin, at the pivot less (sin th, -cos th), moves at (a' - cos th, -sin th) th': the
 // counterweight's kinetic energy is ((a' - cos th)^2 + sin^2 th) th'^2/2 (sin^2 th rolling, 1 locked).
-RigidBeamMachine::Share FloatingArm::counterweight_share(double th) const {
-  const Path a = pivot_path(th);
+RigidBeamMachine::Share FloatingArm::counterweight_share(double th, const Path& a) const {
   const double st = std::sin(th), ct = std::cos(th), u = a.slope - ct;
   return {u * u + st * st, 2 * u * (a.curve + st) + 2 * st * ct};
 }
@@ -50,7 +49,7 @@ double FloatingArm::counterweight_forces(Snapshot& out, const State& s, double t
   out.hinge = {pivot.x - st, ct};
   out.counterweight = {out.hinge.x, ct - hanger_};
   out.counterweight_height = out.counterweight.y - base;
-  const Share share = counterweight_share(s.theta);
+  const Share share = counterweight_share(s.theta, a);
   out.energies.counterweight = share.inertia * w2 / 2 + out.counterweight.y;
   const Vec2 acceleration{u * th_dd + (a.curve + st) * w2, -st * th_dd - ct * w2};
   // Rolling, the rail takes no horizontal force: the pin gives the beam what it needs along x,

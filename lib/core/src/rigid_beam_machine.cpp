@@ -18,12 +18,11 @@ RigidBeamMachine::RigidBeamMachine(const ScaledDesign& design, MachineKind kind,
   weight_ = design_.counterweight_lever() - design_.mu_b * design_.beam_cm();
 }
 
-RigidBeamMachine::Share RigidBeamMachine::body_inertia(double th) const {
+RigidBeamMachine::Share RigidBeamMachine::body_inertia(double th, const Path& a) const {
   // The beam's centre c along it moves with the pivot: its speed is (a' + c cos th, c sin th) th',
   // so its kinetic energy is (I + mu_b (a'^2 + 2 a' c cos th)) th'^2/2, I about the pivot.
-  const Path a = pivot_path(th);
   const double mu_b = design_.mu_b, c = design_.beam_cm();
-  const Share cw = counterweight_share(th);
+  const Share cw = counterweight_share(th, a);
   return {design_.beam_inertia() + mu_b * (a.slope * a.slope + 2 * a.slope * c * std::cos(th)) + cw.inertia,
           mu_b * (2 * a.slope * a.curve + 2 * c * (a.curve * std::cos(th) - a.slope * std::sin(th))) + cw.slope};
 }
@@ -40,13 +39,13 @@ RigidBeamMachine::Share RigidBeamMachine::body_inertia(double th) const {
 //   Friction and the air add their generalized forces Q_theta and Q_phi to the right-hand sides.
 std::array<double, 3> RigidBeamMachine::accelerations_of(Phase phase, const State& s, Generalized extra) const {
   const double l = design_.l, l4 = design_.l4, mu = design_.mu, G = weight_, th = s.theta, w2 = s.theta_dot * s.theta_dot;
-  const Share J = body_inertia(th);
+  const Path a = pivot_path(th);
+  const Share J = body_inertia(th, a);
   const double turns = counterweight_turns() ? 1 : 0;  // psi'' = theta'', or 0
   if (phase == Phase::released) {
     const double th_dd = (G * std::sin(th) + extra.theta - J.slope * w2 / 2) / J.inertia;
     return {th_dd, turns * th_dd, 0};
   }
-  const Path a = pivot_path(th);
   if (phase == Phase::trough) {
     const double sin_phi = std::sin(s.phi), cos_phi = std::cos(s.phi), tan_phi = sin_phi / cos_phi;
     const double k = a.slope + l * (std::cos(th) + std::sin(th) * tan_phi);

@@ -21,6 +21,10 @@ inline constexpr int contest_limit_count = 5;
 /// acceleration of the projectile [m/s2].
 using ContestLimits = std::array<std::optional<double>, contest_limit_count>;
 
+/// "max_width", ...: each limit's key, as messages ({{max_width}}, error.hpp), JSON and the
+/// programs' flags (--max-width) name it.
+const char* contest_limit_key(ContestLimit limit);
+
 struct ContestRequest {
   MachineKind machine = MachineKind::hinged;
   double projectile_mass = 0;  ///< m [kg], as the contest gives it

@@ -22,7 +22,7 @@ class FixedCounterweight final : public RigidBeamMachine {
   double distance_;  // of the counterweight's centre from the pivot, 1 + L (L2)
   Path pivot_path(double) const override { return {}; }
   bool counterweight_turns() const override { return true; }
-  Share counterweight_share(double theta) const override;
+  Share counterweight_share(double theta, const Path& pivot) const override;
   double counterweight_forces(Snapshot& out, const State& state, double theta_ddot, Vec2 pivot, Vec2 need, double base) const override;
 };
 

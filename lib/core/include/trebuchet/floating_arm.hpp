@@ -33,7 +33,7 @@ class FloatingArm final : public RigidBeamMachine {
   double hanger_;  // L: the counterweight's centre below its pin (L2)
   Path pivot_path(double theta) const override;
   bool counterweight_turns() const override { return false; }
-  Share counterweight_share(double theta) const override;
+  Share counterweight_share(double theta, const Path& pivot) const override;
   double counterweight_forces(Snapshot& out, const State& state, double theta_ddot, Vec2 pivot, Vec2 need, double base) const override;
 };
 

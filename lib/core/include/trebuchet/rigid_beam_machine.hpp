@@ -50,7 +50,7 @@ class RigidBeamMachine : public Machine {
   struct Share {
     double inertia = 0, slope = 0;
   };
-  virtual Share counterweight_share(double theta) const = 0;
+  virtual Share counterweight_share(double theta, const Path& pivot) const = 0;
 
   /// Fills the counterweight's place (out.hinge, out.counterweight, out.counterweight_height
   /// with `base` the pivot's height over the engine's base), its energy and the force of the
@@ -67,7 +67,7 @@ class RigidBeamMachine : public Machine {
  private:
   double weight_;  // G = lever - mu_b c: the body's potential is G cos(theta), scaled (M g L2)
   /// The body's inertia J(theta) about theta (beam and counterweight) and dJ/dtheta.
-  Share body_inertia(double theta) const;
+  Share body_inertia(double theta, const Path& pivot) const;
   /// Generalized forces on theta and phi (M g L2) besides gravity's.
   struct Generalized {
     double theta = 0, phi = 0;

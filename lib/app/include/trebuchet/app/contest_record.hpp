@@ -13,9 +13,6 @@
 
 namespace trebuchet {
 
-/// "max_width", ...: each limit's key, as JSON and the programs' flags (--max-width) name it.
-const char* contest_limit_key(ContestLimit limit);
-
 /// A limit binds where the engine's measure is within 1e-6 of it.
 bool binds(const ContestEngine& engine, const ContestRequest& request, ContestLimit limit);
 
