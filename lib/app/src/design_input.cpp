@@ -189,9 +189,20 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   if ((v.mb && !v.D_tip && !v.D_hinge) || (!v.mb && !v.D && !v.D_tip && !v.D_hinge))
     e.mb = required(v, &V::mb, where, "the beam mass",
                     where.empty() ? ", or the beam's diameter {{D}}, from which it follows" : ", or \"D\", the beam's diameter");
-  e.theta_i_deg = v.theta_i_deg.value_or(standard_theta_i_deg);
-  e.psi_i_deg = v.psi_i_deg.value_or(0);
   e.machine = v.machine.value_or(MachineKind::hinged);
+  const bool whipper = e.machine == MachineKind::whipper;
+  e.theta_i_deg = v.theta_i_deg.value_or(whipper ? whipper_theta_i_deg : standard_theta_i_deg);
+  e.psi_i_deg = v.psi_i_deg.value_or(0);
+  if (whipper) {  // its frame and where its bodies rest (whipper.hpp)
+    e.whipper.H = required(v, &V::H, where, "the whipper's pivot height over the base (its frame)");
+    e.whipper.rope_angle_deg = v.rope_angle_deg.value_or(e.whipper.rope_angle_deg);
+    e.whipper.projectile_diameter = v.projectile_diameter;
+  } else {
+    for (const auto member : {&V::rope_angle_deg, &V::projectile_diameter})
+      if (v.*member)
+        throw Error(ErrorKind::usage, engine_key_name(where, field_of(member).key) +
+                                          " is the whipper's start; leave it out, or give the machine as whipper (docs/machines.md)");
+  }
   // D = 0 is how the outputs write "not given" (they read back); below 0 it is a mistake.
   if (v.D && !(*v.D >= 0))
     throw Error(ErrorKind::bad_number,
@@ -209,7 +220,7 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
       throw Error(ErrorKind::bad_number,
                   engine_key_name(where, "F") + " = " + format_significant(*F, 6) +
                       ": the counterweight arm fraction (L2 + L3)/H must be positive; the paper's are 1, 2/3 and 1/2");
-    e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, *F);
+    e.L3 = whipper ? *F * e.whipper.H - e.L2 : counterweight_arm(e.L1, e.L2, e.theta_i_deg, *F);
     const bool at_arm_end = e.machine != MachineKind::hinged && std::abs(e.L3) <= 1e-12 * e.L2;  // F = L2/H, within its rounding
     if (at_arm_end) e.L3 = 0;
     if (e.theta_i_deg > 0 && e.theta_i_deg < 90 && e.L1 > 0 && e.L2 > 0 && !(e.L3 > 0) && !at_arm_end)
@@ -220,6 +231,11 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   } else {
     throw Error(ErrorKind::usage, named + ": give the counterweight arm L3 in metres, or the fraction F = (L2 + L3)/H, e.g. F = 2/3");
   }
+  // The others' pivot height is L1 cos(theta_i): a given one, as the programs write it (6 digits
+  // in CSV), must agree with it.
+  if (!whipper && v.H && e.L1 > 0 && e.theta_i_deg > 0 && e.theta_i_deg < 90 && !(std::abs(*v.H - pivot_height(e)) <= 1e-4 * pivot_height(e)))
+    throw Error(ErrorKind::usage, engine_key_name(where, "H") + " = " + format_significant(*v.H, 6) + " m, but this machine's pivot height is L1 cos(theta_i) = " +
+                                      format_significant(pivot_height(e), 6) + " m; leave out H (only the whipper's frame is given)");
   e.material = material_of(v, e.material);  // eq:kMkD's where not given
   const Material& material = e.material;
   engine_parts(v, where, in);

@@ -12,8 +12,8 @@ namespace {
 constexpr std::array<std::pair<Release, std::string_view>, 3> release_names = {
     {{Release::quality, "Q"}, {Release::efficiency, "eps"}, {Release::range, "range"}}};
 
-constexpr std::array<std::pair<MachineKind, std::string_view>, 3> machine_table = {
-    {{MachineKind::hinged, "hinged"}, {MachineKind::fixed, "fixed"}, {MachineKind::floating_arm, "floating-arm"}}};
+constexpr std::array<std::pair<MachineKind, std::string_view>, 4> machine_table = {
+    {{MachineKind::hinged, "hinged"}, {MachineKind::fixed, "fixed"}, {MachineKind::floating_arm, "floating-arm"}, {MachineKind::whipper, "whipper"}}};
 
 constexpr std::array<std::pair<Stepper, std::string_view>, 11> stepper_table = {{{Stepper::rk2, "rk2"},
                                                                                  {Stepper::rk4, "rk4"},
@@ -60,17 +60,16 @@ Release parse_release(std::string_view name, std::string_view option) {
 std::string machine_name(MachineKind machine) { return name_in(machine_table, machine); }
 
 std::string machine_words(MachineKind machine) {
+  if (machine == MachineKind::whipper) return "whipper";
   return machine == MachineKind::hinged ? "engine" : machine_name(machine) + (machine == MachineKind::fixed ? "-counterweight engine" : " engine");
 }
 
-std::string machine_names() { return "hinged, fixed or floating-arm"; }
+std::string machine_names() { return "hinged, fixed, floating-arm or whipper"; }
 
 MachineKind parse_machine(std::string_view name, std::string_view option) {
   if (const MachineKind* machine = value_in(machine_table, name)) return *machine;
   if (name == "floating_arm") return MachineKind::floating_arm;
-  throw Error(ErrorKind::usage,
-              std::string(option) + ": '" + std::string(name) + "' is not a machine" + (name == "whipper" ? " built yet (docs/machines.md)" : "") +
-                  "; use " + machine_names());
+  throw Error(ErrorKind::usage, std::string(option) + ": '" + std::string(name) + "' is not a machine; use " + machine_names());
 }
 
 UnitSystem parse_unit_system(std::string_view name, std::string_view option) {

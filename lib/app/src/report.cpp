@@ -107,9 +107,20 @@ std::string machine_title(MachineKind machine) {
   switch (machine) {
     case MachineKind::fixed: return " (fixed counterweight, its centre L3 beyond the short arm's end)";
     case MachineKind::floating_arm: return " (floating arm, its counterweight L3 below its pin; lengths along the ground from the guide's line)";
+    case MachineKind::whipper: return " (whipper: started with its long arm forward and up, the counterweight and the projectile resting on it)";
     case MachineKind::hinged: break;
   }
   return "";
+}
+
+// The whipper's start in words, after its theta_i; empty for the others.
+std::string whipper_start(const Engine& engine, UnitSystem units) {
+  if (engine.machine != MachineKind::whipper) return "";
+  const Engine::WhipperStart& w = engine.whipper;
+  return " (the long arm " + format_significant(-90 - engine.theta_i_deg, 4) + " deg above the horizontal, forward; the rope " +
+      format_significant(w.rope_angle_deg, 4) + " deg off it" +
+      (w.projectile_diameter ? "; the ball " + quantity_text(*w.projectile_diameter, UnitDimension::length, units, 4) + " across" : std::string()) +
+      ")";
 }
 
 // The parts of an engine as built, a line of the report; empty for the paper's ideal engine.
@@ -209,8 +220,8 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
   const bool floating = engine.machine == MachineKind::floating_arm;
   const char* origin = floating ? " the guide's line" : " the pivot";  // where lengths along the ground start
   out << "engine simulated" << machine_title(engine.machine) << ":\n"
-      << engine_table(engine, units) << "  theta_i = " << sig(engine.theta_i_deg, 4)
-      << " deg, arm fraction (L2 + L3)/H = " << sig(arm_fraction(engine), 4)
+      << engine_table(engine, units) << "  theta_i = " << sig(engine.theta_i_deg, 4) << " deg" << whipper_start(engine, units)
+      << ", arm fraction (L2 + L3)/H = " << sig(arm_fraction(engine), 4)
       << (engine.psi_i_deg != 0 ? ", counterweight propped at psi_i = " + sig(engine.psi_i_deg, 4) + " deg" : std::string()) << "\n"
       << describe_parts(engine, units) << "assumptions: " << describe_assumptions(engine, settings) << "\n"
       << "R = " << q(v.capacity.R, UnitDimension::length, 5) << "   T = " << q(v.capacity.T, UnitDimension::energy, 5) << "   "
@@ -223,7 +234,10 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
       << "release: v = " << q(v.v, UnitDimension::speed) << ", h = " << q(v.h, UnitDimension::length) << ", "
       << q(std::abs(v.x), UnitDimension::length) << (v.x < 0 ? " behind" : " ahead of") << origin << " (x = " << sig(v.x, 4)
       << " m), A = " << sig(v.A_deg, 4) << " deg, pin angle " << sig(v.pin_angle_deg, 4) << " deg\n"
-      << "times: lift-off " << sig(v.t_liftoff, 4) << " s, release " << sig(v.t_release, 4) << " s\n"
+      << "times: "
+      << (v.t_counterweight_free ? "the counterweight leaves the arm " + sig(*v.t_counterweight_free, 4) + " s, the projectile "
+                                 : std::string("lift-off "))
+      << sig(v.t_liftoff, 4) << " s, release " << sig(v.t_release, 4) << " s\n"
       << "forces of eq:F: F_S_perp = " << q(v.FS_perp, UnitDimension::force) << " = " << sig(v.FS_perp_mg, 4)
       << " m·g, F_R = " << q(v.FR, UnitDimension::force) << " = " << sig(v.FR_Mg, 4) << " M·g, dF_Rh = " << q(v.dFRh, UnitDimension::force) << " = "
       << sig(v.dFRh_Mg, 4) << " M·g\n";

@@ -39,6 +39,8 @@ namespace {
 
 // The pin angle at the release (verification.hpp), apart from the input pin_angle_deg that sets one.
 constexpr const char* pin_angle_column = "pin_angle_at_release_deg";
+// The whipper's own time, in its JSON record beside t_liftoff (when its projectile leaves the arm) [s].
+constexpr const char* counterweight_free_key = "t_counterweight_free";
 
 // The inputs that set a release (FieldGroup::release), in the table's order.
 std::vector<const InputField*> release_fields() {
@@ -157,6 +159,7 @@ std::vector<std::string> verification_output_names() {
   std::vector<std::string> names = verification_csv_header();
   for (const Field& field : verification_fields(Verification{})) names.push_back(field.key);
   names.push_back(pin_angle_column);
+  names.push_back(counterweight_free_key);
   names.insert(names.end(), {"predicted", "deviation", "tolerance", "against", "engine", "assumptions", "error", "exit_code", "energy"});
   return names;
 }
@@ -171,6 +174,7 @@ nlohmann::ordered_json verification_json(const Verification& v, const std::optio
   for (const Field& field : verification_fields(v)) {
     out[field.key] = field.value;
     if (field.key == std::string("A_deg")) out[pin_angle_column] = v.pin_angle_deg;  // the release's angles together
+    if (field.key == std::string("t_liftoff") && v.t_counterweight_free) out[counterweight_free_key] = *v.t_counterweight_free;  // the whipper's
   }
   const Verification::EnergyBudget& e = v.energy;
   out["energy"] = {{"delta_U", e.delta_U},

@@ -219,7 +219,7 @@ std::array<double, contest_limit_count> contest_measures(const Engine& engine, c
   const ShotResult shot = simulate_shot(d, release_criterion(engine, settings), settings.integrator, &trace, 0.02, nullptr, true);
   const Verification v = verification_of(engine, shot, settings.target_level, settings.air, settings.range_from_release);
   // Heights above the base, which the box stands on; x along the ground.
-  const double base = d.l * std::cos(radians(d.theta_i_deg));
+  const double base = d.pivot_height();
   double x_low = 1e300, x_high = -1e300, y_low = 0, y_high = base, acceleration = 0;
   for (const TracePoint& p : trace) {
     if (p.phase == Phase::released) continue;

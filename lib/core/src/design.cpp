@@ -6,10 +6,14 @@
 
 namespace trebuchet {
 
+double ScaledDesign::pivot_height() const { return H ? *H : l * std::cos(radians(theta_i_deg)); }
+
 double ScaledDesign::L() const {  // eq:Design, section 2
-  const double L = F * l * std::cos(radians(theta_i_deg)) - 1;
+  // F (l cos theta_i), multiplied in the order the paper's engines were always given (bit for bit).
+  const double L = (H ? F * *H : F * l * std::cos(radians(theta_i_deg))) - 1;
   // The other machines' counterweight at the short arm's end, F = 1/(l cos theta_i), within rounding.
-  return machine != MachineKind::hinged && std::abs(L) <= 1e-12 ? 0 : L;
+  const bool at_arm_end = machine == MachineKind::fixed || machine == MachineKind::floating_arm;
+  return at_arm_end && std::abs(L) <= 1e-12 ? 0 : L;
 }
 
 double ScaledDesign::K() const { return (l + 1) / mu_b; }  // eq:kMkD
@@ -28,7 +32,8 @@ double ScaledDesign::counterweight_lever() const { return machine == MachineKind
 
 double ScaledDesign::energy_drop() const {  // eq:DU, and the propped counterweight's extra height
   const double drop = (counterweight_lever() - mu_b * beam_cm()) * (1 + std::cos(radians(theta_i_deg)));
-  return machine == MachineKind::hinged ? drop + L() * (1 - std::cos(radians(psi_i_deg))) : drop;
+  const bool hangs = machine == MachineKind::hinged || machine == MachineKind::whipper;
+  return hangs ? drop + L() * (1 - std::cos(radians(psi_i_deg))) : drop;
 }
 
 }  // namespace trebuchet

@@ -368,6 +368,11 @@ bool Dynamics::accelerations(Phase phase, const State& state, std::array<double,
   return true;
 }
 
+double short_section_moment(const BuiltParts::Section& section, double theta, Vec2 hinge_force, double theta_ddot) {
+  const double st = std::sin(theta), ct = std::cos(theta);
+  return st * hinge_force.y + ct * hinge_force.x - section.mass * section.cm * st - section.inertia * theta_ddot;
+}
+
 Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   const Coefficients e = coefficients();
   const Trig trig(e, phase, s);
@@ -400,7 +405,7 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   out.hinge = {-st, ct};
   out.counterweight = {-st + e.L * sp, ct - e.L * cp};
   out.tip = {e.l * st, -e.l * ct};
-  const double base = -e.l * cos_theta_i_;
+  const double base = -design_.pivot_height();
   out.counterweight_height = out.counterweight.y - base;
   out.tip_height = out.tip.y - base;
   // The tip moves along (cos th, sin th) as theta grows; the sling pulls against that.
@@ -414,7 +419,7 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   // moment is the one on the short section's side. tests/test_shot.cpp checks the long section's
   // own balance against it. A beam given only as a whole has no known short section: 0.
   if (const auto section = design_.short_section()) {
-    out.beam_moment = st * out.hinge_force.y + ct * out.hinge_force.x + section->mass * -section->cm * st - section->inertia * a.theta;
+    out.beam_moment = short_section_moment(*section, s.theta, out.hinge_force, a.theta);
     if (design_.parts.hinge_friction > 0) out.beam_moment += design_.parts.hinge_friction * norm(f.hinge_force) * sign(pd - td);
   }
 

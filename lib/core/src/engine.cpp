@@ -4,6 +4,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "trebuchet/air.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/angles.hpp"
@@ -57,8 +58,15 @@ double wood_beam_mass(const Engine& e) {
 
 ScaledDesign scaled_design(const Engine& engine) {  // eq:Design
   ScaledDesign out{engine.L1 / engine.L2, engine.L4 / engine.L1, engine.mb / engine.M, engine.m / engine.M,
-                   engine.theta_i_deg,    arm_fraction(engine),  engine.psi_i_deg};
+                   engine.theta_i_deg,    arm_fraction(engine),  engine.psi_i_deg,    {},
+                   MachineKind::hinged,   std::nullopt,          0};
   out.machine = engine.machine;
+  if (engine.machine == MachineKind::whipper) {  // its beam's and rope's start in the angles of dynamics.hpp
+    const Engine::WhipperStart& w = engine.whipper;
+    out.psi_i_deg = engine.theta_i_deg - w.rope_angle_deg;
+    out.H = w.H / engine.L2;
+    out.projectile_radius = w.projectile_diameter.value_or(sphere_diameter(engine.m, Air{}.projectile_density)) / 2 / engine.L2;
+  }
   const EngineParts& p = engine.parts;
   const double L2 = engine.L2, M = engine.M, inertia_unit = M * L2 * L2;  // section 3
   BuiltParts& b = out.parts;
@@ -184,7 +192,7 @@ void check_parts(const Engine& e) {
   if (!(p.counterweight_inertia >= 0))
     throw Error(ErrorKind::bad_number, "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + ": a moment of inertia must not be negative");
   // Its radius of gyration sqrt(I/M) beyond twice the arm: a counterweight that could not swing under the beam.
-  if (e.machine == MachineKind::hinged && !(p.counterweight_inertia <= e.M * 4 * e.L3 * e.L3))
+  if (e.machine != MachineKind::fixed && e.machine != MachineKind::floating_arm && !(p.counterweight_inertia <= e.M * 4 * e.L3 * e.L3))
     throw Error(ErrorKind::bad_number,
                 "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + " kg m^2 gives the counterweight a radius of gyration of " +
                     say(std::sqrt(p.counterweight_inertia / e.M)) + " m, more than twice its arm L3 = " + say(e.L3) +
@@ -196,6 +204,19 @@ void check_parts(const Engine& e) {
   check_ordinary(p.rope_cd, 1e-3, 1e2, "rope_cd", "", "drag coefficient of the rope");
 }
 
+// The whipper's start besides theta_i: a frame of ordinary height, the rope off the arm on its
+// upper side, less than square to it.
+void check_whipper(const Engine::WhipperStart& w) {
+  if (!(w.H > 0))
+    throw Error(ErrorKind::bad_number,
+                "{{H}} = " + format_significant(w.H, 6) + ": the whipper stands on a frame: give its pivot's height above the base, e.g. 5m");
+  check_ordinary(w.H, 1e-6, 1e6, "H", "m", "pivot height");
+  if (!(w.rope_angle_deg >= 0 && w.rope_angle_deg < 90))
+    throw Error(ErrorKind::bad_number, "{{rope_angle_deg}} = " + format_significant(w.rope_angle_deg, 6) +
+                                           ": the counterweight's rope lies off the arm by 0 to below 90 deg, on its upper side; pytrebuchet's is 10");
+  if (w.projectile_diameter) check_ordinary(*w.projectile_diameter, 1e-6, 1e6, "projectile_diameter", "m", "projectile's diameter");
+}
+
 }  // namespace
 
 void check_engine(const Engine& e) {
@@ -203,17 +224,25 @@ void check_engine(const Engine& e) {
     if (!(value > 0))
       throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + format_significant(value, 6) + ": the " + what + " must be positive");
   };
-  if (!(e.theta_i_deg > 0 && e.theta_i_deg < 90))
+  if (e.machine == MachineKind::whipper) {
+    if (!(e.theta_i_deg > -180 && e.theta_i_deg <= -90))
+      throw Error(ErrorKind::bad_number, "{{theta_i_deg}} = " + format_significant(e.theta_i_deg, 6) +
+                                             ": the whipper's long arm starts forward, from level (-90 deg) to below upright (-180 deg): "
+                                             "theta_i = -90 deg less its angle above the horizontal; pytrebuchet's 60 deg is -150");
+  } else if (!(e.theta_i_deg > 0 && e.theta_i_deg < 90)) {
     throw Error(ErrorKind::bad_number,
                 "{{theta_i_deg}} = " + format_significant(e.theta_i_deg, 6) + ": the initial beam angle must lie between 0 and 90 degrees");
+  }
   if (!(std::abs(e.psi_i_deg) < 90))
     throw Error(ErrorKind::bad_number,
                 "{{psi_i_deg}} = " + format_significant(e.psi_i_deg, 6) +
                     ": the initial counterweight angle must lie between -90 and 90 degrees (0: hanging, unpropped)");
   positive(e.L1, "L1", "long beam section");
   positive(e.L2, "L2", "short beam section");
-  const bool hinged = e.machine == MachineKind::hinged;  // the others may set their counterweight's centre at the arm's end
-  if (hinged)
+  // The hinged engine and the whipper hang their counterweight on an arm; the others may set its
+  // centre at the short arm's end.
+  const bool hinged = e.machine == MachineKind::hinged, hangs = hinged || e.machine == MachineKind::whipper;
+  if (hangs)
     positive(e.L3, "L3", "counterweight arm (hinge to counterweight centre)");
   else if (!(e.L3 >= 0))
     throw Error(ErrorKind::bad_number,
@@ -236,7 +265,7 @@ void check_engine(const Engine& e) {
   for (const auto& [value, key, what] :
        {std::tuple{e.L1, "L1", "long beam section"}, {e.L2, "L2", "short beam section"}, {e.L4, "L4", "sling length"}})
     check_ordinary(value, 1e-6, 1e6, key, "m", what);
-  if (hinged || e.L3 > 0) check_ordinary(e.L3, 1e-6, 1e6, "L3", "m", "counterweight arm");
+  if (hangs || e.L3 > 0) check_ordinary(e.L3, 1e-6, 1e6, "L3", "m", "counterweight arm");
   for (const auto& [value, key, what] : {std::tuple{e.M, "M", "counterweight mass"}, {e.m, "m", "projectile mass"}})
     check_ordinary(value, 1e-9, 1e12, key, "kg", what);
   if (e.mb > 0) check_ordinary(e.mb, 1e-9, 1e12, "mb", "kg", "beam mass");
@@ -254,7 +283,8 @@ void check_engine(const Engine& e) {
   };
   proportion(e.L1, "L1", e.L2, "L2");
   proportion(e.L4, "L4", e.L1, "L1");
-  if (hinged || e.L3 > 0) proportion(e.L3, "L3", e.L2, "L2");
+  if (hangs || e.L3 > 0) proportion(e.L3, "L3", e.L2, "L2");
+  if (e.machine == MachineKind::whipper) check_whipper(e.whipper);
   proportion(e.m, "m", e.M, "M");
   if (e.mb > 0) proportion(e.mb, "mb", e.M, "M");
   check_parts(e);
@@ -262,7 +292,9 @@ void check_engine(const Engine& e) {
 
 double beam_length(const Engine& engine) { return engine.L1 + engine.L2; }
 
-double pivot_height(const Engine& engine) { return engine.L1 * std::cos(radians(engine.theta_i_deg)); }
+double pivot_height(const Engine& engine) {
+  return engine.machine == MachineKind::whipper ? engine.whipper.H : engine.L1 * std::cos(radians(engine.theta_i_deg));
+}
 
 double arm_fraction(const Engine& engine) { return (engine.L2 + engine.L3) / pivot_height(engine); }
 

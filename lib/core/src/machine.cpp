@@ -7,6 +7,7 @@
 #include "trebuchet/fixed_counterweight.hpp"
 #include "trebuchet/floating_arm.hpp"
 #include "trebuchet/format.hpp"
+#include "trebuchet/whipper.hpp"
 
 namespace trebuchet {
 
@@ -15,11 +16,14 @@ std::unique_ptr<Machine> machine_of(const ScaledDesign& e) {
   if (e.machine == MachineKind::hinged && !(e.L() > 0))
     refuse("no room for the counterweight arm: L3/L2 = F l cos(theta_i) - 1 = " + format_significant(e.L(), 4) +
            " <= 0 (eq:Design); raise F or l, or lower theta_i");
+  if (e.machine == MachineKind::whipper && !(e.L() > 0))
+    refuse("the whipper's counterweight hangs on a rope: L3/L2 = F H/L2 - 1 = " + format_significant(e.L(), 4) + " <= 0; give {{L3}} > 0");
   std::unique_ptr<Machine> machine;
   switch (e.machine) {
     case MachineKind::hinged: machine = std::make_unique<Dynamics>(e); break;
     case MachineKind::fixed: machine = std::make_unique<FixedCounterweight>(e); break;
     case MachineKind::floating_arm: machine = std::make_unique<FloatingArm>(e); break;
+    case MachineKind::whipper: machine = std::make_unique<Whipper>(e); break;
   }
   const double lever = e.counterweight_lever();
   if (!(lever - e.mu_b * e.beam_cm() > 0))

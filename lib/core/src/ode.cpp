@@ -15,12 +15,13 @@ using Context = PhaseIntegrator::Context;
 std::size_t angles_of(Phase phase) { return phase == Phase::lifted ? 3 : 2; }
 std::size_t dimension_of(const Context& c) { return 2 * angles_of(c.phase) + (c.machine->dissipates() ? loss_count : 0); }
 
-// The full state of an integrated vector: in the trough phi and phi_dot from eq:EOM_I_3.
+// The full state of an integrated vector: in the trough phi and phi_dot from eq:EOM_I_3 (on the
+// whipper's arm, from the arm).
 State state_of(const Context& c, const double y[]) {
   State s;
   if (c.phase != Phase::lifted) {  // (th, psi, th', psi')
     s.theta = y[0], s.psi = y[1], s.theta_dot = y[2], s.psi_dot = y[3];
-    if (c.phase == Phase::trough) c.machine->complete_trough_state(s);
+    if (c.phase == Phase::trough || c.phase == Phase::held) c.machine->complete_trough_state(s);
   } else {
     s.theta = y[0], s.psi = y[1], s.phi = y[2], s.theta_dot = y[3], s.psi_dot = y[4], s.phi_dot = y[5];
   }

@@ -14,7 +14,7 @@
 
 namespace trebuchet {
 
-// Phase I integrates (th, psi, th', psi'); phase II (th, psi, phi, th', psi', phi'); phase III
+// Phase I (and the whipper's phase held) integrates (th, psi, th', psi'); phase II (th, psi, phi, th', psi', phi'); phase III
 // as phase I. An engine that dissipates (BuiltParts::dissipates) appends the work of each loss
 // (LossIndex), whose rates are their powers. Fixed size: no allocation per use.
 using OdeVector = std::array<double, 6 + loss_count>;

@@ -162,7 +162,7 @@ Snapshot RigidBeamMachine::snapshot_with(Phase phase, const State& s, const std:
   out.tip = {pivot.x + l * st, -l * ct};
   // A point at r (sin th, -cos th) of the beam accelerates by the pivot's plus r times this.
   const Vec2 along{ct * a[0] - st * th_d * th_d, st * a[0] + ct * th_d * th_d};
-  const double base = -l * std::cos(theta_i_);  // the engine's base, below the pivot's level
+  const double base = -e.pivot_height();  // the engine's base, below the pivot's level
   out.tip_height = out.tip.y - base;
   const double c = e.beam_cm();
   out.energies.beam = (e.beam_inertia() + e.mu_b * (path.slope * path.slope + 2 * path.slope * c * ct)) * th_d * th_d / 2 - e.mu_b * c * ct;

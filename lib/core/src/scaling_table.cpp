@@ -70,6 +70,7 @@ const ScalingTable& builtin_scaling_table(MachineKind machine) {
     case MachineKind::fixed: return builtin_fixed_table();
     case MachineKind::floating_arm: return builtin_floating_arm_table();
     case MachineKind::hinged: break;
+    case MachineKind::whipper: throw Error(ErrorKind::usage, whipper_has_no_table);
   }
   return builtin_scaling_table();
 }

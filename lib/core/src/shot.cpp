@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
 
 #include "given_release.hpp"
@@ -379,7 +380,7 @@ ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criter
   r.state = s;
   r.position = snap.projectile;
   r.velocity = snap.projectile_velocity;
-  r.height = e.l * std::cos(radians(e.theta_i_deg)) + r.position.y;
+  r.height = e.pivot_height() + r.position.y;
   if (r.velocity.x < 0 && r.height >= 0) r.range = vacuum_range(r.position, r.velocity, r.height, 1);  // toward the target, level 0
   r.energy_at_target = energy_at_target(e.mu, r.velocity, r.height);
   r.efficiency = efficiency(r.energy_at_target, e.energy_drop());
@@ -422,11 +423,12 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   // at nearly every step, and the shot says so rather than spend its step budget.
   PinWatch pins;
   // Counts an accepted step against the budget; whether the axle's friction now holds the beam.
-  auto count_step = [&](const char* phase, const State& s) {
+  // In the whipper's phase held the counterweight does not turn on its pin: nothing to watch.
+  auto count_step = [&](const char* phase, const State& s, bool hinge_turns = true) {
     if (++result.steps > settings.max_steps)
       fail("step budget of " + std::to_string(settings.max_steps) + " steps exceeded in " + phase +
            "; loosen {{rtol}} or choose a higher-order {{stepper}}");
-    if (pins.hinge_holds(e, s))
+    if (hinge_turns && pins.hinge_holds(e, s))
       fail(
           "the hinge pin's friction makes the counterweight stick to the beam and slip, which the model leaves out "
           "(docs/verifier.md, \"Real engines\"); give a smaller {{hinge_friction}} or {{hinge_radius}}");
@@ -434,56 +436,81 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   };
 
   // Phase I: from rest (eq:InitialConditions: phi_i = 0, and psi_i = 0 unless propped) until
-  // the trough's normal force vanishes.
-  PhaseIntegrator trough(dynamics, Phase::trough, settings);
-  Onsets onsets;
-  PhaseRecord phase1(trough, ForceExtremes{}, onsets);
+  // the trough's normal force vanishes. The whipper starts with a phase `held`, until its
+  // counterweight leaves the arm, and its phase I ends where the projectile leaves it.
+  const bool whips = dynamics.first_phase() == Phase::held;
   OdeVector y = {dynamics.theta_i(), radians(e.psi_i_deg), 0, 0, 0, 0};
   double t = 0, h = 1e-3;
-  Snapshot snap = dynamics.snapshot(Phase::trough, trough.state(y));
+  Onsets onsets;
+  Snapshot snap = dynamics.snapshot(dynamics.first_phase(), State{y[0], y[1], 0, 0, 0, 0});
   // A counterweight propped forward can pull the short arm the wrong way: the shot never starts.
-  if (!(snap.theta_ddot > 0))
+  if (!(snap.theta_ddot > 0)) {
+    if (whips)
+      fail("the whipper's beam starts to turn backwards, away from the throw: the weight resting on its arm lies too far behind the pivot; "
+           "lengthen the counterweight's rope {{L3}}, or give the rope a larger angle off the arm ({{rope_angle_deg}})");
     fail("the beam starts to turn away from the throw (the counterweight, propped at psi_i = " + format_significant(e.psi_i_deg, 4) +
          " deg, pulls the short arm backwards); " +
          (e.psi_i_deg > 0 ? std::string("prop it less, or back ({{psi_i_deg}} < 0)") : std::string("hold it back less ({{psi_i_deg}} nearer 0)")));
-  energy0 = snap.energy;
-  phase1.add(trough.step_end(t, y, snap), snap);
-  while (true) {
-    if (!trough.step(t, y.data(), settings.max_time, h))
-      fail(trough.friction_unsettled() ? unsettled_friction : "integrator failure in phase I; tighten {{rtol}} or choose another {{stepper}}");
-    const bool axle_holds = count_step("phase I", trough.state(y));
-    // Friction that stops the beam holds it (Coulomb's law at rest): the engine jams.
-    if (axle_holds || (dynamics.dissipates() && !(y[2] > 0)))
-      fail(
-          "friction stops the beam before the projectile lifts off: the engine jams; give smaller friction coefficients or pin radii "
-          "({{axle_friction}}, {{hinge_friction}}, {{trough_friction}})");
-    if (std::cos(trough.state(y).phi) < abandon_trough_cos_phi)
-      fail("the sling stands vertical in the trough (phi -> 90 deg) before lift-off; lengthen the sling L4 or lighten the projectile m");
-    snap = dynamics.snapshot(Phase::trough, trough.state(y));
-    if (snap.normal_force <= 0) {
-      // Lift-off inside this step: the root of the normal force on the interpolant, then the
-      // state there integrated anew from the step start.
-      const StepEnd& before = phase1.samples().back();
-      const StepEnd after = trough.step_end(t, y, snap);
-      auto normal_at = [&](double time) {
-        return dynamics.snapshot(Phase::trough, trough.state(hermite(before, after, time, trough.angles(), trough.dimension()))).normal_force;
-      };
-      result.t_liftoff = find_root(normal_at, before.t, t, 1e-13, 0);
-      y = trough.at(before.t, before.y, result.t_liftoff);
-      t = result.t_liftoff;
-      snap = dynamics.snapshot(Phase::trough, trough.state(y));
-      phase1.add(trough.step_end(t, y, snap), snap);
-      track_energy(snap, trough.work(y));
-      break;
-    }
-    phase1.add(trough.step_end(t, y, snap), snap);
-    track_energy(snap, trough.work(y));
-    if (y[0] >= M_PI || t >= settings.max_time)
-      fail(
-          "the projectile never lifts off: the trough still carries it when the beam is upright; "
-          "change the sling length L4 or the masses");
   }
-  record_trace(trace, trough, phase1, 0, t, trace_dt);
+  energy0 = snap.energy;
+  // Runs a phase that carries the projectile (and, held, the counterweight) from (t, y) to where
+  // its contact lets go: the root of the contact's value on the interpolant, the state there
+  // integrated anew from the step start. Returns the time.
+  const auto carry = [&](PhaseIntegrator& integrator, PhaseRecord& record) {
+    const Phase phase = integrator.phase();
+    const auto contact = [&](const Snapshot& at) { return phase == Phase::held ? at.counterweight_on_arm : at.normal_force; };
+    snap = dynamics.snapshot(phase, integrator.state(y));
+    record.add(integrator.step_end(t, y, snap), snap);
+    if (!(contact(snap) > 0)) return t;  // it lets go at once
+    while (true) {
+      if (!integrator.step(t, y.data(), settings.max_time, h))
+        fail(integrator.friction_unsettled() ? unsettled_friction
+                                             : "integrator failure in phase I; tighten {{rtol}} or choose another {{stepper}}");
+      const bool axle_holds = count_step("phase I", integrator.state(y), phase != Phase::held);
+      // Friction that stops the beam holds it (Coulomb's law at rest): the engine jams.
+      if (axle_holds || (dynamics.dissipates() && !(y[2] > 0)))
+        fail(std::string("friction stops the beam before the projectile ") + (whips ? "leaves the arm" : "lifts off") +
+             ": the engine jams; give smaller friction coefficients or pin radii ({{axle_friction}}, {{hinge_friction}}, {{trough_friction}})");
+      if (dynamics.trough_cos_phi(y[0]) < abandon_trough_cos_phi)
+        fail("the sling stands vertical in the trough (phi -> 90 deg) before lift-off; lengthen the sling L4 or lighten the projectile m");
+      snap = dynamics.snapshot(phase, integrator.state(y));
+      if (phase == Phase::held && !(snap.normal_force > 0))
+        fail("the whipper's projectile would leave the arm before its counterweight, which the model (pytrebuchet's order) leaves out; "
+             "lengthen the sling {{L4}} or the counterweight's rope {{L3}}");
+      if (!(contact(snap) > 0)) {
+        const StepEnd& before = record.samples().back();
+        const StepEnd after = integrator.step_end(t, y, snap);
+        auto contact_at = [&](double time) {
+          return contact(dynamics.snapshot(phase, integrator.state(hermite(before, after, time, integrator.angles(), integrator.dimension()))));
+        };
+        t = find_root(contact_at, before.t, t, 1e-13, 0);
+        y = integrator.at(before.t, before.y, t);
+        snap = dynamics.snapshot(phase, integrator.state(y));
+        record.add(integrator.step_end(t, y, snap), snap);
+        track_energy(snap, integrator.work(y));
+        return t;
+      }
+      record.add(integrator.step_end(t, y, snap), snap);
+      track_energy(snap, integrator.work(y));
+      if (y[0] >= dynamics.turn_limit(phase) || t >= settings.max_time)
+        fail(phase == Phase::held ? "the whipper's counterweight never leaves the arm; lengthen its rope {{L3}} or change the masses"
+             : whips              ? "the whipper's projectile never leaves the arm; change the sling length {{L4}} or the masses"
+                                  : "the projectile never lifts off: the trough still carries it when the beam is upright; "
+                                    "change the sling length L4 or the masses");
+    }
+  };
+  std::unique_ptr<PhaseIntegrator> held;
+  std::unique_ptr<PhaseRecord> held_record;
+  if (whips) {
+    held = std::make_unique<PhaseIntegrator>(dynamics, Phase::held, settings);
+    held_record = std::make_unique<PhaseRecord>(*held, ForceExtremes{}, onsets);
+    result.t_counterweight_free = carry(*held, *held_record);
+    record_trace(trace, *held, *held_record, 0, t, trace_dt);
+  }
+  PhaseIntegrator trough(dynamics, Phase::trough, settings);
+  PhaseRecord phase1(trough, held_record ? held_record->samples().back().extremes : ForceExtremes{}, onsets);
+  result.t_liftoff = carry(trough, phase1);
+  record_trace(trace, trough, phase1, result.t_counterweight_free.value_or(0), t, trace_dt);
 
   // Phase II from the located lift-off state.
   const State lift = trough.state(y);
@@ -507,11 +534,15 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   std::vector<double> sampled{at_liftoff.objective};
   double best_quality = sampled.front();
   // A given release watches its value from lift-off on; one already past there would release in the trough.
-  const std::optional<GivenRelease>& given = criterion.given;
+  // The whipper's projectile leaves the arm falling forward, and its velocity and pin angles turn
+  // through a whole turn before the release: a given angle is the first one below their value
+  // there, whole turns apart (docs/machines.md, "The whipper").
+  std::optional<GivenRelease> given = criterion.given;
   ReleaseWatch watch;
   bool given_in_trough = false;
   if (given) {
     watch.at_liftoff = watch.lowest = watch.highest = watched_value(given->by, t, lift_snapshot, M_PI / 2);
+    if (whips && given->by != ReleaseBy::time) given->value -= 2 * M_PI * std::ceil((given->value - watch.at_liftoff) / (2 * M_PI));
     watch.add(watch.at_liftoff, at_liftoff.range > 0);
     given_in_trough = !(ahead_of(*given, watch.at_liftoff) > 0);
   }
@@ -536,20 +567,22 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
       watch.add(watched_value(given->by, t, snap, before), here.range > 0);
       if (!given_in_trough && !watch.crossed && !(ahead_of(*given, watch.last) > 0)) watch.crossed = phase2.samples().size() - 1, watch.near = before;
     }
-    // An angle below -180 deg has passed every value it could be given.
-    const bool angle_spent = given && given->by != ReleaseBy::time && watch.last < -M_PI;
-    return s.theta > dynamics.theta_i() + 2 * M_PI || t >= settings.max_time || ((given || dynamics.dissipates()) && !(s.theta_dot > 0)) ||
+    // An angle below -180 deg (the whipper's: a whole turn below the given one) has passed every value it could be given.
+    const bool angle_spent = given && given->by != ReleaseBy::time && watch.last < (whips ? given->value - 2 * M_PI : -M_PI);
+    return s.theta > dynamics.turn_limit(Phase::lifted) || t >= settings.max_time ||
+        ((given || whips || dynamics.dissipates()) && !(s.theta_dot > 0)) ||
         axle_holds || angle_spent;
   };
   // Past the release: the objective has fallen to half its maximum, or two steps past a given
   // release, so that the running extremes of eq:F before it are refined as an optimum's are.
+  // The whipper's projectile first drops off the arm forward, with an objective that peaks near
+  // zero, before the beam whips it round: its optimum is sought over the whole forward swing.
   const auto past_release = [&]() {
     // With `unreleased` asked for, phase II goes on as an optimum's window would (to half the
     // objective's best), so that the pictures show what the given release gave up.
-    if (given)
-      return watch.crossed && phase2.samples().size() > *watch.crossed + 2 &&
-          (!unreleased || (best_quality > 0 && sampled.back() < 0.5 * best_quality));
-    return best_quality > 0 && sampled.back() < 0.5 * best_quality;
+    const bool fallen = !whips && best_quality > 0 && sampled.back() < 0.5 * best_quality;
+    if (given) return watch.crossed && phase2.samples().size() > *watch.crossed + 2 && (!unreleased || fallen);
+    return fallen;
   };
   bool ended = false;  // the shot ended (not merely past the release)
   while (!(ended = step_ends_shot()) && !past_release()) {
@@ -648,19 +681,29 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   result.slack_sling = before_release(onsets[0]);
   result.counterweight_below_base = before_release(onsets[1]);
   result.tip_below_base = before_release(onsets[2]);
-  // The builder's loads: the largest sampled value of each over both phases (phase I ends on
-  // its lift-off sample, phase II on the release), refined once, in its phase.
+  // The builder's loads: the largest sampled value of each over the phases (each before the
+  // release ends on its last sample, phase II on the release), refined once, in its phase.
   const auto at_release = load_values(dynamics.snapshot(Phase::lifted, result.release.state));
   for (int k = 0; k < (find_loads ? load_count : 0); ++k) {
-    const auto trough_points = phase1.load_points(k, result.t_liftoff, phase1.samples().back().loads[k]);
-    const auto lifted_points = phase2.load_points(k, t_release, at_release[k]);
-    const auto highest = [](const std::vector<Point>& points) {
-      return static_cast<std::size_t>(std::max_element(points.begin(), points.end(), [](const Point& a, const Point& b) { return a.f < b.f; }) -
-                                      points.begin());
+    struct PhasePoints {
+      const PhaseRecord* record;
+      std::vector<Point> points;
+      std::size_t top;
     };
-    const std::size_t top_trough = highest(trough_points), top_lifted = highest(lifted_points);
-    result.loads[k] = lifted_points[top_lifted].f > trough_points[top_trough].f ? phase2.refined_load_peak(k, lifted_points, top_lifted)
-                                                                                : phase1.refined_load_peak(k, trough_points, top_trough);
+    std::vector<PhasePoints> phases;
+    const auto add = [&](const PhaseRecord& record, double t_end, double at_end) {
+      std::vector<Point> points = record.load_points(k, t_end, at_end);
+      const auto top = std::max_element(points.begin(), points.end(), [](const Point& a, const Point& b) { return a.f < b.f; });
+      const auto index = static_cast<std::size_t>(top - points.begin());
+      phases.push_back({&record, std::move(points), index});
+    };
+    if (held_record) add(*held_record, *result.t_counterweight_free, held_record->samples().back().loads[k]);
+    add(phase1, result.t_liftoff, phase1.samples().back().loads[k]);
+    add(phase2, t_release, at_release[k]);
+    const PhasePoints* best = &phases.front();
+    for (const PhasePoints& c : phases)
+      if (c.points[c.top].f > best->points[best->top].f) best = &c;
+    result.loads[k] = best->record->refined_load_peak(k, best->points, best->top);
   }
   if (trace) {
     record_trace(trace, lifted, phase2, result.t_liftoff, t_release, trace_dt);

@@ -80,6 +80,7 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   out.force_factor = r.force_factor;
   out.t_release = r.t * time_unit;
   out.t_liftoff = shot.t_liftoff * time_unit;
+  if (shot.t_counterweight_free) out.t_counterweight_free = *shot.t_counterweight_free * time_unit;
   out.FS_perp_mg = r.extremes.max[sling_perpendicular] / (engine.m / engine.M);
   out.FR_Mg = r.extremes.max[pivot_reaction];
   out.dFRh_Mg = r.extremes.max[pivot_horizontal] + r.extremes.max[pivot_horizontal_negated];

@@ -50,8 +50,10 @@ struct BuiltParts {
 /// counterweight bolts it to the short arm, its centre L3 beyond the arm's end, turning with the
 /// beam (Trebuchator's "fixed": its hanger is more short arm). The floating arm's axle rolls on
 /// a level rail while the counterweight, pinned to the short arm's end and hanging L3 below the
-/// pin, falls in a vertical guide without turning (Trebuchator's "floating").
-enum class MachineKind { hinged, fixed, floating_arm };
+/// pin, falls in a vertical guide without turning (Trebuchator's "floating"). The whipper
+/// (pytrebuchet's WhipperTrebuchet) is the hinged engine started with its long arm forward and
+/// up, the counterweight and the projectile resting on the arm (whipper.hpp).
+enum class MachineKind { hinged, fixed, floating_arm, whipper };
 
 /// Historical engines start at rest with psi_i = phi_i = 0 (section 2).
 struct ScaledDesign {
@@ -69,9 +71,18 @@ struct ScaledDesign {
   double psi_i_deg = 0;
   BuiltParts parts{};  ///< the engine as built; empty: the paper's ideal engine
   MachineKind machine = MachineKind::hinged;  ///< the paper's unless chosen
+  /// The whipper's frame: the pivot's height over the base, in L2 (for the others it is the long
+  /// arm's reach l cos theta_i, the tip resting on the base), and the projectile's radius, in L2,
+  /// which sets where the ball rests on the arm (whipper.hpp). theta_i_deg is then its beam's start,
+  /// -90 deg less the arm's angle above the horizontal, and psi_i_deg its rope's.
+  std::optional<double> H{};
+  double projectile_radius = 0;
 
-  /// L = L3/L2 = F l cos(theta_i) - 1 (eq:Design), scaled; for the fixed counterweight and the
-  /// floating arm 0 where that is within 1e-12 of it (their counterweight at the arm's end).
+  /// The pivot's height over the engine's base, in L2: H/L2 = l cos(theta_i) (section 2), or the
+  /// whipper's as given.
+  double pivot_height() const;
+  /// L = L3/L2 = F H/L2 - 1 = F l cos(theta_i) - 1 (eq:Design), scaled; for the fixed counterweight
+  /// and the floating arm 0 where that is within 1e-12 of it (their counterweight at the arm's end).
   double L() const;
   /// K = (l + 1)/mu_b (eq:kMkD), scaled.
   double K() const;
@@ -89,7 +100,8 @@ struct ScaledDesign {
   double counterweight_lever() const;
   /// Delta U/(M g L2) of eq:DU: (1 - mu_b c)(1 + cos theta_i), c = beam_cm() ((l - 1)/2 in the
   /// paper), plus L (1 - cos psi_i) for a propped counterweight, which starts that much higher
-  /// above its final rest: (lever - mu_b c)(1 + cos theta_i) for the other machines.
+  /// above its final rest, as the whipper's does: (lever - mu_b c)(1 + cos theta_i) for the
+  /// machines whose counterweight moves with the beam.
   double energy_drop() const;
 };
 

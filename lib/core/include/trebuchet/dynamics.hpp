@@ -25,6 +25,11 @@ namespace trebuchet {
 /// height. Units consistent with g (scaled: g = 1).
 double vacuum_range(Vec2 position, Vec2 velocity, double drop, double g);
 
+/// The bending moment in the beam at a fixed pivot (Snapshot::beam_moment, M g L2) from its short
+/// section's turn: the hinge's pull on it (-hinge_force, the force of the arm on the counterweight
+/// reversed) at (-sin th, cos th), its weight at its centre, less its own I theta''.
+double short_section_moment(const BuiltParts::Section& section, double theta, Vec2 hinge_force, double theta_ddot);
+
 namespace detail {
 struct Coefficients;  // the constants of the equations, as dynamics.cpp evaluates them
 }

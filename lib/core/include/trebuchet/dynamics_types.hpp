@@ -8,8 +8,10 @@
 namespace trebuchet {
 
 /// Phase I: projectile slides in the trough (eq:EOM_I_1 to eq:EOM_I_3). Phase II: lifted (eq:EOM_II_1,
-/// eq:EOM_I_2, eq:EOM_II_3). Phase III: released, mu = 0.
-enum class Phase { trough, lifted, released };
+/// eq:EOM_I_2, eq:EOM_II_3). Phase III: released, mu = 0. The whipper (whipper.hpp) has no trough:
+/// its phase I holds the projectile on the arm, after a phase `held` that holds the
+/// counterweight there too.
+enum class Phase { held, trough, lifted, released };
 
 /// A state of the engine, scaled. In phase I, phi and phi_dot follow from eq:EOM_I_3.
 struct State {
@@ -45,7 +47,10 @@ struct Snapshot {
   Vec2 guide_force;  ///< of the frame's guide on the counterweight (the floating arm's; 0 for the others)
   Vec2 sling_on_tip;  ///< force of the sling on the beam tip
   double sling_perpendicular = 0;  ///< F_S_perp: component of the sling's pull on the tip against the beam's turn
-  double normal_force = 0;  ///< trough on projectile (phase I; 0 after)
+  double normal_force = 0;  ///< trough on projectile (phase I; 0 after); the whipper's arm on it, phases held and I
+  /// The whipper's, in phase held: the counterweight's angular acceleration relative to the beam,
+  /// psi'' - theta'' (scaled), were the arm to let it go; > 0 while it presses on the arm.
+  double counterweight_on_arm = 0;
   double sling_tension = 0;  ///< pull of the sling on the projectile along it (< 0: it would push, the sling is slack)
   double counterweight_height = 0;  ///< of the counterweight above the engine's base (< 0: below it)
   double tip_height = 0;  ///< of the beam's tip above the engine's base (< 0: below it)

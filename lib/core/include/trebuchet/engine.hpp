@@ -10,6 +10,10 @@
 
 namespace trebuchet {
 
+/// The whipper's initial beam angle unless given [deg]: pytrebuchet's default, the long arm 60 deg
+/// above the horizontal, forward.
+inline constexpr double whipper_theta_i_deg = -150;
+
 /// A pin that carries a load while its parts turn on it: Coulomb friction gives a torque of
 /// F r mu/sqrt(1 + mu^2) against the turn, F the force it carries (the friction circle of a
 /// journal in its bearing; mu r F to first order).
@@ -60,6 +64,17 @@ struct Engine {
   /// The machine it is built as; for the fixed counterweight and the floating arm L3 places the
   /// counterweight's centre beyond the short arm's end, or below its pin, and may be 0 (design.hpp).
   MachineKind machine = MachineKind::hinged;
+  /// The whipper's start (whipper.hpp) besides theta_i (-90 deg less its long arm's angle above
+  /// the horizontal, forward: pytrebuchet's 60 deg is -150): its pivot's height over the base
+  /// [m], its counterweight's rope's angle off the arm [deg] (pytrebuchet's 10), and the ball's
+  /// diameter, which sets where it rests on the arm, and its drag in air [m] (none: a stone
+  /// sphere of mass m, or of the air's projectile density in a shot through air).
+  struct WhipperStart {
+    double H = 0;
+    double rope_angle_deg = 10;
+    std::optional<double> projectile_diameter;
+  };
+  WhipperStart whipper{};
 };
 
 /// The scaled design of eq:Design, with F from the counterweight arm, and the engine's parts
@@ -87,12 +102,12 @@ double wood_beam_mass(const Engine& engine);
 Engine engine_of(const ScaledDesign& design, double L2, const Material& material);
 
 /// The validation every engine passes, given or computed: lengths and masses positive (mb may
-/// be 0), theta_i in (0, 90) degrees, a positive material. Throws Error(bad_number) naming the
+/// be 0), theta_i in (0, 90) degrees (the whipper's in (-180, -90]), a positive material. Throws Error(bad_number) naming the
 /// parameter by its key, "{{L4}}" (error.hpp).
 void check_engine(const Engine& engine);
 
 double beam_length(const Engine& engine);  ///< Lb = L1 + L2 [m]
-double pivot_height(const Engine& engine);  ///< H = L1 cos(theta_i) [m]
+double pivot_height(const Engine& engine);  ///< H = L1 cos(theta_i), or the whipper's [m]
 double arm_fraction(const Engine& engine);  ///< F = (L2 + L3)/H, section 2, scaled
 
 /// L3 from L2 + L3 = F H, H = L1 cos(theta_i) (section 2) [m].

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <memory>
 
 #include "trebuchet/design.hpp"
@@ -46,10 +47,17 @@ class Machine {
   /// Whether the machine loses energy other than to its bodies: the shot then integrates the
   /// work of each loss (Losses).
   virtual bool dissipates() const = 0;
+
+  /// The phase a shot starts in: the trough, or the whipper's `held`.
+  virtual Phase first_phase() const { return Phase::trough; }
+
+  /// The beam angle [rad] past which a phase is given up: the projectile still in the trough when
+  /// the beam stands upright (pi), and no release once the beam has turned a whole turn.
+  virtual double turn_limit(Phase phase) const { return phase == Phase::trough ? M_PI : theta_i() + 2 * M_PI; }
 };
 
 /// The machine a design is built as (ScaledDesign::machine): the paper's engine (Dynamics), the
-/// fixed counterweight or the floating arm. Throws Error(numerical) for a design that cannot
+/// fixed counterweight, the floating arm or the whipper. Throws Error(numerical) for a design that cannot
 /// shoot: no room for the hinged counterweight's arm, a counterweight inside the short arm or
 /// above its pin (L < 0), or a beam whose long arm outweighs the counterweight.
 std::unique_ptr<Machine> machine_of(const ScaledDesign& design);

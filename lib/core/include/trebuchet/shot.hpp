@@ -62,7 +62,8 @@ struct LoadPeak {
 };
 
 struct ShotResult {
-  double t_liftoff = 0;  ///< scaled
+  double t_liftoff = 0;  ///< scaled; the whipper's: when the projectile leaves the arm
+  std::optional<double> t_counterweight_free;  ///< the whipper's: when its counterweight leaves the arm, scaled
   ReleasePoint release;
   double energy_drift = 0;  ///< max |E(t) + W(t) - E(0)| / Delta U over phases I and II, W the work of the losses
   long steps = 0;  ///< accepted steps, both phases

@@ -64,7 +64,8 @@ struct Verification {
   double pin_angle_deg = 0;  ///< the pin angle at the release, from the long arm to the sling (shot.hpp) [deg]
   double theta_release_deg = 0;  ///< beam angle at release from the downward vertical [deg]; 180 is upright (section 6.2: below it, lower branch)
   double t_release = 0;  ///< [s]
-  double t_liftoff = 0;  ///< [s]
+  double t_liftoff = 0;  ///< [s]; the whipper's: its projectile leaves the arm
+  std::optional<double> t_counterweight_free;  ///< the whipper's: its counterweight leaves the arm [s]
   double FS_perp_mg = 0;  ///< largest perpendicular sling force on the beam / (m g), scaled
   double FR_Mg = 0;  ///< largest |pivot reaction| / (M g), scaled
   double dFRh_Mg = 0;  ///< largest minus smallest horizontal pivot reaction / (M g), scaled
