@@ -200,8 +200,9 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   } else {
     for (const auto member : {&V::rope_angle_deg, &V::projectile_diameter})
       if (v.*member)
-        throw Error(ErrorKind::usage, engine_key_name(where, field_of(member).key) +
-                                          " is the whipper's start; leave it out, or give the machine as whipper (docs/machines.md)");
+        throw Error(ErrorKind::usage,
+                    engine_key_name(where, field_of(member).key) +
+                        " is the whipper's start; leave it out, or give the machine as whipper (docs/machines.md)");
   }
   // D = 0 is how the outputs write "not given" (they read back); below 0 it is a mistake.
   if (v.D && !(*v.D >= 0))
@@ -234,8 +235,9 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   // The others' pivot height is L1 cos(theta_i): a given one, as the programs write it (6 digits
   // in CSV), must agree with it.
   if (!whipper && v.H && e.L1 > 0 && e.theta_i_deg > 0 && e.theta_i_deg < 90 && !(std::abs(*v.H - pivot_height(e)) <= 1e-4 * pivot_height(e)))
-    throw Error(ErrorKind::usage, engine_key_name(where, "H") + " = " + format_significant(*v.H, 6) + " m, but this machine's pivot height is L1 cos(theta_i) = " +
-                                      format_significant(pivot_height(e), 6) + " m; leave out H (only the whipper's frame is given)");
+    throw Error(ErrorKind::usage,
+                engine_key_name(where, "H") + " = " + format_significant(*v.H, 6) + " m, but this machine's pivot height is L1 cos(theta_i) = " +
+                    format_significant(pivot_height(e), 6) + " m; leave out H (only the whipper's frame is given)");
   e.material = material_of(v, e.material);  // eq:kMkD's where not given
   const Material& material = e.material;
   engine_parts(v, where, in);

@@ -57,9 +57,17 @@ double wood_beam_mass(const Engine& e) {
 }
 
 ScaledDesign scaled_design(const Engine& engine) {  // eq:Design
-  ScaledDesign out{engine.L1 / engine.L2, engine.L4 / engine.L1, engine.mb / engine.M, engine.m / engine.M,
-                   engine.theta_i_deg,    arm_fraction(engine),  engine.psi_i_deg,    {},
-                   MachineKind::hinged,   std::nullopt,          0};
+  ScaledDesign out{engine.L1 / engine.L2,
+                   engine.L4 / engine.L1,
+                   engine.mb / engine.M,
+                   engine.m / engine.M,
+                   engine.theta_i_deg,
+                   arm_fraction(engine),
+                   engine.psi_i_deg,
+                   {},
+                   MachineKind::hinged,
+                   std::nullopt,
+                   0};
   out.machine = engine.machine;
   if (engine.machine == MachineKind::whipper) {  // its beam's and rope's start in the angles of dynamics.hpp
     const Engine::WhipperStart& w = engine.whipper;
@@ -212,8 +220,9 @@ void check_whipper(const Engine::WhipperStart& w) {
                 "{{H}} = " + format_significant(w.H, 6) + ": the whipper stands on a frame: give its pivot's height above the base, e.g. 5m");
   check_ordinary(w.H, 1e-6, 1e6, "H", "m", "pivot height");
   if (!(w.rope_angle_deg >= 0 && w.rope_angle_deg < 90))
-    throw Error(ErrorKind::bad_number, "{{rope_angle_deg}} = " + format_significant(w.rope_angle_deg, 6) +
-                                           ": the counterweight's rope lies off the arm by 0 to below 90 deg, on its upper side; pytrebuchet's is 10");
+    throw Error(ErrorKind::bad_number,
+                "{{rope_angle_deg}} = " + format_significant(w.rope_angle_deg, 6) +
+                    ": the counterweight's rope lies off the arm by 0 to below 90 deg, on its upper side; pytrebuchet's is 10");
   if (w.projectile_diameter) check_ordinary(*w.projectile_diameter, 1e-6, 1e6, "projectile_diameter", "m", "projectile's diameter");
 }
 
@@ -226,9 +235,10 @@ void check_engine(const Engine& e) {
   };
   if (e.machine == MachineKind::whipper) {
     if (!(e.theta_i_deg > -180 && e.theta_i_deg <= -90))
-      throw Error(ErrorKind::bad_number, "{{theta_i_deg}} = " + format_significant(e.theta_i_deg, 6) +
-                                             ": the whipper's long arm starts forward, from level (-90 deg) to below upright (-180 deg): "
-                                             "theta_i = -90 deg less its angle above the horizontal; pytrebuchet's 60 deg is -150");
+      throw Error(ErrorKind::bad_number,
+                  "{{theta_i_deg}} = " + format_significant(e.theta_i_deg, 6) +
+                      ": the whipper's long arm starts forward, from level (-90 deg) to below upright (-180 deg): "
+                      "theta_i = -90 deg less its angle above the horizontal; pytrebuchet's 60 deg is -150");
   } else if (!(e.theta_i_deg > 0 && e.theta_i_deg < 90)) {
     throw Error(ErrorKind::bad_number,
                 "{{theta_i_deg}} = " + format_significant(e.theta_i_deg, 6) + ": the initial beam angle must lie between 0 and 90 degrees");

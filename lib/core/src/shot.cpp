@@ -446,8 +446,9 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   // A counterweight propped forward can pull the short arm the wrong way: the shot never starts.
   if (!(snap.theta_ddot > 0)) {
     if (whips)
-      fail("the whipper's beam starts to turn backwards, away from the throw: the weight resting on its arm lies too far behind the pivot; "
-           "lengthen the counterweight's rope {{L3}}, or give the rope a larger angle off the arm ({{rope_angle_deg}})");
+      fail(
+          "the whipper's beam starts to turn backwards, away from the throw: the weight resting on its arm lies too far behind the pivot; "
+          "lengthen the counterweight's rope {{L3}}, or give the rope a larger angle off the arm ({{rope_angle_deg}})");
     fail("the beam starts to turn away from the throw (the counterweight, propped at psi_i = " + format_significant(e.psi_i_deg, 4) +
          " deg, pulls the short arm backwards); " +
          (e.psi_i_deg > 0 ? std::string("prop it less, or back ({{psi_i_deg}} < 0)") : std::string("hold it back less ({{psi_i_deg}} nearer 0)")));
@@ -464,8 +465,7 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     if (!(contact(snap) > 0)) return t;  // it lets go at once
     while (true) {
       if (!integrator.step(t, y.data(), settings.max_time, h))
-        fail(integrator.friction_unsettled() ? unsettled_friction
-                                             : "integrator failure in phase I; tighten {{rtol}} or choose another {{stepper}}");
+        fail(integrator.friction_unsettled() ? unsettled_friction : "integrator failure in phase I; tighten {{rtol}} or choose another {{stepper}}");
       const bool axle_holds = count_step("phase I", integrator.state(y), phase != Phase::held);
       // Friction that stops the beam holds it (Coulomb's law at rest): the engine jams.
       if (axle_holds || (dynamics.dissipates() && !(y[2] > 0)))
@@ -475,8 +475,9 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
         fail("the sling stands vertical in the trough (phi -> 90 deg) before lift-off; lengthen the sling L4 or lighten the projectile m");
       snap = dynamics.snapshot(phase, integrator.state(y));
       if (phase == Phase::held && !(snap.normal_force > 0))
-        fail("the whipper's projectile would leave the arm before its counterweight, which the model (pytrebuchet's order) leaves out; "
-             "lengthen the sling {{L4}} or the counterweight's rope {{L3}}");
+        fail(
+            "the whipper's projectile would leave the arm before its counterweight, which the model (pytrebuchet's order) leaves out; "
+            "lengthen the sling {{L4}} or the counterweight's rope {{L3}}");
       if (!(contact(snap) > 0)) {
         const StepEnd& before = record.samples().back();
         const StepEnd after = integrator.step_end(t, y, snap);
@@ -494,7 +495,7 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
       track_energy(snap, integrator.work(y));
       if (y[0] >= dynamics.turn_limit(phase) || t >= settings.max_time)
         fail(phase == Phase::held ? "the whipper's counterweight never leaves the arm; lengthen its rope {{L3}} or change the masses"
-             : whips              ? "the whipper's projectile never leaves the arm; change the sling length {{L4}} or the masses"
+                 : whips          ? "the whipper's projectile never leaves the arm; change the sling length {{L4}} or the masses"
                                   : "the projectile never lifts off: the trough still carries it when the beam is upright; "
                                     "change the sling length L4 or the masses");
     }
@@ -570,8 +571,7 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     // An angle below -180 deg (the whipper's: a whole turn below the given one) has passed every value it could be given.
     const bool angle_spent = given && given->by != ReleaseBy::time && watch.last < (whips ? given->value - 2 * M_PI : -M_PI);
     return s.theta > dynamics.turn_limit(Phase::lifted) || t >= settings.max_time ||
-        ((given || whips || dynamics.dissipates()) && !(s.theta_dot > 0)) ||
-        axle_holds || angle_spent;
+        ((given || whips || dynamics.dissipates()) && !(s.theta_dot > 0)) || axle_holds || angle_spent;
   };
   // Past the release: the objective has fallen to half its maximum, or two steps past a given
   // release, so that the running extremes of eq:F before it are refined as an optimum's are.
