@@ -32,6 +32,10 @@ int run_compare(const Options& o) {
     throw Error(ErrorKind::usage,
                 "no design; give a JSON or CSV file, or flags like --L1 4.13m --L2 0.88m --L3 0.6m --L4 3.55m --M 3.11t --m 50kg --mb 174kg");
   }
+  if (values.machine == MachineKind::whipper)
+    throw Error(ErrorKind::usage,
+                "compare starts from an engine of the other machines (theta_i from 0 to 90 deg) and builds the whipper's column from it; "
+                "give that engine, without the machine whipper");
   // Read as a machine that takes it (L3 = 0 is not the hinged engine's, a prop only its); each
   // machine then checks what it takes.
   values.machine = values.psi_i_deg.value_or(0) != 0 ? MachineKind::hinged : MachineKind::fixed;

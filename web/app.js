@@ -75,6 +75,8 @@
   // the table of inputs' release group).
   function asBuilt(engine) {
     const built = state.machine === 'hinged' ? Object.assign({}, engine) : Object.assign({}, engine, { machine: state.machine });
+    // The whipper: pytrebuchet's start, its long arm 60° up, on a frame as tall as the engine's pivot.
+    if (state.machine === 'whipper') Object.assign(built, { theta_i_deg: -150, H: engine.L1 * Math.cos(engine.theta_i_deg * Math.PI / 180) });
     if (state.release_by === 'optimum' || !state.release_value.trim()) return built;
     return Object.assign(built, { [state.release_by]: state.release_value });
   }
@@ -106,7 +108,7 @@
     theta: (v) => ['30', '40'].includes(v), F: (v) => ['1', '2/3'].includes(v), air: (v) => typeof v === 'boolean',
     cd: isText, wind: isText, release: (v) => ['Q', 'eps', 'range'].includes(v), target_level: isText,
     release_by: (v) => ['optimum', 'pin_angle_deg', 'release_angle_deg', 'release_time'].includes(v), release_value: isText,
-    machine: (v) => ['hinged', 'fixed', 'floating-arm'].includes(v),
+    machine: (v) => ['hinged', 'fixed', 'floating-arm', 'whipper'].includes(v),
     range_from: (v) => ['pivot', 'release'].includes(v), samples: isText,
     // An edited engine: keys of a shot's design, each a finite number, the engine's own values positive.
     edit: (v) => v === null || (typeof v === 'object' && !Array.isArray(v) && Object.keys(v).length > 0 &&

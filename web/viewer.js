@@ -198,7 +198,7 @@
       const r = Math.max(14, 0.22 * Math.min(e.L1, H) * scale);
       line(pivot, [pivot[0], pivot[1] + 1.3 * r], COLOURS.theta, 1, '4 3');
       arc(pivot, r, 270 - theta, 270, COLOURS.theta, 'θ ' + significant(theta, 3) + '°');
-      if (machine === 'hinged') {  // the others' counterweight has no angle of its own
+      if (machine === 'hinged' || machine === 'whipper') {  // the others' counterweight has no angle of its own
         const rh = Math.max(12, 0.6 * e.L3 * scale);
         line(hinge, [hinge[0], hinge[1] + 0.8 * e.L3 * scale], COLOURS.psi, 1, '4 3');
         arc(hinge, rh, 270 - psi, 270, COLOURS.psi, 'ψ ' + significant(psi, 3) + '°');
@@ -235,7 +235,8 @@
         : a.release === 'eps' ? 'released where ε peaks' : 'released where the range peaks';
     const target = a.range_from === 'release' ? "range from the release point back to its height (Denny's)" : 'target level ' + quantity(a.target_level, 'length', system);
     const machine = { fixed: 'built as a fixed counterweight (its centre L3 beyond the short arm), ',
-      'floating-arm': "built as a floating arm (the counterweight L3 below its pin, in a guide; ranges from the guide's line), " }[shot.engine.machine] || '';
+      'floating-arm': "built as a floating arm (the counterweight L3 below its pin, in a guide; ranges from the guide's line), ",
+      whipper: 'built as a whipper (started with the long arm forward and up, the counterweight and the projectile resting on it), ' }[shot.engine.machine] || '';
     return machine + air + ', ' + release + ', ' + target + ', g = ' + quantity(a.g, 'acceleration', system);
   }
 
@@ -455,7 +456,10 @@
         svg('circle', { cx: at[0], cy: at[1], r: flying ? 4 : Math.max(3.5, 0.03 * e.H * v.scale), fill: COLOURS.stone }, g);
       }
       drawEngine(g, shot, i, v.to, v.scale, { angles: angles.checked && !flying });
-      const phase = time <= f.t[s.moments.liftoff] ? 'phase I: the projectile slides in the trough' : time <= tRelease ? 'phase II: the sling swings' : 'phase III: the flight';
+      const held = shot.t_counterweight_free;  // the whipper's: its counterweight leaves the arm first
+      const first = held === undefined ? 'phase I: the projectile slides in the trough'
+        : time <= held ? 'phase I: the counterweight and the projectile ride on the arm' : 'phase I: the counterweight swings, the projectile rides on the arm';
+      const phase = time <= f.t[s.moments.liftoff] ? first : time <= tRelease ? 'phase II: the sling swings' : 'phase III: the flight';
       text(scene, 10, height - 10, `t = ${time.toFixed(3)} s, ${phase}` + (flying ? ' (zoomed out to the whole flight, real speed)' : ''), { 'font-size': 13 });
       if ((shot.warnings || []).length) text(scene, width / 2, 40, 'NOT PHYSICAL', { 'text-anchor': 'middle', 'font-size': 30, fill: '#cc0000', 'font-weight': 'bold' });
       timeText.textContent = `${time.toFixed(2)} s of ${tEnd.toFixed(2)} s`;

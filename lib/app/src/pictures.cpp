@@ -166,10 +166,12 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   }
   files.push_back({"release.csv", release_csv.str()});
 
-  // 1. The engine at four moments, to scale, in one frame that holds all four with a margin.
+  // 1. The engine at four moments, to scale, in one frame that holds all four with a margin. The
+  // whipper's projectile leaves its arm where the others' lift off their trough.
+  const bool whipper = engine.machine == MachineKind::whipper;
   const std::pair<std::size_t, std::string> panels[] = {
       {m.start, "at rest: θ_i = " + format_significant(engine.theta_i_deg, 3) + "°"},
-      {m.liftoff, "lift-off, t = " + format_significant(seconds(m.liftoff), 3) + " s"},
+      {m.liftoff, (whipper ? "off the arm, t = " : "lift-off, t = ") + format_significant(seconds(m.liftoff), 3) + " s"},
       {m.peak_reaction, "largest pivot force, t_m = " + format_significant(seconds(m.peak_reaction), 3) + " s"},
       {m.release, "release, t_r = " + format_significant(seconds(m.release), 3) + " s"}};
   double x_lo = -0.3 * H, x_hi = 0.3 * H, y_lo = 0, y_hi = H;
@@ -236,7 +238,7 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   // stand above the frame, in two rows, clear of the curves and of each other.
   auto marks = [&](std::ostringstream& gp) {
     const std::pair<std::size_t, const char*> at[] = {
-        {m.liftoff, "lift-off"}, {m.first_extreme, "t_1"}, {m.peak_reaction, "t_m"}, {m.second_extreme, "t_2"}, {m.release, "release"}};
+        {m.liftoff, whipper ? "off the arm" : "lift-off"}, {m.first_extreme, "t_1"}, {m.peak_reaction, "t_m"}, {m.second_extreme, "t_2"}, {m.release, "release"}};
     int row = 0;
     for (const auto& [i, name] : at)
       gp << "set arrow from " << num(seconds(i)) << ", graph 0 to " << num(seconds(i)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
@@ -365,7 +367,7 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
     anim << "unset arrow\nunset label\nunset object\n" << engine_commands(engine, trace[i], on, false, false) << warning_labels(v, true);
     if (!on) stone(stone_at(seconds(i) - t_release), 0.03 * H);
     anim << "set title 't = " << format_significant(seconds(i), 3) << " s  ("
-         << (on ? trace[i].phase == Phase::trough ? "phase I" : "phase II" : "released") << ", slowed " << format_significant(slowed, 2)
+         << (on ? std::string("phase ") + phase_numeral(trace[i].phase) : std::string("released")) << ", slowed " << format_significant(slowed, 2)
          << " times)' noenhanced\nplot 0 lc rgb '#6b8e23' lw 2 notitle\n";
   }
   const double flight_lo = std::min(-engine.L1 - engine.L4, impact.x) - 2, flight_hi = std::max(impact.x, engine.L1) + 2;

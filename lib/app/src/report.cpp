@@ -50,7 +50,8 @@ std::string describe_release(const ShotSettings& settings) {
 }
 
 std::string describe_assumptions(const Engine& engine, const ShotSettings& settings) {
-  return (settings.air ? describe_air(*settings.air, engine.m) : std::string("vacuum (no air drag)")) +
+  const std::optional<Air>& air = settings_for(engine, settings).air;  // the whipper's ball sets the projectile's density
+  return (air ? describe_air(*air, engine.m) : std::string("vacuum (no air drag)")) +
       ", g = " + format_significant(engine.material.g, 4) + " m/s2, " + describe_release(settings);
 }
 
@@ -457,7 +458,7 @@ std::string trace_csv(const std::vector<TracePoint>& trace, const Engine& engine
                           p.work[projectile_drag_loss] * energy_unit,
                           p.work[rope_drag_loss] * energy_unit,
                           site_point(s.pivot, engine).x};
-    out << (p.phase == Phase::trough ? "I" : p.phase == Phase::lifted ? "II" : "III");
+    out << phase_numeral(p.phase);
     for (double x : row) out << "," << (std::isnan(x) ? std::string() : format_number(finite_or_error(x)));
     out << "\n";
   }

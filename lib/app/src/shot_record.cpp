@@ -10,7 +10,8 @@
 
 namespace trebuchet {
 
-nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings& settings) {
+nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings& given) {
+  const ShotSettings settings = settings_for(engine, given);  // the whipper's ball sets the projectile's density
   nlohmann::ordered_json out = nlohmann::ordered_json::object();
   if (settings.air) {
     const Air& air = *settings.air;

@@ -17,7 +17,7 @@ Moments moments_of(const std::vector<TracePoint>& trace) {
   std::size_t most_at = 0, least_at = 0;
   for (std::size_t i = 0; i < trace.size() && trace[i].phase != Phase::released; ++i) {
     const Snapshot& s = trace[i].snapshot;
-    if (trace[i].phase == Phase::trough) m.liftoff = i;
+    if (trace[i].phase == Phase::trough) m.liftoff = i;  // the whipper's projectile leaves the arm there
     m.release = i;
     const double reaction = force_values(s)[pivot_reaction];
     if (reaction > largest) largest = reaction, m.peak_reaction = i;
@@ -158,7 +158,7 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
                                             s.energies.projectile_potential * energy_unit,
                                             lost * energy_unit};
     for (std::size_t k = 0; k < std::size(columns); ++k) frames[columns[k]].push_back(values[k] ? json(*values[k]) : json(nullptr));
-    frames["phase"].push_back(p.phase == Phase::trough ? "I" : p.phase == Phase::lifted ? "II" : "III");
+    frames["phase"].push_back(phase_numeral(p.phase));
   }
   json flight = {{"x", json::array()}, {"y", json::array()}, {"time", series.flight_time}};
   for (const SitePoint& p : series.flight) flight["x"].push_back(p.x), flight["y"].push_back(p.y);

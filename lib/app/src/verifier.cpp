@@ -172,10 +172,14 @@ std::vector<MachineComparison> compare_machines(const EngineRecord& record, cons
   DesignCheck plain = check;
   plain.series_path.clear(), plain.plot_dir.clear();
   std::vector<MachineComparison> out;
-  for (MachineKind machine : {MachineKind::hinged, MachineKind::fixed, MachineKind::floating_arm}) {
+  for (MachineKind machine : {MachineKind::hinged, MachineKind::fixed, MachineKind::floating_arm, MachineKind::whipper}) {
     MachineComparison one{machine, std::nullopt, std::nullopt};
     EngineRecord built = record;
     built.engine.machine = machine;
+    if (machine == MachineKind::whipper) {  // pytrebuchet's start, on a frame as tall as the others' pivot stands
+      built.engine.theta_i_deg = whipper_theta_i_deg;
+      built.engine.whipper.H = pivot_height(record.engine);
+    }
     try {
       check_engine(built.engine);  // what one machine takes another may not (L3 = 0, a propped counterweight)
       one.report = check_design(built, plain);

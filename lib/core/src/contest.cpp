@@ -8,6 +8,7 @@
 #include "trebuchet/angles.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
+#include "trebuchet/machine.hpp"
 
 namespace trebuchet {
 namespace {
@@ -189,6 +190,7 @@ Shape shape_of_engine(const Engine& e) {
 }
 
 void check_request(const ContestRequest& r) {
+  if (r.machine == MachineKind::whipper) throw Error(ErrorKind::usage, whipper_not_designed);
   if (!(r.projectile_mass > 0 && r.projectile_mass < 1e12))
     throw Error(ErrorKind::bad_number, "{{m}} = " + format_significant(r.projectile_mass, 6) + ": the contest's projectile mass must be positive");
   if (!(r.beam_mass_per_length >= 0 && r.beam_mass_per_length < 1e9))

@@ -324,6 +324,8 @@ Engine resized(const Engine& engine, const SizeFactors& f) {
   out.M *= f.mass;
   out.m *= f.mass;
   out.mb *= f.mass;
+  out.whipper.H *= f.length;  // the whipper's frame and ball keep their shape
+  if (out.whipper.projectile_diameter) *out.whipper.projectile_diameter *= f.length;
   return out;
 }
 

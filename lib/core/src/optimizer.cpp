@@ -10,6 +10,7 @@
 #include "trebuchet/error.hpp"
 #include "simplex.hpp"
 #include "trebuchet/format.hpp"
+#include "trebuchet/machine.hpp"
 #include "trebuchet/angles.hpp"
 
 namespace trebuchet {
@@ -181,6 +182,7 @@ Optimum search_from(const OptimizeRequest& request, const Start& start) {
 }  // namespace
 
 std::vector<Optimum> optimize(const OptimizeRequest& request) {
+  if (request.machine == MachineKind::whipper) throw Error(ErrorKind::usage, whipper_not_designed);
   use_gsl_return_codes();
   check_shot_settings(request.settings);
   check_material(request.material);

@@ -5,6 +5,7 @@
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
+#include "trebuchet/machine.hpp"
 
 namespace trebuchet {
 
@@ -70,7 +71,7 @@ const ScalingTable& builtin_scaling_table(MachineKind machine) {
     case MachineKind::fixed: return builtin_fixed_table();
     case MachineKind::floating_arm: return builtin_floating_arm_table();
     case MachineKind::hinged: break;
-    case MachineKind::whipper: throw Error(ErrorKind::usage, whipper_has_no_table);
+    case MachineKind::whipper: throw Error(ErrorKind::usage, whipper_not_designed);
   }
   return builtin_scaling_table();
 }

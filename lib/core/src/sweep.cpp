@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "trebuchet/error.hpp"
+#include "trebuchet/machine.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/optimizer.hpp"
 #include "trebuchet/parallel.hpp"
@@ -78,6 +79,7 @@ std::vector<SweepPoint> run_sweep(const SweepSpec& spec, Shard shard, int thread
   settings.criterion = spec.criterion;
   check_shot_settings(settings);
   check_material(spec.material);
+  if (spec.machine == MachineKind::whipper) throw Error(ErrorKind::usage, whipper_not_designed);
   const std::vector<double> grid = sweep_grid(spec);
   std::vector<double> mine;
   for (std::size_t i = shard.k - 1; i < grid.size(); i += shard.n) mine.push_back(grid[i]);

@@ -161,9 +161,17 @@ ScaledDesign shot_design(const Engine& engine, const ShotSettings& settings) {
   return design;
 }
 
-Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace, double trace_dt_s) {
+ShotSettings settings_for(const Engine& engine, const ShotSettings& settings) {
+  ShotSettings out = settings;
+  const std::optional<double>& d = engine.whipper.projectile_diameter;
+  if (out.air && engine.machine == MachineKind::whipper && d) out.air->projectile_density = engine.m / (M_PI / 6 * *d * *d * *d);  // m/volume
+  return out;
+}
+
+Verification verify_engine(const Engine& engine, const ShotSettings& given, std::vector<TracePoint>* trace, double trace_dt_s) {
   check_engine(engine);  // as given, its material too: a caller may have changed either since it was read
-  check_shot_settings(settings);
+  check_shot_settings(given);
+  const ShotSettings settings = settings_for(engine, given);
   if (engine.parts.rope_diameter > 0 && !(settings.air && settings.drag_in_sling))
     throw Error(ErrorKind::usage,
                 "{{rope_diameter}} gives the drag on the sling's rope, which acts only when the air acts before the release; "

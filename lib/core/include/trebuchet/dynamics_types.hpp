@@ -13,6 +13,9 @@ namespace trebuchet {
 /// counterweight there too.
 enum class Phase { held, trough, lifted, released };
 
+/// The phase's numeral in the series and the pictures: I (the whipper's `held` too), II or III.
+inline const char* phase_numeral(Phase phase) { return phase == Phase::lifted ? "II" : phase == Phase::released ? "III" : "I"; }
+
 /// A state of the engine, scaled. In phase I, phi and phi_dot follow from eq:EOM_I_3.
 struct State {
   double theta = 0, psi = 0, phi = 0;  ///< [rad]

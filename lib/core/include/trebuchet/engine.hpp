@@ -116,7 +116,7 @@ double counterweight_arm(double L1, double L2, double theta_i_deg, double F);
 /// Delta U of eq:DU: potential energy released by a whole shot, under the engine's g [J].
 double potential_energy_drop(const Engine& engine);
 
-/// The engine with its lengths, masses and D multiplied by the size factors (eq:ExtraScalings).
+/// The engine with its lengths (the whipper's H and ball too), masses and D multiplied by the size factors (eq:ExtraScalings).
 Engine resized(const Engine& engine, const SizeFactors& factors);
 
 }  // namespace trebuchet

@@ -62,4 +62,11 @@ class Machine {
 /// above its pin (L < 0), or a beam whose long arm outweighs the counterweight.
 std::unique_ptr<Machine> machine_of(const ScaledDesign& design);
 
+/// Why the whipper is shot but not designed: optimize, contest, derive-table and the calculator
+/// refuse it with this (docs/machines.md, "The whipper").
+inline constexpr const char* whipper_not_designed =
+    "the whipper is shot here, not designed: its shape has four parameters of its own (theta_i, the rope's angle, the frame's height H and "
+    "the rope L3) where the other machines' have theta_i and F, and neither its optimizer nor its scaling table is built; shoot a whipper "
+    "with trebuchet-verify shot --machine whipper";
+
 }  // namespace trebuchet

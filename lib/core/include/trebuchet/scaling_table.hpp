@@ -81,13 +81,8 @@ const ScalingTable& builtin_scaling_table();
 
 /// The scaling table of a machine, compiled in the same way: tab:CPNC for the hinged engine,
 /// data/cpnc-fixed.json and data/cpnc-floating-arm.json for the others (docs/machines.md); the
-/// whipper has none yet: Error(usage) with whipper_has_no_table.
+/// whipper has none yet: Error(usage) with whipper_not_designed (machine.hpp).
 const ScalingTable& builtin_scaling_table(MachineKind machine);
 
-/// Why the whipper has no scaling table (docs/machines.md, "The whipper").
-inline constexpr const char* whipper_has_no_table =
-    "the whipper has no scaling table yet: its shape has four parameters (the arm's and the rope's angles at rest, the frame's height and "
-    "the rope), where tab:CPNC's blocks have theta_i and F, and its optimizer is not built; shoot a whipper with trebuchet-verify shot "
-    "--machine whipper";
 
 }  // namespace trebuchet

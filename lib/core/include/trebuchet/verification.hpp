@@ -114,7 +114,11 @@ ReleaseCriterion release_criterion(const Engine& engine, const ShotSettings& set
 /// The most points a series sampled every trace_dt_s may hold (about 100 MB of CSV).
 inline constexpr double max_series_points = 1e6;
 
-/// Simulates one shot of `engine` under its own g. Throws Error(numerical) as simulate_shot
+/// The settings as they hold for `engine`: the whipper's ball, where its diameter is given, sets
+/// the projectile's density in air (m over the ball's volume), so that its drag is the ball's.
+ShotSettings settings_for(const Engine& engine, const ShotSettings& settings);
+
+/// Simulates one shot of `engine` under settings_for(engine, settings), under its own g. Throws Error(numerical) as simulate_shot
 /// does. With `trace`, the motion is appended to it (scaled, see simulate_shot): at the step
 /// ends, or every trace_dt_s seconds; a trace_dt_s that gives more than max_series_points is
 /// refused (Error(bad_number), {{series_dt}}) before the series is drawn.

@@ -83,8 +83,9 @@ struct MachineComparison {
   std::optional<Error> error;
 };
 
-/// Shoots `record`'s engine as the hinged counterweight, the fixed counterweight and the floating
-/// arm under `check` (no series or pictures), each refusal kept in its place.
+/// Shoots `record`'s engine as the hinged counterweight, the fixed counterweight, the floating arm
+/// and the whipper (pytrebuchet's start, on a frame as tall as the engine's pivot stands) under
+/// `check` (no series or pictures), each refusal kept in its place.
 std::vector<MachineComparison> compare_machines(const EngineRecord& record, const DesignCheck& check);
 
 /// The comparison side by side: range, efficiency, the release, the pin to bend and the peak
