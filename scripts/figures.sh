@@ -17,6 +17,10 @@ for picture in engine paths forces energy release pin; do cp "$work/$picture.svg
 build/verify/trebuchet-verify shot --machine floating-arm --L1 4.13m --L2 0.88m --L3 0.4m --L4 3.55m --M 3.11t --m 50kg --mb 174kg \
   --plot "$work/floating" >/dev/null
 cp "$work/floating/engine.svg" docs/figures/floating_arm.svg
+# pytrebuchet's default whipper, released as it releases it (docs/machines.md, "The whipper").
+build/verify/trebuchet-verify shot --machine whipper --L1 4m --L2 2m --L3 4m --L4 4m --M 100kg --m 3kg --mb 10kg --H 5m \
+  --projectile-diameter 0.2m --release-angle 45 --plot "$work/whipper" >/dev/null
+cp "$work/whipper/engine.svg" docs/figures/whipper.svg
 build/verify/trebuchet-verify contest --machine floating-arm --m 0.5kg --mb-per-m 1.5 --max-width 4m --max-height 3m --max-M 60kg \
   --pareto 20 --plot "$work/contest" >/dev/null
 cp "$work/contest/pareto.svg" docs/figures/pareto.svg

@@ -57,10 +57,15 @@ std::string engine_commands(const Engine& engine, const TracePoint& p, bool proj
   }
   if (labels) {
     auto mid = [](SitePoint a, SitePoint b) { return SitePoint{(a.x + b.x) / 2, (a.y + b.y) / 2}; };
-    label("L_1", mid(pivot, tip), "offset -2.2,0.3");
+    // The whipper's rope and folded sling lie along its arm, up and forward: L1 and L4 stand below
+    // the arm, L3 left of its rope.
+    const bool whipper = engine.machine == MachineKind::whipper;
+    label("L_1", mid(pivot, tip), whipper ? "offset 1.2,-0.8" : "offset -2.2,0.3");
     label("L_2", mid(pivot, hinge), "offset -2.2,0.6");
-    if (engine.L3 > 0) label("L_3", mid(hinge, cw), "offset 1,0");
-    if (projectile_on) label("L_4", mid(tip, pr), "offset 0,0.8 center");
+    if (engine.L3 > 0) label("L_3", mid(hinge, cw), whipper ? "offset -2.8,0.4" : "offset 1,0");
+    if (projectile_on)
+      label("L_4", whipper ? SitePoint{pr.x + 0.8 * (tip.x - pr.x), pr.y + 0.8 * (tip.y - pr.y)} : mid(tip, pr),
+            whipper ? "offset 1.2,-0.8" : "offset 0,0.8 center");
     segment({pivot.x, 0}, pivot, "lw 1 dt 2 lc rgb 'gray40'");
     label("H", {pivot.x, H / 2}, "offset 0.5,0");
   }
@@ -237,8 +242,11 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   // 3. The forces against time, in kN, with multiples of M g on the right; the marks' names
   // stand above the frame, in two rows, clear of the curves and of each other.
   auto marks = [&](std::ostringstream& gp) {
-    const std::pair<std::size_t, const char*> at[] = {
-        {m.liftoff, whipper ? "off the arm" : "lift-off"}, {m.first_extreme, "t_1"}, {m.peak_reaction, "t_m"}, {m.second_extreme, "t_2"}, {m.release, "release"}};
+    const std::pair<std::size_t, const char*> at[] = {{m.liftoff, whipper ? "off the arm" : "lift-off"},
+                                                      {m.first_extreme, "t_1"},
+                                                      {m.peak_reaction, "t_m"},
+                                                      {m.second_extreme, "t_2"},
+                                                      {m.release, "release"}};
     int row = 0;
     for (const auto& [i, name] : at)
       gp << "set arrow from " << num(seconds(i)) << ", graph 0 to " << num(seconds(i)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"

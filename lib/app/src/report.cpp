@@ -51,8 +51,8 @@ std::string describe_release(const ShotSettings& settings) {
 
 std::string describe_assumptions(const Engine& engine, const ShotSettings& settings) {
   const std::optional<Air>& air = settings_for(engine, settings).air;  // the whipper's ball sets the projectile's density
-  return (air ? describe_air(*air, engine.m) : std::string("vacuum (no air drag)")) +
-      ", g = " + format_significant(engine.material.g, 4) + " m/s2, " + describe_release(settings);
+  return (air ? describe_air(*air, engine.m) : std::string("vacuum (no air drag)")) + ", g = " + format_significant(engine.material.g, 4) +
+      " m/s2, " + describe_release(settings);
 }
 
 std::string design_table(const OptimalEngine& design, UnitSystem units) {

@@ -181,8 +181,14 @@ std::optional<Snapshot> Whipper::resisted(Phase phase, const State& s) const {
   }
   const Generalized air{dot(drag, p_th), 0, dot(drag, p_phi)};
   const double axle_turn = (s.theta_dot > 0) - (s.theta_dot < 0);
-  const double swing = s.psi_dot - s.theta_dot, hinge_turn = phase == Phase::held ? 0 : (swing > 0) - (swing < 0);
   Motion m = motion(phase, s, air);
+  // The pin's friction opposes its turn, or the turn it starts: riding on the arm the weight
+  // presses toward it (psi'' - theta'' > 0 were it free), so that leaving it turns the pin back,
+  // and the friction holds it on until the drive beats it (the free motion of phase held, which
+  // its rigid turn does not feel: the torque acts within it); at rest on its pin, the way the
+  // frictionless motion would turn it.
+  const double swing = s.psi_dot - s.theta_dot, drive = m.a[1] - m.a[0];
+  const double hinge_turn = phase == Phase::held ? -1 : swing != 0 ? (swing > 0) - (swing < 0) : (drive > 0) - (drive < 0);
   for (int round = 0; round < 60; ++round) {
     Snapshot snap = snapshot_with(phase, s, m, drag);
     const double axle = parts.axle_friction * std::hypot(snap.pivot_reaction.x, snap.pivot_reaction.y);
@@ -199,7 +205,8 @@ std::optional<Snapshot> Whipper::resisted(Phase phase, const State& s) const {
       snap.loss_power[axle_loss] = axle * std::abs(s.theta_dot);
       snap.loss_power[hinge_loss] = pin * std::abs(hinge_turn * swing);
       snap.loss_power[projectile_drag_loss] = -dot(drag, v);
-      if (design_.short_section()) snap.beam_moment += pin * hinge_turn;  // the pin's friction turns the short section with the swing
+      if (design_.short_section() && phase != Phase::held)
+        snap.beam_moment += pin * hinge_turn;  // the pin's friction turns the short section with the swing
       return snap;
     }
   }

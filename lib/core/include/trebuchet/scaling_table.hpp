@@ -84,5 +84,4 @@ const ScalingTable& builtin_scaling_table();
 /// whipper has none yet: Error(usage) with whipper_not_designed (machine.hpp).
 const ScalingTable& builtin_scaling_table(MachineKind machine);
 
-
 }  // namespace trebuchet
