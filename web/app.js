@@ -75,8 +75,9 @@
   // the table of inputs' release group).
   function asBuilt(engine) {
     const built = state.machine === 'hinged' ? Object.assign({}, engine) : Object.assign({}, engine, { machine: state.machine });
-    // The whipper: pytrebuchet's start, its long arm 60° up, on a frame as tall as the engine's pivot.
-    if (state.machine === 'whipper') Object.assign(built, { theta_i_deg: -150, H: engine.L1 * Math.cos(engine.theta_i_deg * Math.PI / 180) });
+    // The whipper: pytrebuchet's start, its long arm 60° up, on the engine's frame (its H, as
+    // designed: L1 cos θi, or as a link gives it).
+    if (state.machine === 'whipper') Object.assign(built, { theta_i_deg: -150, H: engine.H || engine.L1 * Math.cos(engine.theta_i_deg * Math.PI / 180) });
     if (state.release_by === 'optimum' || !state.release_value.trim()) return built;
     return Object.assign(built, { [state.release_by]: state.release_value });
   }
@@ -212,11 +213,13 @@
     const base = designed ? engineOf(designed) : state.edit;
     if (!base) { box.textContent = 'Design an engine first (view 1).'; return; }
     if (!state.edit) state.edit = Object.assign({}, base);
-    // A slider for each of the engine's values the design has (a propped angle it has not).
-    for (const { key, dimension } of ENGINE.filter((f) => base[f.key] > 0)) {
+    // A slider for each of the engine's values the design has (a propped angle it has not; the
+    // whipper's θi, pytrebuchet's -150°, neither), reaching the edited value where a link takes it
+    // beyond the design's range.
+    for (const { key, dimension } of ENGINE.filter((f) => base[f.key] > 0 && !(f.key === 'theta_i_deg' && state.machine === 'whipper'))) {
       if (!(state.edit[key] > 0)) state.edit[key] = base[key];
-      const centre = base[key];
-      const [lo, hi] = key === 'theta_i_deg' ? [10, 80] : [centre * 0.3, centre * 2.5];
+      const centre = base[key], edited = state.edit[key];
+      const [lo, hi] = key === 'theta_i_deg' ? [10, 80] : [Math.min(centre * 0.3, edited * 0.9), Math.max(centre * 2.5, edited * 1.1)];
       const row = document.createElement('label');
       row.className = 'slider';
       row.innerHTML = `<span class="name"></span><input type="range" step="any"><output></output>`;
@@ -442,6 +445,7 @@
         state[key] = $(id).value;
         if (key === 'theta') blocks();
         if (key === 'theta' || key === 'F') state.edit = null;
+        if (key === 'machine' && state.view === 'edit') buildSliders();  // the whipper's θi is its own
         update();
       });
     }

@@ -222,6 +222,26 @@ try {
     `a floating arm is the program's: R ${floatingNative.R} m natively, ${floating.R} m in the page, relative ${floatingCloseness.toExponential(2)}; the pivot rolls over ${Math.max(...pivots) - Math.min(...pivots)} m`);
   await page.selectOption('#machine', 'hinged');
 
+  // ---- 5d. a whipper is the program's --machine whipper -------------------------------------------
+  // pytrebuchet's default whipper's parts, from a link to the edit view on its 5 m frame: the page's
+  // shot is the program's within 1e-9 in R, and the counterweight leaves the arm before the ball.
+  const whipperParts = { L1: 4, L2: 2, L3: 4, L4: 4, M: 100, m: 3, mb: 10, theta_i_deg: 30, H: 5 };
+  const link = new URLSearchParams({ view: 'edit', machine: 'whipper', edit: JSON.stringify(whipperParts) });
+  await page.goto(url + '#' + link.toString());
+  await page.reload();  // a new fragment alone does not load the page again
+  const whipper = await page.evaluate(async () => { await window.trebuchet.ready; return window.trebuchet.current(); });
+  const whipperNative = native(verify, ['shot', '--machine', 'whipper', '--L1', '4m', '--L2', '2m', '--L3', '4m', '--L4', '4m', '--M', '100kg', '--m', '3kg',
+    '--mb', '10kg', '--H', '5m', '--format', 'json']);
+  const whipperCloseness = whipper && whipper.R ? Math.abs(whipperNative.R - whipper.R) / whipperNative.R : Infinity;
+  check(whipper && whipper.engine.machine === 'whipper' && whipperCloseness < 1e-9 && whipper.t_counterweight_free < whipper.t_liftoff,
+    `a whipper is the program's: R ${whipperNative.R} m natively, ${whipper && whipper.R} m in the page, relative ${whipperCloseness.toExponential(2)}; ` +
+    `the counterweight leaves the arm at ${whipper && whipper.t_counterweight_free} s, the ball at ${whipper && whipper.t_liftoff} s`);
+  const phaseText = await page.evaluate(() => { window.trebuchet.viewer().setTime(0.5); return document.getElementById('viewer').textContent; });
+  check(/ride on the arm/.test(phaseText), `the viewer says the bodies ride on the arm: "${(phaseText.match(/phase I[^)]*?arm/) || [''])[0]}"`);
+  await page.goto(url);
+  await page.reload();
+  await page.evaluate(() => window.trebuchet.ready);
+
   // ---- 6. Monte Carlo over Web Workers is the run of one module ---------------------------------
   const request = { attested: { Lb: '9.5m', M: '2.5t..3.5t', m: '50kg' }, samples: 40, seed: 7 };
   const [whole, parts] = await page.evaluate(async (r) => [window.trebuchet.monteCarlo(r), await window.trebuchet.monteCarloParallel(r)], request);

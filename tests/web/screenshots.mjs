@@ -38,6 +38,12 @@ const views = {
     await page.selectOption('#machine', 'floating-arm');
     await page.evaluate(() => window.trebuchet.viewer().setTime(0.9));
   },
+  whipper: async (page) => {  // pytrebuchet's default whipper's parts on its 5 m frame, its weight off the arm, its ball still on it
+    const edit = JSON.stringify({ L1: 4, L2: 2, L3: 4, L4: 4, M: 100, m: 3, mb: 10, theta_i_deg: 30, H: 5 });
+    await page.goto(url + '#' + new URLSearchParams({ view: 'edit', machine: 'whipper', edit }).toString());
+    await page.reload();
+    await page.evaluate(async () => { await window.trebuchet.ready; window.trebuchet.viewer().setTime(1.3); });
+  },
   refused: async (page) => { await page.fill('#first', '5000m'); },
   imperial: async (page) => { await page.selectOption('#units', 'imperial'); },
 };
