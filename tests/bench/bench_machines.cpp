@@ -1,5 +1,6 @@
 // The machines and the contest (issue 36): the median wall time of one optimal shot of the same
-// engine built as each machine, with its ratio to the hinged one; then of the contest's
+// engine built as each machine, with its ratio to the hinged one; of pytrebuchet's default
+// whipper, with its ratio to the same parts hung as the paper's engine; then of the contest's
 // optimum within a school contest's limits (issue 36's bound: 1 s) and of its Pareto front of 20
 // points (bound: 10 s), for each machine.
 // Usage: bench-machines [seconds per point]
@@ -29,6 +30,16 @@ int main(int argc, char** argv) {
     if (k == 0) hinged = seconds;
     std::printf("%s,%.4e,%.3f\n", names[k], seconds, seconds / hinged);
   }
+  // The whipper's shot runs its whole forward swing for the optimum (docs/machines.md).
+  Engine whipper;
+  whipper.machine = MachineKind::whipper;
+  whipper.L1 = 4, whipper.L2 = 2, whipper.L3 = 4, whipper.L4 = 4, whipper.M = 100, whipper.m = 3, whipper.mb = 10;
+  whipper.theta_i_deg = whipper_theta_i_deg, whipper.whipper.H = 5, whipper.whipper.projectile_diameter = 0.2;
+  Engine hung = whipper;
+  hung.machine = MachineKind::hinged, hung.theta_i_deg = standard_theta_i_deg;
+  const double whip = median_seconds([&] { verify_engine(whipper, settings); }, budget);
+  const double paper = median_seconds([&] { verify_engine(hung, settings); }, budget);
+  std::printf("whipper (pytrebuchet's default),%.4e,%.3f\n", whip, whip / paper);
   std::printf("\nmachine,contest_optimum_s,pareto_20_s\n");
   for (int k = 0; k < 3; ++k) {
     ContestRequest r;  // a 0.5 kg ball, a beam of 1.5 kg/m, a box 4 m wide and 3 m high, at most 60 kg

@@ -112,6 +112,12 @@ for machine in ("fixed", "floating-arm"):
     compare(machine, ours, theirs)
     if ours["engine"].get("machine") != machine:
         failures.append(f"{machine}: the record's engine does not name its machine")
+# The whipper, on pytrebuchet's default parts and frame.
+whip = dict(L1="4m", L2="2m", L3="4m", L4="4m", M="100kg", m="3kg", mb="10kg", machine="whipper", H="5m", projectile_diameter="0.2m")
+ours, theirs = trebuchet.shot(whip), json.loads(shot_by_program(whip).stdout)
+compare("whipper", ours, theirs)
+if not ours["t_counterweight_free"] < ours["t_liftoff"]:
+    failures.append("whipper: its counterweight does not leave the arm before the ball")
 
 # A refusal: the same message as the program's, as an exception.
 bad = dict(ca, L4="-3m")

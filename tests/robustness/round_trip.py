@@ -4,8 +4,8 @@
 For every kind of engine (the paper's, propped, a beam given by its centre of mass and inertia
 or radius of gyration, a tapered beam, a beam of a given diameter, a box counterweight or one
 with its inertia, friction at each pin and in the trough, a rope in the air before the release,
-a release given by its pin angle, velocity angle or time, the fixed counterweight and the
-floating arm):
+a release given by its pin angle, velocity angle or time, the fixed counterweight, the
+floating arm and the whipper on its frame):
   - the `engine` member of `shot --format json`, fed back as a design, gives the same record,
     every number equal to the last bit (JSON numbers are written to round-trip doubles);
   - the CSV of `shot --format csv --digits 17`, fed back, gives the same row (with the "error"
@@ -38,7 +38,10 @@ KINDS = {
     "release_time": ["--mb", "174kg", "--release-time", "1s"],
     "fixed": ["--mb", "174kg", "--machine", "fixed", "--counterweight-inertia", "300"],
     "floating_arm": ["--mb", "174kg", "--machine", "floating-arm"],
+    "whipper": ["--mb", "10kg", "--machine", "whipper", "--H", "5.5m", "--rope-angle", "12", "--projectile-diameter", "25cm"],
 }
+# The whipper on pytrebuchet's default parts: the paper's engines' short arm L3 would turn it backwards.
+ENGINE_OF = {"whipper": ["--L1", "4m", "--L2", "2m", "--L3", "4m", "--L4", "4m", "--M", "100kg", "--m", "3kg"]}
 SETTINGS_FLAGS = {"--air", "--drag-in-sling"}
 
 
@@ -54,13 +57,14 @@ def main():
     with tempfile.TemporaryDirectory() as work:
         for kind, flags in KINDS.items():
             settings = [f for f in flags if f in SETTINGS_FLAGS]
-            record = json.loads(verify(ENGINE + flags + ["--format", "json"], work))
+            engine = ENGINE_OF.get(kind, ENGINE)
+            record = json.loads(verify(engine + flags + ["--format", "json"], work))
             with open(os.path.join(work, "engine.json"), "w") as f:
                 json.dump(record["engine"], f)
             again = json.loads(verify(["engine.json", "--format", "json"] + settings, work))
             json_same = again == record
 
-            table = verify(ENGINE + flags + ["--format", "csv", "--digits", "17"], work)
+            table = verify(engine + flags + ["--format", "csv", "--digits", "17"], work)
             with open(os.path.join(work, "engine.csv"), "w") as f:
                 f.write(table)
             read_back = verify(["engine.csv", "--format", "csv", "--digits", "17"] + settings, work)
