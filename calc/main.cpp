@@ -252,7 +252,8 @@ int main(int argc, char** argv) {
   app.add_option("--table", options.table_file, "constants file in the schema of data/cpnc.json");
   app.add_option("--machine", options.machine,
                  "hinged (the paper's, tab:CPNC), fixed or floating-arm: the optimal engine of that machine, its counterweight at the "
-                 "short arm's end, from its own scaling table (data/cpnc-fixed.json, data/cpnc-floating-arm.json; docs/machines.md)");
+                 "short arm's end, from its own scaling table (data/cpnc-fixed.json, data/cpnc-floating-arm.json; docs/machines.md); "
+                 "whipper is refused: it has no table");
 
   return run_program(app, Program::calc, argc, argv, [&] { return run(options, app.count("--format") > 0, app.count("--F") > 0); });
 }

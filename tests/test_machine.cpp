@@ -289,3 +289,23 @@ TEST_CASE("the fixed counterweight and the floating arm with friction and air ba
   bolted.parts.hinge_friction = 0.003;
   CHECK_THROWS_AS(FixedCounterweight(bolted), Error);
 }
+
+// The fixed counterweight's centre lies L3 beyond the short arm's end: held level, it bends the
+// beam at the pivot by M g (L2 + L3), and the stress at rest is that moment over the section
+// modulus pi D^3/32 (the hinged engine's hangs from the arm's end: M g L2).
+TEST_CASE("the fixed counterweight's beam at rest carries its weight at its own lever", "[machine]") {
+  Engine e = trebuchet::testing::alcala_ca();
+  e.D = 0.3;
+  e.L3 = 0.4;
+  ShotSettings settings;
+  for (MachineKind machine : {MachineKind::hinged, MachineKind::fixed}) {
+    e.machine = machine;
+    const Verification v = verify_engine(e, settings);
+    REQUIRE(v.beam);
+    const double lever = machine == MachineKind::fixed ? e.L2 + e.L3 : e.L2;
+    const double expected = e.M * e.material.g * lever * 32 / (M_PI * e.D * e.D * e.D);
+    std::printf("%s: stress at rest %.9g Pa, M g lever 32/(pi D^3) = %.9g Pa\n", machine == MachineKind::fixed ? "fixed" : "hinged",
+                v.beam->stress_at_rest, expected);
+    CHECK(v.beam->stress_at_rest == Approx(expected).epsilon(1e-12));  // two orders of the same products
+  }
+}

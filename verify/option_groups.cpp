@@ -91,7 +91,8 @@ void machine_option(CLI::App* app, Options& o) {
   parsed_option(
       app, "--machine", [&o](const std::string& text) { o.design.machine = parse_machine(text, "--machine"); },
       "the machine: hinged (the paper's counterweight on its arm L3), fixed (bolted to the short arm, its centre L3 beyond the arm's "
-      "end) or floating-arm (the axle rolling on a rail, the counterweight L3 below its pin in a vertical guide) (default hinged; "
+      "end), floating-arm (the axle rolling on a rail, the counterweight L3 below its pin in a vertical guide) or whipper (the "
+      "paper's, started with its arm forward and up on a frame --H, the counterweight and the ball resting on it) (default hinged; "
       "docs/machines.md)");
 }
 

@@ -56,7 +56,7 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
   }
 
   s.compare = app.add_subcommand("compare",
-                                 "one engine's parts built as each machine, hinged, fixed and floating-arm, side by side: range, eps, "
+                                 "one engine's parts built as each machine, hinged, fixed, floating-arm and whipper, side by side: range, eps, "
                                  "the release, the pin to bend and the peak loads");
   {
     CLI::App* c = s.compare;

@@ -82,11 +82,12 @@
     return Object.assign(built, { [state.release_by]: state.release_value });
   }
   // The engine keys a design or shot answer carries, as the programs read them back: the
-  // engine's values, its diameter and its material (F follows from L3).
+  // engine's values, its diameter and its material (F follows from L3, and H from L1 and θi,
+  // which the sliders change; the whipper's H is asBuilt's).
   function engineOf(answer) {
     const engine = {};
     for (const f of INPUTS)
-      if (f.operations.includes('shot') && f.key !== 'F' && ['engine', 'alternative', 'material'].includes(f.group) && answer[f.key] !== undefined) engine[f.key] = answer[f.key];
+      if (f.operations.includes('shot') && !['F', 'H'].includes(f.key) && ['engine', 'alternative', 'material'].includes(f.group) && answer[f.key] !== undefined) engine[f.key] = answer[f.key];
     if (engine.D === 0) delete engine.D;
     return engine;
   }

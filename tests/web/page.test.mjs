@@ -173,6 +173,17 @@ try {
     slider.value = String(Number(slider.value) * 0.9);
     slider.dispatchEvent(new Event('input'));
   });
+  // A drag of L1 and θi, which set the pivot's height: the edited engine still shoots (a stale H
+  // in the edited engine would be refused by the program).
+  const dragged = await page.evaluate(() => {
+    for (const key of ['L1', 'theta_i_deg']) {
+      const slider = document.querySelector(`#sliders input[data-key="${key}"]`);
+      slider.value = String(Number(slider.value) * 1.05);
+      slider.dispatchEvent(new Event('input'));
+    }
+    return { shot: window.trebuchet.current(), text: document.getElementById('viewer').textContent.slice(0, 160) };
+  });
+  check(dragged.shot !== null && dragged.shot.R > 0, `a drag of L1 and θi shoots the edited engine: R ${dragged.shot && dragged.shot.R} m ${dragged.shot ? '' : dragged.text}`);
   const shared = await page.evaluate(() => ({ url: location.href, state: window.trebuchet.state(), R: document.querySelector('#viewer .tv-figures td').textContent }));
   const second = await open(browser, shared.url);
   const restored = await second.page.evaluate(() => ({ state: window.trebuchet.state(), R: document.querySelector('#viewer .tv-figures td').textContent }));

@@ -110,6 +110,13 @@ Engine engine_of(const ScaledDesign& design, double L2, const Material& material
   e.mb = design.mu_b * e.M;
   e.material = material;
   e.machine = design.machine;
+  if (design.machine == MachineKind::whipper) {  // its frame, rope and ball at the same scale (scaled_design's inverse)
+    e.L3 = design.L() * L2;
+    e.psi_i_deg = 0;
+    e.whipper.H = design.H.value_or(0) * L2;
+    e.whipper.rope_angle_deg = design.theta_i_deg - design.psi_i_deg;
+    e.whipper.projectile_diameter = 2 * design.projectile_radius * L2;
+  }
   return e;
 }
 
@@ -200,6 +207,12 @@ void check_parts(const Engine& e) {
   if (!(p.counterweight_inertia >= 0))
     throw Error(ErrorKind::bad_number, "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + ": a moment of inertia must not be negative");
   // Its radius of gyration sqrt(I/M) beyond twice the arm: a counterweight that could not swing under the beam.
+  // A counterweight bolted on is no larger than the beam it rides on.
+  if (e.machine == MachineKind::fixed && !(p.counterweight_inertia <= e.M * beam_length(e) * beam_length(e)))
+    throw Error(ErrorKind::bad_number,
+                "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + " kg m^2 gives the counterweight a radius of gyration of " +
+                    say(std::sqrt(p.counterweight_inertia / e.M)) + " m, more than the beam's length Lb = " + say(beam_length(e)) +
+                    " m; a box of width w and height h has M (w^2 + h^2)/12");
   if (e.machine != MachineKind::fixed && e.machine != MachineKind::floating_arm && !(p.counterweight_inertia <= e.M * 4 * e.L3 * e.L3))
     throw Error(ErrorKind::bad_number,
                 "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + " kg m^2 gives the counterweight a radius of gyration of " +

@@ -38,16 +38,22 @@ void ReleaseWatch::add(double value, bool forward) {
   forward_ended = forward_ended || (!forward && forward_lo <= forward_hi);
 }
 
-void refuse_given_release(const GivenRelease& given, const ReleaseWatch& watch, const std::string& what) {
+void refuse_given_release(const GivenRelease& given, const ReleaseWatch& watch, const std::string& what, bool whole_turns) {
   static const char* names[] = {"{{release_time}}", "{{release_angle}}", "{{pin_angle}}"};
   static const char* quantities[] = {"the time", "the projectile's velocity angle", "the pin angle"};
   const int k = static_cast<int>(given.by);
   const bool rises = given.by == ReleaseBy::time;
-  std::string message = std::string(names[k]) + " = " + shown(given, given.value) + ": " + what + "; after lift-off " + quantities[k] +
-      " runs from " + shown(given, watch.at_liftoff) + " to " + shown(given, rises ? watch.highest : std::max(watch.lowest, -M_PI));
+  // The whipper's angles turn on past -180 deg: their sweep, and its values as angles again.
+  const bool turning = whole_turns && !rises;
+  const auto wrapped = [&](double a) { return turning ? std::remainder(a, 2 * M_PI) : a; };
+  std::string message = std::string(names[k]) + " = " + shown(given, given.value) + ": " + what + "; after " +
+      (whole_turns ? "the projectile leaves the arm " : "lift-off ") + quantities[k] + " runs from " + shown(given, watch.at_liftoff) +
+      (turning ? " down through a further " + shown(given, watch.at_liftoff - watch.lowest)
+               : " to " + shown(given, rises ? watch.highest : std::max(watch.lowest, -M_PI)));
   if (watch.forward_lo <= watch.forward_hi)
-    message += ", and the projectile flies forward for values from about " + shown(given, rises ? watch.forward_lo : watch.forward_hi) + " to " +
-        shown(given, rises ? watch.forward_hi : watch.forward_lo);
+    message += std::string(", and the projectile flies forward") + (whole_turns ? " and up" : "") + " for values from about " +
+        shown(given, wrapped(rises ? watch.forward_lo : watch.forward_hi)) + " to " +
+        shown(given, wrapped(rises ? watch.forward_hi : watch.forward_lo));
   else
     message += ", and no release in it throws the projectile forward";
   throw Error(ErrorKind::bad_number, message);

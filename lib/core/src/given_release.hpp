@@ -36,6 +36,7 @@ struct ReleaseWatch {
 
 /// Error(bad_number) for a given release that does not come after lift-off, or that throws the
 /// projectile backward: `what` went wrong, and the values that do occur, in seconds or degrees.
-[[noreturn]] void refuse_given_release(const GivenRelease& given, const ReleaseWatch& watch, const std::string& what);
+/// With `whole_turns` (the whipper's angles, which turn through -180 deg) the angles run on, unwrapped.
+[[noreturn]] void refuse_given_release(const GivenRelease& given, const ReleaseWatch& watch, const std::string& what, bool whole_turns = false);
 
 }  // namespace trebuchet

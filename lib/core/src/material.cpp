@@ -49,12 +49,12 @@ double beam_diameter(double mb, double Lb, const Material& material) {  // eq:Be
   return std::sqrt(4 * mb / (material.wood_density * M_PI * Lb));
 }
 
-BeamStrength beam_strength(double D, double L2, double M, double peak_moment, const Material& material) {
+BeamStrength beam_strength(double D, double L2, double M, double peak_moment, const Material& material, double lever) {
   BeamStrength out;
   out.D = D;
   const double second_moment = M_PI / 64 * std::pow(D, 4);  // I of eq:bend_L2 [m^4]
   out.beta2 = M * material.g * L2 * L2 / (3 * material.youngs_modulus * second_moment);  // eq:bend_L2
-  out.strain_at_rest = 3 * D / (2 * L2) * out.beta2;  // eq:Strain
+  out.strain_at_rest = 3 * D / (2 * L2) * out.beta2 * lever;  // eq:Strain, M g L2 lever at the pivot
   out.stress_at_rest = material.youngs_modulus * out.strain_at_rest;
   out.stress_peak = peak_moment * (D / 2) / second_moment;
   out.strain_peak = out.stress_peak / material.youngs_modulus;

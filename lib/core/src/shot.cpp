@@ -21,16 +21,18 @@ namespace {
 constexpr double abandon_trough_cos_phi = 2 * refuse_trough_cos_phi;
 
 // Where the model stops holding (issue 12): the sling pushes instead of pulling, or the
-// counterweight or the beam's tip passes below the engine's base. Each is a continuous function
-// of time, negative when the condition fails; the first time each turns negative is kept.
-constexpr int condition_count = 3;
+// counterweight or the beam's tip passes below the engine's base, or the whipper's arm would pull
+// the counterweight it holds. Each is a continuous function of time, negative when the condition
+// fails; the first time each turns negative is kept.
+constexpr int condition_count = 4;
 using Conditions = std::array<double, condition_count>;
 // A condition fails below -1e-9 (scaled: M g for the tension, L2 for heights), so that round-off
 // cannot raise it where it holds with equality: an F = 1 counterweight hanging straight down
 // touches the base's level.
 constexpr double condition_slack = 1e-9;
 Conditions conditions_of(const Snapshot& s) {
-  return {s.sling_tension + condition_slack, s.counterweight_height + condition_slack, s.tip_height + condition_slack};
+  return {s.sling_tension + condition_slack, s.counterweight_height + condition_slack, s.tip_height + condition_slack,
+          s.counterweight_push + condition_slack};
 }
 using Onsets = std::array<std::optional<double>, condition_count>;
 
@@ -264,6 +266,14 @@ Candidate release_time(const Objective& objective, double lo, double hi, const s
 
 [[noreturn]] void fail(const std::string& reason) { throw Error(ErrorKind::numerical, reason); }
 
+// Whether a release throws: forward from above the base; the whipper's, forward and up. Its ball
+// first drops off the arm forward and down, a throw of a metre or less (and of a force factor
+// near 0, the sling lying along the arm, which would inflate Q); the whip throws it forward and
+// up, as pytrebuchet releases it (docs/machines.md, "The whipper").
+bool throws(const ScaledDesign& e, const ReleasePoint& r) {
+  return r.range > 0 && (e.machine != MachineKind::whipper || (r.velocity_angle > 0 && r.velocity_angle < M_PI / 2));
+}
+
 // Coulomb friction as modelled acts only while a pin turns (sliding, no sticking). Where its
 // friction can hold the pin, the pin's turn reaches zero and then reverses at nearly every
 // accepted step, or creeps on at round-off while the rejected steps chatter about zero: the pin
@@ -390,6 +400,7 @@ ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criter
   r.pin_angle = pin_angle(snap);
   if (r.range > 0) {
     r.quality = quality(r.range, e.l, e.mu, r.efficiency, r.force_factor, criterion.n);
+    if (!throws(e, r)) return r;
     switch (criterion.release) {
       case Release::quality: r.objective = r.quality; break;
       case Release::efficiency: r.objective = r.efficiency; break;
@@ -447,8 +458,9 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   if (!(snap.theta_ddot > 0)) {
     if (whips)
       fail(
-          "the whipper's beam starts to turn backwards, away from the throw: the weight resting on its arm lies too far behind the pivot; "
-          "lengthen the counterweight's rope {{L3}}, or give the rope a larger angle off the arm ({{rope_angle_deg}})");
+          "the whipper's beam starts to turn backwards, away from the throw: what rests on its arm, the counterweight (or a heavy ball on a "
+          "sling longer than the long arm), lies too far behind the pivot; lengthen the counterweight's rope {{L3}}, turn it less off the arm "
+          "(a smaller {{rope_angle_deg}}), or lighten the projectile {{m}}");
     fail("the beam starts to turn away from the throw (the counterweight, propped at psi_i = " + format_significant(e.psi_i_deg, 4) +
          " deg, pulls the short arm backwards); " +
          (e.psi_i_deg > 0 ? std::string("prop it less, or back ({{psi_i_deg}} < 0)") : std::string("hold it back less ({{psi_i_deg}} nearer 0)")));
@@ -544,7 +556,7 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   if (given) {
     watch.at_liftoff = watch.lowest = watch.highest = watched_value(given->by, t, lift_snapshot, M_PI / 2);
     if (whips && given->by != ReleaseBy::time) given->value -= 2 * M_PI * std::ceil((given->value - watch.at_liftoff) / (2 * M_PI));
-    watch.add(watch.at_liftoff, at_liftoff.range > 0);
+    watch.add(watch.at_liftoff, throws(e, at_liftoff));
     given_in_trough = !(ahead_of(*given, watch.at_liftoff) > 0);
   }
   h = 1e-3;
@@ -565,7 +577,7 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     if (here.range > 0) highest_apex = std::max(highest_apex, here.height + std::pow(std::max(here.velocity.y, 0.0), 2) / 2);  // scaled, g = 1
     if (given) {
       const double before = watch.last;
-      watch.add(watched_value(given->by, t, snap, before), here.range > 0);
+      watch.add(watched_value(given->by, t, snap, before), throws(e, here));
       if (!given_in_trough && !watch.crossed && !(ahead_of(*given, watch.last) > 0)) watch.crossed = phase2.samples().size() - 1, watch.near = before;
     }
     // An angle below -180 deg (the whipper's: a whole turn below the given one) has passed every value it could be given.
@@ -591,9 +603,11 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   // where the search stopped past it, the swing is followed on to its end.
   const auto refuse_given = [&](const std::string& what) {
     while (!ended) ended = step_ends_shot();
-    refuse_given_release(*given, watch, what);
+    refuse_given_release(*criterion.given, watch, what, whips);  // the value as given, not moved by whole turns
   };
-  if (given_in_trough) refuse_given("the release would come before lift-off, with the projectile still in the trough");
+  if (given_in_trough)
+    refuse_given(whips ? "the release would come before the projectile leaves the arm"
+                       : "the release would come before lift-off, with the projectile still in the trough");
   if (given && !watch.crossed) refuse_given("the release never comes: the beam's forward swing ends first");
   // No release with a positive objective: under Release::range with a target level above the
   // base, the flights go forward but none comes down at that level; else none goes forward.
@@ -681,6 +695,7 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   result.slack_sling = before_release(onsets[0]);
   result.counterweight_below_base = before_release(onsets[1]);
   result.tip_below_base = before_release(onsets[2]);
+  result.counterweight_pulled = before_release(onsets[3]);
   // The builder's loads: the largest sampled value of each over the phases (each before the
   // release ends on its last sample, phase II on the release), refined once, in its phase.
   const auto at_release = load_values(dynamics.snapshot(Phase::lifted, result.release.state));

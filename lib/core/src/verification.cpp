@@ -100,7 +100,8 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   const double load_unit[load_count] = {Mg, Mg, Mg, Mg * L2};  // LoadIndex, scaled in M g and M g L2
   for (int k = 0; k < load_count; ++k) out.loads[k] = {shot.loads[k].value * load_unit[k], shot.loads[k].t * time_unit};
   const double D = engine.D > 0 ? engine.D : engine.mb > 0 ? beam_diameter(engine.mb, beam_length(engine), engine.material) : 0;
-  if (D > 0 && scaled_design(engine).short_section()) out.beam = beam_strength(D, L2, engine.M, out.loads[beam_moment_load].value, engine.material);
+  if (const ScaledDesign d = scaled_design(engine); D > 0 && d.short_section())
+    out.beam = beam_strength(D, L2, engine.M, out.loads[beam_moment_load].value, engine.material, d.counterweight_lever());
   if (engine.D > 0 && engine.mb > 0 && !engine.parts.D_tip) {
     // The beam's mass moves the engine, its diameter carries the stress: a pair that disagrees
     // with the wood (eq:BeamMass) by more than 10 % is said to, with the density it implies.
@@ -117,6 +118,8 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   };
   warn(shot.slack_sling, "the sling goes slack (it would push the projectile)");
   warn(shot.counterweight_below_base, "the counterweight passes below the engine's base");
+  warn(shot.counterweight_pulled,
+       "the whipper's arm would pull the counterweight it holds (the push between them changes sign before pytrebuchet's rule lets it go)");
   warn(shot.tip_below_base, "the beam's tip passes below the engine's base");
   return out;
 }
@@ -153,6 +156,9 @@ ReleaseCriterion release_criterion(const Engine& engine, const ShotSettings& set
 
 ScaledDesign shot_design(const Engine& engine, const ShotSettings& settings) {
   ScaledDesign design = scaled_design(engine);
+  // The whipper's ball, not given, is a sphere of the air's projectile density, as its drag's.
+  if (engine.machine == MachineKind::whipper && !engine.whipper.projectile_diameter && settings.air)
+    design.projectile_radius = sphere_diameter(engine.m, settings.air->projectile_density) / 2 / engine.L2;
   if (settings.air && settings.drag_in_sling) {
     design.parts.drag = scaled(drag_of(*settings.air, engine.m), engine.L2, engine.material.g);
     // rho Cd d/2 per length and speed squared [N s^2/m^3], in M g per L2 and (g L2) (section 3)
@@ -164,7 +170,10 @@ ScaledDesign shot_design(const Engine& engine, const ShotSettings& settings) {
 ShotSettings settings_for(const Engine& engine, const ShotSettings& settings) {
   ShotSettings out = settings;
   const std::optional<double>& d = engine.whipper.projectile_diameter;
-  if (out.air && engine.machine == MachineKind::whipper && d) out.air->projectile_density = engine.m / (M_PI / 6 * *d * *d * *d);  // m/volume
+  if (!(out.air && engine.machine == MachineKind::whipper && d)) return out;
+  if (out.air->projectile_density != Air{}.projectile_density)
+    throw Error(ErrorKind::usage, "{{projectile}} and {{projectile_diameter}} both size the whipper's ball (with its mass m); give one of them");
+  out.air->projectile_density = engine.m / (M_PI / 6 * *d * *d * *d);  // m over its volume
   return out;
 }
 

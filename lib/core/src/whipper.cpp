@@ -102,9 +102,10 @@ Snapshot Whipper::snapshot_with(Phase phase, const State& s, const Motion& m, Ve
   const Vec2 cw_force{cw_acceleration.x, cw_acceleration.y + 1};  // all but its weight
   const Vec2 rope{-sp, cp};
   if (phase == Phase::held) {
-    const double pull = split(cw_force, rope, upper)[0];
+    const auto [pull, push] = split(cw_force, rope, upper);
     out.hinge_force = {pull * rope.x, pull * rope.y};
     out.counterweight_on_arm = m.free[1] - m.free[0];
+    out.counterweight_push = push;
   } else {
     out.hinge_force = cw_force;
   }

@@ -54,6 +54,9 @@ struct Snapshot {
   /// The whipper's, in phase held: the counterweight's angular acceleration relative to the beam,
   /// psi'' - theta'' (scaled), were the arm to let it go; > 0 while it presses on the arm.
   double counterweight_on_arm = 0;
+  /// The whipper's, in phase held: the arm's push on the counterweight along its upper normal
+  /// (M g; < 0: the arm would have to pull it, and the model, holding it there, no longer holds).
+  double counterweight_push = 0;
   double sling_tension = 0;  ///< pull of the sling on the projectile along it (< 0: it would push, the sling is slack)
   double counterweight_height = 0;  ///< of the counterweight above the engine's base (< 0: below it)
   double tip_height = 0;  ///< of the beam's tip above the engine's base (< 0: below it)

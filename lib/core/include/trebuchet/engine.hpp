@@ -98,7 +98,8 @@ std::optional<double> given_beam_inertia(const Engine& engine);
 double wood_beam_mass(const Engine& engine);
 
 /// The engine of a scaled design at short arm L2 [m] (eq:Design), its counterweight mass and
-/// beam diameter from eq:ExtraScalings, m = mu M and mb = mu_b M.
+/// beam diameter from eq:ExtraScalings, m = mu M and mb = mu_b M; a whipper's frame, rope angle
+/// and ball as the design has them.
 Engine engine_of(const ScaledDesign& design, double L2, const Material& material);
 
 /// The validation every engine passes, given or computed: lengths and masses positive (mb may

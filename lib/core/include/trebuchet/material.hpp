@@ -64,8 +64,10 @@ struct BeamStrength {
 };
 /// The strength of a beam of diameter `D` [m] at short arm `L2` [m] under a counterweight `M`
 /// [kg], whose largest bending moment at the pivot in the shot is `peak_moment` [N m]: the
-/// stress of a moment is its moment over the section modulus pi D^3/32.
-BeamStrength beam_strength(double D, double L2, double M, double peak_moment, const Material& material);
+/// stress of a moment is its moment over the section modulus pi D^3/32. `lever` places the
+/// counterweight's weight at rest, in L2 (ScaledDesign::counterweight_lever: 1 + L3/L2 for the
+/// fixed counterweight, whose centre lies beyond the arm's end, 1 for those hung from it).
+BeamStrength beam_strength(double D, double L2, double M, double peak_moment, const Material& material, double lever = 1);
 /// Factors that carry an optimal engine from one size and material to another at the same
 /// scaled design, by eq:ExtraScalings: lengths and R with the length ratio, masses with the
 /// ratio of M, D with that of D, energies with that of M g L2. Section 7: beta2 from 1/300 to

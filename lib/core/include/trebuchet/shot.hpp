@@ -77,6 +77,8 @@ struct ShotResult {
   // Where the model stops holding before the release, the scaled time it starts; none when it holds.
   std::optional<double> slack_sling;  ///< the sling would push the projectile (tension < 0)
   std::optional<double> counterweight_below_base;  ///< the counterweight passes below the engine's base
+  /// the whipper's arm would pull the counterweight it holds (pytrebuchet's rule lets it go later)
+  std::optional<double> counterweight_pulled;
   std::optional<double> tip_below_base;  ///< the beam's tip passes below the engine's base
 };
 
