@@ -1,5 +1,6 @@
 // trebuchet-verify complete: an engine from what a source attests (issue 14). Attested values
 // are kept to 1e-9, the free ones are the best choice, and conflicts are named.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <iostream>
@@ -49,6 +50,15 @@ TEST_CASE("complete keeps every attested value and verifies the engine", "[compl
     kept(c.engine.mb, 2000, "mb");
     CHECK(c.chosen == std::vector<std::string>{"L4"});
   }
+  SECTION("a beam mass and diameter fix the beam's length (eq:BeamMass)") {
+    CompletionRequest r;  // 470 kg of wood of 700 kg/m3, 0.3 m across: Lb = 470/(700 pi/4 0.3^2) = 9.4986 m
+    r.attested.mb = 470, r.attested.D = 0.3, r.attested.M = 3000, r.attested.m = 50;
+    const Completion c = complete_engine(r);
+    kept(c.engine.L1 + c.engine.L2, 470 / (700 * M_PI / 4 * 0.09), "Lb");
+    kept(c.engine.mb, 470, "mb");
+    kept(c.engine.D, 0.3, "D");
+    CHECK(std::find(c.implied.begin(), c.implied.end(), "Lb (from mb and D, eq:BeamMass)") != c.implied.end());
+  }
 }
 
 TEST_CASE("the free values are the best: no small change of one raises Q", "[complete]") {
@@ -89,7 +99,10 @@ TEST_CASE("conflicting or unbounded subsets are named errors", "[complete]") {
   CHECK_THAT(message(a), Catch::Contains("L1 = 8 m, but Lb - L2 = 7.5 m"));
   a = Attested{};
   a.Lb = 10, a.L1 = 8, a.D = 0.5, a.mb = 100, a.M = 3000, a.m = 50;
-  CHECK_THAT(message(a), Catch::Contains("mb = 100 kg, but D = 0.5 m gives mb = 1374.45 kg by eq:BeamMass"));
+  CHECK_THAT(message(a), Catch::Contains("mb = 100 kg and D = 0.5 m make a beam 0.727565 m long by eq:BeamMass"));
+  // Without L1 and L2 the diameter still contradicts the mass, through Lb (issue 38: it was accepted).
+  a.L1.reset();
+  CHECK_THAT(message(a), Catch::Contains("make a beam 0.727565 m long by eq:BeamMass with wood of 700 kg/m3, but Lb = 10 m"));
   a = Attested{};
   a.Lb = 10, a.m = 50;
   CHECK_THAT(message(a, Release::range), Catch::Contains("give M and m for quality range"));

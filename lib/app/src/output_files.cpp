@@ -46,12 +46,32 @@ PendingOutput::PendingOutput(std::string path, std::string option, bool folder, 
   // name no other run can hold.
   std::string base = path_;
   while (base.size() > 1 && base.back() == '/') base.pop_back();
+  // The folders it is to stand in are made, as mkdir -p makes them, and taken away again if the
+  // run fails: the first missing one, with all it holds.
+  const fs::path parent = fs::path(base).parent_path();
+  std::error_code ec;
+  if (!parent.empty() && fs::exists(parent, ec) && !fs::is_directory(parent, ec))
+    throw Error(ErrorKind::usage, fail + ": '" + parent.string() + "' is a file, not a folder; give a folder you can write to");
+  if (!parent.empty() && !fs::exists(parent, ec)) {
+    fs::path first_missing = parent;
+    while (first_missing.has_parent_path() && first_missing.parent_path() != first_missing && !fs::exists(first_missing.parent_path(), ec))
+      first_missing = first_missing.parent_path();
+    if (!fs::create_directories(parent, ec) || ec)
+      throw Error(ErrorKind::usage,
+                  fail + ": cannot make the folder '" + parent.string() + "' (" + ec.message() + "); give a folder you can write to");
+    made_ = first_missing.string();
+  }
   std::string name = base + ".part-XXXXXX";
+  // A constructor that throws has no destructor: the folders it made go here.
+  const auto refuse = [&](const std::string& message) {
+    if (!made_.empty()) fs::remove_all(made_, ec);
+    throw Error(ErrorKind::usage, message);
+  };
   if (folder_) {
-    if (!mkdtemp(name.data())) throw Error(ErrorKind::usage, fail + ": cannot make a folder beside it; give a folder you can write to");
+    if (!mkdtemp(name.data())) refuse(fail + ": cannot make a folder beside it; give a folder you can write to");
   } else {
     const int fd = mkstemp(name.data());
-    if (fd < 0) throw Error(ErrorKind::usage, fail + "; give a file you can write to");
+    if (fd < 0) refuse(fail + "; give a file you can write to");
     // mkstemp makes it private (0600); the output gets the mode a new file would get, or the
     // mode of the file it replaces.
     const mode_t mask = umask(0);
@@ -67,6 +87,7 @@ PendingOutput::~PendingOutput() {
   if (committed_ || direct_) return;
   std::error_code ec;
   fs::remove_all(temporary_, ec);
+  if (!made_.empty()) fs::remove_all(made_, ec);
 }
 
 void PendingOutput::commit() {

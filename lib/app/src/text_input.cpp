@@ -96,6 +96,38 @@ std::size_t json_depth(std::string_view text) {
   return deepest;
 }
 
+std::optional<std::vector<std::string_view>> array_members(std::string_view text) {
+  const std::size_t open = text.find_first_not_of(" \t\r\n", text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0);
+  if (open == std::string_view::npos || text[open] != '[') return std::nullopt;
+  std::vector<std::string_view> members;
+  std::size_t depth = 0, begin = open + 1;
+  bool in_string = false;
+  for (std::size_t i = open + 1; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      ++depth;
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    } else if ((c == ',' || c == ']') && depth == 0) {
+      const std::string_view member = text.substr(begin, i - begin);
+      if (member.find_first_not_of(" \t\r\n") != std::string_view::npos)
+        members.push_back(member);
+      else if (c == ',' || !members.empty())
+        return std::nullopt;  // an empty member, or a trailing comma
+      if (c == ']') return text.find_first_not_of(" \t\r\n", i + 1) == std::string_view::npos ? std::optional(members) : std::nullopt;
+      begin = i + 1;
+    }
+  }
+  return std::nullopt;
+}
+
 namespace {
 
 // A SAX reader that finds the first key given twice in one object: nlohmann keeps the last

@@ -42,6 +42,23 @@ DesignInputs read_design_inputs(const std::string& text, const std::string& path
     in.single = false;
     return in;
   }
+  // An array nesting too deep in some member: the others are answered, each deep one refused by
+  // its index, as any other bad member is.
+  if (json_depth(text) > max_json_depth)
+    if (const auto members = array_members(text)) {
+      in.single = false;
+      for (std::size_t i = 0; i < members->size(); ++i) {
+        const std::string where = "design[" + std::to_string(i) + "]";
+        DesignRows::Row row{0, nullptr, {}, ""};
+        if (json_depth((*members)[i]) > max_json_depth - 1)
+          row.error = where + " nests arrays or objects more than " + std::to_string(max_json_depth) + " levels deep; give " + expected;
+        else
+          row.design = parse_json(std::string((*members)[i]), source_name(path) + " " + where, expected);
+        in.rows.push_back(std::move(row));
+        in.where.push_back(where);
+      }
+      return in;
+    }
   nlohmann::json json = parse_json(text, source_name(path), expected);
   if (!json.is_object() && !json.is_array())
     throw Error(ErrorKind::usage, source_name(path) + " holds " + brief_json(json) + ", not a design; give " + expected);

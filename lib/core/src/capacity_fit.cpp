@@ -9,6 +9,17 @@
 
 namespace trebuchet {
 
+void check_capacity_size(double R, double target, bool energy, const Material& material) {
+  check_ordinary(R, 1e-6, 1e6, "R", "m", "range");
+  const double m = energy ? 2 * target / (material.g * R) : target;  // T ~ m g R / 2 (section 4)
+  if (!(m >= 1e-9 && m <= 1e12))
+    throw Error(ErrorKind::bad_number,
+                (energy ? "{{T}} = " + format_significant(target, 4) + " J at {{R}} = " + format_significant(R, 4) +
+                         " m asks a stone of about m = 2T/(gR), " + (std::isfinite(m) ? format_significant(m, 3) + " kg, " : std::string())
+                        : "the stone {{m}} = " + format_significant(target, 4) + " kg is ") +
+                    "outside the ordinary masses 1e-09 to 1e+12 kg; give a capacity of ordinary size");
+}
+
 namespace {
 
 // What the fit matches besides R: the energy T [J] (section 5) or the projectile's mass m [kg].
@@ -71,15 +82,7 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
   // M g L2 ~ L2^5 (eq:ExtraScalings) gives L2 and M.
   const double T_guess = matched == Matched::energy ? target : target * material.g * R / 2;
   const double m_guess = 2 * T_guess / (material.g * R);
-  // A capacity of ordinary size: the range as a length, and the stone it takes (T ~ m g R / 2)
-  // as a mass, so that every guess and trial below stays finite.
-  check_ordinary(R, 1e-6, 1e6, "R", "m", "range");
-  if (!(m_guess >= 1e-9 && m_guess <= 1e12))
-    throw Error(ErrorKind::bad_number,
-                (matched == Matched::energy ? "{{T}} = " + format_significant(target, 4) + " J at {{R}} = " + format_significant(R, 4) +
-                         " m asks a stone of about m = 2T/(gR)"
-                                            : std::string("the stone {{m}}")) +
-                    ", outside the ordinary masses 1e-09 to 1e+12 kg; give a capacity of ordinary size");
+  check_capacity_size(R, target, matched == Matched::energy, material);
   const double drop_per_L2_5 = extra_scalings(shape.K(), 1.0, material).energy_unit * shape.energy_drop();  // Delta U at L2 = 1 m [J]
   const double L2_guess = std::pow(T_guess / (0.9 * drop_per_L2_5), 0.2);
   const bool warm = shape.mu > 0;

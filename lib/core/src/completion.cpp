@@ -163,16 +163,34 @@ Completion complete_engine(const CompletionRequest& request) {
     throw Error(ErrorKind::usage,
                 "complete builds a uniform beam from the attested values; a beam as built ({{beam_cm}}, {{D_tip}}) is checked "
                 "by a shot of the whole engine instead");
-  p.L4 = a.L4, p.M = a.M, p.m = a.m, p.mb = a.mb, p.D = a.D, p.Lb = a.Lb;
+  // The beam's length: attested, or, with mb and D attested, from eq:BeamMass, which ties them.
+  std::optional<double> beam_length = a.Lb;
+  std::string beam_source = beam_length ? "Lb = " + value_text(*a.Lb, "m") : std::string();
+  if (a.mb && a.D && *a.mb > 0) {
+    const double from_beam = *a.mb / beam_mass(*a.D, 1, p.material);  // mb over the mass of a metre of it
+    if (beam_length && std::abs(from_beam - *beam_length) > agreement * *beam_length)
+      throw Error(ErrorKind::usage,
+                  "the attested values conflict: mb = " + value_text(*a.mb, "kg") + " and D = " + value_text(*a.D, "m") + " make a beam " +
+                      value_text(from_beam, "m") + " long by eq:BeamMass with wood of " + format_significant(p.material.wood_density, 4) +
+                      " kg/m3, but " + beam_source + "; drop one of them, or give {{wood_density}}");
+    if (!beam_length) {
+      beam_length = from_beam, beam_source = "Lb = mb/(rho_d (pi/4) D^2) = " + value_text(from_beam, "m");
+      if (!(from_beam >= 1e-6 && from_beam <= 1e6))
+        throw Error(ErrorKind::bad_number,
+                    "{{mb}} = " + value_text(*a.mb, "kg") + " and {{D}} = " + value_text(*a.D, "m") + " make a beam " + value_text(from_beam, "m") +
+                        " long by eq:BeamMass, beyond the ordinary lengths 1e-06 to 1e+06 m; check both");
+      out.implied.push_back("Lb (from mb and D, eq:BeamMass)");
+    }
+  }
+  p.L4 = a.L4, p.M = a.M, p.m = a.m, p.mb = a.mb, p.D = a.D, p.Lb = beam_length;
   // L1 from itself, or from Lb - L2, before H: with H it fixes theta_i, or H fixes L1.
   Known L1, L2;
   bool theta_from_H = false;
   if (a.L1) L1.add(*a.L1, "L1 = " + value_text(*a.L1, "m"));
-  if (a.Lb && a.L2) {
-    if (!(*a.Lb > *a.L2))
-      throw Error(ErrorKind::usage,
-                  "the attested values conflict: Lb = " + value_text(*a.Lb, "m") + " is not longer than L2 = " + value_text(*a.L2, "m"));
-    L1.add(*a.Lb - *a.L2, "Lb - L2 = " + value_text(*a.Lb - *a.L2, "m"));
+  if (beam_length && a.L2) {
+    if (!(*beam_length > *a.L2))
+      throw Error(ErrorKind::usage, "the attested values conflict: " + beam_source + " is not longer than L2 = " + value_text(*a.L2, "m"));
+    L1.add(*beam_length - *a.L2, "Lb - L2 = " + value_text(*beam_length - *a.L2, "m"));
   }
   if (a.theta_i_deg) {
     if (!(*a.theta_i_deg > 0 && *a.theta_i_deg < 90))
@@ -191,14 +209,14 @@ Completion complete_engine(const CompletionRequest& request) {
     L1.add(*a.H / std::cos(radians(p.theta_i_deg)),
            "H / cos(theta_i) = " + value_text(*a.H / std::cos(radians(p.theta_i_deg)), "m") +
                (a.theta_i_deg ? "" : " with the standard theta_i = 30 deg"));
-  if (a.l && a.Lb) L1.add(*a.Lb * *a.l / (*a.l + 1), "Lb l/(l + 1) = " + value_text(*a.Lb * *a.l / (*a.l + 1), "m"));
+  if (a.l && beam_length) L1.add(*beam_length * *a.l / (*a.l + 1), "Lb l/(l + 1) = " + value_text(*beam_length * *a.l / (*a.l + 1), "m"));
   if (a.L2) L2.add(*a.L2, "L2 = " + value_text(*a.L2, "m"));
   if (a.l && L1.value) L2.add(*L1.value / *a.l, "L1/l = " + value_text(*L1.value / *a.l, "m"));
   if (a.l && L2.value && !L1.value) L1.add(*L2.value * *a.l, "l L2 = " + value_text(*L2.value * *a.l, "m"));
-  if (a.Lb && L1.value) {
-    if (!(*a.Lb > *L1.value))
-      throw Error(ErrorKind::usage, "the attested values conflict: Lb = " + value_text(*a.Lb, "m") + " is not longer than " + L1.source);
-    L2.add(*a.Lb - *L1.value, "Lb - L1 = " + value_text(*a.Lb - *L1.value, "m") + " (L1 from " + L1.source + ")");
+  if (beam_length && L1.value) {
+    if (!(*beam_length > *L1.value))
+      throw Error(ErrorKind::usage, "the attested values conflict: " + beam_source + " is not longer than " + L1.source);
+    L2.add(*beam_length - *L1.value, "Lb - L1 = " + value_text(*beam_length - *L1.value, "m") + " (L1 from " + L1.source + ")");
   }
   p.L1 = L1.value, p.L2 = L2.value, p.l = a.l;
   if (p.L1 && !a.L1) out.implied.push_back("L1 (" + L1.source + ")");
@@ -220,9 +238,9 @@ Completion complete_engine(const CompletionRequest& request) {
                               : "D and mb (from beta2 = " + format_fraction(p.material.beta2) + " and the wood, eq:bend_L2 and eq:BeamMass)");
   // Q does not fix the size: without a length it grows as the engine shrinks, and without M or
   // m as the counterweight grows against the beam.
-  if (!(a.Lb || a.L1 || a.L2 || a.H || a.L4) || !(a.M || a.m))
+  if (!(beam_length || a.L1 || a.L2 || a.H || a.L4) || !(a.M || a.m))
     throw Error(ErrorKind::usage,
-                "complete needs an attested length (Lb, L1, L2, H or L4) and the counterweight M or the stone m: "
+                "complete needs an attested length (Lb, L1, L2, H or L4, or mb with D) and the counterweight M or the stone m: "
                 "without them the best engine has no size, e.g. {{Lb}} 9.5m {{m}} 50kg");
   const ReleaseCriterion& criterion = request.settings.criterion;
   if (criterion.release == Release::range && (!a.M || !a.m))

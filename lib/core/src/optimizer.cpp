@@ -186,6 +186,7 @@ std::vector<Optimum> optimize(const OptimizeRequest& request) {
   use_gsl_return_codes();
   check_shot_settings(request.settings);
   check_material(request.material);
+  check_capacity_size(request.capacity.R, request.projectile_mass.value_or(request.capacity.T), !request.projectile_mass, request.material);
   // L3 = F L1 cos(theta_i) - L2 > 0 needs l > 1/(F cos theta_i); the paper's engines, formal
   // ones of appendix B included, have l < 60.
   check_ordinary(request.F, 1e-6, 1e6, "F", "", "counterweight arm fraction (L2 + L3)/H");

@@ -13,6 +13,12 @@
 
 namespace trebuchet {
 
+/// Refuses (Error(bad_number), naming {{R}}, {{T}} or {{m}}) a capacity outside the ordinary, so
+/// that every guess and trial of a fit stays finite: R from 1e-6 to 1e6 m, and the stone it takes,
+/// `target` itself (a mass [kg]) or, with `energy`, m = 2T/(g R) from T = `target` [J] (section 4),
+/// from 1e-9 to 1e12 kg.
+void check_capacity_size(double R, double target, bool energy, const Material& material);
+
 struct CapacityFit {
   ScaledDesign design;  ///< the shape with its fitted mu
   Engine engine;  ///< the design at the size that delivers the capacity, in SI

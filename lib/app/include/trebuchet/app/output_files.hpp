@@ -10,8 +10,9 @@
 namespace trebuchet {
 
 /// A file or folder being written under a temporary name beside `path` ("x.csv.part-XXXXXX",
-/// unique), moved onto `path` by commit(). Destroyed without commit() (a failure), it removes
-/// what was written, so a failed run leaves nothing behind. `option` names the output in
+/// unique), moved onto `path` by commit(). The folders `path` is to stand in are made when
+/// missing (as mkdir -p). Destroyed without commit() (a failure), it removes what was written
+/// and the folders it made, so a failed run leaves nothing behind. `option` names the output in
 /// messages ("series": {{series}}). A symbolic link is written through; a device or a pipe
 /// (/dev/null, a FIFO, /dev/stdout into a pipe) is written into directly, since a rename would
 /// replace it; the file stdout or stderr is redirected into is refused. A folder's files may not
@@ -31,6 +32,7 @@ class PendingOutput {
 
  private:
   std::string path_, shown_, option_, temporary_;  // shown_: the path as the user gave it
+  std::string made_;  // the first of the folders made for it, none: empty
   std::vector<std::string> inputs_;
   bool folder_ = false, committed_ = false, direct_ = false;  // direct_: a device or pipe, written into
 };

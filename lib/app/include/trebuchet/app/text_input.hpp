@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace trebuchet {
 
@@ -48,6 +49,11 @@ template <class Json>
 std::string pretty_json(const Json& value) {
   return value.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
+
+/// The members of a JSON array's text, each as written (a top-level '[', members split at its
+/// own commas, then ']' and nothing but blanks); none where the text is no such array. Each
+/// member is then parsed on its own, so that one that nests too deep is refused alone.
+std::optional<std::vector<std::string_view>> array_members(std::string_view text);
 
 /// Parses JSON text. Nesting deeper than max_json_depth and a key given twice in one object are refused. A number beyond the range of a double (1e400) becomes a string of its own
 /// text, so that the reader of that one member reports it and the others are kept. Throws
