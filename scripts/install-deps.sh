@@ -35,6 +35,7 @@ if [ "$scope" != native ]; then
     nodejs                 # bundles the page and drives its tests
     chromium               # the page's tests, headless, driven by playwright-core
     python3-dev pybind11-dev python3-numpy  # the Python module (docs/python.md)
+    python3-setuptools python3-wheel python3-venv python3-pip python3-pytest python3-pandas  # its package, its install test, its tests, to_frame()
     python3-scipy python3-sympy  # the machines' independent integration (tests/machines/independent.py)
     jupyter-nbconvert python3-ipykernel python3-matplotlib  # its example notebook, run in CI
   )

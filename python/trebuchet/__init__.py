@@ -7,12 +7,19 @@ Carlo run's samples come as NumPy arrays. A refused request raises TrebuchetErro
 programs' message. docs/python.md has the reference.
 """
 import json
+import numbers
+import warnings
 
 import numpy as np
 
 from . import _trebuchet
 
-__all__ = ["TrebuchetError", "design", "shot", "fit", "optimize", "complete", "monte_carlo", "fields"]
+__all__ = ["TrebuchetError", "TrebuchetWarning", "design", "shot", "fit", "optimize", "complete", "monte_carlo", "fields", "__version__", "__commit__"]
+
+__version__ = _trebuchet.version
+"""The project's version, PEP 440: what a notebook records beside the numbers it got."""
+__commit__ = _trebuchet.commit
+"""The commit the module is built from (git describe), as trebuchet-verify --version prints it."""
 
 
 class TrebuchetError(ValueError):
@@ -25,7 +32,37 @@ class TrebuchetError(ValueError):
         self.names = names
 
 
+class TrebuchetWarning(UserWarning):
+    """Where the model stops holding, or an answer needs a caveat: the programs' warning text,
+    also kept in the record's "warnings"."""
+
+
+def _plain(value, path):
+    """A request's value as JSON takes it: numbers (Python's, NumPy's scalars), texts with units,
+    True/False, and dicts and lists of them. Any other type is a TypeError naming its key."""
+    if isinstance(value, dict):
+        return {key: _plain(v, f"{path}.{key}" if path else str(key)) for key, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(v, f"{path}[{i}]") for i, v in enumerate(value)]
+    if value is None or isinstance(value, (str, bool)):
+        return value
+    if isinstance(value, np.generic) and value.shape == ():
+        value = value.item()
+    if isinstance(value, numbers.Real):
+        return float(value) if not isinstance(value, (int, bool)) else value
+    raise TypeError(f"{path or 'the request'}: a {type(value).__name__} is not a value; give a number, or a text with its unit such as \"3.1t\"")
+
+
+def _warn(record):
+    """The record's warnings through warnings.warn, where a notebook shows them and a test can
+    turn them into errors."""
+    if isinstance(record, dict):
+        for text in record.get("warnings", []) or []:
+            warnings.warn(text, TrebuchetWarning, stacklevel=3)
+
+
 def _call(function, request):
+    request = _plain(request, "")
     try:
         text = json.dumps(request, allow_nan=False)
     except ValueError as e:  # NaN or infinity, which JSON has not
@@ -37,6 +74,8 @@ def _call(function, request):
     answer = json.loads(function(text))
     if isinstance(answer, dict) and set(answer) == {"error", "kind", "names"}:
         raise TrebuchetError(answer["error"], answer["kind"], answer["names"])
+    for record in answer if isinstance(answer, list) else [answer]:
+        _warn(record)
     return answer
 
 

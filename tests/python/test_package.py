@@ -1,0 +1,63 @@
+"""The package as a notebook meets it (issue 38): its version, strict and friendly arguments, and
+warnings through Python's warnings. Run by pytest (CTest python.pytest) against the module built
+here; tests/python/test_module.py holds it to the programs, bit for bit."""
+import re
+import warnings
+
+import numpy as np
+import pytest
+
+import trebuchet
+
+CA = dict(L1="4.13m", L2="0.88m", L3="0.5m", L4="3.55m", M="3.11t", m="50kg", mb="174kg")
+# pytrebuchet's default whipper: its sling goes slack and its weight passes below its frame's
+# base before the release (docs/machines.md), two warnings.
+WHIPPER = dict(L1="4m", L2="2m", L3="4m", L4="4m", M="100kg", m="3kg", mb="10kg", machine="whipper", H="5m")
+
+
+def test_version_is_the_projects_in_pep_440_and_the_commit_apart():
+    assert trebuchet.__version__ == "0.1.0"
+    assert re.fullmatch(r"\d+\.\d+\.\d+", trebuchet.__version__)
+    assert trebuchet.__commit__ and trebuchet.__commit__ != trebuchet.__version__
+
+
+def test_numpy_scalars_give_the_same_record_as_floats():
+    # Every loop over an array hands NumPy scalars; they are the same numbers (3110 and 50 exactly).
+    plain = trebuchet.shot(dict(CA, M=3110.0, m=50.0, L4=3.55))
+    numpy = trebuchet.shot(dict(CA, M=np.int64(3110), m=np.float32(50), L4=np.float64(3.55)))
+    assert numpy == plain
+
+
+def test_a_misspelt_key_names_the_nearest():
+    with pytest.raises(trebuchet.TrebuchetError, match='unknown key "theta_i"; did you mean "theta_i_deg"'):
+        trebuchet.shot(dict(CA, theta_i=45))
+    with pytest.raises(trebuchet.TrebuchetError, match='unknown key "relase"; did you mean "release"'):
+        trebuchet.shot(CA, relase="eps")
+
+
+def test_a_wrong_type_is_a_type_error_naming_its_key():
+    with pytest.raises(TypeError, match=r"design\.L1: a ndarray is not a value"):
+        trebuchet.shot(dict(CA, L1=np.array([4.13, 5.0])))
+    with pytest.raises(TypeError, match=r"design\.M: a object is not a value"):
+        trebuchet.shot(dict(CA, M=object()))
+
+
+def test_warnings_come_through_warnings_and_stay_in_the_record():
+    with pytest.warns(trebuchet.TrebuchetWarning) as caught:
+        answer = trebuchet.shot(WHIPPER)
+    texts = [str(w.message) for w in caught]
+    assert texts == answer["warnings"] and len(texts) == 2
+    assert "the sling goes slack" in texts[0]
+
+
+def test_a_test_can_turn_the_warnings_into_errors():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", trebuchet.TrebuchetWarning)
+        with pytest.raises(trebuchet.TrebuchetWarning, match="the sling goes slack"):
+            trebuchet.shot(WHIPPER)
+
+
+def test_an_engine_without_warnings_warns_nothing():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert trebuchet.shot(CA)["warnings"] == []
