@@ -6,8 +6,13 @@ programs' keys (docs/schema.md) as keyword arguments, values as SI floats or str
 Carlo run's samples come as NumPy arrays. A refused request raises TrebuchetError with the
 programs' message. docs/python.md has the reference.
 """
+import concurrent.futures
 import json
 import numbers
+import os
+import signal
+import sys
+import threading
 import warnings
 
 import numpy as np
@@ -131,19 +136,67 @@ def complete(attested, **settings):
     return _call(_trebuchet.complete, dict(settings, attested=attested))
 
 
-def monte_carlo(design=None, *, attested=None, samples=10000, seed=1, **settings):
+def monte_carlo(design=None, *, attested=None, samples=10000, seed=1, threads=None, progress=False, **settings):
     """A Monte Carlo run over values given as ranges ("2.5t..3.5t") or spreads ("3.5m±0.2m"), of
     shots (design) or completions (attested). The answer is the programs' report; its "draws"
     holds, as arrays over the samples in order, each drawn input under its key and R, T, eps and
     v (NaN where a sample failed), with "failure" the messages (None where it worked). With
     claim="300m", "claim" gives the fraction of samples that reach it. "samples_R", "samples_T",
-    "samples_eps", "samples_v" are the draws' R, T, eps and v."""
+    "samples_eps", "samples_v" are the draws' R, T, eps and v.
+
+    The samples run in chunks on `threads` threads (default: the cores), each with the
+    interpreter's lock released; the answer is the same on any number. Ctrl-C or a notebook's
+    interrupt stops the run between chunks, with no thread left running, and raises
+    KeyboardInterrupt. progress=True shows how many samples are done, on stderr."""
     if (design is None) == (attested is None):
         raise TrebuchetError("give a design (for shots) or attested values (for completions), one of them", "usage", ["design", "attested"])
+    if threads is not None and (isinstance(threads, bool) or not isinstance(threads, numbers.Integral) or threads < 1):
+        raise TypeError(f"threads: {threads!r} is not a number of threads; give a whole number from 1 up, or None for the cores")
     request = dict(settings, samples=samples, seed=seed)
     request["design" if design is not None else "attested"] = design if design is not None else attested
-    parts = _call(_trebuchet.monte_carlo, dict(request, first=0, count=samples))
-    answer = _call(_trebuchet.monte_carlo, dict(request, outcomes=parts["outcomes"]))
+    _call(_trebuchet.monte_carlo, dict(request, first=0, count=0))  # the request checked once, before any thread starts
+    # A chunk is a few milliseconds of shots, or one completion (each a search of its own), so
+    # that an interrupt waits for one chunk a thread at most.
+    chunk = 1 if attested is not None else 16
+    starts = list(range(0, int(samples), chunk))
+    parts = [None] * len(starts)
+    workers = int(threads or os.cpu_count() or 1)
+    # Ctrl-C is taken as a flag and acted on between chunks, in this loop: a KeyboardInterrupt
+    # raised inside the executor's own code could leave its lock held, and its shutdown waiting
+    # for it for ever. (Only the main thread may set a signal's handler; elsewhere none is set.)
+    interrupted = []
+    main = threading.current_thread() is threading.main_thread()
+    previous = signal.signal(signal.SIGINT, lambda *_: interrupted.append(True)) if main else None
+    done, next_chunk = 0, 0
+    executor = concurrent.futures.ThreadPoolExecutor(max_workers=workers)
+    pending = {}
+    try:
+        while next_chunk < len(starts) or pending:
+            if interrupted:
+                raise KeyboardInterrupt
+            while next_chunk < len(starts) and len(pending) < 2 * workers:  # a few chunks ahead of the threads
+                first = starts[next_chunk]
+                text = json.dumps(_plain(dict(request, first=first, count=min(chunk, int(samples) - first)), ""))
+                pending[executor.submit(_trebuchet.monte_carlo, text)] = next_chunk
+                next_chunk += 1
+            finished, _ = concurrent.futures.wait(pending, timeout=0.05, return_when=concurrent.futures.FIRST_COMPLETED)
+            for future in finished:
+                k = pending.pop(future)
+                answer = json.loads(future.result())
+                if isinstance(answer, dict) and set(answer) == {"error", "kind", "names"}:
+                    raise TrebuchetError(answer["error"], answer["kind"], answer["names"])
+                parts[k] = answer["outcomes"]
+                done += len(parts[k])
+            if progress:
+                print(f"\rtrebuchet.monte_carlo: {done} of {samples} samples", end="", file=sys.stderr, flush=True)
+    finally:  # on an interrupt too: the chunks not begun are dropped, those running finish
+        executor.shutdown(wait=True, cancel_futures=True)
+        if main:
+            signal.signal(signal.SIGINT, previous)
+        if progress:
+            print(file=sys.stderr)
+    outcomes = [outcome for part in parts for outcome in part]
+    answer = _call(_trebuchet.monte_carlo, dict(request, outcomes=outcomes))
     _arrays(answer["draws"])
     for name in ["R", "T", "eps", "v"]:
         answer["samples_" + name] = answer["draws"][name]

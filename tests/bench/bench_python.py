@@ -36,3 +36,20 @@ print(f"module: {N} shots in {module:.3f} s, {module / N * 1e3:.4f} ms a shot")
 print(f"program, one run over {N} designs (--threads 1): {program:.3f} s, {program / N * 1e3:.4f} ms a shot")
 print(f"program, a run a shot: {single / 100 * 1e3:.3f} ms a shot")
 print(f"per-call overhead of the module: {(module - program) / N * 1e3:.4f} ms ({module / program:.2f}x the batch)")
+
+# The Monte Carlo (issue 38): per sample through the module on one thread, against the program's
+# own run of the same samples on one thread; and how long Ctrl-C takes to stop the largest run
+# (tests/python/interrupt.py, goal 0.2 s), over 5 runs.
+uncertain = dict(ca, M="2.9t..3.3t")
+SAMPLES = 20000
+module_mc = median_seconds(lambda: trebuchet.monte_carlo(uncertain, samples=SAMPLES, threads=1))
+program_mc = median_seconds(lambda: subprocess.run([VERIFY, "shot", "--L1", "4.13m", "--L2", "0.88m", "--F", "2/3", "--L4", "3.55m", "--M", "2.9t..3.3t",
+                                                    "--m", "50kg", "--mb", "174kg", "--samples", str(SAMPLES), "--threads", "1", "--format", "json"],
+                                                   check=True, capture_output=True))
+print(f"Monte Carlo, one thread: module {module_mc / SAMPLES * 1e6:.1f} us a sample, program {program_mc / SAMPLES * 1e6:.1f} us a sample "
+      f"({module_mc / program_mc:.2f}x)")
+stops = []
+for _ in range(5):
+    done = subprocess.run([sys.executable, __file__.replace("bench/bench_python.py", "python/interrupt.py")], capture_output=True, text=True, check=True)
+    stops.append(float(done.stdout.split()[1]))
+print(f"Ctrl-C stops the largest Monte Carlo run in {statistics.median(stops) * 1e3:.1f} ms (median of 5; worst {max(stops) * 1e3:.1f} ms)")

@@ -61,3 +61,25 @@ def test_an_engine_without_warnings_warns_nothing():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         assert trebuchet.shot(CA)["warnings"] == []
+
+
+def test_a_monte_carlo_stops_on_sigint_with_no_thread_left():
+    # In a process of its own, so that the signal is its own (tests/python/interrupt.py).
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    done = subprocess.run([sys.executable, str(Path(__file__).with_name("interrupt.py"))], capture_output=True, text=True, timeout=120)
+    print(done.stdout, done.stderr)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "KeyboardInterrupt" in done.stdout
+
+
+def test_monte_carlo_threads_give_the_same_answer():
+    design = dict(CA, M="2.9t..3.3t")
+    one = trebuchet.monte_carlo(design, samples=200, threads=1)
+    two = trebuchet.monte_carlo(design, samples=200, threads=2)
+    assert np.array_equal(one["samples_R"], two["samples_R"], equal_nan=True)
+    assert one["percentiles"] == two["percentiles"]
+    with pytest.raises(TypeError, match="threads"):
+        trebuchet.monte_carlo(design, samples=10, threads=0)
