@@ -19,7 +19,8 @@ import numpy as np
 
 from . import _trebuchet
 
-__all__ = ["TrebuchetError", "TrebuchetWarning", "design", "shot", "fit", "optimize", "complete", "monte_carlo", "fields", "__version__", "__commit__"]
+__all__ = ["TrebuchetError", "TrebuchetWarning", "design", "shot", "fit", "optimize", "complete", "monte_carlo", "fields", "to_frame", "__version__",
+           "__commit__"]
 
 __version__ = _trebuchet.version
 """The project's version, PEP 440: what a notebook records beside the numbers it got."""
@@ -207,3 +208,19 @@ def fields():
     """The table of inputs: a list of dicts, one per key a design, a completion or the calculator
     takes, with its aliases, flag, dimension, SI unit, accepted units, default, range and help."""
     return _call(_trebuchet.fields, {})["fields"]
+
+
+def to_frame(answer):
+    """A pandas DataFrame of a result (pandas, Debian's python3-pandas, is imported here only):
+    a Monte Carlo run's draws, a row a sample, its drawn inputs and R, T, eps, v and failure; a
+    shot's series frames (shot(..., series=True)), a row a moment; or a list of records (the
+    optima of optimize, shots of a batch), a row each, with their numbers and texts."""
+    import pandas as pd
+
+    if isinstance(answer, list):
+        return pd.DataFrame([{k: v for k, v in r.items() if v is None or isinstance(v, (bool, int, float, str))} for r in answer])
+    if isinstance(answer, dict) and "draws" in answer:
+        return pd.DataFrame(answer["draws"])
+    if isinstance(answer, dict) and "series" in answer:
+        return pd.DataFrame(answer["series"]["frames"])
+    raise TypeError("to_frame takes a Monte Carlo run, a shot with its series, or a list of records")

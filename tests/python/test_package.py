@@ -83,3 +83,16 @@ def test_monte_carlo_threads_give_the_same_answer():
     assert one["percentiles"] == two["percentiles"]
     with pytest.raises(TypeError, match="threads"):
         trebuchet.monte_carlo(design, samples=10, threads=0)
+
+
+def test_to_frame_gives_pandas_a_row_a_sample_a_moment_or_a_record():
+    pd = pytest.importorskip("pandas")
+    run = trebuchet.monte_carlo(dict(CA, M="2.9t..3.3t"), samples=50, threads=1)
+    samples = trebuchet.to_frame(run)
+    assert isinstance(samples, pd.DataFrame) and len(samples) == 50
+    assert np.array_equal(samples["R"].to_numpy(), run["samples_R"], equal_nan=True) and "M" in samples
+    moments = trebuchet.to_frame(trebuchet.shot(CA, series=True))
+    assert len(moments) > 10 and "t" in moments
+    records = trebuchet.to_frame([trebuchet.shot(CA), trebuchet.shot(dict(CA, m="60kg"))])
+    # A heavier stone, the same engine: it flies less far.
+    assert len(records) == 2 and records["R"].iloc[0] > records["R"].iloc[1]
