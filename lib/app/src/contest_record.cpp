@@ -54,6 +54,7 @@ nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequ
                         {"pin_angle_deg", p.verification.pin_angle_deg}});
     out["pareto"] = points;
   }
+  out[version_key] = project_version();
   return out;
 }
 

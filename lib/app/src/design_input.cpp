@@ -94,7 +94,7 @@ DesignValues read_design_values(const nlohmann::json& object, const std::string&
         if (std::none_of(input_fields().begin(), input_fields().end(), [&](const InputField& field) { return unit_column_of(name, field); }))
           names.push_back(name);
     names.insert(names.end(),
-                 {"passed", "simulations", "start", "iterations", "wall_time_s", "note", "attested", "implied", "chosen", "calculator",
+                 {version_key, "passed", "simulations", "start", "iterations", "wall_time_s", "note", "attested", "implied", "chosen", "calculator",
                   "calculator_note", "longest_range", "longest_range_note", "warnings", "notes"});
     return names;
   }();

@@ -37,6 +37,7 @@ nlohmann::ordered_json design_json(const OptimalEngine& design) {
     out["branch_steps"] = steps;
   }
   out["warnings"] = design.warnings;
+  out[version_key] = project_version();
   return out;
 }
 

@@ -8,6 +8,8 @@
 
 namespace trebuchet {
 
+const char* project_version() { return TREBUCHET_PROJECT_VERSION; }
+
 // A written number must be finite: JSON has no inf or nan, and neither has a spreadsheet. The
 // calculator rejects extreme inputs before this; an engine read back is checked here once more.
 void require_finite(const std::vector<Field>& fields) {

@@ -15,6 +15,7 @@ nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s) 
   if (!optimum.note.empty()) out["note"] = optimum.note;
   const nlohmann::ordered_json shot = verification_json(optimum.fit.verification);
   for (const auto& [key, value] : shot.items()) out[key] = value;
+  out[version_key] = project_version();
   return out;
 }
 
@@ -51,6 +52,7 @@ nlohmann::ordered_json calibration_json(const Calibration& c, const MeasuredRang
   out["predictions"] = list;
   out["simulations"] = c.simulations;
   require_finite_json(out, "the calibration");
+  out[version_key] = project_version();
   return out;
 }
 
@@ -78,6 +80,7 @@ nlohmann::ordered_json completion_json(const Completion& c, const ShotSettings& 
   } else if (!longest_note.empty()) {
     out["longest_range_note"] = longest_note;
   }
+  out[version_key] = project_version();
   return out;
 }
 

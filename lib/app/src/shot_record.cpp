@@ -197,6 +197,7 @@ nlohmann::ordered_json verification_json(const Verification& v, const std::optio
     out["against"] = check->as_measured ? "measured" : "vacuum";  // fit's requested capacity, or the calculator's in vacuum
     out["pass"] = check->pass;
   }
+  out[version_key] = project_version();
   return out;
 }
 

@@ -393,6 +393,7 @@ nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
   draws["failure"] = failed;
   out["draws"] = draws;
   out["wall_time_s"] = r.seconds;
+  out[version_key] = project_version();
   return out;
 }
 

@@ -15,6 +15,11 @@
 
 namespace trebuchet {
 
+/// The project's version in PEP 440 form ("0.1.0"): every JSON record carries it as "version",
+/// to say what computed it (the commit is --version's and Python's __commit__, not a record's).
+const char* project_version();
+inline constexpr const char* version_key = "version";
+
 /// A named number of a record, in print order.
 struct Field {
   const char* key;
