@@ -96,3 +96,19 @@ def test_to_frame_gives_pandas_a_row_a_sample_a_moment_or_a_record():
     records = trebuchet.to_frame([trebuchet.shot(CA), trebuchet.shot(dict(CA, m="60kg"))])
     # A heavier stone, the same engine: it flies less far.
     assert len(records) == 2 and records["R"].iloc[0] > records["R"].iloc[1]
+
+
+def test_the_module_agrees_with_the_programs():
+    # tests/python/test_module.py holds every function to trebuchet-calc and trebuchet-verify, bit
+    # for bit; the programs come from CTest (TREBUCHET_CALC, TREBUCHET_VERIFY).
+    import os
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    calc, verify = os.environ.get("TREBUCHET_CALC"), os.environ.get("TREBUCHET_VERIFY")
+    if not (calc and verify):
+        pytest.skip("give the programs' paths in TREBUCHET_CALC and TREBUCHET_VERIFY")
+    done = subprocess.run([sys.executable, str(Path(__file__).with_name("test_module.py")), calc, verify], capture_output=True, text=True, timeout=600)
+    print(done.stdout)
+    assert done.returncode == 0, done.stdout + done.stderr
