@@ -72,12 +72,14 @@ std::string quote_huge_numbers(const std::string& text) {
   return out;
 }
 
-}  // namespace
-
-std::size_t json_depth(std::string_view text) {
-  std::size_t depth = 0, deepest = 0;
+// Walks `text` from `from`, outside its strings: calls at(i, c, depth) for each bracket and comma
+// c, with `depth` the brackets open before it is read (a closing one counts its own), and stops
+// where at returns false.
+template <class At>
+void walk_structure(std::string_view text, std::size_t from, At at) {
+  std::size_t depth = 0;
   bool in_string = false;
-  for (std::size_t i = 0; i < text.size(); ++i) {
+  for (std::size_t i = from; i < text.size(); ++i) {
     const char c = text[i];
     if (in_string) {
       if (c == '\\')
@@ -86,13 +88,24 @@ std::size_t json_depth(std::string_view text) {
         in_string = false;
     } else if (c == '"') {
       in_string = true;
-    } else if (c == '[' || c == '{') {
-      deepest = std::max(deepest, ++depth);
-      if (deepest > max_json_depth) return deepest;  // enough to refuse; the rest is not read
-    } else if ((c == ']' || c == '}') && depth > 0) {
-      --depth;
+    } else if (c == '[' || c == '{' || c == ']' || c == '}' || c == ',') {
+      if (!at(i, c, depth)) return;
+      if (c == '[' || c == '{')
+        ++depth;
+      else if (c != ',' && depth > 0)
+        --depth;
     }
   }
+}
+
+}  // namespace
+
+std::size_t json_depth(std::string_view text) {
+  std::size_t deepest = 0;
+  walk_structure(text, 0, [&](std::size_t, char c, std::size_t depth) {
+    if (c == '[' || c == '{') deepest = std::max(deepest, depth + 1);
+    return deepest <= max_json_depth;  // past it, enough to refuse; the rest is not read
+  });
   return deepest;
 }
 
@@ -100,32 +113,23 @@ std::optional<std::vector<std::string_view>> array_members(std::string_view text
   const std::size_t open = text.find_first_not_of(" \t\r\n", text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0);
   if (open == std::string_view::npos || text[open] != '[') return std::nullopt;
   std::vector<std::string_view> members;
-  std::size_t depth = 0, begin = open + 1;
-  bool in_string = false;
-  for (std::size_t i = open + 1; i < text.size(); ++i) {
-    const char c = text[i];
-    if (in_string) {
-      if (c == '\\')
-        ++i;
-      else if (c == '"')
-        in_string = false;
-    } else if (c == '"') {
-      in_string = true;
-    } else if (c == '[' || c == '{') {
-      ++depth;
-    } else if ((c == ']' || c == '}') && depth > 0) {
-      --depth;
-    } else if ((c == ',' || c == ']') && depth == 0) {
-      const std::string_view member = text.substr(begin, i - begin);
-      if (member.find_first_not_of(" \t\r\n") != std::string_view::npos)
-        members.push_back(member);
-      else if (c == ',' || !members.empty())
-        return std::nullopt;  // an empty member, or a trailing comma
-      if (c == ']') return text.find_first_not_of(" \t\r\n", i + 1) == std::string_view::npos ? std::optional(members) : std::nullopt;
-      begin = i + 1;
+  std::size_t begin = open + 1;
+  std::optional<std::vector<std::string_view>> out;
+  walk_structure(text, open + 1, [&](std::size_t i, char c, std::size_t depth) {
+    if (depth > 0 || c == '[' || c == '{' || c == '}') return true;  // inside a member
+    const std::string_view member = text.substr(begin, i - begin);
+    if (member.find_first_not_of(" \t\r\n") != std::string_view::npos)
+      members.push_back(member);
+    else if (c == ',' || !members.empty())
+      return false;  // an empty member, or a trailing comma
+    if (c == ']') {
+      if (text.find_first_not_of(" \t\r\n", i + 1) == std::string_view::npos) out = members;
+      return false;
     }
-  }
-  return std::nullopt;
+    begin = i + 1;
+    return true;
+  });
+  return out;
 }
 
 namespace {

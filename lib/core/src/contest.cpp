@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "simplex.hpp"
+#include "solve_1d.hpp"
 #include "trebuchet/angles.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
@@ -213,14 +214,8 @@ double sampled_extreme(const std::vector<double>& t, const std::vector<double>& 
   std::size_t best = 0;
   for (std::size_t i = 1; i < f.size(); ++i)
     if (sign * f[i] > sign * f[best]) best = i;
-  const double top = sign * f[best];
-  if (best == 0 || best + 1 == f.size()) return top;
-  const double a = sign * f[best - 1], c = sign * f[best + 1];
-  const double left = (top - a) / (t[best] - t[best - 1]), right = (c - top) / (t[best + 1] - t[best]);
-  const double curvature = (right - left) / (t[best + 1] - t[best - 1]);  // half the second derivative
-  if (!(curvature < 0)) return top;
-  const double slope = left + curvature * (t[best] - t[best - 1]);  // at the best sample
-  return top - slope * slope / (4 * curvature);
+  if (best == 0 || best + 1 == f.size()) return sign * f[best];
+  return parabola_vertex({t[best - 1], sign * f[best - 1]}, {t[best], sign * f[best]}, {t[best + 1], sign * f[best + 1]}).f;
 }
 
 }  // namespace

@@ -368,6 +368,12 @@ bool Dynamics::accelerations(Phase phase, const State& state, std::array<double,
   return true;
 }
 
+Vec2 air_force(const Drag& drag, double mass, Vec2 velocity) {
+  const Vec2 u{velocity.x + drag.wind, velocity.y};  // the air moves toward -x (air.hpp)
+  const double speed = std::hypot(u.x, u.y), factor = -mass * drag.coefficient_at(speed) * drag.per_length * speed;
+  return {factor * u.x, factor * u.y};
+}
+
 double short_section_moment(const BuiltParts::Section& section, double theta, Vec2 hinge_force, double theta_ddot) {
   const double st = std::sin(theta), ct = std::cos(theta);
   return st * hinge_force.y + ct * hinge_force.x - section.mass * section.cm * st - section.inertia * theta_ddot;

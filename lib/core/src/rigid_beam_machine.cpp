@@ -118,9 +118,7 @@ std::optional<Snapshot> RigidBeamMachine::resisted(Phase phase, const State& s) 
   const Vec2 v = phase == Phase::released ? Vec2{} : Vec2{p_th.x * s.theta_dot + p_phi.x * s.phi_dot, p_th.y * s.theta_dot + p_phi.y * s.phi_dot};
   Vec2 drag{};
   if (parts.drag && phase != Phase::released) {
-    const Vec2 u{v.x + parts.drag->wind, v.y};  // the air moves toward -x (air.hpp)
-    const double speed = std::hypot(u.x, u.y), factor = -design_.mu * parts.drag->coefficient_at(speed) * parts.drag->per_length * speed;
-    drag = {factor * u.x, factor * u.y};
+    drag = air_force(*parts.drag, design_.mu, v);
   }
   const Generalized air = phase == Phase::trough ? Generalized{drag.x * k, 0}
                                                  : Generalized{drag.x * p_th.x + drag.y * p_th.y, drag.x * p_phi.x + drag.y * p_phi.y};

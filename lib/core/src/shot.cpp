@@ -36,16 +36,6 @@ Conditions conditions_of(const Snapshot& s) {
 }
 using Onsets = std::array<std::optional<double>, condition_count>;
 
-// The vertex of the parabola through three points with the middle one highest: where it
-// peaks, and its value; the middle point when they are not concave.
-Point parabola_vertex(Point a, Point b, Point c) {
-  const double d0 = (b.f - a.f) / (b.x - a.x), d1 = (c.f - b.f) / (c.x - b.x);
-  const double curvature = (d1 - d0) / (c.x - a.x);  // half the second derivative
-  if (!(curvature < 0)) return b;
-  const double slope_mid = d0 + curvature * (b.x - a.x);  // derivative at b
-  return {b.x - slope_mid / (2 * curvature), b.f - slope_mid * slope_mid / (4 * curvature)};
-}
-
 // The samples of one phase at the integrator's step ends, with the running force extremes
 // refined on the continuous solution: where a force has a local maximum at a step end, the
 // true peak lies within the two neighbouring steps and is found there by Brent's method.
@@ -472,7 +462,7 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   const auto carry = [&](PhaseIntegrator& integrator, PhaseRecord& record) {
     const Phase phase = integrator.phase();
     const auto contact = [&](const Snapshot& at) { return phase == Phase::held ? at.counterweight_on_arm : at.normal_force; };
-    snap = dynamics.snapshot(phase, integrator.state(y));
+    if (phase != dynamics.first_phase()) snap = dynamics.snapshot(phase, integrator.state(y));  // the first's is the start's, above
     record.add(integrator.step_end(t, y, snap), snap);
     if (!(contact(snap) > 0)) return t;  // it lets go at once
     while (true) {

@@ -11,6 +11,14 @@
 #include "trebuchet/format.hpp"
 
 namespace trebuchet {
+
+Point parabola_vertex(Point a, Point b, Point c) {
+  const double d0 = (b.f - a.f) / (b.x - a.x), d1 = (c.f - b.f) / (c.x - b.x);
+  const double curvature = (d1 - d0) / (c.x - a.x);  // half the second derivative
+  if (!(curvature < 0)) return b;
+  const double slope_mid = d0 + curvature * (b.x - a.x);  // derivative at b
+  return {b.x - slope_mid / (2 * curvature), b.f - slope_mid * slope_mid / (4 * curvature)};
+}
 namespace {
 
 constexpr int max_iterations = 200;

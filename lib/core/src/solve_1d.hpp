@@ -11,6 +11,10 @@ struct Point {
   double x, f;
 };
 
+/// The vertex of the parabola through three points (in increasing x) with the middle one highest:
+/// where it peaks, and its value; the middle point when they are not concave.
+Point parabola_vertex(Point a, Point b, Point c);
+
 /// A root of f in [lo, hi], by Brent's method, when f(lo) and f(hi) differ in sign; stops when
 /// the bracket is narrower than epsabs + epsrel |x| (gsl_root_test_interval).
 std::optional<double> root_between(const std::function<double(double)>& f, double lo, double hi, double epsabs, double epsrel);

@@ -176,9 +176,7 @@ std::optional<Snapshot> Whipper::resisted(Phase phase, const State& s) const {
   Vec2 drag{}, v{};
   if (parts.drag && phase != Phase::released) {
     v = {p_th.x * s.theta_dot + p_phi.x * s.phi_dot, p_th.y * s.theta_dot + p_phi.y * s.phi_dot};
-    const Vec2 u{v.x + parts.drag->wind, v.y};  // the air moves toward -x (air.hpp)
-    const double speed = std::hypot(u.x, u.y), factor = -design_.mu * parts.drag->coefficient_at(speed) * parts.drag->per_length * speed;
-    drag = {factor * u.x, factor * u.y};
+    drag = air_force(*parts.drag, design_.mu, v);
   }
   const Generalized air{dot(drag, p_th), 0, dot(drag, p_phi)};
   const double axle_turn = (s.theta_dot > 0) - (s.theta_dot < 0);

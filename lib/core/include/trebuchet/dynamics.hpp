@@ -30,6 +30,11 @@ double vacuum_range(Vec2 position, Vec2 velocity, double drop, double g);
 /// reversed) at (-sin th, cos th), its weight at its centre, less its own I theta''.
 double short_section_moment(const BuiltParts::Section& section, double theta, Vec2 hinge_force, double theta_ddot);
 
+/// The air's force on a body of scaled `mass` moving at `velocity` (the projectile of the
+/// machines whose equations are written from their bodies): -mass Cd per_length |u| u, u its
+/// velocity through the air, which moves toward -x at drag.wind (air.hpp).
+Vec2 air_force(const Drag& drag, double mass, Vec2 velocity);
+
 namespace detail {
 struct Coefficients;  // the constants of the equations, as dynamics.cpp evaluates them
 }
