@@ -18,20 +18,9 @@ int run_compare(const Options& o) {
   check.csv = o.format == Format::csv;
   check.csv_digits = o.digits;
   check.inputs = {o.input};
-  if (!o.input.empty() && has_engine_flags(o.design))
-    throw Error(ErrorKind::usage, "the engine comes from '" + o.input + "'; drop the engine flags (--L1 ... --theta), or drop the file");
   nlohmann::json passed = nlohmann::json::object();
-  DesignValues values = o.design;
   std::string where;
-  if (!o.input.empty()) {
-    const DesignInputs in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}, or CSV with one row"), o.input);
-    if (!in.single || in.rows.size() != 1) throw Error(ErrorKind::usage, "compare takes one design; " + source_name(o.input) + " holds more");
-    where = in.where.front();
-    values = read_design_values(in.rows.front().design, where, &passed);
-  } else if (!has_engine_flags(o.design)) {
-    throw Error(ErrorKind::usage,
-                "no design; give a JSON or CSV file, or flags like --L1 4.13m --L2 0.88m --L3 0.6m --L4 3.55m --M 3.11t --m 50kg --mb 174kg");
-  }
+  DesignValues values = one_design(o, "compare", where, passed);
   if (values.machine == MachineKind::whipper)
     throw Error(ErrorKind::usage,
                 "compare starts from an engine of the other machines (theta_i from 0 to 90 deg) and builds the whipper's column from it; "

@@ -14,7 +14,7 @@
 
 namespace {
 
-const char* const subcommand_names[] = {"shot", "fit", "optimize", "derive-table", "merge", "complete", "calibrate", "compare", "contest"};
+const char* const subcommand_names[] = {"shot", "fit", "optimize", "derive-table", "merge", "complete", "calibrate", "compare", "contest", "sweep"};
 
 // `trebuchet-verify design.json` means `trebuchet-verify shot design.json`: the subcommand
 // `shot` is inserted unless argv names a subcommand or asks for the overall help or the version.
@@ -77,6 +77,7 @@ int main(int argc, char** argv) {
     if (sub.calibrate->parsed()) return run_calibrate(options);
     if (sub.compare->parsed()) return run_compare(options);
     if (sub.contest->parsed()) return run_contest(options);
+    if (sub.sweep->parsed()) return run_sweep(options);
     return run_merge(options);
   });
 }

@@ -203,17 +203,9 @@ void air_options(CLI::App* app, Options& o) {
       },
       "drag coefficient of the sphere (default 0.47), or Re for Cd(Re) of a smooth sphere");
   parsed_option(
-      app, "--projectile",
-      [&o](const std::string& text) {
-        if (text == "stone" || text == "iron") {
-          o.settings.projectile_density = text == "stone" ? 2500 : 7870;
-          return;
-        }
-        if (text.find_first_of("0123456789") == std::string::npos)
-          throw Error(ErrorKind::usage, "--projectile: '" + text + "' is not a projectile; give stone, iron or a density, e.g. 7870kg/m3");
-        o.settings.projectile_density = parse_positive(text, UnitDimension::density, "--projectile");
-      },
-      "stone (2500kg/m3, the default), iron (7870kg/m3) or a density: gives the sphere's size");
+      app, "--projectile", [&o](const std::string& text) { o.settings.projectile_density = parse_projectile_density(text, "--projectile"); },
+      "stone (2500kg/m3, the default), iron (7870kg/m3), lead (11340kg/m3), clay (fired, about 1800kg/m3) or a density: "
+      "gives the sphere's size");
   value_option(app, o, "--wind", Slot{nullptr, &SettingsValues::wind}, UnitDimension::speed,
                "horizontal wind toward the target, e.g. 5m/s or -20km/h (against) [" + unit_list(UnitDimension::speed) + "]", true);
   parsed_option(

@@ -125,6 +125,28 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
     air_options(c, o);
   }
 
+  s.sweep = app.add_subcommand("sweep",
+                               "what if one value changes? the shot of one design (a file or flags) as --vary runs one of its values "
+                               "over a range, the rest held: R, eps, Q, the release, the peak loads and the beam's margin at each point");
+  {
+    CLI::App* w = s.sweep;
+    w->add_option("input", o.input, "JSON file with one design, or CSV with one row (docs/csv.md); - for stdin");
+    input_options(w, o, op_shot, {FieldGroup::engine, FieldGroup::alternative, FieldGroup::release, FieldGroup::part}, false);
+    machine_option(w, o);
+    parsed_option(
+        w, "--vary", [&o](const std::string& text) { o.what_if = parse_what_if(text, 21, "--vary"); },
+        "the value to vary and its range, KEY=low..high with units, e.g. L4=2m..5m, M=10t..20t, pin_angle=30..50 (required)");
+    integer_option(w, "--points", o.what_if_points, 2, max_what_if_points, "2 to " + std::to_string(max_what_if_points),
+                   "shots from low to high, both ends included (default 21)");
+    target_level_option(w, o, false);
+    threads_option(w, o, "threads (default: the cores); the output is the same on any number");
+    release_options(w, o);
+    integrator_options(w, o);
+    format_option(w, o, true);
+    material_options(w, o, "the design", false);
+    air_options(w, o);
+  }
+
   CLI::App* c = s.complete;
   air_and_sampling_options(c, o);
   input_options(c, o, op_complete, {FieldGroup::engine, FieldGroup::alternative, FieldGroup::part}, true);

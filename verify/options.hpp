@@ -20,6 +20,7 @@
 #include "trebuchet/app/search_records.hpp"
 #include "trebuchet/app/shot_record.hpp"
 #include "trebuchet/app/verifier.hpp"
+#include "trebuchet/app/what_if.hpp"
 
 namespace trebuchet::verify {
 
@@ -51,11 +52,13 @@ struct Options {
   std::optional<double> beam_per_m;  ///< contest: the beam's mass per metre [kg/m]
   bool efficiency = false;  ///< contest: --objective eps
   int pareto = 0;  ///< contest: points of the Pareto front; 0: none
+  std::optional<WhatIf> what_if;  ///< sweep: the value varied and its range (--vary)
+  int what_if_points = 21;  ///< sweep: --points
 };
 
 /// The subcommands, each with its options declared on it.
 struct Subcommands {
-  CLI::App *shot, *fit, *optimize, *derive_table, *merge, *complete, *calibrate, *compare, *contest;
+  CLI::App *shot, *fit, *optimize, *derive_table, *merge, *complete, *calibrate, *compare, *contest, *sweep;
 };
 Subcommands declare_subcommands(CLI::App& app, Options& options);
 

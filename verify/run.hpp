@@ -15,9 +15,15 @@ int run_derive_table(const Options& options);  // tables.cpp
 int run_merge(const Options& options);  // tables.cpp
 int run_compare(const Options& options);  // compare.cpp
 int run_contest(const Options& options);  // contest.cpp
+int run_sweep(const Options& options);  // sweep.cpp: the what-if sweep
 
 /// Whether the flags give an engine's value or part, which a design file gives instead (shot.cpp);
 /// the material, the capacity and the release are settings of a file's designs too.
 bool has_engine_flags(const DesignValues& design);
+
+/// The values of the one design a subcommand takes (compare, sweep): from the file, refusing
+/// engine flags beside it and a file of more designs, or from the flags; `where` names it in
+/// messages, `passed` gets a file's keys that no reader knows.
+DesignValues one_design(const Options& options, const std::string& subcommand, std::string& where, nlohmann::json& passed);
 
 }  // namespace trebuchet::verify

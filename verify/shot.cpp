@@ -99,6 +99,23 @@ bool has_engine_flags(const DesignValues& d) {
   return false;
 }
 
+DesignValues one_design(const Options& o, const std::string& subcommand, std::string& where, nlohmann::json& passed) {
+  if (o.input.empty()) {
+    if (!has_engine_flags(o.design))
+      throw Error(ErrorKind::usage,
+                  "no design; give a JSON or CSV file, or flags like --L1 4.13m --L2 0.88m --L3 0.6m --L4 3.55m --M 3.11t --m 50kg --mb 174kg");
+    return o.design;
+  }
+  if (has_engine_flags(o.design))
+    throw Error(ErrorKind::usage, "the engine comes from '" + o.input + "'; drop the engine flags (--L1 ... --theta), or drop the file");
+  const DesignInputs in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}, or CSV with one row"), o.input);
+  if (!in.single || in.rows.size() != 1) throw Error(ErrorKind::usage, subcommand + " takes one design; " + source_name(o.input) + " holds more");
+  where = in.where.front();
+  DesignValues values = read_design_values(in.rows.front().design, where, &passed);
+  if (o.design.machine) values.machine = o.design.machine;  // --machine builds the file's design as that machine
+  return values;
+}
+
 int run_shot(const Options& o, bool fit) {
   const DesignCheck check = design_check(o, fit);
   DesignInputs in;

@@ -23,6 +23,7 @@ PYBIND11_MODULE(_trebuchet, module) {
   bind("design", trebuchet::api::design, "the calculator's design: JSON text in, JSON text out");
   bind("shot", trebuchet::api::shot, "one shot of a design");
   bind("optimize", trebuchet::api::optimize, "the ab-initio optimum");
+  bind("sweep", trebuchet::api::sweep, "a what-if sweep: one value of a design over a range");
   bind("complete", trebuchet::api::complete, "the completion of an attested engine");
   bind("monte_carlo", trebuchet::api::monte_carlo, "a Monte Carlo run");
   bind("fields", trebuchet::api::fields, "the table of inputs: every key with its aliases, dimension, unit, default and help");

@@ -19,7 +19,7 @@ import numpy as np
 
 from . import _trebuchet
 
-__all__ = ["TrebuchetError", "TrebuchetWarning", "design", "shot", "fit", "optimize", "complete", "monte_carlo", "fields", "to_frame", "__version__",
+__all__ = ["TrebuchetError", "TrebuchetWarning", "design", "shot", "fit", "optimize", "sweep", "complete", "monte_carlo", "fields", "to_frame", "__version__",
            "__commit__"]
 
 __version__ = _trebuchet.version
@@ -131,6 +131,14 @@ def optimize(R, T=None, *, m=None, **options):
     return _call(_trebuchet.optimize, request)
 
 
+def sweep(design, vary, *, points=21, **settings):
+    """What if one value changes: the shot of the design at each of `points` values of `vary`
+    ("L4=2m..5m": a value of the engine, its parts or its release, and its range), the rest held.
+    The answer's "points" are shot records, the same as shot() of each engine, or {key, "error"}.
+    Settings: those of shot."""
+    return _call(_trebuchet.sweep, dict(settings, design=design, vary=vary, points=points))
+
+
 def complete(attested, **settings):
     """The best engine that keeps the attested values (Lb, L1, L2, H, L4, M, m, mb, D, l,
     theta_i_deg, F, ...)."""
@@ -213,14 +221,19 @@ def fields():
 def to_frame(answer):
     """A pandas DataFrame of a result (pandas, Debian's python3-pandas, is imported here only):
     a Monte Carlo run's draws, a row a sample, its drawn inputs and R, T, eps, v and failure; a
-    shot's series frames (shot(..., series=True)), a row a moment; or a list of records (the
+    shot's series frames (shot(..., series=True)), a row a moment; a sweep, a row a point, the
+    value varied first; or a list of records (the
     optima of optimize, shots of a batch), a row each, with their numbers and texts."""
     import pandas as pd
 
     if isinstance(answer, list):
         return pd.DataFrame([{k: v for k, v in r.items() if v is None or isinstance(v, (bool, int, float, str))} for r in answer])
+    if isinstance(answer, dict) and "points" in answer and "vary" in answer:  # a sweep: a row a point, the value varied first
+        frame = to_frame(answer["points"])
+        frame.insert(0, answer["vary"], answer["values"])
+        return frame
     if isinstance(answer, dict) and "draws" in answer:
         return pd.DataFrame(answer["draws"])
     if isinstance(answer, dict) and "series" in answer:
         return pd.DataFrame(answer["series"]["frames"])
-    raise TypeError("to_frame takes a Monte Carlo run, a shot with its series, or a list of records")
+    raise TypeError("to_frame takes a Monte Carlo run, a shot with its series, a sweep, or a list of records")

@@ -98,6 +98,28 @@ def test_to_frame_gives_pandas_a_row_a_sample_a_moment_or_a_record():
     assert len(records) == 2 and records["R"].iloc[0] > records["R"].iloc[1]
 
 
+def test_a_sweep_is_its_points_shot_alone_and_frames_a_row_a_point():
+    # Each point of a what-if sweep is the shot of its engine alone, every number equal.
+    answer = trebuchet.sweep(CA, "L4=2.5m..4.5m", points=5, air=True)
+    assert answer["vary"] == "L4" and len(answer["points"]) == 5
+    for point in answer["points"]:
+        L4 = point["engine"]["L4"]
+        assert point == trebuchet.shot(dict(CA, L4=L4), air=True)
+    assert answer["points"][0]["engine"]["L4"] == 2.5 and answer["points"][-1]["engine"]["L4"] == 4.5
+    frame = trebuchet.to_frame(answer)
+    assert list(frame["L4"]) == answer["values"] == [p["engine"]["L4"] for p in answer["points"]]
+    assert list(frame["R"]) == [p["R"] for p in answer["points"]]
+    with pytest.raises(trebuchet.TrebuchetError, match="no value of an engine to vary"):
+        trebuchet.sweep(CA, "R=1m..2m")
+
+
+def test_a_projectile_material_by_name_is_its_density():
+    # iron is 7870 kg/m3: the same shot as the density given as a number.
+    by_name = trebuchet.shot(CA, air={"projectile_density": "iron"})
+    assert by_name == trebuchet.shot(CA, air={"projectile_density": 7870})
+    assert by_name["R"] > trebuchet.shot(CA, air=True)["R"]  # a denser ball is smaller for its mass: less drag, farther
+
+
 def test_the_module_agrees_with_the_programs():
     # tests/python/test_module.py holds every function to trebuchet-calc and trebuchet-verify, bit
     # for bit; the programs come from CTest (TREBUCHET_CALC, TREBUCHET_VERIFY).

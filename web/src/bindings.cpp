@@ -13,6 +13,7 @@ std::string answer(trebuchet::api::Request request, const std::string& text) { r
 
 std::string design(const std::string& text) { return answer(trebuchet::api::design, text); }
 std::string shot(const std::string& text) { return answer(trebuchet::api::shot, text); }
+std::string sweep(const std::string& text) { return answer(trebuchet::api::sweep, text); }
 std::string complete(const std::string& text) { return answer(trebuchet::api::complete, text); }
 std::string monte_carlo(const std::string& text) { return answer(trebuchet::api::monte_carlo, text); }
 std::string fields(const std::string& text) { return answer(trebuchet::api::fields, text); }
@@ -22,6 +23,7 @@ std::string fields(const std::string& text) { return answer(trebuchet::api::fiel
 EMSCRIPTEN_BINDINGS(trebuchet) {
   emscripten::function("design", &design);
   emscripten::function("shot", &shot);
+  emscripten::function("sweep", &sweep);
   emscripten::function("complete", &complete);
   emscripten::function("monteCarlo", &monte_carlo);
   emscripten::function("fields", &fields);

@@ -8,12 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "trebuchet/air.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/completion.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/optimizer.hpp"
 #include "trebuchet/quantity.hpp"
 #include "trebuchet/scaling_table.hpp"
+#include "trebuchet/sweep.hpp"
 #include "trebuchet/uncertainty.hpp"
 #include "trebuchet/app/fields.hpp"
 #include "trebuchet/app/names.hpp"
@@ -29,6 +31,7 @@
 #include "trebuchet/app/text_input.hpp"
 #include "trebuchet/app/units.hpp"
 #include "trebuchet/app/verifier.hpp"
+#include "trebuchet/app/what_if.hpp"
 
 namespace trebuchet::api {
 namespace {
@@ -112,7 +115,10 @@ SettingsValues settings_values_of(const json& request) {
         v.drag_of_reynolds = true;
       else
         v.drag_coefficient = read_value(given, "drag_coefficient", UnitDimension::dimensionless, "air");
-      v.projectile_density = read_value(given, "projectile_density", UnitDimension::density, "air");
+      // A material's name (stone, iron, lead, clay) or a density.
+      const json density = given.value("projectile_density", json());
+      const ProjectileMaterial* named = density.is_string() ? find_projectile_material(density.get<std::string>()) : nullptr;
+      v.projectile_density = named ? std::optional(named->density) : read_value(given, "projectile_density", UnitDimension::density, "air");
       v.wind = read_value(given, "wind", UnitDimension::speed, "air");
     } else if (given.is_boolean() || given == "vacuum") {
       v.air = given == true;
@@ -279,6 +285,25 @@ ordered_json shot(const json& request) {
   if (flag_of(request, "series"))
     answer["series"] = shot_series_json(shot_series(report.engine, report.settings, report.verification), report.engine);
   return answer;
+}
+
+ordered_json sweep(const json& request) {
+  require_keys(request, with_settings({"design", "vary", "points"}), "sweep");
+  if (!request.contains("design"))
+    throw Error(ErrorKind::usage, "{{design}} is missing; give the engine, e.g. {\"design\": {\"L1\": \"6.13m\", ...}, \"vary\": \"L4=2m..5m\"}");
+  if (!request.contains("vary")) throw Error(ErrorKind::usage, "{{vary}} is missing; give the value to vary and its range, e.g. \"L4=2m..5m\"");
+  const double points = read_value(request, "points", UnitDimension::dimensionless, "").value_or(21);
+  if (!(points >= 2 && points <= max_what_if_points) || points != std::floor(points))
+    throw Error(ErrorKind::bad_number,
+                "{{points}} = " + format_significant(points, 6) + " must be a whole number from 2 to " + std::to_string(max_what_if_points));
+  const WhatIf what_if = parse_what_if(text_of(request["vary"], "vary"), static_cast<int>(points), "vary");
+  json passed = json::object();
+  const DesignValues values = read_design_values(request["design"], "design", &passed);
+  DesignCheck check;
+  check.settings = settings_of(request);
+  check.material = overrides_of(request);
+  if (what_if.field->group != FieldGroup::release) check.settings.release_at = release_of(values, "design");
+  return what_if_json(what_if, run_what_if(values, what_if, check, 1), key_word);
 }
 
 ordered_json complete(const json& request) {

@@ -1,5 +1,6 @@
 #include "trebuchet/app/request.hpp"
 
+#include "trebuchet/air.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/app/units.hpp"
 
@@ -28,6 +29,17 @@ double parse_theta(std::string_view text, std::string_view name) {
     throw Error(ErrorKind::bad_number,
                 std::string(name) + ": '" + std::string(text) + "' must lie between 0 and 90 degrees (the beam angle from the vertical)");
   return degrees;
+}
+
+double parse_projectile_density(std::string_view text, std::string_view name) {
+  if (const ProjectileMaterial* material = find_projectile_material(std::string(text))) return material->density;
+  if (text.find_first_of("0123456789") == std::string_view::npos) {
+    std::string names;
+    for (const ProjectileMaterial& m : projectile_materials()) names += std::string(m.name) + ", ";
+    throw Error(ErrorKind::usage,
+                std::string(name) + ": '" + std::string(text) + "' is not a projectile's material; give " + names + "or a density, e.g. 7870kg/m3");
+  }
+  return parse_positive(text, UnitDimension::density, name);
 }
 
 }  // namespace trebuchet

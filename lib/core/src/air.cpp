@@ -45,6 +45,27 @@ struct DriverDeleter {
 
 }  // namespace
 
+const std::vector<ProjectileMaterial>& projectile_materials() {
+  // The elements' densities at room temperature are those of the CRC Handbook of Chemistry and
+  // Physics (iron 7.87 g/cm^3, lead 11.34 g/cm^3). Stone: limestone and sandstone lie near
+  // 2300-2600 kg/m^3, granite near 2700; 2500 is the tool's long-standing default. Fired clay:
+  // solid fired-clay brick lies between about 1600 and 1900 kg/m^3 (civiltoday.com, "Density of
+  // Brick", after simetric.co.uk: common red brick 1900), so a clay ball about 1800.
+  static const std::vector<ProjectileMaterial> materials = {
+      {"stone", 2500, "stone, 2500 kg/m3 (limestone, sandstone; granite is nearer 2700)"},
+      {"iron", 7870, "iron, 7870 kg/m3 (CRC Handbook)"},
+      {"lead", 11340, "lead, 11340 kg/m3 (CRC Handbook)"},
+      {"clay", 1800, "fired clay, about 1800 kg/m3 (solid brick lies between 1600 and 1900)"},
+  };
+  return materials;
+}
+
+const ProjectileMaterial* find_projectile_material(const std::string& name) {
+  for (const ProjectileMaterial& m : projectile_materials())
+    if (name == m.name) return &m;
+  return nullptr;
+}
+
 double sphere_diameter(double mass, double density) { return std::cbrt(6 * mass / (M_PI * density)); }
 
 double drag_coefficient_of(double re) {
@@ -140,7 +161,7 @@ std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Dr
 std::string describe_air(const Air& air, double mass) {
   std::string text = "air (";
   text += air.drag_coefficient ? "Cd " + format_significant(*air.drag_coefficient, 3) : std::string("Cd(Re) of a smooth sphere");
-  text += ", air " + format_significant(air.density, 3) + " kg/m3, a sphere of " + format_significant(air.projectile_density, 4) + " kg/m3, ";
+  text += ", air " + format_significant(air.density, 3) + " kg/m3, a sphere of " + format_significant(air.projectile_density, 5) + " kg/m3, ";
   if (mass > 0) text += "d = " + format_significant(sphere_diameter(mass, air.projectile_density), 3) + " m, ";
   text += air.wind == 0 ? std::string("no wind") : "wind " + format_significant(air.wind, 3) + " m/s toward the target";
   return text + ")";

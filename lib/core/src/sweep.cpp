@@ -38,6 +38,17 @@ std::vector<double> sweep_grid(const SweepSpec& spec) {
   return grid;
 }
 
+std::vector<double> what_if_values(double from, double to, int points) {
+  if (points < 2 || points > max_what_if_points)
+    throw Error(ErrorKind::usage, "a sweep takes 2 to " + std::to_string(max_what_if_points) + " points, got " + std::to_string(points));
+  if (!std::isfinite(from) || !std::isfinite(to) || !(from < to))
+    throw Error(ErrorKind::bad_number, "a sweep runs from a low value to a higher one, got " + format_number(from) + " to " + format_number(to));
+  std::vector<double> values;
+  for (int i = 0; i + 1 < points; ++i) values.push_back(from + (to - from) * i / (points - 1));
+  values.push_back(to);  // exact, not from + (to - from) rounded
+  return values;
+}
+
 namespace {
 
 SweepPoint optimize_point(const SweepSpec& spec, double X) {

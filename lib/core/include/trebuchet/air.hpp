@@ -16,10 +16,25 @@ namespace trebuchet {
 struct Air {
   double density = 1.2;  ///< of the air [kg/m^3]
   std::optional<double> drag_coefficient = 0.47;  ///< Cd of a sphere; nullopt: Cd(Re), drag_coefficient_of
-  double projectile_density = 2500;  ///< stone [kg/m^3]; iron 7870
+  double projectile_density = 2500;  ///< stone [kg/m^3] (projectile_materials)
   double viscosity = 1.81e-5;  ///< dynamic viscosity of air at 15 degC [Pa s], for Re
   double wind = 0;  ///< horizontal wind toward the target (against it: < 0) [m/s]
 };
+
+/// A projectile's material by name, for its density: it sets the sphere's diameter, and with it
+/// the drag in air (drag_of).
+struct ProjectileMaterial {
+  const char* name;
+  double density;  ///< [kg/m^3]
+  const char* words;  ///< what it is, and where the density comes from
+};
+
+/// stone (granite and limestone, about 2500 kg/m^3, the default), iron (cast, 7870), lead (11340)
+/// and fired clay (about 1800), in that order; air.cpp gives each its source.
+const std::vector<ProjectileMaterial>& projectile_materials();
+
+/// The material named `name` ("stone", "iron", "lead", "clay"), or none.
+const ProjectileMaterial* find_projectile_material(const std::string& name);
 
 /// Refuses (Error(bad_number), naming {{air_density}}, {{projectile}}, {{cd}} or {{wind}}) air
 /// or a projectile outside the ordinary: air 1e-6 to 1e4 kg/m^3, projectile 1 to 1e5 kg/m^3,

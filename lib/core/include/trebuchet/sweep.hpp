@@ -1,4 +1,5 @@
-// A sweep along the X axis (Y = 0) of eq:XY_RT for one (theta_i, F) block: the ab-initio
+// Two sweeps. The what-if sweep's values: one engine's value from one end to the other, whose
+// shots the application makes (app/what_if.hpp). And a sweep along the X axis (Y = 0) of eq:XY_RT for one (theta_i, F) block: the ab-initio
 // optimum (optimizer.hpp) at each X point, the data from which tab:CPNC is fitted
 // (section 6.1, fig:fZ_vs_X). Points can be spread over threads and split into shards; the
 // result depends on neither. A shard's points travel as a sweep part (JSON).
@@ -33,6 +34,14 @@ inline constexpr int max_grid_points = 10000;
 /// whenever the interval holds it. Throws Error(usage) for a step <= 0, an empty interval or
 /// more than max_grid_points points.
 std::vector<double> sweep_grid(const SweepSpec& spec);
+
+/// The most points a what-if sweep may have.
+inline constexpr int max_what_if_points = 1000;
+
+/// The values of a what-if sweep: `points` values evenly spaced from `from` to `to`, both ends
+/// exact. Throws Error(usage) for fewer than 2 or more than max_what_if_points points, and
+/// Error(bad_number) for ends that are not finite or not from < to.
+std::vector<double> what_if_values(double from, double to, int points);
 
 /// Part k (1-based) of n: every n-th grid point from the k-th, so that parts cost about the same.
 struct Shard {

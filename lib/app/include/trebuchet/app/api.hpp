@@ -24,6 +24,12 @@ nlohmann::ordered_json design(const nlohmann::json& request);
 /// the viewer draws (pictures.hpp's shot_series_json).
 nlohmann::ordered_json shot(const nlohmann::json& request);
 
+/// A what-if sweep (trebuchet-verify sweep --format json, what_if.hpp): "design" (as shot's),
+/// "vary" ("L4=2m..5m": a value of the engine, its parts or its release, and its range),
+/// "points" (2 to 1000, default 21) and the settings of shot. Each point's record is the shot's
+/// answer for that engine, or {key: value, "error"}.
+nlohmann::ordered_json sweep(const nlohmann::json& request);
+
 /// The ab-initio optimum (trebuchet-verify optimize --format json, an array of the optima found):
 /// "R" with "T" or with the stone's "m"; optional "theta_i_deg", "F", "l" (a fixed beam ratio),
 /// the material (beta2, youngs_modulus, wood_density, g) and the settings of shot.

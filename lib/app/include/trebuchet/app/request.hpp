@@ -17,4 +17,9 @@ BranchChoice parse_branch_choice(std::string_view text);
 /// The initial beam angle: "30", "30deg" [deg]; must lie in (0, 90).
 double parse_theta(std::string_view text, std::string_view name);
 
+/// A projectile's density [kg/m^3] from a material's name (stone, iron, lead, clay: air.hpp's
+/// projectile_materials) or a density with its unit ("7870kg/m3"); Error(usage) naming `name`
+/// for a word that is neither, the errors of parse_positive for the number.
+double parse_projectile_density(std::string_view text, std::string_view name);
+
 }  // namespace trebuchet

@@ -1,0 +1,42 @@
+// sweep: what if one value of an engine changes? Its shot at each point of a range, the rest
+// held (app/what_if.hpp, docs/verifier.md).
+#include <iostream>
+
+#include "program.hpp"
+#include "run.hpp"
+#include "trebuchet/app/text_input.hpp"
+#include "trebuchet/app/what_if.hpp"
+
+namespace trebuchet::verify {
+
+int run_sweep(const Options& o) {
+  if (!o.what_if) throw Error(ErrorKind::usage, "sweep needs the value to vary and its range: --vary L4=2m..5m");
+  DesignCheck check;
+  check.settings = settings_of(o);
+  check.material = o.material;
+  check.units = o.units;
+  check.csv = o.format == Format::csv;
+  check.csv_digits = o.digits;
+  check.inputs = {o.input};
+  nlohmann::json passed = nlohmann::json::object();
+  std::string where;
+  const DesignValues values = one_design(o, "sweep", where, passed);
+  WhatIf what_if = *o.what_if;
+  what_if.points = o.what_if_points;
+  // The release is set per point where the sweep varies it (--vary pin_angle=30..40), else once.
+  if (what_if.field->group != FieldGroup::release) check.settings.release_at = release_of(values, where);
+  const std::vector<WhatIfPoint> points = run_what_if(values, what_if, check, o.threads, progress_bar("shots"));
+  int code = exit_success, failed = 0;
+  for (const WhatIfPoint& p : points)
+    if (p.error) ++failed, code = std::max(code, exit_code(Program::verify, p.error->kind()));
+  if (o.format == Format::json)
+    std::cout << pretty_json(what_if_json(what_if, points, option_word));
+  else if (o.format == Format::csv)
+    std::cout << what_if_csv(what_if, points, option_word);
+  else
+    std::cout << what_if_table(what_if, points, o.units, option_word);
+  // Every point failed: the engine's fault, reported as the worst failure; a point that fails among others is a finding.
+  return failed == static_cast<int>(points.size()) ? code : exit_success;
+}
+
+}  // namespace trebuchet::verify
