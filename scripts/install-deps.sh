@@ -4,7 +4,8 @@
 #   bash scripts/install-deps.sh          everything: the programs, their tests and the browser page
 #   bash scripts/install-deps.sh native   the programs and their tests only (scripts/quickstart.sh)
 # The page's part also enables Debian's source packages (GSL for WebAssembly is built from
-# Debian's source of it) and installs the page's npm packages (tests/web: playwright-core, ESLint).
+# Debian's source of it) and installs the page's npm packages (web: qrcode-generator, bundled into
+# the page; tests/web: playwright-core, ESLint, jsqr).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scope=${1:-all}
@@ -82,7 +83,12 @@ if [ "$scope" != native ]; then
   bash scripts/build-gsl-wasm.sh --fetch
   # The page's npm packages at the versions of tests/web/package-lock.json: playwright-core, which
   # drives Debian's chromium and downloads no browser, and ESLint (scripts/lint.sh).
-  if [ ! -d tests/web/node_modules/playwright-core ] || [ ! -x tests/web/node_modules/.bin/eslint ]; then
+  # jsqr reads the page's QR code back in its test.
+  if [ ! -d tests/web/node_modules/playwright-core ] || [ ! -x tests/web/node_modules/.bin/eslint ] || [ ! -d tests/web/node_modules/jsqr ]; then
     (cd tests/web && npm ci --no-audit --no-fund --loglevel=error)
+  fi
+  # What the page bundles (web/package-lock.json): qrcode-generator, the share link's QR code.
+  if [ ! -d web/node_modules/qrcode-generator ]; then
+    (cd web && npm ci --no-audit --no-fund --loglevel=error)
   fi
 fi

@@ -26,9 +26,15 @@
     view: 'design', units: 'si', pair: 'R,m', first: ['R', '300m'], second: ['m', '50kg'], theta: '30', F: '2/3',
     air: false, cd: '0.47', wind: '0m/s', release: 'Q', target_level: '0m', range_from: 'pivot', release_by: 'optimum', release_value: '',
     machine: 'hinged', edit: null, attested: { Lb: '9.5m', M: '3t', m: '50kg' }, samples: '200',
+    projectile: 'stone', projectile_density: '3000kg/m3', projector: false, sweep_key: 'L4', sweep_from: '', sweep_to: '',
   };
+  const DEFAULTS = JSON.stringify(state);  // a link carries only what differs from these, so that it stays short (and its QR code coarse)
+  const MATERIALS = ['stone', 'iron', 'lead', 'clay'];  // the library's names (air.hpp, projectile_materials)
   let designed = null;   // the calculator's design (JSON), or null when refused
   let shown = null;      // the engine the shot is of (engine keys), and its shot
+  let editBase = null;   // the engine the edit view opened: the one shown when Edit was chosen
+  let editFrom = null;   // the view it was shown in
+  let lastSweep = null;  // the what-if sweep drawn: {request, answer}
   let viewer = null;
   const q = (value, dimension) => V.quantity(value, dimension, state.units);  // in the units chosen
 
@@ -67,7 +73,10 @@
   }
   function settings() {
     const s = { release: state.release, target_level: state.target_level, range_from: state.range_from };
-    if (state.air) s.air = { drag_coefficient: /^re$/i.test(state.cd.trim()) ? 'Re' : state.cd, wind: state.wind };
+    if (state.air) {
+      s.air = { drag_coefficient: /^re$/i.test(state.cd.trim()) ? 'Re' : state.cd, wind: state.wind,
+        projectile_density: state.projectile === 'density' ? state.projectile_density : state.projectile };
+    }
     return s;
   }
   // The engine as the machine chosen (its key "machine", none for the paper's) with the release
@@ -95,7 +104,9 @@
   // ---- URL state ----------------------------------------------------------------------------
   function saveState() {
     const params = new URLSearchParams();
-    for (const [k, v] of Object.entries(state)) if (v !== null) params.set(k, typeof v === 'object' ? JSON.stringify(v) : String(v));
+    const defaults = JSON.parse(DEFAULTS);
+    for (const [k, v] of Object.entries(state))
+      if (v !== null && JSON.stringify(v) !== JSON.stringify(defaults[k])) params.set(k, typeof v === 'object' ? JSON.stringify(v) : String(v));
     history.replaceState(null, '', '#' + params.toString());
   }
   // A link's state is anyone's text: each value is checked against what it must be, and one
@@ -112,6 +123,8 @@
     release_by: (v) => ['optimum', 'pin_angle_deg', 'release_angle_deg', 'release_time'].includes(v), release_value: isText,
     machine: (v) => ['hinged', 'fixed', 'floating-arm', 'whipper'].includes(v),
     range_from: (v) => ['pivot', 'release'].includes(v), samples: isText,
+    projectile: (v) => MATERIALS.concat(['density']).includes(v), projectile_density: isText, projector: (v) => typeof v === 'boolean',
+    sweep_key: (v) => sweepable().some((f) => f.key === v), sweep_from: isText, sweep_to: isText,
     // An edited engine: keys of a shot's design, each a finite number, the engine's own values positive.
     edit: (v) => v === null || (typeof v === 'object' && !Array.isArray(v) && Object.keys(v).length > 0 &&
       Object.entries(v).every(([key, x]) => INPUTS.some((f) => f.key === key && f.operations.includes('shot')) && typeof x === 'number' &&
@@ -124,7 +137,7 @@
     for (const [k, text] of params) {
       if (!Object.prototype.hasOwnProperty.call(CHECKS, k)) continue;
       let value = text;
-      if (k === 'air') value = text === 'true' ? true : text === 'false' ? false : null;
+      if (k === 'air' || k === 'projector') value = text === 'true' ? true : text === 'false' ? false : null;
       else if (['first', 'second', 'edit', 'attested'].includes(k)) { try { value = JSON.parse(text); } catch (e) { continue; } }
       if (CHECKS[k](value)) state[k] = value;
     }
@@ -203,38 +216,132 @@
     $('download-json').download = name + '.json';
     $('download-csv').download = name + '-shot.csv';
     $('download-csv').href = 'data:text/csv;charset=utf-8,' + encodeURIComponent(V.seriesCsv(answer));
+    showProjectile(answer);
     return answer;
   }
   const escapeHtml = V.escapeHtml;
+  // The ball the shot flew: its material and the diameter that gives it its mass (in air, its drag).
+  function showProjectile(answer) {
+    const a = answer.assumptions.air, words = { stone: 'stone', iron: 'iron', lead: 'lead', clay: 'fired clay', density: 'a ball' }[state.projectile];
+    $('projectile-size').textContent = a === 'vacuum'
+      ? 'The material sets the ball\'s size for its mass, and so its drag: it matters only in air.'
+      : `The ball: ${words} of ${V.significant(a.projectile_density, 5)} kg/m³, m = ${q(answer.engine.m, 'mass')}, diameter d = ${q(a.projectile_diameter, 'length')}.`;
+    $('projectile-size').dataset.diameter = a === 'vacuum' ? '' : String(a.projectile_diameter);
+  }
 
   // ---- edit -----------------------------------------------------------------------------------
+  // The text a typed box shows for a value: in the units chosen, as the library reads it back ("5.8 m", "19.03 ft", "30 deg").
+  const typedText = (value, dimension) => (dimension === 'angle' ? V.significant(value, 4) + ' deg' : q(value, dimension));
   function buildSliders() {
     const box = $('sliders');
     box.innerHTML = '';
-    const base = designed ? engineOf(designed) : state.edit;
+    const base = editBase || (designed ? engineOf(designed) : state.edit);
     if (!base) { box.textContent = 'Design an engine first (view 1).'; return; }
     if (!state.edit) state.edit = Object.assign({}, base);
-    // A slider for each of the engine's values the design has (a propped angle it has not; the
-    // whipper's θi, pytrebuchet's -150°, neither), reaching the edited value where a link takes it
-    // beyond the design's range.
-    for (const { key, dimension } of ENGINE.filter((f) => base[f.key] > 0 && !(f.key === 'theta_i_deg' && state.machine === 'whipper'))) {
+    // A slider and a typed box for each of the engine's values the design has (a propped angle it
+    // has not; the whipper's θi, pytrebuchet's -150°, neither), reaching the edited value where a
+    // link or a typed value takes it beyond the design's range.
+    for (const { key, dimension, label } of ENGINE.filter((f) => base[f.key] > 0 && !(f.key === 'theta_i_deg' && state.machine === 'whipper'))) {
       if (!(state.edit[key] > 0)) state.edit[key] = base[key];
       const centre = base[key], edited = state.edit[key];
       const [lo, hi] = key === 'theta_i_deg' ? [10, 80] : [Math.min(centre * 0.3, edited * 0.9), Math.max(centre * 2.5, edited * 1.1)];
-      const row = document.createElement('label');
+      const row = document.createElement('div');
       row.className = 'slider';
-      row.innerHTML = `<span class="name"></span><input type="range" step="any"><output></output>`;
+      row.innerHTML = `<span class="name"></span><span class="words"></span><input type="range" step="any"><input class="typed" autocomplete="off">`;
       row.querySelector('.name').textContent = key === 'theta_i_deg' ? 'θi' : key;
-      const input = row.querySelector('input'), out = row.querySelector('output');
+      row.querySelector('.words').textContent = key === 'theta_i_deg' ? 'start angle' : label.replace(/ \[deg\]$/, '');
+      const input = row.querySelector('input[type="range"]'), typed = row.querySelector('.typed');
       Object.assign(input, { min: String(lo), max: String(hi), value: String(state.edit[key]) });
       input.dataset.key = key;
-      input.setAttribute('aria-label', key);
-      const show = () => { out.textContent = dimension === 'angle' ? V.significant(Number(input.value), 4) + '°' : q(Number(input.value), dimension); };
+      typed.dataset.key = key;
+      input.setAttribute('aria-label', key + ', ' + label);
+      typed.setAttribute('aria-label', key + ' typed, with its unit');
+      typed.title = 'type a value with its unit, metric or imperial (' + (INPUTS.find((f) => f.key === key) || { units: [] }).units.join(', ') + '), then Enter';
+      const show = () => { typed.value = typedText(state.edit[key], dimension); typed.removeAttribute('aria-invalid'); };
       show();
       input.addEventListener('input', () => { state.edit[key] = Number(input.value); show(); update(); });
+      // A typed value is read by the library, as the programs read it; the slider follows, widened to reach it.
+      typed.addEventListener('change', () => {
+        const answer = call('value', { key, text: typed.value });
+        const message = $('edit-message');
+        if (answer.error || !(answer.value > 0) || (key === 'theta_i_deg' && !(answer.value < 90))) {
+          typed.setAttribute('aria-invalid', 'true');
+          message.className = 'message refused';
+          message.textContent = answer.error || `${key}: ${typed.value} must be positive${key === 'theta_i_deg' ? ' and below 90 deg' : ''}; type it again`;
+          return;
+        }
+        message.className = 'message'; message.textContent = '';
+        state.edit[key] = answer.value;
+        input.min = String(Math.min(Number(input.min), answer.value)); input.max = String(Math.max(Number(input.max), answer.value));
+        input.value = String(answer.value);
+        show();
+        update();
+      });
       box.appendChild(row);
     }
+    const from = { design: 'the optimal engine of view 1, Design', reconstruct: 'the completed engine of view 3, Reconstruct' }[editFrom];
+    $('edit-source').textContent = from ? 'Editing ' + from + '.' : '';
+    fillSweepKeys();
   }
+
+  // ---- what if: one value of the edited engine over a range (api sweep) -------------------------
+  // The values a sweep may vary: the engine's, and the builder's pin.
+  function sweepable() {
+    return INPUTS.filter((f) => (f.group === 'engine' && f.operations.includes('shot') && f.key !== 'psi_i_deg') || f.key === 'pin_angle_deg');
+  }
+  function fillSweepKeys() {
+    const select = $('sweep-key');
+    select.innerHTML = sweepable().filter((f) => f.key === 'pin_angle_deg' || (state.edit && state.edit[f.key] > 0))
+      .map((f) => `<option value="${f.key}">${f.key === 'theta_i_deg' ? 'θi' : f.key}: ${escapeHtml(f.label.replace(/ \[deg\]$/, ''))}</option>`).join('');
+    select.value = state.sweep_key;
+    if (select.value !== state.sweep_key) { state.sweep_key = select.value; state.sweep_from = state.sweep_to = ''; }
+  }
+  // The sweep's range: as typed (with units), else the edited value halved to one and a half
+  // times; θi 15° either side; the pin 20° either side of this shot's.
+  function sweepRange(shot) {
+    const key = state.sweep_key, value = key === 'pin_angle_deg' ? shot.pin_angle_at_release_deg : state.edit[key];
+    const [lo, hi] = key === 'pin_angle_deg' ? [value - 20, value + 20] : key === 'theta_i_deg' ? [Math.max(1, value - 15), Math.min(89, value + 15)] : [value / 2, value * 1.5];
+    return { value, from: state.sweep_from.trim() || String(lo), to: state.sweep_to.trim() || String(hi) };
+  }
+  function runSweep(shot) {
+    const box = $('sweep-chart'), message = $('sweep-message');
+    box.innerHTML = ''; message.textContent = ''; message.className = 'message';
+    lastSweep = null;
+    if (!shot || !state.edit) return null;
+    const key = state.sweep_key, field = INPUTS.find((f) => f.key === key);
+    if (!field) return null;
+    const range = sweepRange(shot);
+    $('sweep-from').placeholder = typedText(Number(range.from) || 0, field.dimension);
+    $('sweep-to').placeholder = typedText(Number(range.to) || 0, field.dimension);
+    const request = Object.assign({ design: asBuilt(state.edit), vary: `${key}=${range.from}..${range.to}`, points: 21 }, settings());
+    const answer = call('sweep', request);
+    if (answer.error) { message.className = 'message refused'; message.textContent = answer.error; return answer; }
+    lastSweep = { request, answer };
+    const [size, unit] = field.dimension === 'angle' ? [1, '°'] : V.unitOf(field.dimension, state.units);
+    const x = answer.values.map((v) => v / size);
+    const over = (name, of) => answer.points.map((p) => (p.error ? null : of(p) / of(shot)));
+    const lines = [
+      { name: 'range R', colour: '#2ca02c', width: 2.5, x, y: over('R', (p) => p.R) },
+      { name: 'efficiency ε', colour: '#1f77b4', x, y: over('eps', (p) => p.eps) },
+      { name: 'quality Q', colour: 'black', x, y: over('Q', (p) => p.Q) },
+      { name: 'peak axle load', colour: '#9467bd', dash: '5 3', x, y: over('pivot_force', (p) => p.pivot_force) },
+    ];
+    const breaking = answer.points.map((p, i) => (p.rupture_margin < 1 ? i : -1)).filter((i) => i >= 0);
+    const labels = breaking.map((i) => ({ x: x[i], y: answer.points[i].R / shot.R, text: '✗', attributes: { fill: '#b00020', 'font-size': 15, 'text-anchor': 'middle', 'font-weight': 'bold' } }));
+    const name = key === 'theta_i_deg' ? 'θi' : key;
+    const figure = V.chart({ width: 420, height: 300, title: `What if ${name} changes? Each point a whole shot`,
+      subtitle: 'each value over its value in this engine; ✗: the beam breaks', xLabel: `${name}, ${field.label.replace(/ \[deg\]$/, '')} [${unit}]`,
+      yLabel: 'over this engine', xName: name, xUnit: unit, lines, labels, marks: [{ name: 'this engine', x: range.value / size }] });
+    figure.classList.add('sweep-chart');
+    box.appendChild(figure);
+    const failed = answer.points.filter((p) => p.error);
+    const notes = [];
+    if (breaking.length) notes.push(`The beam breaks at ${breaking.length} of the ${answer.points.length} points (✗), from ${name} = ${typedText(answer.values[breaking[0]], field.dimension)} to ${typedText(answer.values[breaking[breaking.length - 1]], field.dimension)}.`);
+    if (failed.length) notes.push(`${failed.length} point(s) make no shot: ${failed[0].error}`);
+    if (notes.length) { message.className = breaking.length ? 'message refused' : 'message'; message.textContent = notes.join(' '); }
+    return answer;
+  }
+
   function compareWithOptimum(answer) {
     const box = $('compare');
     if (!answer) { box.innerHTML = ''; return; }
@@ -365,7 +472,8 @@
     box.innerHTML = `<table class="tv-figures"><caption>Monte Carlo band: ${answer.samples} completions, ${failed} failed</caption>
       <tr><th></th><th>5 %</th><th>50 %</th><th>95 %</th></tr>
       <tr><th>R</th><td>${q(p.R.p5, 'length')}</td><td>${q(p.R.p50, 'length')}</td><td>${q(p.R.p95, 'length')}</td></tr>
-      <tr><th>T</th><td>${q(p.T.p5, 'energy')}</td><td>${q(p.T.p50, 'energy')}</td><td>${q(p.T.p95, 'energy')}</td></tr></table>`;
+      <tr><th>T</th><td>${q(p.T.p5, 'energy')}</td><td>${q(p.T.p50, 'energy')}</td><td>${q(p.T.p95, 'energy')}</td></tr></table>
+      ${answer.draws_csv ? `<p class="downloads">Download: <a id="download-draws" download="monte-carlo-samples.csv" href="data:text/csv;charset=utf-8,${encodeURIComponent(answer.draws_csv)}">every sample (CSV): its drawn inputs, R, T, ε, v, or why it failed</a></p>` : ''}`;
   }
   async function runBand() {
     if (!Object.values(state.attested).some(uncertain)) {
@@ -373,7 +481,7 @@
       $('reconstruct-message').textContent = 'Give at least one value as a range (2.5t..3.5t) or a spread (3.5m±0.2m): the band is what the uncertain values make of R and T.';
       return null;
     }
-    const request = Object.assign({ attested: Object.assign({}, state.attested), samples: state.samples, seed: 1 }, settings());
+    const request = Object.assign({ attested: Object.assign({}, state.attested), samples: state.samples, seed: 1, draws_csv: true }, settings());
     const key = JSON.stringify([state.attested, settings(), state.samples]);
     const bar = $('progress'), count = $('progress-text');
     bar.hidden = false; bar.value = 0;
@@ -388,6 +496,50 @@
     return answer;
   }
 
+  // ---- the share link as a QR code (qrcode-generator, bundled) ---------------------------------
+  function showQr() {
+    saveState();
+    const link = location.href;
+    let svgText = null;
+    // The highest error correction the link fits at, down to L (7 %); a link too long for a QR code says so.
+    for (const level of ['M', 'L']) {
+      try {
+        const code = qrcode(0, level);  // eslint-disable-line no-undef
+        code.addData(link);
+        code.make();
+        svgText = code.createSvgTag({ cellSize: 4, margin: 4, scalable: true, alt: 'QR code of the link to this page' });
+        break;
+      } catch (e) { /* too long at this level */ }
+    }
+    $('qr-code').innerHTML = svgText || '<p class="message refused">This link is too long for a QR code; copy it instead.</p>';
+    $('qr-text').textContent = link.length > 160 ? link.slice(0, 160) + '…' : link;
+    $('qr-dialog').showModal();
+  }
+
+  // ---- the symbols, in plain words ------------------------------------------------------------
+  function buildLegend() {
+    const words = [
+      ['θ, θi', 'the beam\'s angle from the downward vertical; θi where it starts'],
+      ['ψ', 'the counterweight arm\'s angle from the vertical'],
+      ['φ', 'the sling\'s angle from the horizontal'],
+    ];
+    for (const f of INPUTS.filter((g) => ['L1', 'L2', 'L3', 'L4', 'H', 'M', 'm', 'mb', 'D', 'Lb', 'F', 'beta2'].includes(g.key)))
+      words.push([f.key === 'beta2' ? 'β2' : f.key, f.help]);
+    words.push(
+      ['R', 'the range: how far the projectile lands from the pivot, at the target\'s level'],
+      ['T', 'the projectile\'s kinetic energy where it lands (eq:T)'],
+      ['ΔU', 'the energy the counterweight and the beam give up in falling to their final rest (eq:DU)'],
+      ['ε', 'the efficiency: the share of ΔU the projectile carries away (eq:Aux)'],
+      ['𝓕', 'the force factor: how hard the engine pulls on its frame, as a multiple of the weights (eq:F)'],
+      ['Q', 'the quality: range for the engine\'s size and counterweight, over the force factor, Q = ρ̃ μ ε / 𝓕 (eq:Q)'],
+      ['ρ̃, μ', 'R over the long arm L1; the projectile\'s mass over the counterweight\'s, m/M'],
+      ['v, A', 'the release speed, and the climb: the velocity\'s angle above the horizontal at the release'],
+      ['pin angle', 'the angle between the long arm and the sling at the release: the pin a builder bends'],
+      ['margin', 'the wood\'s modulus of rupture over the beam\'s largest stress: below 1 the beam breaks'],
+    );
+    $('legend').innerHTML = words.map(([symbol, text]) => `<dt>${escapeHtml(symbol)}</dt><dd>${escapeHtml(text)}</dd>`).join('');
+  }
+
   // ---- the whole page -------------------------------------------------------------------------
   function update() {
     saveState();
@@ -398,15 +550,22 @@
       if (!state.edit && designed) state.edit = engineOf(designed);
       const answer = state.edit ? runShot(state.edit, "The edited engine's shot") : null;
       compareWithOptimum(answer);
+      runSweep(answer);
     } else if (state.view === 'reconstruct') {
       runComplete();
     }
   }
   function showView(view) {
+    // Edit opens the engine shown in the view left (the optimal or the completed one), as it was shot.
+    if (view === 'edit' && state.view !== 'edit' && shown) {
+      editBase = Object.assign({}, shown.engine);
+      editFrom = state.view;
+      state.edit = Object.assign({}, shown.engine);
+    }
     state.view = view;
     document.querySelectorAll('nav button').forEach((b) => b.setAttribute('aria-selected', String(b.dataset.view === view)));
     document.querySelectorAll('.view').forEach((v) => { v.hidden = v.dataset.view !== view; });
-    if (view === 'edit') { runDesign(); buildSliders(); }
+    if (view === 'edit') { if (!editBase) runDesign(); buildSliders(); }
     if (view === 'reconstruct') buildAttested();
     update();
   }
@@ -418,7 +577,7 @@
         const [a, b] = state.pair.split(',');
         state.first = [a, EXAMPLES[a]]; state.second = [b, EXAMPLES[b]];
       }
-      state.edit = null;
+      state.edit = null; editBase = null;
       showPair(); update();
     });
     for (const [id, slot] of [['first', 'first'], ['second', 'second']]) {
@@ -458,7 +617,27 @@
     $('pair').value = state.pair;
     showPair();
     document.querySelectorAll('nav button').forEach((b) => b.addEventListener('click', () => showView(b.dataset.view)));
-    $('reset-edit').addEventListener('click', () => { state.edit = null; runDesign(); buildSliders(); update(); });
+    $('reset-edit').addEventListener('click', () => {
+      state.edit = editBase ? Object.assign({}, editBase) : null;
+      if (!editBase) runDesign();
+      buildSliders(); update();
+    });
+    $('sweep-key').addEventListener('change', () => { state.sweep_key = $('sweep-key').value; state.sweep_from = state.sweep_to = ''; $('sweep-from').value = $('sweep-to').value = ''; update(); });
+    for (const [id, key] of [['sweep-from', 'sweep_from'], ['sweep-to', 'sweep_to']]) {
+      $(id).value = state[key];
+      $(id).addEventListener('change', () => { state[key] = $(id).value; update(); });
+    }
+    // The projectile's material: a name the library knows, or a density typed.
+    $('projectile').value = state.projectile;
+    $('projectile-density').value = state.projectile_density;
+    $('projectile-density-row').hidden = state.projectile !== 'density';
+    $('projectile').addEventListener('change', () => { state.projectile = $('projectile').value; $('projectile-density-row').hidden = state.projectile !== 'density'; update(); });
+    $('projectile-density').addEventListener('change', () => { state.projectile_density = $('projectile-density').value; update(); });
+    // A projector: large type and high contrast.
+    const projector = () => { document.documentElement.classList.toggle('projector', state.projector); $('projector').setAttribute('aria-pressed', String(state.projector)); };
+    projector();
+    $('projector').addEventListener('click', () => { state.projector = !state.projector; projector(); update(); });
+    $('qr').addEventListener('click', showQr);
     $('complete').addEventListener('click', () => runComplete());
     $('monte-carlo').addEventListener('click', () => runBand());
     $('share').addEventListener('click', () => {
@@ -475,6 +654,7 @@
     readInputs();
     loadState();
     wire();
+    buildLegend();
     showView(state.view);
     return api;
   });
@@ -482,6 +662,8 @@
     ready,
     design: (request) => call('design', request),
     shot: (request) => call('shot', request),
+    sweep: (request) => call('sweep', request),
+    value: (request) => call('value', request),
     complete: (request) => call('complete', request),
     monteCarlo: (request) => call('monteCarlo', request),
     fields: () => call('fields', {}),
@@ -489,6 +671,7 @@
     state: () => JSON.parse(JSON.stringify(state)),
     current: () => (shown ? shown.shot : null),  // the shot the page shows, as shot() answered it
     viewer: () => viewer,
+    whatIf: () => lastSweep,  // the what-if sweep drawn in the edit view: its request and answer
   };
   window.trebuchet = api;
 })();

@@ -1,5 +1,5 @@
-// Puts the page into one file: web/index.html with style.css, the module (trebuchet.js, its
-// WebAssembly inside), viewer.js and app.js inlined, so that it opens from file:// and fetches
+// Puts the page into one file: web/index.html with style.css, qrcode-generator (npm), the module
+// (trebuchet.js, its WebAssembly inside), viewer.js and app.js inlined, so that it opens from file:// and fetches
 // nothing.   node web/bundle.mjs MODULE.js OUT.html
 import { readFileSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
@@ -14,7 +14,10 @@ const here = dirname(fileURLToPath(import.meta.url));
 const read = (path) => readFileSync(path, 'utf8');
 // Text inside <script> must not close it early.
 const script = (code, id) => `<script${id ? ` id="${id}"` : ''}>\n${code.replace(/<\/script/gi, '<\\/script')}\n</script>`;
+// The QR code library, from npm (web/package.json, installed by scripts/install-deps.sh).
+const qrcodePath = join(here, 'node_modules', 'qrcode-generator', 'dist', 'qrcode.js');
 const parts = {
+  '<!-- qrcode -->': script(read(qrcodePath)),
   '<!-- style -->': `<style>\n${read(join(here, 'style.css'))}</style>`,
   '<!-- module -->': script(read(modulePath), 'trebuchet-module'),
   '<!-- viewer -->': script(read(join(here, 'viewer.js'))),

@@ -341,6 +341,11 @@
     const warnings = (shot.warnings || []).length
       ? `<div class="tv-warning" role="alert"><b>NOT PHYSICAL.</b> The model stops holding before the release; these are not the figures of a real engine:<ul>${shot.warnings.map((w) => '<li>' + escapeHtml(w) + '</li>').join('')}</ul></div>` : '';
     const notes = (shot.notes || []).map((n) => `<p class="tv-note">${escapeHtml(n)}</p>`).join('');
+    // The beam's strength, pass or break, where the shot knows the beam's diameter (given, or from mb).
+    const margin = shot.rupture_margin, stress = Math.max(shot.stress_at_rest || 0, shot.stress_peak || 0);
+    const strength = margin === undefined ? ''
+      : margin < 1 ? `<div class="tv-strength tv-breaks" role="alert"><b>✗ THE BEAM BREAKS.</b> Its largest stress, ${q(stress, 'stress')}, is ${significant(1 / margin, 3)} times what its wood bears (the modulus of rupture): margin ${significant(margin, 3)}, below 1. Give it a larger diameter D, or a lighter counterweight M.</div>`
+        : `<div class="tv-strength tv-holds"><b>✓ The beam holds:</b> margin ${significant(margin, 3)}. Its largest stress, ${q(stress, 'stress')}, is ${significant(100 / margin, 3)} % of what its wood bears (the modulus of rupture).</div>`;
     const loads = [['sling tension', shot.sling_tension, shot.t_sling_tension], ['hinge pin |F_H|', shot.hinge_force, shot.t_hinge_force],
       ['pivot |F_R|', shot.pivot_force, shot.t_pivot_force]].filter(([, v]) => v !== undefined);
     const row = (name, value, title) => `<tr${title ? ` title="${escapeHtml(title)}"` : ''}><th>${name}</th><td>${value}</td></tr>`;
@@ -362,7 +367,7 @@
     const losses = shot.energy ? Object.entries(shot.energy.losses).filter(([, v]) => v !== 0) : [];
     const lossRows = losses.map(([k, v]) => row(lossNames[k] || k, q(v, 'energy') + ' (' + significant(100 * v / shot.energy.delta_U, 3) + ' % of ΔU)',
       'work taken from the bodies up to the release (docs/verifier.md, "Real engines")')).join('');
-    head.innerHTML = `<p class="tv-scene">This shot: <b>${escapeHtml(describeAssumptions(shot, system))}</b>.</p>${warnings}${notes}`;
+    head.innerHTML = `<p class="tv-scene">This shot: <b>${escapeHtml(describeAssumptions(shot, system))}</b>.</p>${warnings}${strength}${notes}`;
     container.appendChild(head);
     const tables = document.createElement('div');
     tables.className = 'tv-tables';
@@ -382,7 +387,8 @@
       </table><table class="tv-figures"><caption>the builder's loads (largest up to the release)</caption>
       ${loads.map(([name, v, t]) => row(name, q(v, 'force') + ' at ' + significant(t, 3) + ' s')).join('')}
       ${shot.beam_moment !== undefined ? row('beam moment at the pivot', q(shot.beam_moment, 'moment') + ' at ' + significant(shot.t_beam_moment, 3) + ' s') : ''}
-      ${shot.stress_peak > 0 ? row('beam stress, peak', q(shot.stress_peak, 'stress') + ' (' + significant(shot.rupture_margin, 3) + '× below rupture)') : ''}
+      ${shot.stress_peak > 0 ? row('beam stress, peak', q(shot.stress_peak, 'stress') + (shot.rupture_margin < 1 ? ' (<b class="tv-bad">BREAKS</b>: margin ' + significant(shot.rupture_margin, 3) + ')'
+        : ' (margin ' + significant(shot.rupture_margin, 3) + ': holds)'), 'the stress in the beam at the pivot; the margin is the modulus of rupture over the larger of the stress at rest and in the shot') : ''}
       </table><table class="tv-figures"><caption>the engine</caption>
       ${row('L1, L2 (beam)', q(e.L1, 'length') + ', ' + q(e.L2, 'length'))}${row('L3 (counterweight arm)', q(e.L3, 'length'))}
       ${row('L4 (sling)', q(e.L4, 'length'))}${row('H (pivot height)', q(e.H, 'length'))}
@@ -537,5 +543,5 @@
     return lines.join('\n') + '\n';
   }
 
-  global.TrebuchetViewer = { render, quantity, significant, describeAssumptions, seriesCsv, chart, escapeHtml };
+  global.TrebuchetViewer = { render, quantity, unitOf, significant, describeAssumptions, seriesCsv, chart, escapeHtml };
 })(typeof window !== 'undefined' ? window : globalThis);

@@ -1,6 +1,7 @@
 // Screenshots of every view of the page, to look at (not a test):
 //   node tests/web/screenshots.mjs PAGE.html OUTDIR
-// Each view at 1280x800 (the first screen, and the whole page) and at a phone's 390x844.
+// Each view at a projector's 1920x1080, a laptop's 1280x720 (the first screen, and the whole page)
+// and a phone's 390x844.
 import { mkdirSync } from 'node:fs';
 import { resolve, join } from 'node:path';
 import { pathToFileURL } from 'node:url';
@@ -45,10 +46,24 @@ const views = {
     await page.evaluate(async () => { await window.trebuchet.ready; window.trebuchet.viewer().setTime(1.3); });
   },
   refused: async (page) => { await page.fill('#first', '5000m'); },
+  // Issue 37: a beam that breaks, the what-if chart, an iron ball in air, the QR code, a projector.
+  breaks: async (page) => {
+    const edit = JSON.stringify({ L1: 4.13, L2: 0.88, L3: 1.5044566117531541, L4: 3.55, M: 3110, m: 50, mb: 174, D: 0.1 });
+    await page.goto(url + '#' + new URLSearchParams({ view: 'edit', edit }).toString());
+    await page.reload();
+    await page.evaluate(() => window.trebuchet.ready);
+  },
+  whatif: async (page) => {
+    await page.click('nav button[data-view="edit"]');
+    await page.locator('.whatif').scrollIntoViewIfNeeded();
+  },
+  iron: async (page) => { await page.check('#air'); await page.selectOption('#projectile', 'iron'); await page.locator('#projectile-size').scrollIntoViewIfNeeded(); },
+  qr: async (page) => { await page.click('#qr'); },
+  projector: async (page) => { await page.click('nav button[data-view="edit"]'); await page.click('#projector'); },
   imperial: async (page) => { await page.selectOption('#units', 'imperial'); },
 };
 for (const [name, act] of Object.entries(views)) {
-  for (const [width, height] of [[1280, 800], [390, 844]]) {
+  for (const [width, height] of [[1920, 1080], [1280, 720], [390, 844]]) {
     const { page, context, problems } = await open(browser, url, { width, height });
     await act(page);
     await page.waitForTimeout(200);

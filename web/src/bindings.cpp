@@ -16,6 +16,7 @@ std::string shot(const std::string& text) { return answer(trebuchet::api::shot, 
 std::string sweep(const std::string& text) { return answer(trebuchet::api::sweep, text); }
 std::string complete(const std::string& text) { return answer(trebuchet::api::complete, text); }
 std::string monte_carlo(const std::string& text) { return answer(trebuchet::api::monte_carlo, text); }
+std::string value(const std::string& text) { return answer(trebuchet::api::value, text); }
 std::string fields(const std::string& text) { return answer(trebuchet::api::fields, text); }
 
 }  // namespace
@@ -26,5 +27,6 @@ EMSCRIPTEN_BINDINGS(trebuchet) {
   emscripten::function("sweep", &sweep);
   emscripten::function("complete", &complete);
   emscripten::function("monteCarlo", &monte_carlo);
+  emscripten::function("value", &value);
   emscripten::function("fields", &fields);
 }

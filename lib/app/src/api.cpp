@@ -319,7 +319,7 @@ ordered_json complete(const json& request) {
 }
 
 ordered_json monte_carlo(const json& request) {
-  require_keys(request, with_settings({"design", "attested", "samples", "seed", "first", "count", "outcomes", "claim"}), "monte_carlo");
+  require_keys(request, with_settings({"design", "attested", "samples", "seed", "first", "count", "outcomes", "claim", "draws_csv"}), "monte_carlo");
   const bool completes = request.contains("attested");
   if (completes == request.contains("design"))
     throw Error(ErrorKind::usage, "give {{design}} (a shot of each sample) or {{attested}} (a completion of each sample), one of them");
@@ -416,9 +416,23 @@ ordered_json monte_carlo(const json& request) {
                                 1,
                                 claim};
   ordered_json answer = monte_carlo_json(report);
-  answer.erase("wall_time_s");  // a time is the caller's to measure; the report is the same on any machine
+  answer.erase("wall_time_s");
+  // Every sample's drawn inputs and outcomes as the programs' --draws writes them, to 17 digits: the run's own numbers.
+  if (flag_of(request, "draws_csv"))
+    answer["draws_csv"] = monte_carlo_draws_csv(report, 17);  // a time is the caller's to measure; the report is the same on any machine
   if (!passed.empty()) answer["passed"] = passed;
   return answer;
+}
+
+ordered_json value(const json& request) {
+  require_keys(request, {"key", "text"}, "value");
+  const std::string key = request.contains("key") ? text_of(request["key"], "key") : "";
+  const InputField* field = find_field(key);
+  if (!field) throw Error(ErrorKind::usage, "{{key}}: '" + key + "' is no input's key; use one of " + join(input_names(~0u), ", "));
+  if (!request.contains("text"))
+    throw Error(ErrorKind::usage, "{{text}} is missing; give the value as typed, e.g. \"" + std::string(field->example) + "\"");
+  const std::string text = request["text"].is_number() ? format_number(request["text"].get<double>()) : text_of(request["text"], "text");
+  return {{"key", field->key}, {"value", parse_value(text, field->dimension, field->key)}};
 }
 
 ordered_json fields(const json& request) {

@@ -47,8 +47,13 @@ nlohmann::ordered_json complete(const nlohmann::json& request);
 /// "3.5m±0.2m", the settings of shot, "samples" and "seed". A run may be split among workers:
 /// "first" and "count" give those samples' outcomes alone ({"outcomes": [...]}, each [R, T, eps,
 /// v] or {"failure", "kind"}), and "outcomes" (all of them, in sample order) gives the report of
-/// the whole run, the same as one run of every sample.
+/// the whole run, the same as one run of every sample. With "draws_csv": true the report adds
+/// "draws_csv", every sample's drawn inputs and outcomes as trebuchet-verify --draws writes them.
 nlohmann::ordered_json monte_carlo(const nlohmann::json& request);
+
+/// A value as a user typed it, read as the programs read it: {"key": an input's key or alias,
+/// "text": "19ft"} gives {"key", "value": SI (angles in degrees)}. For a page's typed boxes.
+nlohmann::ordered_json value(const nlohmann::json& request);
 
 /// The table of inputs (fields.hpp), for a page or a notebook that builds its forms from it:
 /// {"fields": [{key, flag, aliases, dimension, unit, units (the suffixes taken), group,
