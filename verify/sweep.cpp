@@ -25,7 +25,7 @@ int run_sweep(const Options& o) {
   what_if.points = o.what_if_points;
   // The release is set per point where the sweep varies it (--vary pin_angle=30..40), else once.
   if (what_if.field->group != FieldGroup::release) check.settings.release_at = release_of(values, where);
-  const std::vector<WhatIfPoint> points = run_what_if(values, what_if, check, o.threads, progress_bar("shots"));
+  const std::vector<WhatIfPoint> points = run_what_if(values, where, what_if, check, o.threads, progress_bar("shots"));
   int code = exit_success, failed = 0;
   for (const WhatIfPoint& p : points)
     if (p.error) ++failed, code = std::max(code, exit_code(Program::verify, p.error->kind()));

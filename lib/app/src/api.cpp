@@ -303,7 +303,7 @@ ordered_json sweep(const json& request) {
   check.settings = settings_of(request);
   check.material = overrides_of(request);
   if (what_if.field->group != FieldGroup::release) check.settings.release_at = release_of(values, "design");
-  return what_if_json(what_if, run_what_if(values, what_if, check, 1), key_word);
+  return what_if_json(what_if, run_what_if(values, "design", what_if, check, 1), key_word);
 }
 
 ordered_json complete(const json& request) {

@@ -41,11 +41,9 @@ WhatIf parse_what_if(std::string_view text, int points, std::string_view name) {
   return {field, range->a, range->b, points};
 }
 
-std::vector<WhatIfPoint> run_what_if(const DesignValues& values, const WhatIf& what_if, const DesignCheck& check, int threads,
-                                     const Progress& progress) {
+std::vector<WhatIfPoint> run_what_if(const DesignValues& values, const std::string& where, const WhatIf& what_if, const DesignCheck& check,
+                                     int threads, const Progress& progress) {
   const InputField& field = *what_if.field;
-  if (values.R || values.T)
-    throw Error(ErrorKind::usage, "{{R}} and {{T}} check one engine's capacity; each point of a sweep is another engine: drop them");
   if (!check.series_path.empty() || !check.plot_dir.empty()) throw Error(ErrorKind::usage, "a sweep's points draw no series or pictures");
   const std::vector<double> grid = what_if_values(what_if.from, what_if.to, what_if.points);
   std::vector<WhatIfPoint> points(grid.size());
@@ -55,8 +53,9 @@ std::vector<WhatIfPoint> run_what_if(const DesignValues& values, const WhatIf& w
         points[i].value = grid[i];
         DesignValues at = values;
         at.*field.member = grid[i];
+        at.R.reset(), at.T.reset();  // a capacity the design carries (the calculator's) is one engine's; each point is another
         try {
-          points[i].report = check_design(engine_record(at, ""), check);
+          points[i].report = check_design(engine_record(at, where), check);
         } catch (const Error& e) {
           points[i].error = e;
         }

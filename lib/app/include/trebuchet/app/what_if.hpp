@@ -38,12 +38,12 @@ struct WhatIfPoint {
   std::optional<Error> error;
 };
 
-/// Shoots the engine of `values` with `what_if`'s value at each of its points (what_if_values),
+/// Shoots the engine of `values` (named `where` in messages, as engine_record names it) with `what_if`'s value at each of its points (what_if_values),
 /// on thread_count(threads, points) threads, checked and reported as `check` says (no series or
 /// pictures). A point that fails keeps its error in its place. The varied value replaces the
-/// values' own. Throws Error(usage) for a capacity to check (each point is another engine).
-std::vector<WhatIfPoint> run_what_if(const DesignValues& values, const WhatIf& what_if, const DesignCheck& check, int threads,
-                                     const Progress& progress = {});
+/// values' own; a capacity they carry is not checked (each point is another engine).
+std::vector<WhatIfPoint> run_what_if(const DesignValues& values, const std::string& where, const WhatIf& what_if, const DesignCheck& check,
+                                     int threads, const Progress& progress = {});
 
 /// {"vary": key, "unit", "from", "to", "values": [the points' values], "points": [each point's
 /// shot record (check_design's JSON), or {key: value, "error"}]}; messages' names written by `word` (error.hpp).
