@@ -501,8 +501,9 @@
     saveState();
     const link = location.href;
     let svgText = null;
-    // The highest error correction the link fits at, down to L (7 %); a link too long for a QR code says so.
-    for (const level of ['M', 'L']) {
+    // Error correction L (7 %): the fewest modules for the link, so that the code stays coarse
+    // enough to scan off a projector's screen; a link too long for a QR code says so.
+    for (const level of ['L']) {
       try {
         const code = qrcode(0, level);  // eslint-disable-line no-undef
         code.addData(link);

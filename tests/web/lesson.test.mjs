@@ -52,12 +52,20 @@ try {
   await page.check('#air');
   await page.selectOption('#projectile', 'iron');
   const iron = await page.evaluate(() => ({ d: Number(document.getElementById('projectile-size').dataset.diameter), text: document.getElementById('projectile-size').textContent,
+    densityShown: document.getElementById('projectile-density').getBoundingClientRect().height > 0,
     m: window.trebuchet.current().engine.m, engine: window.trebuchet.current().engine }));
   const sphere = Math.cbrt(6 * iron.m / (Math.PI * 7870));
   const ironProgram = native(['shot', '--L1', `${iron.engine.L1}m`, '--L2', `${iron.engine.L2}m`, '--L3', `${iron.engine.L3}m`, '--L4', `${iron.engine.L4}m`, '--M', `${iron.engine.M}kg`,
     '--m', `${iron.engine.m}kg`, '--mb', `${iron.engine.mb}kg`, '--air', '--projectile', 'iron']).assumptions.air.projectile_diameter;
-  check(Math.abs(iron.d - sphere) / sphere < 1e-12 && Math.abs(iron.d - ironProgram) / ironProgram < 1e-12 && /iron of 7870 kg\/m³/.test(iron.text),
+  check(Math.abs(iron.d - sphere) / sphere < 1e-12 && Math.abs(iron.d - ironProgram) / ironProgram < 1e-12 && /iron of 7870 kg\/m³/.test(iron.text) && !iron.densityShown,
     `an iron ball of ${iron.m} kg: d = ${iron.d} m in the page, ${ironProgram} m in the program, ${sphere} m for the sphere; "${iron.text}"`);
+  // A density typed instead: 2800 kg/m3, the box shown, the shot's ball of that density.
+  await page.selectOption('#projectile', 'density');
+  await page.fill('#projectile-density', '2.8t/m3');
+  await page.dispatchEvent('#projectile-density', 'change');
+  const typedDensity = await page.evaluate(() => ({ shown: document.getElementById('projectile-density').getBoundingClientRect().height > 0,
+    density: window.trebuchet.current().assumptions.air.projectile_density }));
+  check(typedDensity.shown && typedDensity.density === 2800, `a density typed, 2.8t/m3, is the shot's ball of ${typedDensity.density} kg/m3, its box shown`);
   await page.selectOption('#projectile', 'stone');
   await page.uncheck('#air');
 
@@ -141,13 +149,15 @@ try {
     const image = new window.Image();
     image.src = 'data:image/svg+xml;charset=utf-8,' + encodeURIComponent(new XMLSerializer().serializeToString(svgNode));
     await image.decode();
+    // Drawn at 6 pixels a module, as a phone's camera sees a code on a screen.
+    const size = 6 * svgNode.viewBox.baseVal.width / 4;  // the library's cells are 4 units
     const canvas = document.createElement('canvas');
-    canvas.width = canvas.height = 600;
+    canvas.width = canvas.height = size;
     const g = canvas.getContext('2d');
-    g.fillStyle = 'white'; g.fillRect(0, 0, 600, 600);
-    g.drawImage(image, 0, 0, 600, 600);
-    const pixels = g.getImageData(0, 0, 600, 600);
-    const code = window.jsQR(pixels.data, 600, 600);
+    g.fillStyle = 'white'; g.fillRect(0, 0, size, size);
+    g.drawImage(image, 0, 0, size, size);
+    const pixels = g.getImageData(0, 0, size, size);
+    const code = window.jsQR(pixels.data, size, size);
     return { text: code && code.data, href: location.href, open: document.getElementById('qr-dialog').open };
   });
   check(qr.open && qr.text === qr.href, `the QR code decodes to the link (${qr.href.length} characters): "${(qr.text || 'nothing').slice(0, 70)}…"`);
