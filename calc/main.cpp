@@ -113,16 +113,22 @@ int run(const Options& options, bool format_given, bool F_given) {
       throw Error(ErrorKind::usage,
                   std::string(format_given ? "--format" : "--digits") + " sets what is printed; --spreadsheet writes an .xlsx workbook, drop it");
     // The workbook opens on the paper's examples, or on the givens: R and T on the capacity
-    // sheet, R and another on the sheet for R and one parameter, any other pair on the last.
+    // sheet, R and another on the sheet for R and one parameter, Lb and another on the sheet for
+    // Lb and one (Lb first), any other pair on the last.
     SpreadsheetInputs inputs;
     inputs.material = request.material;
     if (!options.scale.empty()) inputs.model_scale = request.scale;  // the sheet "model scaling" opens on it
-    for (DesignRequest* sheet : {&inputs.capacity, &inputs.range_and_one, &inputs.any_pair})
+    for (DesignRequest* sheet : {&inputs.capacity, &inputs.range_and_one, &inputs.any_pair, &inputs.beam_length})
       sheet->theta_i_deg = request.theta_i_deg, sheet->F = request.F, sheet->branch = request.branch, sheet->material = request.material;
     if (givens.size() == 2) {
       std::sort(givens.begin(), givens.end(), [](const Given& a, const Given& b) { return a.quantity < b.quantity; });
       const bool has_R = givens[0].quantity == Quantity::R;
-      DesignRequest& sheet = has_R && givens[1].quantity == Quantity::T ? inputs.capacity : has_R ? inputs.range_and_one : inputs.any_pair;
+      if (givens[1].quantity == Quantity::Lb) std::swap(givens[0], givens[1]);
+      const bool has_Lb = givens[0].quantity == Quantity::Lb;
+      DesignRequest& sheet = has_Lb                    ? inputs.beam_length
+          : has_R && givens[1].quantity == Quantity::T ? inputs.capacity
+          : has_R                                      ? inputs.range_and_one
+                                                       : inputs.any_pair;
       sheet.first = givens[0], sheet.second = givens[1];
     } else if (!givens.empty()) {
       throw Error(ErrorKind::given_count,

@@ -369,7 +369,7 @@
 
   // ---- reconstruct ----------------------------------------------------------------------------
   function buildAttested() {
-    $('attested').innerHTML = ATTESTED.map(([key, name]) => `<label class="row"><span>${name} <span class="name">${key === 'theta_i_deg' ? 'θi' : key}</span></span> <input data-key="${key}" value="${escapeHtml(state.attested[key] || '')}" autocomplete="off"></label>`).join('');
+    $('attested').innerHTML = ATTESTED.map(([key, name]) => `<label class="row"><span>${key === 'theta_i_deg' ? 'start angle [deg]' : name} <span class="name">${key === 'theta_i_deg' ? 'θi' : key}</span></span> <input data-key="${key}" value="${escapeHtml(state.attested[key] || '')}" autocomplete="off"></label>`).join('');
     $('attested').querySelectorAll('input').forEach((input) => input.addEventListener('input', () => {
       if (input.value.trim()) state.attested[input.dataset.key] = input.value.trim(); else delete state.attested[input.dataset.key];
       saveState();

@@ -114,21 +114,38 @@ struct Formats {
   lxw_format* heading;
   lxw_format* input;  // cells the user types into
   lxw_format* note;
-  std::map<std::pair<int, bool>, lxw_format*> shown;  // by kind (below) and whether it is an input
+  std::map<std::pair<std::string, bool>, lxw_format*> shown;  // by number format and whether it is an input
 
-  // How a number is shown. The format is fixed when the cell is written, but the value follows
-  // the inputs, so it must read well at any size: a whole number (a count, a given) in
-  // General; a tiny constant in scientific notation; any other result by its size, to 3 to 5
-  // significant digits, never rounding a value above 5e-5 to 0: "[>=1000]#,##0;[>=10]0.0#;0.0###"
-  // (negatives take the last form). An input shows what was typed (General). Every cell keeps
+  // How a number is shown. Each format has three sections, positive;negative;zero, so that a
+  // negative shows its minus sign and 0 shows as 0 whatever value the formula takes later (a
+  // format's conditions, [>=1000] and the like, would leave negatives without their sign). The
+  // decimals are chosen from the value's size when the cell is written: 4 significant digits (3
+  // decimals from 1 to 10, none from 1000 up), thousands grouped (12,345), and scientific
+  // notation below 1e-3. When an input changes a value's size, the sign, the zero and the
+  // grouping still show; only the count of digits drifts. An input shows what was typed, and a
+  // whole number below 1000 (a count, a flag) all its digits: both in General. Every cell keeps
   // every digit, and exports at full precision.
+  static std::string number_format(double value) {
+    const double size = std::abs(value);
+    if (size < 1e-3) return "0.000E+00;-0.000E+00;0";
+    const int decimals = std::clamp(3 - static_cast<int>(std::floor(std::log10(size))), 0, 6);
+    const std::string digits = "#,##0" + (decimals == 0 ? "" : "." + std::string(static_cast<std::size_t>(decimals), '0'));
+    return digits + ";-" + digits + ";0";
+  }
   lxw_format* four_digits(double value, bool is_input = false) {
-    const int kind = is_input || (value == std::round(value) && std::abs(value) < 1e15) ? 0 : std::abs(value) < 1e-3 ? 1 : 2;
-    lxw_format*& format = shown[{kind, is_input}];
+    const bool general = is_input || (value == std::round(value) && std::abs(value) < 1000);
+    return numbers(general ? "General" : number_format(value), is_input);
+  }
+  // A number with the decimals a source prints: "9.70" shows as 9.70.
+  lxw_format* printed(int decimals) {
+    const std::string digits = decimals == 0 ? "0" : "0." + std::string(static_cast<std::size_t>(decimals), '0');
+    return numbers(digits + ";-" + digits + ";0", false);
+  }
+  lxw_format* numbers(const std::string& number_format, bool is_input) {
+    lxw_format*& format = shown[{number_format, is_input}];
     if (!format) {
       format = workbook_add_format(book);
-      if (kind == 1) format_set_num_format(format, "0.000E+00");
-      if (kind == 2) format_set_num_format(format, "[>=1000]#,##0;[>=10]0.0#;0.0###");
+      if (number_format != "General") format_set_num_format(format, number_format.c_str());
       if (is_input) format_set_bg_color(format, input_colour);
     }
     return format;
@@ -206,6 +223,13 @@ class Sheet {
     validation.error_message = message.data();
     worksheet_data_validation_cell(sheet_, row, col, &validation);
     return e;
+  }
+  // A number as a source prints it, shown with the decimals printed.
+  Expr printed(int row, int col, const std::string& text) {
+    const std::size_t point = text.find('.');
+    const double value = std::stod(text);
+    worksheet_write_number(sheet_, row, col, value, formats_.printed(point == std::string::npos ? 0 : static_cast<int>(text.size() - point - 1)));
+    return {ref(row, col), value};
   }
   Text text_cell(int row, int col, const std::string& value) {
     worksheet_write_string(sheet_, row, col, value.c_str(), nullptr);
@@ -416,9 +440,188 @@ MaterialFactors write_material(lxw_workbook* book, Formats& formats, const Const
   return f;
 }
 
-// A design sheet: the optimal engine for two givens, by eq:ZiZj_RT in every segment, the segment
-// whose interval holds the solution's X (eq:Xi) chosen by a lookup. `fixed` says how many of the
-// givens' names are fixed (2 for R and T, 1 for R and one parameter, 0 for any pair).
+// eq:ZRT for one fitted parameter in the segment `segment` (a row of the constants sheet), in
+// the user's material: D and the masses times the material sheet's factors (section 7).
+Expr fitted(const ConstantsSheet& c, const MaterialFactors& f, Param param, const Expr& segment, const Expr& lr, const Expr& lt) {
+  const int z = index(param);
+  const Expr Z = element(c.a[z], segment) * element(c.Z0[z], segment) * exp(element(c.p[z], segment) * lr + element(c.q[z], segment) * lt);
+  if (param == Param::D) return Z * f.diameter;
+  if (param == Param::M || param == Param::m || param == Param::mb) return Z * f.mass;
+  return Z;
+}
+// eq:ZRT for the energy at the target in the user's material [J].
+Expr target_energy(const ConstantsSheet& c, const MaterialFactors& f, const Expr& lt) { return c.T0 * exp(lt) * f.energy; }
+// The counterweight arm from L2 + L3 = F H, H = L1 cos(theta_i) (section 2).
+Expr counterweight_arm(const Expr& F, const Expr& theta, const Expr& L1, const Expr& L2) { return F * L1 * cos_deg(theta) - L2; }
+// eq:DU of an unpropped counterweight (psi_i = 0) and a uniform beam (L_CM = (L1 - L2)/2):
+// (1 - mu_b (l - 1)/2)(1 + cos theta_i) M g L2 [J].
+Expr potential_drop(const Expr& mu_b, const Expr& l, const Expr& theta, const Expr& M, const Expr& g, const Expr& L2) {
+  return (num(1) - mu_b * (l - num(1)) / num(2)) * (num(1) + cos_deg(theta)) * M * g * L2;
+}
+// Largest relative change of R or T per relative change of the givens, whose laws have the
+// exponents (p1, q1) and (p2, q2): the infinity norm of the inverse of eq:ZiZj_RT.
+Expr amplification_of(const Expr& p1, const Expr& q1, const Expr& p2, const Expr& q2, const Expr& det) {
+  return max(abs(q2) + abs(q1), abs(p2) + abs(p1)) / abs(det);
+}
+
+// 1 where the calculator gives a design: a segment holds the givens, the amplification is at
+// most 50 and the counterweight arm L3 is positive; else 0.
+Expr design_valid(const Expr& ok, const Expr& amplification, const Expr& L3) {
+  return ok * (num(1) - below(num(50), amplification)) * below(num(0), L3);
+}
+
+// A given of a pair as the segment table takes it: the column of its law among the constants
+// sheet's quantities (from 1) and the log of its value in the table's material.
+struct LawGiven {
+  Expr column, log_value;
+};
+
+// What the segment table chose: `ok` when some row holds the givens, the segment (a row of the
+// constants sheet), the capacity ln(R/R0), ln(T/T0) and the amplification.
+struct Solution {
+  Expr best, ok, segment, lr, lt, amplification;
+};
+
+// The table of segments from row `header` down: each row solves the givens in one segment,
+// computes X (eq:Xi), whether X lies inside the segment, and a score that prefers the branch with
+// the higher Q (lower below X_d, upper above; section 6.2), then the depth inside. Two
+// log-linear givens take one row per segment (eq:ZiZj_RT). With `log_Lb` (Lb = L1 + L2, not
+// log-linear) and one log-linear given, log Lb along the line where the given holds is the log
+// of a sum of two exponentials of the line's parameter s, convex, with at most two roots: two
+// rows per segment, the root left and right of the minimum, each found by Newton's method,
+// which from the side where the excess is positive climbs a convex function's root monotonically.
+Solution solve_in_segments(Sheet& s, int header, const ConstantsSheet& c, const Expr& theta, const Expr& F, const Text& branch,
+                           const std::vector<LawGiven>& givens, const std::optional<Expr>& log_Lb) {
+  const bool beam = log_Lb.has_value();
+  const int per_segment = beam ? 2 : 1, first = header + 1, last = first + per_segment * c.rows - 1;
+  constexpr int iterations = 24;  // Newton's steps: the 168 roots of the test converge to 1e-14 within 7
+  // Columns 2 to 8 hold the pair's laws and D_ij, or for Lb the other given's law and the line's span.
+  const std::vector<std::string> pair_columns = {"c1", "p1", "q1", "c2", "p2", "q2", "D_ij"};
+  const std::vector<std::string> beam_columns = {"c", "p", "q", "root", "s_lo", "s_hi", "s_min"};
+  std::vector<std::string> columns = {"segment", "block"};
+  columns.insert(columns.end(), beam ? beam_columns.begin() : pair_columns.begin(), beam ? beam_columns.end() : pair_columns.end());
+  for (const char* name : {"ln(R/R0)", "ln(T/T0)", "X", "inside", "allowed", "preferred", "depth", "score", "amplification"}) columns.push_back(name);
+  if (beam) {
+    for (const char* name : {"found", "lr0", "lt0", "dr", "dt", "alpha1", "beta1", "alpha2", "beta2"}) columns.push_back(name);
+    for (int n = 0; n <= iterations; ++n) columns.push_back("s" + std::to_string(n));
+  }
+  for (std::size_t k = 0; k < columns.size(); ++k) s.heading(header, static_cast<int>(k), columns[k]);
+  s.text(header - 1, 0,
+         beam ? "Every segment of the table, twice: the roots of log Lb on the line where the other given holds, left and right of its "
+                "minimum (Newton's method from the segment's ends); the highest score is the engine above."
+              : "Every segment of the table, solved (eq:ZiZj_RT); the highest score is the engine above.");
+  Column segment_col, lr_col, lt_col, score_col, amp_col;
+  const Expr sqrt26 = sqrt(num(26));
+  const Expr automatic = is(branch, "auto");
+  for (int r = 0; r < per_segment * c.rows; ++r) {
+    const int row = first + r;
+    const Expr k = s.number(row, 0, r / per_segment + 1);
+    const Expr block = s.formula(row, 1, equal(theta, element(c.theta, k)) * below(abs(F - element(c.F, k)), num(1e-9)));
+    // c, p or q (j = 0, 1, 2) of the law in column `column` in this segment: column 3 (column - 1) + j + 1 of the laws.
+    auto law = [&](const Expr& column, int j) {
+      const std::size_t q = static_cast<std::size_t>(column.v) - 1;
+      return Expr{"INDEX(" + c.laws + "," + k.f + ",3*(" + column.f + "-1)+" + std::to_string(j + 1) + ")",
+                  c.law[q][j].v.at(static_cast<std::size_t>(k.v) - 1)};
+    };
+    Expr lr, lt, found, amplification;
+    if (!beam) {
+      const Expr c1 = s.formula(row, 2, law(givens[0].column, 0)), p1 = s.formula(row, 3, law(givens[0].column, 1)),
+                 q1 = s.formula(row, 4, law(givens[0].column, 2));
+      const Expr c2 = s.formula(row, 5, law(givens[1].column, 0)), p2 = s.formula(row, 6, law(givens[1].column, 1)),
+                 q2 = s.formula(row, 7, law(givens[1].column, 2));
+      const Expr det = s.formula(row, 8, p1 * q2 - q1 * p2);  // D_ij of eq:ZiZj_RT
+      const Expr b1 = givens[0].log_value - c1, b2 = givens[1].log_value - c2;
+      const Expr safe_det = choose(below(abs(det), num(1e-12)), num(1), det);
+      lr = (b1 * q2 - q1 * b2) / safe_det;
+      lt = (p1 * b2 - b1 * p2) / safe_det;
+      found = num(1) - below(abs(det), num(1e-12));
+      amplification = amplification_of(p1, q1, p2, q2, safe_det);
+    } else {
+      const Expr cA = s.formula(row, 2, law(givens[0].column, 0)), pA = s.formula(row, 3, law(givens[0].column, 1)),
+                 qA = s.formula(row, 4, law(givens[0].column, 2));
+      const Expr root = s.number(row, 5, r % 2 + 1);  // 1: left of the minimum, 2: right
+      // The line ln A = c + p lr + q lt: its point nearest the origin and its unit direction.
+      const Expr norm = sqrt(pA * pA + qA * qA), b = (givens[0].log_value - cA) / norm;
+      const Expr lr0 = s.formula(row, 19, pA / norm * b), lt0 = s.formula(row, 20, qA / norm * b);
+      const Expr dr = s.formula(row, 21, qA / norm), dt = s.formula(row, 22, num(0) - pA / norm);
+      // ln L1 = alpha1 + beta1 s and ln L2 = alpha2 + beta2 s along the line (eq:ZRT).
+      const Expr L1_column = num(3), L2_column = num(4);  // L1 and L2 among the quantities
+      auto along = [&](const Expr& column, int col) {
+        const Expr alpha = s.formula(row, col, law(column, 0) + law(column, 1) * lr0 + law(column, 2) * lt0);
+        const Expr beta = s.formula(row, col + 1, law(column, 1) * dr + law(column, 2) * dt);
+        return std::pair{alpha, beta};
+      };
+      const auto [alpha1, beta1] = along(L1_column, 23);
+      const auto [alpha2, beta2] = along(L2_column, 25);
+      // The part of the line inside the segment's X interval; where X is constant along it (the
+      // beam ratio l) the line is bounded by |ln(R/R0)|, |ln(T/T0)| <= 50, beyond any engine.
+      const Expr dX = (num(5) * dr - dt) / sqrt26, X0 = (num(5) * lr0 - lt0) / sqrt26;
+      const Expr flat = below(abs(dX), num(1e-12));
+      const Expr safe_dX = choose(flat, num(1), dX);
+      const Expr to_min = (element(c.X_min, k) - X0) / safe_dX, to_max = (element(c.X_max, k) - X0) / safe_dX;
+      const Expr lo = s.formula(row, 6, choose(flat, num(-50), min(to_min, to_max)));
+      const Expr hi = s.formula(row, 7, choose(flat, num(50), max(to_min, to_max)));
+      // ln(L1 + L2) - ln Lb and its slope, with the larger exponent taken out, so that no EXP overflows far along the line.
+      auto excess = [&](const Expr& at) {
+        const Expr a1 = alpha1 + beta1 * at, a2 = alpha2 + beta2 * at, top = max(a1, a2);
+        return top + ln(exp(a1 - top) + exp(a2 - top)) - *log_Lb;
+      };
+      auto slope = [&](const Expr& at) {
+        const Expr a1 = alpha1 + beta1 * at, a2 = alpha2 + beta2 * at, top = max(a1, a2);
+        const Expr w1 = exp(a1 - top), w2 = exp(a2 - top);
+        return (beta1 * w1 + beta2 * w2) / (w1 + w2);
+      };
+      // The minimum of the convex excess: where the slopes of the two exponentials cancel, or an end.
+      const Expr stationary = (ln(num(0) - beta2 / beta1) - alpha1 + alpha2) / (beta1 - beta2);
+      const Expr s_min = s.formula(
+          row, 8,
+          choose(below(beta1 * beta2, num(0)), min(max(stationary, lo), hi), choose(at_most(num(0), beta1) * at_most(num(0), beta2), lo, hi)));
+      const Expr left = equal(root, num(1));
+      const Expr start = choose(left, lo, hi);
+      found = s.formula(row, 18, at_most(excess(s_min), num(0)) * at_most(num(0), excess(start)) * choose(left, below(lo, s_min), below(s_min, hi)));
+      Expr at = s.formula(row, 27, start);
+      for (int n = 1; n <= iterations; ++n) at = s.formula(row, 27 + n, choose(found, at - excess(at) / slope(at), at));
+      lr = lr0 + at * dr;
+      lt = lt0 + at * dt;
+      // The local law of ln Lb, the weighted mean of L1's and L2's, gives the pair's conditioning.
+      const Expr w1 = exp(alpha1 + beta1 * at - max(alpha1 + beta1 * at, alpha2 + beta2 * at)),
+                 w2 = exp(alpha2 + beta2 * at - max(alpha1 + beta1 * at, alpha2 + beta2 * at));
+      const Expr pLb = (w1 * law(L1_column, 1) + w2 * law(L2_column, 1)) / (w1 + w2);
+      const Expr qLb = (w1 * law(L1_column, 2) + w2 * law(L2_column, 2)) / (w1 + w2);
+      const Expr det = pA * qLb - qA * pLb;
+      amplification = choose(found, amplification_of(pA, qA, pLb, qLb, choose(below(abs(det), num(1e-300)), num(1), det)), num(0));
+    }
+    const Expr lr_cell = s.formula(row, 9, lr), lt_cell = s.formula(row, 10, lt);
+    const Expr X = s.formula(row, 11, (num(5) * lr_cell - lt_cell) / sqrt26);  // eq:XY_RT
+    const Expr X_min = element(c.X_min, k), X_max = element(c.X_max, k);
+    const Expr inside = s.formula(row, 12, block * at_most(X_min - num(1e-12), X) * at_most(X, X_max + num(1e-12)) * found);
+    const Text segment_branch = element(c.branch, k);
+    const Expr allowed = s.formula(row, 13, either(either(is(segment_branch, "none"), automatic), same(segment_branch, branch)));
+    const Expr X_d = element(c.X_d, k);
+    const Expr preferred = s.formula(
+        row, 14, choose(is(segment_branch, "lower"), below(X, X_d), choose(is(segment_branch, "upper"), at_most(X_d, X), num(1))));
+    const Expr depth = s.formula(row, 15, min(X - X_min, X_max - X));
+    const Expr score = s.formula(row, 16, inside * allowed * (num(10) + num(5) * automatic * preferred + depth));
+    const Expr amp = s.formula(row, 17, amplification);
+    segment_col.v.push_back(k.v), lr_col.v.push_back(lr_cell.v), lt_col.v.push_back(lt_cell.v), score_col.v.push_back(score.v),
+        amp_col.v.push_back(amp.v);
+  }
+  segment_col.f = s.range(first, last, 0), lr_col.f = s.range(first, last, 9), lt_col.f = s.range(first, last, 10);
+  score_col.f = s.range(first, last, 16), amp_col.f = s.range(first, last, 17);
+  Solution out;
+  out.best = largest(score_col);
+  out.ok = at_most(num(10), out.best);
+  const Expr row = first_largest(score_col);
+  out.segment = element(segment_col, row);
+  out.lr = element(lr_col, row), out.lt = element(lt_col, row);
+  out.amplification = element(amp_col, row);
+  return out;
+}
+
+// A design sheet: the optimal engine for two givens, solved in every segment of the table, the
+// segment whose interval holds the solution's X (eq:Xi) chosen by a lookup. `fixed` says how
+// many of the givens' names are fixed (2 for R and T, 1 for R or Lb and one parameter, 0 for any
+// pair). A first given Lb makes the sheet for Lb and one log-linear parameter.
 struct DesignResult {
   Expr valid;  // 1 when the request gives an engine, else 0
   Expr R, T, L1, L2, L3, L4, D, M, m, mb;  // what the model-scaling sheet takes from it
@@ -426,27 +629,29 @@ struct DesignResult {
 
 DesignResult write_design(lxw_workbook* book, Formats& formats, const std::string& name, const std::string& heading, const ConstantsSheet& c,
                           const MaterialFactors& f, const DesignRequest& request, int fixed) {
+  const bool beam = request.first.quantity == Quantity::Lb;
   Sheet s(book, name, formats);
   s.title(heading,
-          "Type the yellow cells. The rows below solve eq:ZiZj_RT in every segment of the table and keep the one whose "
-          "interval holds X; the engine follows from eq:ZRT.");
+          beam ? "Type the yellow cells. The rows below find Lb on the line where the other given holds, in every segment of the table, "
+                 "and keep the one whose interval holds X; the engine follows from eq:ZRT."
+               : "Type the yellow cells. The rows below solve eq:ZiZj_RT in every segment of the table and keep the one whose "
+                 "interval holds X; the engine follows from eq:ZRT.");
   std::array<Text, 2> names;
   std::array<Expr, 2> values;
   const Given givens[] = {request.first, request.second};
+  // The log-linear givens, picked from a list; Lb is a sheet of its own.
+  static std::vector<const char*> quantities = [] {
+    std::vector<const char*> names;
+    for (Quantity q : log_linear) names.push_back(quantity_name(q).data());
+    names.push_back(nullptr);
+    return names;
+  }();
+  const std::vector<std::string> listed(quantities.begin(), quantities.end() - 1);
   for (int k = 0; k < 2; ++k) {
     const int row = 3 + 2 * k;
     const std::string which = k == 0 ? "first" : "second";
     const std::string quantity(quantity_name(givens[k].quantity));
-    // The calculator's givens but Lb, whose pairs are not log-linear (write_spreadsheet).
-    static std::vector<const char*> quantities = [] {
-      std::vector<const char*> names;
-      for (Quantity q : all_quantities)
-        if (q != Quantity::Lb) names.push_back(quantity_name(q).data());
-      names.push_back(nullptr);
-      return names;
-    }();
-    std::vector<std::string> listed(quantities.begin(), quantities.end() - 1);
-    s.describe(row, which + " given", "", k < fixed ? "fixed on this sheet" : "one of " + join(listed, ", ") + " (Lb: use trebuchet-calc)");
+    s.describe(row, which + " given", "", k < fixed ? "fixed on this sheet" : "one of " + join(listed, ", ") + " (Lb: the sheet 'from Lb and one')");
     names[k] = k < fixed ? s.text_cell(row, 1, quantity) : s.input_text(row, 1, quantity);
     if (k >= fixed) s.choices(row, 1, quantities.data());
     s.describe(row + 1, which + " value", "", "a number in SI base units, as the unit beside it says: 250 for 250 m, 3110 for 3.11 t");
@@ -462,98 +667,57 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
   const Text branch = s.input_text(9, 1, branches[static_cast<int>(request.branch)]);
   s.choices(9, 1, branches);
 
-  // Which law each given follows, and its value in the table's material.
-  std::array<Expr, 2> k_of, log_of;
-  for (int k = 0; k < 2; ++k) {
+  // Which law each log-linear given follows, and its value in the table's material.
+  std::vector<LawGiven> laws;
+  std::optional<Expr> log_Lb;
+  if (beam) {
+    s.text(4, 2, "m");
+    log_Lb = s.formula_row(13, "ln of the first given", ln(values[0]), "", "ln Lb: a length, the same in every material");
+  }
+  for (int k = beam ? 1 : 0; k < 2; ++k) {
     const auto found = std::find_if(log_linear.begin(), log_linear.end(), [&](Quantity q) { return quantity_name(q) == names[k].v; });
     // Its column among the quantity names, matched case-sensitively (0 if none).
     const Expr position{"SUMPRODUCT(EXACT(" + c.quantity_names + "," + names[k].f + ")*(COLUMN(" + c.quantity_names + ")-1))",
                         found == log_linear.end() ? 0.0 : static_cast<double>(found - log_linear.begin() + 1)};
-    k_of[k] = s.formula_row(11 + k, std::string(k == 0 ? "first" : "second") + " given's column", position, "",
-                            "its place among the quantities of the constants sheet");
+    const Expr column = s.formula_row(11 + k, std::string(k == 0 ? "first" : "second") + " given's column", position, "",
+                                      "its place among the quantities of the constants sheet");
     // Masses, D and T of the table are in its own material: divide by the factors (section 7).
     const Expr factor{
-        "CHOOSE(" + k_of[k].f + ",1," + f.energy.f + ",1,1,1," + f.diameter.f + "," + f.mass.f + "," + f.mass.f + "," + f.mass.f + ",1)",
-        std::array<double, 10>{1, f.energy.v, 1, 1, 1, f.diameter.v, f.mass.v, f.mass.v, f.mass.v, 1}[static_cast<std::size_t>(k_of[k].v) - 1]};
+        "CHOOSE(" + column.f + ",1," + f.energy.f + ",1,1,1," + f.diameter.f + "," + f.mass.f + "," + f.mass.f + "," + f.mass.f + ",1)",
+        std::array<double, 10>{1, f.energy.v, 1, 1, 1, f.diameter.v, f.mass.v, f.mass.v, f.mass.v, 1}[static_cast<std::size_t>(column.v) - 1]};
     // The unit of the given's value, beside it.
     static const char* units[] = {"m", "J", "m", "m", "m", "m", "kg", "kg", "kg", "(pure number)"};
-    std::string unit_choice = "CHOOSE(" + k_of[k].f;
+    std::string unit_choice = "CHOOSE(" + column.f;
     for (const char* unit : units) unit_choice += ",\"" + std::string(unit) + "\"";
-    s.formula(4 + 2 * k, 2, Text{unit_choice + ")", units[static_cast<std::size_t>(k_of[k].v) - 1]});
-    log_of[k] = s.formula_row(13 + k, std::string("ln of the ") + (k == 0 ? "first" : "second") + " given", ln(values[k] / factor), "",
-                              "in the table's material: masses, D and T divided by the material sheet's factors");
+    s.formula(4 + 2 * k, 2, Text{unit_choice + ")", units[static_cast<std::size_t>(column.v) - 1]});
+    laws.push_back({column,
+                    s.formula_row(13 + k, std::string("ln of the ") + (k == 0 ? "first" : "second") + " given", ln(values[k] / factor), "",
+                                  "in the table's material: masses, D and T divided by the material sheet's factors")});
   }
 
-  // One row per segment: eq:ZiZj_RT, X (eq:Xi), whether X lies inside, and a score that prefers
-  // the branch with the higher Q (lower below X_d, upper above; section 6.2), then depth inside.
-  const int header = 40, first = 41, last = first + c.rows - 1;
-  const char* columns[] = {"segment",  "block",    "c1", "p1",     "q1",      "c2",        "p2",    "q2",    "D_ij",
-                           "ln(R/R0)", "ln(T/T0)", "X",  "inside", "allowed", "preferred", "depth", "score", "amplification"};
-  for (int k = 0; k < 18; ++k) s.heading(header, k, columns[k]);
-  s.text(header - 1, 0, "Every segment of the table, solved (eq:ZiZj_RT); the highest score is the engine above.");
-  Column lr_col, lt_col, score_col, amp_col;
-  const Expr sqrt26 = sqrt(num(26));
-  const Expr automatic = is(branch, "auto");
-  for (int r = 0; r < c.rows; ++r) {
-    const int row = first + r;
-    const Expr k = s.number(row, 0, r + 1);
-    const Expr block = s.formula(row, 1, equal(theta, element(c.theta, k)) * below(abs(F - element(c.F, k)), num(1e-9)));
-    // c, p or q (j = 0, 1, 2) of a given's law in this segment: column 3 (k - 1) + j + 1 of the laws.
-    auto law = [&](int given, int j) {
-      const std::size_t q = static_cast<std::size_t>(k_of[given].v) - 1;
-      return Expr{"INDEX(" + c.laws + "," + k.f + ",3*(" + k_of[given].f + "-1)+" + std::to_string(j + 1) + ")",
-                  c.law[q][j].v.at(static_cast<std::size_t>(r))};
-    };
-    const Expr c1 = s.formula(row, 2, law(0, 0)), p1 = s.formula(row, 3, law(0, 1)), q1 = s.formula(row, 4, law(0, 2));
-    const Expr c2 = s.formula(row, 5, law(1, 0)), p2 = s.formula(row, 6, law(1, 1)), q2 = s.formula(row, 7, law(1, 2));
-    const Expr det = s.formula(row, 8, p1 * q2 - q1 * p2);  // D_ij of eq:ZiZj_RT
-    const Expr b1 = log_of[0] - c1, b2 = log_of[1] - c2;
-    const Expr safe_det = choose(below(abs(det), num(1e-12)), num(1), det);
-    const Expr lr = s.formula(row, 9, (b1 * q2 - q1 * b2) / safe_det);
-    const Expr lt = s.formula(row, 10, (p1 * b2 - b1 * p2) / safe_det);
-    const Expr X = s.formula(row, 11, (num(5) * lr - lt) / sqrt26);  // eq:XY_RT
-    const Expr X_min = element(c.X_min, k), X_max = element(c.X_max, k);
-    const Expr inside = s.formula(row, 12,
-                                  block * at_most(X_min - num(1e-12), X) * at_most(X, X_max + num(1e-12)) * (num(1) - below(abs(det), num(1e-12))));
-    const Text segment_branch = element(c.branch, k);
-    const Expr allowed = s.formula(row, 13, either(either(is(segment_branch, "none"), automatic), same(segment_branch, branch)));
-    const Expr X_d = element(c.X_d, k);
-    const Expr preferred = s.formula(
-        row, 14, choose(is(segment_branch, "lower"), below(X, X_d), choose(is(segment_branch, "upper"), at_most(X_d, X), num(1))));
-    const Expr depth = s.formula(row, 15, min(X - X_min, X_max - X));
-    const Expr score = s.formula(row, 16, inside * allowed * (num(10) + num(5) * automatic * preferred + depth));
-    const Expr amplification = s.formula(row, 17, max(abs(q2) + abs(q1), abs(p2) + abs(p1)) / abs(safe_det));
-    lr_col.v.push_back(lr.v), lt_col.v.push_back(lt.v), score_col.v.push_back(score.v), amp_col.v.push_back(amplification.v);
-  }
-  lr_col.f = s.range(first, last, 9), lt_col.f = s.range(first, last, 10);
-  score_col.f = s.range(first, last, 16), amp_col.f = s.range(first, last, 17);
-
-  const Expr best = s.formula_row(16, "best score", largest(score_col), "", "0: no segment of the table holds the solution");
-  const Expr k = s.formula_row(17, "segment", first_largest(score_col), "", "the row below with the best score: the segment whose interval holds X");
-  const Expr lr = element(lr_col, k), lt = element(lt_col, k);
-  const Expr amplification = element(amp_col, k);
+  const Solution solved = solve_in_segments(s, 40, c, theta, F, branch, laws, log_Lb);
+  const Expr best = s.formula_row(16, "best score", solved.best, "", "0: no segment of the table holds the solution");
+  s.formula_row(17, "segment", solved.segment, "", "the segment whose interval holds X: the row below with the best score");
+  const Expr lr = solved.lr, lt = solved.lt, amplification = solved.amplification, k = solved.segment;
   const Expr ok = at_most(num(10), best);
-  auto Z = [&](Param param) {  // eq:ZRT
-    const int z = index(param);
-    return element(c.a[z], k) * element(c.Z0[z], k) * exp(element(c.p[z], k) * lr + element(c.q[z], k) * lt);
-  };
   // The status first: a refused request leaves every result blank, so that it never looks like one.
-  const Expr L1 = Z(Param::L1), L2 = Z(Param::L2), L3 = F * L1 * cos_deg(theta) - L2;
+  const Expr L3 = counterweight_arm(F, theta, fitted(c, f, Param::L1, k, lr, lt), fitted(c, f, Param::L2, k, lr, lt));
   const Text status = choose(ok,
                              choose(below(num(50), amplification), literal("refused: the pair barely fixes the capacity (amplification above 50)"),
                                     choose(at_most(L3, num(0)), literal("refused: no room for the counterweight arm (L3 <= 0)"), literal("ok"))),
                              literal("no segment of the table holds these givens: X lies outside every interval of this block"));
   s.text_row(19, "status", status, "what the calculator would say; the results below are blank unless it is ok");
   DesignResult out;
-  out.valid = s.formula_row(20, "valid", ok * (num(1) - below(num(50), amplification)) * below(num(0), L3), "", "1 when the status is ok, else 0");
+  out.valid = s.formula_row(20, "valid", design_valid(ok, amplification, L3), "", "1 when the status is ok, else 0");
   s.text_row(21, "segment branch", element(c.branch, k), "the branch of the chosen segment (section 6.2)");
   s.heading(22, 0, "the optimal engine");
   int row = 23;
   auto output = [&](const std::string& label, const Expr& e, const std::string& unit, const std::string& note) {
     return s.result_row(row++, label, out.valid, e, unit, note);
   };
+  const Expr sqrt26 = sqrt(num(26));
   out.R = output("R", c.R0 * exp(lr), "m", "range in vacuum at the base level (eq:ZRT with Z = R)");
-  out.T = output("T", c.T0 * exp(lt) * f.energy, "J", "energy at the target (eq:T), in your material");
+  out.T = output("T", target_energy(c, f, lt), "J", "energy at the target (eq:T), in your material");
   output("T in kJ", out.T / num(1000), "kJ", "the same energy in kilojoules");
   output("X", (num(5) * lr - lt) / sqrt26, "", "eq:Xi: (5 ln(R/R0) - ln(T/T0))/sqrt(26)");
   output("Y", (lr + num(5) * lt) / sqrt26, "", "eq:XY_RT");
@@ -562,19 +726,106 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
     const InputField& field = field_of(member);
     return output(field.key, e, sheet_unit(field), std::string(field.label) + " (" + source + ")");
   };
-  out.L1 = engine_output(&V::L1, L1, "eq:ZRT");
-  out.L2 = engine_output(&V::L2, L2, "eq:ZRT");
-  out.L3 = engine_output(&V::L3, F * out.L1 * cos_deg(theta) - out.L2, "L2 + L3 = F H, H = L1 cos(theta_i), section 2");
-  out.L4 = engine_output(&V::L4, Z(Param::L4), "eq:ZRT");
-  out.D = engine_output(&V::D, Z(Param::D) * f.diameter, "eq:ZRT, eq:bend_L2");
-  out.M = engine_output(&V::M, Z(Param::M) * f.mass, "eq:ZRT");
+  out.L1 = engine_output(&V::L1, fitted(c, f, Param::L1, k, lr, lt), "eq:ZRT");
+  out.L2 = engine_output(&V::L2, fitted(c, f, Param::L2, k, lr, lt), "eq:ZRT");
+  out.L3 = engine_output(&V::L3, counterweight_arm(F, theta, out.L1, out.L2), "L2 + L3 = F H, H = L1 cos(theta_i), section 2");
+  out.L4 = engine_output(&V::L4, fitted(c, f, Param::L4, k, lr, lt), "eq:ZRT");
+  out.D = engine_output(&V::D, fitted(c, f, Param::D, k, lr, lt), "eq:ZRT, eq:bend_L2");
+  out.M = engine_output(&V::M, fitted(c, f, Param::M, k, lr, lt), "eq:ZRT");
   output("M in t", out.M / num(1000), "t", "the same counterweight in tonnes");
-  out.m = engine_output(&V::m, Z(Param::m) * f.mass, "eq:ZRT");
-  out.mb = engine_output(&V::mb, Z(Param::mb) * f.mass, "eq:ZRT");
+  out.m = engine_output(&V::m, fitted(c, f, Param::m, k, lr, lt), "eq:ZRT");
+  out.mb = engine_output(&V::mb, fitted(c, f, Param::mb, k, lr, lt), "eq:ZRT");
+  if (beam) output("Lb", out.L1 + out.L2, "m", "beam length L1 + L2: the given, back");
   output("amplification", amplification, "",
          "relative change of R or T per relative change of a given (eq:ZiZj_RT); above 10 ill-conditioned, above 50 refused");
   worksheet_print_area(s.raw(), 0, 0, static_cast<lxw_row_t>(row), 3);
   return out;
+}
+
+// The paper's historical sites (section 7.1, sec:AVS; tab:Alcala_la_Vieja): 50 kg stones,
+// theta_i = 30 deg, F = 2/3. Each row's R and m give T and the optimal engine by the same
+// segment table and eq:ZRT as the design sheets, beside the numbers the table prints.
+struct PrintedSite {
+  const char* site;
+  const char* level;  // [m], in brackets where the paper ignores it
+  double level_m, R;  // [m]
+  // T [kJ], L1, L2, L4, D [m], M [t], mb [kg], eps [%], v [m/s], h [m], A [deg], as printed
+  std::array<const char*, 11> printed;
+};
+const PrintedSite paper_sites[] = {
+    {"Ca", "(-15)", -15, 150, {"40.3", "4.13", "0.88", "3.55", "0.25", "3.11", "174", "90.0", "37.7", "10.0", "40.3"}},
+    {"Ma", "(-54)", -54, 480, {"124", "5.50", "0.71", "5.15", "0.31", "11.5", "334", "92.8", "68.5", "13.8", "39.1"}},
+    {"Ma", "-54", -54, 426, {"111", "5.36", "0.75", "4.96", "0.31", "9.70", "320", "92.5", "64.5", "13.5", "39.1"}},
+    {"Sa", "(-20)", -20, 250, {"66.0", "4.72", "0.85", "4.19", "0.28", "5.16", "242", "91.4", "49.1", "11.7", "39.7"}},
+};
+
+void write_sites(lxw_workbook* book, Formats& formats, const ConstantsSheet& c, const MaterialFactors& f) {
+  Sheet s(book, "sites", formats);
+  s.title("The paper's sites (section 7.1, sec:AVS, tab:Alcala_la_Vieja): 50 kg stones, theta_i = 30 deg, F = 2/3",
+          "Type R, m or the level in the yellow cells. Each site's T and engine follow from R and m as on the sheet 'from R and one' "
+          "(eq:RT_ZiZj, eq:ZRT); below each, the paper's printed row and how far the workbook lies from it.");
+  worksheet_set_column(s.raw(), 0, 0, 26, nullptr);
+  worksheet_set_column(s.raw(), 1, 14, 9, nullptr);
+  worksheet_set_column(s.raw(), 15, 15, 40, nullptr);
+  s.describe(3, "theta_i", "", "");
+  const Expr theta = s.number(3, 1, 30);
+  s.text(3, 2, "deg: the paper's, for every site");
+  s.describe(4, "F", "", "");
+  const Expr F = s.formula(4, 1, num(2) / num(3), formats.four_digits(2.0 / 3));
+  s.text(4, 2, "(L2 + L3)/H: the paper's, for every site");
+  const char* headings[] = {"site", "level", "R", "m", "T", "L1", "L2", "L4", "D", "M", "mb", "eps", "v", "h", "A", "status", "valid"};
+  const char* units[] = {"", "m", "m", "kg", "kJ", "m", "m", "m", "m", "t", "kg", "%", "m/s", "m", "deg", "", ""};
+  for (int col = 0; col < 17; ++col) {
+    s.heading(6, col, headings[col]);
+    s.text(7, col, units[col]);
+  }
+  const Text automatic = literal("auto");
+  const int table_rows = c.rows + 4;
+  int row = 8;
+  for (std::size_t k = 0; k < std::size(paper_sites); ++k, row += 4) {
+    const PrintedSite& site = paper_sites[k];
+    // The paper's row: its numbers with the decimals it prints.
+    const int paper = row + 1;
+    s.text(paper, 0, std::string(site.site) + ", the paper");
+    s.text(paper, 1, site.level);
+    s.number(paper, 2, site.R);
+    s.number(paper, 3, 50);
+    std::array<Expr, 11> printed;
+    for (std::size_t j = 0; j < printed.size(); ++j) printed[j] = s.printed(paper, 4 + static_cast<int>(j), site.printed[j]);
+
+    s.text(row, 0, std::string(site.site) + ", the workbook");
+    s.input(row, 1, site.level_m);
+    const Expr R = s.number_input(row, 2, site.R, "Type the range in metres, a number alone: 150 for 150 m.");
+    const Expr m = s.number_input(row, 3, 50, "Type the stone's mass in kilograms, a number alone: 50 for 50 kg.");
+    // R and m (the 1st and 8th quantities), m in the table's material (section 7).
+    const int header = 40 + static_cast<int>(k) * table_rows;
+    s.text(header - 2, 0,
+           std::string("Site ") + site.site + " (row " + std::to_string(k + 1) + " of tab:Alcala_la_Vieja), R and m in every segment:");
+    const Solution solved = solve_in_segments(s, header, c, theta, F, automatic, {{num(1), ln(R)}, {num(8), ln(m / f.mass)}}, std::nullopt);
+    const Expr L1 = fitted(c, f, Param::L1, solved.segment, solved.lr, solved.lt);
+    const Expr L2 = fitted(c, f, Param::L2, solved.segment, solved.lr, solved.lt);
+    const Expr valid = s.formula(row, 16, design_valid(solved.ok, solved.amplification, counterweight_arm(F, theta, L1, L2)));
+    s.formula(row, 15, choose(valid, literal("ok"), literal("no engine: see the sheet 'from R and one' for why")));
+    auto result = [&](int col, const Expr& e) { return s.result(row, col, valid, e); };
+    auto fit = [&](Param param) { return fitted(c, f, param, solved.segment, solved.lr, solved.lt); };
+    std::array<Expr, 9> computed;  // T [kJ], L1, L2, L4, D, M [t], mb, eps [%], v
+    computed[0] = result(4, target_energy(c, f, solved.lt) / num(1000));
+    computed[1] = result(5, L1), computed[2] = result(6, L2), computed[3] = result(7, fit(Param::L4)), computed[4] = result(8, fit(Param::D));
+    computed[5] = result(9, fit(Param::M) / num(1000)), computed[6] = result(10, fit(Param::mb));
+    const Expr T = computed[0] * num(1000), M = computed[5] * num(1000);
+    // eq:Aux: eps = T/DeltaU with eq:DU; v from eq:T, T = m v^2/2 + m g h, with the paper's h.
+    computed[7] = result(11, num(100) * T / potential_drop(computed[6] / M, computed[1] / computed[2], theta, M, f.g, computed[2]));
+    computed[8] = result(12, sqrt(num(2) * (T / m - f.g * printed[9])));
+    s.text(row + 2, 0, std::string(site.site) + ": workbook/paper - 1 [%]");
+    for (std::size_t j = 0; j < computed.size(); ++j)
+      s.result(row + 2, 4 + static_cast<int>(j), valid, num(100) * (computed[j] / printed[j] - num(1)));
+  }
+  s.text(row, 0, "eps is eq:Aux, T/DeltaU with eq:DU; v is eq:T, T = m v^2/2 + m g h, solved with the paper's h.");
+  s.text(row + 1, 0, "h and A of the paper come from its simulation of each shot, not from eq:ZRT: trebuchet-verify shot computes them.");
+  s.text(row + 2, 0,
+         "The level (of the target, relative to the engine) is the paper's: it is ignored where it is in brackets, and the row "
+         "without brackets aims 54 m short of 480 m (sec:AVS); it does not enter the formulas.");
+  worksheet_print_area(s.raw(), 0, 0, static_cast<lxw_row_t>(row + 2), 15);
 }
 
 // The quantities that follow from an engine (section 2, eq:Design, eq:kMkD, eq:DU).
@@ -607,7 +858,7 @@ void write_derived(lxw_workbook* book, Formats& formats, const Engine& e, const 
   output("mu", m / M, "", "mu = m/M (eq:Design)");
   const Expr mu_b = output("mu_b", mb / M, "", "mu_b = mb/M (eq:Design)");
   output("K", (l + num(1)) / mu_b, "", "K = (l + 1)/mu_b (eq:kMkD)");
-  output("DeltaU", (num(1) - mu_b * (l - num(1)) / num(2)) * (num(1) + cos_deg(theta)) * M * g * L2, "J",
+  output("DeltaU", potential_drop(mu_b, l, theta, M, g, L2), "J",
          "potential energy released by a shot (eq:DU) of an unpropped counterweight (psi_i = 0, as every design here): "
          "(1 - mu_b (l - 1)/2)(1 + cos theta_i) M g L2; a propped one adds L (1 - cos psi_i) M g L2 (trebuchet-verify --psi-i)");
 }
@@ -688,18 +939,22 @@ DesignRequest SpreadsheetInputs::example(Quantity first, double first_value, Qua
   return request;
 }
 
+DesignRequest SpreadsheetInputs::villard() {
+  DesignRequest request = example(Quantity::Lb, 9, Quantity::l, 4.5);
+  request.F = 1;
+  return request;
+}
+
 Engine SpreadsheetInputs::alcala_ca() { return design_optimal_engine(builtin_scaling_table(), example(Quantity::R, 150, Quantity::m, 50)).engine; }
 
 void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& inputs, const std::string& path) {
   check_material(inputs.material);
-  for (const DesignRequest* sheet : {&inputs.capacity, &inputs.range_and_one, &inputs.any_pair}) {
+  const DesignRequest &capacity = inputs.capacity, &range_and_one = inputs.range_and_one, &any_pair = inputs.any_pair,
+                      &beam_length = inputs.beam_length;
+  if (beam_length.first.quantity != Quantity::Lb || beam_length.second.quantity == Quantity::Lb)
+    throw Error(ErrorKind::given_count, "the sheet 'from Lb and one' takes Lb first and one other quantity");
+  for (const DesignRequest* sheet : {&capacity, &range_and_one, &any_pair, &beam_length})
     table.block(sheet->theta_i_deg, sheet->F);  // the calculator's refusal of a (theta_i, F) the table lacks
-    for (const Given& given : {sheet->first, sheet->second})
-      if (given.quantity == Quantity::Lb)
-        throw Error(ErrorKind::given_count,
-                    "the workbook's pairs are log-linear (eq:RT_ZiZj), and Lb = L1 + L2 is not; give l = L1/L2 "
-                    "instead, or design with Lb in trebuchet-calc itself");
-  }
   // Written under a temporary name and moved into place when closed: a failure leaves no half workbook.
   PendingOutput output(path, "spreadsheet");
   // libxlsxwriter finds an unwritable path only when it closes the file, and says so on stderr: try it first.
@@ -722,15 +977,17 @@ void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& input
   format_set_font_color(formats.note, 0x555555);
   const ConstantsSheet constants = write_constants(book, formats, table);
   const MaterialFactors factors = write_material(book, formats, constants, inputs.material);
-  const DesignResult capacity = write_design(book, formats, "from R and T", "The optimal engine for a capacity (R, T) (eq:ZRT)", constants, factors,
-                                             inputs.capacity, 2);
+  const DesignResult capacity_sheet = write_design(book, formats, "from R and T", "The optimal engine for a capacity (R, T) (eq:ZRT)", constants,
+                                                   factors, capacity, 2);
   worksheet_activate(workbook_get_worksheet_by_name(book, "from R and T"));  // it opens on the first design, not on the constants
   write_design(book, formats, "from R and one", "The optimal engine for R and one parameter (eq:RT_ZiZj with Z_i = R)", constants, factors,
-               inputs.range_and_one, 1);
-  write_design(book, formats, "from any pair", "The optimal engine for any two givens (eq:RT_ZiZj, eq:ZiZj_RT)", constants, factors, inputs.any_pair,
-               0);
+               range_and_one, 1);
+  write_design(book, formats, "from any pair", "The optimal engine for any two givens (eq:RT_ZiZj, eq:ZiZj_RT)", constants, factors, any_pair, 0);
+  write_design(book, formats, "from Lb and one", "The optimal engine for the beam length Lb = L1 + L2 and one parameter", constants, factors,
+               beam_length, 1);
+  write_sites(book, formats, constants, factors);
   write_derived(book, formats, inputs.engine, factors.g);
-  write_model_scaling(book, formats, capacity, inputs.model_scale);
+  write_model_scaling(book, formats, capacity_sheet, inputs.model_scale);
   write_glossary(book, formats);
   if (workbook_close(owned.release()) != LXW_NO_ERROR)
     throw Error(ErrorKind::usage, "{{spreadsheet}}: cannot write '" + path + "'; give a file you can write to");

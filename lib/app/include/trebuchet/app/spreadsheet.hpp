@@ -1,7 +1,8 @@
 // The calculator as a workbook with live formulas (docs/spreadsheet.md): the constants of a
-// table, the optimal engine from (R, T), from R and one parameter and from any log-linear pair,
-// the derived quantities, model scaling and the material, each formula the paper's equation
-// with its label beside it. Written with libxlsxwriter, with every formula's value cached.
+// table, the optimal engine from (R, T), from R and one parameter, from any log-linear pair and
+// from Lb and one parameter, the paper's sites (tab:Alcala_la_Vieja), the derived quantities,
+// model scaling and the material, each formula the paper's equation with its label beside it.
+// Written with libxlsxwriter, with every formula's value cached.
 #pragma once
 
 #include <string>
@@ -16,17 +17,20 @@ struct SpreadsheetInputs {
   DesignRequest capacity = example(Quantity::R, 425, Quantity::T, 224e3);  ///< Denny's engine, the "Present" row
   DesignRequest range_and_one = example(Quantity::R, 150, Quantity::m, 50);  ///< Alcalá la Vieja, site Ca
   DesignRequest any_pair = example(Quantity::M, 10e3, Quantity::m, 100);  ///< Denny's (M, m)
+  DesignRequest beam_length = villard();  ///< Lb and one log-linear quantity: tab:SketchBook-II, row 2
   Engine engine = alcala_ca();  ///< the derived-quantities sheet's engine
   double model_scale = 80.0 / 425;  ///< Denny's 80 m model, on the (R, T) sheet's engine
   Material material{};  ///< beta2, Young's modulus, wood density and g of the designs
 
   static DesignRequest example(Quantity first, double first_value, Quantity second, double second_value);
+  static DesignRequest villard();  ///< Lb = 9 m, l = 4.5, theta_i = 30 deg, F = 1
   static Engine alcala_ca();
 };
 
 /// Writes the workbook to `path` (an .xlsx file). The designs take `inputs`; the constants are
-/// `table`'s. Throws Error(usage) when the file cannot be written. Pairs with Lb, which is not
-/// log-linear, are the calculator's alone; the workbook's pair sheet offers the others.
+/// `table`'s. Throws Error(usage) when the file cannot be written. A pair with Lb, given for any
+/// sheet, opens the sheet "from Lb and one" (Lb first); the sheet it was given for then opens on
+/// its default.
 void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& inputs, const std::string& path);
 
 }  // namespace trebuchet
