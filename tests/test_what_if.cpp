@@ -31,7 +31,7 @@ TEST_CASE("a sweep's values run evenly from one end to the other, both exact", "
   CHECK_THROWS_AS(what_if_values(2, INFINITY, 10), Error);
 }
 
-TEST_CASE("--vary names an engine's value and its range, or is refused with the fix", "[what_if]") {
+TEST_CASE("the value a sweep varies is an engine's, with its range, or refused with the fix", "[what_if]") {
   const WhatIf w = parse_what_if("L4=2m..500cm", 40, "--vary");
   CHECK(std::string(w.field->key) == "L4");
   CHECK(w.from == 2);
