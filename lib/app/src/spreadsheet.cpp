@@ -551,8 +551,9 @@ Solution solve_in_segments(Sheet& s, int header, const ConstantsSheet& c, const 
         const Expr beta = s.formula(row, col + 1, law(column, 1) * dr + law(column, 2) * dt);
         return std::pair{alpha, beta};
       };
-      const auto [alpha1, beta1] = along(L1_column, 23);
-      const auto [alpha2, beta2] = along(L2_column, 25);
+      // Named, not bound: a lambda below uses them, which structured bindings allow only from C++20 (clang 14 refuses).
+      const std::pair<Expr, Expr> line1 = along(L1_column, 23), line2 = along(L2_column, 25);
+      const Expr &alpha1 = line1.first, &beta1 = line1.second, &alpha2 = line2.first, &beta2 = line2.second;
       // The part of the line inside the segment's X interval; where X is constant along it (the
       // beam ratio l) the line is bounded by |ln(R/R0)|, |ln(T/T0)| <= 50, beyond any engine.
       const Expr dX = (num(5) * dr - dt) / sqrt26, X0 = (num(5) * lr0 - lt0) / sqrt26;
