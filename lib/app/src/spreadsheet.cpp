@@ -127,8 +127,9 @@ struct Formats {
   // every digit, and exports at full precision.
   static std::string number_format(double value) {
     const double size = std::abs(value);
-    if (size < 1e-3) return "0.000E+00;-0.000E+00;0";
-    const int decimals = std::clamp(3 - static_cast<int>(std::floor(std::log10(size))), 0, 6);
+    if (!(size >= 1e-3)) return "0.000E+00;-0.000E+00;0";  // NaN too: a refused request's placeholder
+    // Clamped before the conversion: an infinite value (a request beyond every number) has no digit count.
+    const int decimals = static_cast<int>(std::clamp(3 - std::floor(std::log10(size)), 0.0, 6.0));
     const std::string digits = "#,##0" + (decimals == 0 ? "" : "." + std::string(static_cast<std::size_t>(decimals), '0'));
     return digits + ";-" + digits + ";0";
   }
