@@ -105,6 +105,8 @@
   function saveState() {
     const params = new URLSearchParams();
     const defaults = JSON.parse(DEFAULTS);
+    // An edit view still on the design's engine: the link's givens make it again.
+    if (designed && editFrom !== 'reconstruct' && JSON.stringify(state.edit) === JSON.stringify(engineOf(designed))) defaults.edit = state.edit;
     for (const [k, v] of Object.entries(state))
       if (v !== null && JSON.stringify(v) !== JSON.stringify(defaults[k])) params.set(k, typeof v === 'object' ? JSON.stringify(v) : String(v));
     history.replaceState(null, '', '#' + params.toString());
@@ -201,8 +203,11 @@
     if (answer.error) {
       shown = null;
       $('viewer').innerHTML = `<div class="message refused">${escapeHtml(answer.error)}</div>`;
+      document.querySelector('.downloads').hidden = true;  // no shot: nothing to download, not the last one's
+      showProjectile(null);
       return null;
     }
+    document.querySelector('.downloads').hidden = false;
     shown = { engine, shot: answer };
     $('shot-title').textContent = title;
     // A change keeps the animation where it stood, so that a drag shows the same moment.
@@ -222,6 +227,7 @@
   const escapeHtml = V.escapeHtml;
   // The ball the shot flew: its material and the diameter that gives it its mass (in air, its drag).
   function showProjectile(answer) {
+    if (!answer) { $('projectile-size').textContent = 'No shot: see the message above the animation.'; $('projectile-size').dataset.diameter = ''; return; }
     const a = answer.assumptions.air, words = { stone: 'stone', iron: 'iron', lead: 'lead', clay: 'fired clay', density: 'a ball' }[state.projectile];
     $('projectile-size').textContent = a === 'vacuum'
       ? 'The material sets the ball\'s size for its mass, and so its drag: it matters only in air.'
@@ -241,7 +247,8 @@
     // A slider and a typed box for each of the engine's values the design has (a propped angle it
     // has not; the whipper's θi, pytrebuchet's -150°, neither), reaching the edited value where a
     // link or a typed value takes it beyond the design's range.
-    for (const { key, dimension, label } of ENGINE.filter((f) => base[f.key] > 0 && !(f.key === 'theta_i_deg' && state.machine === 'whipper'))) {
+    // D, the beam's diameter, with them: it sets the beam's stress, which the strength box judges.
+    for (const { key, dimension, label } of ENGINE.concat(INPUTS.filter((f) => f.key === 'D')).filter((f) => base[f.key] > 0 && !(f.key === 'theta_i_deg' && state.machine === 'whipper'))) {
       if (!(state.edit[key] > 0)) state.edit[key] = base[key];
       const centre = base[key], edited = state.edit[key];
       const [lo, hi] = key === 'theta_i_deg' ? [10, 80] : [Math.min(centre * 0.3, edited * 0.9), Math.max(centre * 2.5, edited * 1.1)];
@@ -264,10 +271,20 @@
       typed.addEventListener('change', () => {
         const answer = call('value', { key, text: typed.value });
         const message = $('edit-message');
-        if (answer.error || !(answer.value > 0) || (key === 'theta_i_deg' && !(answer.value < 90))) {
+        // A value the library refuses for this key (out of its ordinary range, say) is refused
+        // here, in place, with the library's words; the engine and the slider keep theirs.
+        let why = answer.error;
+        if (!why && !(answer.value > 0 && (key !== 'theta_i_deg' || answer.value < 90)))
+          why = `${key}: ${typed.value} must be positive${key === 'theta_i_deg' ? ' and below 90 degrees' : ''}; type it again`;
+        if (!why) {
+          const trial = call('shot', Object.assign({ design: asBuilt(Object.assign({}, state.edit, { [key]: answer.value })) }, settings()));
+          // Refused for this value: the message names it ("design.L1 = 1e+30 m is not of ordinary size ...").
+          if (trial.error && (trial.error.startsWith(`design.${key} `) || (trial.names || []).includes(key))) why = trial.error;
+        }
+        if (why) {
           typed.setAttribute('aria-invalid', 'true');
           message.className = 'message refused';
-          message.textContent = answer.error || `${key}: ${typed.value} must be positive${key === 'theta_i_deg' ? ' and below 90 deg' : ''}; type it again`;
+          message.textContent = why;
           return;
         }
         message.className = 'message'; message.textContent = '';
@@ -280,19 +297,25 @@
       box.appendChild(row);
     }
     const from = { design: 'the optimal engine of view 1, Design', reconstruct: 'the completed engine of view 3, Reconstruct' }[editFrom];
-    $('edit-source').textContent = from ? 'Editing ' + from + '.' : '';
+    $('edit-source').textContent = 'Editing ' + (from || (editBase ? 'the engine of the link' : 'the optimal engine of view 1, Design')) + '.';
     fillSweepKeys();
   }
 
   // ---- what if: one value of the edited engine over a range (api sweep) -------------------------
   // The values a sweep may vary: the engine's, and the builder's pin.
   function sweepable() {
-    return INPUTS.filter((f) => (f.group === 'engine' && f.operations.includes('shot') && f.key !== 'psi_i_deg') || f.key === 'pin_angle_deg');
+    return INPUTS.filter((f) => (f.group === 'engine' && f.operations.includes('shot') && f.key !== 'psi_i_deg') || f.key === 'D' || f.key === 'pin_angle_deg');
+  }
+  // A value's name on the page: its symbol and its words ("L4: sling", "θi: start angle", "the pin angle").
+  function sweepName(f) {
+    if (f.key === 'pin_angle_deg') return 'the pin angle';
+    return (f.key === 'theta_i_deg' ? 'θi: start angle' : f.key + ': ' + f.label.replace(/ \[deg\]$/, ''));
   }
   function fillSweepKeys() {
     const select = $('sweep-key');
-    select.innerHTML = sweepable().filter((f) => f.key === 'pin_angle_deg' || (state.edit && state.edit[f.key] > 0))
-      .map((f) => `<option value="${f.key}">${f.key === 'theta_i_deg' ? 'θi' : f.key}: ${escapeHtml(f.label.replace(/ \[deg\]$/, ''))}</option>`).join('');
+    // The whipper's θi is its own start (asBuilt's), not a value to vary.
+    select.innerHTML = sweepable().filter((f) => f.key === 'pin_angle_deg' || (state.edit && state.edit[f.key] > 0 && !(f.key === 'theta_i_deg' && state.machine === 'whipper')))
+      .map((f) => `<option value="${f.key}">${escapeHtml(sweepName(f))}</option>`).join('');
     select.value = state.sweep_key;
     if (select.value !== state.sweep_key) { state.sweep_key = select.value; state.sweep_from = state.sweep_to = ''; }
   }
@@ -307,13 +330,17 @@
     const box = $('sweep-chart'), message = $('sweep-message');
     box.innerHTML = ''; message.textContent = ''; message.className = 'message';
     lastSweep = null;
-    if (!shot || !state.edit) return null;
+    if (!state.edit) return null;
+    if (!shot) { message.textContent = 'No shot of this engine to vary: see the message above the animation.'; return null; }
     const key = state.sweep_key, field = INPUTS.find((f) => f.key === key);
     if (!field) return null;
     const range = sweepRange(shot);
     $('sweep-from').placeholder = typedText(Number(range.from) || 0, field.dimension);
     $('sweep-to').placeholder = typedText(Number(range.to) || 0, field.dimension);
-    const request = Object.assign({ design: asBuilt(state.edit), vary: `${key}=${range.from}..${range.to}`, points: 21 }, settings());
+    // A swept pin angle is the release: a release given another way gives way to it.
+    const design = asBuilt(state.edit);
+    if (key === 'pin_angle_deg') for (const other of ['release_time', 'release_angle_deg']) delete design[other];
+    const request = Object.assign({ design, vary: `${key}=${range.from}..${range.to}`, points: 21 }, settings());
     const answer = call('sweep', request);
     if (answer.error) { message.className = 'message refused'; message.textContent = answer.error; return answer; }
     lastSweep = { request, answer };
@@ -328,16 +355,20 @@
     ];
     const breaking = answer.points.map((p, i) => (p.rupture_margin < 1 ? i : -1)).filter((i) => i >= 0);
     const labels = breaking.map((i) => ({ x: x[i], y: answer.points[i].R / shot.R, text: '✗', attributes: { fill: '#b00020', 'font-size': 15, 'text-anchor': 'middle', 'font-weight': 'bold' } }));
-    const name = key === 'theta_i_deg' ? 'θi' : key;
+    const name = key === 'theta_i_deg' ? 'θi' : key === 'pin_angle_deg' ? 'the pin angle' : key;
     const figure = V.chart({ width: 420, height: 300, title: `What if ${name} changes? Each point a whole shot`,
-      subtitle: 'each value over its value in this engine; ✗: the beam breaks', xLabel: `${name}, ${field.label.replace(/ \[deg\]$/, '')} [${unit}]`,
-      yLabel: 'over this engine', xName: name, xUnit: unit, lines, labels, marks: [{ name: 'this engine', x: range.value / size }] });
+      subtitle: 'each value over its value in this engine; ✗: the beam breaks', xLabel: `${sweepName(field)} [${unit}]`,
+      yLabel: 'over this engine', xName: name, xUnit: unit, lines, labels, marks: [{ name: 'this engine', x: range.value / size }],
+      empty: 'no point of this range makes a shot: see the message above' });
     figure.classList.add('sweep-chart');
     box.appendChild(figure);
     const failed = answer.points.filter((p) => p.error);
     const notes = [];
     if (breaking.length) notes.push(`The beam breaks at ${breaking.length} of the ${answer.points.length} points (✗), from ${name} = ${typedText(answer.values[breaking[0]], field.dimension)} to ${typedText(answer.values[breaking[breaking.length - 1]], field.dimension)}.`);
     if (failed.length) notes.push(`${failed.length} point(s) make no shot: ${failed[0].error}`);
+    const [low, high] = [answer.values[0], answer.values[answer.values.length - 1]];
+    if (!(range.value >= low && range.value <= high))
+      notes.push(`This engine's ${name}, ${typedText(range.value, field.dimension)}, lies outside the range swept (${typedText(low, field.dimension)} to ${typedText(high, field.dimension)}); the curves are still over its values.`);
     if (notes.length) { message.className = breaking.length ? 'message refused' : 'message'; message.textContent = notes.join(' '); }
     return answer;
   }

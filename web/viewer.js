@@ -69,6 +69,10 @@
     const xs = [], ys = [];
     for (const line of spec.lines)
       line.x.forEach((x, i) => { const y = line.y[i]; if (y !== null && isFinite(y) && isFinite(x)) { xs.push(x); ys.push(y); } });
+    if (!xs.length) {  // every value refused or not finite: say so, draw no axes of NaN
+      text(root, width / 2, height / 2, spec.empty || 'nothing to draw: no point has a value', { 'text-anchor': 'middle', 'font-size': 13, fill: '#b00020' });
+      return root;
+    }
     let [x0, x1] = spec.xRange || [Math.min(...xs), Math.max(...xs)];
     let [y0, y1] = spec.yRange || [Math.min(0, ...ys), Math.max(...ys)];
     if (spec.equalAspect) {
@@ -97,7 +101,7 @@
     const defs = svg('defs', {}, root);
     svg('rect', { x: left, y: top, width: width - left - right, height: height - top - bottom }, svg('clipPath', { id: clip }, defs));
     const curves = svg('g', { 'clip-path': `url(#${clip})` }, root);
-    (spec.marks || []).forEach((mark, k) => {
+    (spec.marks || []).filter((mark) => isFinite(mark.x) && mark.x >= x0 && mark.x <= x1).forEach((mark, k) => {
       svg('line', { x1: X(mark.x), x2: X(mark.x), y1: top, y2: height - bottom, stroke: '#999', 'stroke-dasharray': '3 3' }, root);
       text(root, X(mark.x), top - 4 - (k % 2) * 11, mark.name, { 'text-anchor': 'middle', 'font-size': 10, fill: '#555' });
     });
@@ -315,7 +319,7 @@
     });
     // R and Q against the pin angle: the shot released at each pin 20 degrees either side of its own.
     const pinScan = s.pins;
-    const pin = pinScan && chart({ width,
+    const pin = pinScan && pinScan.R.some((v) => v !== null && isFinite(v)) && chart({ width,
       title: 'The pin: R and Q of a release at each pin angle',
       subtitle: `this shot's pin angle, ${significant(shot.pin_angle_at_release_deg, 4)}°, marked; each over its value here`,
       xLabel: 'pin angle between the long arm and the sling at the release [°]', yLabel: 'value over its value in this shot', xName: 'pin', xUnit: '°',
@@ -344,8 +348,9 @@
     // The beam's strength, pass or break, where the shot knows the beam's diameter (given, or from mb).
     const margin = shot.rupture_margin, stress = Math.max(shot.stress_at_rest || 0, shot.stress_peak || 0);
     const strength = margin === undefined ? ''
-      : margin < 1 ? `<div class="tv-strength tv-breaks" role="alert"><b>✗ THE BEAM BREAKS.</b> Its largest stress, ${q(stress, 'stress')}, is ${significant(1 / margin, 3)} times what its wood bears (the modulus of rupture): margin ${significant(margin, 3)}, below 1. Give it a larger diameter D, or a lighter counterweight M.</div>`
-        : `<div class="tv-strength tv-holds"><b>✓ The beam holds:</b> margin ${significant(margin, 3)}. Its largest stress, ${q(stress, 'stress')}, is ${significant(100 / margin, 3)} % of what its wood bears (the modulus of rupture).</div>`;
+      : margin < 1 ? `<div class="tv-strength tv-breaks" role="alert"><b>✗ THE BEAM BREAKS.</b> Its largest stress, ${q(stress, 'stress')}, is ${significant(1 / margin, 3)} times what its wood bears (the modulus of rupture): margin ${significant(margin, 3)}, below 1. Give it a larger diameter D (a box in the edit view), or a lighter counterweight M.</div>`
+        : (shot.warnings || []).length ? `<div class="tv-strength tv-unphysical">The beam would hold (margin ${significant(margin, 3)}), but this shot is not physical (above): its stresses are not a real engine's.</div>`
+          : `<div class="tv-strength tv-holds"><b>✓ The beam holds:</b> margin ${significant(margin, 3)}. Its largest stress, ${q(stress, 'stress')}, is ${significant(100 / margin, 3)} % of what its wood bears (the modulus of rupture).</div>`;
     const loads = [['sling tension', shot.sling_tension, shot.t_sling_tension], ['hinge pin |F_H|', shot.hinge_force, shot.t_hinge_force],
       ['pivot |F_R|', shot.pivot_force, shot.t_pivot_force]].filter(([, v]) => v !== undefined);
     const row = (name, value, title) => `<tr${title ? ` title="${escapeHtml(title)}"` : ''}><th>${name}</th><td>${value}</td></tr>`;

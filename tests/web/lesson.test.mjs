@@ -94,6 +94,26 @@ try {
     message: document.getElementById('edit-message').textContent, L4: window.trebuchet.state().edit.L4 }));
   check(wrong.invalid === 'true' && /mass/.test(wrong.message) && wrong.L4 === typed.edit, `a typed 19kg is refused in place: "${wrong.message}", L4 kept at ${wrong.L4} m`);
 
+  // A value of the right kind that the library refuses for the engine (1e30 m, beyond the ordinary
+  // 1e-6 to 1e6 m) is refused in place too; the engine and the slider keep theirs.
+  const before30 = await page.evaluate(() => ({ L1: window.trebuchet.state().edit.L1, max: document.querySelector('#sliders input[data-key="L1"]').max }));
+  await page.fill('#sliders .typed[data-key="L1"]', '1e30m');
+  await page.press('#sliders .typed[data-key="L1"]', 'Enter');
+  const huge = await page.evaluate(() => ({ invalid: document.querySelector('#sliders .typed[data-key="L1"]').getAttribute('aria-invalid'),
+    message: document.getElementById('edit-message').textContent, L1: window.trebuchet.state().edit.L1, max: document.querySelector('#sliders input[data-key="L1"]').max,
+    shot: window.trebuchet.current() !== null }));
+  check(huge.invalid === 'true' && /ordinary size/.test(huge.message) && huge.L1 === before30.L1 && huge.max === before30.max && huge.shot,
+    `a typed 1e30m is refused in place: "${huge.message.slice(0, 90)}…", L1 kept at ${huge.L1} m, the slider's end at ${huge.max}`);
+  // An engine that makes no shot (19 kg cannot turn this beam): no stale downloads, and the what-if says why it is empty.
+  const M = await page.evaluate(() => window.trebuchet.state().edit.M);
+  await page.fill('#sliders .typed[data-key="M"]', '19kg');
+  await page.press('#sliders .typed[data-key="M"]', 'Enter');
+  const noShot = await page.evaluate(() => ({ downloads: document.querySelector('.downloads').hidden, sweep: document.getElementById('sweep-message').textContent,
+    shot: window.trebuchet.current() }));
+  check(noShot.shot === null && noShot.downloads && /No shot of this engine/.test(noShot.sweep), `an engine that makes no shot hides the downloads and says so under What if: "${noShot.sweep}"`);
+  await page.fill('#sliders .typed[data-key="M"]', `${M}kg`);
+  await page.press('#sliders .typed[data-key="M"]', 'Enter');
+
   // ---- 5. the what-if chart's points are single shots, bit for bit ------------------------------------
   // Each point of the chart, shot alone with the same settings, gives the same record: every number equal.
   for (const key of ['L4', 'M', 'pin_angle_deg']) {
