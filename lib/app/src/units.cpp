@@ -25,7 +25,7 @@ struct Unit {
 // 0.3048 m and the pound 0.45359237 kg exactly; the pound-force is a pound under standard
 // gravity, 9.80665 m/s^2. tests/test_units.cpp checks every factor against GNU units.
 constexpr double foot = 0.3048, pound = 0.45359237, pound_force = pound * 9.80665;
-constexpr std::array<Unit, 48> units = {{
+constexpr std::array<Unit, 49> units = {{
     {"m", UnitDimension::length, 1.0},
     {"cm", UnitDimension::length, 1e-2},
     {"mm", UnitDimension::length, 1e-3},
@@ -59,6 +59,7 @@ constexpr std::array<Unit, 48> units = {{
     {"kg/m3", UnitDimension::density, 1.0},
     {"kg/m^3", UnitDimension::density, 1.0},
     {"t/m3", UnitDimension::density, 1e3},
+    {"g/cm3", UnitDimension::density, 1e3},  // the school unit: water is 1 g/cm3
     {"lb/ft3", UnitDimension::density, pound / (foot * foot * foot)},
     {"%", UnitDimension::dimensionless, 1e-2},
     {"s", UnitDimension::time, 1.0},
