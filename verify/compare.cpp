@@ -10,14 +10,8 @@
 namespace trebuchet::verify {
 
 int run_compare(const Options& o) {
-  DesignCheck check;
-  check.settings = settings_of(o);
+  DesignCheck check = design_check(o);
   check.settings.release_at = release_of(o.design, "");
-  check.material = o.material;
-  check.units = o.units;
-  check.csv = o.format == Format::csv;
-  check.csv_digits = o.digits;
-  check.inputs = {o.input};
   nlohmann::json passed = nlohmann::json::object();
   std::string where;
   DesignValues values = one_design(o, "compare", where, passed);

@@ -21,6 +21,10 @@ int run_sweep(const Options& options);  // sweep.cpp: the what-if sweep
 /// the material, the capacity and the release are settings of a file's designs too.
 bool has_engine_flags(const DesignValues& design);
 
+/// How the flags check and report a design (shot.cpp): the settings, the material, the units, the
+/// format and the input file, which no output may replace. shot, compare and sweep start from it.
+DesignCheck design_check(const Options& options);
+
 /// The values of the one design a subcommand takes (compare, sweep): from the file, refusing
 /// engine flags beside it and a file of more designs, or from the flags; `where` names it in
 /// messages, `passed` gets a file's keys that no reader knows.

@@ -13,22 +13,28 @@
 #include "trebuchet/app/text_input.hpp"
 
 namespace trebuchet::verify {
-namespace {
-
-DesignCheck design_check(const Options& o, bool fit) {
+DesignCheck design_check(const Options& o) {
   DesignCheck check;
   check.settings = settings_of(o);
-  check.settings.release_at = release_of(o.design, "");
   check.material = o.material;
-  check.tolerance = o.tolerance;
-  check.fit = fit;
   check.csv = o.format == Format::csv;
   check.csv_digits = o.digits;
+  check.inputs = {o.input};
+  check.units = o.units;
+  return check;
+}
+
+namespace {
+
+// shot's and fit's: the capacity's check, the release the flags set, the series and the pictures.
+DesignCheck shot_check(const Options& o, bool fit) {
+  DesignCheck check = design_check(o);
+  check.settings.release_at = release_of(o.design, "");
+  check.tolerance = o.tolerance;
+  check.fit = fit;
   check.series_path = o.series;
   check.series_dt_s = o.series_dt_s;
   check.plot_dir = o.plot;
-  check.inputs = {o.input};
-  check.units = o.units;
   return check;
 }
 
@@ -117,7 +123,7 @@ DesignValues one_design(const Options& o, const std::string& subcommand, std::st
 }
 
 int run_shot(const Options& o, bool fit) {
-  const DesignCheck check = design_check(o, fit);
+  const DesignCheck check = shot_check(o, fit);
   DesignInputs in;
   if (!o.input.empty()) {
     if (has_engine_flags(o.design))

@@ -11,13 +11,7 @@ namespace trebuchet::verify {
 
 int run_sweep(const Options& o) {
   if (!o.what_if) throw Error(ErrorKind::usage, "sweep needs the value to vary and its range: --vary L4=2m..5m");
-  DesignCheck check;
-  check.settings = settings_of(o);
-  check.material = o.material;
-  check.units = o.units;
-  check.csv = o.format == Format::csv;
-  check.csv_digits = o.digits;
-  check.inputs = {o.input};
+  DesignCheck check = design_check(o);
   nlohmann::json passed = nlohmann::json::object();
   std::string where;
   const DesignValues values = one_design(o, "sweep", where, passed);

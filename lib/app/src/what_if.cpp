@@ -15,26 +15,23 @@ WhatIf parse_what_if(std::string_view text, int points, std::string_view name) {
   const std::string given(text);
   const auto equals = given.find('=');
   const std::string key = given.substr(0, equals);
+  // A shot's value of the engine, its parts or its release: not its capacity, nor the material (its flags would override it).
+  const auto varies = [](const InputField& f) {
+    return (f.operations & op_shot) && f.group != FieldGroup::capacity && f.group != FieldGroup::material;
+  };
   const InputField* field = find_field(key);
-  if (!field)
-    for (const InputField& f : input_fields())
-      if (key == f.flag) field = &f;
-  const bool varies = field && (field->operations & op_shot) &&
-      (field->group == FieldGroup::engine || field->group == FieldGroup::alternative || field->group == FieldGroup::part ||
-       field->group == FieldGroup::release);
-  if (!varies) {
+  for (const InputField& f : input_fields())
+    if (!field && key == f.flag) field = &f;
+  if (!field || !varies(*field)) {
     std::vector<std::string> names;
     for (const InputField& f : input_fields())
-      if ((f.operations & op_shot) && f.group != FieldGroup::capacity && f.group != FieldGroup::material) names.emplace_back(f.key);
+      if (varies(f)) names.emplace_back(f.key);
     throw Error(ErrorKind::usage,
                 std::string(name) + ": '" + key + "' is no value of an engine to vary; give one of " + join(names, ", ") + ", e.g. " +
                     std::string(name) + " L4=2m..5m");
   }
-  if (equals == std::string::npos)
-    throw Error(ErrorKind::usage,
-                std::string(name) + ": '" + given + "' gives no range; write " + field->key + "=low..high, e.g. " + field->key + "=" +
-                    field->example + ".." + field->example);
-  const auto range = parse_spread(given.substr(equals + 1), field->dimension, std::string(name) + " " + field->key);
+  const auto range = equals == std::string::npos ? std::nullopt
+                                                 : parse_spread(given.substr(equals + 1), field->dimension, std::string(name) + " " + field->key);
   if (!range || range->kind != Spread::Kind::uniform)
     throw Error(ErrorKind::usage, std::string(name) + ": '" + given + "' gives no range; write " + field->key + "=low..high, e.g. L4=2m..5m");
   what_if_values(range->a, range->b, points);  // the count and the ends checked here, before any shot
