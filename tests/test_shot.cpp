@@ -226,8 +226,41 @@ TEST_CASE("a counterweight below the base is warned with its time, and only when
         return e;
       }(),
       ShotSettings{});
-  REQUIRE(v.warnings.size() == 1);
+  // And such an engine cannot be built: hanging straight down its counterweight reaches
+  // (F - 1) H = 0.2 H below the ground (the clearance's warning, after the model's).
+  REQUIRE(v.warnings.size() == 2);
   CHECK_THAT(v.warnings.front(), Catch::StartsWith("the counterweight passes below the engine's base at t = 0.7028 s"));
+  CHECK_THAT(v.warnings.back(), Catch::StartsWith("hanging straight down, the counterweight's centre reaches"));
+  CHECK(!v.clearance.buildable());
+}
+
+// Issue 46: every shot reports the counterweight's clearance above the ground, hanging straight
+// down (H - L2 - L3 - half its box, for every machine) and the lowest in the shot, which follows
+// it past the release for as long again. Row Ca (F = 2/3) hangs (1 - F) H = H/3 clear; in the
+// shot it swings no lower than that, and its swing after the release brings it within 5 % of
+// the geometry's bound (it hangs nearly straight down at the bottom of its swing; measured: 0.5 %).
+// A box 0.6 m high lowers both by exactly 0.3 m.
+TEST_CASE("a shot reports the counterweight's clearance above the ground", "[shot][physics]") {
+  Engine ca = alcala_ca();
+  const double H = ca.L1 * std::cos(radians(ca.theta_i_deg));
+  const Verification v = verify_engine(ca, ShotSettings{});
+  std::printf("row Ca: clearance %.6g m hanging straight down (H/3 = %.6g m), %.6g m lowest in the shot\n", v.clearance.geometric, H / 3,
+              v.clearance.in_shot.value_or(-1));
+  CHECK(v.clearance.geometric == Approx(H / 3).epsilon(1e-12));  // (1 - F) H, F = 2/3 as the table gives it
+  REQUIRE(v.clearance.in_shot);
+  CHECK(*v.clearance.in_shot >= v.clearance.geometric - 1e-9);  // the geometry's bound holds in the shot
+  CHECK(*v.clearance.in_shot < 1.05 * v.clearance.geometric);
+  CHECK(v.clearance.buildable());
+  ca.parts.box_width = 1, ca.parts.box_height = 0.6;
+  ca.parts.counterweight_inertia = ca.M * (1 + 0.36) / 12;  // the box's, as a design's reader sets it
+  const Verification boxed = verify_engine(ca, ShotSettings{});
+  CHECK(boxed.clearance.geometric == Approx(v.clearance.geometric - 0.3).epsilon(1e-12));
+  // F = 1: the counterweight hanging straight down touches the ground, within round-off; buildable.
+  Engine touching = alcala_ca();
+  touching.L3 = counterweight_arm(touching.L1, touching.L2, touching.theta_i_deg, 1);
+  const Verification touches = verify_engine(touching, ShotSettings{});
+  CHECK(touches.clearance.geometric == 0);
+  CHECK(touches.clearance.buildable());
 }
 
 // A heavy projectile (2.5 % of M) on a sling longer than the beam, found in the random set of

@@ -31,6 +31,8 @@ int run_contest(const Options& o) {
   request.efficiency = o.efficiency;
   request.settings.criterion.release = o.efficiency ? Release::efficiency : Release::range;  // released where the objective peaks
   request.limits = o.limits;
+  request.box_width = o.design.box_width, request.box_height = o.design.box_height;
+  request.min_clearance = o.min_clearance;
   if (!o.plot.empty() && o.pareto == 0) throw Error(ErrorKind::usage, "--plot draws the Pareto front; give --pareto 20 (its points) too");
   const ContestEngine best = contest_optimum(request);
   const std::vector<ContestEngine> front = o.pareto > 0 ? pareto_front(request, o.pareto) : std::vector<ContestEngine>{};

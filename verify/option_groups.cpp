@@ -103,7 +103,11 @@ void target_level_option(CLI::App* app, Options& o, bool spreads) {
 
 void release_options(CLI::App* app, Options& o) {
   parsed_option(
-      app, "--quality", [&o](const std::string& text) { o.settings.base.criterion.release = parse_release(text, "--quality"); },
+      app, "--quality",
+      [&o](const std::string& text) {
+        o.settings.base.criterion.release = parse_release(text, "--quality");
+        o.release_given = true;
+      },
       "what the release maximises: Q (eq:Q, eq:Q_n), eps (appendix B) or range (Denny) (default Q)");
   parsed_option(
       app, "--n",

@@ -407,7 +407,7 @@ ordered_json monte_carlo(const json& request) {
   const MonteCarloReport report{summary,
                                 inputs,
                                 fixed,
-                                describe_release(settings),
+                                describe_monte_carlo_release(run),
                                 seed,
                                 completes ? "the completed engine" : "the shot",
                                 settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"),

@@ -17,11 +17,6 @@ const UnitDimension limit_dimensions[contest_limit_count] = {UnitDimension::leng
 
 }  // namespace
 
-bool binds(const ContestEngine& engine, const ContestRequest& request, ContestLimit limit) {
-  const auto& given = request.limits[limit];
-  return given && std::abs(engine.measured[limit] / *given - 1) <= 1e-6;
-}
-
 nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequest& request, const std::vector<ContestEngine>& front) {
   nlohmann::ordered_json out = verification_json(best.verification);
   out["pin_to_bend_deg"] = best.verification.pin_angle_deg;
@@ -36,10 +31,12 @@ nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequ
     const auto limit = static_cast<ContestLimit>(k);
     nlohmann::ordered_json one{{"measured", best.measured[k]}};
     one["limit"] = request.limits[k] ? nlohmann::ordered_json(*request.limits[k]) : nlohmann::ordered_json(nullptr);
-    one["binds"] = binds(best, request, limit);
+    one["binds"] = contest_binds(best, request, limit);
+    if (const auto& gain = best.gain_if_relaxed[k]) one["gain_if_relaxed_10_percent"] = *gain;  // R [m] or eps
     limits[contest_limit_key(limit)] = one;
   }
   out["limits"] = limits;
+  out["min_clearance"] = request.min_clearance;  // met: the record's "clearance" holds the engine's
   if (!front.empty()) {
     nlohmann::ordered_json points = nlohmann::ordered_json::array();
     for (const ContestEngine& p : front)
@@ -70,11 +67,16 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
     const std::string measured = quantity_text(best.measured[k], limit_dimensions[k], units, 5);
     out << "  " << limit_words[k] << std::string(20 - std::string(limit_words[k]).size(), ' ') << measured
         << (request.limits[k] ? std::string(std::max<std::size_t>(1, 16 - measured.size()), ' ') + "limit " +
-                    quantity_text(*request.limits[k], limit_dimensions[k], units, 5) + (binds(best, request, limit) ? ": binds" : "")
-                              : std::string())
-        << "\n";
-    any = any || binds(best, request, limit);
+                    quantity_text(*request.limits[k], limit_dimensions[k], units, 5) + (contest_binds(best, request, limit) ? ": binds" : "")
+                              : std::string());
+    if (const auto& gain = best.gain_if_relaxed[k])
+      out << "; 10 % more gains " << (request.efficiency ? format_significant(100 * *gain, 3) + " % in eps" : quantity_text(*gain, UnitDimension::length, units, 4));
+    out << "\n";
+    any = any || contest_binds(best, request, limit);
   }
+  const std::string clearance = quantity_text(best.clearance, UnitDimension::length, units, 5);
+  out << "  counterweight clear " << clearance << std::string(std::max<std::size_t>(1, 16 - clearance.size()), ' ') << "least "
+      << quantity_text(request.min_clearance, UnitDimension::length, units, 5) << " above the ground\n";
   if (!any)
     out << "  no limit binds: the engine stops short of them where the model stops holding (a larger one would put its counterweight or tip below "
            "the base)\n";

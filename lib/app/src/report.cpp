@@ -231,7 +231,9 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
               ? "; the paper's range, in vacuum from" + std::string(origin) + ": " + q(v.R_vacuum, UnitDimension::length, 5)
               : std::string())
       << "\n"
-      << "eps = " << sig(100 * v.eps, 4) << " %   Q = " << sig(100 * v.Q, 4) << " %   force factor = " << sig(v.force_factor, 4) << " (eq:F)\n"
+      << "eps = " << sig(100 * v.eps, 4) << " %   Q = " << sig(100 * v.Q, 4) << " %   force factor = " << sig(v.force_factor, 4) << " (eq:F)"
+      // In air T is at the flight's end, eps (eq:Aux) the energy at the release over Delta U: two different things beside each other.
+      << (settings.air ? "; eps is the energy at the release over Delta U (eq:Aux), before the air's loss in flight" : "") << "\n"
       << "release: v = " << q(v.v, UnitDimension::speed) << ", h = " << q(v.h, UnitDimension::length) << ", "
       << q(std::abs(v.x), UnitDimension::length) << (v.x < 0 ? " behind" : " ahead of") << origin << " (x = " << sig(v.x, 4)
       << " m), A = " << sig(v.A_deg, 4) << " deg, pin angle " << sig(v.pin_angle_deg, 4) << " deg\n"
@@ -275,6 +277,13 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
     }
   }
   out << energy_budget_text(v, units);
+  {  // Verification::Clearance
+    const auto& c = v.clearance;
+    out << "counterweight above the ground" << (engine.parts.box_height ? " (its box's bottom)" : "") << ": at least "
+        << q(c.geometric, UnitDimension::length, 4) << " hanging straight down";
+    if (c.in_shot) out << ", lowest in the shot " << q(*c.in_shot, UnitDimension::length, 4);
+    out << (c.buildable() ? "" : ": NOT BUILDABLE") << "\n";
+  }
   out << "energy drift: " << sig(v.energy_drift, 2) << " of Delta U"
       << (shot_design(engine, settings).parts.dissipates() ? ", with the work of the losses" : "") << "\n";
   for (const std::string& w : v.warnings) out << "warning: " << w << "\n";

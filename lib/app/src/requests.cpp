@@ -5,6 +5,7 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/uncertainty.hpp"
+#include "trebuchet/app/report.hpp"
 
 namespace trebuchet {
 
@@ -99,6 +100,22 @@ Verification sample_verification(const MonteCarloRequest& sample) {
   settings.loads = false;  // a sample reports R, T, eps and v
   settings.release_at = release_of(sample.values, sample.where);
   return verify_engine(sample_engine(sample), settings);
+}
+
+std::string describe_monte_carlo_release(const MonteCarloRequest& request) {
+  const MonteCarloRequest first = with_draws(request, [](const Spread& s) { return s.a; });
+  ShotSettings settings = shot_settings(first.settings);
+  if (!request.completes) settings.release_at = release_of(first.values, first.where);
+  for (const SpreadInput& spread : request.spreads)
+    if (spread.value && field_of(spread.value).group == FieldGroup::release) {
+      // The release is drawn: the rule's words give way to the spread's name; the level's stay.
+      settings.release_at.reset();
+      const std::string optimum = describe_release(settings);
+      const std::string label = field_of(spread.value).label;  // "pin angle [deg]"
+      return "release at the " + label.substr(0, label.find(" [")) + " drawn from " + spread.input.name + "'s spread" +
+          optimum.substr(optimum.find(','));
+    }
+  return describe_release(settings);
 }
 
 std::int64_t shots_per_sample(const MonteCarloRequest& request) {

@@ -86,7 +86,10 @@ void write_engine(nlohmann::ordered_json& out, const Engine& engine) {
   if (p.beam_inertia) put(&V::beam_inertia, *p.beam_inertia);
   if (p.beam_gyration) put(&V::beam_gyration, *p.beam_gyration);
   if (p.D_tip) put(&V::D_hinge, *p.D_hinge), put(&V::D_tip, *p.D_tip);
-  if (p.counterweight_inertia > 0) put(&V::counterweight_inertia, p.counterweight_inertia);
+  if (p.box_width && p.box_height)
+    put(&V::box_width, *p.box_width), put(&V::box_height, *p.box_height);  // the box, which gives the inertia
+  else if (p.counterweight_inertia > 0)
+    put(&V::counterweight_inertia, p.counterweight_inertia);
   if (p.axle.friction > 0 || p.axle.radius > 0) put(&V::axle_friction, p.axle.friction), put(&V::axle_radius, p.axle.radius);
   if (p.hinge.friction > 0 || p.hinge.radius > 0) put(&V::hinge_friction, p.hinge.friction), put(&V::hinge_radius, p.hinge.radius);
   if (p.trough_friction > 0) put(&V::trough_friction, p.trough_friction);

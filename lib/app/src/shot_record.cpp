@@ -128,6 +128,7 @@ std::vector<std::string> verification_csv_header() {
   header.push_back(pin_angle_column);  // after the earlier columns, so that they keep their places
   for (const InputField* field : release_fields()) header.push_back(csv_column_of(*field));  // a given release, which reads back
   header.push_back(machine_key);
+  header.insert(header.end(), {"clearance_geometric_m", "clearance_in_shot_m"});  // Verification::Clearance, last: the columns before keep their places
   return header;
 }
 
@@ -153,6 +154,8 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
     row.push_back(given ? csv_number(settings.release_at->value, digits) : "");
   }
   row.push_back(machine_name(engine.machine));
+  row.push_back(csv_number(v.clearance.geometric, digits));
+  row.push_back(v.clearance.in_shot ? csv_number(*v.clearance.in_shot, digits) : "");
   return row;
 }
 
@@ -161,7 +164,7 @@ std::vector<std::string> verification_output_names() {
   for (const Field& field : verification_fields(Verification{})) names.push_back(field.key);
   names.push_back(pin_angle_column);
   names.push_back(counterweight_free_key);
-  names.insert(names.end(), {"predicted", "deviation", "tolerance", "against", "engine", "assumptions", "error", "exit_code", "energy"});
+  names.insert(names.end(), {"predicted", "deviation", "tolerance", "against", "engine", "assumptions", "error", "exit_code", "energy", "clearance"});
   return names;
 }
 
@@ -188,6 +191,9 @@ nlohmann::ordered_json verification_json(const Verification& v, const std::optio
                      {"sling_drag", e.losses[projectile_drag_loss]},
                      {"rope_drag", e.losses[rope_drag_loss]}}},
                    {"flight_drag", e.flight_drag}};
+  out["clearance"] = {{"geometric", v.clearance.geometric},
+                      {"in_shot", v.clearance.in_shot ? nlohmann::ordered_json(*v.clearance.in_shot) : nlohmann::ordered_json()},
+                      {"buildable", v.clearance.buildable()}};
   out["warnings"] = v.warnings;
   out["notes"] = v.notes;
   if (check) {

@@ -230,7 +230,14 @@ std::string comparison_table(const std::vector<MachineComparison>& comparison, U
   const auto cell = [&](const std::string& text, int w) {
     out << text << std::string(text.size() < static_cast<std::size_t>(w) ? w - text.size() : 1, ' ');
   };
-  out << "the same parts built as each machine (docs/machines.md), each released at its own optimum or at the release given:\n";
+  // Every column shares the check's settings: the first report that stands says how they release.
+  std::string release = "each released at its own optimum or at the release given";
+  for (const MachineComparison& c : comparison)
+    if (c.report) {
+      release = describe_release(c.report->settings);
+      break;
+    }
+  out << "the same parts built as each machine (docs/machines.md); " << release << ":\n";
   cell("", label);
   for (const MachineComparison& c : comparison) cell(machine_name(c.machine), width);
   out << "\n";

@@ -14,9 +14,11 @@ namespace {
 // The angle a moved by whole turns to within half a turn of `near` [rad].
 double unwrapped_near(double a, double near) { return near + std::remainder(a - near, 2 * M_PI); }
 
-// A watched value as the user gives it: seconds or degrees.
+// A watched value as the user gives it: seconds or degrees (an angle within round-off of 0,
+// where the window ends at the arm's line, as 0).
 std::string shown(const GivenRelease& given, double watched) {
-  return given.by == ReleaseBy::time ? format_significant(watched * given.time_unit, 5) + " s" : format_significant(degrees(watched), 5) + " deg";
+  if (given.by == ReleaseBy::time) return format_significant(watched * given.time_unit, 5) + " s";
+  return format_significant(std::abs(watched) < 1e-9 ? 0.0 : degrees(watched), 5) + " deg";
 }
 
 }  // namespace
@@ -62,7 +64,8 @@ void refuse_given_release(const GivenRelease& given, const ReleaseWatch& watch, 
 double velocity_angle(const Snapshot& s) { return std::atan2(s.projectile_velocity.y, -s.projectile_velocity.x); }
 
 double pin_angle(const Snapshot& s) {
-  const Vec2 arm = s.tip, sling{s.projectile.x - s.tip.x, s.projectile.y - s.tip.y};
+  // The long arm from the pivot, which the floating arm's axle carries away from the frame's origin.
+  const Vec2 arm{s.tip.x - s.pivot.x, s.tip.y - s.pivot.y}, sling{s.projectile.x - s.tip.x, s.projectile.y - s.tip.y};
   return std::atan2(-(arm.x * sling.y - arm.y * sling.x), arm.x * sling.x + arm.y * sling.y);
 }
 

@@ -45,6 +45,7 @@ class PhaseRecord {
     ForceValues forces;
     ForceExtremes extremes;  // over [0, t], refined peaks included
     std::array<double, load_count> loads;
+    double counterweight_height;  // of its centre above the base, scaled
   };
   struct Peak {
     double t;
@@ -59,7 +60,7 @@ class PhaseRecord {
     const ForceValues forces = force_values(snap);
     ForceExtremes extremes = samples_.empty() ? before_ : samples_.back().extremes;
     extremes.add(forces);
-    samples_.push_back({end, forces, extremes, load_values(snap)});
+    samples_.push_back({end, forces, extremes, load_values(snap), snap.counterweight_height});
     if (samples_.size() >= 3) refine_peaks();
     record_onsets(conditions_of(snap));
   }
@@ -264,6 +265,24 @@ bool throws(const ScaledDesign& e, const ReleasePoint& r) {
   return r.range > 0 && (e.machine != MachineKind::whipper || (r.velocity_angle > 0 && r.velocity_angle < M_PI / 2));
 }
 
+// The event that closes the release window (docs/verifier.md, "Window"): after a release in the
+// window has thrown the projectile forward, its velocity turns backward (its x component, toward
+// the target at -x, scaled, falls through zero). Every later release throws backward until a
+// later swing of the sling, which would be another throw. The sling going slack and the sling
+// passing the arm's line are reported (ShotResult, the pin angle), not ends of the window: the
+// paper's release (section 5) is an ideal one, whose optimum may lie past either.
+class BackwardWatch {
+ public:
+  static double forward_speed(const Snapshot& s) { return -s.projectile_velocity.x; }
+  explicit BackwardWatch(bool thrown) : thrown_(thrown) {}
+  // Whether the velocity turns backward between the last sample and `s`, after a forward throw.
+  bool turns_backward(const Snapshot& s) const { return thrown_ && !(forward_speed(s) > 0); }
+  void add(bool throws_here) { thrown_ = thrown_ || throws_here; }
+
+ private:
+  bool thrown_;
+};
+
 // Coulomb friction as modelled acts only while a pin turns (sliding, no sticking). Where its
 // friction can hold the pin, the pin's turn reaches zero and then reverses at nearly every
 // accepted step, or creeps on at round-off while the rejected steps chatter about zero: the pin
@@ -310,41 +329,71 @@ void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, c
   add(t_end, record.y_at(t_end));
 }
 
-// Phase III for the series: beam and counterweight without the projectile (mu = 0), from the
-// release for as long again as the shot took, so that the ringing of appendix B shows; at the
-// step ends, or every dt > 0 (each integrated anew from the step it falls in). Where friction
-// holds a pin after the release (StickWatch), the model, which leaves sticking out, ends there,
-// and so does the series.
-void trace_released(const Machine& dynamics, const ScaledDesign& e, const IntegratorSettings& settings, const State& release, const Losses& work,
-                    double t_release, double dt, std::vector<TracePoint>& trace) {
-  PhaseIntegrator released(dynamics, Phase::released, settings);
+// Phase III: beam and counterweight without the projectile (mu = 0), from the release for as
+// long again as the shot took, so that the ringing of appendix B shows and the counterweight
+// makes a full swing or more. `each_step` is called with every accepted step's start and end
+// state. Where friction holds a pin after the release (StickWatch) the machine comes to rest
+// (the model leaves sticking out), and phase III ends there.
+template <class EachStep>
+void follow_released(const ScaledDesign& e, const IntegratorSettings& settings, const State& release, const Losses& work, double t_release,
+                     PhaseIntegrator& released, EachStep each_step) {
   OdeVector y = {release.theta, release.psi, release.theta_dot, release.psi_dot};
   for (std::size_t k = 0; k + 4 < released.dimension(); ++k) y[4 + k] = work[k];
   const double t_end = 2 * t_release;
   double t = t_release, h = 1e-3;
+  PinWatch pins;
+  for (long steps = 0; t < t_end; ++steps) {
+    if (steps >= settings.max_steps)
+      fail("step budget of " + std::to_string(settings.max_steps) + " steps exceeded after the release; loosen {{rtol}}");
+    const double t_start = t;
+    const OdeVector y_start = y;
+    if (!released.step(t, y.data(), t_end, h))
+      fail(released.friction_unsettled() ? unsettled_friction : "integrator failure in phase III; tighten {{rtol}}");
+    each_step(t_start, y_start, t, y);
+    const State s = released.state(y);
+    if (pins.axle_holds(e, s) || pins.hinge_holds(e, s)) break;
+  }
+}
+
+// Phase III for the series: at the step ends, or every dt > 0 (each integrated anew from the step it falls in).
+void trace_released(const Machine& dynamics, const ScaledDesign& e, const IntegratorSettings& settings, const State& release, const Losses& work,
+                    double t_release, double dt, std::vector<TracePoint>& trace) {
+  PhaseIntegrator released(dynamics, Phase::released, settings);
   double k = std::floor(t_release / dt) + 1;  // the next multiple of dt, when dt > 0
   auto add = [&](double time, const OdeVector& at) {
     const State s = released.state(at);
     trace.push_back({Phase::released, time, s, dynamics.snapshot(Phase::released, s), released.work(at)});
   };
-  PinWatch pins;
-  for (long steps = 0; t < t_end; ++steps) {
-    if (steps >= settings.max_steps)
-      fail("step budget of " + std::to_string(settings.max_steps) + " steps exceeded in the series after the release; loosen {{rtol}}");
-    const double t_start = t;
-    const OdeVector y_start = y;
-    if (!released.step(t, y.data(), t_end, h))
-      fail(released.friction_unsettled() ? unsettled_friction : "integrator failure in phase III; tighten {{rtol}}");
+  const double t_end = 2 * t_release;
+  follow_released(e, settings, release, work, t_release, released, [&](double t_start, const OdeVector& y_start, double t, const OdeVector& y) {
     if (dt > 0) {
       for (; k * dt <= t; ++k) add(k * dt, released.at(t_start, y_start, k * dt));
       if (t >= t_end && trace.back().t < t) add(t, y);
     } else {
       add(t, y);
     }
-    const State s = released.state(y);
-    if (pins.axle_holds(e, s) || pins.hinge_holds(e, s)) break;
-  }
+  });
 }
+
+// The lowest value of a smooth function of time, sampled at increasing times: the lowest sample,
+// or below it the vertex of the parabola through a sample lower than both its neighbours and
+// those neighbours (its error O(step^3), as the contest's box, contest.cpp).
+class LowestSample {
+ public:
+  void add(double t, double value) {
+    if (count_ > 0 && !(t > last_.x)) return;  // a phase's end, sampled again as the next one's start
+    const Point here{t, value};
+    if (count_ >= 2 && last_.f <= before_.f && last_.f <= value) lowest_ = std::min(lowest_, parabola_vertex(before_, last_, here).f);
+    lowest_ = std::min(lowest_, value);
+    before_ = last_, last_ = here, ++count_;
+  }
+  double value() const { return lowest_; }
+
+ private:
+  Point before_{}, last_{};
+  int count_ = 0;
+  double lowest_ = INFINITY;
+};
 
 // The range the release maximises under Release::range: in vacuum from the pivot to the
 // criterion's target level (level 0 is the paper's), else through the criterion's drag, or
@@ -550,16 +599,34 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     given_in_trough = !(ahead_of(*given, watch.at_liftoff) > 0);
   }
   h = 1e-3;
-  // One step of phase II; whether the shot ends there: the beam has turned over, or friction
-  // has stopped it (it would hold it there) or holds it at round-off, or the time is out. A given
-  // release must come in the beam's forward swing: its range ends where the beam stops turning.
+  // The release window (docs/verifier.md, "Window"): one for every shot, every form of release
+  // and every machine, lossless or not. It ends where the projectile's velocity turns backward
+  // after a forward throw (BackwardWatch; located on the continuous solution, where the last
+  // sample of phase II is then taken), or where the beam turns over, friction holds it (the
+  // machine stops), or the time is out. Where the beam stops turning forward is no end.
+  BackwardWatch backward(throws(e, at_liftoff));
+  std::string window_end;  // why the window ended, for a given release that never comes
+  // One step of phase II; whether the shot ends there.
   const auto step_ends_shot = [&]() {
+    const StepEnd step_start = phase2.samples().back();
     if (!lifted.step(t, y.data(), settings.max_time, h))
       fail(lifted.friction_unsettled() ? unsettled_friction : "integrator failure in phase II; tighten {{rtol}} or choose another {{stepper}}");
-    const State s = lifted.state(y);
+    State s = lifted.state(y);
     const bool axle_holds = count_step("phase II", s);
     snap = dynamics.snapshot(Phase::lifted, s);
     track_energy(snap, lifted.work(y));
+    if (backward.turns_backward(snap)) {
+      // The window closes inside this step: the state where the velocity turns, integrated anew from the step's start.
+      const StepEnd after = lifted.step_end(t, y, snap);
+      const auto forward_at = [&](double time) {
+        return BackwardWatch::forward_speed(dynamics.snapshot(Phase::lifted, lifted.state(hermite(step_start, after, time, 3, lifted.dimension()))));
+      };
+      t = find_root(forward_at, step_start.t, t, 1e-13, 0);
+      y = lifted.at(step_start.t, step_start.y, t);
+      s = lifted.state(y);
+      snap = dynamics.snapshot(Phase::lifted, s);
+      window_end = "the projectile's velocity turns backward first";
+    }
     const ReleasePoint here = release_point(e, criterion, t, s, snap, phase2.samples().back().extremes);
     phase2.add(lifted.step_end(t, y, snap), snap);
     sampled.push_back(here.objective);
@@ -570,10 +637,15 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
       watch.add(watched_value(given->by, t, snap, before), throws(e, here));
       if (!given_in_trough && !watch.crossed && !(ahead_of(*given, watch.last) > 0)) watch.crossed = phase2.samples().size() - 1, watch.near = before;
     }
+    backward.add(throws(e, here));
     // An angle below -180 deg (the whipper's: a whole turn below the given one) has passed every value it could be given.
     const bool angle_spent = given && given->by != ReleaseBy::time && watch.last < (whips ? given->value - 2 * M_PI : -M_PI);
-    return s.theta > dynamics.turn_limit(Phase::lifted) || t >= settings.max_time ||
-        ((given || whips || dynamics.dissipates()) && !(s.theta_dot > 0)) || axle_holds || angle_spent;
+    if (window_end.empty()) {
+      if (s.theta > dynamics.turn_limit(Phase::lifted)) window_end = "the beam turns over first";
+      else if (t >= settings.max_time) window_end = "the time runs out first";
+      else if (axle_holds) window_end = "the axle's friction stops the beam first";
+    }
+    return !window_end.empty() || angle_spent;
   };
   // Past the release: the objective has fallen to half its maximum, or two steps past a given
   // release, so that the running extremes of eq:F before it are refined as an optimum's are.
@@ -598,7 +670,8 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   if (given_in_trough)
     refuse_given(whips ? "the release would come before the projectile leaves the arm"
                        : "the release would come before lift-off, with the projectile still in the trough");
-  if (given && !watch.crossed) refuse_given("the release never comes: the beam's forward swing ends first");
+  if (given && !watch.crossed)
+    refuse_given("the release never comes: " + (window_end.empty() ? std::string("the watched value never reaches it") : "the release window ends, " + window_end));
   // No release with a positive objective: under Release::range with a target level above the
   // base, the flights go forward but none comes down at that level; else none goes forward.
   const auto fail_no_forward_release = [&] {
@@ -709,6 +782,21 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     for (const PhasePoints& c : phases)
       if (c.points[c.top].f > best->points[best->top].f) best = &c;
     result.loads[k] = best->record->refined_load_peak(k, best->points, best->top);
+  }
+  if (find_loads) {
+    // The counterweight's lowest point: over the phases up to the release, then after it.
+    LowestSample lowest;
+    for (const PhaseRecord* record : {held_record.get(), &phase1, &phase2})
+      if (record)
+        for (const auto& sample : record->samples())
+          if (sample.t < t_release) lowest.add(sample.t, sample.counterweight_height);
+    lowest.add(t_release, dynamics.snapshot(Phase::lifted, result.release.state).counterweight_height);
+    PhaseIntegrator released(dynamics, Phase::released, settings);
+    follow_released(e, settings, result.release.state, result.work, t_release, released,
+                    [&](double, const OdeVector&, double time, const OdeVector& at) {
+                      lowest.add(time, dynamics.snapshot(Phase::released, released.state(at)).counterweight_height);
+                    });
+    result.lowest_counterweight = lowest.value();
   }
   if (trace) {
     record_trace(trace, lifted, phase2, result.t_liftoff, t_release, trace_dt);

@@ -121,8 +121,23 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   warn(shot.counterweight_pulled,
        "the whipper's arm would pull the counterweight it holds (the push between them changes sign before pytrebuchet's rule lets it go)");
   warn(shot.tip_below_base, "the beam's tip passes below the engine's base");
+  // A clearance within round-off of 0 (1e-9 L2, as the shot's conditions) is 0: an F = 1
+  // counterweight hanging straight down touches the ground.
+  const auto clear = [&](double height) { return std::abs(height) < 1e-9 * L2 ? 0.0 : height; };
+  const double half_box = engine.parts.box_height.value_or(0) / 2;
+  const std::string bottom = engine.parts.box_height ? "the bottom of the counterweight's box" : "the counterweight's centre";
+  out.clearance.geometric = clear(pivot_height(engine) - engine.L2 - engine.L3 - half_box);
+  if (shot.lowest_counterweight) out.clearance.in_shot = clear(*shot.lowest_counterweight * L2 - half_box);
+  const std::string fix = "; the engine cannot be built as given: raise the pivot (H = L1 cos theta_i) or shorten L2 + L3";
+  if (!(out.clearance.geometric >= 0))
+    out.warnings.push_back("hanging straight down, " + bottom + " reaches " + format_significant(-out.clearance.geometric, 4) +
+                           " m below the ground (H - L2 - L3" + (engine.parts.box_height ? " - half the box's height" : "") + ")" + fix);
+  else if (out.clearance.in_shot && !(*out.clearance.in_shot >= 0))
+    out.warnings.push_back("in the shot " + bottom + " swings " + format_significant(-*out.clearance.in_shot, 4) + " m below the ground" + fix);
   return out;
 }
+
+bool Verification::Clearance::buildable() const { return geometric >= 0 && (!in_shot || *in_shot >= 0); }
 
 void check_shot_settings(const ShotSettings& settings) {
   check_integrator(settings.integrator);

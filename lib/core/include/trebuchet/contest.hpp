@@ -34,6 +34,12 @@ struct ContestRequest {
   ShotSettings settings{};  ///< the release (its criterion's optimum, or a given one), air, target level
   bool efficiency = false;  ///< maximise eps instead of the range
   ContestLimits limits{};
+  /// The counterweight's box, width and height [m], both or neither: its inertia (but the
+  /// floating arm's) and the height its bottom hangs below its centre.
+  std::optional<double> box_width, box_height;
+  /// The least clearance of the counterweight (its box's bottom) above the ground [m], in the
+  /// machine's geometry and in the shot (Verification::Clearance): 0 unless a margin is asked for.
+  double min_clearance = 0;
 };
 
 /// One engine of a contest, with what each limit measures on it (in the limits' units) and
@@ -42,6 +48,11 @@ struct ContestEngine {
   Engine engine;
   Verification verification;
   std::array<double, contest_limit_count> measured{};
+  double clearance = 0;  ///< the smaller of Verification::Clearance's two [m]
+  /// For each limit that binds (contest_binds), the objective (R [m] or eps) that relaxing it by
+  /// 10 % gains, the others held: what that limit costs. None for the others, and for the
+  /// engines of a Pareto front.
+  std::array<std::optional<double>, contest_limit_count> gain_if_relaxed{};
   double objective = 0;  ///< R [m] or eps
   bool feasible = false;
   int shots = 0;  ///< of the search that found it
@@ -57,9 +68,14 @@ std::array<double, contest_limit_count> contest_measures(const Engine& engine, c
 /// machine; the others hold their counterweight at the short arm's end), the limits as exact
 /// penalties, M at its limit where that binds, then the size pushed to the largest that meets
 /// the limits (bisection to 1e-10), so that a limit that binds is met with equality. Throws
+/// No engine returned strikes the ground: each meets the request's clearance. Throws
 /// Error(bad_number) for a request no engine could meet (no projectile, no beam), Error(out_of_range)
 /// when no engine meets the limits, naming the fewest limits that cannot be met together.
 ContestEngine contest_optimum(const ContestRequest& request);
+
+/// Whether `limit` binds on `engine`: given, and met to within 1e-4 of it (the search meets an
+/// active limit to that, docs/machines.md).
+bool contest_binds(const ContestEngine& engine, const ContestRequest& request, ContestLimit limit);
 
 /// The fewest limits of the request that no engine the search finds meets together; empty when
 /// it meets them all.

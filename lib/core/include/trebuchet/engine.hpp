@@ -36,6 +36,10 @@ struct EngineParts {
   /// end to D_tip at the long one [m]; it gives mb, the centre of mass, the inertia, and D at the pivot.
   std::optional<double> D_hinge, D_tip;
   double counterweight_inertia = 0;  ///< about the counterweight's own centre of mass [kg m^2]
+  /// A box counterweight's sides [m], both or neither: where it is read, they give its inertia
+  /// (M (w^2 + h^2)/12, but the floating arm's, which does not turn); the height also gives its
+  /// clearance above the ground (Verification::Clearance).
+  std::optional<double> box_width, box_height;
   Pin axle;  ///< the axle at the pivot
   Pin hinge;  ///< the counterweight's hinge pin
   double trough_friction = 0;  ///< mu of the projectile on the trough, scaled

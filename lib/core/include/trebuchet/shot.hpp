@@ -80,6 +80,10 @@ struct ShotResult {
   /// the whipper's arm would pull the counterweight it holds (pytrebuchet's rule lets it go later)
   std::optional<double> counterweight_pulled;
   std::optional<double> tip_below_base;  ///< the beam's tip passes below the engine's base
+  /// The lowest height of the counterweight's centre above the engine's base, scaled: over the
+  /// shot up to the release and after it for as long again (phase III, or until friction holds
+  /// the machine at rest); found with the builder's loads (simulate_shot's find_loads).
+  std::optional<double> lowest_counterweight;
 };
 
 /// One moment of the motion for a time series (--series), scaled.
@@ -99,8 +103,9 @@ struct TracePoint {
 /// or with trace_dt > 0 (scaled) at every multiple of trace_dt on the continuous solution.
 /// `unreleased` gets phase II past the release, had the projectile not been let go, as far as
 /// the release search looked (the objective down to half its best), sampled alike.
-/// With `find_loads`, the builder's loads (ShotResult::loads) are found: about 10 % of a shot,
-/// which searches that only rank engines save.
+/// With `find_loads`, the builder's loads (ShotResult::loads) and the counterweight's lowest
+/// point (ShotResult::lowest_counterweight, which follows phase III) are found: what searches
+/// that only rank engines save.
 ShotResult simulate_shot(const ScaledDesign& design, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
                          std::vector<TracePoint>* trace = nullptr, double trace_dt = 0, std::vector<TracePoint>* unreleased = nullptr,
                          bool find_loads = false);

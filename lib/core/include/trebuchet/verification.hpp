@@ -92,8 +92,22 @@ struct Verification {
     double flight_drag = 0;  ///< the projectile's energy at release over the flight's end level, less that at the end; 0 in vacuum
   };
   EnergyBudget energy;
+  /// The counterweight's clearance above the ground [m], of its lowest point (the bottom of its
+  /// box, where the box's height is given): the lowest that the machine's geometry lets it reach,
+  /// hanging straight down below the short arm pointing down (H - L2 - L3 - half the box, for
+  /// every machine), and the lowest it reaches in the shot, up to the release and after it for
+  /// as long again (none for a shot without the builder's loads). The tip rests on the ground by
+  /// construction and is left out. Below 0 (past round-off) the engine cannot be built as
+  /// given: a warning says so.
+  struct Clearance {
+    double geometric = 0;
+    std::optional<double> in_shot;
+    bool buildable() const;
+  };
+  Clearance clearance;
   /// Where the model stops holding before the release (a slack sling, the counterweight or the
-  /// beam's tip below the base), each with its time: the figures are then not physical.
+  /// beam's tip below the base), each with its time: the figures are then not physical; and a
+  /// counterweight that would strike the ground (clearance): the engine cannot be built as given.
   std::vector<std::string> warnings;
   /// What makes a figure less certain without making it unphysical: Cd(Re) used beyond the
   /// Reynolds numbers it was fitted to.

@@ -13,10 +13,8 @@
 
 namespace trebuchet {
 
-/// A limit binds where the engine's measure is within 1e-6 of it.
-bool binds(const ContestEngine& engine, const ContestRequest& request, ContestLimit limit);
-
-/// The best engine's shot record (shot_record.hpp), with "limits": {key: {measured, limit, binds}}
+/// The best engine's shot record (shot_record.hpp), with "limits": {key: {measured, limit, binds,
+/// and for a binding one gain_if_relaxed_10_percent}}, "min_clearance"
 /// and, when a front is given, "pareto": [{axle_load, R, eps, M, L1, L2, L3, L4, pin_angle_deg}].
 nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequest& request, const std::vector<ContestEngine>& front);
 

@@ -68,6 +68,11 @@ MonteCarloRequest with_draws(const MonteCarloRequest& request, const std::functi
 /// The shot of one sample at the request's values (R, T, eps and v; no loads). Throws Error.
 Verification sample_verification(const MonteCarloRequest& sample);
 
+/// How the run's shots are released, for its report (report.hpp, describe_release): at the
+/// criterion's optimum, at a release the design gives, or at one drawn from a spread, named as
+/// the user named it.
+std::string describe_monte_carlo_release(const MonteCarloRequest& request);
+
 /// The shots a sample takes (1, or those of a completion at the first values), checking that
 /// the first values make an engine and its shot: bad input there is thrown, as the run's.
 std::int64_t shots_per_sample(const MonteCarloRequest& request);
