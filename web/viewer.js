@@ -342,14 +342,18 @@
     const e = shot.engine, s = shot.series;
     const head = document.createElement('div');
     head.className = 'tv-head';
-    const warnings = (shot.warnings || []).length
-      ? `<div class="tv-warning" role="alert"><b>NOT PHYSICAL.</b> The model stops holding before the release; these are not the figures of a real engine:<ul>${shot.warnings.map((w) => '<li>' + escapeHtml(w) + '</li>').join('')}</ul></div>` : '';
+    // The model's warnings, and after them the clearance's, when the counterweight strikes the ground (its record's `clearance`).
+    const buildable = !shot.clearance || shot.clearance.buildable !== false;
+    const modelWarnings = (shot.warnings || []).slice(0, buildable ? undefined : -1);
+    const warnings = (modelWarnings.length
+      ? `<div class="tv-warning" role="alert"><b>NOT PHYSICAL.</b> The model stops holding before the release; these are not the figures of a real engine:<ul>${modelWarnings.map((w) => '<li>' + escapeHtml(w) + '</li>').join('')}</ul></div>` : '') +
+      (buildable ? '' : `<div class="tv-warning" role="alert"><b>NOT BUILDABLE.</b> ${escapeHtml(shot.warnings[shot.warnings.length - 1])}</div>`);
     const notes = (shot.notes || []).map((n) => `<p class="tv-note">${escapeHtml(n)}</p>`).join('');
     // The beam's strength, pass or break, where the shot knows the beam's diameter (given, or from mb).
     const margin = shot.rupture_margin, stress = Math.max(shot.stress_at_rest || 0, shot.stress_peak || 0);
     const strength = margin === undefined ? ''
       : margin < 1 ? `<div class="tv-strength tv-breaks" role="alert"><b>✗ THE BEAM BREAKS.</b> Its largest stress, ${q(stress, 'stress')}, is ${significant(1 / margin, 3)} times what its wood bears (the modulus of rupture): margin ${significant(margin, 3)}, below 1. Give it a larger diameter D (a box in the edit view), or a lighter counterweight M.</div>`
-        : (shot.warnings || []).length ? `<div class="tv-strength tv-unphysical">The beam would hold (margin ${significant(margin, 3)}), but this shot is not physical (above): its stresses are not a real engine's.</div>`
+        : modelWarnings.length ? `<div class="tv-strength tv-unphysical">The beam would hold (margin ${significant(margin, 3)}), but this shot is not physical (above): its stresses are not a real engine's.</div>`
           : `<div class="tv-strength tv-holds"><b>✓ The beam holds:</b> margin ${significant(margin, 3)}. Its largest stress, ${q(stress, 'stress')}, is ${significant(100 / margin, 3)} % of what its wood bears (the modulus of rupture).</div>`;
     const loads = [['sling tension', shot.sling_tension, shot.t_sling_tension], ['hinge pin |F_H|', shot.hinge_force, shot.t_hinge_force],
       ['pivot |F_R|', shot.pivot_force, shot.t_pivot_force]].filter(([, v]) => v !== undefined);
@@ -472,7 +476,7 @@
         : time <= held ? 'phase I: the counterweight and the projectile ride on the arm' : 'phase I: the counterweight swings, the projectile rides on the arm';
       const phase = time <= f.t[s.moments.liftoff] ? first : time <= tRelease ? 'phase II: the sling swings' : 'phase III: the flight';
       text(scene, 10, height - 10, `t = ${time.toFixed(3)} s, ${phase}` + (flying ? ' (zoomed out to the whole flight, real speed)' : ''), { 'font-size': 13 });
-      if ((shot.warnings || []).length) text(scene, width / 2, 40, 'NOT PHYSICAL', { 'text-anchor': 'middle', 'font-size': 30, fill: '#cc0000', 'font-weight': 'bold' });
+      if (modelWarnings.length) text(scene, width / 2, 40, 'NOT PHYSICAL', { 'text-anchor': 'middle', 'font-size': 30, fill: '#cc0000', 'font-weight': 'bold' });
       timeText.textContent = `${time.toFixed(2)} s of ${tEnd.toFixed(2)} s`;
       scrub.value = String(Math.round(time <= tRelease ? 500 * time / tRelease : 500 + 500 * (time - tRelease) / (tEnd - tRelease)));
       container.dataset.frame = String(i);

@@ -46,7 +46,10 @@ def test_warnings_come_through_warnings_and_stay_in_the_record():
     with pytest.warns(trebuchet.TrebuchetWarning) as caught:
         answer = trebuchet.shot(WHIPPER)
     texts = [str(w.message) for w in caught]
-    assert texts == answer["warnings"] and len(texts) == 2
+    # The slack sling and the counterweight below the base (the model's), and the counterweight
+    # that reaches 1 m below the ground hanging straight down (H - L2 - L3 = 5 - 6 m: not buildable).
+    assert texts == answer["warnings"] and len(texts) == 3
+    assert answer["clearance"]["buildable"] is False
     assert "the sling goes slack" in texts[0]
 
 

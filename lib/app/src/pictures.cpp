@@ -107,14 +107,16 @@ std::string gnuplot_quoted(const std::string& text) {
   return out;
 }
 
-// Where the model stops holding, in red across a picture's frame: "NOT PHYSICAL" large, and
-// each warning on an opaque box at the top of the frame (or, `at_foot`, at the foot of the
-// picture, for pictures of several small frames), so that a non-physical shot never looks like
-// a normal one.
+// Where the model stops holding, in red across a picture's frame: "NOT PHYSICAL" large (or "NOT
+// BUILDABLE", where the one warning is the counterweight's clearance), and each warning on an
+// opaque box at the top of the frame (or, `at_foot`, at the foot of the picture, for pictures of
+// several small frames), so that such a shot never looks like a normal one.
 std::string warning_labels(const Verification& v, bool at_foot = false) {
   if (v.warnings.empty()) return "";
+  const bool physical = v.warnings.size() == 1 && !v.clearance.buildable();
   // Large across a frame of its own; at the top of each of several small frames, clear of the engine.
-  std::string g = "set style textbox opaque noborder\nset label 89 'NOT PHYSICAL' at graph 0.5, graph " + std::string(at_foot ? "0.93" : "0.5") +
+  std::string g = "set style textbox opaque noborder\nset label 89 '" + std::string(physical ? "NOT BUILDABLE" : "NOT PHYSICAL") +
+      "' at graph 0.5, graph " + std::string(at_foot ? "0.93" : "0.5") +
       " center tc rgb '#cc0000' font '," + std::string(at_foot ? "16" : "40") + "' front\n";
   for (std::size_t k = 0; k < v.warnings.size(); ++k)
     g += "set label " + std::to_string(90 + k) + " \"" + gnuplot_quoted(v.warnings[k]) + "\" at " +

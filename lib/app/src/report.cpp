@@ -247,7 +247,7 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
   if (settings.loads) {
     const char* names[load_count] = {"sling tension (rope)      ",
                                      engine.machine == MachineKind::fixed ? "counterweight's mounting  " : "counterweight hinge pin   ",
-                                     floating ? "axle on its rail          " : "pivot axle                ", "beam, bending at the pivot"};
+                                     floating ? "frame (rail and guide)    " : "pivot axle                ", "beam, bending at the pivot"};
     const double weight[load_count] = {mg, Mg, Mg, Mg * engine.L2};
     out << "largest loads up to the release, to size the parts:\n";
     const bool moment_known = scaled_design(engine).short_section().has_value();

@@ -49,7 +49,8 @@ ReleasePoint release_point(const ScaledDesign& design, const ReleaseCriterion& c
                            ForceExtremes extremes_before);
 
 /// What a builder sizes the parts for, scaled: the sling's tension (ropes), the force at the
-/// counterweight's hinge (its pin), the pivot force (the axle and the frame), all in M g, and
+/// counterweight's hinge (its pin), the axle's load (the force the frame carries: at the pivot,
+/// and the floating arm's guide's beside its rail's), all in M g, and
 /// the bending moment in the beam at the pivot, in M g L2 (the beam, eq:Strain).
 enum LoadIndex { sling_tension_load, hinge_load, pivot_load, beam_moment_load };
 inline constexpr int load_count = 4;
