@@ -256,7 +256,8 @@ TEST_CASE("a vanishing loss changes the range by a vanishing amount", "[release]
     thin_air.air = Air{};
     thin_air.air->density = 1e-6;
     thin_air.drag_in_sling = true;
-    std::vector<Loss> losses = {{"axle friction 1e-6", axle, range}, {"trough friction 1e-6", trough, range}, {"air of 1e-6 kg/m3 in the sling", c.engine, thin_air}};
+    std::vector<Loss> losses = {
+        {"axle friction 1e-6", axle, range}, {"trough friction 1e-6", trough, range}, {"air of 1e-6 kg/m3 in the sling", c.engine, thin_air}};
     if (c.engine.machine == MachineKind::hinged) losses.push_back({"hinge friction 1e-6", hinge, range});
     for (const auto& loss : losses) {
       INFO(c.name << " with " << loss.name);

@@ -67,7 +67,8 @@ int run_monte_carlo(const Options& o, bool complete) {
     std::vector<std::string> described;
     for (const UncertainInput& u : inputs) described.push_back(describe_uncertain(u));
     // The title says what was sampled and how each shot flew and was released; a backslash and n break its line in gnuplot.
-    const std::string scene = (settings.air ? describe_air(*settings.air, 0) : std::string("in vacuum")) + ", " + describe_monte_carlo_release(request);
+    const std::string scene = (settings.air ? describe_air(*settings.air, 0) : std::string("in vacuum")) + ", " +
+        describe_monte_carlo_release(request);
     write_picture_folder(o.plot, histogram_pictures(summary, join(described, ", ") + "\\n" + scene), {"histogram.gp"});
   }
   return exit_success;

@@ -84,14 +84,16 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
           [&o, name = std::string(field.flag), member = member, dimension = field.dimension](const std::string& text) {
             o.design.*member = parse_positive(text, dimension, name);
           },
-          member == &DesignValues::m   ? "the contest's projectile mass [" + unit_list(field.dimension) + "]"
-              : member == &DesignValues::D ? "the beam's diameter, of the wood (--wood-density): its mass per metre [" + unit_list(field.dimension) + "]"
-                                           : std::string(field.help) + " [" + unit_list(field.dimension) + "]");
+          member == &DesignValues::m ? "the contest's projectile mass [" + unit_list(field.dimension) + "]"
+              : member == &DesignValues::D
+              ? "the beam's diameter, of the wood (--wood-density): its mass per metre [" + unit_list(field.dimension) + "]"
+              : std::string(field.help) + " [" + unit_list(field.dimension) + "]");
     }
     parsed_option(
         c, "--min-clearance", [&o](const std::string& text) { o.min_clearance = parse_value(text, UnitDimension::length, "--min-clearance"); },
         "the least clearance of the counterweight (its box's bottom, --box-height) above the ground, hanging straight down and in the shot "
-        "[" + unit_list(UnitDimension::length) + "] (default 0: it may not strike the ground)");
+        "[" +
+            unit_list(UnitDimension::length) + "] (default 0: it may not strike the ground)");
     parsed_option(
         c, "--mb-per-m", [&o](const std::string& text) { o.beam_per_m = parse_value(text, UnitDimension::dimensionless, "--mb-per-m"); },
         "the beam's mass per metre of its length [kg/m], instead of --D");

@@ -70,7 +70,8 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
                     quantity_text(*request.limits[k], limit_dimensions[k], units, 5) + (contest_binds(best, request, limit) ? ": binds" : "")
                               : std::string());
     if (const auto& gain = best.gain_if_relaxed[k])
-      out << "; 10 % more gains " << (request.efficiency ? format_significant(100 * *gain, 3) + " % in eps" : quantity_text(*gain, UnitDimension::length, units, 4));
+      out << "; 10 % more gains "
+          << (request.efficiency ? format_significant(100 * *gain, 3) + " % in eps" : quantity_text(*gain, UnitDimension::length, units, 4));
     out << "\n";
     any = any || contest_binds(best, request, limit);
   }

@@ -116,8 +116,8 @@ std::string warning_labels(const Verification& v, bool at_foot = false) {
   const bool physical = v.warnings.size() == 1 && !v.clearance.buildable();
   // Large across a frame of its own; at the top of each of several small frames, clear of the engine.
   std::string g = "set style textbox opaque noborder\nset label 89 '" + std::string(physical ? "NOT BUILDABLE" : "NOT PHYSICAL") +
-      "' at graph 0.5, graph " + std::string(at_foot ? "0.93" : "0.5") +
-      " center tc rgb '#cc0000' font '," + std::string(at_foot ? "16" : "40") + "' front\n";
+      "' at graph 0.5, graph " + std::string(at_foot ? "0.93" : "0.5") + " center tc rgb '#cc0000' font '," + std::string(at_foot ? "16" : "40") +
+      "' front\n";
   for (std::size_t k = 0; k < v.warnings.size(); ++k)
     g += "set label " + std::to_string(90 + k) + " \"" + gnuplot_quoted(v.warnings[k]) + "\" at " +
         (at_foot ? "screen 0.01, screen " + num(0.012 + 0.03 * k) : "graph 0.01, graph " + num(0.96 - 0.06 * k)) +

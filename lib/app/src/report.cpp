@@ -231,7 +231,8 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
               ? "; the paper's range, in vacuum from" + std::string(origin) + ": " + q(v.R_vacuum, UnitDimension::length, 5)
               : std::string())
       << "\n"
-      << "eps = " << sig(100 * v.eps, 4) << " %   Q = " << sig(100 * v.Q, 4) << " %   force factor = " << sig(v.force_factor, 4) << " (eq:F)"
+      << "eps = " << sig(100 * v.eps, 4) << " %   Q = " << sig(100 * v.Q, 4) << " %   force factor = " << sig(v.force_factor, 4)
+      << " (eq:F)"
       // In air T is at the flight's end, eps (eq:Aux) the energy at the release over Delta U: two different things beside each other.
       << (settings.air ? "; eps is the energy at the release over Delta U (eq:Aux), before the air's loss in flight" : "") << "\n"
       << "release: v = " << q(v.v, UnitDimension::speed) << ", h = " << q(v.h, UnitDimension::length) << ", "

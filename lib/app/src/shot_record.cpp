@@ -128,7 +128,8 @@ std::vector<std::string> verification_csv_header() {
   header.push_back(pin_angle_column);  // after the earlier columns, so that they keep their places
   for (const InputField* field : release_fields()) header.push_back(csv_column_of(*field));  // a given release, which reads back
   header.push_back(machine_key);
-  header.insert(header.end(), {"clearance_geometric_m", "clearance_in_shot_m"});  // Verification::Clearance, last: the columns before keep their places
+  header.insert(header.end(),
+                {"clearance_geometric_m", "clearance_in_shot_m"});  // Verification::Clearance, last: the columns before keep their places
   return header;
 }
 

@@ -214,7 +214,6 @@ std::vector<ContestLimit> fewest_conflicting(const ContestRequest& request, bool
   return {};
 }
 
-
 void check_request(const ContestRequest& r) {
   if (r.machine == MachineKind::whipper) throw Error(ErrorKind::usage, whipper_not_designed);
   if (!(r.projectile_mass > 0 && r.projectile_mass < 1e12))

@@ -644,9 +644,12 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     // An angle below -180 deg (the whipper's: a whole turn below the given one) has passed every value it could be given.
     const bool angle_spent = given && given->by != ReleaseBy::time && watch.last < (whips ? given->value - 2 * M_PI : -M_PI);
     if (window_end.empty()) {
-      if (s.theta > dynamics.turn_limit(Phase::lifted)) window_end = "the beam turns over first";
-      else if (t >= settings.max_time) window_end = "the time runs out first";
-      else if (axle_holds) window_end = "the axle's friction stops the beam first";
+      if (s.theta > dynamics.turn_limit(Phase::lifted))
+        window_end = "the beam turns over first";
+      else if (t >= settings.max_time)
+        window_end = "the time runs out first";
+      else if (axle_holds)
+        window_end = "the axle's friction stops the beam first";
     }
     return !window_end.empty() || angle_spent;
   };
@@ -674,7 +677,8 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     refuse_given(whips ? "the release would come before the projectile leaves the arm"
                        : "the release would come before lift-off, with the projectile still in the trough");
   if (given && !watch.crossed)
-    refuse_given("the release never comes: " + (window_end.empty() ? std::string("the watched value never reaches it") : "the release window ends, " + window_end));
+    refuse_given("the release never comes: " +
+                 (window_end.empty() ? std::string("the watched value never reaches it") : "the release window ends, " + window_end));
   // No release with a positive objective: under Release::range with a target level above the
   // base, the flights go forward but none comes down at that level; else none goes forward.
   const auto fail_no_forward_release = [&] {
