@@ -1,4 +1,5 @@
 // compare: one engine's parts built as each machine, side by side (docs/machines.md).
+#include <algorithm>
 #include <iostream>
 
 #include "program.hpp"
@@ -35,8 +36,11 @@ int run_compare(const Options& o) {
     header.push_back("error");
     std::cout << csv_line(header);
     for (const MachineComparison& c : comparison) {
-      std::vector<std::string> cells = c.report ? c.report->csv : std::vector<std::string>(header.size() - 2, "");
-      if (!c.report) cells.push_back(machine_name(c.machine));  // the machine column, last of the shot's
+      std::vector<std::string> cells = c.report ? c.report->csv : std::vector<std::string>(header.size() - 1, "");
+      if (!c.report) {  // a refused machine: its name in the machine column, the rest empty
+        const auto column = std::find(header.begin(), header.end(), machine_key) - header.begin();
+        cells[static_cast<std::size_t>(column)] = machine_name(c.machine);
+      }
       cells.push_back(c.error ? c.error->message(option_word) : "");
       std::cout << csv_line(cells);
     }

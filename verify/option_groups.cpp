@@ -113,6 +113,7 @@ void release_options(CLI::App* app, Options& o) {
       app, "--n",
       [&o](const std::string& text) {
         o.settings.base.criterion.n = parse_value(text, UnitDimension::dimensionless, "--n");
+        o.release_given = true;  // Q_n: the release where it peaks
         if (!(o.settings.base.criterion.n >= 0)) throw Error(ErrorKind::bad_number, "--n: '" + text + "' must be 0 or more (eq:Q_n)");
       },
       "exponent of eps in eq:Q_n (default 1)");

@@ -51,7 +51,7 @@ struct Options {
   ContestLimits limits;  ///< contest: --max-width ... --max-acceleration
   std::optional<double> beam_per_m;  ///< contest: the beam's mass per metre [kg/m]
   bool efficiency = false;  ///< contest: --objective eps
-  bool release_given = false;  ///< --quality was given (compare's default is the range, as contest's)
+  bool release_given = false;  ///< --quality or --n was given (compare's default is the range, as contest's)
   int pareto = 0;  ///< contest: points of the Pareto front; 0: none
   double min_clearance = 0;  ///< contest: of the counterweight above the ground [m]
   std::optional<WhatIf> what_if;  ///< sweep: the value varied and its range (--vary)

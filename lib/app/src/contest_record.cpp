@@ -15,6 +15,12 @@ const char* const limit_words[contest_limit_count] = {"box width", "box height",
 const UnitDimension limit_dimensions[contest_limit_count] = {UnitDimension::length, UnitDimension::length, UnitDimension::mass, UnitDimension::force,
                                                              UnitDimension::acceleration};
 
+// The clearance binds where it meets the least asked for (0: the ground) to 1e-4 of the engine's
+// height, as a limit binds (contest_binds).
+bool clearance_binds(const ContestEngine& best, const ContestRequest& request) {
+  return best.clearance - request.min_clearance <= 1e-4 * pivot_height(best.engine);
+}
+
 }  // namespace
 
 nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequest& request, const std::vector<ContestEngine>& front) {
@@ -36,7 +42,7 @@ nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequ
     limits[contest_limit_key(limit)] = one;
   }
   out["limits"] = limits;
-  out["min_clearance"] = request.min_clearance;  // met: the record's "clearance" holds the engine's
+  out["min_clearance"] = {{"measured", best.clearance}, {"least", request.min_clearance}, {"binds", clearance_binds(best, request)}};
   if (!front.empty()) {
     nlohmann::ordered_json points = nlohmann::ordered_json::array();
     for (const ContestEngine& p : front)
@@ -76,8 +82,10 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
     any = any || contest_binds(best, request, limit);
   }
   const std::string clearance = quantity_text(best.clearance, UnitDimension::length, units, 5);
+  const bool clearance_bound = clearance_binds(best, request);
   out << "  counterweight clear " << clearance << std::string(std::max<std::size_t>(1, 16 - clearance.size()), ' ') << "least "
-      << quantity_text(request.min_clearance, UnitDimension::length, units, 5) << " above the ground\n";
+      << quantity_text(request.min_clearance, UnitDimension::length, units, 5) << " above the ground" << (clearance_bound ? ": binds" : "") << "\n";
+  any = any || clearance_bound;
   if (!any)
     out << "  no limit binds: the engine stops short of them where the model stops holding (a larger one would put its counterweight or tip below "
            "the base)\n";

@@ -38,15 +38,18 @@ std::string describe_given_release(const SetRelease& release) {
   return "";
 }
 
+std::string describe_target(const ShotSettings& settings) {
+  return settings.range_from_release ? std::string("range from the release point to where the flight dips below the release height (Denny's)")
+                                     : "target level " + format_significant(settings.target_level, 4) + " m";
+}
+
 std::string describe_release(const ShotSettings& settings) {
   const ReleaseCriterion& c = settings.criterion;
   const std::string rule = settings.release_at ? "at " + describe_given_release(*settings.release_at) + " (given)"
       : c.release == Release::quality    ? (c.n == 1 ? "where Q peaks (eq:Q)" : "where Q_n peaks (eq:Q_n, n = " + format_significant(c.n, 3) + ")")
       : c.release == Release::efficiency ? "where eps peaks (Q_eps, appendix B)"
                                          : "where the range peaks (Denny's criterion)";
-  return "release " + rule + ", " +
-      (settings.range_from_release ? std::string("range from the release point to where the flight dips below the release height (Denny's)")
-                                   : "target level " + format_significant(settings.target_level, 4) + " m");
+  return "release " + rule + ", " + describe_target(settings);
 }
 
 std::string describe_assumptions(const Engine& engine, const ShotSettings& settings) {

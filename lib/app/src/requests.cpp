@@ -109,11 +109,8 @@ std::string describe_monte_carlo_release(const MonteCarloRequest& request) {
   for (const SpreadInput& spread : request.spreads)
     if (spread.value && field_of(spread.value).group == FieldGroup::release) {
       // The release is drawn: the rule's words give way to the spread's name; the level's stay.
-      settings.release_at.reset();
-      const std::string optimum = describe_release(settings);
       const std::string label = field_of(spread.value).label;  // "pin angle [deg]"
-      return "release at the " + label.substr(0, label.find(" [")) + " drawn from " + spread.input.name + "'s spread" +
-          optimum.substr(optimum.find(','));
+      return "release at the " + label.substr(0, label.find(" [")) + " drawn from " + spread.input.name + "'s spread, " + describe_target(settings);
     }
   return describe_release(settings);
 }

@@ -228,7 +228,8 @@ void check_request(const ContestRequest& r) {
                   "{{" + std::string(contest_limit_key(static_cast<ContestLimit>(k))) + "}} = " + format_significant(*r.limits[k], 6) +
                       ": a limit must be positive");
   if (!(r.min_clearance >= 0 && r.min_clearance < 1e6))
-    throw Error(ErrorKind::bad_number, "{{min_clearance}} = " + format_significant(r.min_clearance, 6) + ": a clearance must be 0 or more");
+    throw Error(ErrorKind::bad_number,
+                "{{min_clearance}} = " + format_significant(r.min_clearance, 6) + " m: give a clearance from 0 to 1e6 m (e.g. 10cm)");
   if (r.box_width.has_value() != r.box_height.has_value())
     throw Error(ErrorKind::usage, "a box counterweight needs both {{box_width}} and {{box_height}}");
   for (const auto& side : {r.box_width, r.box_height})
@@ -267,7 +268,10 @@ std::array<double, contest_limit_count> contest_measures(const Engine& engine, c
   // sample alone fell short by up to 3e-4 of the box).
   const double base = d.pivot_height();
   std::vector<double> times;
-  std::array<std::vector<double>, 10> coordinates;  // x and y of the pivot, hinge, counterweight, tip and projectile
+  // x and y of the pivot, the hinge, the counterweight's box (two opposite corners, upright; its
+  // centre without a box), the tip and the projectile
+  std::array<std::vector<double>, 12> coordinates;
+  const Vec2 half_box{engine.parts.box_width.value_or(0) / 2 / engine.L2, engine.parts.box_height.value_or(0) / 2 / engine.L2};  // scaled
   double acceleration = 0;
   for (const TracePoint& p : trace) {
     if (p.phase == Phase::released) continue;
@@ -275,13 +279,15 @@ std::array<double, contest_limit_count> contest_measures(const Engine& engine, c
     const Snapshot& s = p.snapshot;
     times.push_back(p.t);
     int k = 0;
-    for (const Vec2& at : {s.pivot, s.hinge, s.counterweight, s.tip, s.projectile})
+    const Vec2 low_corner{s.counterweight.x - half_box.x, s.counterweight.y - half_box.y},
+        high_corner{s.counterweight.x + half_box.x, s.counterweight.y + half_box.y};
+    for (const Vec2& at : {s.pivot, s.hinge, low_corner, high_corner, s.tip, s.projectile})
       coordinates[k++].push_back(at.x), coordinates[k++].push_back(at.y + base);
     // The sling's pull (the tip feels its opposite), the trough's push and the weight, over the projectile's mass.
     acceleration = std::max(acceleration, std::hypot(-s.sling_on_tip.x, -s.sling_on_tip.y + s.normal_force - d.mu) / d.mu);
   }
   double x_low = 1e300, x_high = -1e300, y_low = 0, y_high = base;
-  for (int k = 0; k < 10; ++k) {
+  for (int k = 0; k < 12; ++k) {
     const double high = sampled_extreme(times, coordinates[k], 1), low = -sampled_extreme(times, coordinates[k], -1);
     if (k % 2 == 0)
       x_low = std::min(x_low, low), x_high = std::max(x_high, high);
@@ -303,6 +309,15 @@ namespace {
 ContestEngine best_engine(const ContestRequest& request) {
   const Search search = search_all(request);
   if (!search.best) {
+    // A clearance asked for that no engine meets, where the limits alone can be met, is named itself.
+    if (request.min_clearance > 0) {
+      ContestRequest without = request;
+      without.min_clearance = 0;
+      if (search_all(without, std::nullopt, true).best)
+        throw Error(ErrorKind::out_of_range,
+                    "no engine found keeps its counterweight {{min_clearance}} = " + format_significant(request.min_clearance, 4) +
+                        " m above the ground within the other limits; ask for less clearance, or loosen the box's height");
+    }
     const std::vector<ContestLimit> conflict = fewest_conflicting(request, true);
     if (conflict.empty())
       throw Error(ErrorKind::out_of_range,

@@ -14,11 +14,9 @@ namespace {
 // The angle a moved by whole turns to within half a turn of `near` [rad].
 double unwrapped_near(double a, double near) { return near + std::remainder(a - near, 2 * M_PI); }
 
-// A watched value as the user gives it: seconds or degrees (an angle within round-off of 0,
-// where the window ends at the arm's line, as 0).
+// A watched value as the user gives it: seconds or degrees.
 std::string shown(const GivenRelease& given, double watched) {
-  if (given.by == ReleaseBy::time) return format_significant(watched * given.time_unit, 5) + " s";
-  return format_significant(std::abs(watched) < 1e-9 ? 0.0 : degrees(watched), 5) + " deg";
+  return given.by == ReleaseBy::time ? format_significant(watched * given.time_unit, 5) + " s" : format_significant(degrees(watched), 5) + " deg";
 }
 
 }  // namespace

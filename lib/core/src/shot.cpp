@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <iterator>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "given_release.hpp"
 #include "gsl_errors.hpp"
@@ -79,6 +82,9 @@ class PhaseRecord {
     const Sample& base = samples_[base_of(time)];
     return integrator_.at(base.t, base.y, time);
   }
+
+  // The snapshot at `time`, of the state integrated anew (y_exact_at).
+  Snapshot snapshot_exact_at(double time) const { return integrator_.machine().snapshot(integrator_.phase(), integrator_.state(y_exact_at(time))); }
 
   // Where a running extreme of eq:F starts to grow inside [lo, hi]: the instant when its force,
   // below the extreme at the sample before, crosses it (the root of force - extreme on the
@@ -374,26 +380,6 @@ void trace_released(const Machine& dynamics, const ScaledDesign& e, const Integr
     }
   });
 }
-
-// The lowest value of a smooth function of time, sampled at increasing times: the lowest sample,
-// or below it the vertex of the parabola through a sample lower than both its neighbours and
-// those neighbours (its error O(step^3), as the contest's box, contest.cpp).
-class LowestSample {
- public:
-  void add(double t, double value) {
-    if (count_ > 0 && !(t > last_.x)) return;  // a phase's end, sampled again as the next one's start
-    const Point here{t, value};
-    if (count_ >= 2 && last_.f <= before_.f && last_.f <= value) lowest_ = std::min(lowest_, parabola_vertex(before_, last_, here).f);
-    lowest_ = std::min(lowest_, value);
-    before_ = last_, last_ = here, ++count_;
-  }
-  double value() const { return lowest_; }
-
- private:
-  Point before_{}, last_{};
-  int count_ = 0;
-  double lowest_ = INFINITY;
-};
 
 // The range the release maximises under Release::range: in vacuum from the pivot to the
 // criterion's target level (level 0 is the paper's), else through the criterion's drag, or
@@ -791,19 +777,40 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     result.loads[k] = best->record->refined_load_peak(k, best->points, best->top);
   }
   if (find_loads) {
-    // The counterweight's lowest point: over the phases up to the release, then after it.
-    LowestSample lowest;
+    // The counterweight's lowest point: sampled at the step ends of the phases up to the release
+    // and of phase III after it, then, where the lowest sample has a neighbour on each side, the
+    // minimum between them on the solution integrated anew (as a load's peak is refined), so that
+    // it does not depend on where the steps fall.
+    std::vector<Point> heights;
     for (const PhaseRecord* record : {held_record.get(), &phase1, &phase2})
       if (record)
         for (const auto& sample : record->samples())
-          if (sample.t < t_release) lowest.add(sample.t, sample.counterweight_height);
-    lowest.add(t_release, dynamics.snapshot(Phase::lifted, result.release.state).counterweight_height);
+          if (sample.t < t_release && (heights.empty() || sample.t > heights.back().x)) heights.push_back({sample.t, sample.counterweight_height});
+    heights.push_back({t_release, dynamics.snapshot(Phase::lifted, result.release.state).counterweight_height});
     PhaseIntegrator released(dynamics, Phase::released, settings);
+    std::vector<std::pair<double, OdeVector>> steps_iii;  // each step's start
     follow_released(e, settings, result.release.state, result.work, t_release, released,
-                    [&](double, const OdeVector&, double time, const OdeVector& at) {
-                      lowest.add(time, dynamics.snapshot(Phase::released, released.state(at)).counterweight_height);
+                    [&](double t_start, const OdeVector& y_start, double time, const OdeVector& at) {
+                      steps_iii.push_back({t_start, y_start});
+                      heights.push_back({time, dynamics.snapshot(Phase::released, released.state(at)).counterweight_height});
                     });
-    result.lowest_counterweight = lowest.value();
+    const auto height_at = [&](double time) {
+      if (time > t_release) {
+        const auto step = std::prev(
+            std::upper_bound(steps_iii.begin(), steps_iii.end(), time, [](double x, const auto& step) { return x < step.first; }));
+        return dynamics.snapshot(Phase::released, released.state(released.at(step->first, step->second, time))).counterweight_height;
+      }
+      const PhaseRecord& record = held_record && time <= *result.t_counterweight_free ? *held_record : time <= result.t_liftoff ? phase1 : phase2;
+      return record.snapshot_exact_at(time).counterweight_height;
+    };
+    const auto low = std::min_element(heights.begin(), heights.end(), [](const Point& a, const Point& b) { return a.f < b.f; });
+    double lowest = low->f;
+    if (low != heights.begin() && low + 1 != heights.end()) {
+      const Point estimate = parabola_vertex(*(low - 1), *low, *(low + 1));
+      const double t = peak_between([&](double time) { return -height_at(time); }, (low - 1)->x, estimate.x, (low + 1)->x, 1e-6, 1e-8);
+      lowest = std::min(lowest, height_at(t));
+    }
+    result.lowest_counterweight = lowest;
   }
   if (trace) {
     record_trace(trace, lifted, phase2, result.t_liftoff, t_release, trace_dt);

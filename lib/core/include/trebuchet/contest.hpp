@@ -59,7 +59,8 @@ struct ContestEngine {
 };
 
 /// The measures of the limits on `engine` under `settings`: the bounding box of the pivot, the
-/// beam, the counterweight, the sling and the projectile from rest through the release (the
+/// beam, the counterweight (its box, upright, where its sides are given), the sling and the
+/// projectile from rest through the release (the
 /// base at the bottom, sampled every 0.02 (L2/g)^(1/2) and at the release), its counterweight
 /// mass, its peak axle load, and the projectile's peak acceleration up to the release.
 std::array<double, contest_limit_count> contest_measures(const Engine& engine, const ShotSettings& settings, Verification* verification = nullptr);

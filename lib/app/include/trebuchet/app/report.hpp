@@ -36,6 +36,8 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
 std::string describe_assumptions(const Engine& engine, const ShotSettings& settings);
 /// Its release rule and target level (or Denny's range) alone.
 std::string describe_release(const ShotSettings& settings);
+/// Where the range ends: "target level 0 m", or Denny's from the release point.
+std::string describe_target(const ShotSettings& settings);
 
 /// A given release in words: "the pin angle 40 deg".
 std::string describe_given_release(const SetRelease& release);
