@@ -128,9 +128,10 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   const std::string bottom = engine.parts.box_height ? "the bottom of the counterweight's box" : "the counterweight's centre";
   out.clearance.geometric = clear(pivot_height(engine) - engine.L2 - engine.L3 - half_box);
   if (shot.lowest_counterweight) out.clearance.in_shot = clear(*shot.lowest_counterweight * L2 - half_box);
-  const std::string fix = std::string("; the engine cannot be built as given: ") +
-      (engine.machine == MachineKind::whipper ? "raise its frame (H)" : "raise the pivot (H = L1 cos theta_i: a longer L1 or a smaller theta_i)") +
-      " or shorten L2 + L3" + (engine.parts.box_height ? ", or give the box less height" : "");
+  // Short enough for a picture's foot (pictures.cpp): the docs say how H follows from L1 and theta_i.
+  const std::string fix = std::string(": not buildable as given; ") +
+      (engine.machine == MachineKind::whipper ? "raise its frame (H)" : "raise the pivot") + " or shorten L2 + L3" +
+      (engine.parts.box_height ? " or the box" : "");
   if (!(out.clearance.geometric >= 0))
     out.warnings.push_back("hanging straight down, " + bottom + " reaches " + format_significant(-out.clearance.geometric, 4) +
                            " m below the ground (H - L2 - L3" + (engine.parts.box_height ? " - half the box's height" : "") + ")" + fix);
