@@ -4,6 +4,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "trebuchet/angles.hpp"
 #include "trebuchet/app/csv.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
@@ -200,6 +201,17 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
     e.whipper.rope_angle_deg = v.rope_angle_deg.value_or(e.whipper.rope_angle_deg);
     e.whipper.projectile_diameter = v.projectile_diameter;
   } else {
+    // A pivot height without theta_i sets it, the tip on the ground: H = L1 cos(theta_i), as
+    // VirtualTrebuchet and pytrebuchet give an engine.
+    if (v.H && !v.theta_i_deg && e.L1 > 0) {
+      check_ordinary(*v.H, 1e-6, 1e6, "H", "m", "pivot height");
+      if (!(*v.H < e.L1))
+        throw Error(ErrorKind::bad_number,
+                    engine_key_name(where, "H") + " = " + format_significant(*v.H, 6) +
+                        " m: the pivot must stand lower than the long arm's length L1 = " + format_significant(e.L1, 6) +
+                        " m, so that its tip rests on the ground; give a lower H or a longer L1");
+      e.theta_i_deg = degrees(std::acos(*v.H / e.L1));
+    }
     for (const auto member : {&V::rope_angle_deg, &V::projectile_diameter})
       if (v.*member)
         throw Error(ErrorKind::usage,
@@ -239,7 +251,7 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   if (!whipper && v.H && e.L1 > 0 && e.theta_i_deg > 0 && e.theta_i_deg < 90 && !(std::abs(*v.H - pivot_height(e)) <= 1e-4 * pivot_height(e)))
     throw Error(ErrorKind::usage,
                 engine_key_name(where, "H") + " = " + format_significant(*v.H, 6) + " m, but this machine's pivot height is L1 cos(theta_i) = " +
-                    format_significant(pivot_height(e), 6) + " m; leave out H (only the whipper's frame is given)");
+                    format_significant(pivot_height(e), 6) + " m; give H or theta_i, not both (H alone sets theta_i = acos(H/L1))");
   e.material = material_of(v, e.material);  // eq:kMkD's where not given
   const Material& material = e.material;
   engine_parts(v, where, in);
