@@ -149,9 +149,7 @@ void engine_parts(const DesignValues& v, const std::string& where, EngineRecord&
       if (!(value > 0)) throw Error(ErrorKind::bad_number, name(key) + " = " + format_significant(value, 6) + ": a side of the box must be positive");
       check_ordinary(value, 1e-6, 1e6, key, "m", "side of the counterweight's box");
     }
-    p.box_width = v.box_width, p.box_height = v.box_height;
-    if (e.machine != MachineKind::floating_arm)  // the floating arm's box falls in its guide without turning
-      p.counterweight_inertia = e.M * (*v.box_width * *v.box_width + *v.box_height * *v.box_height) / 12;  // a uniform box about its centre
+    give_box(e, *v.box_width, *v.box_height);
   }
 }
 

@@ -193,8 +193,8 @@ std::vector<MachineComparison> compare_machines(const EngineRecord& record, cons
     MachineComparison one{machine, std::nullopt, std::nullopt};
     EngineRecord built = record;
     built.engine.machine = machine;
-    // A box counterweight gives the others its inertia; the floating arm's falls in its guide without turning.
-    if (machine == MachineKind::floating_arm && built.engine.parts.box_height) built.engine.parts.counterweight_inertia = 0;
+    // A box counterweight, given as the machine it was read as, is given again as this one (give_box).
+    if (const EngineParts& p = record.engine.parts; p.box_width && p.box_height) give_box(built.engine, *p.box_width, *p.box_height);
     if (machine == MachineKind::whipper) {  // pytrebuchet's start, on a frame as tall as the others' pivot stands
       built.engine.theta_i_deg = whipper_theta_i_deg;
       built.engine.whipper.H = pivot_height(record.engine);

@@ -33,11 +33,7 @@ Engine engine_of_shape(const ContestRequest& r, const Shape& s) {
   e.m = r.projectile_mass;
   e.M = r.projectile_mass / s.mu;
   e.mb = r.beam_mass_per_length * (e.L1 + e.L2);
-  if (r.box_width && r.box_height) {
-    e.parts.box_width = r.box_width, e.parts.box_height = r.box_height;
-    if (r.machine != MachineKind::floating_arm)  // its box falls in the guide without turning
-      e.parts.counterweight_inertia = e.M * (*r.box_width * *r.box_width + *r.box_height * *r.box_height) / 12;  // a uniform box about its centre
-  }
+  if (r.box_width && r.box_height) give_box(e, *r.box_width, *r.box_height);
   return e;
 }
 

@@ -321,6 +321,11 @@ double pivot_height(const Engine& engine) {
 
 double arm_fraction(const Engine& engine) { return (engine.L2 + engine.L3) / pivot_height(engine); }
 
+void give_box(Engine& engine, double width, double height) {
+  engine.parts.box_width = width, engine.parts.box_height = height;
+  engine.parts.counterweight_inertia = engine.machine == MachineKind::floating_arm ? 0 : engine.M * (width * width + height * height) / 12;
+}
+
 double counterweight_arm(double L1, double L2, double theta_i_deg, double F) { return F * L1 * std::cos(radians(theta_i_deg)) - L2; }
 
 double potential_energy_drop(const Engine& engine) {

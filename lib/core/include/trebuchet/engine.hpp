@@ -113,7 +113,12 @@ void check_engine(const Engine& engine);
 
 double beam_length(const Engine& engine);  ///< Lb = L1 + L2 [m]
 double pivot_height(const Engine& engine);  ///< H = L1 cos(theta_i), or the whipper's [m]
-double arm_fraction(const Engine& engine);  ///< F = (L2 + L3)/H, section 2, scaled
+double arm_fraction(const Engine& engine);
+
+/// Gives `engine` (its machine and M set) a box counterweight of these sides [m]: kept in its
+/// parts, with its inertia M (w^2 + h^2)/12 about its centre (0 on the floating arm, whose box
+/// falls in its guide without turning).
+void give_box(Engine& engine, double width, double height);  ///< F = (L2 + L3)/H, section 2, scaled
 
 /// L3 from L2 + L3 = F H, H = L1 cos(theta_i) (section 2) [m].
 double counterweight_arm(double L1, double L2, double theta_i_deg, double F);
