@@ -12,6 +12,7 @@
 #include "trebuchet/app/csv.hpp"
 #include "trebuchet/app/output_files.hpp"
 #include "trebuchet/format.hpp"
+#include "flags.hpp"
 #include "program.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/app/report.hpp"
@@ -21,6 +22,7 @@
 #include "trebuchet/app/fields.hpp"
 #include "trebuchet/app/names.hpp"
 #include "trebuchet/app/request.hpp"
+#include "trebuchet/app/settings.hpp"
 #include "trebuchet/scaling_table.hpp"
 #include "trebuchet/app/table_json.hpp"
 #include "trebuchet/app/text_input.hpp"
@@ -35,28 +37,15 @@ struct Options {
   std::map<Quantity, std::string> givens;
   std::string theta = format_number(standard_theta_i_deg);
   std::string F = format_fraction(standard_F);
-  std::string branch = "auto";
-  std::string beta2, youngs_modulus, wood_density, g;  // empty: the table's own
+  DesignValues material;  // the material's rows given (beta2, Young's modulus, wood density, g)
+  std::map<Setting, std::string> settings;  // the settings' text as given (settings.def): --branch, --format, ...
   bool extrapolate = false;
-  std::string scale;
-  std::string format = "table";
-  std::string batch;
-  std::string table_file;
-  std::string digits;  // empty: default_csv_digits
-  std::string spreadsheet;
-  std::string units = "si";
-  std::string machine;  // empty: the paper's, tab:CPNC
-};
 
-Material material_from(const Options& options, const Material& reference) {
-  Material material = reference;
-  if (!options.beta2.empty()) material.beta2 = parse_positive(options.beta2, UnitDimension::dimensionless, "--beta2");
-  if (!options.youngs_modulus.empty()) material.youngs_modulus = parse_positive(options.youngs_modulus, UnitDimension::pressure, "--youngs-modulus");
-  if (!options.wood_density.empty()) material.wood_density = parse_positive(options.wood_density, UnitDimension::density, "--wood-density");
-  if (!options.g.empty()) material.g = parse_positive(options.g, UnitDimension::acceleration, "--g");
-  check_material(material);  // a material beyond the ordinary is named as such, not as a capacity out of range
-  return material;
-}
+  std::string setting(Setting id, const std::string& fallback = "") const {  // an empty value is refused as given (run_program)
+    const auto given = settings.find(id);
+    return given == settings.end() || given->second.empty() ? fallback : given->second;
+  }
+};
 
 void print(const OptimalEngine& design, const std::string& format, int digits, UnitSystem units) {
   if (format == "json")
@@ -77,19 +66,22 @@ OptimalEngine in_option_words(OptimalEngine design) {
 }
 
 int run(const Options& options, bool format_given, bool F_given) {
-  if (options.format != "table" && options.format != "csv" && options.format != "json")
-    throw Error(ErrorKind::usage, "--format: '" + options.format + "' is not a format; use table, csv or json");
-  const int digits = options.digits.empty() ? default_csv_digits : parse_digits(options.digits, "--digits");
-  const UnitSystem units = parse_unit_system(options.units, "--units");  // read first, whatever the mode
-  if (!options.spreadsheet.empty()) refuse_output_over_input(options.spreadsheet, "spreadsheet", {options.table_file, options.batch});
-  const MachineKind machine = options.machine.empty() ? MachineKind::hinged : parse_machine(options.machine, "--machine");
-  if (!options.machine.empty() && !options.table_file.empty())
+  const std::string format = options.setting(Setting::format, "table"), digits_text = options.setting(Setting::digits);
+  const std::string batch = options.setting(Setting::batch), spreadsheet = options.setting(Setting::spreadsheet);
+  const std::string table_file = options.setting(Setting::table), machine_text = options.setting(Setting::machine);
+  if (format != "table" && format != "csv" && format != "json")
+    throw Error(ErrorKind::usage, "--format: '" + format + "' is not a format; use table, csv or json");
+  const int digits = digits_text.empty() ? default_csv_digits : parse_digits(digits_text, "--digits");
+  const UnitSystem units = parse_unit_system(options.setting(Setting::units, "si"), "--units");  // read first, whatever the mode
+  if (!spreadsheet.empty()) refuse_output_over_input(spreadsheet, "spreadsheet", {table_file, batch});
+  const MachineKind machine = machine_text.empty() ? MachineKind::hinged : parse_machine(machine_text, "--machine");
+  if (!machine_text.empty() && !table_file.empty())
     throw Error(ErrorKind::usage, "--table: a table names its own machine (its key \"machine\"); drop --machine");
 
-  if (machine != MachineKind::hinged && !options.spreadsheet.empty())
+  if (machine != MachineKind::hinged && !spreadsheet.empty())
     throw Error(ErrorKind::usage, "--spreadsheet writes the paper's engine's calculator (tab:CPNC); drop --machine");
-  const ScalingTable table_from_file = options.table_file.empty() ? ScalingTable{} : load_scaling_table(options.table_file);
-  const ScalingTable& table = options.table_file.empty() ? builtin_scaling_table(machine) : table_from_file;
+  const ScalingTable table_from_file = table_file.empty() ? ScalingTable{} : load_scaling_table(table_file);
+  const ScalingTable& table = table_file.empty() ? builtin_scaling_table(machine) : table_from_file;
   if (table.machine != MachineKind::hinged && F_given)
     throw Error(ErrorKind::usage,
                 "--F: the " + machine_name(table.machine) + " machine's table holds the counterweight at the short arm's end; drop --F");
@@ -97,19 +89,21 @@ int run(const Options& options, bool format_given, bool F_given) {
   DesignRequest request;
   request.theta_i_deg = parse_theta(options.theta, "--theta");
   request.F = parse_positive(options.F, UnitDimension::dimensionless, "--F");
-  request.branch = parse_branch_choice(options.branch);
-  request.material = material_from(options, table.reference);
+  request.branch = parse_branch_choice(options.setting(Setting::branch, "auto"));
+  request.material = material_of(options.material, table.reference);
+  check_material(request.material);  // a material beyond the ordinary is named as such, not as a capacity out of range
   request.extrapolate = options.extrapolate;
-  if (!options.scale.empty()) request.scale = parse_positive(options.scale, UnitDimension::dimensionless, "--scale");
+  const std::string scale = options.setting(Setting::scale);
+  if (!scale.empty()) request.scale = parse_positive(scale, UnitDimension::dimensionless, "--scale");
 
   std::vector<Given> givens;
   for (const auto& [quantity, text] : options.givens)
     if (!text.empty()) givens.push_back(parse_given(quantity_name(quantity), text));
 
-  if (!options.spreadsheet.empty()) {
-    if (!options.batch.empty())
+  if (!spreadsheet.empty()) {
+    if (!batch.empty())
       throw Error(ErrorKind::usage, "--spreadsheet writes the calculator as a workbook and --batch designs the rows of a file; give one of them");
-    if (format_given || !options.digits.empty())
+    if (format_given || !digits_text.empty())
       throw Error(ErrorKind::usage,
                   std::string(format_given ? "--format" : "--digits") + " sets what is printed; --spreadsheet writes an .xlsx workbook, drop it");
     // The workbook opens on the paper's examples, or on the givens: R and T on the capacity
@@ -117,7 +111,7 @@ int run(const Options& options, bool format_given, bool F_given) {
     // Lb and one (Lb first), any other pair on the last.
     SpreadsheetInputs inputs;
     inputs.material = request.material;
-    if (!options.scale.empty()) inputs.model_scale = request.scale;  // the sheet "model scaling" opens on it
+    if (!scale.empty()) inputs.model_scale = request.scale;  // the sheet "model scaling" opens on it
     for (DesignRequest* sheet : {&inputs.capacity, &inputs.range_and_one, &inputs.any_pair, &inputs.beam_length})
       sheet->theta_i_deg = request.theta_i_deg, sheet->F = request.F, sheet->branch = request.branch, sheet->material = request.material;
     if (givens.size() == 2) {
@@ -134,24 +128,24 @@ int run(const Options& options, bool format_given, bool F_given) {
       throw Error(ErrorKind::given_count,
                   "--spreadsheet opens on the paper's examples, or on exactly two givens; found " + std::to_string(givens.size()));
     }
-    write_spreadsheet(table, inputs, options.spreadsheet);
-    std::cout << "wrote " << options.spreadsheet << ": the calculator as a workbook with live formulas (docs/spreadsheet.md)\n";
+    write_spreadsheet(table, inputs, spreadsheet);
+    std::cout << "wrote " << spreadsheet << ": the calculator as a workbook with live formulas (docs/spreadsheet.md)\n";
     return 0;
   }
-  if (!options.batch.empty()) {
+  if (!batch.empty()) {
     if (!givens.empty())
       throw Error(ErrorKind::given_count,
                   "--batch takes the givens from its file; drop --" + std::string(quantity_name(givens.front().quantity)) + " from the command line");
     std::ifstream file;
-    if (options.batch != "-") {
+    if (batch != "-") {
       std::error_code error;
-      if (std::filesystem::is_directory(options.batch, error))
-        throw Error(ErrorKind::usage, "--batch: '" + options.batch + "' is a directory; give a CSV file or - for stdin");
-      file.open(options.batch);
-      if (!file) throw Error(ErrorKind::usage, "--batch: cannot read '" + options.batch + "'; give a CSV file or - for stdin");
+      if (std::filesystem::is_directory(batch, error))
+        throw Error(ErrorKind::usage, "--batch: '" + batch + "' is a directory; give a CSV file or - for stdin");
+      file.open(batch);
+      if (!file) throw Error(ErrorKind::usage, "--batch: cannot read '" + batch + "'; give a CSV file or - for stdin");
     }
-    std::istream& input = options.batch == "-" ? std::cin : file;
-    const bool json = options.format == "json";
+    std::istream& input = batch == "-" ? std::cin : file;
+    const bool json = format == "json";
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
     std::vector<std::string> passed_columns;
     const std::size_t design_columns = design_csv_header(table.machine).size();
@@ -213,7 +207,7 @@ int run(const Options& options, bool format_given, bool F_given) {
   }
   request.first = givens[0];
   request.second = givens[1];
-  print(in_option_words(design_optimal_engine(table, request)), options.format, digits, units);
+  print(in_option_words(design_optimal_engine(table, request)), format, digits, units);
   return 0;
 }
 
@@ -232,34 +226,22 @@ int main(int argc, char** argv) {
     const InputField& field = given_field(quantity);
     app.add_option(field.flag, options.givens[quantity], option_help(field));
   }
-  using V = DesignValues;
-  const auto flag = [](std::optional<double> V::*member) { return field_of(member).flag; };
-  app.add_option(flag(&V::theta_i_deg), options.theta, "initial beam angle theta_i [deg]: 30 or 40")->capture_default_str();
-  app.add_option(flag(&V::F), options.F, "counterweight arm fraction (L2+L3)/H: 1 or 2/3")->capture_default_str();
-  app.add_option("--branch", options.branch, "auto, lower or upper (two optima for 0.30 < X < 0.40)")->capture_default_str();
-  for (auto member : {&V::beta2, &V::youngs_modulus, &V::wood_density, &V::g}) {
-    std::string* slot = member == &V::beta2 ? &options.beta2
-        : member == &V::youngs_modulus      ? &options.youngs_modulus
-        : member == &V::wood_density        ? &options.wood_density
-                                            : &options.g;
-    app.add_option(flag(member), *slot, option_help(field_of(member)));
-  }
-  app.add_flag("--extrapolate", options.extrapolate, "allow X outside the table's intervals, with a warning");
-  app.add_option("--scale", options.scale, "print the same design scaled by this factor (a model)");
-  app.add_option("--format", options.format, "table, csv or json")->capture_default_str();
-  app.add_option("--units", options.units,
-                 "si or imperial: how the table prints values (imperial: ft, lb, ft·lbf, with SI beside; JSON and CSV stay SI)")
-      ->capture_default_str();
-  app.add_option("--batch", options.batch,
-                 "CSV file of requests (- for stdin): the header names two givens, other columns pass through (docs/csv.md)");
-  app.add_option("--digits", options.digits, "significant digits of CSV numbers (default " + std::to_string(default_csv_digits) + "; 17: exact)");
-  app.add_option("--spreadsheet", options.spreadsheet,
-                 "write the calculator as a workbook with live formulas (.xlsx), opened on the paper's examples or on the givens");
-  app.add_option("--table", options.table_file, "constants file in the schema of data/cpnc.json");
-  app.add_option("--machine", options.machine,
-                 "hinged (the paper's, tab:CPNC), fixed or floating-arm: the optimal engine of that machine, its counterweight at the "
-                 "short arm's end, from its own scaling table (data/cpnc-fixed.json, data/cpnc-floating-arm.json; docs/machines.md); "
-                 "whipper is refused: it has no table");
+  const auto flag = [](std::optional<double> DesignValues::*member) { return field_of(member).flag; };
+  app.add_option(flag(&DesignValues::theta_i_deg), options.theta, "initial beam angle theta_i [deg]: 30 or 40")->capture_default_str();
+  app.add_option(flag(&DesignValues::F), options.F, "counterweight arm fraction (L2+L3)/H: 1 or 2/3")->capture_default_str();
+  for (const InputField& field : input_fields())
+    if (field.group == FieldGroup::material && (field.operations & op_calculator))
+      parsed_option(
+          &app, field.flag,
+          [&options, &field](const std::string& text) { options.material.*field.member = parse_positive(text, field.dimension, field.flag); },
+          option_help(field));
+  for (const SettingRow& row : setting_rows())
+    if (row.doors & cmd_calc) {
+      if (row.id == Setting::extrapolate)  // the one switch
+        app.add_flag(row.flag, options.extrapolate, setting_help(row));
+      else
+        app.add_option(row.flag, options.settings[row.id], setting_help(row));
+    }
 
   return run_program(app, Program::calc, argc, argv, [&] { return run(options, app.count("--format") > 0, app.count("--F") > 0); });
 }

@@ -8,6 +8,8 @@
 #include "trebuchet/app/design_input.hpp"
 #include "trebuchet/app/design_record.hpp"
 #include "trebuchet/app/search_records.hpp"
+#include "trebuchet/app/settings.hpp"
+#include "trebuchet/app/fields.hpp"
 #include "trebuchet/app/shot_record.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/scaling_table.hpp"
@@ -173,4 +175,39 @@ TEST_CASE("api::shot takes an engine as built and the air before the release", "
   CHECK(answer["assumptions"]["air"]["drag_in_sling"].get<bool>());
   const Error wrong = refusal(&api::shot, {{"design", design}, {"air", {{"drag_in_sling", "yes"}}}});
   CHECK(std::string(wrong.what()).find("air.drag_in_sling") != std::string::npos);
+}
+
+TEST_CASE("every key of every request has its row, and a setting has one name at every door", "[api][settings]") {
+  using Request = nlohmann::ordered_json (*)(const json&);
+  const std::pair<const char*, Request> requests[] = {{"design", api::design},     {"shot", api::shot},         {"sweep", api::sweep},
+                                                      {"optimize", api::optimize}, {"complete", api::complete}, {"monte_carlo", api::monte_carlo},
+                                                      {"value", api::value}};
+  for (const auto& [name, request] : requests) {
+    // A key no request takes is refused with the keys this one takes: each is an input's or a setting's.
+    const std::string message = refusal(request, {{"zz_no_such_key", 1}}).what();
+    const std::string listed = message.substr(message.find("; use ") + 6);
+    INFO(name << ": " << message);
+    REQUIRE(message.find("; use ") != std::string::npos);
+    std::size_t keys = 0;
+    for (std::size_t start = 0; start < listed.size(); ++keys) {
+      const std::size_t end = std::min(listed.find(", ", start), listed.size());
+      const std::string key = listed.substr(start, end - start);
+      INFO("its key " << key);
+      CHECK((find_field(key) != nullptr || find_setting(key, ~0u) != nullptr));
+      start = end + 2;
+    }
+    CHECK(keys > 1);
+  }
+  // The flag's word and the old key give the same shot; the old key is an alias of the row.
+  const json design = {{"L1", "6.13m"}, {"L2", "1.52m"}, {"L3", "2m"}, {"L4", "5.1m"}, {"M", "14.3t"}, {"m", "100kg"}, {"mb", "2t"}};
+  CHECK(api::shot({{"design", design}, {"quality", "range"}}) == api::shot({{"design", design}, {"release", "range"}}));
+  json with_claim = design;
+  with_claim["R"] = "300m", with_claim["T"] = "200kJ";
+  CHECK(api::shot({{"design", with_claim}, {"tol", 1e-9}}) == api::shot({{"design", with_claim}, {"tolerance", 1e-9}}));
+  // Given twice under its two names, or misspelt: refused by name.
+  CHECK_THAT(refusal(api::shot, {{"design", design}, {"quality", "range"}, {"release", "Q"}}).what(), Catch::Contains("given already"));
+  CHECK_THAT(refusal(api::shot, {{"design", design}, {"tolerence", 0.1}}).what(), Catch::Contains("did you mean \"tolerance\""));
+  // The air's details flat, as the flags give them, or in the air's object: one shot.
+  CHECK(api::shot({{"design", design}, {"air", true}, {"wind", "5m/s"}, {"cd", 0.5}}) ==
+        api::shot({{"design", design}, {"air", {{"wind", "5m/s"}, {"drag_coefficient", 0.5}}}}));
 }

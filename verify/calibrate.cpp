@@ -3,7 +3,6 @@
 #include <iostream>
 #include <vector>
 
-#include "flags.hpp"
 #include "program.hpp"
 #include "run.hpp"
 #include "trebuchet/app/output_files.hpp"
@@ -13,35 +12,6 @@
 #include "trebuchet/format.hpp"
 
 namespace trebuchet::verify {
-
-void measured_options(CLI::App* c, Options& o) {
-  parsed_option(
-      c, "--measured",
-      [&o](const std::string& text) {
-        if (const auto spread = parse_spread(text, UnitDimension::length, "--measured")) {
-          if (spread->kind != Spread::Kind::normal)
-            throw Error(ErrorKind::usage, "--measured: '" + text + "' is a range; give the measured range with its uncertainty, e.g. 34.4m±1.5m");
-          o.measured = MeasuredRange{spread->a, spread->b};
-        } else {
-          o.measured = MeasuredRange{parse_positive(text, UnitDimension::length, "--measured"), 0};
-        }
-      },
-      "the range the engine threw, with its uncertainty (one standard deviation), e.g. 34.4m±1.5m");
-  for (const auto& [flag, list, help] :
-       {std::tuple{"--predict-m", &o.predict_m, "predict the calibrated engine's range with this projectile mass (repeat for more)"},
-        {"--predict-M", &o.predict_M, "predict it with this counterweight mass (repeat for more)"}})
-    // Every value given, each read and checked (CLI11 hands a std::string option its first only).
-    c->add_option_function<std::vector<std::string>>(
-         flag,
-         [list = list, flag = std::string(flag)](const std::vector<std::string>& texts) {
-           for (const std::string& text : texts) {
-             if (text.empty()) throw Error(ErrorKind::usage, flag + " was given an empty value; give a value after it, or leave it out");
-             list->push_back(parse_positive(text, UnitDimension::mass, flag));
-           }
-         },
-         help)
-        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-}
 
 int run_calibrate(const Options& o) {
   if (!o.measured)
@@ -61,7 +31,7 @@ int run_calibrate(const Options& o) {
   }
   const EngineRecord record = engine_record(values, where);
   Engine engine = record.engine;
-  engine.material = o.material.over(engine.material);
+  engine.material = material_of(o.design, engine.material);  // the flags' material over a file's
   if (record.mb_from_D) engine.mb = wood_beam_mass(engine);  // in the wood of the run
   ShotSettings settings = settings_of(o);
   settings.release_at = release_of(o.design, "");  // the release the measured engine made, when known: the flags' over the file's

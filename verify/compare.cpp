@@ -14,7 +14,7 @@ int run_compare(const Options& o) {
   DesignCheck check = design_check(o);
   check.settings.release_at = release_of(o.design, "");
   // Machines are compared as contest ranks them and the peers shoot them: for range, unless --quality says otherwise.
-  if (!o.release_given) check.settings.criterion.release = Release::range;
+  if (!o.settings.quality && !o.settings.n) check.settings.criterion.release = Release::range;
   nlohmann::json passed = nlohmann::json::object();
   std::string where;
   DesignValues values = one_design(o, "compare", where, passed);

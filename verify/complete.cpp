@@ -15,7 +15,7 @@ namespace trebuchet::verify {
 int run_complete(const Options& o) {
   if (!o.plot.empty())
     throw Error(ErrorKind::usage, "--plot draws the histogram of a Monte Carlo run; give a value as a range or a spread, or drop --plot");
-  const CompletionRequest request = completion_request(o.design, settings_of(o), o.material);
+  const CompletionRequest request = completion_request(o.design, settings_of(o));
   // "Could it reach that far?" wants the longest range beside the best-balanced engine.
   CompletionReport report = complete_with_longest(request, option_word);
   Completion& completion = report.completion;

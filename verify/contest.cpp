@@ -16,7 +16,7 @@ int run_contest(const Options& o) {
   request.machine = o.design.machine.value_or(MachineKind::hinged);
   if (!o.design.m) throw Error(ErrorKind::usage, "contest needs the projectile's mass; give {{m}}, e.g. {{m}} 0.5kg");
   request.projectile_mass = *o.design.m;
-  request.material = o.material.over(Material{});
+  request.material = material_of(o.design, Material{});
   if (o.beam_per_m && o.design.D) throw Error(ErrorKind::usage, "--mb-per-m and {{D}} both give the beam's mass per metre; give one");
   if (!o.beam_per_m && !o.design.D)
     throw Error(ErrorKind::usage,

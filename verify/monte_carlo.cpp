@@ -32,11 +32,12 @@ int run_monte_carlo(const Options& o, bool complete) {
   const MonteCarloRequest request = monte_carlo_request(o, complete);
   const ShotSettings settings = shot_settings(with_draws(request, [](const Spread& s) { return s.a; }).settings);
   const std::int64_t shots = shots_per_sample(request);
-  const int samples = o.samples.value_or(complete ? default_completion_samples : default_shot_samples);
+  const int samples = o.settings.samples.value_or(complete ? default_completion_samples : default_shot_samples);
+  const std::uint64_t seed = o.settings.seed.value_or(1);
   check_monte_carlo_work(samples, shots, complete ? "completions" : "shots");
   const auto start = std::chrono::steady_clock::now();
   const MonteCarloSummary summary = trebuchet::run_monte_carlo(
-      samples, o.seed, o.threads, [&](std::mt19937_64& random) { return sample_outcome(request, random, option_word); },
+      samples, seed, o.threads, [&](std::mt19937_64& random) { return sample_outcome(request, random, option_word); },
       progress_bar(complete ? "completions" : "shots"));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::vector<UncertainInput> inputs = uncertain_inputs(request);
@@ -45,13 +46,13 @@ int run_monte_carlo(const Options& o, bool complete) {
                                 inputs,
                                 fixed,
                                 describe_monte_carlo_release(request),
-                                o.seed,
+                                seed,
                                 complete ? "the completed engine" : "the shot",
                                 settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"),
                                 settings.air.has_value(),
                                 seconds,
                                 thread_count(o.threads, static_cast<std::size_t>(summary.samples)),
-                                o.claim};
+                                o.settings.claim};
   if (o.format == Format::json) {
     std::cout << pretty_json(monte_carlo_json(report));
   } else if (o.format == Format::csv) {

@@ -18,6 +18,7 @@
 #include "trebuchet/app/schema.hpp"
 #include "trebuchet/app/design_input.hpp"
 #include "trebuchet/app/search_records.hpp"
+#include "trebuchet/app/settings.hpp"
 #include "trebuchet/app/shot_record.hpp"
 #include "trebuchet/app/verifier.hpp"
 #include "trebuchet/app/what_if.hpp"
@@ -28,12 +29,10 @@ enum class Format { table, json, csv };
 
 struct Options {
   std::string input;  ///< a design file, "-" for stdin; empty: the flags
-  DesignValues design;  ///< the table's flags (input_fields): the engine, --R and --T, complete's --Lb, --H, --l
-  double tolerance = 0.02;  ///< on a predicted R and T, relative
-  SettingsValues settings;  ///< the release, the integrator, the target level and the air
+  DesignValues design;  ///< the table's flags (input_fields): the engine, its material, --R and --T, complete's --Lb, --H, --l
+  SettingsValues settings;  ///< the settings a request takes too (settings.def): the release, the integrator, the target, the air, a run's
   std::optional<MeasuredRange> measured;  ///< calibrate: the measured range [m]
   std::vector<double> predict_m, predict_M;  ///< calibrate: masses to predict with [kg]
-  MaterialOverrides material;  ///< --beta2, --wood-density, --youngs-modulus, --rupture, --g
   UnitSystem units = UnitSystem::si;  ///< --units: how tables print values
   Format format = Format::table;
   int digits = default_csv_digits;
@@ -43,15 +42,11 @@ struct Options {
   SweepSpec sweep;  ///< derive-table: its X grid (the rest from the other options)
   std::optional<Shard> shard;
   std::vector<std::string> parts;  ///< merge
-  std::optional<int> samples;  ///< Monte Carlo; not given: default_shot_samples or default_completion_samples
-  std::uint64_t seed = 1;
-  std::optional<double> claim;  ///< Monte Carlo: a claimed range whose odds to report [m]
   std::string draws;  ///< Monte Carlo: write every sample's drawn inputs and outputs here (CSV)
   std::vector<SpreadInput> spreads;  ///< the values given as ranges or spreads, in the order they are drawn
   ContestLimits limits;  ///< contest: --max-width ... --max-acceleration
   std::optional<double> beam_per_m;  ///< contest: the beam's mass per metre [kg/m]
   bool efficiency = false;  ///< contest: --objective eps
-  bool release_given = false;  ///< --quality or --n was given (compare's default is the range, as contest's)
   int pareto = 0;  ///< contest: points of the Pareto front; 0: none
   double min_clearance = 0;  ///< contest: of the counterweight above the ground [m]
   std::optional<WhatIf> what_if;  ///< sweep: the value varied and its range (--vary)
@@ -63,12 +58,6 @@ struct Subcommands {
   CLI::App *shot, *fit, *optimize, *derive_table, *merge, *complete, *calibrate, *compare, *contest, *sweep;
 };
 Subcommands declare_subcommands(CLI::App& app, Options& options);
-
-/// calibrate's --measured, --predict-m and --predict-M (calibrate.cpp).
-void measured_options(CLI::App* calibrate, Options& options);
-
-/// derive-table's --X and --shard (tables.cpp).
-void sweep_options(CLI::App* derive_table, Options& options);
 
 /// The settings of the flags (requests.hpp's shot_settings); --series-dt needs --series.
 ShotSettings settings_of(const Options& options);

@@ -16,7 +16,7 @@ namespace trebuchet::verify {
 DesignCheck design_check(const Options& o) {
   DesignCheck check;
   check.settings = settings_of(o);
-  check.material = o.material;
+  check.material = o.design;  // its material rows, over each design's own
   check.csv = o.format == Format::csv;
   check.csv_digits = o.digits;
   check.inputs = {o.input};
@@ -30,7 +30,7 @@ namespace {
 DesignCheck shot_check(const Options& o, bool fit) {
   DesignCheck check = design_check(o);
   check.settings.release_at = release_of(o.design, "");
-  check.tolerance = o.tolerance;
+  check.tolerance = o.settings.tol.value_or(check.tolerance);
   check.fit = fit;
   check.series_path = o.series;
   check.series_dt_s = o.series_dt_s;

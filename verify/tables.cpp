@@ -1,10 +1,8 @@
 // optimize, derive-table and merge: the ab-initio optimum for a capacity, and tab:CPNC derived
 // from optima along X, whole or in shards that merge joins.
 #include <chrono>
-#include <cstdio>
 #include <iostream>
 
-#include "flags.hpp"
 #include "program.hpp"
 #include "run.hpp"
 #include "trebuchet/format.hpp"
@@ -32,22 +30,8 @@ int print_derived(const nlohmann::ordered_json& json, const std::vector<double>&
 
 }  // namespace
 
-void sweep_options(CLI::App* derive, Options& o) {
-  parsed_option(
-      derive, "--X",
-      [&o](const std::string& text) {
-        char c1 = 0, c2 = 0, rest = 0;
-        if (std::sscanf(text.c_str(), "%lf%c%lf%c%lf%c", &o.sweep.X_from, &c1, &o.sweep.X_to, &c2, &o.sweep.X_step, &rest) != 5 || c1 != ':' ||
-            c2 != ':')
-          throw Error(ErrorKind::usage, "--X: '" + text + "' is not from:to:step; e.g. --X -0.55:0.55:0.05");
-      },
-      "X points, from:to:step (eq:Xi) (default -0.55:0.55:0.05)");
-  parsed_option(
-      derive, "--shard", [&o](const std::string& text) { o.shard = parse_shard(text); }, "run part k of N of the X points, e.g. 2/8, for merge");
-}
-
 int run_optimize(const Options& o) {
-  const OptimizeRequest request = optimize_request(o.design, settings_of(o), o.material);
+  const OptimizeRequest request = optimize_request(o.design, settings_of(o));
   const auto start = std::chrono::steady_clock::now();
   const std::vector<Optimum> optima = optimize(request);
   const double seconds = seconds_since(start);
@@ -74,8 +58,8 @@ int run_derive_table(const Options& o) {
   if (spec.machine != MachineKind::hinged && o.design.F)
     throw Error(ErrorKind::usage,
                 "{{F}}: the fixed counterweight's and the floating arm's tables hold the counterweight at the short arm's end; leave out {{F}}");
-  spec.material = o.material.over(Material{});
-  spec.criterion = o.settings.base.criterion;
+  spec.material = material_of(o.design, Material{});
+  spec.criterion = settings_of(o).criterion;
   if (o.shard) part.shard = *o.shard;
   // The work, decided before the run: the shard's X points at about 1100 shots each (an optimum).
   const long points = (static_cast<long>(sweep_grid(spec).size()) - part.shard.k + part.shard.n) / part.shard.n;

@@ -99,9 +99,12 @@ def design(**givens):
 
 
 def shot(design, *, series=False, **settings):
-    """One shot of an engine (a dict of the programs' keys). Settings: air (False, True or a dict of
-    density, drag_coefficient, projectile_density, wind, drag_in_sling), release ("Q", "eps",
-    "range"), n, target_level, range_from ("pivot", "release"), tolerance, modulus_of_rupture.
+    """One shot of an engine (a dict of the programs' keys). Settings, each under its flag's word
+    (settings(), docs/inputs.md): quality ("Q", "eps", "range"; or release=), n, tol (or
+    tolerance=), stepper, rtol, atol, target_level, range_from ("pivot", "release"), air (False,
+    True or a dict of density, drag_coefficient, projectile_density, wind, drag_in_sling), or the
+    air's details flat (air_density, cd, projectile, wind, drag_in_sling), and the material (g,
+    youngs_modulus, wood_density, modulus_of_rupture) over the design's own.
     With series=True the answer's "series" holds the motion, its frames as arrays."""
     request = dict(settings, design=design)
     if series:
@@ -216,6 +219,13 @@ def fields():
     """The table of inputs: a list of dicts, one per key a design, a completion or the calculator
     takes, with its aliases, flag, dimension, SI unit, accepted units, default, range and help."""
     return _call(_trebuchet.fields, {})["fields"]
+
+
+def settings():
+    """The table of settings: a list of dicts, one per keyword argument the functions take besides
+    the engine's values (quality, tol, air, ...), with its aliases, the programs' flag, the requests
+    that take it, default, range and help."""
+    return _call(_trebuchet.fields, {})["settings"]
 
 
 def to_frame(answer):

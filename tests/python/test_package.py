@@ -35,6 +35,18 @@ def test_a_misspelt_key_names_the_nearest():
         trebuchet.shot(CA, relase="eps")
 
 
+def test_a_setting_has_one_name_and_its_alias():
+    # Issue 51: the flag's word is the keyword; the request's older word is an alias of its row.
+    assert trebuchet.shot(CA, quality="range") == trebuchet.shot(CA, release="range")
+    claimed = dict(CA, R="150m", T="40kJ")
+    assert trebuchet.shot(claimed, tol=1e-9) == trebuchet.shot(claimed, tolerance=1e-9)
+    with pytest.raises(trebuchet.TrebuchetError, match='unknown key "tolerence"; did you mean "tolerance"'):
+        trebuchet.shot(CA, tolerence=1e-9)
+    with pytest.raises(trebuchet.TrebuchetError, match="given already"):
+        trebuchet.shot(CA, quality="range", release="Q")
+    assert {"quality", "tol", "air", "samples"} <= {row["key"] for row in trebuchet.settings()}
+
+
 def test_a_wrong_type_is_a_type_error_naming_its_key():
     with pytest.raises(TypeError, match=r"design\.L1: a ndarray is not a value"):
         trebuchet.shot(dict(CA, L1=np.array([4.13, 5.0])))

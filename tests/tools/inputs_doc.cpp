@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "trebuchet/app/fields.hpp"
+#include "trebuchet/app/settings.hpp"
 #include "trebuchet/format.hpp"
 
 namespace {
@@ -22,6 +23,24 @@ std::string operations(unsigned bits) {
   for (const auto& [bit, name] : names)
     if (bits & bit) out.emplace_back(name);
   return join(out, ", ");
+}
+
+// The doors of a setting: the subcommands (calc: trebuchet-calc) and the api's requests.
+std::string doors(unsigned bits) {
+  const std::pair<unsigned, const char*> names[] = {
+      {cmd_calc, "calc"},       {cmd_shot, "shot"},   {cmd_fit, "fit"},           {cmd_calibrate, "calibrate"}, {cmd_compare, "compare"},
+      {cmd_contest, "contest"}, {cmd_sweep, "sweep"}, {cmd_complete, "complete"}, {cmd_optimize, "optimize"},   {cmd_derive_table, "derive-table"}};
+  const std::pair<unsigned, const char*> requests[] = {{req_design, "design"},     {req_shot, "shot"},         {req_sweep, "sweep"},
+                                                       {req_optimize, "optimize"}, {req_complete, "complete"}, {req_monte_carlo, "monte_carlo"},
+                                                       {req_value, "value"}};
+  std::vector<std::string> programs, api;
+  for (const auto& [bit, name] : names)
+    if (bits & bit) programs.emplace_back(name);
+  for (const auto& [bit, name] : requests)
+    if (bits & bit) api.emplace_back(name);
+  std::string out = join(programs, ", ");
+  if (!api.empty()) out += std::string(out.empty() ? "" : "; ") + "requests: " + join(api, ", ");
+  return out;
 }
 
 }  // namespace
@@ -58,5 +77,21 @@ int main() {
                 << ") |\n";
     }
     std::cout << "\n";
+  }
+  std::cout << "## Settings\n\n"
+               "Every other flag of the programs and key of the api's requests (`docs/web.md`, and so the\n"
+               "Python module's keyword arguments), as one table (`setting_rows()` in\n"
+               "`lib/app/include/trebuchet/app/settings.hpp`): one name at every door. A request takes the\n"
+               "key, or an alias; a flag's value and a request's are read by the same function. The air's\n"
+               "details may also be given as an object `\"air\": {\"wind\": \"5m/s\"}` under the names after\n"
+               "`air.`. A key near one of these is refused, naming the one meant.\n\n"
+               "| key | flag | unit | doors | default | range | meaning |\n|---|---|---|---|---|---|---|\n";
+  for (const SettingRow& row : setting_rows()) {
+    std::string key = *row.key ? code(row.key) : "–";
+    for (const char* alias : row.aliases) key += " (" + code(alias) + ")";
+    const std::string unit = row.dimension == UnitDimension::dimensionless ? "–"
+                                                                           : unit_list(row.dimension).substr(0, unit_list(row.dimension).find(','));
+    std::cout << "| " << key << " | " << (*row.flag ? code(row.flag) : "–") << " | " << unit << " | " << doors(row.doors) << " | " << row.fallback
+              << " | " << row.range << " | " << row.help << " |\n";
   }
 }

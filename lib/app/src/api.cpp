@@ -27,6 +27,7 @@
 #include "trebuchet/app/design_input.hpp"
 #include "trebuchet/app/design_record.hpp"
 #include "trebuchet/app/search_records.hpp"
+#include "trebuchet/app/settings.hpp"
 #include "trebuchet/app/shot_record.hpp"
 #include "trebuchet/app/text_input.hpp"
 #include "trebuchet/app/units.hpp"
@@ -39,15 +40,9 @@ namespace {
 using json = nlohmann::json;
 using ordered_json = nlohmann::ordered_json;
 
-// The messages of this API name each value by its key, bare: "L1", "design.L1". The core names
-// the air's values as the programs' options do; here they are keys of "air".
+// The messages of this API name each value by its key, bare: "L1", "design.L1"; an input's
+// alias by its key. A setting is named as the request gave it.
 std::string key_word(std::string_view name) {
-  if (name == "air_density") return "air.density";
-  if (name == "cd") return "air.drag_coefficient";
-  if (name == "projectile") return "air.projectile_density";
-  if (name == "wind") return "air.wind";
-  if (name == "drag_in_sling") return "air.drag_in_sling";
-  if (name == "tol") return "tolerance";
   if (const InputField* field = find_field(name)) return field->key;  // an input's key, as the request gives it
   return std::string(name);
 }
@@ -72,12 +67,16 @@ void require_keys(const json& request, const std::vector<std::string>& known, co
     }
 }
 
-// The keys every request that shoots takes.
-const std::vector<std::string> settings_keys = {"air", "release", "n", "target_level", "range_from", "modulus_of_rupture"};
-
-std::vector<std::string> with_settings(std::vector<std::string> keys) {
-  for (const std::string& key : settings_keys)
-    if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+// The keys a request of `door` takes: its own, the settings of that door (settings.def) and,
+// where it shoots a design, the material's rows, which a request gives over the design's own as
+// the programs' flags do over a file's.
+std::vector<std::string> keys_of(unsigned door, unsigned material_operation = 0) {
+  std::vector<std::string> keys;
+  for (const std::string& name : setting_names(door))
+    if (name.find('.') == std::string::npos) keys.push_back(name);  // "air.density" is a key of "air"
+  for (const InputField& field : input_fields())
+    if (field.group == FieldGroup::material && (field.operations & material_operation))
+      for (const char* name : names_of(field)) keys.emplace_back(name);
   return keys;
 }
 
@@ -92,52 +91,80 @@ bool flag_of(const json& request, const std::string& key) {
   return request[key].get<bool>();
 }
 
-// The shot's settings as a request's keys give them.
-SettingsValues settings_values_of(const json& request) {
+// A request's value as a flag gives it: a string as it is, a number as the shortest text that
+// reads back the same, true or false.
+std::string value_text(const json& value, const std::string& name) {
+  if (value.is_string()) return value.get<std::string>();
+  if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
+  if (value.is_number_integer()) return value.dump();  // 500000, not 5e+05: a whole number reads back as one
+  if (value.is_number()) {
+    const double x = value.get<double>();
+    return x == std::floor(x) && std::fabs(x) < 1e15 ? std::to_string(static_cast<long long>(x)) : format_number(x);
+  }
+  throw Error(ErrorKind::usage, "{{" + name + "}}: " + brief_json(value) + " must be a number, a text or true or false");
+}
+
+// The settings of a request of `door` (settings.def), each read as its flag is (read_setting),
+// named as the request gives it. "air" may be an object of the air's keys (density,
+// drag_coefficient, projectile_density, wind, drag_in_sling: the rows' aliases "air.density", ...).
+SettingsValues settings_values_of(const json& request, unsigned door) {
   SettingsValues v;
-  v.target_level = read_value(request, "target_level", UnitDimension::length, "");
-  if (request.contains("release")) v.base.criterion.release = parse_release(text_of(request["release"], "release"), "{{release}}");
-  if (const auto n = positive_value(request, "n", UnitDimension::dimensionless, true)) v.base.criterion.n = *n;  // eq:Q_n
-  if (request.contains("range_from")) v.base.range_from_release = parse_range_from(text_of(request["range_from"], "range_from"), "{{range_from}}");
-  if (request.contains("air")) {
-    const json& given = request["air"];
-    if (given.is_object()) {
-      require_keys(given, {"density", "drag_coefficient", "projectile_density", "wind", "drag_in_sling"}, "air");
+  std::vector<Setting> given;
+  const auto read = [&](const SettingRow& row, const json& value, const std::string& name) {
+    if (std::find(given.begin(), given.end(), row.id) != given.end())
+      throw Error(ErrorKind::usage, "{{" + name + "}} is " + row.key + ", given already; keep one");
+    given.push_back(row.id);
+    read_setting(row.id, value_text(value, name), v, "{{" + name + "}}");
+  };
+  for (const auto& [key, value] : request.items()) {
+    const SettingRow* row = find_setting(key, door);
+    if (!row || !read_by_table(row->id)) continue;  // the request's own key, or the material's
+    if (row->id != Setting::air || value.is_boolean()) {
+      read(*row, value, key);
+    } else if (value.is_object()) {
       v.air = true;
-      if (given.contains("drag_in_sling")) {
-        if (!given["drag_in_sling"].is_boolean())
-          throw Error(ErrorKind::usage, "air.drag_in_sling: " + brief_json(given["drag_in_sling"]) + " is neither true nor false");
-        v.drag_in_sling = given["drag_in_sling"].get<bool>();
+      std::vector<std::string> known;
+      for (const std::string& name : setting_names(door))
+        if (name.rfind("air.", 0) == 0) known.push_back(name.substr(4));
+      for (const auto& [inner, detail] : value.items()) {
+        const SettingRow* detail_row = find_setting("air." + inner, door);
+        if (!detail_row) {
+          refuse_near_miss(inner, known, "air");
+          throw Error(ErrorKind::usage, "air: '" + inner + "' is no key of the air; use " + join(known, ", "));
+        }
+        read(*detail_row, detail, "air." + inner);
       }
-      v.air_density = read_value(given, "density", UnitDimension::density, "air");
-      if (given.contains("drag_coefficient") && given["drag_coefficient"].is_string() &&
-          (given["drag_coefficient"] == "Re" || given["drag_coefficient"] == "Cd(Re)"))
-        v.drag_of_reynolds = true;
-      else
-        v.drag_coefficient = read_value(given, "drag_coefficient", UnitDimension::dimensionless, "air");
-      // A material's name (stone, iron, lead, clay) or a density.
-      const json density = given.value("projectile_density", json());
-      const ProjectileMaterial* named = density.is_string() ? find_projectile_material(density.get<std::string>()) : nullptr;
-      v.projectile_density = named ? std::optional(named->density) : read_value(given, "projectile_density", UnitDimension::density, "air");
-      v.wind = read_value(given, "wind", UnitDimension::speed, "air");
-    } else if (given.is_boolean() || given == "vacuum") {
-      v.air = given == true;
-    } else {
+    } else if (value != "vacuum") {
       throw Error(
           ErrorKind::usage,
-          "{{air}}: " + brief_json(given) + " is no air; give false (vacuum), true (the standard air) or an object like {\"wind\": \"5m/s\"}");
+          "{{air}}: " + brief_json(value) + " is no air; give false (vacuum), true (the standard air) or an object like {\"wind\": \"5m/s\"}");
     }
   }
   return v;
 }
 
 // The shot's settings from a request's keys, checked as the programs check their options.
-ShotSettings settings_of(const json& request) { return shot_settings(settings_values_of(request)); }
+ShotSettings settings_of(const json& request, unsigned door) { return shot_settings(settings_values_of(request, door)); }
 
-MaterialOverrides overrides_of(const json& request) {
-  MaterialOverrides material;
-  material.modulus_of_rupture = positive_value(request, "modulus_of_rupture", UnitDimension::pressure);
-  return material;
+// The material's rows a request gives over its design's own, each positive.
+DesignValues material_of_request(const json& request, unsigned operation) {
+  DesignValues v;
+  for (const InputField& field : input_fields())
+    if (field.group == FieldGroup::material && (field.operations & operation))
+      for (const char* name : names_of(field))
+        if (const auto value = positive_value(request, name, field.dimension)) {
+          if (v.*field.member)
+            throw Error(ErrorKind::usage, std::string("{{") + field.key + "}} and {{" + name + "}} are one value given twice; keep one");
+          v.*field.member = value;
+        }
+  return v;
+}
+
+// `values` with the material rows of `material` put over its own.
+DesignValues with_material(DesignValues values, const DesignValues& material) {
+  for (const InputField& field : input_fields())
+    if (field.group == FieldGroup::material && material.*field.member) values.*field.member = material.*field.member;
+  return values;
 }
 
 // The values of a request's object (a design's or the attested) that `operation` takes, each
@@ -215,7 +242,7 @@ ErrorKind kind_of(const std::string& name) {
 
 ordered_json design(const json& request) {
   std::vector<std::string> known = input_names(op_given | op_calculator);
-  known.insert(known.end(), {"branch", "extrapolate", "scale"});
+  for (const std::string& key : keys_of(req_design)) known.push_back(key);
   require_keys(request, known, "design");
   const ScalingTable& table = builtin_scaling_table();
   DesignRequest r;
@@ -238,12 +265,7 @@ ordered_json design(const json& request) {
   if (request.contains("branch")) r.branch = parse_branch_choice(text_of(request["branch"], "branch"));
   r.extrapolate = flag_of(request, "extrapolate");
   if (const auto scale = positive_value(request, "scale", UnitDimension::dimensionless)) r.scale = *scale;
-  MaterialOverrides material;
-  material.beta2 = read_value(request, "beta2", UnitDimension::dimensionless, "");
-  material.youngs_modulus = read_value(request, "youngs_modulus", UnitDimension::pressure, "");
-  material.wood_density = read_value(request, "wood_density", UnitDimension::density, "");
-  material.g = read_value(request, "g", UnitDimension::acceleration, "");
-  r.material = material.over(table.reference);
+  r.material = material_of(material_of_request(request, op_calculator), table.reference);
   check_material(r.material);
   OptimalEngine optimal = design_optimal_engine(table, r);
   for (std::string& warning : optimal.warnings) warning = with_words(warning, key_word);
@@ -251,7 +273,9 @@ ordered_json design(const json& request) {
 }
 
 ordered_json optimize(const json& request) {
-  require_keys(request, with_settings(input_names(op_optimize)), "optimize");
+  std::vector<std::string> known = input_names(op_optimize);
+  for (const std::string& key : keys_of(req_optimize)) known.push_back(key);
+  require_keys(request, known, "optimize");
   // The capacity, the stone and the material must be positive, as the programs' options are.
   DesignValues v;
   for (const InputField& field : input_fields()) {
@@ -265,19 +289,19 @@ ordered_json optimize(const json& request) {
     }
   }
   ordered_json all = ordered_json::array();
-  for (const Optimum& optimum : trebuchet::optimize(optimize_request(v, settings_of(request), overrides_of(request))))
-    all.push_back(optimum_json(optimum, 0));
+  for (const Optimum& optimum : trebuchet::optimize(optimize_request(v, settings_of(request, req_optimize)))) all.push_back(optimum_json(optimum, 0));
   return all;
 }
 
 ordered_json shot(const json& request) {
-  require_keys(request, with_settings({"design", "tolerance", "fit", "series"}), "shot");
+  require_keys(request, keys_of(req_shot, op_shot), "shot");
   if (!request.contains("design"))
     throw Error(ErrorKind::usage, "{{design}} is missing; give the engine, e.g. {\"design\": {\"L1\": \"6.13m\", ...}}");
+  const SettingsValues settings = settings_values_of(request, req_shot);
   DesignCheck check;
-  check.settings = settings_of(request);
-  check.material = overrides_of(request);
-  if (const auto tolerance = positive_value(request, "tolerance", UnitDimension::dimensionless)) check.tolerance = *tolerance;
+  check.settings = shot_settings(settings);
+  check.material = material_of_request(request, op_shot);
+  check.tolerance = settings.tol.value_or(check.tolerance);
   check.fit = flag_of(request, "fit");
   const DesignReport report = check_design(read_engine(request["design"], "design"), check);
   ordered_json answer = report.json;
@@ -288,7 +312,7 @@ ordered_json shot(const json& request) {
 }
 
 ordered_json sweep(const json& request) {
-  require_keys(request, with_settings({"design", "vary", "points"}), "sweep");
+  require_keys(request, keys_of(req_sweep, op_shot), "sweep");
   if (!request.contains("design"))
     throw Error(ErrorKind::usage, "{{design}} is missing; give the engine, e.g. {\"design\": {\"L1\": \"6.13m\", ...}, \"vary\": \"L4=2m..5m\"}");
   if (!request.contains("vary")) throw Error(ErrorKind::usage, "{{vary}} is missing; give the value to vary and its range, e.g. \"L4=2m..5m\"");
@@ -300,55 +324,48 @@ ordered_json sweep(const json& request) {
   json passed = json::object();
   const DesignValues values = read_design_values(request["design"], "design", &passed);
   DesignCheck check;
-  check.settings = settings_of(request);
-  check.material = overrides_of(request);
+  check.settings = settings_of(request, req_sweep);
+  check.material = material_of_request(request, op_shot);
   if (what_if.field->group != FieldGroup::release) check.settings.release_at = release_of(values, "design");
   return what_if_json(what_if, run_what_if(values, "design", what_if, check, 1), key_word);
 }
 
 ordered_json complete(const json& request) {
-  require_keys(request, with_settings({"attested"}), "complete");
+  require_keys(request, keys_of(req_complete, op_complete), "complete");
   if (!request.contains("attested"))
     throw Error(ErrorKind::usage,
                 "{{attested}} is missing; give what the source attests, e.g. {\"attested\": {\"Lb\": \"9.5m\", \"M\": \"3t\", \"m\": \"50kg\"}}");
   json passed = json::object();
-  const DesignValues attested = values_of(request["attested"], op_complete, "attested", middle, passed);
-  ordered_json answer = completion_answer(completion_request(attested, settings_of(request), overrides_of(request)));
+  const DesignValues attested = with_material(values_of(request["attested"], op_complete, "attested", middle, passed),
+                                              material_of_request(request, op_complete));
+  ordered_json answer = completion_answer(completion_request(attested, settings_of(request, req_complete)));
   if (!passed.empty()) answer["passed"] = passed;  // the attested keys no reader knows, as given
   return answer;
 }
 
 ordered_json monte_carlo(const json& request) {
-  require_keys(request, with_settings({"design", "attested", "samples", "seed", "first", "count", "outcomes", "claim", "draws_csv"}), "monte_carlo");
+  require_keys(request, keys_of(req_monte_carlo, op_shot | op_complete), "monte_carlo");
   const bool completes = request.contains("attested");
   if (completes == request.contains("design"))
     throw Error(ErrorKind::usage, "give {{design}} (a shot of each sample) or {{attested}} (a completion of each sample), one of them");
   const std::string where = completes ? "attested" : "design";
   MonteCarloRequest run;
   json passed = json::object();
-  run.values = values_of(
-      request[where], completes ? op_complete : op_shot, where, [](const Spread& s) { return s.a; }, passed, &run.spreads);
+  const unsigned operation = completes ? op_complete : op_shot;
+  run.values = with_material(values_of(
+                                 request[where], operation, where, [](const Spread& s) { return s.a; }, passed, &run.spreads),
+                             material_of_request(request, operation));
   run.completes = completes;
   run.where = where;
-  run.material = overrides_of(request);
-  run.settings = settings_values_of(request);
+  run.settings = settings_values_of(request, req_monte_carlo);
   const ShotSettings settings = shot_settings(run.settings);
   // As the program does: the design at each spread's first number must be an engine.
   const std::int64_t shots = shots_per_sample(run);
-  const double samples_given =
-      read_value(request, "samples", UnitDimension::dimensionless, "").value_or(completes ? default_completion_samples : default_shot_samples);
-  if (!(samples_given >= 1 && samples_given <= max_run_shots) || samples_given != std::floor(samples_given))
-    throw Error(ErrorKind::bad_number,
-                "{{samples}} = " + format_significant(samples_given, 6) + " must be a whole number from 1 to " + std::to_string(max_run_shots));
-  const int samples = static_cast<int>(samples_given);
+  const int samples = run.settings.samples.value_or(completes ? default_completion_samples : default_shot_samples);
   check_monte_carlo_work(samples, shots, completes ? "completions" : "shots");
-  const double seed_value = read_value(request, "seed", UnitDimension::dimensionless, "").value_or(1);
-  if (!(seed_value >= 0 && seed_value < 9007199254740992.0) || seed_value != std::floor(seed_value))
-    throw Error(ErrorKind::bad_number, "{{seed}} = " + format_significant(seed_value, 17) + " must be a whole number from 0 to 2^53");
-  const auto seed = static_cast<std::uint64_t>(seed_value);
+  const std::uint64_t seed = run.settings.seed.value_or(1);
   const auto sample = [&](std::mt19937_64& random) { return sample_outcome(run, random, key_word); };
-  const std::optional<double> claim = positive_value(request, "claim", UnitDimension::length);
-  if (claim) check_ordinary(*claim, 1e-6, 1e6, "claim", "m", "claimed range");
+  const std::optional<double> claim = run.settings.claim;
 
   std::vector<SampleOutcome> outcomes;
   if (request.contains("first") || request.contains("count")) {  // one worker's part
@@ -424,7 +441,7 @@ ordered_json monte_carlo(const json& request) {
 }
 
 ordered_json value(const json& request) {
-  require_keys(request, {"key", "text"}, "value");
+  require_keys(request, keys_of(req_value), "value");
   const std::string key = request.contains("key") ? text_of(request["key"], "key") : "";
   const InputField* field = find_field(key);
   if (!field) throw Error(ErrorKind::usage, "{{key}}: '" + key + "' is no input's key; use one of " + join(input_names(~0u), ", "));
@@ -461,7 +478,26 @@ ordered_json fields(const json& request) {
                     {"default", field.fallback},
                     {"range", field.range}});
   }
-  return {{"fields", rows}};
+  // The settings (settings.def): each with the requests that take it, by their names here.
+  const std::pair<unsigned, const char*> request_names[] = {{req_design, "design"},     {req_shot, "shot"},         {req_sweep, "sweep"},
+                                                            {req_optimize, "optimize"}, {req_complete, "complete"}, {req_monte_carlo, "monte_carlo"},
+                                                            {req_value, "value"}};
+  ordered_json settings = ordered_json::array();
+  for (const SettingRow& row : setting_rows()) {
+    if (!*row.key) continue;  // the programs' alone
+    ordered_json requests = ordered_json::array();
+    for (const auto& [bit, name] : request_names)
+      if (row.doors & bit) requests.push_back(name);
+    settings.push_back({{"key", row.key},
+                        {"flag", row.flag},
+                        {"aliases", row.aliases},
+                        {"dimension", dimension_name(row.dimension)},
+                        {"requests", requests},
+                        {"help", row.help},
+                        {"default", row.fallback},
+                        {"range", row.range}});
+  }
+  return {{"fields", rows}, {"settings", settings}};
 }
 
 std::string answer_text(Request request, const std::string& text, const std::string& where_documented) {

@@ -10,9 +10,15 @@
 namespace trebuchet {
 
 ShotSettings shot_settings(const SettingsValues& v) {
-  ShotSettings settings = v.base;
+  ShotSettings settings;
+  settings.criterion.release = v.quality.value_or(settings.criterion.release);
+  settings.criterion.n = v.n.value_or(settings.criterion.n);
+  settings.integrator.stepper = v.stepper.value_or(settings.integrator.stepper);
+  settings.integrator.rtol = v.rtol.value_or(settings.integrator.rtol);
+  settings.integrator.atol = v.atol.value_or(settings.integrator.atol);
+  settings.range_from_release = v.range_from_release.value_or(false);
   settings.target_level = v.target_level.value_or(0);
-  const bool air_details = v.air_density || v.drag_coefficient || v.drag_of_reynolds || v.projectile_density || v.wind;
+  const bool air_details = v.air_density || v.cd || v.cd_of_reynolds || v.projectile || v.wind;
   if (air_details && !v.air)
     throw Error(ErrorKind::usage,
                 "{{air_density}}, {{cd}}, {{projectile}} and {{wind}} describe the air; add {{air}} to fly through it (vacuum is the default)");
@@ -24,11 +30,11 @@ ShotSettings shot_settings(const SettingsValues& v) {
     if (v.air_density && !(*v.air_density > 0))
       throw Error(ErrorKind::bad_number, "{{air_density}}: " + format_significant(*v.air_density, 6) + " kg/m3 must be positive");
     air.density = v.air_density.value_or(air.density);
-    if (v.drag_of_reynolds)
+    if (v.cd_of_reynolds)
       air.drag_coefficient.reset();
-    else if (v.drag_coefficient)
-      air.drag_coefficient = v.drag_coefficient;
-    air.projectile_density = v.projectile_density.value_or(air.projectile_density);
+    else if (v.cd)
+      air.drag_coefficient = v.cd;
+    air.projectile_density = v.projectile.value_or(air.projectile_density);
     air.wind = v.wind.value_or(0);
     settings.air = air;
   }
@@ -36,18 +42,18 @@ ShotSettings shot_settings(const SettingsValues& v) {
   return settings;
 }
 
-CompletionRequest completion_request(const DesignValues& v, const ShotSettings& settings, const MaterialOverrides& material) {
+CompletionRequest completion_request(const DesignValues& v, const ShotSettings& settings) {
   CompletionRequest request;
   Attested& a = request.attested;
   a.Lb = v.Lb, a.L1 = v.L1, a.L2 = v.L2, a.H = v.H, a.L4 = v.L4, a.M = v.M, a.m = v.m, a.mb = v.mb, a.D = v.D, a.l = v.l;
   a.theta_i_deg = v.theta_i_deg, a.F = v.F;
-  request.material = material.over(material_of(v, Material{}));
+  request.material = material_of(v, Material{});
   request.settings = settings;
   request.parts = independent_parts(v);
   return request;
 }
 
-OptimizeRequest optimize_request(const DesignValues& v, const ShotSettings& settings, const MaterialOverrides& material) {
+OptimizeRequest optimize_request(const DesignValues& v, const ShotSettings& settings) {
   if (!v.R || v.T.has_value() == v.m.has_value())
     throw Error(
         ErrorKind::usage,
@@ -62,7 +68,7 @@ OptimizeRequest optimize_request(const DesignValues& v, const ShotSettings& sett
     throw Error(ErrorKind::usage,
                 "{{F}}: optimize builds the fixed counterweight and the floating arm with the counterweight at the short arm's end (L3 = 0); "
                 "leave out {{F}}");
-  request.material = material.over(material_of(v, Material{}));
+  request.material = material_of(v, Material{});
   request.settings = settings;
   if (v.l) {
     check_fixed_beam_ratio(*v.l, "{{l}}");
@@ -83,23 +89,12 @@ MonteCarloRequest with_draws(const MonteCarloRequest& request, const std::functi
   return sample;
 }
 
-namespace {
-
-// The engine of a sample's design, its material under the run's.
-Engine sample_engine(const MonteCarloRequest& sample) {
-  Engine engine = engine_record(sample.values, sample.where).engine;
-  engine.material = sample.material.over(engine.material);
-  return engine;
-}
-
-}  // namespace
-
 Verification sample_verification(const MonteCarloRequest& sample) {
   ShotSettings settings = shot_settings(sample.settings);
-  if (sample.completes) return complete_engine(completion_request(sample.values, settings, sample.material)).verification;
+  if (sample.completes) return complete_engine(completion_request(sample.values, settings)).verification;
   settings.loads = false;  // a sample reports R, T, eps and v
   settings.release_at = release_of(sample.values, sample.where);
-  return verify_engine(sample_engine(sample), settings);
+  return verify_engine(engine_record(sample.values, sample.where).engine, settings);
 }
 
 std::string describe_monte_carlo_release(const MonteCarloRequest& request) {
@@ -128,7 +123,7 @@ std::int64_t shots_per_sample(const MonteCarloRequest& request) {
     }
     return 1;
   }
-  return shots_per_completion([&] { return complete_engine(completion_request(first.values, settings, first.material)); });
+  return shots_per_completion([&] { return complete_engine(completion_request(first.values, settings)); });
 }
 
 std::vector<UncertainInput> uncertain_inputs(const MonteCarloRequest& request) {

@@ -71,15 +71,6 @@ DesignInputs read_design_inputs(const std::string& text, const std::string& path
   return in;
 }
 
-Material MaterialOverrides::over(Material base) const {
-  base.beta2 = beta2.value_or(base.beta2);
-  base.wood_density = wood_density.value_or(base.wood_density);
-  base.youngs_modulus = youngs_modulus.value_or(base.youngs_modulus);
-  base.modulus_of_rupture = modulus_of_rupture.value_or(base.modulus_of_rupture);
-  base.g = g.value_or(base.g);
-  return base;
-}
-
 void check_fixed_beam_ratio(double l, const std::string& name) {
   // Below l = 2 the long arm is hardly longer than the short one: no engine of the paper (l
   // from 3 to 59), and most shapes there leave no room for the counterweight arm at all.
@@ -95,7 +86,7 @@ void check_fixed_beam_ratio(double l, const std::string& name) {
 
 DesignReport check_design(const EngineRecord& record, const DesignCheck& check) {
   Engine engine = record.engine;
-  engine.material = check.material.over(engine.material);
+  engine.material = material_of(check.material, engine.material);
   if (record.mb_from_D) engine.mb = wood_beam_mass(engine);  // in the wood of the run
   ShotSettings settings = check.settings;  // the run's release over the design's own
   if (!settings.release_at) settings.release_at = record.release_at;

@@ -17,11 +17,14 @@ namespace trebuchet::api {
 nlohmann::ordered_json design(const nlohmann::json& request);
 
 /// One shot (trebuchet-verify --format json): "design" (an engine object, its parts as built
-/// among its keys), and the settings "air" (false, true or {density, drag_coefficient (a number
-/// or "Re"), projectile_density, wind, drag_in_sling}), "release" ("Q", "eps", "range"), "n", "target_level", "range_from" ("pivot",
-/// "release"), "tolerance" on a capacity the design carries, "modulus_of_rupture", "fit" (fit
-/// the design to its capacity first). With "series": true the answer adds "series", the motion
-/// the viewer draws (pictures.hpp's shot_series_json).
+/// among its keys), and the settings of settings.def that a shot takes, under the programs'
+/// names: "quality" ("Q", "eps", "range"; alias "release"), "n", "tol" on a capacity the design
+/// carries (alias "tolerance"), "stepper", "rtol", "atol", "target_level", "range_from" ("pivot",
+/// "release"), "air" (false, true or an object of density, drag_coefficient, projectile_density,
+/// wind, drag_in_sling), or its details as the flags give them ("air_density", "cd", "projectile",
+/// "wind", "drag_in_sling"); the material's keys (g, youngs_modulus, wood_density,
+/// modulus_of_rupture) over the design's own; "fit" (fit the design to its capacity first). With
+/// "series": true the answer adds "series", the motion the viewer draws (shot_series_json).
 nlohmann::ordered_json shot(const nlohmann::json& request);
 
 /// A what-if sweep (trebuchet-verify sweep --format json, what_if.hpp): "design" (as shot's),
@@ -55,10 +58,12 @@ nlohmann::ordered_json monte_carlo(const nlohmann::json& request);
 /// "text": "19ft"} gives {"key", "value": SI (angles in degrees)}. For a page's typed boxes.
 nlohmann::ordered_json value(const nlohmann::json& request);
 
-/// The table of inputs (fields.hpp), for a page or a notebook that builds its forms from it:
-/// {"fields": [{key, flag, aliases, dimension, unit, units (the suffixes taken), group,
-/// operations ("given", "design" for the calculator's settings, "shot", "complete", "optimize"),
-/// label, help, example, default, range}, ...]}. The request is {}.
+/// The table of inputs (fields.hpp) and the table of settings (settings.hpp), for a page or a
+/// notebook that builds its forms from them: {"fields": [{key, flag, aliases, dimension, unit,
+/// units (the suffixes taken), group, operations ("given", "design" for the calculator's
+/// settings, "shot", "complete", "optimize"), label, help, example, default, range}, ...],
+/// "settings": [{key, flag, aliases, dimension, requests (the requests here that take it), help,
+/// default, range}, ...]}. The request is {}.
 nlohmann::ordered_json fields(const nlohmann::json& request);
 
 /// A request as text, for callers across a language boundary (the page's bindings, the Python

@@ -14,34 +14,23 @@
 #include "trebuchet/optimizer.hpp"
 #include "trebuchet/verification.hpp"
 #include "trebuchet/app/fields.hpp"
+#include "trebuchet/app/settings.hpp"
 #include "trebuchet/app/verifier.hpp"
 
 namespace trebuchet {
-
-/// The settings of a shot as given: the release and the target (in `base`, with the integrator),
-/// the target level, and the air, which its details describe only when `air` is on.
-struct SettingsValues {
-  ShotSettings base;  ///< criterion, integrator, range_from_release; its air and level are set from the values below
-  std::optional<double> target_level;  ///< [m]; 0 when not given
-  bool air = false;
-  std::optional<double> air_density, drag_coefficient, projectile_density, wind;  ///< [kg/m^3], -, [kg/m^3], [m/s]
-  bool drag_of_reynolds = false;  ///< Cd(Re) of a smooth sphere instead of a constant Cd
-  bool drag_in_sling = false;  ///< the air acts before the release too
-};
 
 /// The settings of a shot from their values, checked (check_shot_settings): details of the air
 /// without the air are refused, as is drag in the sling. Messages name {{air_density}}, {{cd}},
 /// {{projectile}}, {{wind}} and {{drag_in_sling}}.
 ShotSettings shot_settings(const SettingsValues& values);
 
-/// complete's request: the attested values (engine, stand-ins, parts and material; `material`
-/// over the values' own), under `settings`.
-CompletionRequest completion_request(const DesignValues& attested, const ShotSettings& settings, const MaterialOverrides& material);
+/// complete's request: the attested values (engine, stand-ins, parts and material), under `settings`.
+CompletionRequest completion_request(const DesignValues& attested, const ShotSettings& settings);
 
 /// optimize's request: R with T or with the stone's m, theta_i and F (the standard 30 deg, 2/3
 /// when not given), a beam ratio l to hold, the material, the settings. Throws Error(usage) for a
 /// capacity that is not R with one of T and m, naming {{R}}, {{T}} and {{m}}.
-OptimizeRequest optimize_request(const DesignValues& values, const ShotSettings& settings, const MaterialOverrides& material);
+OptimizeRequest optimize_request(const DesignValues& values, const ShotSettings& settings);
 
 /// A value of a Monte Carlo run given as a range or a spread, and where its draw goes: a design's
 /// value or a setting's (the target level, the wind, the air's density).
@@ -56,7 +45,6 @@ struct SpreadInput {
 struct MonteCarloRequest {
   DesignValues values;
   SettingsValues settings;
-  MaterialOverrides material;
   std::vector<SpreadInput> spreads;  ///< in the order they are drawn
   bool completes = false;  ///< complete each sample (attested values) instead of shooting it
   std::string where;  ///< how messages name the design's values: "" flags ("--M"), "design" a request's ("design.M")

@@ -38,16 +38,10 @@ DesignInputs read_design_inputs(const std::string& text, const std::string& path
 /// arm) or from max_beam_ratio up.
 void check_fixed_beam_ratio(double l, const std::string& name);
 
-/// The material of a run over a design's own: eq:kMkD's wood, beta2 and g where given.
-struct MaterialOverrides {
-  std::optional<double> beta2, wood_density, youngs_modulus, modulus_of_rupture, g;  ///< scaled; [kg/m^3]; [Pa]; [Pa]; [m/s^2]
-  Material over(Material base) const;
-};
-
 /// How each design of a run is checked and reported.
 struct DesignCheck {
   ShotSettings settings;
-  MaterialOverrides material;
+  DesignValues material;  ///< its material rows (the flags', a request's top-level g, ...) over each design's own
   double tolerance = 0.02;  ///< relative, on a predicted R and T
   bool fit = false;  ///< fit the design's shape to its capacity first
   bool csv = false;  ///< also the CSV cells of each design
