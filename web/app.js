@@ -11,7 +11,14 @@
   let INPUTS = [], QUANTITIES = [], ATTESTED = [], ENGINE = [];
   const EXAMPLES = {};
   function readInputs() {
-    INPUTS = JSON.parse(module.fields('{}')).fields;
+    const tables = JSON.parse(module.fields('{}'));
+    INPUTS = tables.fields;
+    // The settings' controls say what their rows say (settings.def): the flag's, the key's and the page's one text.
+    for (const [id, key] of [['air', 'air'], ['cd', 'cd'], ['wind', 'wind'], ['release', 'quality'], ['target-level', 'target_level'], ['range-from', 'range_from']]) {
+      const row = tables.settings.find((s) => s.key === key);
+      const control = document.getElementById(id);
+      if (row && control) control.title = row.help + (row.default ? ' (default ' + row.default + ')' : '');
+    }
     const givens = INPUTS.filter((f) => f.operations.includes('given'));
     QUANTITIES = givens.filter((f) => f.group === 'capacity').concat(givens.filter((f) => f.group !== 'capacity')).map((f) => f.key);
     ATTESTED = INPUTS.filter((f) => f.operations.includes('complete') && (f.group === 'engine' || f.group === 'alternative')).map((f) => [f.key, f.label]);
@@ -72,7 +79,7 @@
     }
   }
   function settings() {
-    const s = { release: state.release, target_level: state.target_level, range_from: state.range_from };
+    const s = { quality: state.release, target_level: state.target_level, range_from: state.range_from };
     if (state.air) {
       s.air = { drag_coefficient: /^re$/i.test(state.cd.trim()) ? 'Re' : state.cd, wind: state.wind,
         projectile_density: state.projectile === 'density' ? state.projectile_density : state.projectile };
