@@ -115,6 +115,8 @@ EngineParts independent_parts(const DesignValues& v) {
   p.trough_friction = v.trough_friction.value_or(0);
   p.rope_diameter = v.rope_diameter.value_or(0);
   p.rope_cd = v.rope_cd.value_or(p.rope_cd);
+  p.rope_mass = v.rope_mass.value_or(0);
+  p.pouch_mass = v.pouch_mass.value_or(0);
   return p;
 }
 

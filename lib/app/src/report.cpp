@@ -151,6 +151,8 @@ std::string describe_parts(const Engine& engine, UnitSystem units) {
   if (p.trough_friction > 0) parts.push_back("trough friction " + format_significant(p.trough_friction, 3));
   if (p.rope_diameter > 0)
     parts.push_back("a rope of " + q(p.rope_diameter, UnitDimension::length) + " (Cd " + format_significant(p.rope_cd, 3) + ")");
+  if (p.rope_mass > 0 || p.pouch_mass > 0)
+    parts.push_back("a sling of " + q(p.rope_mass, UnitDimension::mass) + " rope and " + q(p.pouch_mass, UnitDimension::mass) + " pouch");
   return "  as built: " + join(parts, ", ") + "\n";
 }
 

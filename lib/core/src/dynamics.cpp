@@ -5,6 +5,7 @@
 
 #include "trebuchet/angles.hpp"
 #include "trebuchet/error.hpp"
+#include "trebuchet/sling.hpp"
 
 namespace trebuchet {
 
@@ -51,6 +52,11 @@ struct detail::Coefficients {
   double cm;  // the beam's centre of mass from the pivot, (l - 1)/2 for the uniform rod
   double psi_ratio, inv_L_psi;  // L/L_psi and 1/L_psi, L_psi = L + I_c/L: 1 and 1/L for a point counterweight
   const BuiltParts* parts;
+  // The sling (sling.hpp): the point mass at its end before the release (mu, or more with the
+  // sling's mass) and after it (0 unless it has mass: then it swings on, by phase II's
+  // equations), the rope's share at the tip, and its inertia beyond its ends' shares.
+  double end_mass, end_mass_released, tip_mass, rope_inertia;
+  bool swings() const { return end_mass_released > 0; }
 };
 
 namespace {
@@ -86,22 +92,34 @@ using Generalized = std::array<double, 3>;
 // I_c psi'' to Lagrange's equation for psi: its coefficient of psi'' becomes L_psi = L + I_c/L.
 // Inlined into each caller: it is most of an evaluation of the equations, the hot path of a
 // shot; without generalized forces (`forced` false) their terms are left out.
+//
+// A sling with mass (sling.hpp) puts the point mass `end` at the sling's end in place of mu, adds
+// its rope's share at the tip to the beam (tip_mass l^2 to its inertia, tip_mass l to its weight's
+// lever) and the rope's inertia beyond those, J = rope_inertia, to the sling's turn: J phi'' in
+// Lagrange's equation for phi, and in the trough, where phi follows theta, J (phi_th^2 th'' +
+// phi_th phi_thth th'^2) in theta's. After the release a sling with mass swings on: phase II's
+// equations with its own end mass. Without, every added term is an exact 0.
 template <bool forced = true>
 [[gnu::always_inline]] inline Accel solve(const Coefficients& e, Phase phase, const State& s, const Trig& trig, const Generalized& Q) {
-  const double I = e.I;
+  const double I = e.I + e.tip_mass * e.l * e.l, lever = e.mu_b * e.cm + e.tip_mass * e.l;
   const double c_tp = trig.ct * trig.cp + trig.st * trig.sp, s_tp = trig.st * trig.cp - trig.ct * trig.sp;
   // eq:EOM_I_2: -cos(th - psi) th'' + L_psi psi'' = -sin(th - psi) th'^2 - sin psi + Q_psi/L
   double b2 = -s_tp * s.theta_dot * s.theta_dot - trig.sp;
   if (forced) b2 += Q[1] * e.inv_L;
-  if (phase == Phase::trough || phase == Phase::released) {
-    double a11 = I + 1, b1 = e.L * s_tp * s.psi_dot * s.psi_dot - (e.mu_b * e.cm - 1) * trig.st;
+  if (phase == Phase::trough || (phase == Phase::released && !e.swings())) {
+    double a11 = I + 1, b1 = e.L * s_tp * s.psi_dot * s.psi_dot - (lever - 1) * trig.st;
     if (forced) b1 += Q[0];
     if (phase == Phase::trough) {  // eq:EOM_I_1 with f(th), df/dth of appendix A
       const double inv_cos_phi = 1 / trig.cf;
       const double f = (trig.ct * trig.cf + trig.st * trig.sf) * inv_cos_phi;  // cos(th - phi)/cos phi
       const double df = (-(trig.st * trig.cf - trig.ct * trig.sf) + trig.st * trig.st * e.inv_l4 * inv_cos_phi * inv_cos_phi) * inv_cos_phi;
-      a11 += e.mu * e.l * e.l * f * f;
-      b1 -= e.mu * e.l * e.l * f * df * s.theta_dot * s.theta_dot;
+      a11 += e.end_mass * e.l * e.l * f * f;
+      b1 -= e.end_mass * e.l * e.l * f * df * s.theta_dot * s.theta_dot;
+      if (e.rope_inertia != 0) {  // phi_th = sin th/(l4 cos phi), eq:EOM_I_3
+        const double phi_th = trig.st * e.inv_l4 * inv_cos_phi, phi_thth = (trig.ct + trig.sf * trig.st * phi_th * inv_cos_phi) * e.inv_l4 * inv_cos_phi;
+        a11 += e.rope_inertia * phi_th * phi_th;
+        b1 -= e.rope_inertia * phi_th * phi_thth * s.theta_dot * s.theta_dot;
+      }
     }
     // [a11, -L c_tp; -c_tp, L_psi] (th'', psi'') = (b1, b2): the second row gives psi'' = (b2 + c_tp th'')/L_psi.
     const double theta_ddot = (b1 + e.psi_ratio * c_tp * b2) / (a11 - e.psi_ratio * c_tp * c_tp);
@@ -109,17 +127,20 @@ template <bool forced = true>
   }
   // Phase II: eq:EOM_II_1, eq:EOM_I_2, eq:EOM_II_3.
   const double c_tf = trig.ct * trig.cf + trig.st * trig.sf, s_tf = trig.st * trig.cf - trig.ct * trig.sf;
-  const double ml2 = e.mu * e.l * e.l;
+  const double end = phase == Phase::released ? e.end_mass_released : e.end_mass, ml2 = end * e.l * e.l;
   // eq:EOM_II_1: a11 th'' - L cos(th - psi) psi'' - m l^2 l4 sin(th - phi) phi'' = b1
   const double a11 = ml2 + I + 1;
-  double b1 = e.L * s_tp * s.psi_dot * s.psi_dot - ml2 * e.l4 * c_tf * s.phi_dot * s.phi_dot - (e.mu * e.l + e.mu_b * e.cm - 1) * trig.st;
+  double b1 = e.L * s_tp * s.psi_dot * s.psi_dot - ml2 * e.l4 * c_tf * s.phi_dot * s.phi_dot - (end * e.l + lever - 1) * trig.st;
   if (forced) b1 += Q[0];
-  // eq:EOM_II_3: -l sin(th - phi) th'' + l l4 phi'' = l cos(th - phi) th'^2 + cos phi + Q_phi/(mu l l4)
+  // eq:EOM_II_3: -l sin(th - phi) th'' + l l4 phi'' = l cos(th - phi) th'^2 + cos phi + Q_phi/(mu l l4);
+  // the rope's inertia J makes l4 there l4 + J/(m l^2 l4), and `ratio` l4 over that.
   double b3 = e.l * c_tf * s.theta_dot * s.theta_dot + trig.cf;
-  if (forced) b3 += Q[2] / (e.mu * e.l * e.l4);
+  if (forced) b3 += Q[2] / (end * e.l * e.l4);
+  const double l4_turn = e.l4 + e.rope_inertia / (ml2 * e.l4), ratio = e.l4 / l4_turn;
   // psi'' = (b2 + c_tp th'')/L_psi and l4 phi'' = (b3/l + s_tf th''): substituted into the first row.
-  const double theta_ddot = (b1 + e.psi_ratio * c_tp * b2 + e.mu * e.l * s_tf * b3) / (a11 - e.psi_ratio * c_tp * c_tp - ml2 * s_tf * s_tf);
-  return {theta_ddot, (b2 + c_tp * theta_ddot) * e.inv_L_psi, (b3 * e.inv_l + s_tf * theta_ddot) * e.inv_l4};
+  const double theta_ddot = (b1 + e.psi_ratio * c_tp * b2 + ratio * end * e.l * s_tf * b3) / (a11 - e.psi_ratio * c_tp * c_tp - ratio * ml2 * s_tf * s_tf);
+  const double inv_l4_turn = e.rope_inertia != 0 ? 1 / l4_turn : e.inv_l4;
+  return {theta_ddot, (b2 + c_tp * theta_ddot) * e.inv_L_psi, (b3 * e.inv_l + s_tf * theta_ddot) * inv_l4_turn};
 }
 
 Vec2 operator*(Vec2 v, double k) { return {v.x * k, v.y * k}; }
@@ -193,8 +214,8 @@ AirForces air_forces(const Coefficients& e, Phase phase, const State& s, const T
 // The forces between the bodies at given accelerations (Newton's laws for each body).
 struct Internal {
   Vec2 hinge_force;  // F_H, on the counterweight
-  Vec2 sling_on_projectile;  // the sling's pull on the projectile
-  Vec2 sling_on_tip;  // the sling's pull on the beam's tip
+  Vec2 sling_on_projectile;  // the sling's pull on the projectile and its pouch
+  RopeEnds rope;  // the rope's pull on the beam's tip, and its ends' tension and shear
   Vec2 pivot_reaction;  // F_R, on the beam
   double normal_force = 0;  // trough on projectile (phase I)
   double trough_friction = 0;  // along x on the projectile (phase I)
@@ -220,25 +241,30 @@ double sign(double x) { return (x > 0) - (x < 0); }
   out.projectile_acceleration = {e.l * (-st * td * td + ct * a.theta + e.l4 * (cf * fd * fd + sf * out.phi_ddot)),
                                  e.l * (ct * td * td + st * a.theta + e.l4 * (sf * fd * fd - cf * out.phi_ddot))};
   const Vec2& p_acc = out.projectile_acceleration;
+  const Vec2 tip_acc{e.l * (ct * a.theta - st * td * td), e.l * (st * a.theta + ct * td * td)};
+  const BuiltParts::Sling& sling = e.parts->sling;
+  // What the sling's end carries: the projectile and the pouch until the release, the pouch after.
+  const double carried = phase == Phase::released ? sling.pouch : e.mu + sling.pouch;
   if (phase == Phase::trough) {
     // The sling pulls with its tension T along it and, with the rope's drag, its share P across
     // it. Along x: mu a_x = T cos phi + P_x + friction + drag; along y (a_y = 0; the drag on the
     // stone is horizontal here): 0 = T sin phi + P_y + N - mu. Friction -mu_t sgn(v_x) N, so
     // T (cos phi + mu_t sgn(v_x) sin phi) = mu a_x - drag_x - P_x + mu_t sgn(v_x) (mu - P_y).
     const double slide = e.parts->trough_friction * sign(s.theta_dot * (ct * cf + st * sf));  // v_x = l cos(th - phi)/cos phi th'
-    const Vec2& across = air.rope_at_projectile;
-    const double tension = (e.mu * p_acc.x - air.on_projectile.x - across.x + slide * (e.mu - across.y)) / (cf + slide * sf);
+    const Vec2 across = air.rope_at_projectile + rope_mass_across(sling, e.l * e.l4, s.phi, out.phi_ddot, tip_acc);
+    const double tension = (carried * p_acc.x - air.on_projectile.x - across.x + slide * (carried - across.y)) / (cf + slide * sf);
     out.sling_on_projectile = {tension * cf + across.x, tension * sf + across.y};
-    out.normal_force = e.mu - tension * sf - across.y;
+    out.normal_force = carried - tension * sf - across.y;
     out.trough_friction = -slide * out.normal_force;
-  } else if (phase == Phase::lifted) {
-    out.sling_on_projectile = {e.mu * p_acc.x - air.on_projectile.x, e.mu * (p_acc.y + 1) - air.on_projectile.y};
+  } else if (phase == Phase::lifted || e.swings()) {
+    out.sling_on_projectile = {carried * p_acc.x - air.on_projectile.x, carried * (p_acc.y + 1) - air.on_projectile.y};
   }
-  // The rope, massless, passes on what pulls its ends and what the air puts on it.
-  out.sling_on_tip = {-out.sling_on_projectile.x + air.on_rope.x, -out.sling_on_projectile.y + air.on_rope.y};
+  // The rope passes on what pulls its ends, what the air puts on it and what its own mass needs.
+  out.rope = rope_ends(sling, s.phi, out.sling_on_projectile, tip_acc, p_acc, air.on_rope);
+  const Vec2& on_tip = out.rope.on_tip;
   // Beam (mass mu_b): mu_b a_CM = F_R - F_H (arm on beam) + sling on tip + mu_b g.
   const Vec2 cm_acc{e.cm * (ct * a.theta - st * td * td), e.cm * (st * a.theta + ct * td * td)};
-  out.pivot_reaction = {e.mu_b * cm_acc.x + out.hinge_force.x - out.sling_on_tip.x, e.mu_b * (cm_acc.y + 1) + out.hinge_force.y - out.sling_on_tip.y};
+  out.pivot_reaction = {e.mu_b * cm_acc.x + out.hinge_force.x - on_tip.x, e.mu_b * (cm_acc.y + 1) + out.hinge_force.y - on_tip.y};
   return out;
 }
 
@@ -347,8 +373,25 @@ bool evaluate(const Coefficients& e, Phase phase, const State& s, const Trig& tr
 }  // namespace
 
 detail::Coefficients Dynamics::coefficients() const {
-  return {design_.l, design_.l4, L_,     design_.mu, design_.mu_b, inertia_,   cos_theta_i_,
-          inv_l_,    inv_l4_,    inv_L_, beam_cm_,   psi_ratio_,   inv_L_psi_, &design_.parts};
+  const BuiltParts::Sling& sling = design_.parts.sling;
+  return {design_.l,
+          design_.l4,
+          L_,
+          design_.mu,
+          design_.mu_b,
+          inertia_,
+          cos_theta_i_,
+          inv_l_,
+          inv_l4_,
+          inv_L_,
+          beam_cm_,
+          psi_ratio_,
+          inv_L_psi_,
+          &design_.parts,
+          sling.end_mass(design_.mu),
+          sling.end_mass(0),
+          sling.tip_mass(),
+          sling.inertia_beyond(design_.l * design_.l4)};
 }
 
 bool Dynamics::accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power) const {
@@ -401,7 +444,8 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   out.projectile = {e.l * (st - e.l4 * cf), e.l * (-ct - e.l4 * sf)};
   out.projectile_velocity = {e.l * (ct * td + e.l4 * sf * fd), e.l * (st * td - e.l4 * cf * fd)};
   out.normal_force = f.normal_force;
-  out.sling_on_tip = f.sling_on_tip;
+  out.sling_on_tip = f.rope.on_tip;
+  out.rope_tension_at_tip = f.rope.tension_at_tip, out.rope_shear_at_tip = f.rope.shear_at_tip, out.rope_shear_at_end = f.rope.shear_at_end;
   // The sling runs from the projectile to the tip along (cos phi, sin phi): its tension is the
   // pull on the projectile along it (the rope's drag adds a share across it); a sling can pull
   // but not push.
@@ -442,6 +486,10 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
     out.energies.projectile_potential = e.mu * out.projectile.y;
   }
   out.energy = out.energies.beam + out.energies.counterweight + out.energies.projectile_kinetic + out.energies.projectile_potential;
+  if (design_.parts.sling.any()) {
+    out.energies.sling = sling_energy(design_.parts.sling, e.l * e.l4, out.tip, {e.l * ct * td, e.l * st * td}, out.projectile, out.projectile_velocity, fd);
+    out.energy += out.energies.sling;
+  }
   return out;
 }
 

@@ -12,7 +12,7 @@
 namespace trebuchet {
 bool EngineParts::any() const {
   return beam_cm || beam_inertia || beam_gyration || D_hinge || D_tip || counterweight_inertia > 0 || axle.friction > 0 || hinge.friction > 0 ||
-      trough_friction > 0 || rope_diameter > 0;
+      trough_friction > 0 || rope_diameter > 0 || rope_mass > 0 || pouch_mass > 0;
 }
 
 TaperedBeam tapered_beam(double L1, double L2, double D_hinge, double D_tip, double wood_density) {
@@ -92,6 +92,7 @@ ScaledDesign scaled_design(const Engine& engine) {  // eq:Design
   b.axle_friction = friction_radius(p.axle) / L2;
   b.hinge_friction = friction_radius(p.hinge) / L2;
   b.trough_friction = p.trough_friction;
+  b.sling = {p.rope_mass / M, p.pouch_mass / M};
   return out;
 }
 
@@ -223,6 +224,10 @@ void check_parts(const Engine& e) {
                 "{{rope_diameter}} = " + say(p.rope_diameter) + " m: the sling's rope must have a diameter from 0 (no drag) to half its length, " +
                     say(e.L4 / 2) + " m; a rope is a few centimetres thick");
   check_ordinary(p.rope_cd, 1e-3, 1e2, "rope_cd", "", "drag coefficient of the rope");
+  for (const auto& [mass, key, what] : {std::tuple{p.rope_mass, "rope_mass", "the sling's rope"}, {p.pouch_mass, "pouch_mass", "the sling's pouch"}})
+    if (!(mass >= 0 && mass <= e.M))
+      throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + say(mass) + " kg: the mass of " + what +
+                                             " must lie from 0 (none) to the counterweight's, " + say(e.M) + " kg; a sling weighs grams to a few kg");
 }
 
 // The whipper's start besides theta_i: a frame of ordinary height, the rope off the arm on its

@@ -12,14 +12,17 @@ namespace {
 
 using Context = PhaseIntegrator::Context;
 
-std::size_t angles_of(Phase phase) { return phase == Phase::lifted ? 3 : 2; }
-std::size_t dimension_of(const Context& c) { return 2 * angles_of(c.phase) + (c.machine->dissipates() ? loss_count : 0); }
+// The sling swings in phase II, and in phase III where it has mass (Machine::swings_after_release).
+std::size_t angles_of(const Context& c) {
+  return c.phase == Phase::lifted || (c.phase == Phase::released && c.machine->swings_after_release()) ? 3 : 2;
+}
+std::size_t dimension_of(const Context& c) { return 2 * angles_of(c) + (c.machine->dissipates() ? loss_count : 0); }
 
 // The full state of an integrated vector: in the trough phi and phi_dot from eq:EOM_I_3 (on the
 // whipper's arm, from the arm).
 State state_of(const Context& c, const double y[]) {
   State s;
-  if (c.phase != Phase::lifted) {  // (th, psi, th', psi')
+  if (angles_of(c) == 2) {  // (th, psi, th', psi')
     s.theta = y[0], s.psi = y[1], s.theta_dot = y[2], s.psi_dot = y[3];
     if (c.phase == Phase::trough || c.phase == Phase::held) c.machine->complete_trough_state(s);
   } else {
@@ -33,7 +36,7 @@ int equations(double, const double y[], double dydt[], void* params) {
   State s;
   // A trial state near the singularity fails, and GSL retries with a shorter step.
   if (c->phase == Phase::trough && !(c->machine->trough_cos_phi(y[0]) > refuse_trough_cos_phi)) return GSL_FAILURE;
-  const std::size_t angles = angles_of(c->phase);
+  const std::size_t angles = angles_of(*c);
   if (angles == 2) {  // (th, psi, th', psi'); the accelerations need no phi in the trough
     s.theta = y[0], s.psi = y[1], s.theta_dot = y[2], s.psi_dot = y[3];
   } else {
@@ -242,6 +245,18 @@ StepEnd PhaseIntegrator::step_end(double t, const OdeVector& y, const Snapshot& 
 }
 
 State PhaseIntegrator::state(const OdeVector& y) const { return state_of(context_, y.data()); }
+
+std::size_t PhaseIntegrator::angles() const { return angles_of(context_); }
+
+OdeVector PhaseIntegrator::vector_of(const State& s, const Losses& work) const {
+  OdeVector y{};
+  if (angles() == 2)
+    y = {s.theta, s.psi, s.theta_dot, s.psi_dot};
+  else
+    y = {s.theta, s.psi, s.phi, s.theta_dot, s.psi_dot, s.phi_dot};
+  for (std::size_t k = 0; k + 2 * angles() < dimension(); ++k) y[2 * angles() + k] = work[k];
+  return y;
+}
 
 Losses PhaseIntegrator::work(const OdeVector& y) const {
   Losses out{};

@@ -51,7 +51,7 @@ class PhaseIntegrator {
   OdeVector at(double t0, const OdeVector& y0, double t1);
 
   std::size_t dimension() const { return system_.dimension; }
-  std::size_t angles() const { return context_.phase == Phase::lifted ? 3 : 2; }
+  std::size_t angles() const;
   // The work of each loss so far, in an integrated vector (0 for an engine without losses).
   Losses work(const OdeVector& y) const;
   // Whether an evaluation failed because friction left the accelerations unsettled.
@@ -61,6 +61,8 @@ class PhaseIntegrator {
 
   // The full state of an integrated vector (phi from eq:EOM_I_3 in phase I).
   State state(const OdeVector& y) const;
+  /// The integrated vector of a full state and the work done so far.
+  OdeVector vector_of(const State& state, const Losses& work) const;
 
   // y' = f(y): the angular speeds and accelerations at a step end, for the interpolant.
   OdeVector derivative(const OdeVector& y);

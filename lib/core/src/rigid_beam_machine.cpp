@@ -6,6 +6,7 @@
 #include "trebuchet/angles.hpp"
 #include "trebuchet/dynamics.hpp"
 #include "trebuchet/error.hpp"
+#include "trebuchet/sling.hpp"
 
 namespace trebuchet {
 
@@ -37,12 +38,25 @@ RigidBeamMachine::Share RigidBeamMachine::body_inertia(double th, const Path& a)
 //   Phase II:  J th'' + J' th'^2/2 - G sin th + mu p_th . (p'' + y) = 0,  p_phi . (p'' + y) = 0.
 //   Phase III: the body alone, J th'' + J' th'^2/2 = G sin th.
 //   Friction and the air add their generalized forces Q_theta and Q_phi to the right-hand sides.
+// A sling with mass (sling.hpp) puts the point mass `end` at the sling's end in place of mu, its
+// rope's share m_t at the tip into the body (J and G), and the rope's inertia beyond those, Js,
+// into the sling's turn: Js phi'' in phi's equation, and in the trough, where phi follows
+// theta, Js (phi_th^2 th'' + phi_th phi_thth th'^2) in theta's. After the release a sling with
+// mass swings on by phase II's equations with its own end mass.
 std::array<double, 3> RigidBeamMachine::accelerations_of(Phase phase, const State& s, Generalized extra) const {
-  const double l = design_.l, l4 = design_.l4, mu = design_.mu, G = weight_, th = s.theta, w2 = s.theta_dot * s.theta_dot;
+  const BuiltParts::Sling& sling_parts = design_.parts.sling;
+  const double l = design_.l, l4 = design_.l4, th = s.theta, w2 = s.theta_dot * s.theta_dot;
+  const double mu = sling_parts.end_mass(phase == Phase::released ? 0 : design_.mu), G = weight_ - sling_parts.tip_mass() * l;
   const Path a = pivot_path(th);
-  const Share J = body_inertia(th, a);
+  Share J = body_inertia(th, a);
+  if (sling_parts.tip_mass() > 0) {  // the tip (a + l sin th, -l cos th) moves by (a' + l cos th, l sin th) th'
+    const double m = sling_parts.tip_mass(), ct = std::cos(th), st = std::sin(th);
+    J.inertia += m * (a.slope * a.slope + 2 * a.slope * l * ct + l * l);
+    J.slope += m * (2 * a.slope * a.curve + 2 * l * (a.curve * ct - a.slope * st));
+  }
+  const double rope_inertia = sling_parts.inertia_beyond(l * l4);
   const double turns = counterweight_turns() ? 1 : 0;  // psi'' = theta'', or 0
-  if (phase == Phase::released) {
+  if (phase == Phase::released && !swings_after_release()) {
     const double th_dd = (G * std::sin(th) + extra.theta - J.slope * w2 / 2) / J.inertia;
     return {th_dd, turns * th_dd, 0};
   }
@@ -50,7 +64,12 @@ std::array<double, 3> RigidBeamMachine::accelerations_of(Phase phase, const Stat
     const double sin_phi = std::sin(s.phi), cos_phi = std::cos(s.phi), tan_phi = sin_phi / cos_phi;
     const double k = a.slope + l * (std::cos(th) + std::sin(th) * tan_phi);
     const double k_th = a.curve + l * (-std::sin(th) + std::cos(th) * tan_phi + std::sin(th) * std::sin(th) / (l4 * cos_phi * cos_phi * cos_phi));
-    const double th_dd = (G * std::sin(th) + extra.theta - (J.slope / 2 + mu * k * k_th) * w2) / (J.inertia + mu * k * k);
+    double inertia = J.inertia + mu * k * k, slope = J.slope / 2 + mu * k * k_th;
+    if (rope_inertia != 0) {  // phi_th = sin th/(l4 cos phi), eq:EOM_I_3
+      const double phi_th = std::sin(th) / (l4 * cos_phi), phi_thth = (std::cos(th) + sin_phi * std::sin(th) * phi_th / cos_phi) / (l4 * cos_phi);
+      inertia += rope_inertia * phi_th * phi_th, slope += rope_inertia * phi_th * phi_thth;
+    }
+    const double th_dd = (G * std::sin(th) + extra.theta - slope * w2) / inertia;
     const double phi_dd = (std::cos(th) * w2 + std::sin(th) * th_dd + l4 * sin_phi * s.phi_dot * s.phi_dot) /
         (l4 * cos_phi);  // eq:EOM_I_3 twice differentiated
     return {th_dd, turns * th_dd, phi_dd};
@@ -61,7 +80,7 @@ std::array<double, 3> RigidBeamMachine::accelerations_of(Phase phase, const Stat
   const Vec2 rest{(a.curve - l * std::sin(th)) * w2 + sling * cp * s.phi_dot * s.phi_dot,
                   l * std::cos(th) * w2 + sling * sp * s.phi_dot * s.phi_dot + 1};
   const auto dot = [](Vec2 u, Vec2 v) { return u.x * v.x + u.y * v.y; };
-  const double a11 = J.inertia + mu * dot(p_th, p_th), a12 = mu * dot(p_th, p_phi), a22 = mu * dot(p_phi, p_phi);
+  const double a11 = J.inertia + mu * dot(p_th, p_th), a12 = mu * dot(p_th, p_phi), a22 = mu * dot(p_phi, p_phi) + rope_inertia;
   const double b1 = G * std::sin(th) + extra.theta - J.slope * w2 / 2 - mu * dot(p_th, rest), b2 = extra.phi - mu * dot(p_phi, rest);
   const double det = a11 * a22 - a12 * a12;
   const double th_dd = (b1 * a22 - a12 * b2) / det, phi_dd = (a11 * b2 - a12 * b1) / det;
@@ -164,24 +183,41 @@ Snapshot RigidBeamMachine::snapshot_with(Phase phase, const State& s, const std:
   out.tip_height = out.tip.y - base;
   const double c = e.beam_cm();
   out.energies.beam = (e.beam_inertia() + e.mu_b * (path.slope * path.slope + 2 * path.slope * c * ct)) * th_d * th_d / 2 - e.mu_b * c * ct;
-  if (phase != Phase::released) {
+  const BuiltParts::Sling& sling_parts = e.parts.sling;
+  if (phase != Phase::released || swings_after_release()) {
     const double sp = std::sin(s.phi), cp = std::cos(s.phi), phi_d = s.phi_dot, sling = l * l4;
     out.projectile = {out.tip.x - sling * cp, out.tip.y - sling * sp};
     out.projectile_velocity = {(path.slope + l * ct) * th_d + sling * sp * phi_d, l * st * th_d - sling * cp * phi_d};
-    const Vec2 p_dd{pivot_acceleration.x + l * along.x + sling * (sp * a[2] + cp * phi_d * phi_d),
-                    l * along.y + sling * (-cp * a[2] + sp * phi_d * phi_d)};
-    // The sling pulls the projectile toward the tip along u = (cos phi, sin phi), beside its
-    // weight, the air and, in the trough, the trough's friction and its normal force, which
-    // holds the projectile's height.
-    out.sling_tension = phase == Phase::trough ? (mu * p_dd.x - friction - drag.x) / cp
-                                               : mu * (p_dd.x * cp + p_dd.y * sp + sp) - drag.x * cp - drag.y * sp;
-    out.normal_force = phase == Phase::trough ? mu - out.sling_tension * sp - drag.y : 0;
-    out.sling_on_tip = {-out.sling_tension * cp, -out.sling_tension * sp};
+    const Vec2 tip_acceleration{pivot_acceleration.x + l * along.x, l * along.y};
+    const Vec2 p_dd{tip_acceleration.x + sling * (sp * a[2] + cp * phi_d * phi_d), tip_acceleration.y + sling * (-cp * a[2] + sp * phi_d * phi_d)};
+    // The sling pulls the projectile (and its pouch, `carried`) toward the tip along u = (cos
+    // phi, sin phi), with a rope of mass also across it (sling.hpp), beside its weight, the air
+    // and, in the trough, the trough's friction and its normal force, which holds its height.
+    const double carried = phase == Phase::released ? sling_parts.pouch : mu + sling_parts.pouch;
+    Vec2 on_end;
+    if (phase == Phase::trough) {
+      const Vec2 across = rope_mass_across(sling_parts, sling, s.phi, a[2], tip_acceleration);
+      out.sling_tension = (carried * p_dd.x - friction - drag.x - across.x) / cp;
+      out.normal_force = carried - out.sling_tension * sp - drag.y - across.y;
+      on_end = {out.sling_tension * cp + across.x, out.sling_tension * sp + across.y};
+    } else {
+      out.sling_tension = carried * (p_dd.x * cp + p_dd.y * sp + sp) - drag.x * cp - drag.y * sp;
+      const double shear = sling_parts.any() ? (carried * p_dd.x - drag.x) * sp - (carried * (p_dd.y + 1) - drag.y) * cp : 0;
+      on_end = {out.sling_tension * cp + shear * sp, out.sling_tension * sp - shear * cp};
+    }
+    const RopeEnds rope = rope_ends(sling_parts, s.phi, on_end, tip_acceleration, p_dd, {});
+    out.sling_on_tip = rope.on_tip;
+    out.rope_tension_at_tip = rope.tension_at_tip, out.rope_shear_at_tip = rope.shear_at_tip, out.rope_shear_at_end = rope.shear_at_end;
     // The tip moves along (cos th, sin th) as theta grows; the sling pulls against that.
     out.sling_perpendicular = -(out.sling_on_tip.x * ct + out.sling_on_tip.y * st);
-    const Vec2& v = out.projectile_velocity;
-    out.energies.projectile_kinetic = mu * (v.x * v.x + v.y * v.y) / 2;
-    out.energies.projectile_potential = mu * out.projectile.y;
+    if (phase != Phase::released) {
+      const Vec2& v = out.projectile_velocity;
+      out.energies.projectile_kinetic = mu * (v.x * v.x + v.y * v.y) / 2;
+      out.energies.projectile_potential = mu * out.projectile.y;
+    }
+    if (sling_parts.any())
+      out.energies.sling = sling_energy(sling_parts, sling, out.tip, {(path.slope + l * ct) * th_d, l * st * th_d}, out.projectile,
+                                        out.projectile_velocity, phi_d);
   }
   // The beam of mass mu_b, its centre c along it, moves under its weight, the sling's pull, the
   // counterweight's force and the frame's.
@@ -193,6 +229,7 @@ Snapshot RigidBeamMachine::snapshot_with(Phase phase, const State& s, const std:
   if (const auto section = e.short_section())
     out.beam_moment = counterweight_moment - section->mass * section->cm * (st + ct * pivot_acceleration.x) - section->inertia * a[0];
   out.energy = out.energies.beam + out.energies.counterweight + out.energies.projectile_kinetic + out.energies.projectile_potential;
+  if (sling_parts.any()) out.energy += out.energies.sling;
   return out;
 }
 

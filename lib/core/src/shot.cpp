@@ -343,8 +343,7 @@ void record_trace(std::vector<TracePoint>* trace, PhaseIntegrator& integrator, c
 template <class EachStep>
 void follow_released(const ScaledDesign& e, const IntegratorSettings& settings, const State& release, const Losses& work, double t_release,
                      PhaseIntegrator& released, EachStep each_step) {
-  OdeVector y = {release.theta, release.psi, release.theta_dot, release.psi_dot};
-  for (std::size_t k = 0; k + 4 < released.dimension(); ++k) y[4 + k] = work[k];
+  OdeVector y = released.vector_of(release, work);
   const double t_end = 2 * t_release;
   double t = t_release, h = 1e-3;
   PinWatch pins;

@@ -93,7 +93,10 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
     const double energy_unit = Mg * L2;
     out.energy.delta_U = design.energy_drop() * energy_unit;
     out.energy.projectile = r.energy_at_target * energy_unit;
-    out.energy.engine = (at_release.energies.beam + at_release.energies.counterweight - at_rest) * energy_unit;
+    // The sling's, from its start along the base: what it took by the release.
+    const double sling_at_start = -(design.parts.sling.rope + design.parts.sling.pouch) * design.pivot_height();
+    out.energy.engine =
+        (at_release.energies.beam + at_release.energies.counterweight - at_rest + at_release.energies.sling - sling_at_start) * energy_unit;
     for (int k = 0; k < loss_count; ++k) out.energy.losses[k] = shot.work[k] * energy_unit;
   }
   out.FS_perp = out.FS_perp_mg * engine.m * g, out.FR = out.FR_Mg * Mg, out.dFRh = out.dFRh_Mg * Mg;

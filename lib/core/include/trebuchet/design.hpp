@@ -40,6 +40,20 @@ struct BuiltParts {
   /// rho_air Cd d L2^2/(2 M) of the sling's rope of diameter d: its drag per scaled length is
   /// this times the square of the air's speed across it. Acts only with `drag`.
   double rope_drag = 0;
+  /// The sling's own mass, in M (docs/machines.md, "The sling's mass"): its rope, a uniform rod
+  /// about the tip while taut, and its pouch, a point at the rope's end. For the equations of
+  /// motion the rope is its first two moments about the tip: half its mass at its end and half
+  /// at the tip carry its weight and its centre's motion, and a negative inertia -rope s^2/6
+  /// about the tip (s the sling's length) brings its moment of inertia to rope s^2/3.
+  struct Sling {
+    double rope = 0, pouch = 0;
+    /// The point mass at the sling's end: with the projectile (mu) until the release, without it after.
+    double end_mass(double mu) const { return mu + pouch + rope / 2; }
+    double tip_mass() const { return rope / 2; }
+    /// The rope's inertia about the tip beyond its end's share, for a sling of length s (in L2).
+    double inertia_beyond(double s) const { return -rope * s * s / 6; }
+    bool any() const { return rope > 0 || pouch > 0; }
+  } sling;
 
   /// Friction or drag before the release: the shot then tracks the work of each (Losses).
   bool dissipates() const { return axle_friction > 0 || hinge_friction > 0 || trough_friction > 0 || drag.has_value(); }

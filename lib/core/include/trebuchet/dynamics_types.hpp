@@ -26,9 +26,10 @@ struct Vec2 {
   double x = 0, y = 0;
 };
 
-/// Kinetic plus potential energy of each body, scaled (M g L2), potential from the pivot's level.
+/// Kinetic plus potential energy of each body, scaled (M g L2), potential from the pivot's level;
+/// the sling's, its rope's and pouch's (sling.hpp), 0 for a sling of no mass.
 struct BodyEnergies {
-  double beam = 0, counterweight = 0, projectile_kinetic = 0, projectile_potential = 0;
+  double beam = 0, counterweight = 0, projectile_kinetic = 0, projectile_potential = 0, sling = 0;
 };
 
 /// Where the energy of an engine as built goes besides the bodies: the friction at the axle, at
@@ -57,7 +58,10 @@ struct Snapshot {
   /// The whipper's, in phase held: the arm's push on the counterweight along its upper normal
   /// (M g; < 0: the arm would have to pull it, and the model, holding it there, no longer holds).
   double counterweight_push = 0;
-  double sling_tension = 0;  ///< pull of the sling on the projectile along it (< 0: it would push, the sling is slack)
+  double sling_tension = 0;  ///< pull of the sling on the projectile (and its pouch) along it (< 0: it would push, the sling is slack)
+  /// A sling with mass (sling.hpp): its rope's tension at the tip, and the shear the rod's model
+  /// puts across the rope at each end, which a rope cannot carry (0 for a rope of no mass but in air).
+  double rope_tension_at_tip = 0, rope_shear_at_tip = 0, rope_shear_at_end = 0;
   double counterweight_height = 0;  ///< of the counterweight above the engine's base (< 0: below it)
   double tip_height = 0;  ///< of the beam's tip above the engine's base (< 0: below it)
   /// Bending moment in the beam at the pivot, in M g L2: what the short section passes to the

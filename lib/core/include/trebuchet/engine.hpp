@@ -45,6 +45,10 @@ struct EngineParts {
   double trough_friction = 0;  ///< mu of the projectile on the trough, scaled
   double rope_diameter = 0;  ///< of the sling's rope, for its drag in air [m]; 0: none
   double rope_cd = 1.2;  ///< Cd of the rope across the flow (a long cylinder), scaled
+  /// The sling as built (docs/machines.md, "The sling's mass"): its rope's mass, spread evenly
+  /// along L4, and its pouch's, a point at the rope's end that carries the projectile until the
+  /// release and stays with the sling after it [kg].
+  double rope_mass = 0, pouch_mass = 0;
 
   /// Whether any part is given: the engine is not the paper's ideal one.
   bool any() const;

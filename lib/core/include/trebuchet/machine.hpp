@@ -48,6 +48,9 @@ class Machine {
   /// work of each loss (Losses).
   virtual bool dissipates() const = 0;
 
+  /// Whether the sling swings on after the release: where it has mass (sling.hpp).
+  bool swings_after_release() const { return design().parts.sling.any(); }
+
   /// The phase a shot starts in: the trough, or the whipper's `held`.
   virtual Phase first_phase() const { return Phase::trough; }
 
