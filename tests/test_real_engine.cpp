@@ -270,6 +270,9 @@ TEST_CASE("parts outside what a real engine has are refused by name", "[real]") 
   refused([](EngineParts& p) { p.D_hinge = 0.3; }, "D_tip");
   refused([](EngineParts& p) { p.counterweight_inertia = 1e9; }, "counterweight_inertia");
   refused([](EngineParts& p) { p.rope_diameter = 10; }, "rope_diameter");
+  refused([](EngineParts& p) { p.rope_mass = -0.1; }, "rope_mass");
+  refused([](EngineParts& p) { p.pouch_mass = -1e-3; }, "pouch_mass");
+  refused([](EngineParts& p) { p.pouch_mass = 1e6; }, "pouch_mass");
 }
 
 TEST_CASE("calibration recovers a known friction from a synthetic measured range", "[real]") {

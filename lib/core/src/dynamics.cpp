@@ -445,11 +445,13 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   out.projectile_velocity = {e.l * (ct * td + e.l4 * sf * fd), e.l * (st * td - e.l4 * cf * fd)};
   out.normal_force = f.normal_force;
   out.sling_on_tip = f.rope.on_tip;
-  out.rope_tension_at_tip = f.rope.tension_at_tip, out.rope_shear_at_tip = f.rope.shear_at_tip, out.rope_shear_at_end = f.rope.shear_at_end;
+  if (design_.parts.sling.any())
+    out.rope_tension_at_tip = f.rope.tension_at_tip, out.rope_shear_at_tip = f.rope.shear_at_tip, out.rope_shear_at_end = f.rope.shear_at_end;
   // The sling runs from the projectile to the tip along (cos phi, sin phi): its tension is the
   // pull on the projectile along it (the rope's drag adds a share across it); a sling can pull
   // but not push.
   out.sling_tension = f.sling_on_projectile.x * cf + f.sling_on_projectile.y * sf;
+  if (!design_.parts.sling.any()) out.rope_tension_at_tip = out.sling_tension;  // one tension along a rope of no mass
   // Positions of the hinge, the counterweight and the tip (dynamics.hpp), and heights above the
   // engine's base, which lies l cos(theta_i) below the pivot (H = L1 cos theta_i).
   out.hinge = {-st, ct};

@@ -25,17 +25,29 @@ constexpr double abandon_trough_cos_phi = 2 * refuse_trough_cos_phi;
 
 // Where the model stops holding (issue 12): the sling pushes instead of pulling, or the
 // counterweight or the beam's tip passes below the engine's base, or the whipper's arm would pull
-// the counterweight it holds. Each is a continuous function of time, negative when the condition
-// fails; the first time each turns negative is kept.
-constexpr int condition_count = 4;
+// the counterweight it holds, or a rope of mass stops being a straight rope (rope_holds). Each is
+// a continuous function of time, negative when the condition fails; the first time each turns
+// negative is kept.
+constexpr int condition_count = 5;
 using Conditions = std::array<double, condition_count>;
 // A condition fails below -1e-9 (scaled: M g for the tension, L2 for heights), so that round-off
 // cannot raise it where it holds with equality: an F = 1 counterweight hanging straight down
 // touches the base's level.
 constexpr double condition_slack = 1e-9;
-Conditions conditions_of(const Snapshot& s) {
+// A rope of mass modelled as a straight rod (sling.hpp) holds while it pulls at both ends and
+// the shear the rod carries there, which a rope cannot, stays below tan 10 deg of its tension:
+// a rope would bend by that angle at its end to carry it, and its ends' angles, the sling's
+// length and phi along it would be off by as much. > 0 where it holds, and for a rope of no mass;
+// in the trough, where the rope lies along the trough that carries its weight, it is not asked.
+double rope_holds(Phase phase, const Snapshot& s) {
+  if (phase != Phase::lifted || (s.rope_shear_at_tip == 0 && s.rope_shear_at_end == 0)) return 1;
+  const double bend = std::tan(10 * M_PI / 180);
+  return std::min(bend * s.rope_tension_at_tip - std::abs(s.rope_shear_at_tip), bend * s.sling_tension - std::abs(s.rope_shear_at_end));
+}
+
+Conditions conditions_of(Phase phase, const Snapshot& s) {
   return {s.sling_tension + condition_slack, s.counterweight_height + condition_slack, s.tip_height + condition_slack,
-          s.counterweight_push + condition_slack};
+          s.counterweight_push + condition_slack, rope_holds(phase, s) + condition_slack};
 }
 using Onsets = std::array<std::optional<double>, condition_count>;
 
@@ -65,7 +77,7 @@ class PhaseRecord {
     extremes.add(forces);
     samples_.push_back({end, forces, extremes, load_values(snap), snap.counterweight_height});
     if (samples_.size() >= 3) refine_peaks();
-    record_onsets(conditions_of(snap));
+    record_onsets(conditions_of(integrator_.phase(), snap));
   }
 
   const std::vector<Sample>& samples() const { return samples_; }
@@ -167,7 +179,7 @@ class PhaseRecord {
         onsets_[k] = t;
       } else {
         const double t0 = samples_[samples_.size() - 2].t;
-        onsets_[k] = find_root([&](double time) { return conditions_of(snapshot_at(time))[k]; }, t0, t, 1e-12, 0);
+        onsets_[k] = find_root([&](double time) { return conditions_of(integrator_.phase(), snapshot_at(time))[k]; }, t0, t, 1e-12, 0);
       }
     }
     previous_ = now;
@@ -406,7 +418,7 @@ double objective_range(const ReleasePoint& r, const ReleaseCriterion& criterion)
 // push on its counterweight beside its rail's (docs/machines.md; 0 on the other machines).
 std::array<double, load_count> load_values(const Snapshot& s) {
   const Vec2 frame{s.pivot_reaction.x + s.guide_force.x, s.pivot_reaction.y + s.guide_force.y};  // of order M g, as |F_R| (force_values)
-  return {s.sling_tension, std::hypot(s.hinge_force.x, s.hinge_force.y), std::sqrt(frame.x * frame.x + frame.y * frame.y), std::abs(s.beam_moment)};
+  return {std::max(s.sling_tension, s.rope_tension_at_tip), std::hypot(s.hinge_force.x, s.hinge_force.y), std::sqrt(frame.x * frame.x + frame.y * frame.y), std::abs(s.beam_moment)};
 }
 
 ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criterion, double t, const State& s, const Snapshot& snap,
@@ -751,6 +763,7 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   result.counterweight_below_base = before_release(onsets[1]);
   result.tip_below_base = before_release(onsets[2]);
   result.counterweight_pulled = before_release(onsets[3]);
+  result.rope_bent = before_release(onsets[4]);
   // The builder's loads: the largest sampled value of each over the phases (each before the
   // release ends on its last sample, phase II on the release), refined once, in its phase.
   const auto at_release = load_values(dynamics.snapshot(Phase::lifted, result.release.state));

@@ -124,6 +124,7 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   warn(shot.counterweight_pulled,
        "the whipper's arm would pull the counterweight it holds (the push between them changes sign before pytrebuchet's rule lets it go)");
   warn(shot.tip_below_base, "the beam's tip passes below the engine's base");
+  warn(shot.rope_bent, "the sling's rope of mass stops being a straight rope (it would go slack at the tip, or bend at an end by more than 10 deg)");
   // A clearance within round-off of 0 (1e-9 L2, as the shot's conditions) is 0: an F = 1
   // counterweight hanging straight down touches the ground.
   const auto clear = [&](double height) { return std::abs(height) < 1e-9 * L2 ? 0.0 : height; };

@@ -127,6 +127,7 @@ Snapshot Whipper::snapshot_with(Phase phase, const State& s, const Motion& m, Ve
       out.sling_tension = pull, out.normal_force = push;
     }
     out.sling_on_tip = {-out.sling_tension * cf, -out.sling_tension * sf};
+    out.rope_tension_at_tip = out.sling_tension;  // its sling has no mass
     out.sling_perpendicular = -(out.sling_on_tip.x * ct + out.sling_on_tip.y * st);
     const Vec2& v = out.projectile_velocity;
     out.energies.projectile_kinetic = mu * dot(v, v) / 2;

@@ -80,6 +80,9 @@ struct ShotResult {
   std::optional<double> counterweight_below_base;  ///< the counterweight passes below the engine's base
   /// the whipper's arm would pull the counterweight it holds (pytrebuchet's rule lets it go later)
   std::optional<double> counterweight_pulled;
+  /// A rope of mass stops being a straight rope (shot.cpp, rope_holds): it would go slack at the
+  /// tip or bend at an end by more than 10 deg to carry the rod model's shear.
+  std::optional<double> rope_bent;
   std::optional<double> tip_below_base;  ///< the beam's tip passes below the engine's base
   /// The lowest height of the counterweight's centre above the engine's base, scaled: over the
   /// shot up to the release and after it for as long again (phase III, or until friction holds
