@@ -117,6 +117,7 @@ EngineParts independent_parts(const DesignValues& v) {
   p.rope_cd = v.rope_cd.value_or(p.rope_cd);
   p.rope_mass = v.rope_mass.value_or(0);
   p.pouch_mass = v.pouch_mass.value_or(0);
+  p.pin_friction = v.pin_friction.value_or(0);
   return p;
 }
 

@@ -346,16 +346,16 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   pin << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'pin.svg'")
       << "set xlabel 'pin angle between the long arm and the sling at the release [deg]'\nset ylabel 'R [m]'\nset y2label 'Q [%]'\n"
       << "set ytics nomirror\nset y2tics\nset key below\n"
-      << warnings << "set title \"The pin: a release at each pin angle; this shot's, " << format_significant(v.pin_angle_deg, 4) << "°, is marked\\n"
+      << warnings << "set title \"The pin: a release at each pin angle; this shot's, " << format_significant(v.pin_to_bend_deg, 4) << "°, is marked\\n"
       << gnuplot_quoted(scene) << "\" noenhanced\n"
-      << "set arrow from " << num(v.pin_angle_deg) << ", graph 0 to " << num(v.pin_angle_deg) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
-      << "set label 'this shot' at " << num(v.pin_angle_deg) << ", graph 0.05 offset 0.3,0\n";
+      << "set arrow from " << num(v.pin_to_bend_deg) << ", graph 0 to " << num(v.pin_to_bend_deg) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
+      << "set label 'this shot' at " << num(v.pin_to_bend_deg) << ", graph 0.05 offset 0.3,0\n";
   // Where no other pin releases this engine forward (every one passes in the trough, or throws
   // back), the chart says so: gnuplot refuses a plot of no points.
   const auto released = std::count_if(series.pins.begin(), series.pins.end(), [](const PinShot& s) { return s.R.has_value(); });
   if (released < 2)
     pin << "set label 'no pin angle near this one releases the projectile forward within the beam''s forward swing' at graph 0.5, graph 0.5 center\n"
-        << "plot [" << num(v.pin_angle_deg - 20) << ":" << num(v.pin_angle_deg + 20) << "] [0:1] 2 notitle\n";
+        << "plot [" << num(v.pin_to_bend_deg - 20) << ":" << num(v.pin_to_bend_deg + 20) << "] [0:1] 2 notitle\n";
   else
     pin << "plot 'pin.csv' every ::1 using 1:2 with linespoints lw 2 pt 7 ps 0.5 title 'R' axes x1y1, \\\n"
         << "     '' every ::1 using 1:($3*100) with linespoints lw 2 pt 7 ps 0.5 title 'Q' axes x1y2\n";

@@ -151,6 +151,7 @@ std::string describe_parts(const Engine& engine, UnitSystem units) {
   if (p.trough_friction > 0) parts.push_back("trough friction " + format_significant(p.trough_friction, 3));
   if (p.rope_diameter > 0)
     parts.push_back("a rope of " + q(p.rope_diameter, UnitDimension::length) + " (Cd " + format_significant(p.rope_cd, 3) + ")");
+  if (p.pin_friction > 0) parts.push_back("release pin friction " + format_significant(p.pin_friction, 3));
   if (p.rope_mass > 0 || p.pouch_mass > 0)
     parts.push_back("a sling of " + q(p.rope_mass, UnitDimension::mass) + " rope and " + q(p.pouch_mass, UnitDimension::mass) + " pouch");
   return "  as built: " + join(parts, ", ") + "\n";
@@ -240,6 +241,8 @@ std::string verification_table(const Engine& engine, const ShotSettings& setting
       << " (eq:F)"
       // In air T is at the flight's end, eps (eq:Aux) the energy at the release over Delta U: two different things beside each other.
       << (settings.air ? "; eps is the energy at the release over Delta U (eq:Aux), before the air's loss in flight" : "") << "\n"
+      << "range efficiency (Siano) = " << sig(100 * v.range_efficiency, 4) << " % of the black box's 2 Delta U/(m g), "
+      << sig(100 * v.range_efficiency_counterweight, 4) << " % of 2 M h/m with h the counterweight's fall alone\n"
       << "release: v = " << q(v.v, UnitDimension::speed) << ", h = " << q(v.h, UnitDimension::length) << ", "
       << q(std::abs(v.x), UnitDimension::length) << (v.x < 0 ? " behind" : " ahead of") << origin << " (x = " << sig(v.x, 4)
       << " m), A = " << sig(v.A_deg, 4) << " deg, pin angle " << sig(v.pin_angle_deg, 4) << " deg\n"

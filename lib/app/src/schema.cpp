@@ -96,6 +96,7 @@ void write_engine(nlohmann::ordered_json& out, const Engine& engine) {
   if (p.rope_diameter > 0) put(&V::rope_diameter, p.rope_diameter), put(&V::rope_cd, p.rope_cd);
   if (p.rope_mass > 0) put(&V::rope_mass, p.rope_mass);
   if (p.pouch_mass > 0) put(&V::pouch_mass, p.pouch_mass);
+  if (p.pin_friction > 0) put(&V::pin_friction, p.pin_friction);
   if (engine.machine == MachineKind::whipper) {  // its start besides theta_i and H (engine_fields)
     put(&V::rope_angle_deg, engine.whipper.rope_angle_deg);
     if (engine.whipper.projectile_diameter) put(&V::projectile_diameter, *engine.whipper.projectile_diameter);

@@ -40,6 +40,10 @@ namespace {
 
 // The pin angle at the release (verification.hpp), apart from the input pin_angle_deg that sets one.
 constexpr const char* pin_angle_column = "pin_angle_at_release_deg";
+// The pin to bend for the release (Verification::pin_to_bend_deg) and Siano's range efficiency
+// (Verification::range_efficiency): in JSON beside the release's angles and eps and Q, in CSV last.
+constexpr const char* pin_to_bend_key = "pin_to_bend_deg";
+constexpr const char* range_efficiency_keys[2] = {"range_efficiency", "range_efficiency_counterweight"};
 // The whipper's own time, in its JSON record beside t_liftoff (when its projectile leaves the arm) [s].
 constexpr const char* counterweight_free_key = "t_counterweight_free";
 
@@ -129,7 +133,8 @@ std::vector<std::string> verification_csv_header() {
   for (const InputField* field : release_fields()) header.push_back(csv_column_of(*field));  // a given release, which reads back
   header.push_back(machine_key);
   header.insert(header.end(),
-                {"clearance_geometric_m", "clearance_in_shot_m"});  // Verification::Clearance, last: the columns before keep their places
+                {"clearance_geometric_m", "clearance_in_shot_m"});  // Verification::Clearance: the columns before keep their places
+  header.insert(header.end(), {range_efficiency_keys[0], range_efficiency_keys[1], pin_to_bend_key});  // issue 48, last
   return header;
 }
 
@@ -157,6 +162,7 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
   row.push_back(machine_name(engine.machine));
   row.push_back(csv_number(v.clearance.geometric, digits));
   row.push_back(v.clearance.in_shot ? csv_number(*v.clearance.in_shot, digits) : "");
+  for (const double value : {v.range_efficiency, v.range_efficiency_counterweight, v.pin_to_bend_deg}) row.push_back(csv_number(value, digits));
   return row;
 }
 
@@ -178,7 +184,9 @@ nlohmann::ordered_json verification_json(const Verification& v, const std::optio
   nlohmann::ordered_json out;
   for (const Field& field : verification_fields(v)) {
     out[field.key] = field.value;
-    if (field.key == std::string("A_deg")) out[pin_angle_column] = v.pin_angle_deg;  // the release's angles together
+    if (field.key == std::string("A_deg")) out[pin_angle_column] = v.pin_angle_deg, out[pin_to_bend_key] = v.pin_to_bend_deg;  // the release's angles together
+    if (field.key == std::string("Q"))  // beside eps and Q
+      out[range_efficiency_keys[0]] = v.range_efficiency, out[range_efficiency_keys[1]] = v.range_efficiency_counterweight;
     if (field.key == std::string("t_liftoff") && v.t_counterweight_free) out[counterweight_free_key] = *v.t_counterweight_free;  // the whipper's
   }
   const Verification::EnergyBudget& e = v.energy;

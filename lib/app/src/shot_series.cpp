@@ -78,7 +78,7 @@ ShotSeries shot_series(const Engine& engine, const ShotSettings& settings, const
     series.phase_two.push_back({p.t * time_unit, r.quality, r.efficiency, r.range, running.max});
   }
   std::vector<double> pins;
-  for (int k = -10; k <= 10; ++k) pins.push_back(v.pin_angle_deg + 2 * k);
+  for (int k = -10; k <= 10; ++k) pins.push_back(v.pin_to_bend_deg + 2 * k);
   series.pins = pin_scan(engine, settings, pins);
   return series;
 }

@@ -141,11 +141,11 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   out.json["assumptions"] = assumptions_json(engine, settings);
   if (!settings.release_at) {  // the pin to bend for this optimum, and what a degree or two of error costs
     std::vector<double> pins;
-    for (double offset : pin_tolerance_offsets) pins.push_back(v.pin_angle_deg + offset);
+    for (double offset : pin_tolerance_offsets) pins.push_back(v.pin_to_bend_deg + offset);
     nlohmann::ordered_json tolerance = nlohmann::ordered_json::array();
     std::vector<std::string> lost;
     for (const PinShot& shot : pin_scan(engine, settings, pins)) {
-      const double offset = shot.pin_angle_deg - v.pin_angle_deg;
+      const double offset = shot.pin_angle_deg - v.pin_to_bend_deg;
       const std::string signed_offset = (offset > 0 ? "+" : "") + format_significant(offset, 2) + " deg: ";
       if (shot.R) {
         const double change = *shot.R - v.capacity.R;
@@ -157,8 +157,22 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
       }
     }
     out.json["pin_tolerance"] = tolerance;
-    out.table += "pin to bend for this release: " + format_significant(v.pin_angle_deg, 4) + " deg; R changes with the pin off by " +
-        join(lost, ", ") + "\n";
+    // The loop leaves a pin of friction mu atan(mu) later (release_pin_angle): bend it that much more.
+    const double mu = engine.parts.pin_friction;
+    std::string pin = format_significant(v.pin_to_bend_deg, 4) + " deg";
+    if (mu > 0) {
+      pin += " for its friction " + format_significant(mu, 3) + " (" + format_significant(v.pin_angle_deg, 4) + " deg frictionless)";
+    } else {
+      nlohmann::ordered_json by_friction = nlohmann::ordered_json::array();
+      for (const auto& [coefficient, what] : {std::pair{greased_pin_friction, "greased"}, {dry_pin_friction, "dry"}}) {
+        const double bend = v.pin_angle_deg + degrees(std::atan(coefficient));
+        by_friction.push_back({{"pin_friction", coefficient}, {"pin_to_bend_deg", bend}});
+        pin += std::string(what == std::string("greased") ? " frictionless, " : ", ") + format_significant(bend, 4) + " deg " + what + " (mu " +
+            format_significant(coefficient, 2) + ")";
+      }
+      out.json["pin_to_bend_by_friction"] = by_friction;
+    }
+    out.table += "pin to bend for this release: " + pin + "; R changes with the pin off by " + join(lost, ", ") + "\n";
   }
   if (!record.passed.empty()) {  // the design's keys no reader knows, as given
     out.json["passed"] = record.passed;

@@ -85,7 +85,7 @@ std::string what_if_table(const WhatIf& what_if, const std::vector<WhatIfPoint>&
       {"eps", [&](const Verification& v) { return sig(100 * v.eps) + " %"; }},
       {"Q", [&](const Verification& v) { return sig(100 * v.Q) + " %"; }},
       {"A", [&](const Verification& v) { return sig(v.A_deg) + " deg"; }},
-      {"pin angle", [&](const Verification& v) { return sig(v.pin_angle_deg) + " deg"; }},
+      {"pin to bend", [&](const Verification& v) { return sig(v.pin_to_bend_deg) + " deg"; }},
       {"axle load", [&](const Verification& v) { return q(v.loads[pivot_load].value, UnitDimension::force); }},
       {"sling", [&](const Verification& v) { return q(v.loads[sling_tension_load].value, UnitDimension::force); }},
       {"beam",

@@ -30,10 +30,16 @@ std::optional<BuiltParts::Section> ScaledDesign::short_section() const {
 
 double ScaledDesign::counterweight_lever() const { return machine == MachineKind::fixed ? 1 + L() : 1; }
 
-double ScaledDesign::energy_drop() const {  // eq:DU, and the propped counterweight's extra height
-  const double drop = (counterweight_lever() - mu_b * beam_cm()) * (1 + std::cos(radians(theta_i_deg)));
+// Delta U (eq:DU) of the beam's lever `lever` less its own weight's, and the propped counterweight's
+// extra height: the counterweight's fall with the beam's rise (energy_drop), or without it.
+double ScaledDesign::fall_with_lever(double lever) const {
+  const double drop = lever * (1 + std::cos(radians(theta_i_deg)));
   const bool hangs = machine == MachineKind::hinged || machine == MachineKind::whipper;
   return hangs ? drop + L() * (1 - std::cos(radians(psi_i_deg))) : drop;
 }
+
+double ScaledDesign::energy_drop() const { return fall_with_lever(counterweight_lever() - mu_b * beam_cm()); }
+
+double ScaledDesign::counterweight_fall() const { return fall_with_lever(counterweight_lever()); }
 
 }  // namespace trebuchet

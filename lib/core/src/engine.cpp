@@ -145,6 +145,7 @@ void check_parts(const Engine& e) {
   coefficient(p.axle.friction, "axle_friction", "the axle at the pivot");
   coefficient(p.hinge.friction, "hinge_friction", "the counterweight's hinge pin");
   coefficient(p.trough_friction, "trough_friction", "the projectile on the trough");
+  coefficient(p.pin_friction, "pin_friction", "the sling's loop on the release pin");
   const auto pin = [&](const Pin& pin, const char* friction_key, const char* radius_key, const char* what, double largest, const char* largest_text) {
     if (!(pin.radius >= 0))
       throw Error(ErrorKind::bad_number,

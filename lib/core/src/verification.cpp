@@ -23,6 +23,7 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   out.A_deg = degrees(std::atan2(vy, -vx));
   out.theta_release_deg = degrees(r.state.theta);
   out.pin_angle_deg = degrees(r.pin_angle);
+  out.pin_to_bend_deg = out.pin_angle_deg + degrees(std::atan(engine.parts.pin_friction));
   const double drop = out.h - target_level;  // release to target level [m]
   const double apex = out.h + (vy > 0 ? vy * vy / (2 * g) : 0);  // highest point of the flight above the base [m]
   if (!(target_level <= apex))
@@ -98,6 +99,9 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
     out.energy.engine =
         (at_release.energies.beam + at_release.energies.counterweight - at_rest + at_release.energies.sling - sling_at_start) * energy_unit;
     for (int k = 0; k < loss_count; ++k) out.energy.losses[k] = shot.work[k] * energy_unit;
+    // Siano's black box throws all of Delta U at 45 deg from the ground: 2 Delta U/(m g) = 2 Delta U L2/mu [m].
+    out.range_efficiency = out.R_vacuum / (2 * design.energy_drop() * L2 / design.mu);
+    out.range_efficiency_counterweight = out.R_vacuum / (2 * design.counterweight_fall() * L2 / design.mu);
   }
   out.FS_perp = out.FS_perp_mg * engine.m * g, out.FR = out.FR_Mg * Mg, out.dFRh = out.dFRh_Mg * Mg;
   const double load_unit[load_count] = {Mg, Mg, Mg, Mg * L2};  // LoadIndex, scaled in M g and M g L2
@@ -171,7 +175,10 @@ ReleaseCriterion release_criterion(const Engine& engine, const ShotSettings& set
   criterion.length_unit = engine.L2;
   if (const auto& at = settings.release_at) {
     const double time_unit = std::sqrt(engine.L2 / engine.material.g);  // section 3 [s]
-    criterion.given = GivenRelease{at->by, at->by == ReleaseBy::time ? at->value / time_unit : radians(at->value), time_unit};
+    const double value = at->by == ReleaseBy::time ? at->value / time_unit
+        : at->by == ReleaseBy::pin_angle            ? release_pin_angle(radians(at->value), engine.parts.pin_friction)
+                                                    : radians(at->value);
+    criterion.given = GivenRelease{at->by, value, time_unit};
   }
   return criterion;
 }

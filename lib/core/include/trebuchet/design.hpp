@@ -117,6 +117,12 @@ struct ScaledDesign {
   /// above its final rest, as the whipper's does: (lever - mu_b c)(1 + cos theta_i) for the
   /// machines whose counterweight moves with the beam.
   double energy_drop() const;
+  /// The counterweight's fall from rest to its lowest point, in L2: Delta U without the beam's
+  /// rise, lever (1 + cos theta_i) plus L (1 - cos psi_i) for a propped counterweight that hangs.
+  double counterweight_fall() const;
+
+ private:
+  double fall_with_lever(double lever) const;
 };
 
 }  // namespace trebuchet

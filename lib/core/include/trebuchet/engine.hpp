@@ -49,6 +49,9 @@ struct EngineParts {
   /// along L4, and its pouch's, a point at the rope's end that carries the projectile until the
   /// release and stays with the sling after it [kg].
   double rope_mass = 0, pouch_mass = 0;
+  /// mu of the sling's loop on the release pin, scaled: it slips off atan(mu) past the pin angle
+  /// where it would leave a frictionless pin (verification.hpp, release_pin_angle).
+  double pin_friction = 0;
 
   /// Whether any part is given: the engine is not the paper's ideal one.
   bool any() const;

@@ -21,6 +21,12 @@ struct SetRelease {
   double value = 0;  ///< [s] or [deg]
 };
 
+/// Where a sling's loop leaves a release pin bent to `bent` [rad] with friction mu: a loop slips
+/// once the sling's pull leaves the pin's friction cone, atan(mu) past where it would leave a
+/// frictionless pin; the pin angle closes through the throw, so the release comes at bent -
+/// atan(mu) (docs/verifier.md, "The release pin's friction").
+inline double release_pin_angle(double bent, double mu) { return bent - std::atan(mu); }
+
 struct ShotSettings {
   double target_level = 0;  ///< target height relative to the engine's base [m], e.g. -54
   ReleaseCriterion criterion{};  ///< the optimum's criterion; its given release and target level follow from the fields here (release_criterion)
@@ -62,6 +68,13 @@ struct Verification {
   double x = 0;  ///< release position from the pivot toward the target, as on the site (report.hpp): < 0 behind the pivot [m]
   double A_deg = 0;  ///< initial climb: the velocity angle at the release [deg]
   double pin_angle_deg = 0;  ///< the pin angle at the release, from the long arm to the sling (shot.hpp) [deg]
+  /// The pin angle to bend the release pin to for this release: pin_angle_deg plus atan of the
+  /// engine's pin friction (release_pin_angle) [deg].
+  double pin_to_bend_deg = 0;
+  /// Siano's range efficiency (docs/verifier.md, "Range efficiency"): R_vacuum over the black
+  /// box's range 2 Delta U/(m g), all of Delta U (eq:DU, the beam's rise taken off) thrown at 45
+  /// deg from the ground in vacuum; and over 2 M h/m, h the counterweight's fall alone. Scaled.
+  double range_efficiency = 0, range_efficiency_counterweight = 0;
   double theta_release_deg = 0;  ///< beam angle at release from the downward vertical [deg]; 180 is upright (section 6.2: below it, lower branch)
   double t_release = 0;  ///< [s]
   double t_liftoff = 0;  ///< [s]; the whipper's: its projectile leaves the arm
@@ -153,6 +166,9 @@ std::vector<PinShot> pin_scan(const Engine& engine, ShotSettings settings, const
 
 /// The pin angles either side of an optimum's whose range loss a shot reports [deg].
 inline constexpr double pin_tolerance_offsets[] = {-2, -1, 1, 2};
+/// The friction of a greased and of a dry release pin the pin report bends for when none is given:
+/// the ends of the handbooks' 0.1 to 0.5 for a rope or iron loop on an iron or wooden pin.
+inline constexpr double greased_pin_friction = 0.1, dry_pin_friction = 0.5;
 
 /// A predicted capacity (from the calculator, in vacuum as the paper's) against the shot's own
 /// in vacuum (R_vacuum, T_vacuum), whatever air the shot flew through; or, as_measured, a
