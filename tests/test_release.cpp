@@ -302,3 +302,56 @@ TEST_CASE("the floating arm's pin angle is measured from its moving axle", "[rel
   std::printf("the floating laboratory engine's pin at its range optimum: %.4f deg (26.07)\n", shot.pin_angle_deg);
   CHECK(std::abs(shot.pin_angle_deg - 26.07) < 0.005);
 }
+
+TEST_CASE("a release pin's friction delays the loop by atan(mu), and the pin to bend says so", "[release][pin]") {
+  ShotSettings range;
+  range.criterion.release = Release::range;
+  const Engine dry_less = laboratory_engine();
+  const Verification optimum = verify_engine(dry_less, range);
+  // No friction is today's pin release, bit for bit.
+  Engine none = dry_less;
+  none.parts.pin_friction = 0;
+  const Verification at_pin = verify_engine(dry_less, released(range, ReleaseBy::pin_angle, 36));
+  const Verification at_pin_none = verify_engine(none, released(range, ReleaseBy::pin_angle, 36));
+  CHECK(at_pin_none.capacity.R == at_pin.capacity.R);
+  CHECK(at_pin_none.t_release == at_pin.t_release);
+  for (const double mu : {0.1, 0.3, 0.5}) {
+    Engine greased = dry_less;
+    greased.parts.pin_friction = mu;
+    // The same pin bent as before lets go later, where the pin angle has closed by atan(mu):
+    // the frictionless pin's shot at that angle, to the roots' 1e-12 (the test above).
+    const double later = 36 - degrees(std::atan(mu));
+    const Verification bent = verify_engine(greased, released(range, ReleaseBy::pin_angle, 36));
+    const Verification frictionless = verify_engine(dry_less, released(range, ReleaseBy::pin_angle, later));
+    std::printf("pin bent to 36 deg, friction %g: released at %.10g deg (frictionless pin at %.10g deg), R %.10g m against %.10g m\n", mu,
+                bent.pin_angle_deg, later, bent.capacity.R, frictionless.capacity.R);
+    CHECK(std::abs(bent.pin_angle_deg - later) < 1e-9);
+    CHECK(relative(bent.capacity.R, frictionless.capacity.R) < 1e-9);
+    // The optimum's pin to bend on this pin gives the optimum back.
+    const Verification best = verify_engine(greased, range);
+    CHECK(std::abs(best.pin_to_bend_deg - (optimum.pin_angle_deg + degrees(std::atan(mu)))) < 1e-12);
+    const Verification back = verify_engine(greased, released(range, ReleaseBy::pin_angle, best.pin_to_bend_deg));
+    CHECK(relative(back.capacity.R, optimum.capacity.R) < 1e-9);
+  }
+  Engine wrong = dry_less;
+  wrong.parts.pin_friction = -0.1;
+  CHECK_THROWS_AS(check_engine(wrong), Error);
+  wrong.parts.pin_friction = 3;
+  CHECK_THROWS_AS(check_engine(wrong), Error);
+}
+
+TEST_CASE("Siano's range efficiency is the range over the black box's, by eps and by the counterweight's fall", "[release][efficiency]") {
+  // Two ways to the same black box: 2 Delta U/(m g) from the design's Delta U, and 2 T/(eps m g)
+  // from the shot's eps = T/Delta U (eq:Aux) at the base's level in vacuum. And the counterweight's
+  // fall alone, L2 (1 + cos theta_i) for the unpropped hinged engine, is Delta U with the beam's
+  // rise mb g c (1 + cos theta_i) given back: the ratio of the two is 1 - mb c/(M L2).
+  const Engine lab = laboratory_engine();
+  const Verification v = verify_engine(lab, ShotSettings{});
+  const double g = lab.material.g;
+  const double by_eps = v.R_vacuum * v.eps * lab.m * g / (2 * v.T_vacuum);
+  std::printf("laboratory engine: range efficiency %.15g, by eps %.15g, of the counterweight's fall %.15g\n", v.range_efficiency, by_eps,
+              v.range_efficiency_counterweight);
+  CHECK(relative(v.range_efficiency, by_eps) < 1e-12);
+  CHECK(relative(v.range_efficiency_counterweight / v.range_efficiency, 1 - lab.mb * *lab.parts.beam_cm / (lab.M * lab.L2)) < 1e-12);
+  CHECK(v.range_efficiency < 1);
+}

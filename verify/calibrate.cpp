@@ -1,5 +1,6 @@
 // calibrate: the friction of an engine fitted to the range it threw (calibration.hpp), and what
 // it then does with another projectile or counterweight.
+#include <algorithm>
 #include <iostream>
 #include <vector>
 
@@ -8,10 +9,39 @@
 #include "trebuchet/app/output_files.hpp"
 #include "trebuchet/app/report.hpp"
 #include "trebuchet/app/text_input.hpp"
+#include "trebuchet/app/calibration_run.hpp"
+#include "trebuchet/app/fields.hpp"
+#include "trebuchet/app/pictures.hpp"
 #include "trebuchet/app/verifier.hpp"
 #include "trebuchet/format.hpp"
 
 namespace trebuchet::verify {
+
+namespace {
+
+// The friction fitted over the unknowns given as ranges or spreads (calibration_run.hpp).
+int run_calibrate_over_unknowns(const Options& o, const DesignValues& values) {
+  const MonteCarloRequest request{values, o.settings, o.spreads, false, ""};
+  CalibrationRunInputs inputs{request, *o.measured, o.plausible_friction, o.settings.samples.value_or(200),
+                              o.settings.seed.value_or(1), o.threads};
+  check_monte_carlo_work(inputs.samples, 12, "fits");  // about a dozen shots a fit
+  const CalibrationRun run = calibrate_over_unknowns(inputs, progress_bar("fits"));
+  if (o.format == Format::json)
+    std::cout << pretty_json(calibration_run_json(run));
+  else
+    std::cout << calibration_run_table(run);
+  if (!o.plot.empty()) write_picture_folder(o.plot, calibration_run_pictures(run), {"friction.gp"});
+  return exit_success;
+}
+
+// What a measurement adds to an engine's file, given as flags over it: the parts as built (the
+// pins' radii, the sling), the release, and any value given as a range or a spread (an unknown).
+bool adds_to_file(const Options& o, const InputField& field) {
+  return field.group == FieldGroup::part || field.group == FieldGroup::release ||
+      std::any_of(o.spreads.begin(), o.spreads.end(), [&](const SpreadInput& s) { return s.value == field.member; });
+}
+
+}  // namespace
 
 int run_calibrate(const Options& o) {
   if (!o.measured)
@@ -19,8 +49,11 @@ int run_calibrate(const Options& o) {
   DesignValues values = o.design;
   std::string where;
   if (!o.input.empty()) {
-    if (has_engine_flags(o.design))
-      throw Error(ErrorKind::usage, "the engine comes from '" + o.input + "'; drop the engine flags (--L1 ... --axle-radius), or drop the file");
+    DesignValues engine_flags = o.design;
+    for (const InputField& field : input_fields())
+      if (adds_to_file(o, field)) engine_flags.*field.member = std::nullopt;
+    if (has_engine_flags(engine_flags))
+      throw Error(ErrorKind::usage, "the engine comes from '" + o.input + "'; drop the engine flags (--L1 ... --M), or drop the file");
     const DesignInputs in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}"), o.input);
     // One engine: an object, or an array or CSV of one row.
     if (in.rows.size() != 1)
@@ -28,7 +61,10 @@ int run_calibrate(const Options& o) {
     if (!in.rows.front().error.empty()) throw Error(ErrorKind::usage, in.where.front() + ": " + in.rows.front().error);
     where = in.where.front();
     values = read_design_values(in.rows.front().design, where);
+    for (const InputField& field : input_fields())
+      if (adds_to_file(o, field) && o.design.*field.member) values.*field.member = o.design.*field.member;
   }
+  if (!o.spreads.empty()) return run_calibrate_over_unknowns(o, values);
   const EngineRecord record = engine_record(values, where);
   Engine engine = record.engine;
   engine.material = material_of(o.design, engine.material);  // the flags' material over a file's

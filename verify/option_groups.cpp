@@ -120,6 +120,17 @@ void program_setting(CLI::App* app, Options& o, const SettingRow& row, Door door
           },
           help);
       return;
+    case Setting::plausible_friction:
+      parsed_option(
+          app, flag,
+          [&o, flag](const std::string& text) {
+            const auto spread = parse_spread(text, UnitDimension::dimensionless, flag);
+            if (!spread || spread->kind != Spread::Kind::uniform)
+              throw Error(ErrorKind::usage, flag + ": '" + text + "' is not a range; give the plausible coefficients as low..high, e.g. 0.1..0.5");
+            o.plausible_friction = {spread->a, spread->b};
+          },
+          help);
+      return;
     case Setting::predict_m:
     case Setting::predict_M:
       // Every value given, each read and checked (CLI11 hands a std::string option its first only).

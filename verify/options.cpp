@@ -47,9 +47,10 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
                                    "fit an engine's friction to the range it was measured to throw (--measured 34.4m±1.5m), "
                                    "report the losses, and predict other projectiles (--predict-m) or counterweights (--predict-M)");
   s.calibrate->add_option("input", o.input, one_design);
-  input_options(s.calibrate, o, op_shot, {G::engine, G::alternative, G::capacity, G::release, G::part}, false);
+  // What nobody measured may be a range or a spread: the calibration is then drawn over it.
+  input_options(s.calibrate, o, op_shot, {G::engine, G::alternative, G::capacity, G::release, G::part}, true);
   material_options(s.calibrate, o, op_shot, false);
-  setting_options(s.calibrate, o, cmd_calibrate, false);
+  setting_options(s.calibrate, o, cmd_calibrate, true);
 
   s.compare = app.add_subcommand("compare",
                                  "one engine's parts built as each machine, hinged, fixed, floating-arm and whipper, side by side: range, eps, "

@@ -14,6 +14,7 @@
 #include "trebuchet/contest.hpp"
 #include "trebuchet/sweep.hpp"
 #include "trebuchet/verification.hpp"
+#include "trebuchet/app/calibration_run.hpp"
 #include "trebuchet/app/requests.hpp"
 #include "trebuchet/app/schema.hpp"
 #include "trebuchet/app/design_input.hpp"
@@ -33,6 +34,7 @@ struct Options {
   SettingsValues settings;  ///< the settings a request takes too (settings.def): the release, the integrator, the target, the air, a run's
   std::optional<MeasuredRange> measured;  ///< calibrate: the measured range [m]
   std::vector<double> predict_m, predict_M;  ///< calibrate: masses to predict with [kg]
+  std::array<double, 2> plausible_friction = handbook_friction;  ///< calibrate over unknowns: the plausible coefficients
   UnitSystem units = UnitSystem::si;  ///< --units: how tables print values
   Format format = Format::table;
   int digits = default_csv_digits;

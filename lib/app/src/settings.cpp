@@ -56,6 +56,7 @@ std::optional<double> SettingsValues::*number_slot(Setting id) {
     case Setting::target_level: return &SettingsValues::target_level;
     case Setting::wind: return &SettingsValues::wind;
     case Setting::air_density: return &SettingsValues::air_density;
+    case Setting::cd: return &SettingsValues::cd;
     default: return nullptr;
   }
 }

@@ -384,7 +384,7 @@ nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
                     {"median_reaching", medians},
                     {"median_all", medians_all}};
   }
-  const std::vector<double> rho = rank_correlations_with_range(summary);
+  const std::vector<double> rho = rank_correlations(summary);
   if (!rho.empty()) {
     nlohmann::ordered_json ranking = nlohmann::ordered_json::array();
     for (std::size_t k : by_influence(rho)) ranking.push_back({{"input", r.inputs[k].name}, {"spearman_R", rho[k]}});
@@ -505,7 +505,7 @@ std::string monte_carlo_table(const MonteCarloReport& r) {
       out << "  the samples that reach it, at their median: " << join(medians, ", ") << "\n";
     }
   }
-  const std::vector<double> rho = rank_correlations_with_range(summary);
+  const std::vector<double> rho = rank_correlations(summary);
   if (!rho.empty()) {
     std::vector<std::string> ranked;
     for (std::size_t k : by_influence(rho)) ranked.push_back(r.inputs[k].name + " " + (rho[k] >= 0 ? "+" : "") + format_significant(rho[k], 2));

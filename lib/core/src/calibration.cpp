@@ -33,6 +33,42 @@ Engine with_friction(const Engine& engine, FrictionFit fitted, double value) {
   return e;
 }
 
+FrictionFit friction_fit_of(const Engine& engine) {
+  const EngineParts& p = engine.parts;
+  const bool has_friction = p.axle.friction > 0 || p.hinge.friction > 0 || p.trough_friction > 0;
+  if (!has_friction && !(p.axle.radius > 0 && p.hinge.radius > 0))
+    throw Error(ErrorKind::usage,
+                "calibrate fits the engine's friction: give its coefficients ({{axle_friction}}, {{hinge_friction}}, "
+                "{{trough_friction}}), whose common scale it fits, or the pins' radii ({{axle_radius}} and {{hinge_radius}}), "
+                "and it fits one coefficient at both pins");
+  return has_friction ? FrictionFit::scale : FrictionFit::pin_coefficient;
+}
+
+double fit_friction(const Engine& engine, double range, const ShotSettings& given) {
+  const FrictionFit fitted = friction_fit_of(engine);
+  ShotSettings settings = given;
+  settings.loads = false;  // the range alone
+  // The range at a friction; an engine that jams or sticks there throws nothing, which keeps the
+  // range falling with the friction, as the bracket below needs.
+  const auto range_at = [&](double value) {
+    try {
+      return verify_engine(with_friction(engine, fitted, value), settings).capacity.R;
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::numerical || value == 0) throw;
+      return 0.0;
+    }
+  };
+  const double R0 = range_at(0);
+  if (!(range < R0))
+    throw Error(ErrorKind::out_of_range, "no friction explains it: the engine throws " + format_significant(R0, 4) +
+                                             " m without friction, no farther than the range " + format_significant(range, 4) + " m");
+  const double top = largest_value(engine, fitted), R_top = range_at(top);
+  if (!(R_top < range))
+    throw Error(ErrorKind::out_of_range, "friction alone does not explain it: the strongest friction allowed still throws " +
+                                             format_significant(R_top, 4) + " m, farther than the range " + format_significant(range, 4) + " m");
+  return find_root([&](double value) { return range_at(value) - range; }, 0, top, 1e-5 * top, 0);
+}
+
 Calibration calibrate(const Engine& engine, const MeasuredRange& measured, const ShotSettings& settings) {
   check_engine(engine);
   check_shot_settings(settings);
@@ -44,14 +80,7 @@ Calibration calibrate(const Engine& engine, const MeasuredRange& measured, const
                 "the measured range's uncertainty " + format_significant(measured.uncertainty, 6) +
                     " m must lie from 0 to the range itself; give it as {{measured}} 34.4m±1.5m");
   Calibration out;
-  const EngineParts& p = engine.parts;
-  const bool has_friction = p.axle.friction > 0 || p.hinge.friction > 0 || p.trough_friction > 0;
-  out.fitted = has_friction ? FrictionFit::scale : FrictionFit::pin_coefficient;
-  if (!has_friction && !(p.axle.radius > 0 && p.hinge.radius > 0))
-    throw Error(ErrorKind::usage,
-                "calibrate fits the engine's friction: give its coefficients ({{axle_friction}}, {{hinge_friction}}, "
-                "{{trough_friction}}), whose common scale it fits, or the pins' radii ({{axle_radius}} and {{hinge_radius}}), "
-                "and it fits one coefficient at both pins");
+  out.fitted = friction_fit_of(engine);
   // The gap explained in a fixed order (issue 35): the ideal engine at its optimum in vacuum,
   // measured as the settings measure it; then the release given; then the air given.
   {

@@ -30,6 +30,19 @@ double draw(const Spread& spread, std::mt19937_64& random) {
   return std::normal_distribution<double>(spread.a, spread.b)(random);
 }
 
+Share binomial_share(int count, int of) {
+  Share out;
+  if (of <= 0) return out;
+  // Wilson's score interval at 95 % (z = 1.96).
+  const double n = of, p = count / n, z = 1.959963984540054;
+  const double centre = (p + z * z / (2 * n)) / (1 + z * z / n), half = z / (1 + z * z / n) * std::sqrt(p * (1 - p) / n + z * z / (4 * n * n));
+  out.fraction = p;
+  // At none or all, an end is 0 or 1 exactly (the formula's round-off would leave 1e-17).
+  out.low = count == 0 ? 0 : std::max(0.0, centre - half);
+  out.high = count == of ? 1 : std::min(1.0, centre + half);
+  return out;
+}
+
 SampleOutcome run_sample(std::uint64_t seed, std::size_t i, const std::function<SampleOutcome(std::mt19937_64& random)>& sample) {
   // Each sample's own generator: its draws do not depend on which thread runs it, or when.
   std::seed_seq sequence{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32), static_cast<std::uint32_t>(i),
@@ -87,13 +100,8 @@ ClaimAssessment assess_claim(const MonteCarloSummary& summary, double claim) {
     for (std::size_t k = 0; k < reaching.size() && k < summary.drawn[i].size(); ++k) reaching[k].push_back(summary.drawn[i][k]);
   }
   if (out.worked == 0) return out;
-  // Wilson's score interval at 95 % (z = 1.96) for reached of worked.
-  const double n = out.worked, p = out.reached / n, z = 1.959963984540054;
-  const double centre = (p + z * z / (2 * n)) / (1 + z * z / n), half = z / (1 + z * z / n) * std::sqrt(p * (1 - p) / n + z * z / (4 * n * n));
-  out.probability = p;
-  // At 0 or all reached, an end is 0 or 1 exactly (the formula's round-off would leave 1e-17).
-  out.low = out.reached == 0 ? 0 : std::max(0.0, centre - half);
-  out.high = out.reached == out.worked ? 1 : std::min(1.0, centre + half);
+  const Share share = binomial_share(out.reached, out.worked);
+  out.probability = share.fraction, out.low = share.low, out.high = share.high;
   if (out.reached > 0)
     for (std::vector<double>& column : reaching) {
       std::sort(column.begin(), column.end());
@@ -102,7 +110,7 @@ ClaimAssessment assess_claim(const MonteCarloSummary& summary, double claim) {
   return out;
 }
 
-std::vector<double> rank_correlations_with_range(const MonteCarloSummary& summary) {
+std::vector<double> rank_correlations(const MonteCarloSummary& summary) {
   const std::size_t n = summary.values.size();
   if (n < 3 || summary.drawn.front().empty()) return {};
   std::vector<double> R(n), work(2 * n), out;

@@ -49,6 +49,17 @@ struct Calibration {
 /// scale, or mu at both pins.
 Engine with_friction(const Engine& engine, FrictionFit fitted, double value);
 
+/// What calibrate fits on this engine: the scale of its coefficients, or one coefficient at both
+/// pins where it has none. Throws Error(usage) for an engine without friction or the pins' radii.
+FrictionFit friction_fit_of(const Engine& engine);
+
+/// The friction (friction_fit_of) at which the engine throws `range` [m] as the settings measure
+/// it, to 1e-5 of the largest allowed: one draw of a calibration over unknowns (calibration_run.hpp).
+/// Throws Error(out_of_range) where none does, its message starting with why: "no friction
+/// explains it" (the engine without friction throws no farther) or "friction alone does not
+/// explain it" (the strongest friction allowed still throws farther).
+double fit_friction(const Engine& engine, double range, const ShotSettings& settings);
+
 /// Fits the friction to the measured range, after explaining what it can by the settings'
 /// release and air (Calibration::steps), which the messages of its refusals repeat. Throws Error(usage) for an engine without
 /// friction and without the pins' radii; Error(out_of_range) when the frictionless engine does

@@ -25,6 +25,13 @@ struct Spread {
 
 double draw(const Spread& spread, std::mt19937_64& random);
 
+/// A fraction count/of of samples, with its 95 % Wilson score interval (binomial; sound for
+/// fractions near 0 or 1 and few samples). All 0 for no samples.
+struct Share {
+  double fraction = 0, low = 0, high = 0;
+};
+Share binomial_share(int count, int of);
+
 /// What one sample gives: R [m], T [J], eps and the release speed v [m/s], or why it failed.
 struct SampleOutcome {
   std::array<double, 4> values{};
@@ -76,10 +83,11 @@ struct ClaimAssessment {
 };
 ClaimAssessment assess_claim(const MonteCarloSummary& summary, double claim);
 
-/// How much each drawn input moves R: Spearman's rank correlation of the input with R over the
+/// How much each drawn input moves the first of the sample values (R in a shot's run, the fitted
+/// friction in a calibration's): Spearman's rank correlation of the input with it over the
 /// samples that worked (GSL's gsl_stats_spearman), which a monotone effect of any shape shows
 /// and the other inputs' independent draws do not bias. By input, in the run's order; 0 for an
 /// input or an R that does not vary. Empty with fewer than 3 samples that worked.
-std::vector<double> rank_correlations_with_range(const MonteCarloSummary& summary);
+std::vector<double> rank_correlations(const MonteCarloSummary& summary);
 
 }  // namespace trebuchet

@@ -104,7 +104,7 @@ struct SettingsValues {
 };
 
 /// The member of SettingsValues that a setting given as a number sets (target_level, wind,
-/// air_density: a Monte Carlo run may spread them); nullptr for the others.
+/// air_density, cd: a Monte Carlo run may spread them); nullptr for the others.
 std::optional<double> SettingsValues::*number_slot(Setting id);
 
 /// Whether read_setting reads the setting: those a request takes as the programs' flag does (the
