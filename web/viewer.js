@@ -370,6 +370,8 @@
       e.hinge_friction > 0 && ['hinge pin friction μ', pin(e.hinge_friction, e.hinge_radius)],
       e.trough_friction > 0 && ['trough friction μ', significant(e.trough_friction, 3)],
       e.rope_diameter > 0 && ['sling rope', q(e.rope_diameter, 'length') + ', Cd ' + significant(e.rope_cd, 3)],
+      (e.rope_mass > 0 || e.pouch_mass > 0) && ['sling mass', q(e.rope_mass || 0, 'mass') + ' rope, ' + q(e.pouch_mass || 0, 'mass') + ' pouch'],
+      e.pin_friction > 0 && ['release pin friction μ', significant(e.pin_friction, 3)],
     ].filter(Boolean);
     const builtRows = built.map(([name, value]) => row(name, value)).join('');
     const lossNames = { axle: 'axle friction', hinge: 'hinge friction', trough: 'trough friction', sling_drag: 'air on the projectile', rope_drag: 'air on the rope' };
@@ -387,10 +389,13 @@
       ${row('quality Q', significant(100 * shot.Q, 4) + ' %' + (shot.assumptions.n !== 1 ? ' (Q_n, n = ' + shot.assumptions.n + ')' : ' = ρ̃ μ ε / 𝓕 = ' +
         significant(shot.Q * shot.force_factor / (e.m / e.M * shot.eps), 4) + ' × ' + significant(e.m / e.M, 3) + ' × ' + significant(shot.eps, 4) + ' / ' +
         significant(shot.force_factor, 4)), 'eq:Q: ρ̃ = R/L1 (the range at level 0 in vacuum over the long arm), μ = m/M, ε the efficiency, 𝓕 the force factor of eq:F')}
+      ${shot.range_efficiency !== undefined ? row('range efficiency', significant(100 * shot.range_efficiency, 4) + ' % (' + significant(100 * shot.range_efficiency_counterweight, 3) + ' % of the counterweight\'s fall)',
+        "Siano's: the range in vacuum over a black box's, all of ΔU thrown at 45° from the ground (docs/verifier.md, \"Range efficiency\")") : ''}
       ${row('force factor 𝓕', significant(shot.force_factor, 4), 'eq:F: the largest internal forces, as a multiple of the weights')}
       ${row('release speed v', q(shot.v, 'speed'))}
       ${row('release angle', significant(shot.A_deg, 4) + '°', 'the velocity angle of the projectile above the horizontal at the release')}
       ${row('pin angle', significant(shot.pin_angle_at_release_deg, 4) + '°' + pinTolerance(shot), 'the angle between the long arm and the sling at the release: the pin a builder bends to release there')}
+      ${e.pin_friction > 0 ? row('pin to bend', significant(shot.pin_to_bend_deg, 4) + '° for its friction ' + significant(e.pin_friction, 3), 'the loop leaves a pin of friction μ atan μ later: bend it that much more') : ''}
       ${row('release at', significant(shot.t_release, 4) + ' s, ' + q(shot.h, 'length') + ' up, ' + q(Math.abs(shot.x), 'length') + (shot.x < 0 ? ' behind' : ' before') + (shot.engine.machine === 'floating-arm' ? " the guide's line" : ' the pivot'))}
       ${lossRows}
       </table><table class="tv-figures"><caption>the builder's loads (largest up to the release)</caption>

@@ -32,6 +32,8 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
                     " m above the engine's base; give a target level below it");
   out.R_vacuum = vacuum_range({behind, 0}, {vx, vy}, drop, g);
   out.capacity.R = out.R_vacuum;
+  // The black box throws from the ground to the ground: the range efficiency's range is to the base's level.
+  const double R_base = target_level == 0 ? out.R_vacuum : vacuum_range({behind, 0}, {vx, vy}, out.h, g);
   // eq:T at the target level: the height above it is drop/L2, scaled; M g L2 turns tau_e into joules.
   out.capacity.T = energy_at_target(engine.m / engine.M, r.velocity, drop / L2) * engine.M * g * L2;
   out.T_vacuum = out.capacity.T;
@@ -100,8 +102,8 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
         (at_release.energies.beam + at_release.energies.counterweight - at_rest + at_release.energies.sling - sling_at_start) * energy_unit;
     for (int k = 0; k < loss_count; ++k) out.energy.losses[k] = shot.work[k] * energy_unit;
     // Siano's black box throws all of Delta U at 45 deg from the ground: 2 Delta U/(m g) = 2 Delta U L2/mu [m].
-    out.range_efficiency = out.R_vacuum / (2 * design.energy_drop() * L2 / design.mu);
-    out.range_efficiency_counterweight = out.R_vacuum / (2 * design.counterweight_fall() * L2 / design.mu);
+    out.range_efficiency = R_base / (2 * design.energy_drop() * L2 / design.mu);
+    out.range_efficiency_counterweight = R_base / (2 * design.counterweight_fall() * L2 / design.mu);
   }
   out.FS_perp = out.FS_perp_mg * engine.m * g, out.FR = out.FR_Mg * Mg, out.dFRh = out.dFRh_Mg * Mg;
   const double load_unit[load_count] = {Mg, Mg, Mg, Mg * L2};  // LoadIndex, scaled in M g and M g L2

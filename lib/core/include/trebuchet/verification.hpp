@@ -71,7 +71,8 @@ struct Verification {
   /// The pin angle to bend the release pin to for this release: pin_angle_deg plus atan of the
   /// engine's pin friction (release_pin_angle) [deg].
   double pin_to_bend_deg = 0;
-  /// Siano's range efficiency (docs/verifier.md, "Range efficiency"): R_vacuum over the black
+  /// Siano's range efficiency (docs/verifier.md, "Range efficiency"): the range in vacuum from the
+  /// pivot to the base's level (R_vacuum at target level 0) over the black
   /// box's range 2 Delta U/(m g), all of Delta U (eq:DU, the beam's rise taken off) thrown at 45
   /// deg from the ground in vacuum; and over 2 M h/m, h the counterweight's fall alone. Scaled.
   double range_efficiency = 0, range_efficiency_counterweight = 0;
