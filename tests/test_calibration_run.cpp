@@ -84,7 +84,8 @@ TEST_CASE("a range of unknowns that reaches what no engine has is refused before
     }
     return std::string("accepted");
   };
-  CHECK(refusal(unknown("--axle-radius", &DesignValues::axle_radius, UnitDimension::length, 0, 0.01)).find("--axle-radius uniform 0..0.01 m reaches 0") == 0);
+  CHECK(refusal(unknown("--axle-radius", &DesignValues::axle_radius, UnitDimension::length, 0, 0.01))
+            .find("--axle-radius uniform 0..0.01 m reaches 0") == 0);
   CHECK(refusal(unknown("--pouch-mass", &DesignValues::pouch_mass, UnitDimension::mass, -0.1, 0.1)).find("pouch_mass") != std::string::npos);
   SpreadInput normal = unknown("--hinge-radius", &DesignValues::hinge_radius, UnitDimension::length, 0, 0);
   normal.input.spread = {Spread::Kind::normal, 0.01, 0.003};

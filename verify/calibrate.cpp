@@ -22,8 +22,7 @@ namespace {
 // The friction fitted over the unknowns given as ranges or spreads (calibration_run.hpp).
 int run_calibrate_over_unknowns(const Options& o, const DesignValues& values) {
   const MonteCarloRequest request{values, o.settings, o.spreads, false, ""};
-  CalibrationRunInputs inputs{request, *o.measured, o.plausible_friction, o.settings.samples.value_or(200),
-                              o.settings.seed.value_or(1), o.threads};
+  CalibrationRunInputs inputs{request, *o.measured, o.plausible_friction, o.settings.samples.value_or(200), o.settings.seed.value_or(1), o.threads};
   check_monte_carlo_work(inputs.samples, 12, "fits");  // about a dozen shots a fit
   const CalibrationRun run = calibrate_over_unknowns(inputs, progress_bar("fits"));
   if (o.format == Format::json)

@@ -51,11 +51,13 @@ std::string percent(double fraction) { return format_significant(100 * fraction,
 CalibrationRun calibrate_over_unknowns(const CalibrationRunInputs& in, const Progress& progress) {
   const auto [lo, hi] = in.plausible;
   if (!(lo >= 0 && lo < hi && hi <= 2))
-    throw Error(ErrorKind::bad_number, "{{plausible_friction}} = " + format_significant(lo, 4) + ".." + format_significant(hi, 4) +
-                                           ": give the plausible friction coefficients as a range from 0 to at most 2, e.g. 0.1..0.5");
+    throw Error(ErrorKind::bad_number,
+                "{{plausible_friction}} = " + format_significant(lo, 4) + ".." + format_significant(hi, 4) +
+                    ": give the plausible friction coefficients as a range from 0 to at most 2, e.g. 0.1..0.5");
   if (!(in.measured.range > 0 && in.measured.uncertainty >= 0 && in.measured.uncertainty < in.measured.range))
-    throw Error(ErrorKind::bad_number, "{{measured}} = " + format_significant(in.measured.range, 4) + " m ± " +
-                                           format_significant(in.measured.uncertainty, 4) + " m: give the measured range, e.g. 34.4m±1.5m");
+    throw Error(ErrorKind::bad_number,
+                "{{measured}} = " + format_significant(in.measured.range, 4) + " m ± " + format_significant(in.measured.uncertainty, 4) +
+                    " m: give the measured range, e.g. 34.4m±1.5m");
   CalibrationRun run;
   run.given = in;
   // Bad input ends the run before it starts, with its exit code: at the unknowns' first values,
@@ -74,16 +76,18 @@ CalibrationRun calibrate_over_unknowns(const CalibrationRunInputs& in, const Pro
     for (const double end : {uniform ? s.a : s.a - 4 * s.b, uniform ? s.b : s.a + 4 * s.b}) try {
         engine_at(&spread, end);
       } catch (const Error& e) {
-        throw Error(ErrorKind::bad_number, describe_uncertain(spread.input) + (uniform ? " reaches " : " reaches, 4 sigma out, ") +
-                                               format_significant(end, 4) + ", where " + e.message([](std::string_view key) { return "{{" + std::string(key) + "}}"; }) +
-                                               "; give a range that holds only what the engine can have");
+        throw Error(ErrorKind::bad_number,
+                    describe_uncertain(spread.input) + (uniform ? " reaches " : " reaches, 4 sigma out, ") + format_significant(end, 4) + ", where " +
+                        e.message([](std::string_view key) { return "{{" + std::string(key) + "}}"; }) +
+                        "; give a range that holds only what the engine can have");
       }
   }
   run.fitted = engine_at(nullptr, 0);
   for (const SpreadInput& spread : in.request.spreads) run.unknowns.push_back(spread.input);
   run.unknowns.push_back({"--measured", UnitDimension::length, {Spread::Kind::normal, in.measured.range, in.measured.uncertainty}});
   const auto start = std::chrono::steady_clock::now();
-  run.summary = run_monte_carlo(in.samples, in.seed, in.threads, [&](std::mt19937_64& random) { return calibration_sample(in, random); }, progress);
+  run.summary = run_monte_carlo(
+      in.samples, in.seed, in.threads, [&](std::mt19937_64& random) { return calibration_sample(in, random); }, progress);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.threads = thread_count(in.threads, static_cast<std::size_t>(in.samples));
   std::vector<double> fits;
@@ -114,8 +118,7 @@ std::string verdict(const CalibrationRun& run) {
   if (run.share.fraction >= 0.5) return "Plausible: " + inside + " explains the measured range in " + share + ".";
   int above = 0, below = 0;
   for (const auto& values : run.summary.values) above += values[0] > hi, below += values[0] < lo;
-  for (const SampleFailures& f : run.summary.failures)
-    (f.reason.rfind("friction alone", 0) == 0 ? above : below) += f.count;
+  for (const SampleFailures& f : run.summary.failures) (f.reason.rfind("friction alone", 0) == 0 ? above : below) += f.count;
   const std::string remains = above >= below
       ? "most draws ask more friction than that, or more than any friction gives: the engine loses range to something the model does not "
         "hold (a sling that stretches, a beam that bends, a release that drags; docs/verifier.md, \"What is still left out\"), or an unknown "
@@ -199,7 +202,8 @@ std::vector<PictureFile> calibration_run_pictures(const CalibrationRun& run) {
   std::vector<std::string> described;
   for (const UncertainInput& u : run.unknowns) described.push_back(describe_uncertain(u));
   gp << "set terminal svg size 900,480 dynamic font 'sans,12'\nset output 'friction.svg'\n"
-     << "set title \"The friction fitted to the measured range over the unknowns\\n" << join(described, ", ") << "\\n"
+     << "set title \"The friction fitted to the measured range over the unknowns\\n"
+     << join(described, ", ") << "\\n"
      << run.summary.values.size() << " of " << run.summary.samples << " draws fitted; shaded: the plausible " << format_significant(lo, 3) << " to "
      << format_significant(hi, 3) << ", red: the median\"\n"
      << "set xlabel '" << fitted_words(run.fitted) << "'\nset ylabel 'draws'\nset yrange [0:*]\nset tmargin 6\nset grid ytics\n"

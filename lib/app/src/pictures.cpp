@@ -346,7 +346,8 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
   pin << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'pin.svg'")
       << "set xlabel 'pin angle between the long arm and the sling at the release [deg]'\nset ylabel 'R [m]'\nset y2label 'Q [%]'\n"
       << "set ytics nomirror\nset y2tics\nset key below\n"
-      << warnings << "set title \"The pin: a release at each pin angle; this shot's, " << format_significant(v.pin_to_bend_deg, 4) << "°, is marked\\n"
+      << warnings << "set title \"The pin: a release at each pin angle; this shot's, " << format_significant(v.pin_to_bend_deg, 4)
+      << "°, is marked\\n"
       << gnuplot_quoted(scene) << "\" noenhanced\n"
       << "set arrow from " << num(v.pin_to_bend_deg) << ", graph 0 to " << num(v.pin_to_bend_deg) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
       << "set label 'this shot' at " << num(v.pin_to_bend_deg) << ", graph 0.05 offset 0.3,0\n";

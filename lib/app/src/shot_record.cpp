@@ -132,8 +132,7 @@ std::vector<std::string> verification_csv_header() {
   header.push_back(pin_angle_column);  // after the earlier columns, so that they keep their places
   for (const InputField* field : release_fields()) header.push_back(csv_column_of(*field));  // a given release, which reads back
   header.push_back(machine_key);
-  header.insert(header.end(),
-                {"clearance_geometric_m", "clearance_in_shot_m"});  // Verification::Clearance: the columns before keep their places
+  header.insert(header.end(), {"clearance_geometric_m", "clearance_in_shot_m"});  // Verification::Clearance: the columns before keep their places
   header.insert(header.end(), {range_efficiency_keys[0], range_efficiency_keys[1], pin_to_bend_key});  // issue 48, last
   return header;
 }
@@ -184,7 +183,8 @@ nlohmann::ordered_json verification_json(const Verification& v, const std::optio
   nlohmann::ordered_json out;
   for (const Field& field : verification_fields(v)) {
     out[field.key] = field.value;
-    if (field.key == std::string("A_deg")) out[pin_angle_column] = v.pin_angle_deg, out[pin_to_bend_key] = v.pin_to_bend_deg;  // the release's angles together
+    if (field.key == std::string("A_deg"))
+      out[pin_angle_column] = v.pin_angle_deg, out[pin_to_bend_key] = v.pin_to_bend_deg;  // the release's angles together
     if (field.key == std::string("Q"))  // beside eps and Q
       out[range_efficiency_keys[0]] = v.range_efficiency, out[range_efficiency_keys[1]] = v.range_efficiency_counterweight;
     if (field.key == std::string("t_liftoff") && v.t_counterweight_free) out[counterweight_free_key] = *v.t_counterweight_free;  // the whipper's

@@ -60,12 +60,14 @@ double fit_friction(const Engine& engine, double range, const ShotSettings& give
   };
   const double R0 = range_at(0);
   if (!(range < R0))
-    throw Error(ErrorKind::out_of_range, "no friction explains it: the engine throws " + format_significant(R0, 4) +
-                                             " m without friction, no farther than the range " + format_significant(range, 4) + " m");
+    throw Error(ErrorKind::out_of_range,
+                "no friction explains it: the engine throws " + format_significant(R0, 4) + " m without friction, no farther than the range " +
+                    format_significant(range, 4) + " m");
   const double top = largest_value(engine, fitted), R_top = range_at(top);
   if (!(R_top < range))
-    throw Error(ErrorKind::out_of_range, "friction alone does not explain it: the strongest friction allowed still throws " +
-                                             format_significant(R_top, 4) + " m, farther than the range " + format_significant(range, 4) + " m");
+    throw Error(ErrorKind::out_of_range,
+                "friction alone does not explain it: the strongest friction allowed still throws " + format_significant(R_top, 4) +
+                    " m, farther than the range " + format_significant(range, 4) + " m");
   return find_root([&](double value) { return range_at(value) - range; }, 0, top, 1e-5 * top, 0);
 }
 

@@ -116,7 +116,8 @@ template <bool forced = true>
       a11 += e.end_mass * e.l * e.l * f * f;
       b1 -= e.end_mass * e.l * e.l * f * df * s.theta_dot * s.theta_dot;
       if (e.rope_inertia != 0) {  // phi_th = sin th/(l4 cos phi), eq:EOM_I_3
-        const double phi_th = trig.st * e.inv_l4 * inv_cos_phi, phi_thth = (trig.ct + trig.sf * trig.st * phi_th * inv_cos_phi) * e.inv_l4 * inv_cos_phi;
+        const double phi_th = trig.st * e.inv_l4 * inv_cos_phi,
+                     phi_thth = (trig.ct + trig.sf * trig.st * phi_th * inv_cos_phi) * e.inv_l4 * inv_cos_phi;
         a11 += e.rope_inertia * phi_th * phi_th;
         b1 -= e.rope_inertia * phi_th * phi_thth * s.theta_dot * s.theta_dot;
       }
@@ -138,7 +139,8 @@ template <bool forced = true>
   if (forced) b3 += Q[2] / (end * e.l * e.l4);
   const double l4_turn = e.l4 + e.rope_inertia / (ml2 * e.l4), ratio = e.l4 / l4_turn;
   // psi'' = (b2 + c_tp th'')/L_psi and l4 phi'' = (b3/l + s_tf th''): substituted into the first row.
-  const double theta_ddot = (b1 + e.psi_ratio * c_tp * b2 + ratio * end * e.l * s_tf * b3) / (a11 - e.psi_ratio * c_tp * c_tp - ratio * ml2 * s_tf * s_tf);
+  const double theta_ddot = (b1 + e.psi_ratio * c_tp * b2 + ratio * end * e.l * s_tf * b3) /
+      (a11 - e.psi_ratio * c_tp * c_tp - ratio * ml2 * s_tf * s_tf);
   const double inv_l4_turn = e.rope_inertia != 0 ? 1 / l4_turn : e.inv_l4;
   return {theta_ddot, (b2 + c_tp * theta_ddot) * e.inv_L_psi, (b3 * e.inv_l + s_tf * theta_ddot) * inv_l4_turn};
 }
@@ -489,7 +491,8 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   }
   out.energy = out.energies.beam + out.energies.counterweight + out.energies.projectile_kinetic + out.energies.projectile_potential;
   if (design_.parts.sling.any()) {
-    out.energies.sling = sling_energy(design_.parts.sling, e.l * e.l4, out.tip, {e.l * ct * td, e.l * st * td}, out.projectile, out.projectile_velocity, fd);
+    out.energies.sling = sling_energy(design_.parts.sling, e.l * e.l4, out.tip, {e.l * ct * td, e.l * st * td}, out.projectile,
+                                      out.projectile_velocity, fd);
     out.energy += out.energies.sling;
   }
   return out;

@@ -227,8 +227,9 @@ void check_parts(const Engine& e) {
   check_ordinary(p.rope_cd, 1e-3, 1e2, "rope_cd", "", "drag coefficient of the rope");
   for (const auto& [mass, key, what] : {std::tuple{p.rope_mass, "rope_mass", "the sling's rope"}, {p.pouch_mass, "pouch_mass", "the sling's pouch"}})
     if (!(mass >= 0 && mass <= e.M))
-      throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + say(mass) + " kg: the mass of " + what +
-                                             " must lie from 0 (none) to the counterweight's, " + say(e.M) + " kg; a sling weighs grams to a few kg");
+      throw Error(ErrorKind::bad_number,
+                  "{{" + std::string(key) + "}} = " + say(mass) + " kg: the mass of " + what + " must lie from 0 (none) to the counterweight's, " +
+                      say(e.M) + " kg; a sling weighs grams to a few kg");
 }
 
 // The whipper's start besides theta_i: a frame of ordinary height, the rope off the arm on its

@@ -418,7 +418,8 @@ double objective_range(const ReleasePoint& r, const ReleaseCriterion& criterion)
 // push on its counterweight beside its rail's (docs/machines.md; 0 on the other machines).
 std::array<double, load_count> load_values(const Snapshot& s) {
   const Vec2 frame{s.pivot_reaction.x + s.guide_force.x, s.pivot_reaction.y + s.guide_force.y};  // of order M g, as |F_R| (force_values)
-  return {std::max(s.sling_tension, s.rope_tension_at_tip), std::hypot(s.hinge_force.x, s.hinge_force.y), std::sqrt(frame.x * frame.x + frame.y * frame.y), std::abs(s.beam_moment)};
+  return {std::max(s.sling_tension, s.rope_tension_at_tip), std::hypot(s.hinge_force.x, s.hinge_force.y),
+          std::sqrt(frame.x * frame.x + frame.y * frame.y), std::abs(s.beam_moment)};
 }
 
 ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criterion, double t, const State& s, const Snapshot& snap,

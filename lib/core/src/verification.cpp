@@ -98,8 +98,8 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
     out.energy.projectile = r.energy_at_target * energy_unit;
     // The sling's, from its start along the base: what it took by the release.
     const double sling_at_start = -(design.parts.sling.rope + design.parts.sling.pouch) * design.pivot_height();
-    out.energy.engine =
-        (at_release.energies.beam + at_release.energies.counterweight - at_rest + at_release.energies.sling - sling_at_start) * energy_unit;
+    out.energy.engine = (at_release.energies.beam + at_release.energies.counterweight - at_rest + at_release.energies.sling - sling_at_start) *
+        energy_unit;
     for (int k = 0; k < loss_count; ++k) out.energy.losses[k] = shot.work[k] * energy_unit;
     // Siano's black box throws all of Delta U at 45 deg from the ground: 2 Delta U/(m g) = 2 Delta U L2/mu [m].
     out.range_efficiency = R_base / (2 * design.energy_drop() * L2 / design.mu);
@@ -178,8 +178,8 @@ ReleaseCriterion release_criterion(const Engine& engine, const ShotSettings& set
   if (const auto& at = settings.release_at) {
     const double time_unit = std::sqrt(engine.L2 / engine.material.g);  // section 3 [s]
     const double value = at->by == ReleaseBy::time ? at->value / time_unit
-        : at->by == ReleaseBy::pin_angle            ? release_pin_angle(radians(at->value), engine.parts.pin_friction)
-                                                    : radians(at->value);
+        : at->by == ReleaseBy::pin_angle           ? release_pin_angle(radians(at->value), engine.parts.pin_friction)
+                                                   : radians(at->value);
     criterion.given = GivenRelease{at->by, value, time_unit};
   }
   return criterion;

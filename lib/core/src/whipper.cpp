@@ -23,7 +23,8 @@ Whipper::Whipper(const ScaledDesign& design) : design_(design), theta_i_(radians
   if (design.parts.trough_friction > 0)
     throw Error(ErrorKind::usage, "the whipper has no trough: its projectile rests on the arm; leave out {{trough_friction}}");
   if (design.parts.sling.any())
-    throw Error(ErrorKind::usage, "the whipper's sling has no mass yet: its folded start is not built for a rope of mass; leave out {{rope_mass}} and {{pouch_mass}}");
+    throw Error(ErrorKind::usage,
+                "the whipper's sling has no mass yet: its folded start is not built for a rope of mass; leave out {{rope_mass}} and {{pouch_mass}}");
   if (design.parts.rope_drag > 0) throw Error(ErrorKind::usage, "the whipper takes no drag on the sling's rope yet; leave out {{rope_diameter}}");
   design_.machine = MachineKind::whipper;
   L_ = design_.L();
