@@ -5,6 +5,7 @@
 
 #include "trebuchet/design.hpp"
 #include "trebuchet/engine.hpp"
+#include "trebuchet/verification.hpp"
 #include "trebuchet/app/units.hpp"
 
 namespace trebuchet::testing {
@@ -49,6 +50,13 @@ inline Engine laboratory_engine(double m = 0.717) {
 /// A scaled design given by L = L3/L2 rather than F, as appendix A writes the equations.
 inline ScaledDesign design_with_L(double l, double l4, double L, double mu, double mu_b, double theta_i_deg) {
   return {l, l4, mu_b, mu, theta_i_deg, (L + 1) / (l * std::cos(radians(theta_i_deg)))};
+}
+
+/// The settings of a shot released at its range optimum (Denny's criterion), in vacuum.
+inline ShotSettings range_optimum() {
+  ShotSettings range;
+  range.criterion.release = Release::range;
+  return range;
 }
 
 }  // namespace trebuchet::testing

@@ -19,6 +19,7 @@ using namespace trebuchet;
 using trebuchet::testing::alcala_ca;
 using trebuchet::testing::denny_standard;
 using trebuchet::testing::laboratory_engine;
+using trebuchet::testing::range_optimum;
 
 namespace {
 
@@ -199,12 +200,6 @@ std::vector<NamedEngine> window_engines() {
           {"E5 as the floating arm", e5(MachineKind::floating_arm)}};
 }
 
-ShotSettings range_optimum() {
-  ShotSettings range;
-  range.criterion.release = Release::range;
-  return range;
-}
-
 }  // namespace
 
 TEST_CASE("VirtualTrebuchet's default engine released at its own 45 deg throws as far as pytrebuchet's", "[release][peers]") {
@@ -304,8 +299,7 @@ TEST_CASE("the floating arm's pin angle is measured from its moving axle", "[rel
 }
 
 TEST_CASE("a release pin's friction delays the loop by atan(mu), and the pin to bend says so", "[release][pin]") {
-  ShotSettings range;
-  range.criterion.release = Release::range;
+  const ShotSettings range = range_optimum();
   const Engine dry_less = laboratory_engine();
   const Verification optimum = verify_engine(dry_less, range);
   // No friction is today's pin release, bit for bit.

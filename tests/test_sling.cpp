@@ -25,12 +25,6 @@ Engine with_sling(Engine e, MachineKind machine, double rope, double pouch) {
   return e;
 }
 
-ShotSettings range_optimum() {
-  ShotSettings s;
-  s.criterion.release = Release::range;
-  return s;
-}
-
 }  // namespace
 
 TEST_CASE("a sling of no mass is today's shot, bit for bit, and a grain of mass barely moves it", "[sling]") {

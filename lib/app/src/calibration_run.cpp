@@ -49,7 +49,7 @@ std::string percent(double fraction) { return format_significant(100 * fraction,
 }  // namespace
 
 CalibrationRun calibrate_over_unknowns(const CalibrationRunInputs& in, const Progress& progress) {
-  const auto [lo, hi] = in.plausible;
+  const double lo = in.plausible[0], hi = in.plausible[1];
   if (!(lo >= 0 && lo < hi && hi <= 2))
     throw Error(ErrorKind::bad_number,
                 "{{plausible_friction}} = " + format_significant(lo, 4) + ".." + format_significant(hi, 4) +
