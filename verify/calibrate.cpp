@@ -21,6 +21,11 @@ namespace {
 
 // The friction fitted over the unknowns given as ranges or spreads (calibration_run.hpp).
 int run_calibrate_over_unknowns(const Options& o, const DesignValues& values) {
+  for (const auto& [given, flag] : {std::pair{!o.predict_m.empty(), "--predict-m"}, {!o.predict_M.empty(), "--predict-M"}, {!o.series.empty(), "--series"}})
+    if (given)
+      throw Error(ErrorKind::usage, std::string(flag) +
+                                        " follows one calibrated engine; with unknowns given as ranges or spreads there is one per draw: drop " + flag +
+                                        ", or give each unknown one value");
   const MonteCarloRequest request{values, o.settings, o.spreads, false, ""};
   CalibrationRunInputs inputs{request, *o.measured, o.plausible_friction, o.settings.samples.value_or(200), o.settings.seed.value_or(1), o.threads};
   check_monte_carlo_work(inputs.samples, 12, "fits");  // about a dozen shots a fit
@@ -29,14 +34,16 @@ int run_calibrate_over_unknowns(const Options& o, const DesignValues& values) {
     std::cout << pretty_json(calibration_run_json(run));
   else
     std::cout << calibration_run_table(run);
+  refuse_when_no_sample_worked(run.summary);  // after the report of the failures; no histogram
   if (!o.plot.empty()) write_picture_folder(o.plot, calibration_run_pictures(run), {"friction.gp"});
   return exit_success;
 }
 
 // What a measurement adds to an engine's file, given as flags over it: the parts as built (the
-// pins' radii, the sling), the release, and any value given as a range or a spread (an unknown).
+// pins' radii, the sling), the release, the material (g) and any value given as a range or a
+// spread (an unknown).
 bool adds_to_file(const Options& o, const InputField& field) {
-  return field.group == FieldGroup::part || field.group == FieldGroup::release ||
+  return field.group == FieldGroup::part || field.group == FieldGroup::release || field.group == FieldGroup::material ||
       std::any_of(o.spreads.begin(), o.spreads.end(), [&](const SpreadInput& s) { return s.value == field.member; });
 }
 

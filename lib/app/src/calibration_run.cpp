@@ -68,7 +68,12 @@ CalibrationRun calibrate_over_unknowns(const CalibrationRunInputs& in, const Pro
     const auto [engine, settings] = engine_of_values(sample);
     check_engine(engine);
     check_shot_settings(settings);
-    return friction_fit_of(engine);
+    try {
+      return friction_fit_of(engine);
+    } catch (const Error&) {  // a pin of no radius at a range's end: say so in the range's words
+      if (!varied) throw;
+      throw Error(ErrorKind::bad_number, "no pin has a radius for a friction to act on there; start the range above 0");
+    }
   };
   for (const SpreadInput& spread : in.request.spreads) {
     const Spread& s = spread.input.spread;
@@ -77,9 +82,8 @@ CalibrationRun calibrate_over_unknowns(const CalibrationRunInputs& in, const Pro
         engine_at(&spread, end);
       } catch (const Error& e) {
         throw Error(ErrorKind::bad_number,
-                    describe_uncertain(spread.input) + (uniform ? " reaches " : " reaches, 4 sigma out, ") + format_significant(end, 4) + ", where " +
-                        e.message([](std::string_view key) { return "{{" + std::string(key) + "}}"; }) +
-                        "; give a range that holds only what the engine can have");
+                    describe_uncertain(spread.input) + (uniform ? " reaches " : " reaches, 4 sigma out, ") + format_significant(end, 4) + ": " +
+                        e.message([](std::string_view key) { return "{{" + std::string(key) + "}}"; }));
       }
   }
   run.fitted = engine_at(nullptr, 0);
@@ -118,7 +122,10 @@ std::string verdict(const CalibrationRun& run) {
   if (run.share.fraction >= 0.5) return "Plausible: " + inside + " explains the measured range in " + share + ".";
   int above = 0, below = 0;
   for (const auto& values : run.summary.values) above += values[0] > hi, below += values[0] < lo;
-  for (const SampleFailures& f : run.summary.failures) (f.reason.rfind("friction alone", 0) == 0 ? above : below) += f.count;
+  for (const SampleFailures& f : run.summary.failures) {  // a draw that failed otherwise counts neither way
+    if (f.reason.rfind("friction alone", 0) == 0) above += f.count;
+    if (f.reason.rfind("no friction", 0) == 0) below += f.count;
+  }
   const std::string remains = above >= below
       ? "most draws ask more friction than that, or more than any friction gives: the engine loses range to something the model does not "
         "hold (a sling that stretches, a beam that bends, a release that drags; docs/verifier.md, \"What is still left out\"), or an unknown "

@@ -164,7 +164,7 @@ std::string energy_budget_text(const Verification& v, UnitSystem units) {
     return quantity_text(joules, UnitDimension::energy, units, 4) + " (" + format_significant(100 * joules / e.delta_U, 3) + " %)";
   };
   std::string text = "where Delta U = " + quantity_text(e.delta_U, UnitDimension::energy, units, 4) + " went by the release: the projectile " +
-      share(e.projectile) + ", the beam and the counterweight " + share(e.engine);
+      share(e.projectile) + ", the beam and the counterweight " + share(e.engine) + (e.sling != 0 ? ", the sling " + share(e.sling) : "");
   const char* names[loss_count] = {"axle friction", "hinge friction", "trough friction", "air on the projectile", "air on the rope"};
   for (int k = 0; k < loss_count; ++k)
     if (e.losses[k] != 0) text += ", " + std::string(names[k]) + " " + share(e.losses[k]);

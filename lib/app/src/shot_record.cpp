@@ -133,7 +133,7 @@ std::vector<std::string> verification_csv_header() {
   for (const InputField* field : release_fields()) header.push_back(csv_column_of(*field));  // a given release, which reads back
   header.push_back(machine_key);
   header.insert(header.end(), {"clearance_geometric_m", "clearance_in_shot_m"});  // Verification::Clearance: the columns before keep their places
-  header.insert(header.end(), {range_efficiency_keys[0], range_efficiency_keys[1], pin_to_bend_key});  // issue 48, last
+  header.insert(header.end(), {range_efficiency_keys[0], range_efficiency_keys[1], pin_to_bend_key, "energy_sling_J"});  // issue 48, last
   return header;
 }
 
@@ -161,7 +161,8 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
   row.push_back(machine_name(engine.machine));
   row.push_back(csv_number(v.clearance.geometric, digits));
   row.push_back(v.clearance.in_shot ? csv_number(*v.clearance.in_shot, digits) : "");
-  for (const double value : {v.range_efficiency, v.range_efficiency_counterweight, v.pin_to_bend_deg}) row.push_back(csv_number(value, digits));
+  for (const double value : {v.range_efficiency, v.range_efficiency_counterweight, v.pin_to_bend_deg, v.energy.sling})
+    row.push_back(csv_number(value, digits));
   return row;
 }
 
@@ -193,6 +194,7 @@ nlohmann::ordered_json verification_json(const Verification& v, const std::optio
   out["energy"] = {{"delta_U", e.delta_U},
                    {"projectile", e.projectile},
                    {"engine", e.engine},
+                   {"sling", e.sling},
                    {"losses",
                     {{"axle", e.losses[axle_loss]},
                      {"hinge", e.losses[hinge_loss]},

@@ -38,7 +38,8 @@ constexpr double condition_slack = 1e-9;
 // the shear the rod carries there, which a rope cannot, stays below tan 10 deg of its tension:
 // a rope would bend by that angle at its end to carry it, and its ends' angles, the sling's
 // length and phi along it would be off by as much. > 0 where it holds, and for a rope of no mass;
-// in the trough, where the rope lies along the trough that carries its weight, it is not asked.
+// not asked in the trough, where the model takes every sling straight from the start
+// (docs/machines.md, "The sling's mass").
 double rope_holds(Phase phase, const Snapshot& s) {
   if (phase != Phase::lifted || (s.rope_shear_at_tip == 0 && s.rope_shear_at_end == 0)) return 1;
   const double bend = std::tan(10 * M_PI / 180);

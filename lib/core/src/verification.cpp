@@ -96,10 +96,10 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
     const double energy_unit = Mg * L2;
     out.energy.delta_U = design.energy_drop() * energy_unit;
     out.energy.projectile = r.energy_at_target * energy_unit;
+    out.energy.engine = (at_release.energies.beam + at_release.energies.counterweight - at_rest) * energy_unit;
     // The sling's, from its start along the base: what it took by the release.
     const double sling_at_start = -(design.parts.sling.rope + design.parts.sling.pouch) * design.pivot_height();
-    out.energy.engine = (at_release.energies.beam + at_release.energies.counterweight - at_rest + at_release.energies.sling - sling_at_start) *
-        energy_unit;
+    out.energy.sling = (at_release.energies.sling - sling_at_start) * energy_unit;
     for (int k = 0; k < loss_count; ++k) out.energy.losses[k] = shot.work[k] * energy_unit;
     // Siano's black box throws all of Delta U at 45 deg from the ground: 2 Delta U/(m g) = 2 Delta U L2/mu [m].
     out.range_efficiency = R_base / (2 * design.energy_drop() * L2 / design.mu);

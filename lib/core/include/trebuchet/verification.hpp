@@ -102,6 +102,7 @@ struct Verification {
   /// sum to Delta U within the energy drift. After the release, what the air took in flight.
   struct EnergyBudget {
     double delta_U = 0, projectile = 0, engine = 0;
+    double sling = 0;  ///< what a sling of mass took: its energy at the release less at the start [J]
     Losses losses{};
     double flight_drag = 0;  ///< the projectile's energy at release over the flight's end level, less that at the end; 0 in vacuum
   };
