@@ -21,11 +21,12 @@ namespace {
 
 // The friction fitted over the unknowns given as ranges or spreads (calibration_run.hpp).
 int run_calibrate_over_unknowns(const Options& o, const DesignValues& values) {
-  for (const auto& [given, flag] : {std::pair{!o.predict_m.empty(), "--predict-m"}, {!o.predict_M.empty(), "--predict-M"}, {!o.series.empty(), "--series"}})
+  for (const auto& [given, flag] :
+       {std::pair{!o.predict_m.empty(), "--predict-m"}, {!o.predict_M.empty(), "--predict-M"}, {!o.series.empty(), "--series"}})
     if (given)
-      throw Error(ErrorKind::usage, std::string(flag) +
-                                        " follows one calibrated engine; with unknowns given as ranges or spreads there is one per draw: drop " + flag +
-                                        ", or give each unknown one value");
+      throw Error(ErrorKind::usage,
+                  std::string(flag) + " follows one calibrated engine; with unknowns given as ranges or spreads there is one per draw: drop " + flag +
+                      ", or give each unknown one value");
   const MonteCarloRequest request{values, o.settings, o.spreads, false, ""};
   CalibrationRunInputs inputs{request, *o.measured, o.plausible_friction, o.settings.samples.value_or(200), o.settings.seed.value_or(1), o.threads};
   check_monte_carlo_work(inputs.samples, 12, "fits");  // about a dozen shots a fit
