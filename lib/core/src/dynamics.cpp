@@ -137,11 +137,14 @@ template <bool forced = true>
   // the rope's inertia J makes l4 there l4 + J/(m l^2 l4), and `ratio` l4 over that.
   double b3 = e.l * c_tf * s.theta_dot * s.theta_dot + trig.cf;
   if (forced) b3 += Q[2] / (end * e.l * e.l4);
-  const double l4_turn = e.l4 + e.rope_inertia / (ml2 * e.l4), ratio = e.l4 / l4_turn;
+  double ratio = 1, inv_l4_turn = e.inv_l4;  // a rope of no mass: l4 itself, and no division on the hot path
+  if (e.rope_inertia != 0) {
+    const double l4_turn = e.l4 + e.rope_inertia / (ml2 * e.l4);
+    ratio = e.l4 / l4_turn, inv_l4_turn = 1 / l4_turn;
+  }
   // psi'' = (b2 + c_tp th'')/L_psi and l4 phi'' = (b3/l + s_tf th''): substituted into the first row.
   const double theta_ddot = (b1 + e.psi_ratio * c_tp * b2 + ratio * end * e.l * s_tf * b3) /
       (a11 - e.psi_ratio * c_tp * c_tp - ratio * ml2 * s_tf * s_tf);
-  const double inv_l4_turn = e.rope_inertia != 0 ? 1 / l4_turn : e.inv_l4;
   return {theta_ddot, (b2 + c_tp * theta_ddot) * e.inv_L_psi, (b3 * e.inv_l + s_tf * theta_ddot) * inv_l4_turn};
 }
 
@@ -447,13 +450,14 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   out.projectile_velocity = {e.l * (ct * td + e.l4 * sf * fd), e.l * (st * td - e.l4 * cf * fd)};
   out.normal_force = f.normal_force;
   out.sling_on_tip = f.rope.on_tip;
-  if (design_.parts.sling.any())
-    out.rope_tension_at_tip = f.rope.tension_at_tip, out.rope_shear_at_tip = f.rope.shear_at_tip, out.rope_shear_at_end = f.rope.shear_at_end;
   // The sling runs from the projectile to the tip along (cos phi, sin phi): its tension is the
   // pull on the projectile along it (the rope's drag adds a share across it); a sling can pull
   // but not push.
   out.sling_tension = f.sling_on_projectile.x * cf + f.sling_on_projectile.y * sf;
-  if (!design_.parts.sling.any()) out.rope_tension_at_tip = out.sling_tension;  // one tension along a rope of no mass
+  if (design_.parts.sling.any())
+    out.rope_tension_at_tip = f.rope.tension_at_tip, out.rope_shear_at_tip = f.rope.shear_at_tip, out.rope_shear_at_end = f.rope.shear_at_end;
+  else
+    out.rope_tension_at_tip = out.sling_tension;  // one tension along a rope of no mass
   // Positions of the hinge, the counterweight and the tip (dynamics.hpp), and heights above the
   // engine's base, which lies l cos(theta_i) below the pivot (H = L1 cos theta_i).
   out.hinge = {-st, ct};
