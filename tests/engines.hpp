@@ -47,6 +47,18 @@ inline Engine laboratory_engine(double m = 0.717) {
   return e;
 }
 
+/// pytrebuchet's WhipperTrebuchet.default(): an arm of 2 m (the weight's side) and 4 m, 10 kg; a
+/// 100 kg weight on a 4 m rope, 10 deg off the arm; a 3 kg ball 0.2 m across in a 4 m sling; the
+/// pivot 5 m up, the arm 60 deg above the horizontal (theta_i = -150 deg here).
+inline Engine pytrebuchet_default() {
+  Engine e;
+  e.machine = MachineKind::whipper;
+  e.L1 = 4, e.L2 = 2, e.L3 = 4, e.L4 = 4, e.M = 100, e.m = 3, e.mb = 10;
+  e.theta_i_deg = whipper_theta_i_deg;
+  e.whipper.H = 5, e.whipper.rope_angle_deg = 10, e.whipper.projectile_diameter = 0.2;
+  return e;
+}
+
 /// A scaled design given by L = L3/L2 rather than F, as appendix A writes the equations.
 inline ScaledDesign design_with_L(double l, double l4, double L, double mu, double mu_b, double theta_i_deg) {
   return {l, l4, mu_b, mu, theta_i_deg, (L + 1) / (l * std::cos(radians(theta_i_deg)))};

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <random>
 
+#include "engines.hpp"
 #include "trebuchet/dynamics.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/shot.hpp"
@@ -15,22 +16,7 @@
 #include "trebuchet/whipper.hpp"
 
 using namespace trebuchet;
-
-namespace {
-
-// pytrebuchet's WhipperTrebuchet.default(): an arm of 2 m (the weight's side) and 4 m, 10 kg; a
-// 100 kg weight on a 4 m rope, 10 deg off the arm; a 3 kg ball 0.2 m across in a 4 m sling; the
-// pivot 5 m up, the arm 60 deg above the horizontal (theta_i = -150 deg here).
-Engine pytrebuchet_default() {
-  Engine e;
-  e.machine = MachineKind::whipper;
-  e.L1 = 4, e.L2 = 2, e.L3 = 4, e.L4 = 4, e.M = 100, e.m = 3, e.mb = 10;
-  e.theta_i_deg = whipper_theta_i_deg;
-  e.whipper.H = 5, e.whipper.rope_angle_deg = 10, e.whipper.projectile_diameter = 0.2;
-  return e;
-}
-
-}  // namespace
+using trebuchet::testing::pytrebuchet_default;
 
 // Its mass-matrix form and the paper's explicit eq:EOM_II_1, eq:EOM_I_2, eq:EOM_II_3 (Dynamics)
 // are two writings of one Lagrangian: at any state their accelerations agree to round-off, for the

@@ -40,7 +40,15 @@ ShotSeries shot_series(const Engine& engine, const ShotSettings& settings, const
   const Verification& v = series.verification = verification;
   std::vector<TracePoint>& trace = series.trace;
   std::vector<TracePoint> unreleased;
-  simulate_shot(d, release_criterion(engine, settings), settings.integrator, &trace, v.t_release / time_unit / 200, &unreleased);
+  // The chart of the pin: the releases at pins bent 20 deg either side of its own, every 2 deg, read off this shot.
+  PinScan pins(engine, settings, [](double own_deg) {
+    std::vector<double> out;
+    for (int k = -10; k <= 10; ++k) out.push_back(own_deg + 2 * k);
+    return out;
+  });
+  const ShotResult shot = simulate_shot(d, release_criterion(engine, settings), settings.integrator, &trace, v.t_release / time_unit / 200,
+                                        &unreleased, false, pins.releases());
+  series.pins = pins.shots(shot);
   const Moments m = moments_of(trace);
   series.liftoff = m.liftoff, series.peak_reaction = m.peak_reaction, series.first_extreme = m.first_extreme,
   series.second_extreme = m.second_extreme, series.release = m.release;
@@ -77,9 +85,6 @@ ShotSeries shot_series(const Engine& engine, const ShotSettings& settings, const
     if (i == m.release) series.release_row = series.phase_two.size();
     series.phase_two.push_back({p.t * time_unit, r.quality, r.efficiency, r.range, running.max});
   }
-  std::vector<double> pins;
-  for (int k = -10; k <= 10; ++k) pins.push_back(v.pin_to_bend_deg + 2 * k);
-  series.pins = pin_scan(engine, settings, pins);
   return series;
 }
 

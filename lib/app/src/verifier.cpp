@@ -109,9 +109,17 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
     fitted_table = "fitted engine (" + std::to_string(result.simulations) + " shots):\n" + engine_table(engine, check.units);
   }
   std::vector<TracePoint> trace;
+  // The pin to bend for an optimum, and what a degree or two of error costs: read off the same shot.
+  PinScan tolerance_scan(engine, settings, [](double own_deg) {
+    std::vector<double> pins;
+    for (double offset : pin_tolerance_offsets) pins.push_back(own_deg + offset);
+    return pins;
+  });
+  std::vector<PinShot> tolerance_shots;
   const auto shoot = [&] {
     try {
-      return verify_engine(engine, settings, check.series_path.empty() ? nullptr : &trace, check.series_dt_s);
+      return verify_engine(engine, settings, check.series_path.empty() ? nullptr : &trace, check.series_dt_s,
+                           settings.release_at ? nullptr : &tolerance_scan, &tolerance_shots);
     } catch (const Error& e) {
       // A release the design itself sets is named by its key, as the design gives it ("pin_angle_deg").
       if (!record.release_at || check.settings.release_at) throw;
@@ -140,11 +148,9 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   out.json["engine"] = engine_json;
   out.json["assumptions"] = assumptions_json(engine, settings);
   if (!settings.release_at) {  // the pin to bend for this optimum, and what a degree or two of error costs
-    std::vector<double> pins;
-    for (double offset : pin_tolerance_offsets) pins.push_back(v.pin_to_bend_deg + offset);
     nlohmann::ordered_json tolerance = nlohmann::ordered_json::array();
     std::vector<std::string> lost;
-    for (const PinShot& shot : pin_scan(engine, settings, pins)) {
+    for (const PinShot& shot : tolerance_shots) {
       const double offset = shot.pin_angle_deg - v.pin_to_bend_deg;
       const std::string signed_offset = (offset > 0 ? "+" : "") + format_significant(offset, 2) + " deg: ";
       if (shot.R) {

@@ -38,6 +38,22 @@ void ReleaseWatch::add(double value, bool forward) {
   forward_ended = forward_ended || (!forward && forward_lo <= forward_hi);
 }
 
+GivenWatch::GivenWatch(const GivenRelease& asked, double t, const Snapshot& at_liftoff, bool throws, bool turns)
+    : given(asked), whole_turns(turns) {
+  watch.at_liftoff = watch.lowest = watch.highest = watched_value(given.by, t, at_liftoff, M_PI / 2);
+  if (whole_turns && given.by != ReleaseBy::time) given.value -= 2 * M_PI * std::ceil((given.value - watch.at_liftoff) / (2 * M_PI));
+  watch.add(watch.at_liftoff, throws);
+  in_trough = !(ahead_of(given, watch.at_liftoff) > 0);
+}
+
+void GivenWatch::add(std::size_t index, double t, const Snapshot& s, bool throws) {
+  const double before = watch.last;
+  watch.add(watched_value(given.by, t, s, before), throws);
+  if (!in_trough && !watch.crossed && !(ahead_of(given, watch.last) > 0)) watch.crossed = index, watch.near = before;
+}
+
+bool GivenWatch::spent() const { return given.by != ReleaseBy::time && watch.last < (whole_turns ? given.value - 2 * M_PI : -M_PI); }
+
 void refuse_given_release(const GivenRelease& given, const ReleaseWatch& watch, const std::string& what, bool whole_turns) {
   static const char* names[] = {"{{release_time}}", "{{release_angle}}", "{{pin_angle}}"};
   static const char* quantities[] = {"the time", "the projectile's velocity angle", "the pin angle"};

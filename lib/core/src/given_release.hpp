@@ -34,6 +34,26 @@ struct ReleaseWatch {
   void add(double value, bool forward);
 };
 
+/// One given release followed over phase II's samples, as the shot steps or replayed from them
+/// afterwards (a further release read off the same trajectory): both see the same values.
+struct GivenWatch {
+  /// Starts at lift-off (sample 0) at scaled time t; the whipper's given angle moves by whole
+  /// turns to the first one below its value there (docs/machines.md, "The whipper").
+  GivenWatch(const GivenRelease& asked, double t, const Snapshot& at_liftoff, bool throws, bool whole_turns);
+  /// Adds sample `index` at scaled time t.
+  void add(std::size_t index, double t, const Snapshot& s, bool throws);
+  /// Whether an angle has passed every value it could be given (below -180 deg, or the whipper's
+  /// whole turn below the given one).
+  bool spent() const;
+  /// Whether the shot has stepped two samples past the release, as a given release's shot does
+  /// to refine the running extremes of eq:F before it.
+  bool done(std::size_t samples) const { return watch.crossed && samples > *watch.crossed + 2; }
+  GivenRelease given;  ///< as watched: the whipper's angle moved by whole turns
+  ReleaseWatch watch;
+  bool in_trough = false;  ///< already past at lift-off: the release would come in the trough
+  bool whole_turns = false;
+};
+
 /// Error(bad_number) for a given release that does not come after lift-off, or that throws the
 /// projectile backward: `what` went wrong, and the values that do occur, in seconds or degrees.
 /// With `whole_turns` (the whipper's angles, which turn through -180 deg) the angles run on, unwrapped.

@@ -452,12 +452,13 @@ ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criter
 }
 
 ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterion, const IntegratorSettings& settings, std::vector<TracePoint>* trace,
-                         double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads) {
-  return simulate_shot(*machine_of(e), criterion, settings, trace, trace_dt, unreleased, find_loads);
+                         double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads, const OtherReleases& others) {
+  return simulate_shot(*machine_of(e), criterion, settings, trace, trace_dt, unreleased, find_loads, others);
 }
 
 ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
-                         std::vector<TracePoint>* trace, double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads) {
+                         std::vector<TracePoint>* trace, double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads,
+                         const OtherReleases& others) {
   use_gsl_return_codes();
   const ScaledDesign& e = dynamics.design();
   ShotResult result;
@@ -587,19 +588,17 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   double highest_apex = 0;
   std::vector<double> sampled{at_liftoff.objective};
   double best_quality = sampled.front();
+  // What a given release watches at each sample (the snapshot, whether a release there throws),
+  // and the energy drift up to it: what a further release replays (OtherReleases).
+  std::vector<Snapshot> snapshots{lift_snapshot};
+  std::vector<char> throwing{throws(e, at_liftoff)};
+  std::vector<double> drift_up_to{result.energy_drift};
   // A given release watches its value from lift-off on; one already past there would release in the trough.
   // The whipper's projectile leaves the arm falling forward, and its velocity and pin angles turn
   // through a whole turn before the release: a given angle is the first one below their value
   // there, whole turns apart (docs/machines.md, "The whipper").
-  std::optional<GivenRelease> given = criterion.given;
-  ReleaseWatch watch;
-  bool given_in_trough = false;
-  if (given) {
-    watch.at_liftoff = watch.lowest = watch.highest = watched_value(given->by, t, lift_snapshot, M_PI / 2);
-    if (whips && given->by != ReleaseBy::time) given->value -= 2 * M_PI * std::ceil((given->value - watch.at_liftoff) / (2 * M_PI));
-    watch.add(watch.at_liftoff, throws(e, at_liftoff));
-    given_in_trough = !(ahead_of(*given, watch.at_liftoff) > 0);
-  }
+  std::optional<GivenWatch> given;
+  if (criterion.given) given.emplace(*criterion.given, t, lift_snapshot, throwing.front(), whips);
   h = 1e-3;
   // The release window (docs/verifier.md, "Window"): one for every shot, every form of release
   // and every machine, lossless or not. It ends where the projectile's velocity turns backward
@@ -632,16 +631,11 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     const ReleasePoint here = release_point(e, criterion, t, s, snap, phase2.samples().back().extremes);
     phase2.add(lifted.step_end(t, y, snap), snap);
     sampled.push_back(here.objective);
+    snapshots.push_back(snap), throwing.push_back(throws(e, here)), drift_up_to.push_back(result.energy_drift);
     best_quality = std::max(best_quality, here.objective);
     if (here.range > 0) highest_apex = std::max(highest_apex, here.height + std::pow(std::max(here.velocity.y, 0.0), 2) / 2);  // scaled, g = 1
-    if (given) {
-      const double before = watch.last;
-      watch.add(watched_value(given->by, t, snap, before), throws(e, here));
-      if (!given_in_trough && !watch.crossed && !(ahead_of(*given, watch.last) > 0)) watch.crossed = phase2.samples().size() - 1, watch.near = before;
-    }
-    backward.add(throws(e, here));
-    // An angle below -180 deg (the whipper's: a whole turn below the given one) has passed every value it could be given.
-    const bool angle_spent = given && given->by != ReleaseBy::time && watch.last < (whips ? given->value - 2 * M_PI : -M_PI);
+    if (given) given->add(phase2.samples().size() - 1, t, snap, throwing.back());
+    backward.add(throwing.back());
     if (window_end.empty()) {
       if (s.theta > dynamics.turn_limit(Phase::lifted))
         window_end = "the beam turns over first";
@@ -650,7 +644,7 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
       else if (axle_holds)
         window_end = "the axle's friction stops the beam first";
     }
-    return !window_end.empty() || angle_spent;
+    return !window_end.empty() || (given && given->spent());
   };
   // Past the release: the objective has fallen to half its maximum, or two steps past a given
   // release, so that the running extremes of eq:F before it are refined as an optimum's are.
@@ -660,7 +654,7 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     // With `unreleased` asked for, phase II goes on as an optimum's window would (to half the
     // objective's best), so that the pictures show what the given release gave up.
     const bool fallen = !whips && best_quality > 0 && sampled.back() < 0.5 * best_quality;
-    if (given) return watch.crossed && phase2.samples().size() > *watch.crossed + 2 && (!unreleased || fallen);
+    if (given) return given->done(phase2.samples().size()) && (!unreleased || fallen);
     return fallen;
   };
   bool ended = false;  // the shot ended (not merely past the release)
@@ -670,12 +664,12 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   // where the search stopped past it, the swing is followed on to its end.
   const auto refuse_given = [&](const std::string& what) {
     while (!ended) ended = step_ends_shot();
-    refuse_given_release(*criterion.given, watch, what, whips);  // the value as given, not moved by whole turns
+    refuse_given_release(*criterion.given, given->watch, what, whips);  // the value as given, not moved by whole turns
   };
-  if (given_in_trough)
+  if (given && given->in_trough)
     refuse_given(whips ? "the release would come before the projectile leaves the arm"
                        : "the release would come before lift-off, with the projectile still in the trough");
-  if (given && !watch.crossed)
+  if (given && !given->watch.crossed)
     refuse_given("the release never comes: " +
                  (window_end.empty() ? std::string("the watched value never reaches it") : "the release window ends, " + window_end));
   // No release with a positive objective: under Release::range with a target level above the
@@ -734,18 +728,18 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   };
   // A given release is the root of its watched value on the continuous solution, within the step
   // it was crossed in, each value integrated anew from the step's start (y_exact_at).
-  const auto given_release = [&]() {
-    if (given->by == ReleaseBy::time) return given->value;
-    const std::size_t i = *watch.crossed;
+  const auto given_release = [&](const GivenWatch& g) {
+    if (g.given.by == ReleaseBy::time) return g.given.value;
+    const std::size_t i = *g.watch.crossed;
     const auto ahead = [&](double time) {
       const State s = lifted.state(phase2.y_exact_at(time));
-      return ahead_of(*given, watched_value(given->by, time, dynamics.snapshot(Phase::lifted, s), watch.near));
+      return ahead_of(g.given, watched_value(g.given.by, time, dynamics.snapshot(Phase::lifted, s), g.watch.near));
     };
     return find_root(ahead, samples[i - 1].t, samples[i].t, 1e-13, 0);
   };
   double t_release = 0;
   if (given) {
-    t_release = given_release();
+    t_release = given_release(*given);
   } else {
     const Candidate found = optimal_release();
     t_release = found.t;
@@ -756,9 +750,49 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   result.work = lifted.work(y_release);
   if (given && !(result.release.range > 0))
     refuse_given("released there, the projectile does not fly forward from above the engine's base" +
-                 (given->by == ReleaseBy::velocity_angle
+                 (given->given.by == ReleaseBy::velocity_angle
                       ? std::string()
                       : " (its velocity angle is " + format_significant(degrees(result.release.velocity_angle), 4) + " deg)"));
+  // The further releases (OtherReleases), each replayed over the samples as its own shot would
+  // watch it, phase II stepped on until each is two samples past its release (GivenWatch::done)
+  // or cannot come. The shot's own figures stay as found: its search's end, its drift and steps.
+  const double search_end = samples.back().t;
+  if (others) {
+    const double drift = result.energy_drift;
+    const long steps = result.steps;
+    std::vector<GivenWatch> watches;
+    std::vector<std::size_t> seen;  // the samples each watch has replayed
+    for (const GivenRelease& asked : others(result.release))
+      watches.emplace_back(asked, samples.front().t, snapshots.front(), throwing.front(), whips), seen.push_back(1);
+    const auto catch_up = [&] {
+      bool waiting = false;
+      for (std::size_t k = 0; k < watches.size(); ++k) {
+        for (; seen[k] < samples.size(); ++seen[k]) watches[k].add(seen[k], samples[seen[k]].t, snapshots[seen[k]], throwing[seen[k]]);
+        waiting = waiting || (!watches[k].in_trough && !watches[k].done(samples.size()) && !watches[k].spent());
+      }
+      return waiting;
+    };
+    // A step that fails here fails a further release's own shot as well, if it needed the step.
+    try {
+      while (catch_up() && window_end.empty()) step_ends_shot();
+    } catch (const Error&) {
+    }
+    catch_up();
+    for (const GivenWatch& w : watches) {
+      std::optional<OtherRelease> other;
+      const auto& crossed = w.watch.crossed;
+      // Its own shot ends two samples past the release, or where the window ends or a step failed first.
+      const bool stepped = crossed && (w.done(samples.size()) || !window_end.empty() || w.spent());
+      if (!w.in_trough && stepped && !(drift_up_to[std::min(*crossed + 2, samples.size() - 1)] > settings.max_energy_drift)) {
+        const double time = given_release(w);
+        const OdeVector at = phase2.y_exact_at(time);
+        const ReleasePoint point = point_from(time, at);
+        if (point.range > 0) other = OtherRelease{point, lifted.work(at)};
+      }
+      result.others.push_back(other);
+    }
+    result.energy_drift = drift, result.steps = steps;
+  }
   // Only what happens before the release invalidates the shot.
   auto before_release = [&](const std::optional<double>& t) { return t && *t <= t_release ? t : std::nullopt; };
   result.slack_sling = before_release(onsets[0]);
@@ -834,7 +868,7 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   }
   if (unreleased) {  // phase II past the release, as far as the search looked
     std::vector<TracePoint> all;
-    record_trace(&all, lifted, phase2, t_release, samples.back().t, trace_dt);
+    record_trace(&all, lifted, phase2, t_release, search_end, trace_dt);
     for (const TracePoint& p : all)
       if (p.t > t_release) unreleased->push_back(p);
   }

@@ -208,7 +208,8 @@ ShotSettings settings_for(const Engine& engine, const ShotSettings& settings) {
   return out;
 }
 
-Verification verify_engine(const Engine& engine, const ShotSettings& given, std::vector<TracePoint>* trace, double trace_dt_s) {
+Verification verify_engine(const Engine& engine, const ShotSettings& given, std::vector<TracePoint>* trace, double trace_dt_s, PinScan* pins,
+                           std::vector<PinShot>* pin_shots) {
   check_engine(engine);  // as given, its material too: a caller may have changed either since it was read
   check_shot_settings(given);
   const ShotSettings settings = settings_for(engine, given);
@@ -228,25 +229,45 @@ Verification verify_engine(const Engine& engine, const ShotSettings& given, std:
                       format_significant(duration_s / max_series_points, 2) + " s");
   }
   const ShotResult shot = simulate_shot(shot_design(engine, settings), criterion, settings.integrator, trace, trace_dt_s / time_unit, nullptr,
-                                        settings.loads);
+                                        settings.loads, pins ? pins->releases() : OtherReleases{});
+  if (pins && pin_shots) *pin_shots = pins->shots(shot);
   return verification_of(engine, shot, settings.target_level, settings.air, settings.range_from_release);
 }
 
-std::vector<PinShot> pin_scan(const Engine& engine, ShotSettings settings, const std::vector<double>& pins_deg) {
-  settings.loads = false;
-  check_shot_settings(settings);
-  std::vector<PinShot> out;
-  for (double pin : pins_deg) {
-    PinShot shot{pin, std::nullopt, std::nullopt};
-    settings.release_at = SetRelease{ReleaseBy::pin_angle, pin};
-    try {
-      const Verification v = verify_engine(engine, settings);
-      shot.R = v.capacity.R, shot.Q = v.Q;
-    } catch (const Error&) {
-      // The settings were checked above: what fails here is this pin's release (in the trough,
-      // never, backward, or a flight that does not reach the target level).
+PinScan::PinScan(const Engine& engine, const ShotSettings& settings, Pins pins_deg)
+    : engine_(engine), settings_(settings), pins_deg_(std::move(pins_deg)) {}
+
+OtherReleases PinScan::releases() {
+  return [this](const ReleasePoint& own) {
+    // The pin to bend for the shot's own release, as verification_of gives it.
+    asked_ = pins_deg_(degrees(own.pin_angle) + degrees(std::atan(engine_.parts.pin_friction)));
+    // Each pin as a shot given it releases there (release_criterion), in the settings as they hold for the engine.
+    ShotSettings at = settings_for(engine_, settings_);
+    std::vector<GivenRelease> releases;
+    for (double pin : asked_) {
+      at.release_at = SetRelease{ReleaseBy::pin_angle, pin};
+      releases.push_back(*release_criterion(engine_, at).given);
     }
-    out.push_back(shot);
+    return releases;
+  };
+}
+
+std::vector<PinShot> PinScan::shots(const ShotResult& shot) const {
+  const ShotSettings settings = settings_for(engine_, settings_);
+  std::vector<PinShot> out;
+  for (std::size_t i = 0; i < asked_.size(); ++i) {
+    PinShot pin{asked_[i], std::nullopt, std::nullopt};
+    if (const auto& other = shot.others.at(i)) {
+      ShotResult released;
+      released.t_liftoff = shot.t_liftoff, released.release = other->release, released.work = other->work;
+      try {
+        const Verification v = verification_of(engine_, released, settings.target_level, settings.air, settings.range_from_release);
+        pin.R = v.capacity.R, pin.Q = v.Q;
+      } catch (const Error&) {
+        // A flight that does not come down to the target level, as a shot given this pin refuses it.
+      }
+    }
+    out.push_back(pin);
   }
   return out;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -62,6 +63,19 @@ struct LoadPeak {
   double value = 0, t = 0;
 };
 
+/// A further release of a shot read off its trajectory (docs/verifier.md, "One trajectory, every
+/// release"): a release changes nothing before it, so phase II, stepped on as far as the release
+/// needs, is the same that a shot given that release steps. The release and the work of the
+/// losses up to it, bit for bit as that shot finds them.
+struct OtherRelease {
+  ReleasePoint release;
+  Losses work{};
+};
+
+/// The further releases a shot reads off its trajectory, chosen once its own is found (`own`):
+/// e.g. the pins a degree or two either side of the optimum's.
+using OtherReleases = std::function<std::vector<GivenRelease>(const ReleasePoint& own)>;
+
 struct ShotResult {
   double t_liftoff = 0;  ///< scaled; the whipper's: when the projectile leaves the arm
   std::optional<double> t_counterweight_free;  ///< the whipper's: when its counterweight leaves the arm, scaled
@@ -88,6 +102,9 @@ struct ShotResult {
   /// shot up to the release and after it for as long again (phase III, or until friction holds
   /// the machine at rest); found with the builder's loads (simulate_shot's find_loads).
   std::optional<double> lowest_counterweight;
+  /// The further releases asked for (simulate_shot's `others`), in their order: none where a shot
+  /// given that release would refuse it (in the trough, never, not forward) or fail.
+  std::vector<std::optional<OtherRelease>> others;
 };
 
 /// One moment of the motion for a time series (--series), scaled.
@@ -109,16 +126,18 @@ struct TracePoint {
 /// the release search looked (the objective down to half its best), sampled alike.
 /// With `find_loads`, the builder's loads (ShotResult::loads) and the counterweight's lowest
 /// point (ShotResult::lowest_counterweight, which follows phase III) are found: what searches
-/// that only rank engines save.
+/// that only rank engines save. With `others`, the further releases it asks for once the shot's
+/// own is found are read off the same trajectory (ShotResult::others); the shot's own figures do
+/// not change.
 ShotResult simulate_shot(const ScaledDesign& design, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
                          std::vector<TracePoint>* trace = nullptr, double trace_dt = 0, std::vector<TracePoint>* unreleased = nullptr,
-                         bool find_loads = false);
+                         bool find_loads = false, const OtherReleases& others = {});
 
 /// The same for any machine (machine.hpp): the paper's engine is simulate_shot(Dynamics(design), ...)
 /// once the design has room for its counterweight arm and a beam that can turn, which the
 /// overload above checks first.
 ShotResult simulate_shot(const Machine& machine, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
                          std::vector<TracePoint>* trace = nullptr, double trace_dt = 0, std::vector<TracePoint>* unreleased = nullptr,
-                         bool find_loads = false);
+                         bool find_loads = false, const OtherReleases& others = {});
 
 }  // namespace trebuchet

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -147,24 +148,41 @@ inline constexpr double max_series_points = 1e6;
 /// the projectile's density in air (m over the ball's volume), so that its drag is the ball's.
 ShotSettings settings_for(const Engine& engine, const ShotSettings& settings);
 
-/// Simulates one shot of `engine` under settings_for(engine, settings), under its own g. Throws Error(numerical) as simulate_shot
-/// does. With `trace`, the motion is appended to it (scaled, see simulate_shot): at the step
-/// ends, or every trace_dt_s seconds; a trace_dt_s that gives more than max_series_points is
-/// refused (Error(bad_number), {{series_dt}}) before the series is drawn.
-Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace = nullptr, double trace_dt_s = 0);
-
-/// The shot of `engine` released at a given pin angle: its range (as the settings measure it)
-/// and Q, or none where that release cannot be made (in the trough, never reached, backward, or
-/// with a flight that does not come down to the target level).
+/// The shot of `engine` released at a pin bent to a given angle: its range (as the settings
+/// measure it) and Q, or none where that release cannot be made (in the trough, never reached,
+/// backward, or with a flight that does not come down to the target level).
 struct PinShot {
-  double pin_angle_deg = 0;  ///< [deg]
+  double pin_angle_deg = 0;  ///< the pin to bend [deg]
   std::optional<double> R, Q;  ///< [m], scaled
 };
 
-/// The shots released at each of `pins_deg` [deg], without the builder's loads: how the range
-/// and Q change as the pin is bent (the best pin's tolerance, the chart of --plot). Bad settings
-/// are thrown as verify_engine throws them.
-std::vector<PinShot> pin_scan(const Engine& engine, ShotSettings settings, const std::vector<double>& pins_deg);
+/// How the range and Q change as the pin is bent (the best pin's tolerance, the chart of --plot):
+/// the releases at pins bent to pins_deg(own) [deg], own the pin to bend for the shot's own
+/// release, read off that shot's trajectory (simulate_shot's OtherReleases). Each is what a shot
+/// of `engine` under `settings` given that pin angle ({{pin_angle}}) finds, to round-off.
+class PinScan {
+ public:
+  using Pins = std::function<std::vector<double>(double own_deg)>;
+  PinScan(const Engine& engine, const ShotSettings& settings, Pins pins_deg);
+  /// The releases to ask the shot for; this scan must outlive the shot.
+  OtherReleases releases();
+  /// The pin shots read off a shot that asked for releases().
+  std::vector<PinShot> shots(const ShotResult& shot) const;
+
+ private:
+  const Engine& engine_;
+  const ShotSettings& settings_;
+  Pins pins_deg_;
+  std::vector<double> asked_;  ///< the pins asked for [deg]
+};
+
+/// Simulates one shot of `engine` under settings_for(engine, settings), under its own g. Throws Error(numerical) as simulate_shot
+/// does. With `trace`, the motion is appended to it (scaled, see simulate_shot): at the step
+/// ends, or every trace_dt_s seconds; a trace_dt_s that gives more than max_series_points is
+/// refused (Error(bad_number), {{series_dt}}) before the series is drawn. With `pins`, its pin
+/// shots are read off the same shot into `pin_shots`.
+Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace = nullptr, double trace_dt_s = 0,
+                           PinScan* pins = nullptr, std::vector<PinShot>* pin_shots = nullptr);
 
 /// The pin angles either side of an optimum's whose range loss a shot reports [deg].
 inline constexpr double pin_tolerance_offsets[] = {-2, -1, 1, 2};

@@ -44,7 +44,7 @@ struct ShotSeries {
   std::vector<Moment> phase_two;
   std::size_t release_row = 0;  ///< the release, in phase_two
   ForceValues final_extremes{};  ///< eq:F's extremes up to the release, scaled
-  /// The shot released at pin angles 20 deg either side of its own, every 2 deg (pin_scan): R
+  /// The shot released at pin angles 20 deg either side of its own, every 2 deg, read off its shot (PinScan): R
   /// and Q against the pin, which pin.svg and the viewer's pin chart draw.
   std::vector<PinShot> pins;
   /// The projectile `after` seconds past the release (at the flight's end once it has landed).
