@@ -18,6 +18,7 @@ DesignCheck design_check(const Options& o) {
   check.settings = settings_of(o);
   check.material = o.design;  // its material rows, over each design's own
   check.csv = o.format == Format::csv;
+  check.table = o.format == Format::table;
   check.csv_digits = o.digits;
   check.inputs = {o.input};
   check.units = o.units;
@@ -82,13 +83,13 @@ int run_many(const Options& o, const DesignInputs& in, const DesignCheck& check)
       cells.push_back(message);
       code = std::max(code, error_code);
     } else {
-      record.update(reports[i].json);
+      for (auto it = reports[i].json.begin(); it != reports[i].json.end(); ++it) record[it.key()] = std::move(it.value());
       cells.insert(cells.end(), reports[i].csv.begin(), reports[i].csv.end());
       cells.push_back("");
       if (o.format == Format::table) std::cout << name << "\n" << reports[i].table << "\n";
       if (reports[i].outside_tolerance) code = std::max(code, exit_outside_tolerance);
     }
-    results.push_back(record);
+    results.push_back(std::move(record));
     if (o.format == Format::csv) std::cout << csv_line(cells);
   }
   if (o.format == Format::json) std::cout << pretty_json(results);

@@ -137,7 +137,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   const bool measured = check.fit && (settings.air || settings.range_from_release || settings.target_level != 0);
   if (record.capacity) capacity = check_capacity(v, *record.capacity, check.tolerance, measured);
   out.json = verification_json(v, capacity);
-  out.table = fitted_table + verification_table(engine, settings, v, capacity, check.units);
+  if (check.table) out.table = fitted_table + verification_table(engine, settings, v, capacity, check.units);
   if (check.csv) out.csv = verification_csv_row(engine, settings, v, capacity, check.csv_digits);
   // The engine simulated (for fit, the fitted one, with its shots) and what the shot assumed.
   nlohmann::ordered_json engine_json;
@@ -178,13 +178,13 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
       }
       out.json["pin_to_bend_by_friction"] = by_friction;
     }
-    out.table += "pin to bend for this release: " + pin + "; R changes with the pin off by " + join(lost, ", ") + "\n";
+    if (check.table) out.table += "pin to bend for this release: " + pin + "; R changes with the pin off by " + join(lost, ", ") + "\n";
   }
   if (!record.passed.empty()) {  // the design's keys no reader knows, as given
     out.json["passed"] = record.passed;
     std::vector<std::string> keys;
     for (const auto& [key, value] : record.passed.items()) keys.push_back(key);
-    out.table += "passed through, not read: " + join(keys, ", ") + "\n";
+    if (check.table) out.table += "passed through, not read: " + join(keys, ", ") + "\n";
   }
   if (!check.plot_dir.empty())
     write_picture_folder(check.plot_dir, shot_pictures(engine, settings, v, out.json, check.units), picture_scripts(), check.inputs);

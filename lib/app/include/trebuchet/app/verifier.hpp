@@ -45,6 +45,7 @@ struct DesignCheck {
   double tolerance = 0.02;  ///< relative, on a predicted R and T
   bool fit = false;  ///< fit the design's shape to its capacity first
   bool csv = false;  ///< also the CSV cells of each design
+  bool table = true;  ///< also the table of each design
   int csv_digits = default_csv_digits;
   std::string series_path;  ///< write the motion here (CSV) when not empty
   double series_dt_s = 0;  ///< [s]; 0: at the integrator's steps
@@ -53,7 +54,7 @@ struct DesignCheck {
   UnitSystem units = UnitSystem::si;  ///< of the table
 };
 
-/// One design checked: its record as JSON, as a table and (with check.csv) as CSV cells, and whether a capacity
+/// One design checked: its record as JSON, (with check.table) as a table and (with check.csv) as CSV cells, and whether a capacity
 /// it carries was met within the tolerance.
 struct DesignReport {
   Engine engine;  ///< the engine shot (with check.fit, the fitted one)
