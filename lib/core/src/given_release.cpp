@@ -38,8 +38,7 @@ void ReleaseWatch::add(double value, bool forward) {
   forward_ended = forward_ended || (!forward && forward_lo <= forward_hi);
 }
 
-GivenWatch::GivenWatch(const GivenRelease& asked, double t, const Snapshot& at_liftoff, bool throws, bool turns)
-    : given(asked), whole_turns(turns) {
+GivenWatch::GivenWatch(const GivenRelease& asked, double t, const Snapshot& at_liftoff, bool throws, bool turns) : given(asked), whole_turns(turns) {
   watch.at_liftoff = watch.lowest = watch.highest = watched_value(given.by, t, at_liftoff, M_PI / 2);
   if (whole_turns && given.by != ReleaseBy::time) given.value -= 2 * M_PI * std::ceil((given.value - watch.at_liftoff) / (2 * M_PI));
   watch.add(watch.at_liftoff, throws);
