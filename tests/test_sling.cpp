@@ -92,7 +92,7 @@ TEST_CASE("the rope's shear at the pouch is what its turn about the tip needs", 
       Vec2 tip{l * (std::cos(th) * s.theta_ddot - std::sin(th) * w * w), l * (std::sin(th) * s.theta_ddot + std::cos(th) * w * w)};
       if (machine == MachineKind::floating_arm)  // its pivot rolls at x = sin(theta) (L2 = 1), the pin on the guide's line
         tip.x += std::cos(th) * s.theta_ddot - std::sin(th) * w * w;
-      const Vec2 across = rope_mass_across(d.parts.sling, d.l * d.l4, p.state.phi, s.phi_ddot, tip);
+      const Vec2 across = rope_mass_across(d.parts.sling, d.l * d.l4, {std::cos(p.state.phi), std::sin(p.state.phi)}, s.phi_ddot, tip);
       const double from_turn = across.x * std::sin(p.state.phi) - across.y * std::cos(p.state.phi);
       INFO("machine " << static_cast<int>(machine) << " t " << p.t << " shear " << s.rope_shear_at_end << " from the turn " << from_turn);
       CHECK(std::abs(s.rope_shear_at_end - from_turn) < 1e-10 * (1 + std::abs(s.sling_tension)));

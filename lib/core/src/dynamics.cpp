@@ -256,7 +256,7 @@ double sign(double x) { return (x > 0) - (x < 0); }
     // stone is horizontal here): 0 = T sin phi + P_y + N - mu. Friction -mu_t sgn(v_x) N, so
     // T (cos phi + mu_t sgn(v_x) sin phi) = mu a_x - drag_x - P_x + mu_t sgn(v_x) (mu - P_y).
     const double slide = e.parts->trough_friction * sign(s.theta_dot * (ct * cf + st * sf));  // v_x = l cos(th - phi)/cos phi th'
-    const Vec2 across = air.rope_at_projectile + rope_mass_across(sling, e.l * e.l4, s.phi, out.phi_ddot, tip_acc);
+    const Vec2 across = air.rope_at_projectile + rope_mass_across(sling, e.l * e.l4, {cf, sf}, out.phi_ddot, tip_acc);
     const double tension = (carried * p_acc.x - air.on_projectile.x - across.x + slide * (carried - across.y)) / (cf + slide * sf);
     out.sling_on_projectile = {tension * cf + across.x, tension * sf + across.y};
     out.normal_force = carried - tension * sf - across.y;
@@ -265,7 +265,7 @@ double sign(double x) { return (x > 0) - (x < 0); }
     out.sling_on_projectile = {carried * p_acc.x - air.on_projectile.x, carried * (p_acc.y + 1) - air.on_projectile.y};
   }
   // The rope passes on what pulls its ends, what the air puts on it and what its own mass needs.
-  out.rope = rope_ends(sling, s.phi, out.sling_on_projectile, tip_acc, p_acc, air.on_rope);
+  out.rope = rope_ends(sling, {cf, sf}, out.sling_on_projectile, tip_acc, p_acc, air.on_rope);
   const Vec2& on_tip = out.rope.on_tip;
   // Beam (mass mu_b): mu_b a_CM = F_R - F_H (arm on beam) + sling on tip + mu_b g.
   const Vec2 cm_acc{e.cm * (ct * a.theta - st * td * td), e.cm * (st * a.theta + ct * td * td)};

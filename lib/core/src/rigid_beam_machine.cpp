@@ -196,7 +196,7 @@ Snapshot RigidBeamMachine::snapshot_with(Phase phase, const State& s, const std:
     const double carried = phase == Phase::released ? sling_parts.pouch : mu + sling_parts.pouch;
     Vec2 on_end;
     if (phase == Phase::trough) {
-      const Vec2 across = rope_mass_across(sling_parts, sling, s.phi, a[2], tip_acceleration);
+      const Vec2 across = rope_mass_across(sling_parts, sling, {cp, sp}, a[2], tip_acceleration);
       out.sling_tension = (carried * p_dd.x - friction - drag.x - across.x) / cp;
       out.normal_force = carried - out.sling_tension * sp - drag.y - across.y;
       on_end = {out.sling_tension * cp + across.x, out.sling_tension * sp + across.y};
@@ -205,7 +205,7 @@ Snapshot RigidBeamMachine::snapshot_with(Phase phase, const State& s, const std:
       const double shear = sling_parts.any() ? (carried * p_dd.x - drag.x) * sp - (carried * (p_dd.y + 1) - drag.y) * cp : 0;
       on_end = {out.sling_tension * cp + shear * sp, out.sling_tension * sp - shear * cp};
     }
-    const RopeEnds rope = rope_ends(sling_parts, s.phi, on_end, tip_acceleration, p_dd, {});
+    const RopeEnds rope = rope_ends(sling_parts, {cp, sp}, on_end, tip_acceleration, p_dd, {});
     out.sling_on_tip = rope.on_tip;
     if (sling_parts.any())
       out.rope_tension_at_tip = rope.tension_at_tip, out.rope_shear_at_tip = rope.shear_at_tip, out.rope_shear_at_end = rope.shear_at_end;

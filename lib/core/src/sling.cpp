@@ -1,20 +1,18 @@
 #include "trebuchet/sling.hpp"
 
-#include <cmath>
-
 namespace trebuchet {
 
-Vec2 rope_mass_across(const BuiltParts::Sling& sling, double s, double phi, double phi_ddot, Vec2 tip_acceleration) {
+Vec2 rope_mass_across(const BuiltParts::Sling& sling, double s, Vec2 u, double phi_ddot, Vec2 tip_acceleration) {
   if (!(sling.rope > 0)) return {};
-  const double c = std::cos(phi), sn = std::sin(phi);
+  const double c = u.x, sn = u.y;
   // e = (-cos phi, -sin phi) from the tip to the end; e x a = e_x a_y - e_y a_x.
   const double e_cross_a = -c * tip_acceleration.y + sn * tip_acceleration.x;
   const double b = sling.rope / 2 * e_cross_a + sling.rope * s * phi_ddot / 3 - sling.rope / 2 * c;  // the end's load on the rope, along n
   return {-b * sn, b * c};  // the rope's on the end: -b n
 }
 
-RopeEnds rope_ends(const BuiltParts::Sling& sling, double phi, Vec2 on_end, Vec2 tip_acceleration, Vec2 end_acceleration, Vec2 air_on_rope) {
-  const double m = sling.rope, c = std::cos(phi), sn = std::sin(phi);
+RopeEnds rope_ends(const BuiltParts::Sling& sling, Vec2 u, Vec2 on_end, Vec2 tip_acceleration, Vec2 end_acceleration, Vec2 air_on_rope) {
+  const double m = sling.rope, c = u.x, sn = u.y;
   RopeEnds out;
   // The rope: m_r a_centre = (tip's force on it) - on_end + air - m_r y.
   out.on_tip = {-on_end.x - m * (tip_acceleration.x + end_acceleration.x) / 2 + air_on_rope.x,

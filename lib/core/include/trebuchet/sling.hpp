@@ -15,8 +15,8 @@ namespace trebuchet {
 /// The part of the rope's pull on what its end carries that runs across the rope because the
 /// rope has mass: from the rope's turn about the tip, m_r/2 (e x a_tip) + m_r s phi''/3 - m_r cos
 /// phi/2 = s e x F (e = -u, F the end's load on the rope), for a rope of length s (L2) whose tip
-/// accelerates by a_tip. 0 for a rope of no mass.
-Vec2 rope_mass_across(const BuiltParts::Sling& sling, double s, double phi, double phi_ddot, Vec2 tip_acceleration);
+/// accelerates by a_tip, with u = (cos phi, sin phi) as the callers have it. 0 for a rope of no mass.
+Vec2 rope_mass_across(const BuiltParts::Sling& sling, double s, Vec2 u, double phi_ddot, Vec2 tip_acceleration);
 
 /// The forces at the rope's two ends.
 struct RopeEnds {
@@ -25,10 +25,10 @@ struct RopeEnds {
   double shear_at_end = 0, shear_at_tip = 0;  ///< across it, along n: a rope carries none (the rod's model does)
 };
 
-/// The ends' forces from the rope's pull on what its end carries (`on_end`), the accelerations
+/// The ends' forces, for a rope along u, from the rope's pull on what its end carries (`on_end`), the accelerations
 /// of the tip and of the end, and the air's total force on the rope: its tip gives what the rope's
 /// own mass needs besides (m_r times its centre's acceleration, against its weight).
-RopeEnds rope_ends(const BuiltParts::Sling& sling, double phi, Vec2 on_end, Vec2 tip_acceleration, Vec2 end_acceleration, Vec2 air_on_rope);
+RopeEnds rope_ends(const BuiltParts::Sling& sling, Vec2 u, Vec2 on_end, Vec2 tip_acceleration, Vec2 end_acceleration, Vec2 air_on_rope);
 
 /// The sling's kinetic and potential energy (M g L2, potential from the pivot's level): the pouch
 /// at its end, the rope's centre halfway and its turn about it, m_r s^2/12 phi'^2/2.
