@@ -96,8 +96,9 @@ class PhaseRecord {
     return integrator_.at(base.t, base.y, time);
   }
 
-  // The snapshot at `time`, of the state integrated anew (y_exact_at).
+  // The snapshot at `time`, of the state integrated anew (y_exact_at) or on the interpolant (y_at).
   Snapshot snapshot_exact_at(double time) const { return integrator_.machine().snapshot(integrator_.phase(), integrator_.state(y_exact_at(time))); }
+  Snapshot snapshot_at(double time) const { return integrator_.machine().snapshot(integrator_.phase(), integrator_.state(y_at(time))); }
 
   // Where a running extreme of eq:F starts to grow inside [lo, hi]: the instant when its force,
   // below the extreme at the sample before, crosses it (the root of force - extreme on the
@@ -164,7 +165,6 @@ class PhaseRecord {
   }
 
  private:
-  Snapshot snapshot_at(double time) const { return integrator_.machine().snapshot(integrator_.phase(), integrator_.state(y_at(time))); }
 
   ForceValues forces_at(double time) const { return force_values(snapshot_at(time)); }
 
@@ -827,8 +827,9 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   if (find_loads) {
     // The counterweight's lowest point: sampled at the step ends of the phases up to the release
     // and of phase III after it, then, where the lowest sample has a neighbour on each side, the
-    // minimum between them on the solution integrated anew (as a load's peak is refined), so that
-    // it does not depend on where the steps fall.
+    // minimum between them, so that it does not depend on where the steps fall: its time on the
+    // interpolant, its height there on the solution integrated anew. The interpolant's error
+    // (~1e-7, scaled) moves the time, and the height at a minimum only by its square.
     std::vector<Point> heights;
     for (const PhaseRecord* record : {held_record.get(), &phase1, &phase2})
       if (record)
@@ -836,27 +837,29 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
           if (sample.t < t_release && (heights.empty() || sample.t > heights.back().x)) heights.push_back({sample.t, sample.counterweight_height});
     heights.push_back({t_release, dynamics.snapshot(Phase::lifted, result.release.state).counterweight_height});
     PhaseIntegrator released(dynamics, Phase::released, settings);
-    std::vector<std::pair<double, OdeVector>> steps_iii;  // each step's start
-    follow_released(e, settings, result.release.state, result.work, t_release, released,
-                    [&](double t_start, const OdeVector& y_start, double time, const OdeVector& at) {
-                      steps_iii.push_back({t_start, y_start});
-                      heights.push_back({time, dynamics.snapshot(Phase::released, released.state(at)).counterweight_height});
-                    });
-    const auto height_at = [&](double time) {
+    const OdeVector y_iii = released.vector_of(result.release.state, result.work);
+    std::vector<StepEnd> ends_iii{released.step_end(t_release, y_iii, dynamics.snapshot(Phase::released, released.state(y_iii)))};
+    follow_released(e, settings, result.release.state, result.work, t_release, released, [&](double, const OdeVector&, double time, const OdeVector& at) {
+      const Snapshot s = dynamics.snapshot(Phase::released, released.state(at));
+      ends_iii.push_back(released.step_end(time, at, s));
+      heights.push_back({time, s.counterweight_height});
+    });
+    const auto height_at = [&](double time, bool exact) {
       if (time > t_release) {
-        const auto step = std::prev(
-            std::upper_bound(steps_iii.begin(), steps_iii.end(), time, [](double x, const auto& step) { return x < step.first; }));
-        return dynamics.snapshot(Phase::released, released.state(released.at(step->first, step->second, time))).counterweight_height;
+        const auto after = std::upper_bound(ends_iii.begin() + 1, ends_iii.end() - 1, time, [](double x, const StepEnd& end) { return x < end.t; });
+        const StepEnd& start = *(after - 1);
+        const OdeVector y = exact ? released.at(start.t, start.y, time) : hermite(start, *after, time, released.angles(), released.dimension());
+        return dynamics.snapshot(Phase::released, released.state(y)).counterweight_height;
       }
       const PhaseRecord& record = held_record && time <= *result.t_counterweight_free ? *held_record : time <= result.t_liftoff ? phase1 : phase2;
-      return record.snapshot_exact_at(time).counterweight_height;
+      return (exact ? record.snapshot_exact_at(time) : record.snapshot_at(time)).counterweight_height;
     };
     const auto low = std::min_element(heights.begin(), heights.end(), [](const Point& a, const Point& b) { return a.f < b.f; });
     double lowest = low->f;
     if (low != heights.begin() && low + 1 != heights.end()) {
       const Point estimate = parabola_vertex(*(low - 1), *low, *(low + 1));
-      const double t = peak_between([&](double time) { return -height_at(time); }, (low - 1)->x, estimate.x, (low + 1)->x, 1e-6, 1e-8);
-      lowest = std::min(lowest, height_at(t));
+      const double t = peak_between([&](double time) { return -height_at(time, false); }, (low - 1)->x, estimate.x, (low + 1)->x, 1e-6, 1e-8);
+      lowest = std::min(lowest, height_at(t, true));
     }
     result.lowest_counterweight = lowest;
   }
