@@ -165,7 +165,6 @@ class PhaseRecord {
   }
 
  private:
-
   ForceValues forces_at(double time) const { return force_values(snapshot_at(time)); }
 
   std::array<double, load_count> loads_at(double time) const { return load_values(snapshot_at(time)); }
@@ -839,11 +838,12 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     PhaseIntegrator released(dynamics, Phase::released, settings);
     const OdeVector y_iii = released.vector_of(result.release.state, result.work);
     std::vector<StepEnd> ends_iii{released.step_end(t_release, y_iii, dynamics.snapshot(Phase::released, released.state(y_iii)))};
-    follow_released(e, settings, result.release.state, result.work, t_release, released, [&](double, const OdeVector&, double time, const OdeVector& at) {
-      const Snapshot s = dynamics.snapshot(Phase::released, released.state(at));
-      ends_iii.push_back(released.step_end(time, at, s));
-      heights.push_back({time, s.counterweight_height});
-    });
+    follow_released(e, settings, result.release.state, result.work, t_release, released,
+                    [&](double, const OdeVector&, double time, const OdeVector& at) {
+                      const Snapshot s = dynamics.snapshot(Phase::released, released.state(at));
+                      ends_iii.push_back(released.step_end(time, at, s));
+                      heights.push_back({time, s.counterweight_height});
+                    });
     const auto height_at = [&](double time, bool exact) {
       if (time > t_release) {
         const auto after = std::upper_bound(ends_iii.begin() + 1, ends_iii.end() - 1, time, [](double x, const StepEnd& end) { return x < end.t; });
