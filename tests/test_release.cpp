@@ -14,6 +14,7 @@
 #include "engines.hpp"
 #include "reference/reference_shot.hpp"
 #include "trebuchet/angles.hpp"
+#include "trebuchet/app/shot_series.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/verification.hpp"
 
@@ -163,8 +164,8 @@ TEST_CASE("a pin scan leaves out the pins whose shot cannot be made, and keeps t
   high.target_level = 40;
   const Engine ca = alcala_ca();
   PinScan pins(ca, high, [](double own_deg) { return std::vector<double>{own_deg - 2, own_deg, own_deg + 2}; });
-  std::vector<PinShot> scan;
-  const Verification shot = verify_engine(ca, high, nullptr, 0, &pins, &scan);
+  const Verification shot = verify_engine(ca, high, nullptr, 0, &pins);
+  const std::vector<PinShot>& scan = pins.shots();
   REQUIRE(scan.size() == 3);
   CHECK(!scan[0].R);
   REQUIRE(scan[1].R);
@@ -356,7 +357,8 @@ TEST_CASE("Siano's range efficiency is the range over the black box's, by eps an
 
 TEST_CASE("the pins read off one trajectory are the shots given those pins", "[release][pin]") {
   // Every pin of the tolerance (1 and 2 deg either side) and of the chart (20 deg either side,
-  // every 2 deg) is read off the shot's own trajectory (PinScan). A release changes nothing
+  // every 2 deg) is read off the shot's own trajectory (PinScan), and the chart again off the
+  // series' shot. A release changes nothing
   // before it, so each must be the shot given that pin angle: the same steps, the same root, the
   // same flight. The issue's bound is 1e-9 in R; both are computed alike, so they agree to the
   // last bit here, and any slip in the replay (another step, another sample's extremes, another
@@ -366,6 +368,12 @@ TEST_CASE("the pins read off one trajectory are the shots given those pins", "[r
   air.air = Air{};
   Engine lab = laboratory_engine();
   lab.parts.pin_friction = 0.3, lab.parts.axle = Pin{0.1, 0.01}, lab.parts.rope_mass = 0.05;
+  // The whipper's ball of a given diameter sets its own density in air (settings_for); a pin past
+  // 180 deg is refused as given (check_shot_settings), though a whole turn less is a release.
+  ShotSettings ball_in_air;
+  ball_in_air.air = Air{}, ball_in_air.drag_in_sling = true;
+  Engine past_half_turn = testing::pytrebuchet_default();
+  past_half_turn.L4 = 6, past_half_turn.m = 1, past_half_turn.parts.pin_friction = 1.747;
   ShotSettings high;  // row Ca's flatter pins never come down to a target 40 m up (above)
   high.target_level = 40;
   const std::vector<std::pair<NamedEngine, ShotSettings>> cases = {
@@ -376,6 +384,8 @@ TEST_CASE("the pins read off one trajectory are the shots given those pins", "[r
       {{"E5 as the floating arm, range optimum", e5(MachineKind::floating_arm)}, range_optimum()},
       {{"VirtualTrebuchet's default in air", virtual_trebuchet()}, air},
       {{"pytrebuchet's default whipper", testing::pytrebuchet_default()}, range_optimum()},
+      {{"pytrebuchet's default whipper, its ball's drag in the sling", testing::pytrebuchet_default()}, ball_in_air},
+      {{"a whipper whose pin is bent to 179.5 deg, pins past 180 deg refused", past_half_turn}, ShotSettings{}},
   };
   for (const auto& [named, settings] : cases) {
     PinScan scan(named.engine, settings, [](double own) {
@@ -383,13 +393,20 @@ TEST_CASE("the pins read off one trajectory are the shots given those pins", "[r
       for (int k = -10; k <= 10; ++k) pins.push_back(own + 2 * k);
       return pins;
     });
-    std::vector<PinShot> pins;
-    const Verification with = verify_engine(named.engine, settings, nullptr, 0, &scan, &pins);
+    const Verification with = verify_engine(named.engine, settings, nullptr, 0, &scan);
+    const std::vector<PinShot>& pins = scan.shots();
     const Verification without = verify_engine(named.engine, settings);
     CHECK(with.capacity.R == without.capacity.R);
     CHECK(with.Q == without.Q);
     CHECK(with.energy_drift == without.energy_drift);
     REQUIRE(pins.size() == 23);
+    // The series' chart (--plot, the page) reads the same 21 pins off its own shot.
+    const std::vector<PinShot> chart = shot_series(named.engine, settings, with).pins;
+    REQUIRE(chart.size() == 21);
+    for (std::size_t k = 0; k < chart.size(); ++k) {
+      CHECK(chart[k].pin_angle_deg == pins[k + 2].pin_angle_deg);
+      CHECK(chart[k].R == pins[k + 2].R);
+    }
     double worst = 0;
     int made = 0;
     for (const PinShot& pin : pins) {

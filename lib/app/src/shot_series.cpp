@@ -33,7 +33,8 @@ Moments moments_of(const std::vector<TracePoint>& trace) {
 
 ShotSeries shot_series(const Engine& engine, const ShotSettings& settings, const Verification& verification) {
   ShotSeries series;
-  const ScaledDesign d = shot_design(engine, settings);
+  const ShotSettings as_shot = settings_for(engine, settings);  // as verify_engine shoots it (the whipper's ball in air)
+  const ScaledDesign d = shot_design(engine, as_shot);
   const double g = engine.material.g;
   const double time_unit = std::sqrt(engine.L2 / g);  // section 3 [s]
   series.time_unit = time_unit;
@@ -46,9 +47,9 @@ ShotSeries shot_series(const Engine& engine, const ShotSettings& settings, const
     for (int k = -10; k <= 10; ++k) out.push_back(own_deg + 2 * k);
     return out;
   });
-  const ShotResult shot = simulate_shot(d, release_criterion(engine, settings), settings.integrator, &trace, v.t_release / time_unit / 200,
-                                        &unreleased, false, pins.releases());
-  series.pins = pins.shots(shot);
+  pins.read(simulate_shot(d, release_criterion(engine, as_shot), settings.integrator, &trace, v.t_release / time_unit / 200, &unreleased, false,
+                          pins.releases()));
+  series.pins = pins.shots();
   const Moments m = moments_of(trace);
   series.liftoff = m.liftoff, series.peak_reaction = m.peak_reaction, series.first_extreme = m.first_extreme,
   series.second_extreme = m.second_extreme, series.release = m.release;
@@ -56,7 +57,7 @@ ShotSeries shot_series(const Engine& engine, const ShotSettings& settings, const
   // The flight the shot computed, from the release to its end (the target level, or back at the
   // release height for Denny's range), in vacuum or through the settings' air.
   const double A = radians(v.A_deg);
-  const Drag drag = settings.air ? drag_of(*settings.air, engine.m) : Drag{};
+  const Drag drag = as_shot.air ? drag_of(*as_shot.air, engine.m) : Drag{};
   const double flight_drop = settings.range_from_release ? 0 : v.h - settings.target_level;
   std::vector<Vec2> path;  // in the frame of the shot (target toward -x), height from the release [m]
   const auto end = fly({-v.x, 0}, {-v.v * std::cos(A), v.v * std::sin(A)}, flight_drop, drag, g, &path, 201);

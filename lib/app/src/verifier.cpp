@@ -115,11 +115,10 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
     for (double offset : pin_tolerance_offsets) pins.push_back(own_deg + offset);
     return pins;
   });
-  std::vector<PinShot> tolerance_shots;
   const auto shoot = [&] {
     try {
       return verify_engine(engine, settings, check.series_path.empty() ? nullptr : &trace, check.series_dt_s,
-                           settings.release_at ? nullptr : &tolerance_scan, &tolerance_shots);
+                           settings.release_at ? nullptr : &tolerance_scan);
     } catch (const Error& e) {
       // A release the design itself sets is named by its key, as the design gives it ("pin_angle_deg").
       if (!record.release_at || check.settings.release_at) throw;
@@ -150,7 +149,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   if (!settings.release_at) {  // the pin to bend for this optimum, and what a degree or two of error costs
     nlohmann::ordered_json tolerance = nlohmann::ordered_json::array();
     std::vector<std::string> lost;
-    for (const PinShot& shot : tolerance_shots) {
+    for (const PinShot& shot : tolerance_scan.shots()) {
       const double offset = shot.pin_angle_deg - v.pin_to_bend_deg;
       const std::string signed_offset = (offset > 0 ? "+" : "") + format_significant(offset, 2) + " deg: ";
       if (shot.R) {

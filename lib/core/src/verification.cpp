@@ -208,8 +208,7 @@ ShotSettings settings_for(const Engine& engine, const ShotSettings& settings) {
   return out;
 }
 
-Verification verify_engine(const Engine& engine, const ShotSettings& given, std::vector<TracePoint>* trace, double trace_dt_s, PinScan* pins,
-                           std::vector<PinShot>* pin_shots) {
+Verification verify_engine(const Engine& engine, const ShotSettings& given, std::vector<TracePoint>* trace, double trace_dt_s, PinScan* pins) {
   check_engine(engine);  // as given, its material too: a caller may have changed either since it was read
   check_shot_settings(given);
   const ShotSettings settings = settings_for(engine, given);
@@ -230,7 +229,7 @@ Verification verify_engine(const Engine& engine, const ShotSettings& given, std:
   }
   const ShotResult shot = simulate_shot(shot_design(engine, settings), criterion, settings.integrator, trace, trace_dt_s / time_unit, nullptr,
                                         settings.loads, pins ? pins->releases() : OtherReleases{});
-  if (pins && pin_shots) *pin_shots = pins->shots(shot);
+  if (pins) pins->read(shot);
   return verification_of(engine, shot, settings.target_level, settings.air, settings.range_from_release);
 }
 
@@ -242,22 +241,31 @@ OtherReleases PinScan::releases() {
     // The pin to bend for the shot's own release, as verification_of gives it.
     asked_ = pins_deg_(degrees(own.pin_angle) + degrees(std::atan(engine_.parts.pin_friction)));
     // Each pin as a shot given it releases there (release_criterion), in the settings as they hold for the engine.
+    // Those it refuses as given (check_shot_settings: beyond -180 to 180 deg) are not asked.
     ShotSettings at = settings_for(engine_, settings_);
     std::vector<GivenRelease> releases;
+    released_.clear();
     for (double pin : asked_) {
       at.release_at = SetRelease{ReleaseBy::pin_angle, pin};
+      released_.emplace_back();
+      try {
+        check_shot_settings(at);
+      } catch (const Error&) {
+        continue;
+      }
+      released_.back() = releases.size();
       releases.push_back(*release_criterion(engine_, at).given);
     }
     return releases;
   };
 }
 
-std::vector<PinShot> PinScan::shots(const ShotResult& shot) const {
+void PinScan::read(const ShotResult& shot) {
   const ShotSettings settings = settings_for(engine_, settings_);
-  std::vector<PinShot> out;
+  shots_.clear();
   for (std::size_t i = 0; i < asked_.size(); ++i) {
     PinShot pin{asked_[i], std::nullopt, std::nullopt};
-    if (const auto& other = shot.others.at(i)) {
+    if (const auto& other = released_[i] ? shot.others.at(*released_[i]) : std::nullopt) {
       ShotResult released;
       released.t_liftoff = shot.t_liftoff, released.release = other->release, released.work = other->work;
       try {
@@ -267,9 +275,8 @@ std::vector<PinShot> PinScan::shots(const ShotResult& shot) const {
         // A flight that does not come down to the target level, as a shot given this pin refuses it.
       }
     }
-    out.push_back(pin);
+    shots_.push_back(pin);
   }
-  return out;
 }
 
 CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance, bool as_measured) {

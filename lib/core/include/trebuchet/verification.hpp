@@ -159,30 +159,35 @@ struct PinShot {
 /// How the range and Q change as the pin is bent (the best pin's tolerance, the chart of --plot):
 /// the releases at pins bent to pins_deg(own) [deg], own the pin to bend for the shot's own
 /// release, read off that shot's trajectory (simulate_shot's OtherReleases). Each is what a shot
-/// of `engine` under `settings` given that pin angle ({{pin_angle}}) finds, to round-off.
+/// of `engine` under settings_for(engine, settings) given that pin angle ({{pin_angle}}) finds,
+/// bit for bit; a pin such a shot refuses (beyond -180 to 180 deg too) has none. One scan serves
+/// one shot: releases() for the shot to ask, then read() of what it found.
 class PinScan {
  public:
   using Pins = std::function<std::vector<double>(double own_deg)>;
   PinScan(const Engine& engine, const ShotSettings& settings, Pins pins_deg);
   /// The releases to ask the shot for; this scan must outlive the shot.
   OtherReleases releases();
-  /// The pin shots read off a shot that asked for releases().
-  std::vector<PinShot> shots(const ShotResult& shot) const;
+  /// Reads the pin shots off a shot that asked for releases().
+  void read(const ShotResult& shot);
+  const std::vector<PinShot>& shots() const { return shots_; }
 
  private:
   const Engine& engine_;
   const ShotSettings& settings_;
   Pins pins_deg_;
   std::vector<double> asked_;  ///< the pins asked for [deg]
+  std::vector<std::optional<std::size_t>> released_;  ///< each pin's place among the shot's further releases; none: refused as given
+  std::vector<PinShot> shots_;
 };
 
 /// Simulates one shot of `engine` under settings_for(engine, settings), under its own g. Throws Error(numerical) as simulate_shot
 /// does. With `trace`, the motion is appended to it (scaled, see simulate_shot): at the step
 /// ends, or every trace_dt_s seconds; a trace_dt_s that gives more than max_series_points is
 /// refused (Error(bad_number), {{series_dt}}) before the series is drawn. With `pins`, its pin
-/// shots are read off the same shot into `pin_shots`.
+/// shots are read off the same shot (PinScan::shots).
 Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace = nullptr, double trace_dt_s = 0,
-                           PinScan* pins = nullptr, std::vector<PinShot>* pin_shots = nullptr);
+                           PinScan* pins = nullptr);
 
 /// The pin angles either side of an optimum's whose range loss a shot reports [deg].
 inline constexpr double pin_tolerance_offsets[] = {-2, -1, 1, 2};
