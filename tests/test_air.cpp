@@ -34,6 +34,23 @@ TEST_CASE("without air the flight is the vacuum parabola", "[air]") {
   }
 }
 
+TEST_CASE("a target just below the apex is reached on the way down", "[air]") {
+  // Without drag the steps grow long, and one may rise below the level and fall below it again,
+  // passing over the apex: the flight must still come down through the level there, where the
+  // parabola does (issue 47's review: 0.1 m below the apex was refused as above it).
+  Air still;
+  still.density = 0;
+  const double apex = release_velocity.y * release_velocity.y / (2 * g);  // above the release [m]
+  for (double below : {10.0, 0.1, 1e-3}) {
+    const auto end = fly(release_position, release_velocity, -(apex - below), drag_of(still, 100), g);
+    REQUIRE(end);
+    const double vacuum = vacuum_range(release_position, release_velocity, -(apex - below), g);
+    std::printf("%g m below the apex: flight %.12g m, parabola %.12g m\n", below, end->range, vacuum);
+    CHECK(end->range == Approx(vacuum).epsilon(1e-10));
+  }
+  CHECK(!fly(release_position, release_velocity, -(apex + 1e-3), drag_of(still, 100), g));  // above it: never
+}
+
 TEST_CASE("drag takes energy from the projectile and shortens the range", "[air]") {
   const Air air;
   const auto end = fly(release_position, release_velocity, 20, drag_of(air, 100), g);

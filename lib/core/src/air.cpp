@@ -131,13 +131,28 @@ std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Dr
   // flight in vacuum; then the root within that step.
   double t_b = 0, h = scale / 256;
   while (t_b < 128 * scale) {
-    const double t_a = t_b;
+    double t_a = t_b;
     for (int k = 0; k < 4; ++k) a[k] = b[k];
     if (gsl_odeiv2_evolve_apply(driver->e, driver->c, driver->s, &system, &t_b, 128 * scale, &h, b) != GSL_SUCCESS) return std::nullopt;
     // Down through the level within this step; a flight that never rose to it (a target above
-    // its apex in air) never comes down there.
+    // its apex in air) never comes down there. A step may pass over the apex, rising below the
+    // level and falling below it again: the flight then reaches the level if its apex, the root
+    // of the vertical speed within the step, lies above it, and comes down through it after.
     if (b[1] <= -drop && b[3] < 0) {
-      if (!(a[1] > -drop)) return std::nullopt;
+      if (!(a[1] > -drop)) {
+        if (!(a[3] > 0)) return std::nullopt;
+        double top[4];
+        const double t_top = find_root(
+            [&](double t) {
+              integrate(t_a, a, t, top);
+              return top[3];
+            },
+            t_a, t_b, 0, 1e-15);
+        integrate(t_a, a, t_top, top);
+        if (!(top[1] > -drop)) return std::nullopt;
+        t_a = t_top;
+        for (int k = 0; k < 4; ++k) a[k] = top[k];
+      }
       double end[4];
       const double t_end = find_root(
           [&](double t) {

@@ -43,10 +43,11 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
   // by the secant method on log R against log L2 from that estimate (R grows about as L2), to
   // 0.1 rtol of R, each step a shot measured as verify_engine measures it.
   const bool scales = !settings.air && !settings.range_from_release && settings.target_level == 0;
-  // A release that maximises Q or eps asks nothing of the flight's end, and with the air acting
-  // in flight only the scaled motion before the release is the same at every size: the shot at
-  // mu, and its release, then serve every size, whose flight alone is computed anew (as the
-  // vacuum's fit takes its figures from the scaled shot, not from the engine in SI shot again).
+  // A release that maximises Q or eps asks nothing of the flight's end (its air, level or where
+  // it is measured from), and with the air acting in flight only the scaled motion before the
+  // release is the same at every size: the shot at mu, and its release, then serve every size,
+  // whose flight alone is computed anew (as the vacuum's fit takes its figures from the scaled
+  // shot, not from the engine in SI shot again).
   const bool same_release = settings.criterion.release != Release::range && !settings.drag_in_sling && shape.machine != MachineKind::whipper;
   std::optional<ShotResult> shot_at_mu;
   auto measured_at = [&](double L2, bool find_loads) {
