@@ -588,16 +588,22 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   std::vector<double> sampled{at_liftoff.objective};
   double best_quality = sampled.front();
   // What a given release watches at each sample (the snapshot, whether a release there throws),
-  // and the energy drift up to it: what a further release replays (OtherReleases).
-  std::vector<Snapshot> snapshots{lift_snapshot};
-  std::vector<char> throwing{throws(e, at_liftoff)};
-  std::vector<double> drift_up_to{result.energy_drift};
+  // and the energy drift up to it: what a further release replays (OtherReleases), kept only
+  // when further releases may be asked for.
+  const bool thrown_at_liftoff = throws(e, at_liftoff);
+  std::vector<Snapshot> snapshots;
+  std::vector<char> throwing;
+  std::vector<double> drift_up_to;
+  const auto keep_for_others = [&](const Snapshot& at, bool thrown) {
+    if (others) snapshots.push_back(at), throwing.push_back(thrown), drift_up_to.push_back(result.energy_drift);
+  };
+  keep_for_others(lift_snapshot, thrown_at_liftoff);
   // A given release watches its value from lift-off on; one already past there would release in the trough.
   // The whipper's projectile leaves the arm falling forward, and its velocity and pin angles turn
   // through a whole turn before the release: a given angle is the first one below their value
   // there, whole turns apart (docs/machines.md, "The whipper").
   std::optional<GivenWatch> given;
-  if (criterion.given) given.emplace(*criterion.given, t, lift_snapshot, throwing.front(), whips);
+  if (criterion.given) given.emplace(*criterion.given, t, lift_snapshot, thrown_at_liftoff, whips);
   h = 1e-3;
   // The release window (docs/verifier.md, "Window"): one for every shot, every form of release
   // and every machine, lossless or not. It ends where the projectile's velocity turns backward
@@ -630,11 +636,12 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
     const ReleasePoint here = release_point(e, criterion, t, s, snap, phase2.samples().back().extremes);
     phase2.add(lifted.step_end(t, y, snap), snap);
     sampled.push_back(here.objective);
-    snapshots.push_back(snap), throwing.push_back(throws(e, here)), drift_up_to.push_back(result.energy_drift);
+    const bool thrown = throws(e, here);
+    keep_for_others(snap, thrown);
     best_quality = std::max(best_quality, here.objective);
     if (here.range > 0) highest_apex = std::max(highest_apex, here.height + std::pow(std::max(here.velocity.y, 0.0), 2) / 2);  // scaled, g = 1
-    if (given) given->add(phase2.samples().size() - 1, t, snap, throwing.back());
-    backward.add(throwing.back());
+    if (given) given->add(phase2.samples().size() - 1, t, snap, thrown);
+    backward.add(thrown);
     if (window_end.empty()) {
       if (s.theta > dynamics.turn_limit(Phase::lifted))
         window_end = "the beam turns over first";
