@@ -170,7 +170,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
     } else {
       nlohmann::ordered_json by_friction = nlohmann::ordered_json::array();
       for (const auto& [coefficient, what] : {std::pair{greased_pin_friction, "greased"}, {dry_pin_friction, "dry"}}) {
-        const double bend = v.pin_angle_deg + degrees(std::atan(coefficient));
+        const double bend = pin_to_bend_deg(v.pin_angle_deg, coefficient);
         by_friction.push_back({{"pin_friction", coefficient}, {"pin_to_bend_deg", bend}});
         pin += std::string(what == std::string("greased") ? " frictionless, " : ", ") + format_significant(bend, 4) + " deg " + what + " (mu " +
             format_significant(coefficient, 2) + ")";

@@ -49,12 +49,11 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
   // whose flight alone is computed anew (as the vacuum's fit takes its figures from the scaled
   // shot, not from the engine in SI shot again).
   const bool same_release = settings.criterion.release != Release::range && !settings.drag_in_sling && shape.machine != MachineKind::whipper;
-  std::optional<ShotResult> shot_at_mu;
-  auto measured_at = [&](double L2, bool find_loads) {
+  auto measured_at = [&](const ShotResult& shot_at_mu, double L2, bool find_loads) {
     const Engine engine = engine_of(design, L2, material);
     if (same_release) {
       check_engine(engine);
-      return verification_of(engine, *shot_at_mu, settings.target_level, settings.air, settings.range_from_release);
+      return verification_of(engine, shot_at_mu, settings.target_level, settings.air, settings.range_from_release);
     }
     ShotSettings at = settings;
     at.loads = find_loads;
@@ -65,14 +64,13 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
     design.mu = mu;
     Trial out{simulate_shot(design, settings.criterion, settings.integrator, nullptr, 0, nullptr, find_loads && (scales || same_release)), 0, 0,
               std::nullopt};
-    shot_at_mu = out.shot;
     ++fit.simulations;
     out.L2 = R / out.shot.release.range;
     if (!scales) {
-      double log_L2 = std::log(out.L2), log_R = std::log(measured_at(out.L2, false).capacity.R), slope = 1;  // R about proportional to L2
+      double log_L2 = std::log(out.L2), log_R = std::log(measured_at(out.shot, out.L2, false).capacity.R), slope = 1;  // R about proportional to L2
       for (int step = 0; step < 30 && !(std::abs(log_R - std::log(R)) <= 0.1 * rtol); ++step) {
         const double next = log_L2 + (std::log(R) - log_R) / slope;
-        const double log_R_next = std::log(measured_at(std::exp(next), false).capacity.R);
+        const double log_R_next = std::log(measured_at(out.shot, std::exp(next), false).capacity.R);
         // The slope from steps too short to rise above the shot's round-off (1e-11) is not taken.
         if (std::abs(next - log_L2) > 1e-7) slope = (log_R_next - log_R) / (next - log_L2);
         log_L2 = next, log_R = log_R_next;
@@ -82,7 +80,7 @@ CapacityFit fit_shape(const ScaledDesign& shape, double R, Matched matched, doub
                           "does not grow with the engine's size here; no size of this shape reaches " + format_significant(R, 4) + " m");
       }
       out.L2 = std::exp(log_L2);
-      out.measured = measured_at(out.L2, find_loads);
+      out.measured = measured_at(out.shot, out.L2, find_loads);
     }
     const ExtraScalings sizes = extra_scalings(design.K(), out.L2, material);  // eq:ExtraScalings
     out.value = matched == Matched::mass ? mu * sizes.M

@@ -23,7 +23,7 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   out.A_deg = degrees(std::atan2(vy, -vx));
   out.theta_release_deg = degrees(r.state.theta);
   out.pin_angle_deg = degrees(r.pin_angle);
-  out.pin_to_bend_deg = out.pin_angle_deg + degrees(std::atan(engine.parts.pin_friction));
+  out.pin_to_bend_deg = pin_to_bend_deg(out.pin_angle_deg, engine.parts.pin_friction);
   const double drop = out.h - target_level;  // release to target level [m]
   const double apex = out.h + (vy > 0 ? vy * vy / (2 * g) : 0);  // highest point of the flight above the base [m]
   if (!(target_level <= apex))
@@ -238,8 +238,7 @@ PinScan::PinScan(const Engine& engine, const ShotSettings& settings, Pins pins_d
 
 OtherReleases PinScan::releases() {
   return [this](const ReleasePoint& own) {
-    // The pin to bend for the shot's own release, as verification_of gives it.
-    asked_ = pins_deg_(degrees(own.pin_angle) + degrees(std::atan(engine_.parts.pin_friction)));
+    asked_ = pins_deg_(pin_to_bend_deg(degrees(own.pin_angle), engine_.parts.pin_friction));
     // Each pin as a shot given it releases there (release_criterion), in the settings as they hold for the engine.
     // Those it refuses as given (check_shot_settings: beyond -180 to 180 deg) are not asked.
     ShotSettings at = settings_for(engine_, settings_);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "trebuchet/air.hpp"
+#include "trebuchet/angles.hpp"
 #include "trebuchet/capacity.hpp"
 #include "trebuchet/engine.hpp"
 #include "trebuchet/shot.hpp"
@@ -27,6 +28,8 @@ struct SetRelease {
 /// frictionless pin; the pin angle closes through the throw, so the release comes at bent -
 /// atan(mu) (docs/verifier.md, "The release pin's friction").
 inline double release_pin_angle(double bent, double mu) { return bent - std::atan(mu); }
+/// Its inverse: the pin to bend [deg] for a release at pin angle `released_deg` [deg].
+inline double pin_to_bend_deg(double released_deg, double mu) { return released_deg + degrees(std::atan(mu)); }
 
 struct ShotSettings {
   double target_level = 0;  ///< target height relative to the engine's base [m], e.g. -54
