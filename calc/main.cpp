@@ -65,7 +65,7 @@ OptimalEngine in_option_words(OptimalEngine design) {
   return design;
 }
 
-int run(const Options& options, bool format_given, bool F_given) {
+int run(const Options& options, bool format_given, bool F_given, bool block_given) {
   const std::string format = options.setting(Setting::format, "table"), digits_text = options.setting(Setting::digits);
   const std::string batch = options.setting(Setting::batch), spreadsheet = options.setting(Setting::spreadsheet);
   const std::string table_file = options.setting(Setting::table), machine_text = options.setting(Setting::machine);
@@ -100,9 +100,21 @@ int run(const Options& options, bool format_given, bool F_given) {
   for (const auto& [quantity, text] : options.givens)
     if (!text.empty()) givens.push_back(parse_given(quantity_name(quantity), text));
 
+  if (!batch.empty() && !givens.empty())
+    throw Error(ErrorKind::given_count,
+                "--batch takes the givens from its file; drop --" + std::string(quantity_name(givens.front().quantity)) + " from the command line");
+  // The batch's file, or stdin for "-".
+  std::ifstream file;
+  if (!batch.empty() && batch != "-") {
+    std::error_code error;
+    if (std::filesystem::is_directory(batch, error))
+      throw Error(ErrorKind::usage, "--batch: '" + batch + "' is a directory; give a CSV file or - for stdin");
+    file.open(batch);
+    if (!file) throw Error(ErrorKind::usage, "--batch: cannot read '" + batch + "'; give a CSV file or - for stdin");
+  }
+  std::istream& input = batch == "-" ? std::cin : file;
+
   if (!spreadsheet.empty()) {
-    if (!batch.empty())
-      throw Error(ErrorKind::usage, "--spreadsheet writes the calculator as a workbook and --batch designs the rows of a file; give one of them");
     if (format_given || !digits_text.empty())
       throw Error(ErrorKind::usage,
                   std::string(format_given ? "--format" : "--digits") + " sets what is printed; --spreadsheet writes an .xlsx workbook, drop it");
@@ -112,8 +124,13 @@ int run(const Options& options, bool format_given, bool F_given) {
     SpreadsheetInputs inputs;
     inputs.material = request.material;
     if (!scale.empty()) inputs.model_scale = request.scale;  // the sheet "model scaling" opens on it
-    for (DesignRequest* sheet : {&inputs.capacity, &inputs.range_and_one, &inputs.any_pair, &inputs.beam_length})
-      sheet->theta_i_deg = request.theta_i_deg, sheet->F = request.F, sheet->branch = request.branch, sheet->material = request.material;
+    // Each sheet keeps its example's block (the sheet for Lb and one opens on F = 1) unless
+    // --theta or --F is given; the sheet the givens open on takes the block as the calculator would.
+    const auto set_block = [&](DesignRequest& sheet) { sheet.theta_i_deg = request.theta_i_deg, sheet.F = request.F; };
+    for (DesignRequest* sheet : {&inputs.capacity, &inputs.range_and_one, &inputs.any_pair, &inputs.beam_length}) {
+      if (block_given) set_block(*sheet);
+      sheet->branch = request.branch, sheet->material = request.material;
+    }
     if (givens.size() == 2) {
       std::sort(givens.begin(), givens.end(), [](const Given& a, const Given& b) { return a.quantity < b.quantity; });
       const bool has_R = givens[0].quantity == Quantity::R;
@@ -124,27 +141,38 @@ int run(const Options& options, bool format_given, bool F_given) {
           : has_R                                      ? inputs.range_and_one
                                                        : inputs.any_pair;
       sheet.first = givens[0], sheet.second = givens[1];
+      set_block(sheet);
     } else if (!givens.empty()) {
       throw Error(ErrorKind::given_count,
                   "--spreadsheet opens on the paper's examples, or on exactly two givens; found " + std::to_string(givens.size()));
     }
+    // The user's sites: a row each on the sheet "your sites", a refused row with its reason.
+    int failures = 0;
+    if (!batch.empty()) {
+      UserSites sites{batch == "-" ? std::string("stdin") : std::filesystem::path(batch).filename().string(), {}, {}};
+      failures = run_batch(
+          input, table, request, [&](const std::vector<std::string>& passed) { sites.columns = passed; },
+          [&](const BatchRow& row) {
+            if (row.error)
+              std::cerr << message_start() + ("trebuchet-calc: line " + std::to_string(row.line) + ": " + row.error->message(option_word) + "\n");
+            sites.rows.push_back({row.line, row.passed, row.request ? std::optional<DesignRequest>(*row.request) : std::nullopt,
+                                  row.error ? row.error->message(option_word) : std::string()});
+          });
+      inputs.sites = std::move(sites);
+    }
     write_spreadsheet(table, inputs, spreadsheet);
-    std::cout << "wrote " << spreadsheet << ": the calculator as a workbook with live formulas (docs/spreadsheet.md)\n";
+    std::cout << "wrote " << spreadsheet << ": the calculator as a workbook with live formulas (docs/spreadsheet.md)";
+    if (inputs.sites)
+      std::cout << ", opening on your " << inputs.sites->rows.size() << " site(s) on the sheet 'your sites'"
+                << (failures > 0 ? ", " + std::to_string(failures) + " of them refused, each with its reason in its row" : std::string());
+    std::cout << "\n";
+    if (failures > 0) {
+      std::cerr << "trebuchet-calc: " << failures << " row(s) refused; the workbook holds every row, the refused ones with their reasons\n";
+      return exit_code(Program::calc, ErrorKind::batch_rows);
+    }
     return 0;
   }
   if (!batch.empty()) {
-    if (!givens.empty())
-      throw Error(ErrorKind::given_count,
-                  "--batch takes the givens from its file; drop --" + std::string(quantity_name(givens.front().quantity)) + " from the command line");
-    std::ifstream file;
-    if (batch != "-") {
-      std::error_code error;
-      if (std::filesystem::is_directory(batch, error))
-        throw Error(ErrorKind::usage, "--batch: '" + batch + "' is a directory; give a CSV file or - for stdin");
-      file.open(batch);
-      if (!file) throw Error(ErrorKind::usage, "--batch: cannot read '" + batch + "'; give a CSV file or - for stdin");
-    }
-    std::istream& input = batch == "-" ? std::cin : file;
     const bool json = format == "json";
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
     std::vector<std::string> passed_columns;
@@ -243,5 +271,6 @@ int main(int argc, char** argv) {
         app.add_option(row.flag, options.settings[row.id], setting_help(row));
     }
 
-  return run_program(app, Program::calc, argc, argv, [&] { return run(options, app.count("--format") > 0, app.count("--F") > 0); });
+  return run_program(app, Program::calc, argc, argv,
+                     [&] { return run(options, app.count("--format") > 0, app.count("--F") > 0, app.count("--F") + app.count("--theta") > 0); });
 }

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include "paper_rounding.hpp"
 #include "trebuchet/app/table_json.hpp"
@@ -259,6 +260,38 @@ TEST_CASE("auto takes the lower branch below X_d and the upper above, with the s
   CHECK(plain.branch == Branch::none);
   CHECK(!plain.branch_steps);
   CHECK(plain.warnings.empty());
+}
+
+// The span of l a message names is the table's: an l just inside either end of it designs, one
+// just outside is refused (the ends are printed to 3 digits, so 0.3 % either side is outside the
+// rounding; l changes with the size far less than that, as these designs at Lb = 9 m show).
+TEST_CASE("an l no optimal engine of the block has is refused with the block's span of l", "[calculator][range]") {
+  DesignRequest r;
+  r.first = {Quantity::Lb, 9};
+  r.F = 2.0 / 3;
+  r.second = {Quantity::l, 4.5};
+  try {
+    design_optimal_engine(builtin_scaling_table(), r);
+    FAIL("no error");
+  } catch (const Error& e) {
+    CHECK(e.kind() == ErrorKind::out_of_range);
+    CHECK_THAT(e.what(), Catch::Contains("runs from 4.69 to 9.04") && Catch::Contains("F = 1 (l from 3.48 to 7.63)") && !Catch::Contains("Lb from"));
+  }
+  for (const auto& [F, lo, hi] : {std::tuple{2.0 / 3, 4.69, 9.04}, std::tuple{1.0, 3.48, 7.63}}) {
+    r.F = F;
+    for (const auto& [l, designs] : {std::pair{lo * 0.997, false}, {lo * 1.003, true}, {hi * 0.997, true}, {hi * 1.003, false}}) {
+      r.second = {Quantity::l, l};
+      bool designed = true;
+      try {
+        design_optimal_engine(builtin_scaling_table(), r);
+      } catch (const Error& e) {
+        designed = false;
+        CHECK_THAT(e.what(), Catch::Contains("whatever the engine's size"));
+      }
+      INFO("F = " << F << ", l = " << l);
+      CHECK(designed == designs);
+    }
+  }
 }
 
 TEST_CASE("X outside the covered interval is refused, or extrapolated with a warning", "[calculator][range]") {

@@ -35,6 +35,8 @@
 #include <string>
 #include <vector>
 
+#include <sys/wait.h>
+
 #include "trebuchet/app.hpp"
 #include "trebuchet/app/spreadsheet.hpp"
 #include "../paper_rounding.hpp"
@@ -519,6 +521,91 @@ void check_edited(const fs::path& dir) {
   }
 }
 
+// The user's sites (issue 49): trebuchet-calc --spreadsheet FILE --batch SITES.csv puts each row
+// of the file on the sheet "your sites". Recalculated by LibreOffice, every row that the batch
+// designs shows status "ok" and each output within half a unit of its last shown digit of what
+// the batch prints (17 digits; T in kJ and M in t on the sheet), and equals it to 1e-9 unrounded
+// (the sheet's formulas are the calculator's equations, so only the spreadsheet's own rounding
+// separates them); a row the batch refuses has no "ok", blank results and the batch's message.
+int compared_sites = 0;
+double worst_site_shown = 0;  // of half a unit of the last digit shown
+void check_user_sites(const fs::path& dir, const std::string& calc) {
+  const std::pair<const char*, const char*> files[] = {
+      {"sites-rm.csv",
+       "site,R,m,theta,F\n"
+       "Ca,150m,50kg,30,2/3\nMa,480m,50kg,30,2/3\nSa,250m,50kg,30,2/3\nheavy,300m,120kg,30,1\nforty,300m,60kg,40,2/3\n"
+       "far,5000m,10kg,30,2/3\nunread,abc,50kg,30,2/3\nno block,200m,50kg,35,2/3\n"},
+      {"sites-lb.csv", "name,Lb,l,F\nVillard,9m,4.5,1\nnot at 2/3,9m,4.5,2/3\nlong,12m,6,2/3\nshort l,9m,2,1\n"}};
+  for (const auto& [name, text] : files) {
+    std::ofstream(dir / name) << text;
+    const std::string stem = fs::path(name).stem().string();
+    const fs::path book = dir / (stem + ".xlsx"), printed_csv = dir / (stem + "-batch.csv");
+    // Both exit 8 (batch_rows): some rows are refused; the workbook and the CSV hold them all.
+    const int wrote = shell("'" + calc + "' --spreadsheet '" + book.string() + "' --batch '" + (dir / name).string() + "' > /dev/null 2>&1");
+    const int batched = shell("'" + calc + "' --batch '" + (dir / name).string() + "' --format csv --digits 17 > '" + printed_csv.string() +
+                              "' 2> /dev/null");
+    if (WEXITSTATUS(wrote) != 8 || WEXITSTATUS(batched) != 8) fail(std::string(name) + ": --spreadsheet --batch or --batch did not exit 8");
+    const std::string quoted = " '" + book.string() + "'";
+    if (!export_csv(dir, stem + "-full", quoted, true, false) || !export_csv(dir, stem + "-shown", quoted, true, true)) return ++failures, void();
+    const Cells full = read_csv(dir / (stem + "-full") / (stem + "-your sites.csv"));
+    const Cells shown = read_csv(dir / (stem + "-shown") / (stem + "-your sites.csv"));
+    const Cells printed = read_csv(printed_csv);
+    const std::vector<std::string>& heading = full.at(4);
+    const auto valid_at = std::find(heading.begin(), heading.end(), "valid");
+    const auto status_at = std::find(heading.begin(), heading.end(), "status");
+    if (valid_at == heading.end() || status_at == heading.end()) return fail(std::string(name) + ": no columns 'status' and 'valid'");
+    const std::size_t status = static_cast<std::size_t>(status_at - heading.begin()),
+                      outputs = static_cast<std::size_t>(valid_at - heading.begin()) + 1,
+                      message = outputs + 12;  // the calculator's words, after the twelve outputs
+    const std::pair<const char*, double> columns[] = {{"R_m", 1}, {"T_J", 1e-3}, {"L1_m", 1},    {"L2_m", 1}, {"L3_m", 1},  {"L4_m", 1},
+                                                      {"H_m", 1}, {"D_m", 1},    {"M_kg", 1e-3}, {"m_kg", 1}, {"mb_kg", 1}, {"X", 1}};
+    for (std::size_t r = 1; r < printed.size(); ++r) {
+      const std::vector<std::string>& program = printed[r];
+      const std::vector<std::string>& row = full.at(5 + r);
+      const std::string where = std::string(name) + " line " + program[0];
+      ++compared_sites;
+      if (row[0] != program[0]) fail(where + ": the sheet's row holds line '" + row[0] + "'");
+      const std::string& error = program.back();
+      if (!error.empty()) {
+        if (row[status] == "ok" || row[message] != error)
+          fail(where + ": refused by the batch, the sheet says '" + row[status] + "', '" + row[message] + "'");
+        for (std::size_t j = 0; j < std::size(columns); ++j)
+          if (!row[outputs + j].empty()) fail(where + ": refused, yet the sheet shows " + heading[outputs + j] + " = " + row[outputs + j]);
+        continue;
+      }
+      if (row[status] != "ok") fail(where + ": the batch designs it, the sheet says '" + row[status] + "'");
+      for (std::size_t j = 0; j < std::size(columns); ++j) {
+        const auto at = std::find(printed[0].begin(), printed[0].end(), columns[j].first);
+        const double expected = std::stod(program[static_cast<std::size_t>(at - printed[0].begin())]) * columns[j].second;
+        std::string text = shown.at(5 + r)[outputs + j];
+        text.erase(std::remove(text.begin(), text.end(), ','), text.end());
+        const auto value = number(row[outputs + j]), seen = number(text);
+        if (!value || !seen) {
+          fail(where + " " + heading[outputs + j] + ": '" + row[outputs + j] + "' is not a number");
+          continue;
+        }
+        const std::size_t point = text.find('.');
+        const double half_unit = 0.5 * std::pow(10.0, -(point == std::string::npos ? 0.0 : static_cast<double>(text.size() - point - 1)));
+        worst_site_shown = std::max(worst_site_shown, std::abs(*seen - expected) / half_unit);
+        if (std::abs(*seen - expected) > half_unit * (1 + 1e-9))
+          fail(where + " " + heading[outputs + j] + ": shows " + text + ", the batch " + format_number(expected));
+        if (std::abs(*value - expected) > 1e-9 * std::max(std::abs(expected), 1.0))
+          fail(where + " " + heading[outputs + j] + ": " + row[outputs + j] + ", the batch " + format_number(expected));
+      }
+    }
+    if (full.size() < printed.size() + 5) fail(std::string(name) + ": the sheet has fewer rows than the file");
+  }
+  // The workbook as the program writes it with no givens: the sheet for Lb and one opens on its
+  // example, tab:SketchBook-II row 2 (Lb = 9 m, l = 4.5, F = 1), with an engine (docs/spreadsheet.md).
+  const fs::path book = dir / "default.xlsx";
+  if (shell("'" + calc + "' --spreadsheet '" + book.string() + "' > /dev/null") != 0) return fail("trebuchet-calc --spreadsheet failed");
+  if (!export_csv(dir, "default", " '" + book.string() + "'", true, false)) return ++failures, void();
+  const Cells beam = read_csv(dir / "default" / "default-from Lb and one.csv");
+  std::printf("the default workbook's sheet 'from Lb and one': F = %s, status '%s'\n", value_of(beam, "F").c_str(), value_of(beam, "status").c_str());
+  if (value_of(beam, "F") != "1" || value_of(beam, "status") != "ok")
+    fail("the default sheet 'from Lb and one' does not open on F = 1 with an engine");
+}
+
 int run(const fs::path& dir, const std::string& calc) {
   const ScalingTable& table = builtin_scaling_table();
   fs::create_directories(dir);
@@ -580,6 +667,7 @@ int run(const fs::path& dir, const std::string& calc) {
     }
   }
   check_edited(dir);
+  check_user_sites(dir, calc);
   std::cout << all.size() << " workbooks, " << std::size(sheets) << " sheets each: " << compared_cached
             << " numbers recalculated by LibreOffice against the cached ones, worst difference " << worst_cached
             << " of its tolerance (1e-12 relative); " << compared_calculator << " outputs against the calculator, worst relative difference "
@@ -588,6 +676,9 @@ int run(const fs::path& dir, const std::string& calc) {
   std::cout << compared_program << " requests of the sheet 'from Lb and one' against trebuchet-calc's CSV, worst difference " << worst_program << "; "
             << compared_paper << " numbers of the sheet 'sites' against tab:Alcala_la_Vieja, largest |workbook/paper - 1| per column:";
   for (std::size_t j = 0; j < worst_site.size(); ++j) std::printf(" %s %.2f%%", site_columns[j], 100 * worst_site[j]);
+  std::cout << "\n"
+            << compared_sites << " rows of two sites files on the sheet 'your sites' against trebuchet-calc --batch, worst shown value "
+            << worst_site_shown << " of half a unit of its last digit";
   std::cout << "\nas shown (negative, zero, large of the numbers per sheet):";
   for (const auto& [sheet, t] : tally)
     std::cout << " '" << sheet << "' " << t.negative << ", " << t.zero << ", " << t.large << " of " << t.cells << ";";

@@ -120,18 +120,20 @@ int run_batch(std::istream& input, const ScalingTable& table, const DesignReques
   while (true) {
     passed.assign(passed_names.size(), "");
     std::optional<Error> error;
+    std::optional<DesignRequest> request;
     try {
       if (!reader.next(row)) break;
       for (std::size_t k = 0, p = 0; k < columns.size(); ++k)
         if (columns[k].role == ColumnRole::passed) passed[p++] = row.cells[k];
-      const OptimalEngine design = design_optimal_engine(table, parse_row(columns, row.cells, defaults));
-      on_row({row.line, passed, &design, nullptr});
+      request = parse_row(columns, row.cells, defaults);
+      const OptimalEngine design = design_optimal_engine(table, *request);
+      on_row({row.line, passed, &*request, &design, nullptr});
       continue;
     } catch (const Error& e) {
       error = e;
     }
     ++failures;
-    on_row({row.line, passed, nullptr, &*error});
+    on_row({row.line, passed, request ? &*request : nullptr, nullptr, &*error});
   }
   return failures;
 }

@@ -467,8 +467,18 @@ Expr amplification_of(const Expr& p1, const Expr& q1, const Expr& p2, const Expr
 
 // 1 where the calculator gives a design: a segment holds the givens, the amplification is at
 // most 50 and the counterweight arm L3 is positive; else 0.
+// Where no segment holds the givens, the lookup's row may lie far out (a line of constant X
+// bounded at |ln(R/R0)| = 50), where L3 overflows: it is not evaluated then.
 Expr design_valid(const Expr& ok, const Expr& amplification, const Expr& L3) {
-  return ok * (num(1) - below(num(50), amplification)) * below(num(0), L3);
+  return choose(ok, (num(1) - below(num(50), amplification)) * below(num(0), L3), num(0));
+}
+
+// What the calculator would say of a design sheet's or a site's givens: "ok", or why not.
+Text design_status(const Expr& ok, const Expr& amplification, const Expr& L3) {
+  return choose(ok,
+                choose(below(num(50), amplification), literal("refused: the pair barely fixes the capacity (amplification above 50)"),
+                       choose(at_most(L3, num(0)), literal("refused: no room for the counterweight arm (L3 <= 0)"), literal("ok"))),
+                literal("no segment of the table holds these givens: X lies outside every interval of this block (theta_i and F choose it)"));
 }
 
 // A given of a pair as the segment table takes it: the column of its law among the constants
@@ -704,11 +714,7 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
   const Expr ok = at_most(num(10), best);
   // The status first: a refused request leaves every result blank, so that it never looks like one.
   const Expr L3 = counterweight_arm(F, theta, fitted(c, f, Param::L1, k, lr, lt), fitted(c, f, Param::L2, k, lr, lt));
-  const Text status = choose(ok,
-                             choose(below(num(50), amplification), literal("refused: the pair barely fixes the capacity (amplification above 50)"),
-                                    choose(at_most(L3, num(0)), literal("refused: no room for the counterweight arm (L3 <= 0)"), literal("ok"))),
-                             literal("no segment of the table holds these givens: X lies outside every interval of this block"));
-  s.text_row(19, "status", status, "what the calculator would say; the results below are blank unless it is ok");
+  s.text_row(19, "status", design_status(ok, amplification, L3), "what the calculator would say; the results below are blank unless it is ok");
   DesignResult out;
   out.valid = s.formula_row(20, "valid", design_valid(ok, amplification, L3), "", "1 when the status is ok, else 0");
   s.text_row(21, "segment branch", element(c.branch, k), "the branch of the chosen segment (section 6.2)");
@@ -806,8 +812,9 @@ void write_sites(lxw_workbook* book, Formats& formats, const ConstantsSheet& c, 
     const Solution solved = solve_in_segments(s, header, c, theta, F, automatic, {{num(1), ln(R)}, {num(8), ln(m / f.mass)}}, std::nullopt);
     const Expr L1 = fitted(c, f, Param::L1, solved.segment, solved.lr, solved.lt);
     const Expr L2 = fitted(c, f, Param::L2, solved.segment, solved.lr, solved.lt);
-    const Expr valid = s.formula(row, 16, design_valid(solved.ok, solved.amplification, counterweight_arm(F, theta, L1, L2)));
-    s.formula(row, 15, choose(valid, literal("ok"), literal("no engine: see the sheet 'from R and one' for why")));
+    const Expr L3 = counterweight_arm(F, theta, L1, L2);
+    const Expr valid = s.formula(row, 16, design_valid(solved.ok, solved.amplification, L3));
+    s.formula(row, 15, design_status(solved.ok, solved.amplification, L3));
     auto result = [&](int col, const Expr& e) { return s.result(row, col, valid, e); };
     auto fit = [&](Param param) { return fitted(c, f, param, solved.segment, solved.lr, solved.lt); };
     std::array<Expr, 9> computed;  // T [kJ], L1, L2, L4, D, M [t], mb, eps [%], v
@@ -828,6 +835,136 @@ void write_sites(lxw_workbook* book, Formats& formats, const ConstantsSheet& c, 
          "The level (of the target, relative to the engine) is the paper's: it is ignored where it is in brackets, and the row "
          "without brackets aims 54 m short of 480 m (sec:AVS); it does not enter the formulas.");
   worksheet_print_area(s.raw(), 0, 0, static_cast<lxw_row_t>(row + 2), 15);
+}
+
+// The user's sites (trebuchet-calc --spreadsheet FILE --batch SITES.csv): a row each, its givens,
+// theta_i, F and branch typed in yellow cells, and the optimal engine by the same segment table
+// and eq:ZRT as the design sheets, each row with its own table of segments below. A row whose
+// cells could not be read keeps its place with the calculator's message and no formulas.
+void write_user_sites(lxw_workbook* book, Formats& formats, const ConstantsSheet& c, const MaterialFactors& f, const UserSites& sites) {
+  Sheet s(book, "your sites", formats);
+  const std::optional<DesignRequest> example = [&]() -> std::optional<DesignRequest> {
+    for (const SiteRow& site : sites.rows)
+      if (site.request) return site.request;
+    return std::nullopt;
+  }();
+  // The pair, Lb first (the segment table's one given that is not log-linear), as the file's header names it.
+  const Quantity first = example ? example->first.quantity : Quantity::R, second = example ? example->second.quantity : Quantity::m;
+  const bool swap = second == Quantity::Lb;
+  const Quantity a = swap ? second : first, b = swap ? first : second;
+  const bool beam = a == Quantity::Lb;
+  s.title("Your sites, from " + sites.source + ": " + std::to_string(sites.rows.size()) + " row(s), the optimal engine of each",
+          "Type a given, theta_i, F or the branch in a yellow cell and the row follows (eq:RT_ZiZj, eq:ZRT, as on the sheet 'from R and one'; "
+          "Lb as on 'from Lb and one'). Values in SI base units: 250 for 250 m, 3110 for 3.11 t. The status says why a row has no engine.");
+  const int passed = static_cast<int>(sites.columns.size());
+  const int given_col = passed + 1, theta_col = passed + 3, F_col = passed + 4, branch_col = passed + 5, status_col = passed + 6,
+            valid_col = passed + 7, out_col = passed + 8;
+  const auto unit_of = [](Quantity q) -> std::string {
+    switch (quantity_dimension(q)) {
+      case Dimension::length: return "m";
+      case Dimension::mass: return "kg";
+      case Dimension::energy: return "J";
+      default: return "";
+    }
+  };
+  std::vector<std::pair<std::string, std::string>> columns = {{"line", ""}};
+  for (const std::string& name : sites.columns) columns.push_back({name, ""});
+  columns.insert(columns.end(),
+                 {{std::string(quantity_name(first)), unit_of(first)},
+                  {std::string(quantity_name(second)), unit_of(second)},
+                  {"theta_i", "deg"},
+                  {"F", ""},
+                  {"branch", ""},
+                  {"status", ""},
+                  {"valid", ""},
+                  {"R", "m"},
+                  {"T", "kJ"},
+                  {"L1", "m"},
+                  {"L2", "m"},
+                  {"L3", "m"},
+                  {"L4", "m"},
+                  {"H", "m"},
+                  {"D", "m"},
+                  {"M", "t"},
+                  {"m", "kg"},
+                  {"mb", "kg"},
+                  {"X", ""},
+                  {"the calculator, when this file was written", ""}});
+  const int header_row = 4, first_row = 6;
+  for (std::size_t k = 0; k < columns.size(); ++k) {
+    s.heading(header_row, static_cast<int>(k), columns[k].first);
+    s.text(header_row + 1, static_cast<int>(k), columns[k].second);
+  }
+  worksheet_set_column(s.raw(), 0, 0, 6, nullptr);
+  worksheet_set_column(s.raw(), 1, static_cast<lxw_col_t>(passed), 14, nullptr);
+  worksheet_set_column(s.raw(), static_cast<lxw_col_t>(given_col), static_cast<lxw_col_t>(branch_col), 9, nullptr);
+  worksheet_set_column(s.raw(), static_cast<lxw_col_t>(status_col), static_cast<lxw_col_t>(status_col), 44, nullptr);
+  worksheet_set_column(s.raw(), static_cast<lxw_col_t>(valid_col), static_cast<lxw_col_t>(out_col + 11), 9, nullptr);
+  worksheet_set_column(s.raw(), static_cast<lxw_col_t>(out_col + 12), static_cast<lxw_col_t>(out_col + 12), 90, nullptr);
+  worksheet_freeze_panes(s.raw(), static_cast<lxw_row_t>(first_row), 0);
+  static const char* branches[] = {"auto", "lower", "upper", nullptr};  // in the order of BranchChoice
+  // A given's column among the constants sheet's laws (from 1), and its factor from the table's material (section 7).
+  const auto law_column = [](Quantity q) {
+    return num(static_cast<double>(std::find(log_linear.begin(), log_linear.end(), q) - log_linear.begin() + 1));
+  };
+  const auto material = [&f](Quantity q) {
+    if (q == Quantity::T) return f.energy;
+    if (q == Quantity::D) return f.diameter;
+    if (quantity_dimension(q) == Dimension::mass) return f.mass;
+    return num(1);
+  };
+  const int table_rows = (beam ? 2 : 1) * c.rows + 4;
+  const int tables = first_row + static_cast<int>(sites.rows.size()) + 6;
+  for (std::size_t k = 0; k < sites.rows.size(); ++k) {
+    const SiteRow& site = sites.rows[k];
+    const int row = first_row + static_cast<int>(k);
+    s.number(row, 0, site.line);
+    for (int p = 0; p < passed; ++p) s.text(row, 1 + p, site.passed[static_cast<std::size_t>(p)]);
+    s.text(row, out_col + 12, site.refusal.empty() ? "ok" : site.refusal);
+    if (!site.request) {
+      s.text(row, status_col, "refused when read: see the calculator's message; correct the file and write the workbook again");
+      continue;
+    }
+    const DesignRequest& r = *site.request;
+    const Expr v1 = s.number_input(row, given_col, r.first.value, "Type a number alone, in the unit under the column's name.");
+    const Expr v2 = s.number_input(row, given_col + 1, r.second.value, "Type a number alone, in the unit under the column's name.");
+    const Expr value_a = swap ? v2 : v1, value_b = swap ? v1 : v2;
+    const Expr theta = s.number_input(row, theta_col, r.theta_i_deg, "Type the angle in degrees, a number from 0 to 90: 30 for 30 deg.", 0, 90);
+    const Expr F = s.number_input(row, F_col, r.F, "Type a positive number, or =2/3 for two thirds.");
+    const Text branch = s.input_text(row, branch_col, branches[static_cast<int>(r.branch)]);
+    s.choices(row, branch_col, branches);
+    const int header = tables + static_cast<int>(k) * table_rows;
+    s.text(header - 2, 0, "Line " + std::to_string(site.line) + " of " + sites.source + ", in every segment:");
+    std::vector<LawGiven> laws;
+    std::optional<Expr> log_Lb;
+    if (beam)
+      log_Lb = ln(value_a);
+    else
+      laws.push_back({law_column(a), ln(value_a / material(a))});
+    laws.push_back({law_column(b), ln(value_b / material(b))});
+    const Solution solved = solve_in_segments(s, header, c, theta, F, branch, laws, log_Lb);
+    auto fit = [&](Param param) { return fitted(c, f, param, solved.segment, solved.lr, solved.lt); };
+    const Expr L1 = fit(Param::L1), L2 = fit(Param::L2), L3 = counterweight_arm(F, theta, L1, L2);
+    s.formula(row, status_col, design_status(solved.ok, solved.amplification, L3));
+    const Expr valid = s.formula(row, valid_col, design_valid(solved.ok, solved.amplification, L3));
+    const Expr outputs[] = {c.R0 * exp(solved.lr),
+                            target_energy(c, f, solved.lt) / num(1000),
+                            L1,
+                            L2,
+                            L3,
+                            fit(Param::L4),
+                            L1 * cos_deg(theta),
+                            fit(Param::D),
+                            fit(Param::M) / num(1000),
+                            fit(Param::m),
+                            fit(Param::mb),
+                            (num(5) * solved.lr - solved.lt) / sqrt(num(26))};  // eq:Xi
+    for (std::size_t j = 0; j < std::size(outputs); ++j) s.result(row, out_col + static_cast<int>(j), valid, outputs[j]);
+  }
+  const int notes = first_row + static_cast<int>(sites.rows.size()) + 1;
+  s.text(notes, 0, "The status is what the calculator would say of the row as it stands; the last column, what it said of the file's row.");
+  s.text(notes + 1, 0, "H = L1 cos(theta_i) and L3 from L2 + L3 = F H (section 2); masses, D and T in the material of the sheet 'material'.");
+  worksheet_print_area(s.raw(), 0, 0, static_cast<lxw_row_t>(notes + 1), static_cast<lxw_col_t>(out_col + 12));
 }
 
 // The quantities that follow from an engine (section 2, eq:Design, eq:kMkD, eq:DU).
@@ -988,6 +1125,10 @@ void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& input
   write_design(book, formats, "from Lb and one", "The optimal engine for the beam length Lb = L1 + L2 and one parameter", constants, factors,
                beam_length, 1);
   write_sites(book, formats, constants, factors);
+  if (inputs.sites) {  // the user's, and the workbook opens on them
+    write_user_sites(book, formats, constants, factors, *inputs.sites);
+    worksheet_activate(workbook_get_worksheet_by_name(book, "your sites"));
+  }
   write_derived(book, formats, inputs.engine, factors.g);
   write_model_scaling(book, formats, capacity_sheet, inputs.model_scale);
   write_glossary(book, formats);

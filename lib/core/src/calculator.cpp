@@ -140,6 +140,9 @@ BeamLengthSolutions invert_with_beam_length(const TableBlock& block, const Segme
     lo = (segment.X_min - X0) / dX;
     hi = (segment.X_max - X0) / dX;
     if (lo > hi) std::swap(lo, hi);
+    // A line nearly along X = const (a given of X alone, as l) leaves the segment only beyond any engine.
+    lo = std::max(lo, -far), hi = std::min(hi, far);
+    if (lo > hi) return {};
   } else if (X0 < segment.X_min || X0 > segment.X_max) {
     return {};
   }
@@ -193,6 +196,24 @@ std::optional<std::pair<double, double>> R_range_for(const ScalingTable& table, 
         const double R = table.R0 * std::exp(at_end->lr);
         lo = std::min(lo, R), hi = std::max(hi, R);
       }
+  }
+  if (!(hi > 0) || !std::isfinite(lo) || !std::isfinite(hi)) return std::nullopt;
+  return std::pair{lo, hi};
+}
+
+// For a request with the beam ratio l: the span of l over the block. l = L1/L2 depends on X
+// (eq:Xi) and hardly on the size Y, so l alone fixes X and no other given can move it; each
+// segment's l is taken at its ends on the X axis (Y = 0, eq:XY_RT), and the span is reported to
+// 3 digits, far coarser than its change with Y.
+std::optional<std::pair<double, double>> l_range_for(const ScalingTable& table, const TableBlock& block) {
+  double lo = HUGE_VAL, hi = 0;
+  for (const Segment& segment : block.segments) {
+    const LogLaw law = *log_law(table, block, segment, Quantity::l);
+    for (double X : {segment.X_min, segment.X_max}) {
+      const Capacity at = capacity_at({X, 0}, 1, 1);
+      const double l = std::exp(law.c + law.pq.dot(Eigen::Vector2d(std::log(at.R), std::log(at.T))));
+      lo = std::min(lo, l), hi = std::max(hi, l);
+    }
   }
   if (!(hi > 0) || !std::isfinite(lo) || !std::isfinite(hi)) return std::nullopt;
   return std::pair{lo, hi};
@@ -445,8 +466,21 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
                    ? "optimal engines with " + describe_given(first_is_beam_length(gi, gj) ? gj : gi) + " have Lb from " + beam_length_spans
                    : (tried.empty() ? std::string("no segment gives a solution") : "the inversion gives " + tried) +
                        ", outside the covered interval " + covered());
+      const bool l_given = gi.quantity == Quantity::l || gj.quantity == Quantity::l;
+      const auto l_range = l_given ? l_range_for(table, *block) : std::nullopt;
+      const double l_value = gi.quantity == Quantity::l ? gi.value : gj.value;
       // In the user's terms: the ranges that work with the other given held.
-      if (const auto range = R_range_for(table, *block, gi, gj, scaling)) {
+      if (l_range && (l_value < l_range->first || l_value > l_range->second)) {
+        // l fixes X whatever the size: no other given can bring it in; another block may.
+        message = "no optimal engine at " + describe_block(*block) + " has " + describe_given(gi.quantity == Quantity::l ? gi : gj) +
+            ": there l = L1/L2 runs from " + format_significant(l_range->first, 3) + " to " + format_significant(l_range->second, 3) +
+            " whatever the engine's size; give l in that span";
+        for (const TableBlock& other : table.blocks)
+          if (&other != block)
+            if (const auto span = l_range_for(table, other); span && l_value >= span->first && l_value <= span->second)
+              message += ", or the block " + describe_block(other) + " (l from " + format_significant(span->first, 3) + " to " +
+                  format_significant(span->second, 3) + ")";
+      } else if (const auto range = R_range_for(table, *block, gi, gj, scaling)) {
         const Given& other = gi.quantity == Quantity::R ? gj : gi;
         message += "; with " + describe_given(other) + " the table covers R from " + format_significant(range->first, 3) + " m to " +
             format_significant(range->second, 3) + " m: change R to lie there, or change " + std::string(quantity_name(other.quantity));

@@ -19,6 +19,7 @@ namespace trebuchet {
 struct BatchRow {
   int line;  ///< line number in the input, from 1
   const std::vector<std::string>& passed;  ///< the pass-through cells, in the order of the header
+  const DesignRequest* request;  ///< the request the row reads as; null when a cell cannot be read
   const OptimalEngine* design;
   const Error* error;
 };

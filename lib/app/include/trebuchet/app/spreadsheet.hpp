@@ -5,12 +5,29 @@
 // Written with libxlsxwriter, with every formula's value cached.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/scaling_table.hpp"
 
 namespace trebuchet {
+
+/// One row of a user's sites file (trebuchet-calc --spreadsheet FILE --batch SITES.csv).
+struct SiteRow {
+  int line;  ///< in the file, from 1
+  std::vector<std::string> passed;  ///< the cells passed through (a site's name), in the header's order
+  std::optional<DesignRequest> request;  ///< as the row reads; none when a cell cannot be read
+  std::string refusal;  ///< the calculator's message for the row; empty when it designs
+};
+
+/// A user's sites: the file's name, its pass-through columns and its rows.
+struct UserSites {
+  std::string source;
+  std::vector<std::string> columns;
+  std::vector<SiteRow> rows;
+};
 
 /// The values the workbook opens on; the defaults are the paper's examples.
 struct SpreadsheetInputs {
@@ -21,6 +38,7 @@ struct SpreadsheetInputs {
   Engine engine = alcala_ca();  ///< the derived-quantities sheet's engine
   double model_scale = 80.0 / 425;  ///< Denny's 80 m model, on the (R, T) sheet's engine
   Material material{};  ///< beta2, Young's modulus, wood density and g of the designs
+  std::optional<UserSites> sites;  ///< the sheet "your sites", on which the workbook then opens
 
   static DesignRequest example(Quantity first, double first_value, Quantity second, double second_value);
   static DesignRequest villard();  ///< Lb = 9 m, l = 4.5, theta_i = 30 deg, F = 1
