@@ -10,6 +10,7 @@
 #include "trebuchet/app/search_records.hpp"
 #include "trebuchet/app/settings.hpp"
 #include "trebuchet/app/fields.hpp"
+#include "trebuchet/app/names.hpp"
 #include "trebuchet/app/shot_record.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/scaling_table.hpp"
@@ -45,6 +46,25 @@ TEST_CASE("api::design is the calculator's design, its numbers unchanged", "[api
   CHECK(answer["L1"].get<double>() == expected.engine.L1);
   CHECK(answer["M"].get<double>() == expected.engine.M);
   CHECK(answer["T"].get<double>() == expected.capacity.T);
+}
+
+// Another machine's optimum from its own table, as trebuchet-calc --machine; F is that table's
+// (the counterweight at the short arm's end) and refused, as the calculator refuses --F; the
+// whipper has no table and is refused with the calculator's reason.
+TEST_CASE("api::design of another machine is the calculator's design from that machine's table", "[api]") {
+  for (MachineKind machine : {MachineKind::fixed, MachineKind::floating_arm}) {
+    DesignRequest typed;
+    typed.first = {Quantity::R, 300};
+    typed.second = {Quantity::m, 50};
+    const OptimalEngine expected = design_optimal_engine(builtin_scaling_table(machine), typed);
+    const auto answer = api::design({{"R", "300m"}, {"m", "50kg"}, {"machine", machine_name(machine)}});
+    CHECK(answer["L1"].get<double>() == expected.engine.L1);
+    CHECK(answer["M"].get<double>() == expected.engine.M);
+    CHECK(answer["machine"] == machine_name(machine));
+    CHECK_THAT(refusal(api::design, {{"R", "300m"}, {"m", "50kg"}, {"F", "2/3"}, {"machine", machine_name(machine)}}).what(),
+               Catch::Contains("leave out F"));
+  }
+  CHECK_THAT(refusal(api::design, {{"R", "300m"}, {"m", "50kg"}, {"machine", "whipper"}}).what(), Catch::Contains("shot here, not designed"));
 }
 
 TEST_CASE("api::shot is verify_engine under the request's settings, which its answer states", "[api]") {

@@ -413,11 +413,21 @@ TEST_CASE("the pins read off one trajectory are the shots given those pins", "[r
       ShotSettings alone = released(settings, ReleaseBy::pin_angle, pin.pin_angle_deg);
       alone.loads = false;
       std::optional<Verification> shot;
+      std::string why;
       try {
         shot = verify_engine(named.engine, alone);
-      } catch (const Error&) {
+      } catch (const Error& e) {
+        why = e.what();
       }
       CHECK(pin.R.has_value() == shot.has_value());
+      // A pin refused says why: the shot's own words where it read them (a pin past 180 deg, a
+      // flight that does not come down at the level), else that the release there is not made,
+      // as the shot given it says ("the release never comes", "before lift-off").
+      CHECK(pin.refused.empty() == pin.R.has_value());
+      if (!pin.R && !shot) {
+        INFO(named.name << ": pin " << pin.pin_angle_deg << " deg: '" << pin.refused << "', the shot: '" << why << "'");
+        CHECK((pin.refused == why || (pin.refused.rfind("no release there", 0) == 0 && why.find("release") != std::string::npos)));
+      }
       if (!pin.R || !shot) continue;
       ++made;
       worst = std::max({worst, relative(*pin.R, shot->capacity.R), relative(*pin.Q, shot->Q)});

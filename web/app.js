@@ -34,9 +34,18 @@
     air: false, cd: '0.47', wind: '0m/s', release: 'Q', target_level: '0m', range_from: 'pivot', release_by: 'optimum', release_value: '',
     machine: 'hinged', edit: null, attested: { Lb: '9.5m', M: '3t', m: '50kg' }, samples: '200',
     projectile: 'stone', projectile_density: '3000kg/m3', projector: false, sweep_key: 'L4', sweep_from: '', sweep_to: '',
+    own_table: false, edit_from: 'design',
   };
   const DEFAULTS = JSON.stringify(state);  // a link carries only what differs from these, so that it stays short (and its QR code coarse)
-  const MATERIALS = ['stone', 'iron', 'lead', 'clay'];  // the library's names (air.hpp, projectile_materials)
+  const LAYOUT = ['projector'];  // how the page is laid out on this screen: no link carries it
+  // A whipper that throws, to start from: pytrebuchet's default masses and long arm, its short arm,
+  // the counterweight's rope and the sling changed (1.5, 3 and 5 m) on a 6 m frame, where its
+  // default (2, 4, 4 m on 5 m) lets the sling go slack and the weight through the ground. Its H as
+  // given, its start as the page builds every whipper (asBuilt).
+  const WHIPPER = { L1: 4, L2: 1.5, L3: 3, L4: 5, M: 100, m: 3, mb: 10, theta_i_deg: 30, H: 6 };
+  let linkEdit = null;   // a link's edited values, put over the engine its edit view opens on
+  const MATERIALS = ['stone', 'iron', 'lead', 'clay'];
+  const MACHINE_NAMES = { hinged: 'hinged counterweight', fixed: 'fixed counterweight', 'floating-arm': 'floating arm', whipper: 'whipper' };  // the library's names (air.hpp, projectile_materials)
   let designed = null;   // the calculator's design (JSON), or null when refused
   let shown = null;      // the engine the shot is of (engine keys), and its shot
   let editBase = null;   // the engine the edit view opened: the one shown when Edit was chosen
@@ -86,6 +95,18 @@
     }
     return s;
   }
+  // The settings as trebuchet-verify's flags, so that a downloaded engine is shot again as the page shot it.
+  function verifyFlags() {
+    const flags = [];
+    if (state.release !== 'Q') flags.push('--quality', state.release);
+    if (state.target_level.trim()) flags.push('--target-level', state.target_level.trim());
+    if (state.range_from !== 'pivot') flags.push('--range-from', state.range_from);
+    if (state.air) {
+      flags.push('--air', '--cd', /^re$/i.test(state.cd.trim()) ? 'Re' : state.cd.trim(), '--wind', state.wind.trim(),
+        '--projectile', state.projectile === 'density' ? state.projectile_density.trim() : state.projectile);
+    }
+    return flags.map((f) => (/^[-+\w.:/=±]+$/.test(f) ? f : "'" + f.replace(/'/g, "'\\''") + "'"));
+  }
   // The engine as the machine chosen (its key "machine", none for the paper's) with the release
   // its builder set, when one is set (release_time, release_angle_deg or pin_angle_deg, keys of
   // the table of inputs' release group).
@@ -109,13 +130,20 @@
   }
 
   // ---- URL state ----------------------------------------------------------------------------
+  // The edited values a link carries: those that differ from the engine the edit view opened on,
+  // which the link's other values make again (its givens, its attested values, the whipper).
+  function editChanges() {
+    if (!state.edit || !editBase) return state.edit;
+    const changed = {};
+    for (const [key, value] of Object.entries(state.edit)) if (value !== editBase[key]) changed[key] = value;
+    return Object.keys(changed).length ? changed : null;
+  }
   function saveState() {
     const params = new URLSearchParams();
     const defaults = JSON.parse(DEFAULTS);
-    // An edit view still on the design's engine: the link's givens make it again.
-    if (designed && editFrom !== 'reconstruct' && JSON.stringify(state.edit) === JSON.stringify(engineOf(designed))) defaults.edit = state.edit;
-    for (const [k, v] of Object.entries(state))
-      if (v !== null && JSON.stringify(v) !== JSON.stringify(defaults[k])) params.set(k, typeof v === 'object' ? JSON.stringify(v) : String(v));
+    const shared = Object.assign({}, state, state.view === 'edit' ? { edit: editChanges() } : { edit: null, edit_from: defaults.edit_from });
+    for (const [k, v] of Object.entries(shared))
+      if (v !== null && !LAYOUT.includes(k) && JSON.stringify(v) !== JSON.stringify(defaults[k])) params.set(k, typeof v === 'object' ? JSON.stringify(v) : String(v));
     history.replaceState(null, '', '#' + params.toString());
   }
   // A link's state is anyone's text: each value is checked against what it must be, and one
@@ -132,7 +160,8 @@
     release_by: (v) => ['optimum', 'pin_angle_deg', 'release_angle_deg', 'release_time'].includes(v), release_value: isText,
     machine: (v) => ['hinged', 'fixed', 'floating-arm', 'whipper'].includes(v),
     range_from: (v) => ['pivot', 'release'].includes(v), samples: isText,
-    projectile: (v) => MATERIALS.concat(['density']).includes(v), projectile_density: isText, projector: (v) => typeof v === 'boolean',
+    projectile: (v) => MATERIALS.concat(['density']).includes(v), projectile_density: isText,
+    own_table: (v) => typeof v === 'boolean', edit_from: (v) => ['design', 'reconstruct', 'whipper'].includes(v),
     sweep_key: (v) => sweepable().some((f) => f.key === v), sweep_from: isText, sweep_to: isText,
     // An edited engine: keys of a shot's design, each a finite number, the engine's own values positive.
     edit: (v) => v === null || (typeof v === 'object' && !Array.isArray(v) && Object.keys(v).length > 0 &&
@@ -146,10 +175,12 @@
     for (const [k, text] of params) {
       if (!Object.prototype.hasOwnProperty.call(CHECKS, k)) continue;
       let value = text;
-      if (k === 'air' || k === 'projector') value = text === 'true' ? true : text === 'false' ? false : null;
+      if (k === 'air' || k === 'own_table') value = text === 'true' ? true : text === 'false' ? false : null;
       else if (['first', 'second', 'edit', 'attested'].includes(k)) { try { value = JSON.parse(text); } catch (e) { continue; } }
       if (CHECKS[k](value)) state[k] = value;
     }
+    linkEdit = state.edit;  // put over the engine the edit view opens on (showView)
+    state.edit = null;
     if (state.theta === '40') state.F = '2/3';
   }
 
@@ -180,8 +211,10 @@
     $('first').value = state.first[1]; $('second').value = state.second[1];
     givenSlider('first'); givenSlider('second');
   }
+  // The machines with a table of their own optimal engines (docs/machines.md).
+  const ownTable = () => state.own_table && ['fixed', 'floating-arm'].includes(state.machine);
   function runDesign() {
-    const request = { theta_i_deg: Number(state.theta), F: state.F };
+    const request = ownTable() ? { theta_i_deg: Number(state.theta), machine: state.machine } : { theta_i_deg: Number(state.theta), F: state.F };
     request[state.first[0]] = state.first[1];
     request[state.second[0]] = state.second[1];
     const answer = call('design', request);
@@ -196,12 +229,33 @@
     designed = answer;
     message.className = 'message';
     message.textContent = (answer.warnings || []).join(' ');
-    $('design-result').innerHTML = `<table class="tv-figures"><caption>the optimal engine${answer.branch === 'none' ? '' : ' (' + answer.branch + ' branch)'}, θi = ${answer.theta_i_deg}°, F = ${Math.abs(answer.F - 2 / 3) < 1e-12 ? '2/3' : V.significant(answer.F, 4)}</caption>
+    const block = ownTable() ? `the ${MACHINE_NAMES[state.machine]}'s own optimal engine, θi = ${answer.theta_i_deg}°`
+      : `the optimal engine${answer.branch === 'none' ? '' : ' (' + answer.branch + ' branch)'}, θi = ${answer.theta_i_deg}°, F = ${Math.abs(answer.F - 2 / 3) < 1e-12 ? '2/3' : V.significant(answer.F, 4)}`;
+    $('design-result').innerHTML = `<table class="tv-figures"><caption>${block}</caption>
       <tr><th>capacity</th><td>R = ${q(answer.R, 'length')}, T = ${q(answer.T, 'energy')} (in vacuum)</td></tr>
       <tr><th>beam</th><td>L1 = ${q(answer.L1, 'length')}, L2 = ${q(answer.L2, 'length')}, Lb = ${q(answer.Lb, 'length')}, diameter D = ${q(answer.D, 'length')}</td></tr>
       <tr><th>arm, sling, pivot</th><td>L3 = ${q(answer.L3, 'length')}, L4 = ${q(answer.L4, 'length')}, H = ${q(answer.H, 'length')}</td></tr>
       <tr><th>masses</th><td>counterweight M = ${q(answer.M, 'mass')}, projectile m = ${q(answer.m, 'mass')}, beam mb = ${q(answer.mb, 'mass')}</td></tr></table>`;
     return true;
+  }
+
+  // ---- the machine chosen, in words ---------------------------------------------------------------
+  // What the engine shown is for the machine chosen, and what to do for that machine's best: the
+  // calculator's optimum is the hinged machine's unless the machine's own table is asked for.
+  function showMachineNote() {
+    const note = $('machine-note'), machine = state.machine, name = MACHINE_NAMES[machine];
+    $('own-table-row').hidden = !['fixed', 'floating-arm'].includes(machine);
+    $('own-table').checked = state.own_table;
+    $('whipper-example').hidden = machine !== 'whipper';
+    if (machine === 'hinged') { note.textContent = 'The paper\'s machine: the counterweight hangs from the short arm on its own arm L3.'; return; }
+    if (machine === 'whipper') {
+      note.textContent = 'There is no table of optimal whippers: the engine shown is the hinged machine\'s, started as a whipper (its long arm 60° up, the counterweight and the ball resting on it). ' +
+        'A whipper needs proportions of its own: where the shot says NOT PHYSICAL, the warnings above the animation say where the model stops holding. Edit L3, L4 and H in view 2, or start from a whipper that throws:';
+      return;
+    }
+    note.textContent = ownTable()
+      ? `The ${name}'s own optimal engine, from its own table (docs/machines.md): the counterweight at the short arm's end.`
+      : `The optimal engine of view 1 is the hinged machine's (tab:CPNC), here built as a ${name}: its proportions are not this machine's best, so its efficiency ε and Q fall. Tick the box for the ${name}'s own optimal engine.`;
   }
 
   // ---- the shot -------------------------------------------------------------------------------
@@ -221,9 +275,10 @@
     viewer = V.render($('viewer'), answer, { units: state.units, time: viewer ? viewer.time() : 0, playing: viewer ? viewer.playing() : false });
     // The engine in the programs' schema; the settings beside it, as the shot's answer states them
     // (trebuchet-verify reads the engine's keys and passes over the others).
-    const json = JSON.stringify(Object.assign({ comment: 'trebuchet-verify FILE --format json shoots this engine again; give the settings below as its flags (docs/web.md)' },
-      engine, { assumptions: answer.assumptions }), null, 2) + '\n';
     const name = { design: 'optimal-engine', edit: 'edited-engine', reconstruct: 'completed-engine' }[state.view] || 'engine';
+    const command = ['trebuchet-verify', 'shot', name + '.json'].concat(verifyFlags()).join(' ');
+    const json = JSON.stringify(Object.assign({ comment: 'The engine as this page shot it: "command" shoots it again with the page\'s settings (docs/web.md)', command },
+      asBuilt(engine), { assumptions: answer.assumptions }), null, 2) + '\n';
     $('download-json').href = 'data:application/json;charset=utf-8,' + encodeURIComponent(json);
     $('download-json').download = name + '.json';
     $('download-csv').download = name + '-shot.csv';
@@ -261,7 +316,7 @@
       const [lo, hi] = key === 'theta_i_deg' ? [10, 80] : [Math.min(centre * 0.3, edited * 0.9), Math.max(centre * 2.5, edited * 1.1)];
       const row = document.createElement('div');
       row.className = 'slider';
-      row.innerHTML = `<span class="name"></span><span class="words"></span><input type="range" step="any"><input class="typed" autocomplete="off">`;
+      row.innerHTML = `<span class="label"><span class="name"></span><span class="words"></span></span><input type="range" step="any"><input class="typed" autocomplete="off">`;
       row.querySelector('.name').textContent = key === 'theta_i_deg' ? 'θi' : key;
       row.querySelector('.words').textContent = key === 'theta_i_deg' ? 'start angle' : label.replace(/ \[deg\]$/, '');
       const input = row.querySelector('input[type="range"]'), typed = row.querySelector('.typed');
@@ -273,7 +328,8 @@
       typed.title = 'type a value with its unit, metric or imperial (' + (INPUTS.find((f) => f.key === key) || { units: [] }).units.join(', ') + '), then Enter';
       const show = () => { typed.value = typedText(state.edit[key], dimension); typed.removeAttribute('aria-invalid'); };
       show();
-      input.addEventListener('input', () => { state.edit[key] = Number(input.value); show(); update(); });
+      // A drag writes the value to the 4 digits the box shows, which a link then carries as they are.
+      input.addEventListener('input', () => { state.edit[key] = Number(V.significant(Number(input.value), 4)); show(); update(); });
       // A typed value is read by the library, as the programs read it; the slider follows, widened to reach it.
       typed.addEventListener('change', () => {
         const answer = call('value', { key, text: typed.value });
@@ -303,7 +359,7 @@
       });
       box.appendChild(row);
     }
-    const from = { design: 'the optimal engine of view 1, Design', reconstruct: 'the completed engine of view 3, Reconstruct' }[editFrom];
+    const from = { design: 'the optimal engine of view 1, Design', reconstruct: 'the completed engine of view 3, Reconstruct', whipper: 'a whipper that throws (pytrebuchet\'s masses and long arm; L2 1.5 m, L3 3 m, L4 5 m on a 6 m frame)' }[editFrom];
     $('edit-source').textContent = 'Editing ' + (from || (editBase ? 'the engine of the link' : 'the optimal engine of view 1, Design')) + '.';
     fillSweepKeys();
   }
@@ -363,7 +419,7 @@
     const breaking = answer.points.map((p, i) => (p.rupture_margin < 1 ? i : -1)).filter((i) => i >= 0);
     const labels = breaking.map((i) => ({ x: x[i], y: answer.points[i].R / shot.R, text: '✗', attributes: { fill: '#b00020', 'font-size': 15, 'text-anchor': 'middle', 'font-weight': 'bold' } }));
     const name = key === 'theta_i_deg' ? 'θi' : key === 'pin_angle_deg' ? 'the pin angle' : key;
-    const figure = V.chart({ width: 420, height: 300, title: `What if ${name} changes? Each point a whole shot`,
+    const figure = V.chart({ width: V.chartUnits(box.clientWidth || 420), height: 300, title: `What if ${name} changes? Each point a whole shot`,
       subtitle: 'each value over its value in this engine; ✗: the beam breaks', xLabel: `${sweepName(field)} [${unit}]`,
       yLabel: 'over this engine', xName: name, xUnit: unit, lines, labels, marks: [{ name: 'this engine', x: range.value / size }],
       empty: 'no point of this range makes a shot: see the message above' });
@@ -384,14 +440,15 @@
     const box = $('compare');
     if (!answer) { box.innerHTML = ''; return; }
     // The paper's optimum for the edited engine's own capacity (vacuum, level 0), same θi and F.
-    const request = { R: answer.R_vacuum, T: answer.T_vacuum, theta_i_deg: designed ? designed.theta_i_deg : Number(state.theta), F: designed ? designed.F : state.F };
+    const request = { R: answer.R_vacuum, T: answer.T_vacuum, theta_i_deg: designed ? designed.theta_i_deg : Number(state.theta) };
+    if (ownTable()) request.machine = state.machine; else request.F = designed ? designed.F : state.F;
     let optimum = call('design', request), note = '';
     if (optimum.kind === 'out_of_range') {  // beyond the table: its nearest segment, said so
       const extrapolated = call('design', Object.assign({ extrapolate: true }, request));
       if (!extrapolated.error) { note = ' (extrapolated: this capacity lies beyond tab:CPNC)'; optimum = extrapolated; }
     }
     if (optimum.error) { box.innerHTML = `<details class="message"><summary>No optimum in tab:CPNC for this capacity, to compare with.</summary>${escapeHtml(optimum.error)}</details>`; return; }
-    const shot = call('shot', Object.assign({ design: engineOf(optimum) }, settings()));
+    const shot = call('shot', Object.assign({ design: asBuilt(engineOf(optimum)) }, settings()));
     const cell = (a, b, f) => `<td>${f(a)}</td><td>${shot.error ? '—' : f(b)}</td>`;
     box.innerHTML = `<table class="tv-figures compare"><caption>the edited engine beside the paper's optimum for the same capacity (R and T in vacuum, at the base's level)${note}</caption>
       <tr><th></th><th>edited</th><th>optimal</th></tr>
@@ -551,6 +608,7 @@
       } catch (e) { /* too long at this level */ }
     }
     $('qr-code').innerHTML = svgText || '<p class="message refused">This link is too long for a QR code; copy it instead.</p>';
+    $('qr-file').hidden = location.protocol !== 'file:';
     $('qr-text').textContent = link.length > 160 ? link.slice(0, 160) + '…' : link;
     $('qr-dialog').showModal();
   }
@@ -581,6 +639,7 @@
 
   // ---- the whole page -------------------------------------------------------------------------
   function update() {
+    showMachineNote();
     saveState();
     if (state.view === 'design') {
       if (runDesign()) runShot(engineOf(designed), "The optimal engine's shot");
@@ -594,6 +653,20 @@
       runComplete();
     }
   }
+  // The engine a link's edit view opens on, made again from the link: the design of its givens,
+  // the completion of its attested values, or the whipper that throws; the link's changes go over it.
+  function openEditBase() {
+    let base = null;
+    if (state.edit_from === 'whipper') base = Object.assign({}, WHIPPER);
+    else if (state.edit_from === 'reconstruct') {
+      const answer = call('complete', Object.assign({ attested: Object.assign({}, state.attested) }, settings()));
+      if (!answer.error) base = engineOf(answer);
+    } else if (runDesign()) base = engineOf(designed);
+    editBase = base;
+    editFrom = state.edit_from;
+    if (base || linkEdit) state.edit = Object.assign({}, base || {}, linkEdit || state.edit || {});
+    linkEdit = null;
+  }
   function showView(view) {
     // Edit opens the engine shown in the view left (the optimal or the completed one), as it was shot.
     if (view === 'edit' && state.view !== 'edit' && shown) {
@@ -601,10 +674,12 @@
       editFrom = state.view;
       state.edit = Object.assign({}, shown.engine);
     }
+    if (view === 'edit' && editFrom) state.edit_from = editFrom;
     state.view = view;
+    if (view === 'edit' && !editBase) openEditBase();
     document.querySelectorAll('nav button').forEach((b) => b.setAttribute('aria-selected', String(b.dataset.view === view)));
     document.querySelectorAll('.view').forEach((v) => { v.hidden = v.dataset.view !== view; });
-    if (view === 'edit') { if (!editBase) runDesign(); buildSliders(); }
+    if (view === 'edit') buildSliders();
     if (view === 'reconstruct') buildAttested();
     update();
   }
@@ -645,6 +720,7 @@
         if (key === 'theta') blocks();
         if (key === 'theta' || key === 'F') state.edit = null;
         if (key === 'machine' && state.view === 'edit') buildSliders();  // the whipper's θi is its own
+        if (key === 'machine' && state.own_table && state.view === 'design') state.edit = null;
         update();
       });
     }
@@ -677,13 +753,29 @@
     projector();
     $('projector').addEventListener('click', () => { state.projector = !state.projector; projector(); update(); });
     $('qr').addEventListener('click', showQr);
+    $('own-table').addEventListener('change', () => {
+      state.own_table = $('own-table').checked;
+      if (state.view === 'design') state.edit = null;
+      update();
+    });
+    $('whipper-example').addEventListener('click', () => {
+      editBase = Object.assign({}, WHIPPER);
+      editFrom = state.edit_from = 'whipper';
+      state.edit = Object.assign({}, WHIPPER);
+      state.view = 'edit';
+      document.querySelectorAll('nav button').forEach((b) => b.setAttribute('aria-selected', String(b.dataset.view === 'edit')));
+      document.querySelectorAll('.view').forEach((v) => { v.hidden = v.dataset.view !== 'edit'; });
+      buildSliders();
+      update();
+    });
     $('complete').addEventListener('click', () => runComplete());
     $('monte-carlo').addEventListener('click', () => runBand());
     $('share').addEventListener('click', () => {
       saveState();
       const said = (text) => { $('share').textContent = text; setTimeout(() => { $('share').textContent = 'Copy link'; }, 2500); };
-      if (!navigator.clipboard) { said('Copy the address bar: it holds the link'); return; }
-      navigator.clipboard.writeText(location.href).then(() => said('Link copied'), () => said('Copy the address bar: it holds the link'));
+      const local = location.protocol === 'file:' ? ': it opens only on this computer (see the QR code)' : '';
+      if (!navigator.clipboard) { said('Copy the address bar: it holds the link' + local); return; }
+      navigator.clipboard.writeText(location.href).then(() => said('Link copied' + local), () => said('Copy the address bar: it holds the link' + local));
     });
   }
 

@@ -57,20 +57,47 @@
     return ticks;
   }
 
+  // The width of a text of `size` units in a sans-serif face, a little generous (0.6 em a character).
+  const textWidth = (content, size) => 0.6 * size * String(content).length;
+  // `content` broken at spaces into lines no wider than `width` units.
+  function wrap(content, size, width) {
+    const lines = [];
+    for (const word of String(content).split(' ')) {
+      const last = lines.length ? lines[lines.length - 1] + ' ' + word : null;
+      if (last !== null && textWidth(last, size) <= width) lines[lines.length - 1] = last; else lines.push(word);
+    }
+    return lines;
+  }
+
+  // A chart's width in its own units for a chart drawn `drawn` CSS px wide: its smallest words
+  // (10 units) at least 10 px on a screen and 18 on a projector (html.projector).
+  function chartUnits(drawn) {
+    const projector = typeof document !== 'undefined' && document.documentElement.classList.contains('projector');
+    return Math.floor(Math.min(760, Math.max(280, drawn * 10 / (projector ? 18 : 10))));
+  }
+
   // A line chart: `lines` [{name, x, y, colour, dash}], `marks` [{x, name}], with a readout of
   // every line's value at the pointer. Returns the <svg>.
   function chart(spec) {
-    const width = spec.width || 760, height = (spec.height || 330) * (spec.width && spec.width < 600 ? 1.25 : 1);
-    const left = 64, right = 16, top = (spec.title ? 48 : 22) + (spec.marks && spec.marks.length ? 22 : 0), bottom = 44 + 18 * Math.ceil(spec.lines.length / 3);
+    const width = spec.width || 760, left = 64, right = 16;
+    // The title and subtitle wrap to the chart's width; the key takes as many names a row as fit.
+    const titleLines = spec.title ? wrap(spec.title, 13, width - 16) : [], subtitleLines = spec.subtitle ? wrap(spec.subtitle, 11, width - 16) : [];
+    const keyWidth = Math.max(...spec.lines.map((line) => 34 + textWidth(line.name, 11)));
+    const perRow = Math.max(1, Math.min(3, Math.floor((width - left - right) / keyWidth)));
+    const keyRows = Math.ceil(spec.lines.length / perRow);
+    const top = 10 + 16 * titleLines.length + 14 * subtitleLines.length + (spec.marks && spec.marks.length ? 22 : 0) + (titleLines.length ? 8 : 0);
+    const bottom = 44 + 18 * keyRows;
+    const height = Math.max((spec.height || 330) * (width < 600 ? 1.25 : 1), top + bottom + 180);
     const root = svg('svg', { xmlns: SVGNS, viewBox: `0 0 ${width} ${height}`, width: '100%', role: 'img', class: 'chart' });
     svg('rect', { x: 0, y: 0, width, height, fill: 'white' }, root);
-    if (spec.title) text(root, width / 2, 18, spec.title, { 'text-anchor': 'middle', 'font-weight': 'bold', 'font-size': 13 });
-    if (spec.subtitle) text(root, width / 2, 35, spec.subtitle, { 'text-anchor': 'middle', 'font-size': 11, fill: '#444' });
+    titleLines.forEach((line, k) => text(root, width / 2, 20 + 16 * k, line, { 'text-anchor': 'middle', 'font-weight': 'bold', 'font-size': 13 }));
+    subtitleLines.forEach((line, k) => text(root, width / 2, 20 + 16 * titleLines.length + 14 * k, line, { 'text-anchor': 'middle', 'font-size': 11, fill: '#444' }));
     const xs = [], ys = [];
     for (const line of spec.lines)
       line.x.forEach((x, i) => { const y = line.y[i]; if (y !== null && isFinite(y) && isFinite(x)) { xs.push(x); ys.push(y); } });
     if (!xs.length) {  // every value refused or not finite: say so, draw no axes of NaN
-      text(root, width / 2, height / 2, spec.empty || 'nothing to draw: no point has a value', { 'text-anchor': 'middle', 'font-size': 13, fill: '#b00020' });
+      wrap(spec.empty || 'nothing to draw: no point has a value', 13, width - 24).forEach((line, k) =>
+        text(root, width / 2, height / 2 + 17 * k, line, { 'text-anchor': 'middle', 'font-size': 13, fill: '#b00020' }));
       return root;
     }
     let [x0, x1] = spec.xRange || [Math.min(...xs), Math.max(...xs)];
@@ -118,7 +145,7 @@
     (spec.labels || []).forEach((label) => text(curves, X(label.x), Y(label.y), label.text, Object.assign({ 'font-size': 11 }, label.attributes || {})));
     // The key, below the plot.
     spec.lines.forEach((line, k) => {
-      const kx = left + (k % 3) * ((width - left - right) / 3), ky = height - bottom + 50 + 18 * Math.floor(k / 3);
+      const kx = left + (k % perRow) * ((width - left - right) / perRow), ky = height - bottom + 50 + 18 * Math.floor(k / perRow);
       svg('line', { x1: kx, x2: kx + 22, y1: ky - 4, y2: ky - 4, stroke: line.colour, 'stroke-width': 2.5, 'stroke-dasharray': line.dash || '' }, root);
       text(root, kx + 28, ky, line.name, { 'font-size': 11 });
     });
@@ -188,6 +215,21 @@
       svg('circle', { cx: stone[0], cy: stone[1], r: Math.max(3.5, 0.03 * H * scale), fill: COLOURS.stone }, g);
     }
     if (options.angles) {
+      // Each label is moved down or up, a line at a time, off the labels already placed and the
+      // boxes the scene keeps clear (its caption): ψ and θ meet where the hinge nears the pivot.
+      const placed = (options.keepClear || []).slice();
+      const inside = (x, y, w, h) => !options.bounds || (y - h >= 0 && y + 4 <= options.bounds.height && x - w / 2 >= 0 && x + w / 2 <= options.bounds.width);  // 4: below the baseline
+      const clear = (x, y, w, h) => inside(x, y, w, h) && !placed.some((b) => x - w / 2 < b.x + b.w / 2 && b.x - b.w / 2 < x + w / 2 && y - h < b.y && b.y - b.h < y);
+      // Returns where the label goes, [x, y]: x kept inside the scene, y moved off the others.
+      const place = (x0, y, label) => {
+        const w = textWidth(label, 12), h = 14;
+        const x = options.bounds ? Math.min(Math.max(x0, w / 2 + 2), options.bounds.width - w / 2 - 2) : x0;
+        for (const step of [0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6]) {
+          if (clear(x, y + step * h, w, h)) { placed.push({ x, y: y + step * h, w, h }); return [x, y + step * h]; }
+        }
+        placed.push({ x, y, w, h });
+        return [x, y];
+      };
       const arc = (centre, radius, from, to, colour, label) => {
         // Site angles in degrees from +x, counterclockwise; the view flips y.
         const a0 = from * Math.PI / 180, a1 = to * Math.PI / 180;
@@ -196,7 +238,8 @@
         svg('path', { d: `M${p0[0]} ${p0[1]} A${radius} ${radius} 0 ${large} ${sweep} ${p1[0]} ${p1[1]}`, fill: 'none', stroke: colour, 'stroke-width': 2 }, g);
         // The label beyond the arc's middle; for a small angle, beside its reference line.
         const mid = Math.abs(to - from) < 12 ? Math.min(a0, a1) - 0.35 : (a0 + a1) / 2;
-        text(g, centre[0] + 1.7 * radius * Math.cos(mid), centre[1] - 1.7 * radius * Math.sin(mid) + 4, label, { fill: colour, 'text-anchor': 'middle', 'font-weight': 'bold', 'font-size': 12, stroke: 'white', 'stroke-width': 3, 'paint-order': 'stroke' });
+        const [x, y] = place(centre[0] + 1.7 * radius * Math.cos(mid), centre[1] - 1.7 * radius * Math.sin(mid) + 4, label);
+        text(g, x, y, label, { fill: colour, 'text-anchor': 'middle', 'font-weight': 'bold', 'font-size': 12, stroke: 'white', 'stroke-width': 3, 'paint-order': 'stroke' });
       };
       const theta = f.theta_deg[i], psi = f.psi_deg[i], phi = f.phi_deg[i];
       const r = Math.max(14, 0.22 * Math.min(e.L1, H) * scale);
@@ -219,13 +262,25 @@
   function escapeHtml(s) { return String(s).replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c]); }
 
   // How the range changes with the pin bent a degree or two off this optimum's (none for a given release).
+  // Reasons that differ only in their numbers (each pin's apex, say), once each: the first, and
+  // how many pins it stands for.
+  function alike(reasons) {
+    const groups = new Map();
+    for (const reason of reasons) {
+      const key = reason.replace(/-?[0-9][0-9.e+-]*/g, '#');
+      if (groups.has(key)) groups.get(key).count++; else groups.set(key, { reason, count: 1 });
+    }
+    return [...groups.values()].map((g) => (g.count > 1 ? `${g.count} pins: ` : '') + g.reason);
+  }
+  // A pin refused says why, once for all the pins refused for one reason.
   function pinTolerance(shot) {
     if (!shot.pin_tolerance) return '';
     const parts = shot.pin_tolerance.map((p) => {
       const off = p.pin_angle_deg - shot.pin_angle_at_release_deg;
       return (off > 0 ? '+' : '') + significant(off, 2) + '°: ' + (p.R_change === null ? 'refused' : (p.R_change > 0 ? '+' : '') + significant(p.R_change, 3) + ' m');
     });
-    return ' (R with the pin off by ' + parts.join(', ') + ')';
+    const reasons = alike(shot.pin_tolerance.filter((p) => p.R_change === null).map((p) => p.refused || 'a shot given this pin is refused'));
+    return ' (R with the pin off by ' + parts.join(', ') + ')' + (reasons.length ? '; refused: ' + reasons.join('; ') : '');
   }
 
   // What the shot assumed, in words, from its "assumptions".
@@ -318,10 +373,14 @@
       ],
     });
     // R and Q against the pin angle: the shot released at each pin 20 degrees either side of its own.
+    // Pins without a release leave gaps, or an empty chart, with the reason.
     const pinScan = s.pins;
-    const pin = pinScan && pinScan.R.some((v) => v !== null && isFinite(v)) && chart({ width,
+    const pinRefusals = pinScan ? alike((pinScan.refused || []).filter(Boolean)) : [];
+    const pin = pinScan && pinScan.pin_angle_deg.length > 0 && chart({ width,
       title: 'The pin: R and Q of a release at each pin angle',
-      subtitle: `this shot's pin angle, ${significant(shot.pin_angle_at_release_deg, 4)}°, marked; each over its value here`,
+      subtitle: `this shot's pin angle, ${significant(shot.pin_angle_at_release_deg, 4)}°, marked; each over its value here` +
+        (pinRefusals.length ? '; gaps: pins with no release' : ''),
+      empty: 'No pin of this span gives a release: ' + (pinRefusals[0] || 'each shot given one is refused'),
       xLabel: 'pin angle between the long arm and the sling at the release [°]', yLabel: 'value over its value in this shot', xName: 'pin', xUnit: '°',
       lines: [
         { name: 'R', colour: '#2ca02c', width: 2.5, x: pinScan.pin_angle_deg, y: pinScan.R.map((v) => (v === null ? null : v / shot.R)) },
@@ -329,7 +388,7 @@
       ],
       marks: [{ name: 'this shot', x: shot.pin_angle_at_release_deg }],
     });
-    return pin ? { forces, energy, release, paths, pin } : { forces, energy, release, paths };
+    return pin ? { forces, energy, release, paths, pin, pinRefusals } : { forces, energy, release, paths };
   }
 
   // The viewer into `container`: figures, warnings, the animation and the charts. `options`:
@@ -413,7 +472,13 @@
     // The animation: phases I and II to scale, then the whole flight.
     const stage = document.createElement('div');
     stage.className = 'tv-stage';
-    const width = 760, height = 380;
+    // The scene's units are chosen so that its smallest words (11 units) are drawn at least 11 CSS
+    // px on a screen and 18 on a projector (html.projector), at the size it is drawn: the
+    // container's width, or less where the stage's height (52 % of the window) bounds it.
+    const projector = document.documentElement.classList.contains('projector');
+    container.appendChild(stage);  // to measure the width it is drawn at
+    const drawn = Math.min(stage.clientWidth || 760, 2 * 0.52 * (window.innerHeight || 760));
+    const width = Math.floor(Math.min(760, Math.max(280, drawn * 11 / (projector ? 18 : 11)))), height = width / 2, foot = 8;
     const scene = svg('svg', { xmlns: SVGNS, viewBox: `0 0 ${width} ${height}`, width: '100%', class: 'tv-scene-svg', role: 'img' });
     stage.appendChild(scene);
     const controls = document.createElement('div');
@@ -423,6 +488,11 @@
       <label>speed <select class="tv-speed"><option value="1">real</option><option value="0.25">¼</option><option value="0.1" selected>1/10</option><option value="0.04">1/25</option></select></label>
       <label><input type="checkbox" class="tv-angles" checked> angles</label><span class="tv-time"></span>`;
     stage.appendChild(controls);
+    // The moment in words, under the scene: text of the page's size, which wraps on a phone.
+    const phaseLine = document.createElement('p');
+    phaseLine.className = 'tv-phase';
+    phaseLine.setAttribute('aria-live', 'off');
+    stage.insertBefore(phaseLine, controls);
     container.appendChild(stage);
     container.appendChild(tables);
     const f = s.frames, r = s.moments.release, tRelease = f.t[r], tEnd = tRelease + s.flight.time;
@@ -432,9 +502,9 @@
       for (const k of ['hinge', 'counterweight', 'tip', 'projectile']) if (f[k + '_x'][i] !== null && (f.phase[i] !== 'III' || k !== 'projectile')) { xs.push(f[k + '_x'][i]); ys.push(f[k + '_y'][i]); }
     }
     const view = (x0, x1, y0, y1) => {
-      const pad = 0.06 * Math.max(x1 - x0, y1 - y0), scale = Math.min(width / (x1 - x0 + 2 * pad), (height - 30) / (y1 - y0 + 2 * pad));
+      const pad = 0.06 * Math.max(x1 - x0, y1 - y0), scale = Math.min(width / (x1 - x0 + 2 * pad), (height - foot) / (y1 - y0 + 2 * pad));
       const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
-      return { scale, to: (x, y) => [width / 2 + (x - cx) * scale, (height - 30) / 2 + 10 - (y - cy) * scale] };
+      return { scale, to: (x, y) => [width / 2 + (x - cx) * scale, (height - foot) / 2 - (y - cy) * scale] };
     };
     const near = view(Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys));
     const far = view(Math.min(...s.flight.x, ...xs), Math.max(...s.flight.x, ...xs), Math.min(0, ...s.flight.y), Math.max(...s.flight.y, ...ys));
@@ -454,7 +524,7 @@
       // The view widens to the whole flight once the stone leaves the engine's view.
       const stone = time > tRelease ? stoneAt(time - tRelease) : null;
       const seen = stone && near.to(stone[0], stone[1]);
-      const flying = Boolean(seen) && (seen[0] < 0 || seen[0] > width || seen[1] < 0 || seen[1] > height - 30);
+      const flying = Boolean(seen) && (seen[0] < 0 || seen[0] > width || seen[1] < 0 || seen[1] > height - foot);
       const v = flying ? far : near;
       let i = 0;
       while (i + 1 < f.t.length && f.t[i + 1] <= time) i++;
@@ -475,12 +545,13 @@
         const at = v.to(stone[0], stone[1]);
         svg('circle', { cx: at[0], cy: at[1], r: flying ? 4 : Math.max(3.5, 0.03 * e.H * v.scale), fill: COLOURS.stone }, g);
       }
-      drawEngine(g, shot, i, v.to, v.scale, { angles: angles.checked && !flying });
+      const banner = modelWarnings.length ? [{ x: width / 2, y: 40, w: textWidth('NOT PHYSICAL', 30), h: 30 }] : [];
+      drawEngine(g, shot, i, v.to, v.scale, { angles: angles.checked && !flying, keepClear: banner, bounds: { width, height } });
       const held = shot.t_counterweight_free;  // the whipper's: its counterweight leaves the arm first
       const first = held === undefined ? 'phase I: the projectile slides in the trough'
         : time <= held ? 'phase I: the counterweight and the projectile ride on the arm' : 'phase I: the counterweight swings, the projectile rides on the arm';
       const phase = time <= f.t[s.moments.liftoff] ? first : time <= tRelease ? 'phase II: the sling swings' : 'phase III: the flight';
-      text(scene, 10, height - 10, `t = ${time.toFixed(3)} s, ${phase}` + (flying ? ' (zoomed out to the whole flight, real speed)' : ''), { 'font-size': 13 });
+      phaseLine.textContent = `t = ${time.toFixed(3)} s, ${phase}` + (flying ? ' (zoomed out to the whole flight, real speed)' : '');
       if (modelWarnings.length) text(scene, width / 2, 40, 'NOT PHYSICAL', { 'text-anchor': 'middle', 'font-size': 30, fill: '#cc0000', 'font-weight': 'bold' });
       timeText.textContent = `${time.toFixed(2)} s of ${tEnd.toFixed(2)} s`;
       scrub.value = String(Math.round(time <= tRelease ? 500 * time / tRelease : 500 + 500 * (time - tRelease) / (tEnd - tRelease)));
@@ -515,8 +586,16 @@
     draw();
     if (options.playing) play.click();  // a change while it played plays on
 
-    // On a phone the charts are drawn narrower, so that their text is not shrunk to nothing.
-    const figures = charts(shot, system, container.clientWidth && container.clientWidth < 600 ? 420 : 760);
+    // Each chart's units are chosen as the scene's (chartUnits), at the width a chart's box has in
+    // the grid (style.css, .tv-charts: one a row on a projector), measured on an empty box.
+    const grid = document.createElement('div');
+    grid.className = 'tv-charts';
+    container.appendChild(grid);
+    const probes = [0, 1, 2, 3, 4].map(() => grid.appendChild(Object.assign(document.createElement('figure'), { className: 'tv-chart' })));
+    const padding = parseFloat(getComputedStyle(probes[0]).paddingLeft) + parseFloat(getComputedStyle(probes[0]).paddingRight);
+    const figureWidth = probes[0].clientWidth ? probes[0].clientWidth - padding : 420;
+    probes.forEach((probe) => grid.removeChild(probe));
+    const figures = charts(shot, system, chartUnits(figureWidth));
     const captions = {
       forces: 'F_S⊥ is the sling\'s pull across the beam; |F_R| and F_Rh the pivot\'s force on the beam and its horizontal part; |F_H| the hinge\'s force; N the trough\'s push in phase I. Size ropes, pins and beams from these.',
       energy: 'Each body\'s energy gained since rest. The counterweight falls and gives up its energy; the beam takes a little, the projectile the most. ΔU is what beam and counterweight give up once they have fallen to their final rest; the dashed brown line is what they still hold above that rest, (1 − ε) ΔU at the release, while the projectile holds ε ΔU. The total is constant: with no friction nothing else takes a share; an engine given with friction or drag before the release shows what they took, and the total counts it.',
@@ -524,8 +603,8 @@
       paths: 'The counterweight, the beam\'s tip and the projectile through phases I and II, then the flight.',
       pin: 'A builder bends the pin to release the sling at one angle between the long arm and the sling. Each point is the shot released at that pin: how far it throws (R) and its quality (Q), over this shot\'s.',
     };
-    const grid = document.createElement('div');
-    grid.className = 'tv-charts';
+    if (figures.pinRefusals && figures.pinRefusals.length) captions.pin += ' Where a pin has no point: ' + figures.pinRefusals.join('; ') + '.';
+    delete figures.pinRefusals;
     for (const [name, figure] of Object.entries(figures)) {
       const box = document.createElement('figure');
       box.className = 'tv-chart tv-chart-' + name;
@@ -557,5 +636,5 @@
     return lines.join('\n') + '\n';
   }
 
-  global.TrebuchetViewer = { render, quantity, unitOf, significant, describeAssumptions, seriesCsv, chart, escapeHtml };
+  global.TrebuchetViewer = { render, quantity, unitOf, significant, describeAssumptions, seriesCsv, chart, chartUnits, escapeHtml };
 })(typeof window !== 'undefined' ? window : globalThis);

@@ -244,7 +244,13 @@ ordered_json design(const json& request) {
   std::vector<std::string> known = input_names(op_given | op_calculator);
   for (const std::string& key : keys_of(req_design)) known.push_back(key);
   require_keys(request, known, "design");
-  const ScalingTable& table = builtin_scaling_table();
+  // Another machine's optimum from its own table (docs/machines.md), as trebuchet-calc --machine.
+  const MachineKind machine = request.contains(machine_key) ? parse_machine(text_of(request[machine_key], machine_key), "{{machine}}")
+                                                            : MachineKind::hinged;
+  const ScalingTable& table = builtin_scaling_table(machine);
+  if (machine != MachineKind::hinged && request.contains("F"))
+    throw Error(ErrorKind::usage,
+                "{{F}}: the " + machine_name(machine) + " machine's table holds the counterweight at the short arm's end; leave out {{F}}");
   DesignRequest r;
   std::vector<Given> givens;
   for (Quantity q : all_quantities) {

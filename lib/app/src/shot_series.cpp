@@ -181,11 +181,13 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
     for (int k = 0; k < force_count; ++k) phase_two[extremes[k]].push_back(row.running_max[k] / series.final_extremes[k]);
   }
   // R [m] and Q against the pin angle [deg]; null where a pin gives no release.
-  json pins = {{"pin_angle_deg", json::array()}, {"R", json::array()}, {"Q", json::array()}};
+  // With why each pin without them is refused (null where it has them).
+  json pins = {{"pin_angle_deg", json::array()}, {"R", json::array()}, {"Q", json::array()}, {"refused", json::array()}};
   for (const PinShot& shot : series.pins) {
     pins["pin_angle_deg"].push_back(shot.pin_angle_deg);
     pins["R"].push_back(shot.R ? json(*shot.R) : json(nullptr));
     pins["Q"].push_back(shot.Q ? json(*shot.Q) : json(nullptr));
+    pins["refused"].push_back(shot.refused.empty() ? json(nullptr) : json(shot.refused));
   }
   return {{"pivot_height", pivot_height(engine)},
           {"energy_drop", potential_energy_drop(engine)},

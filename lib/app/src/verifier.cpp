@@ -157,7 +157,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
         tolerance.push_back({{"pin_angle_deg", shot.pin_angle_deg}, {"R", *shot.R}, {"R_change", change}});
         lost.push_back(signed_offset + (change > 0 ? "+" : "") + quantity_text(change, UnitDimension::length, check.units, 3));
       } else {
-        tolerance.push_back({{"pin_angle_deg", shot.pin_angle_deg}, {"R", nullptr}, {"R_change", nullptr}});
+        tolerance.push_back({{"pin_angle_deg", shot.pin_angle_deg}, {"R", nullptr}, {"R_change", nullptr}, {"refused", shot.refused}});
         lost.push_back(signed_offset + "refused");
       }
     }

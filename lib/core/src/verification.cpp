@@ -244,12 +244,15 @@ OtherReleases PinScan::releases() {
     ShotSettings at = settings_for(engine_, settings_);
     std::vector<GivenRelease> releases;
     released_.clear();
+    unasked_.clear();
     for (double pin : asked_) {
       at.release_at = SetRelease{ReleaseBy::pin_angle, pin};
       released_.emplace_back();
+      unasked_.emplace_back();
       try {
         check_shot_settings(at);
-      } catch (const Error&) {
+      } catch (const Error& e) {
+        unasked_.back() = e.what();
         continue;
       }
       released_.back() = releases.size();
@@ -263,16 +266,18 @@ void PinScan::read(const ShotResult& shot) {
   const ShotSettings settings = settings_for(engine_, settings_);
   shots_.clear();
   for (std::size_t i = 0; i < asked_.size(); ++i) {
-    PinShot pin{asked_[i], std::nullopt, std::nullopt};
+    PinShot pin{asked_[i], std::nullopt, std::nullopt, unasked_[i]};
     if (const auto& other = released_[i] ? shot.others.at(*released_[i]) : std::nullopt) {
       ShotResult released;
       released.t_liftoff = shot.t_liftoff, released.release = other->release, released.work = other->work;
       try {
         const Verification v = verification_of(engine_, released, settings.target_level, settings.air, settings.range_from_release);
         pin.R = v.capacity.R, pin.Q = v.Q;
-      } catch (const Error&) {
-        // A flight that does not come down to the target level, as a shot given this pin refuses it.
+      } catch (const Error& e) {
+        pin.refused = e.what();  // a flight that does not come down to the target level, as a shot given this pin refuses it
       }
+    } else if (released_[i]) {
+      pin.refused = "no release there: the sling passes this pin in the trough, before lift-off, or not at all before the swing ends";
     }
     shots_.push_back(pin);
   }

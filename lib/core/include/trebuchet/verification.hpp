@@ -157,6 +157,7 @@ ShotSettings settings_for(const Engine& engine, const ShotSettings& settings);
 struct PinShot {
   double pin_angle_deg = 0;  ///< the pin to bend [deg]
   std::optional<double> R, Q;  ///< [m], scaled
+  std::string refused;  ///< why a shot given this pin has no R and Q, in words; empty when it has them
 };
 
 /// How the range and Q change as the pin is bent (the best pin's tolerance, the chart of --plot):
@@ -181,6 +182,7 @@ class PinScan {
   Pins pins_deg_;
   std::vector<double> asked_;  ///< the pins asked for [deg]
   std::vector<std::optional<std::size_t>> released_;  ///< each pin's place among the shot's further releases; none: refused as given
+  std::vector<std::string> unasked_;  ///< why a pin refused as given was not asked; empty for the others
   std::vector<PinShot> shots_;
 };
 

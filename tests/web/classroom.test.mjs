@@ -1,0 +1,220 @@
+// The page for a real lesson (issue 49) in headless Chromium (CTest label web):
+//   node tests/web/classroom.test.mjs PAGE.html trebuchet-calc trebuchet-verify
+// 1. a link's QR code: a page opened from a file says a phone cannot open it, and how to host it;
+//    a link leaves the layout out, carries the edited values to the digits shown, and fits a code
+//    of version <= 10 once hosted; it opens the same engine again;
+// 2. a projector: every word of the charts and the animation at least 18 CSS px at 1920x1080,
+//    the charts full width; at 1280x720 the animation and every slider on the first screen;
+// 3. no words over one another: a slider's words and its slider, the angles' labels through the
+//    swing (and inside the scene), the phone's caption, a select's words within its box;
+// 4. another machine is explained, and its own optimum is the program's; the whipper opens one that throws;
+// 5. a pin without a release says why, in its row and on its chart;
+// 6. a download is shot again by its own command, with the page's settings, as the page shot it.
+// Each check prints how close it came. Exit 1 on any failure.
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { launch, open } from './browser.mjs';
+
+const [pagePath, calc, verify] = process.argv.slice(2);
+let failures = 0;
+const check = (ok, what) => { console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`); if (!ok) failures++; };
+const browser = await launch();
+const url = pathToFileURL(resolve(pagePath)).href;
+const link = (state) => url + '#' + new URLSearchParams(Object.fromEntries(Object.entries(state).map(([k, v]) => [k, typeof v === 'string' ? v : JSON.stringify(v)]))).toString();
+// tab:Alcala_la_Vieja's Ca engine.
+const ca = { L1: 4.13, L2: 0.88, L3: 1.5044566117531541, L4: 3.55, M: 3110, m: 50, mb: 174 };
+// Moves the slider of `key` by `factor`, as a hand drags it.
+const drag = (page, key, factor) => page.evaluate(([k, f]) => {
+  const slider = document.querySelector(`#sliders input[data-key="${k}"]`);
+  slider.value = String(Number(slider.value) * f);
+  slider.dispatchEvent(new Event('input'));
+}, [key, factor]);
+// Every visible text of the SVGs inside `selector`: its box and its size as drawn [CSS px].
+const svgTexts = (page, selector) => page.evaluate((s) => [...document.querySelectorAll(`${s} svg text`)]
+  .filter((t) => t.textContent && !t.closest('[visibility="hidden"]'))
+  .map((t) => {
+    const svg = t.ownerSVGElement, box = t.getBoundingClientRect();
+    return { text: t.textContent, px: Number(t.getAttribute('font-size') || 12) * svg.getBoundingClientRect().width / svg.viewBox.baseVal.width,
+      box: { left: box.left, right: box.right, top: box.top, bottom: box.bottom }, scene: svg.getBoundingClientRect() };
+  }), selector);
+const overlap = (a, b) => a.left < b.right - 0.5 && b.left < a.right - 0.5 && a.top < b.bottom - 0.5 && b.top < a.bottom - 0.5;
+
+try {
+  // ---- 1. the link and its QR code ----------------------------------------------------------------
+  {
+    const { page, context, problems } = await open(browser, link({ view: 'edit' }));
+    await page.click('#projector');
+    await drag(page, 'L4', 1.1);
+    const state = await page.evaluate(() => ({ href: location.href, hash: location.hash, edit: window.trebuchet.state().edit, R: window.trebuchet.current().R }));
+    await page.click('#qr');
+    const warned = await page.evaluate(() => { const box = document.getElementById('qr-file'); return box.getBoundingClientRect().height > 0 ? box.textContent : ''; });
+    check(/cannot open this link/.test(warned) && /python3 -m http\.server/.test(warned) && /Pages/.test(warned),
+      `a page opened from a file says a phone cannot open its link, and how to host it: "${warned.replace(/\s+/g, ' ').slice(0, 90)}…"`);
+    // A hosted page's link: the repository's Pages site, as docs/web.md publishes it.
+    const hosted = 'https://example.github.io/trebuchet/' + state.hash;
+    const version = await page.evaluate((text) => { const code = qrcode(0, 'L'); code.addData(text); code.make(); return (code.getModuleCount() - 17) / 4; }, hosted);  // eslint-disable-line no-undef
+    const params = new URLSearchParams(state.hash.slice(1));
+    const carried = JSON.parse(params.get('edit') || '{}');
+    const digits = Object.values(carried).map((v) => String(v).replace(/^-?0\.0*|[.-]|e.*$/g, '').replace(/^0+/, '').length);
+    check(!params.has('projector') && Object.keys(carried).join() === 'L4' && Math.max(...digits) <= 4 && version <= 10,
+      `a link after one drag carries the layout? ${params.has('projector')}; edited values ${JSON.stringify(carried)} (at most ${Math.max(...digits)} digits); ` +
+      `hosted, ${hosted.length} characters: a QR code of version ${version} (at most 10)`);
+    await page.click('#qr-dialog button');
+    const again = await open(browser, state.href);
+    const reopened = await again.page.evaluate(() => ({ edit: window.trebuchet.state().edit, R: window.trebuchet.current().R, projector: document.documentElement.classList.contains('projector') }));
+    check(JSON.stringify(reopened.edit) === JSON.stringify(state.edit) && reopened.R === state.R && !reopened.projector,
+      `the link opens the same engine again: R ${reopened.R} m against ${state.R} m, L4 ${reopened.edit && reopened.edit.L4} m; the projector's layout stays on its screen: ${!reopened.projector}`);
+    check(problems.length === 0 && again.problems.length === 0, `no console error (${problems.concat(again.problems).join('; ')})`);
+    await again.context.close();
+    await context.close();
+  }
+
+  // ---- 2. a projector -------------------------------------------------------------------------------
+  {
+    const { page, context } = await open(browser, link({ view: 'edit' }), { width: 1920, height: 1080 });
+    await page.click('#projector');
+    const texts = await svgTexts(page, 'main');
+    const smallest = texts.reduce((a, b) => (a.px <= b.px ? a : b));
+    const widths = await page.evaluate(() => ({ viewer: document.getElementById('viewer').clientWidth, charts: [...document.querySelectorAll('.tv-chart')].map((f) => f.getBoundingClientRect().width) }));
+    check(smallest.px >= 18 - 1e-6, `at 1920x1080 on a projector the smallest word of the charts and the animation is ${smallest.px.toFixed(2)} px ("${smallest.text}"), of ${texts.length}`);
+    check(widths.charts.length >= 4 && widths.charts.every((w) => w >= 0.95 * widths.viewer),
+      `on a projector the ${widths.charts.length} charts stand full width: ${widths.charts.map((w) => w.toFixed(0)).join(', ')} px of ${widths.viewer} px`);
+    await context.close();
+  }
+  {
+    const { page, context } = await open(browser, link({ view: 'edit' }), { width: 1280, height: 720 });
+    await page.click('#projector');
+    const first = await page.evaluate(() => {
+      const inside = (e) => { const r = e.getBoundingClientRect(); return r.top >= 0 && r.bottom <= window.innerHeight && r.left >= 0 && r.right <= window.innerWidth && r.height > 0; };
+      const sliders = [...document.querySelectorAll('#sliders input[type="range"]')];
+      return { scene: inside(document.querySelector('.tv-scene-svg')), play: inside(document.querySelector('.tv-play')), sliders: sliders.filter(inside).length, of: sliders.length };
+    });
+    check(first.scene && first.play && first.sliders === first.of,
+      `at 1280x720 on a projector the first screen holds the animation (${first.scene}), its play button (${first.play}) and ${first.sliders} of the ${first.of} sliders`);
+    await context.close();
+  }
+
+  // ---- 3. no words over one another -----------------------------------------------------------------
+  for (const [width, height, projector] of [[1920, 1080, false], [1920, 1080, true], [1280, 720, true], [390, 844, false]]) {
+    const { page, context } = await open(browser, link({ view: 'edit' }), { width, height });
+    if (projector) await page.click('#projector');
+    const sliders = await page.evaluate(() => [...document.querySelectorAll('#sliders .slider')].map((row) => {
+      const words = row.querySelector('.label').getBoundingClientRect(), slider = row.querySelector('input[type="range"]').getBoundingClientRect();
+      return { key: row.querySelector('input').dataset.key, apart: words.right <= slider.left + 0.5 || words.bottom <= slider.top + 0.5 };
+    }));
+    // A select's words within its box: the width the browser gives a copy of it left to its own
+    // width (its widest option, its arrow and padding) is no more than the box it has; in the
+    // edit view and in the design view.
+    const visibleSelects = () => page.evaluate(() => [...document.querySelectorAll('select')].filter((s) => s.getBoundingClientRect().width > 0).map((s) => {
+      const copy = s.cloneNode(true);
+      copy.removeAttribute('id');
+      Object.assign(copy.style, { width: 'auto', maxWidth: 'none', minWidth: '0', position: 'absolute', visibility: 'hidden' });
+      s.parentNode.appendChild(copy);
+      const words = copy.getBoundingClientRect().width;
+      copy.remove();
+      return { id: s.id || s.className, words, room: s.getBoundingClientRect().width };
+    }));
+    const selects = await visibleSelects();
+    await page.click('nav button[data-view="design"]');
+    await page.selectOption('#pair', 'any');
+    selects.push(...(await visibleSelects()).filter((s) => ['pair', 'first-name', 'second-name', 'theta', 'F'].includes(s.id)));
+    await page.click('nav button[data-view="edit"]');
+    const cut = selects.filter((s) => s.words > s.room);
+    const caption = await page.evaluate(() => parseFloat(getComputedStyle(document.querySelector('.tv-phase')).fontSize));
+    check(sliders.every((s) => s.apart) && cut.length === 0 && caption >= 12,
+      `${width}x${height}${projector ? ' on a projector' : ''}: the words of ${sliders.filter((s) => s.apart).length} of ${sliders.length} sliders clear of their sliders; ` +
+      `${selects.length - cut.length} of ${selects.length} selects show their words whole${cut.length ? ' (cut: ' + cut.map((s) => s.id).join(', ') + ')' : ''}; the animation's caption ${caption} px`);
+    await context.close();
+  }
+  // The angles' labels, every twentieth of the swing on the hinged and the fixed machine: none over
+  // another, all inside the scene.
+  for (const machine of ['hinged', 'fixed']) {
+    const { page, context } = await open(browser, link({ machine }), { width: 1280, height: 800 });
+    const release = await page.evaluate(() => window.trebuchet.current().t_release);
+    let worst = null, times = 0;
+    for (let k = 0; k <= 20; k++) {
+      const t = release * k / 20;
+      await page.evaluate((at) => window.trebuchet.viewer().setTime(at), t);
+      const labels = (await svgTexts(page, '.tv-stage')).filter((x) => /^[θψφ] /.test(x.text));
+      times++;
+      for (const a of labels) {
+        const out = a.box.top < a.scene.top - 0.5 || a.box.bottom > a.scene.bottom + 0.5 || a.box.left < a.scene.left - 0.5 || a.box.right > a.scene.right + 0.5;
+        const over = labels.find((b) => b !== a && overlap(a.box, b.box));
+        if ((out || over) && !worst) worst = `at ${t.toFixed(3)} s "${a.text}" ${out ? 'leaves the scene' : 'lies over "' + over.text + '"'}`;
+      }
+    }
+    check(!worst, `the ${machine} machine's angle labels at ${times} moments of the swing: ${worst || 'none over another, all inside the scene'}`);
+    await context.close();
+  }
+
+  // ---- 4. another machine ----------------------------------------------------------------------------
+  {
+    const { page, context, problems } = await open(browser, url);
+    await page.selectOption('#machine', 'fixed');
+    const built = await page.evaluate(() => ({ note: document.getElementById('machine-note').textContent, shot: window.trebuchet.current() }));
+    await page.check('#own-table');
+    const own = await page.evaluate(() => ({ note: document.getElementById('machine-note').textContent, shot: window.trebuchet.current() }));
+    const program = JSON.parse(execFileSync(calc, ['--R', '300m', '--m', '50kg', '--machine', 'fixed', '--format', 'json'], { encoding: 'utf8' }));
+    const closeness = Math.max(...['L1', 'L2', 'L4', 'M', 'mb'].map((k) => Math.abs(own.shot.engine[k] / program[k] - 1)));
+    check(/hinged machine's/.test(built.note) && /own optimal engine/.test(own.note) && closeness < 1e-12,
+      `the fixed machine: built from the hinged optimum the page says so ("${built.note.slice(0, 60)}…"); its own optimum is trebuchet-calc --machine fixed's to ${closeness.toExponential(1)}`);
+    // The machine's own optimum is its best for Q (eq:Q): the hinged one's proportions, built fixed, fall short of it.
+    check(own.shot.Q > built.shot.Q, `its own optimum's Q ${(100 * own.shot.Q).toFixed(2)} % beats the hinged optimum built fixed, ${(100 * built.shot.Q).toFixed(2)} % (ε ${(100 * own.shot.eps).toFixed(1)} % against ${(100 * built.shot.eps).toFixed(1)} %)`);
+    await page.uncheck('#own-table');
+    await page.selectOption('#machine', 'whipper');
+    const whipper = await page.evaluate(() => ({ note: document.getElementById('machine-note').textContent, warnings: (window.trebuchet.current() || { warnings: [] }).warnings }));
+    await page.click('#whipper-example');
+    const example = await page.evaluate(() => ({ view: window.trebuchet.state().view, shot: window.trebuchet.current(), source: document.getElementById('edit-source').textContent }));
+    if (example.shot) console.log(`     the whipper opened: view ${example.view}, warnings ${JSON.stringify(example.shot.warnings)}`);
+    check(/no table of optimal whippers/i.test(whipper.note) && example.view === 'edit' && example.shot && example.shot.warnings.length === 0 && example.shot.R > 0,
+      `the whipper: "${whipper.note.slice(0, 70)}…" (the hinged optimum started as one: ${whipper.warnings.length} warning(s)); the button opens one that throws: R ${example.shot && example.shot.R.toFixed(2)} m, no warning; "${example.source}"`);
+    check(problems.length === 0, `no console error (${problems.join('; ')})`);
+    await context.close();
+  }
+
+  // ---- 5. a pin without a release says why ------------------------------------------------------------
+  // Ca's engine aimed 30 m up: the pins far from its own throw flights whose apex lies below the
+  // target, the chart's gaps, each said; on level ground every pin throws.
+  for (const level of ['30m', '0m']) {
+    const { page, context } = await open(browser, link({ view: 'edit', edit: ca, target_level: level }));
+    const seen = await page.evaluate(() => {
+      const row = [...document.querySelectorAll('#viewer .tv-figures th')].find((th) => th.textContent === 'pin angle');
+      const chart = document.querySelector('.tv-chart-pin');
+      const shot = window.trebuchet.current();
+      return { row: row ? row.nextElementSibling.textContent : '', chart: chart ? chart.textContent : null, refused: shot.pin_tolerance.filter((p) => p.R === null).length,
+        charted: shot.series.pins.R.filter((r) => r !== null).length, pins: shot.series.pins.R.length };
+    });
+    const rowSays = seen.refused === 0 || /refused: \w+/.test(seen.row);
+    const chartSays = seen.chart !== null && (seen.charted === seen.pins || /Where a pin has no point: \w+|No pin of this span gives a release: \w+/.test(seen.chart));
+    check(rowSays && chartSays && (level === '0m' || seen.charted < seen.pins), `Ca's engine, target level ${level}: ${seen.refused} pin(s) of the row refused, ${seen.pins - seen.charted} of the chart's ${seen.pins}; ` +
+      `the row: "${seen.row.slice(0, 100)}"; the chart ${seen.chart === null ? 'is missing' : 'says: "' + (seen.chart.match(/Where a pin has no point: [^.]*|No pin[^.]*/) || ['all pins drawn'])[0].slice(0, 110) + '"'}`);
+    await context.close();
+  }
+
+  // ---- 6. a download is shot again as the page shot it ------------------------------------------------
+  {
+    const { page, context } = await open(browser, link({ view: 'edit', machine: 'fixed', air: true, projectile: 'lead', wind: '3m/s', release_by: 'pin_angle_deg', release_value: '40deg' }));
+    await drag(page, 'L4', 0.9);
+    const shown = await page.evaluate(() => window.trebuchet.current());
+    const folder = mkdtempSync(join(tmpdir(), 'trebuchet-classroom-'));
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download-json')]);
+    const file = join(folder, download.suggestedFilename());
+    await download.saveAs(file);
+    const record = JSON.parse(readFileSync(file, 'utf8'));
+    // The command as a user runs it beside the file: its words, the program's own name set to ours.
+    const words = record.command.split(' ');
+    const program = JSON.parse(execFileSync(verify, words.slice(1).concat(['--format', 'json']), { cwd: folder, encoding: 'utf8' }));
+    const closeness = Math.abs(program.R / shown.R - 1);
+    // As the page and the programs agree on any shot (page.test.mjs: 3.1e-10 at most), 1e-9.
+    check(closeness < 1e-9 && program.engine.machine === 'fixed' && program.assumptions.air.projectile_density === 11340,
+      `the download's command "${record.command}" shoots the page's shot again: R ${program.R} m against the page's ${shown.R} m (relative ${closeness.toExponential(2)}), the fixed machine, lead in air`);
+    await context.close();
+  }
+} finally {
+  await browser.close();
+}
+check(failures === 0, `${failures} failure(s)`);
+process.exit(failures ? 1 : 0);
