@@ -85,7 +85,7 @@
     const keyWidth = Math.max(...spec.lines.map((line) => 34 + textWidth(line.name, 11)));
     const perRow = Math.max(1, Math.min(3, Math.floor((width - left - right) / keyWidth)));
     const keyRows = Math.ceil(spec.lines.length / perRow);
-    const top = 10 + 16 * titleLines.length + 14 * subtitleLines.length + (spec.marks && spec.marks.length ? 22 : 0) + (titleLines.length ? 8 : 0);
+    const top = 10 + 16 * titleLines.length + 14 * subtitleLines.length + (spec.marks && spec.marks.length ? 24 : 0) + (titleLines.length ? 8 : 0);
     const bottom = 44 + 18 * keyRows;
     const height = Math.max((spec.height || 330) * (width < 600 ? 1.25 : 1), top + bottom + 180);
     const root = svg('svg', { xmlns: SVGNS, viewBox: `0 0 ${width} ${height}`, width: '100%', role: 'img', class: 'chart' });
@@ -128,9 +128,17 @@
     const defs = svg('defs', {}, root);
     svg('rect', { x: left, y: top, width: width - left - right, height: height - top - bottom }, svg('clipPath', { id: clip }, defs));
     const curves = svg('g', { 'clip-path': `url(#${clip})` }, root);
+    // Each mark's name in the first row where it clears the names there: two rows above the plot,
+    // then two inside its top, on a white halo.
+    const rows = [[], [], [], []];
     (spec.marks || []).filter((mark) => isFinite(mark.x) && mark.x >= x0 && mark.x <= x1).forEach((mark, k) => {
       svg('line', { x1: X(mark.x), x2: X(mark.x), y1: top, y2: height - bottom, stroke: '#999', 'stroke-dasharray': '3 3' }, root);
-      text(root, X(mark.x), top - 4 - (k % 2) * 11, mark.name, { 'text-anchor': 'middle', 'font-size': 10, fill: '#555' });
+      const half = textWidth(mark.name, 10) / 2 + 2;
+      const free = rows.findIndex((row) => row.every((other) => Math.abs(other.x - X(mark.x)) >= half + other.half));
+      const row = free >= 0 ? free : k % 2;
+      rows[row].push({ x: X(mark.x), half });
+      text(root, X(mark.x), row < 2 ? top - 4 - row * 12 : top + 12 * (row - 1), mark.name,
+        { 'text-anchor': 'middle', 'font-size': 10, fill: '#555', stroke: 'white', 'stroke-width': 3, 'paint-order': 'stroke' });
     });
     for (const line of spec.lines) {
       let d = '', pen = false;

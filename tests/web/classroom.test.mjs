@@ -124,6 +124,13 @@ try {
     await page.click('nav button[data-view="edit"]');
     const cut = selects.filter((s) => s.words > s.room);
     const caption = await page.evaluate(() => parseFloat(getComputedStyle(document.querySelector('.tv-phase')).fontSize));
+    // The names of a chart's marks (lift-off, t_1, t_m, t_2, the release) over none of the others.
+    const crowded = await page.evaluate(() => [...document.querySelectorAll('.tv-chart svg')].flatMap((svg) => {
+      const names = [...svg.querySelectorAll('text[font-size="10"]')].map((t) => ({ text: t.textContent, box: t.getBoundingClientRect() }));
+      return names.flatMap((a, i) => names.slice(i + 1).filter((b) => a.box.left < b.box.right - 0.5 && b.box.left < a.box.right - 0.5 &&
+        a.box.top < b.box.bottom - 0.5 && b.box.top < a.box.bottom - 0.5).map((b) => a.text + '/' + b.text));
+    }));
+    check(crowded.length === 0, `${width}x${height}${projector ? ' on a projector' : ''}: the charts' marks named clear of one another${crowded.length ? ' (over: ' + crowded.join(', ') + ')' : ''}`);
     check(sliders.every((s) => s.apart) && cut.length === 0 && caption >= 12,
       `${width}x${height}${projector ? ' on a projector' : ''}: the words of ${sliders.filter((s) => s.apart).length} of ${sliders.length} sliders clear of their sliders; ` +
       `${selects.length - cut.length} of ${selects.length} selects show their words whole${cut.length ? ' (cut: ' + cut.map((s) => s.id).join(', ') + ')' : ''}; the animation's caption ${caption} px`);
