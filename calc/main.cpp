@@ -115,6 +115,10 @@ int run(const Options& options, bool format_given, bool F_given, bool block_give
   std::istream& input = batch == "-" ? std::cin : file;
 
   if (!spreadsheet.empty()) {
+    if (request.extrapolate)
+      throw Error(ErrorKind::usage,
+                  "--extrapolate: the workbook has no extrapolation (its status says where no segment holds the givens, "
+                  "docs/spreadsheet.md); drop it with --spreadsheet");
     if (format_given || !digits_text.empty())
       throw Error(ErrorKind::usage,
                   std::string(format_given ? "--format" : "--digits") + " sets what is printed; --spreadsheet writes an .xlsx workbook, drop it");
@@ -150,8 +154,11 @@ int run(const Options& options, bool format_given, bool F_given, bool block_give
     int failures = 0;
     if (!batch.empty()) {
       UserSites sites{batch == "-" ? std::string("stdin") : std::filesystem::path(batch).filename().string(), {}, {}};
+      // --scale sets the sheet "model scaling" here: the sites are designed full size, as the sheet designs them.
+      DesignRequest full_size = request;
+      full_size.scale = 1;
       failures = run_batch(
-          input, table, request, [&](const std::vector<std::string>& passed) { sites.columns = passed; },
+          input, table, full_size, [&](const std::vector<std::string>& passed) { sites.columns = passed; },
           [&](const BatchRow& row) {
             if (row.error)
               std::cerr << message_start() + ("trebuchet-calc: line " + std::to_string(row.line) + ": " + row.error->message(option_word) + "\n");

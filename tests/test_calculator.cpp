@@ -382,6 +382,19 @@ TEST_CASE("no gap at any seam of either table", "[calculator][range]") {
   CHECK(gaps > 0);  // the probes do reach the gaps this guards
 }
 
+// An ill-conditioned pair past a seam by far more than the constants' rounding can open (issue
+// 49's review: L1 = 6.928 m, M = 20.67 t solves to X = 2.27 left and -0.312 right of X = 0) is
+// no seam gap: refused, as a pair outside the table, not designed at X = -0.312.
+TEST_CASE("a pair far past a seam is refused, not taken as a seam gap", "[calculator][range]") {
+  for (const double M : {20670.0, 12000.0}) {
+    DesignRequest r;
+    r.first = {Quantity::L1, 6.928};
+    r.second = {Quantity::M, M};
+    INFO("M = " << M);
+    CHECK_THROWS_WITH(design_optimal_engine(builtin_scaling_table(), r), Catch::Contains("outside the covered interval"));
+  }
+}
+
 // The issue's example: (321.294 m, 66.484 kg) fell between the two segments of (30 deg, 2/3).
 TEST_CASE("the seam example of issue 11 gives an engine", "[calculator][range]") {
   DesignRequest r;

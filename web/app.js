@@ -115,6 +115,7 @@
     // The whipper: pytrebuchet's start, its long arm 60° up, on the engine's frame (its H, as
     // designed: L1 cos θi, or as a link gives it).
     if (state.machine === 'whipper') Object.assign(built, { theta_i_deg: -150, H: engine.H || engine.L1 * Math.cos(engine.theta_i_deg * Math.PI / 180) });
+    else delete built.H;  // the other machines' pivot stands at L1 cos θi: a whipper's frame is not theirs
     if (state.release_by === 'optimum' || !state.release_value.trim()) return built;
     return Object.assign(built, { [state.release_by]: state.release_value });
   }
@@ -132,8 +133,21 @@
   // ---- URL state ----------------------------------------------------------------------------
   // The edited values a link carries: those that differ from the engine the edit view opened on,
   // which the link's other values make again (its givens, its attested values, the whipper).
+  // The engine a link's edit view would open on, made from the state as it stands (openEditBase),
+  // remembered for the values it is made from: a completion costs many shots.
+  let rebuilt = { key: null, engine: null };
+  function linkBase() {
+    const from = state.edit_from;
+    const key = JSON.stringify(from === 'whipper' ? [from] : from === 'reconstruct' ? [from, state.attested, settings()]
+      : [from, state.first, state.second, state.theta, state.F, ownTable() && state.machine]);
+    if (rebuilt.key !== key) rebuilt = { key, engine: baseFrom(from) };
+    return rebuilt.engine;
+  }
   function editChanges() {
     if (!state.edit || !editBase) return state.edit;
+    // Where the link would open on another engine than this edit's (the machine or its own
+    // table changed since Edit was opened), it carries the edited engine whole.
+    if (JSON.stringify(linkBase()) !== JSON.stringify(editBase)) return state.edit;
     const changed = {};
     for (const [key, value] of Object.entries(state.edit)) if (value !== editBase[key]) changed[key] = value;
     return Object.keys(changed).length ? changed : null;
@@ -166,7 +180,7 @@
     // An edited engine: keys of a shot's design, each a finite number, the engine's own values positive.
     edit: (v) => v === null || (typeof v === 'object' && !Array.isArray(v) && Object.keys(v).length > 0 &&
       Object.entries(v).every(([key, x]) => INPUTS.some((f) => f.key === key && f.operations.includes('shot')) && typeof x === 'number' &&
-        isFinite(x) && (x > 0 || !ENGINE.some((f) => f.key === key)))),
+        isFinite(x) && (x > 0 || (key === 'L3' && x === 0) || !ENGINE.some((f) => f.key === key)))),  // L3 0: the fixed and floating-arm tables' counterweight at the arm's end
     attested: (v) => typeof v === 'object' && v !== null && !Array.isArray(v) &&
       Object.entries(v).every(([key, text]) => ATTESTED.some(([k]) => k === key) && isText(text)),
   };
@@ -249,8 +263,13 @@
     $('whipper-example').hidden = machine !== 'whipper';
     if (machine === 'hinged') { note.textContent = 'The paper\'s machine: the counterweight hangs from the short arm on its own arm L3.'; return; }
     if (machine === 'whipper') {
-      note.textContent = 'There is no table of optimal whippers: the engine shown is the hinged machine\'s, started as a whipper (its long arm 60° up, the counterweight and the ball resting on it). ' +
-        'A whipper needs proportions of its own: where the shot says NOT PHYSICAL, the warnings above the animation say where the model stops holding. Edit L3, L4 and H in view 2, or start from a whipper that throws:';
+      note.textContent = 'There is no table of optimal whippers: ' + (state.view === 'edit' ? 'this engine is shot as a whipper' : 'the engine shown is the hinged machine\'s, started as a whipper') +
+        ' (its long arm 60° up, the counterweight and the ball resting on it). A whipper needs proportions of its own: where the shot says NOT PHYSICAL, the warnings above ' +
+        'the animation say where the model stops holding. Edit L3 and L4 in view 2, or start from a whipper that throws:';
+      return;
+    }
+    if (state.view === 'edit') {
+      note.textContent = `This engine is shot as a ${name}, its proportions as edited. The box designs the ${name}'s own optimal engine in view 1, Design.`;
       return;
     }
     note.textContent = ownTable()
@@ -260,7 +279,12 @@
 
   // ---- the shot -------------------------------------------------------------------------------
   function runShot(engine, title) {
-    const answer = call('shot', Object.assign({ design: asBuilt(engine), series: true }, settings()));
+    // The fixed and floating-arm tables' engines hang the counterweight at the short arm's end (L3 = 0);
+    // the hinged machine and the whipper need an arm for it.
+    const armless = engine.L3 === 0 && ['hinged', 'whipper'].includes(state.machine);
+    const answer = armless ? refused(`This engine has no counterweight arm (L3 = 0): it is the fixed or floating-arm machine's own optimum, whose counterweight sits at the short arm's end. ` +
+      `The ${MACHINE_NAMES[state.machine]} needs an arm: choose that machine again, or design the ${MACHINE_NAMES[state.machine]}'s engine in view 1.`, 'usage', ['L3'])
+      : call('shot', Object.assign({ design: asBuilt(engine), series: true }, settings()));
     if (answer.error) {
       shown = null;
       $('viewer').innerHTML = `<div class="message refused">${escapeHtml(answer.error)}</div>`;
@@ -448,9 +472,9 @@
       if (!extrapolated.error) { note = ' (extrapolated: this capacity lies beyond tab:CPNC)'; optimum = extrapolated; }
     }
     if (optimum.error) { box.innerHTML = `<details class="message"><summary>No optimum in tab:CPNC for this capacity, to compare with.</summary>${escapeHtml(optimum.error)}</details>`; return; }
-    const shot = call('shot', Object.assign({ design: asBuilt(engineOf(optimum)) }, settings()));
+    const shot = call('shot', Object.assign({ design: ownTable() ? Object.assign(engineOf(optimum), { machine: state.machine }) : engineOf(optimum) }, settings()));
     const cell = (a, b, f) => `<td>${f(a)}</td><td>${shot.error ? '—' : f(b)}</td>`;
-    box.innerHTML = `<table class="tv-figures compare"><caption>the edited engine beside the paper's optimum for the same capacity (R and T in vacuum, at the base's level)${note}</caption>
+    box.innerHTML = `<table class="tv-figures compare"><caption>the edited engine beside ${ownTable() ? `the ${MACHINE_NAMES[state.machine]}'s own optimum` : "the paper's optimum (the hinged machine's)"} for the same capacity (R and T in vacuum, at the base's level)${note}</caption>
       <tr><th></th><th>edited</th><th>optimal</th></tr>
       <tr><th>quality Q</th>${cell(answer.Q, shot.Q, (v) => V.significant(100 * v, 4) + ' %')}</tr>
       <tr><th>efficiency ε</th>${cell(answer.eps, shot.eps, (v) => V.significant(100 * v, 4) + ' %')}</tr>
@@ -592,6 +616,8 @@
   }
 
   // ---- the share link as a QR code (qrcode-generator, bundled) ---------------------------------
+  // A link only this computer opens: a file, or a server on this computer's own name.
+  const onlyHere = () => location.protocol === 'file:' || ['localhost', '127.0.0.1', '[::1]'].includes(location.hostname);
   function showQr() {
     saveState();
     const link = location.href;
@@ -608,7 +634,7 @@
       } catch (e) { /* too long at this level */ }
     }
     $('qr-code').innerHTML = svgText || '<p class="message refused">This link is too long for a QR code; copy it instead.</p>';
-    $('qr-file').hidden = location.protocol !== 'file:';
+    $('qr-file').hidden = !onlyHere();
     $('qr-text').textContent = link.length > 160 ? link.slice(0, 160) + '…' : link;
     $('qr-dialog').showModal();
   }
@@ -655,13 +681,16 @@
   }
   // The engine a link's edit view opens on, made again from the link: the design of its givens,
   // the completion of its attested values, or the whipper that throws; the link's changes go over it.
-  function openEditBase() {
-    let base = null;
-    if (state.edit_from === 'whipper') base = Object.assign({}, WHIPPER);
-    else if (state.edit_from === 'reconstruct') {
+  function baseFrom(from) {
+    if (from === 'whipper') return Object.assign({}, WHIPPER);
+    if (from === 'reconstruct') {
       const answer = call('complete', Object.assign({ attested: Object.assign({}, state.attested) }, settings()));
-      if (!answer.error) base = engineOf(answer);
-    } else if (runDesign()) base = engineOf(designed);
+      return answer.error ? null : engineOf(answer);
+    }
+    return runDesign() ? engineOf(designed) : null;
+  }
+  function openEditBase() {
+    const base = baseFrom(state.edit_from);
     editBase = base;
     editFrom = state.edit_from;
     if (base || linkEdit) state.edit = Object.assign({}, base || {}, linkEdit || state.edit || {});
@@ -753,6 +782,11 @@
     projector();
     $('projector').addEventListener('click', () => { state.projector = !state.projector; projector(); update(); });
     $('qr').addEventListener('click', showQr);
+    let drawnWidth = window.innerWidth, resizing = null;
+    window.addEventListener('resize', () => {
+      clearTimeout(resizing);
+      resizing = setTimeout(() => { if (window.innerWidth !== drawnWidth) { drawnWidth = window.innerWidth; update(); } }, 250);
+    });
     $('own-table').addEventListener('change', () => {
       state.own_table = $('own-table').checked;
       if (state.view === 'design') state.edit = null;
@@ -773,7 +807,7 @@
     $('share').addEventListener('click', () => {
       saveState();
       const said = (text) => { $('share').textContent = text; setTimeout(() => { $('share').textContent = 'Copy link'; }, 2500); };
-      const local = location.protocol === 'file:' ? ': it opens only on this computer (see the QR code)' : '';
+      const local = onlyHere() ? ': it opens only on this computer (see the QR code)' : '';
       if (!navigator.clipboard) { said('Copy the address bar: it holds the link' + local); return; }
       navigator.clipboard.writeText(location.href).then(() => said('Link copied' + local), () => said('Copy the address bar: it holds the link' + local));
     });

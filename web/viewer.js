@@ -276,9 +276,10 @@
     const groups = new Map();
     for (const reason of reasons) {
       const key = reason.replace(/-?[0-9][0-9.e+-]*/g, '#');
-      if (groups.has(key)) groups.get(key).count++; else groups.set(key, { reason, count: 1 });
+      if (groups.has(key)) Object.assign(groups.get(key), { count: groups.get(key).count + 1, same: groups.get(key).same && groups.get(key).reason === reason });
+      else groups.set(key, { reason, count: 1, same: true });
     }
-    return [...groups.values()].map((g) => (g.count > 1 ? `${g.count} pins: ` : '') + g.reason);
+    return [...groups.values()].map((g) => (g.count > 1 ? `${g.count} pins${g.same ? '' : ', the first'}: ` : '') + g.reason);
   }
   // A pin refused says why, once for all the pins refused for one reason.
   function pinTolerance(shot) {
@@ -553,7 +554,7 @@
         const at = v.to(stone[0], stone[1]);
         svg('circle', { cx: at[0], cy: at[1], r: flying ? 4 : Math.max(3.5, 0.03 * e.H * v.scale), fill: COLOURS.stone }, g);
       }
-      const banner = modelWarnings.length ? [{ x: width / 2, y: 40, w: textWidth('NOT PHYSICAL', 30), h: 30 }] : [];
+      const banner = modelWarnings.length ? [{ x: width / 2, y: 42, w: 0.8 * 30 * 'NOT PHYSICAL'.length, h: 34 }] : [];  // bold capitals: 0.8 em each
       drawEngine(g, shot, i, v.to, v.scale, { angles: angles.checked && !flying, keepClear: banner, bounds: { width, height } });
       const held = shot.t_counterweight_free;  // the whipper's: its counterweight leaves the arm first
       const first = held === undefined ? 'phase I: the projectile slides in the trough'

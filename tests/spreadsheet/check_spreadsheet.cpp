@@ -535,7 +535,9 @@ void check_user_sites(const fs::path& dir, const std::string& calc) {
        "site,R,m,theta,F\n"
        "Ca,150m,50kg,30,2/3\nMa,480m,50kg,30,2/3\nSa,250m,50kg,30,2/3\nheavy,300m,120kg,30,1\nforty,300m,60kg,40,2/3\n"
        "far,5000m,10kg,30,2/3\nunread,abc,50kg,30,2/3\nno block,200m,50kg,35,2/3\n"},
-      {"sites-lb.csv", "name,Lb,l,F\nVillard,9m,4.5,1\nnot at 2/3,9m,4.5,2/3\nlong,12m,6,2/3\nshort l,9m,2,1\n"}};
+      {"sites-lb.csv", "name,Lb,l,F\nVillard,9m,4.5,1\nnot at 2/3,9m,4.5,2/3\nlong,12m,6,2/3\nshort l,9m,2,1\n"},
+      // An ill-conditioned pair: Ca's engine, and one that solves far to both sides of the seam X = 0.
+      {"sites-l1m.csv", "name,L1,M\nCa,4.13343m,3116.57kg\nfar past the seam,6.928m,20670kg\n"}};
   for (const auto& [name, text] : files) {
     std::ofstream(dir / name) << text;
     const std::string stem = fs::path(name).stem().string();

@@ -224,7 +224,14 @@ std::optional<std::pair<double, double>> l_range_for(const ScalingTable& table, 
 // X_s and the right one's below it. Such a gap is covered: the candidate nearer its own segment
 // is taken (docs/calculator.md, "Seams"). Segments of two different branches do not form a
 // seam; an unlabeled segment continues whichever branch meets it.
+// Only a gap that rounding can open is covered: the constants are printed to 3 significant
+// digits, so two segments' laws may disagree at the seam by up to half a unit of the third, 5e-3
+// in ln Z, which the pair's amplification carries into ln R and ln T, and X (eq:XY_RT, of norm
+// 1) by no more. A pair whose two solutions lie further past the seam than that (an
+// ill-conditioned pair such as L1 and M can put them at X = +0.4 and -1.4) has no design there.
 bool same_family(Branch a, Branch b) { return a == b || a == Branch::none || b == Branch::none; }
+
+constexpr double printed_rounding = 5e-3;  // half a unit of the constants' third significant digit, in ln Z
 
 std::optional<Candidate> seam_candidate(const std::vector<Candidate>& candidates) {
   std::optional<Candidate> best;
@@ -233,6 +240,7 @@ std::optional<Candidate> seam_candidate(const std::vector<Candidate>& candidates
       const Segment &a = *left.segment, &b = *right.segment;
       if (&a == &b || a.X_max != b.X_min || !same_family(a.branch, b.branch)) continue;
       if (!(left.X() > a.X_max && right.X() < b.X_min)) continue;
+      if (left.outside_by() > printed_rounding * left.amplification || right.outside_by() > printed_rounding * right.amplification) continue;
       const Candidate& nearer = left.outside_by() <= right.outside_by() ? left : right;
       if (!best || nearer.outside_by() < best->outside_by()) best = nearer;
     }
