@@ -679,7 +679,7 @@ int run(const fs::path& dir, const std::string& calc) {
             << compared_paper << " numbers of the sheet 'sites' against tab:Alcala_la_Vieja, largest |workbook/paper - 1| per column:";
   for (std::size_t j = 0; j < worst_site.size(); ++j) std::printf(" %s %.2f%%", site_columns[j], 100 * worst_site[j]);
   std::cout << "\n"
-            << compared_sites << " rows of two sites files on the sheet 'your sites' against trebuchet-calc --batch, worst shown value "
+            << compared_sites << " rows of three sites files on the sheet 'your sites' against trebuchet-calc --batch, worst shown value "
             << worst_site_shown << " of half a unit of its last digit";
   std::cout << "\nas shown (negative, zero, large of the numbers per sheet):";
   for (const auto& [sheet, t] : tally)
