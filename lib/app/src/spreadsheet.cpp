@@ -859,14 +859,7 @@ void write_user_sites(lxw_workbook* book, Formats& formats, const ConstantsSheet
   const int passed = static_cast<int>(sites.columns.size());
   const int given_col = passed + 1, theta_col = passed + 3, F_col = passed + 4, branch_col = passed + 5, status_col = passed + 6,
             valid_col = passed + 7, out_col = passed + 8;
-  const auto unit_of = [](Quantity q) -> std::string {
-    switch (quantity_dimension(q)) {
-      case Dimension::length: return "m";
-      case Dimension::mass: return "kg";
-      case Dimension::energy: return "J";
-      default: return "";
-    }
-  };
+  const auto unit_of = [](Quantity q) { return sheet_unit(*find_field(quantity_name(q))); };
   std::vector<std::pair<std::string, std::string>> columns = {{"line", ""}};
   for (const std::string& name : sites.columns) columns.push_back({name, ""});
   columns.insert(columns.end(),
