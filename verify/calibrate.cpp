@@ -40,36 +40,27 @@ int run_calibrate_over_unknowns(const Options& o, const DesignValues& values) {
   return exit_success;
 }
 
-// What a measurement adds to an engine's file, given as flags over it: the parts as built (the
-// pins' radii, the sling), the release, the material (g) and any value given as a range or a
-// spread (an unknown).
-bool adds_to_file(const Options& o, const InputField& field) {
-  return field.group == FieldGroup::part || field.group == FieldGroup::release || field.group == FieldGroup::material ||
-      std::any_of(o.spreads.begin(), o.spreads.end(), [&](const SpreadInput& s) { return s.value == field.member; });
-}
-
 }  // namespace
 
-int run_calibrate(const Options& o) {
+int run_calibrate(const Options& flags) {
+  Options o = flags;  // with a file's settings under the flags'
   if (!o.measured)
     throw Error(ErrorKind::usage, "--measured is missing; give the range the engine threw, with its uncertainty, e.g. --measured 34.4m±1.5m");
   DesignValues values = o.design;
   std::string where;
   if (!o.input.empty()) {
-    DesignValues engine_flags = o.design;
-    for (const InputField& field : input_fields())
-      if (adds_to_file(o, field)) engine_flags.*field.member = std::nullopt;
-    if (has_engine_flags(engine_flags))
-      throw Error(ErrorKind::usage, "the engine comes from '" + o.input + "'; drop the engine flags (--L1 ... --M), or drop the file");
     const DesignInputs in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}"), o.input);
     // One engine: an object, or an array or CSV of one row.
     if (in.rows.size() != 1)
       throw Error(ErrorKind::usage, "calibrate fits one engine; " + source_name(o.input) + " holds " + std::to_string(in.rows.size()));
     if (!in.rows.front().error.empty()) throw Error(ErrorKind::usage, in.where.front() + ": " + in.rows.front().error);
     where = in.where.front();
-    values = read_design_values(in.rows.front().design, where);
-    for (const InputField& field : input_fields())
-      if (adds_to_file(o, field) && o.design.*field.member) values.*field.member = o.design.*field.member;
+    // What the flags give (the parts as built, the release, an unknown's range) over the file's, each change noted.
+    std::vector<std::string> notes;
+    SettingsValues own;
+    values = overlay_flags(read_design_values(in.rows.front().design, where, nullptr, &own), o.design, where, notes);
+    print_notes(notes);
+    o.settings = overlay(own, flags.settings);
   }
   if (!o.spreads.empty()) return run_calibrate_over_unknowns(o, values);
   const EngineRecord record = engine_record(values, where);

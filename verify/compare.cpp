@@ -10,14 +10,15 @@
 
 namespace trebuchet::verify {
 
-int run_compare(const Options& o) {
-  DesignCheck check = design_check(o);
-  check.settings.release_at = release_of(o.design, "");
-  // Machines are compared as contest ranks them and the peers shoot them: for range, unless --quality says otherwise.
-  if (!o.settings.quality && !o.settings.n) check.settings.criterion.release = Release::range;
+int run_compare(const Options& flags) {
   nlohmann::json passed = nlohmann::json::object();
   std::string where;
-  DesignValues values = one_design(o, "compare", where, passed);
+  Options o = flags;  // with the file's settings under the flags'
+  DesignValues values = one_design(flags, "compare", where, passed, o.settings);
+  DesignCheck check = design_check(o);
+  check.settings.release_at = release_of(values, where);
+  // Machines are compared as contest ranks them and the peers shoot them: for range, unless --quality says otherwise.
+  if (!o.settings.quality && !o.settings.n) check.settings.criterion.release = Release::range;
   if (values.machine == MachineKind::whipper)
     throw Error(ErrorKind::usage,
                 "compare starts from an engine of the other machines (theta_i from 0 to 90 deg) and builds the whipper's column from it; "

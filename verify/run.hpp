@@ -25,9 +25,14 @@ bool has_engine_flags(const DesignValues& design);
 /// format and the input file, which no output may replace. shot, compare and sweep start from it.
 DesignCheck design_check(const Options& options);
 
-/// The values of the one design a subcommand takes (compare, sweep): from the file, refusing
-/// engine flags beside it and a file of more designs, or from the flags; `where` names it in
-/// messages, `passed` gets a file's keys that no reader knows.
-DesignValues one_design(const Options& options, const std::string& subcommand, std::string& where, nlohmann::json& passed);
+/// The values of the one design a subcommand takes (compare, sweep): from the file, the flags'
+/// values over its own (each change printed as a note), refusing a file of more designs; or from
+/// the flags. `where` names it in messages, `passed` gets a file's keys that no reader knows,
+/// `settings` the flags' settings over the file's own (a record's assumptions).
+DesignValues one_design(const Options& options, const std::string& subcommand, std::string& where, nlohmann::json& passed, SettingsValues& settings);
+
+/// Prints what a reader did that the user should know (a flag that replaced a file's value) to
+/// stderr, as notes.
+void print_notes(const std::vector<std::string>& notes);
 
 }  // namespace trebuchet::verify

@@ -16,6 +16,7 @@ namespace trebuchet::verify {
 DesignCheck design_check(const Options& o) {
   DesignCheck check;
   check.settings = settings_of(o);
+  check.given = o.settings;  // over a file's own (a record's assumptions)
   check.material = o.design;  // its material rows, over each design's own
   check.csv = o.format == Format::csv;
   check.table = o.format == Format::table;
@@ -46,18 +47,22 @@ int run_many(const Options& o, const DesignInputs& in, const DesignCheck& check)
   const std::size_t count = in.rows.size();
   std::vector<DesignReport> reports(count);
   std::vector<std::optional<Error>> errors(count);
+  std::vector<std::vector<std::string>> notes(count);
   for_each_index(
       count, o.threads,
       [&](std::size_t i) {
         try {
           // Unreadable, or failed upstream (the calculator's "error" column).
           if (!in.rows[i].error.empty()) throw Error(ErrorKind::usage, in.rows[i].error);
-          reports[i] = check_design(read_engine(in.rows[i].design, in.where[i]), check);
+          const EngineRecord record = read_engine(in.rows[i].design, in.where[i], &o.design);
+          notes[i] = record.notes;
+          reports[i] = check_design(record, check);
         } catch (const Error& e) {
           errors[i] = e;
         }
       },
       progress_bar("designs"));
+  for (const std::vector<std::string>& said : notes) print_notes(said);
   std::vector<std::string> header = in.passed_columns;
   for (const std::string& column : verification_csv_header()) header.push_back(column);
   header.push_back("error");
@@ -98,6 +103,10 @@ int run_many(const Options& o, const DesignInputs& in, const DesignCheck& check)
 
 }  // namespace
 
+void print_notes(const std::vector<std::string>& notes) {
+  for (const std::string& note : notes) std::cerr << message_start() << "trebuchet-verify: note: " << with_words(note, option_word) << "\n";
+}
+
 bool has_engine_flags(const DesignValues& d) {
   for (const InputField& field : input_fields())
     if ((field.operations & op_shot) && field.group != FieldGroup::material && field.group != FieldGroup::capacity &&
@@ -106,20 +115,23 @@ bool has_engine_flags(const DesignValues& d) {
   return false;
 }
 
-DesignValues one_design(const Options& o, const std::string& subcommand, std::string& where, nlohmann::json& passed) {
+DesignValues one_design(const Options& o, const std::string& subcommand, std::string& where, nlohmann::json& passed, SettingsValues& settings) {
+  settings = o.settings;
   if (o.input.empty()) {
     if (!has_engine_flags(o.design))
       throw Error(ErrorKind::usage,
                   "no design; give a JSON or CSV file, or flags like --L1 4.13m --L2 0.88m --L3 0.6m --L4 3.55m --M 3.11t --m 50kg --mb 174kg");
     return o.design;
   }
-  if (has_engine_flags(o.design))
-    throw Error(ErrorKind::usage, "the engine comes from '" + o.input + "'; drop the engine flags (--L1 ... --theta), or drop the file");
   const DesignInputs in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}, or CSV with one row"), o.input);
   if (!in.single || in.rows.size() != 1) throw Error(ErrorKind::usage, subcommand + " takes one design; " + source_name(o.input) + " holds more");
   where = in.where.front();
-  DesignValues values = read_design_values(in.rows.front().design, where, &passed);
-  if (o.design.machine) values.machine = o.design.machine;  // --machine builds the file's design as that machine
+  SettingsValues own;
+  std::vector<std::string> notes;
+  // The flags over the file's values (--machine builds the file's design as that machine), and its settings under theirs.
+  const DesignValues values = overlay_flags(read_design_values(in.rows.front().design, where, &passed, &own), o.design, where, notes);
+  print_notes(notes);
+  settings = overlay(own, o.settings);
   return values;
 }
 
@@ -127,13 +139,9 @@ int run_shot(const Options& o, bool fit) {
   const DesignCheck check = shot_check(o, fit);
   DesignInputs in;
   if (!o.input.empty()) {
-    if (has_engine_flags(o.design))
-      throw Error(ErrorKind::usage, "the engine comes from '" + o.input + "'; drop the engine flags (--L1 ... --theta), or drop the file");
+    // The flags' values replace each design's (--machine builds every design of the file as that machine), with a note.
     in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}, an array of them, or CSV with a header (docs/csv.md)"),
                             o.input);
-    if (o.design.machine)  // --machine builds every design of the file as that machine
-      for (DesignRows::Row& row : in.rows)
-        if (row.design.is_object()) row.design[machine_key] = machine_name(*o.design.machine);
   } else if (!has_engine_flags(o.design)) {
     throw Error(
         ErrorKind::usage,
@@ -154,12 +162,8 @@ int run_shot(const Options& o, bool fit) {
                 "--series and --plot name the same path '" + o.plot + "'; give the series a file and the pictures a folder of their own");
   if (!o.input.empty() && !in.single) return run_many(o, in, check);
 
-  nlohmann::json passed = nlohmann::json::object();
-  DesignValues values = o.input.empty() ? o.design : read_design_values(in.rows.front().design, in.where.front(), &passed);
-  if (o.design.R) values.R = o.design.R;
-  if (o.design.T) values.T = o.design.T;
-  EngineRecord record = engine_record(values, o.input.empty() ? "" : in.where.front());
-  record.passed = std::move(passed);
+  const EngineRecord record = o.input.empty() ? engine_record(o.design, "") : read_engine(in.rows.front().design, in.where.front(), &o.design);
+  print_notes(record.notes);
   const DesignReport report = check_design(record, check);
   if (o.format == Format::json)
     std::cout << pretty_json(report.json);

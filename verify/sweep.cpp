@@ -9,12 +9,13 @@
 
 namespace trebuchet::verify {
 
-int run_sweep(const Options& o) {
-  if (!o.what_if) throw Error(ErrorKind::usage, "sweep needs the value to vary and its range: --vary L4=2m..5m");
-  DesignCheck check = design_check(o);
+int run_sweep(const Options& flags) {
+  if (!flags.what_if) throw Error(ErrorKind::usage, "sweep needs the value to vary and its range: --vary L4=2m..5m");
   nlohmann::json passed = nlohmann::json::object();
   std::string where;
-  const DesignValues values = one_design(o, "sweep", where, passed);
+  Options o = flags;  // with the file's settings under the flags'
+  const DesignValues values = one_design(flags, "sweep", where, passed, o.settings);
+  DesignCheck check = design_check(o);
   WhatIf what_if = *o.what_if;
   what_if.points = o.what_if_points;
   // The release is set per point where the sweep varies it (--vary pin_angle=30..40), else once.

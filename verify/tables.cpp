@@ -37,7 +37,7 @@ int run_optimize(const Options& o) {
   const double seconds = seconds_since(start);
   nlohmann::ordered_json all = nlohmann::ordered_json::array();
   for (const Optimum& optimum : optima) {
-    all.push_back(optimum_json(optimum, seconds));
+    all.push_back(optimum_json(optimum, request.settings, seconds));
     if (o.format == Format::table) std::cout << optimum_table(optimum, request.settings, o.units) << "\n";
   }
   if (o.format == Format::json)

@@ -91,57 +91,9 @@ bool flag_of(const json& request, const std::string& key) {
   return request[key].get<bool>();
 }
 
-// A request's value as a flag gives it: a string as it is, a number as the shortest text that
-// reads back the same, true or false.
-std::string value_text(const json& value, const std::string& name) {
-  if (value.is_string()) return value.get<std::string>();
-  if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
-  if (value.is_number_integer()) return value.dump();  // 500000, not 5e+05: a whole number reads back as one
-  if (value.is_number()) {
-    const double x = value.get<double>();
-    return x == std::floor(x) && std::fabs(x) < 1e15 ? std::to_string(static_cast<long long>(x)) : format_number(x);
-  }
-  throw Error(ErrorKind::usage, "{{" + name + "}}: " + brief_json(value) + " must be a number, a text or true or false");
-}
-
-// The settings of a request of `door` (settings.def), each read as its flag is (read_setting),
-// named as the request gives it. "air" may be an object of the air's keys (density,
-// drag_coefficient, projectile_density, wind, drag_in_sling: the rows' aliases "air.density", ...).
-SettingsValues settings_values_of(const json& request, unsigned door) {
-  SettingsValues v;
-  std::vector<Setting> given;
-  const auto read = [&](const SettingRow& row, const json& value, const std::string& name) {
-    if (std::find(given.begin(), given.end(), row.id) != given.end())
-      throw Error(ErrorKind::usage, "{{" + name + "}} is " + row.key + ", given already; keep one");
-    given.push_back(row.id);
-    read_setting(row.id, value_text(value, name), v, "{{" + name + "}}");
-  };
-  for (const auto& [key, value] : request.items()) {
-    const SettingRow* row = find_setting(key, door);
-    if (!row || !read_by_table(row->id)) continue;  // the request's own key, or the material's
-    if (row->id != Setting::air || value.is_boolean()) {
-      read(*row, value, key);
-    } else if (value.is_object()) {
-      v.air = true;
-      std::vector<std::string> known;
-      for (const std::string& name : setting_names(door))
-        if (name.rfind("air.", 0) == 0) known.push_back(name.substr(4));
-      for (const auto& [inner, detail] : value.items()) {
-        const SettingRow* detail_row = find_setting("air." + inner, door);
-        if (!detail_row) {
-          refuse_near_miss(inner, known, "air");
-          throw Error(ErrorKind::usage, "air: '" + inner + "' is no key of the air; use " + join(known, ", "));
-        }
-        read(*detail_row, detail, "air." + inner);
-      }
-    } else if (value != "vacuum") {
-      throw Error(
-          ErrorKind::usage,
-          "{{air}}: " + brief_json(value) + " is no air; give false (vacuum), true (the standard air) or an object like {\"wind\": \"5m/s\"}");
-    }
-  }
-  return v;
-}
+// The settings of a request of `door` (settings.def), each read as its flag is, named as the
+// request gives it.
+SettingsValues settings_values_of(const json& request, unsigned door) { return read_settings(request, door, ""); }
 
 // The shot's settings from a request's keys, checked as the programs check their options.
 ShotSettings settings_of(const json& request, unsigned door) { return shot_settings(settings_values_of(request, door)); }
@@ -295,7 +247,8 @@ ordered_json optimize(const json& request) {
     }
   }
   ordered_json all = ordered_json::array();
-  for (const Optimum& optimum : trebuchet::optimize(optimize_request(v, settings_of(request, req_optimize)))) all.push_back(optimum_json(optimum, 0));
+  const OptimizeRequest r = optimize_request(v, settings_of(request, req_optimize));
+  for (const Optimum& optimum : trebuchet::optimize(r)) all.push_back(optimum_json(optimum, r.settings, 0));
   return all;
 }
 
@@ -306,6 +259,7 @@ ordered_json shot(const json& request) {
   const SettingsValues settings = settings_values_of(request, req_shot);
   DesignCheck check;
   check.settings = shot_settings(settings);
+  check.given = settings;  // over the design's own: a record's assumptions
   check.material = material_of_request(request, op_shot);
   check.tolerance = settings.tol.value_or(check.tolerance);
   check.fit = flag_of(request, "fit");
@@ -328,9 +282,10 @@ ordered_json sweep(const json& request) {
                 "{{points}} = " + format_significant(points, 6) + " must be a whole number from 2 to " + std::to_string(max_what_if_points));
   const WhatIf what_if = parse_what_if(text_of(request["vary"], "vary"), static_cast<int>(points), "vary");
   json passed = json::object();
-  const DesignValues values = read_design_values(request["design"], "design", &passed);
+  SettingsValues own;
+  const DesignValues values = read_design_values(request["design"], "design", &passed, &own);
   DesignCheck check;
-  check.settings = settings_of(request, req_sweep);
+  check.settings = shot_settings(overlay(own, settings_values_of(request, req_sweep)));  // the request's over the design's own
   check.material = material_of_request(request, op_shot);
   if (what_if.field->group != FieldGroup::release) check.settings.release_at = release_of(values, "design");
   return what_if_json(what_if, run_what_if(values, "design", what_if, check, 1), key_word);

@@ -55,7 +55,148 @@ void refuse_near_miss(const std::string& key, const std::vector<std::string>& kn
     throw Error(ErrorKind::usage, (where.empty() ? std::string() : where + ": ") + "unknown key \"" + key + "\"; did you mean \"" + meant + "\"?");
 }
 
-DesignValues read_design_values(const nlohmann::json& object, const std::string& where, nlohmann::json* passed) {
+bool is_record(const nlohmann::json& given) {
+  return given.is_object() && ((given.contains("engine") && given["engine"].is_object()) ||
+                               (given.contains("assumptions") && given["assumptions"].is_object() && given.contains("R_vacuum")));
+}
+
+nlohmann::json design_object(const nlohmann::json& given) {
+  if (!is_record(given)) return given;
+  // The engine: its own object, or (a completion's record) the record's keys, less the shot's
+  // range and energy, which are no claim.
+  nlohmann::json design = given.contains("engine") && given["engine"].is_object() ? given["engine"] : given;
+  if (!given.contains("engine")) design.erase("R"), design.erase("T"), design.erase("assumptions"), design.erase("passed");
+  // "assumptions" holds the settings under their keys, and beside them what is no setting: the
+  // engine's own g, theta_i_deg and F (in "engine" too), the given release's description (the
+  // engine carries its key) and the sphere's diameter, which follows from m and its density.
+  if (given.contains("assumptions") && given["assumptions"].is_object())
+    for (const auto& [key, value] : given["assumptions"].items()) {
+      if (key == "g" || key == "theta_i_deg" || key == "F" || key == "release_at") continue;
+      design[key] = value;
+      if (key == "air" && value.is_object()) design[key].erase("projectile_diameter");
+    }
+  // The capacity it checked in vacuum, with the tolerance; fit's, checked as measured, is no
+  // claim of the engine it wrote.
+  if (given.contains("predicted") && given["predicted"].is_object() && given.value("against", "") == "vacuum") {
+    for (const char* key : {"R", "T"})
+      if (given["predicted"].contains(key)) design[key] = given["predicted"][key];
+    if (given.contains("tolerance")) design["tol"] = given["tolerance"];
+  }
+  if (given.contains("passed") && given["passed"].is_object())
+    for (const auto& [key, value] : given["passed"].items())
+      if (!design.contains(key)) design[key] = value;
+  return design;
+}
+
+SettingsValues read_settings(const nlohmann::json& object, unsigned doors, const std::string& where) {
+  SettingsValues v;
+  std::vector<Setting> given;
+  const auto name_of = [&](const std::string& key) { return where.empty() ? "{{" + key + "}}" : where + "." + key; };
+  const auto text_of = [&](const nlohmann::json& value, const std::string& key) -> std::string {
+    if (value.is_string()) return value.get<std::string>();
+    if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
+    if (value.is_number_integer()) return value.dump();  // 500000, not 5e+05: a whole number reads back as one
+    if (value.is_number()) {
+      const double x = value.get<double>();
+      if (!std::isfinite(x)) throw Error(ErrorKind::bad_number, name_of(key) + ": " + brief_json(value) + " is not a finite number");
+      return x == std::floor(x) && std::fabs(x) < 1e15 ? std::to_string(static_cast<long long>(x)) : format_number(x);
+    }
+    throw Error(ErrorKind::usage, name_of(key) + ": " + brief_json(value) + " must be a number, a text or true or false");
+  };
+  const auto read = [&](const SettingRow& row, const nlohmann::json& value, const std::string& key) {
+    if (std::find(given.begin(), given.end(), row.id) != given.end())
+      throw Error(ErrorKind::usage, name_of(key) + " is " + row.key + ", given already; keep one");
+    given.push_back(row.id);
+    read_setting(row.id, text_of(value, key), v, name_of(key));
+  };
+  if (!object.is_object()) return v;
+  for (const auto& [key, value] : object.items()) {
+    const SettingRow* row = find_setting(key, doors);
+    if (!row || !read_by_table(row->id) || value.is_null()) continue;  // the object's own key, or the material's
+    if (row->id != Setting::air || value.is_boolean()) {
+      read(*row, value, key);
+    } else if (value.is_object()) {
+      v.air = true;
+      std::vector<std::string> known;
+      for (const std::string& name : setting_names(doors))
+        if (name.rfind("air.", 0) == 0) known.push_back(name.substr(4));
+      for (const auto& [inner, detail] : value.items()) {
+        const SettingRow* detail_row = find_setting("air." + inner, doors);
+        if (!detail_row) {
+          refuse_near_miss(inner, known, where.empty() ? "air" : where + ".air");
+          throw Error(ErrorKind::usage, name_of("air") + ": '" + inner + "' is no key of the air; use " + join(known, ", "));
+        }
+        read(*detail_row, detail, "air." + inner);
+      }
+    } else if (value == "vacuum") {
+      read(*row, value, key);
+    } else {
+      throw Error(ErrorKind::usage, name_of("air") + ": " + brief_json(value) +
+                                        " is no air; give false (vacuum), true (the standard air) or an object like {\"wind\": \"5m/s\"}");
+    }
+  }
+  return v;
+}
+
+SettingsValues overlay(SettingsValues base, const SettingsValues& over) {
+  const auto take = [](auto& mine, const auto& theirs) {
+    if (theirs) mine = theirs;
+  };
+  take(base.quality, over.quality), take(base.n, over.n), take(base.tol, over.tol), take(base.stepper, over.stepper);
+  take(base.rtol, over.rtol), take(base.atol, over.atol), take(base.target_level, over.target_level);
+  take(base.range_from_release, over.range_from_release);
+  take(base.samples, over.samples), take(base.seed, over.seed), take(base.claim, over.claim);
+  const bool air_given = over.air || over.vacuum || over.drag_in_sling || over.air_density || over.cd || over.cd_of_reynolds || over.projectile || over.wind;
+  if (air_given) {
+    base.air = over.air, base.vacuum = over.vacuum, base.drag_in_sling = over.drag_in_sling, base.air_density = over.air_density, base.cd = over.cd;
+    base.cd_of_reynolds = over.cd_of_reynolds, base.projectile = over.projectile, base.wind = over.wind;
+  }
+  return base;
+}
+
+DesignValues overlay_flags(DesignValues values, const DesignValues& flags, const std::string& where, std::vector<std::string>& notes) {
+  using V = DesignValues;
+  for (const InputField& field : input_fields()) {
+    const std::optional<double>& flag = flags.*field.member;
+    if (!flag) continue;
+    std::optional<double>& own = values.*field.member;
+    const auto with_unit = [&](double x) {
+      const std::string unit = field.dimension == UnitDimension::angle ? "deg" : field.unit;
+      return format_significant(x, 6) + (unit.empty() ? "" : " " + unit);
+    };
+    if (own && *own != *flag)
+      notes.push_back("{{" + std::string(field.key) + "}} " + with_unit(*flag) + " replaces " + engine_key_name(where, field.key) + " = " +
+                      with_unit(*own));
+    own = flag;
+  }
+  // A value the flag fixes another way goes with it, as a program's flags could not give both.
+  const auto drop = [&](std::optional<double> V::*given, std::initializer_list<std::optional<double> V::*> others) {
+    if (flags.*given)
+      for (const auto other : others)
+        if (!(flags.*other)) values.*other = std::nullopt;
+  };
+  drop(&V::L3, {&V::F});
+  drop(&V::F, {&V::L3});
+  drop(&V::theta_i_deg, {&V::H});
+  drop(&V::L1, {&V::H});
+  drop(&V::D_hinge, {&V::mb, &V::D});
+  drop(&V::D_tip, {&V::mb, &V::D});
+  drop(&V::mb, {&V::D_hinge, &V::D_tip});
+  if (flags.H && !flags.theta_i_deg && values.machine.value_or(MachineKind::hinged) != MachineKind::whipper) values.theta_i_deg = std::nullopt;
+  for (const ReleaseBy by : {ReleaseBy::time, ReleaseBy::velocity_angle, ReleaseBy::pin_angle}) {  // one release: the flags' replaces the file's
+    const InputField& field = release_field(by);
+    if (flags.*field.member)
+      for (const ReleaseBy other : {ReleaseBy::time, ReleaseBy::velocity_angle, ReleaseBy::pin_angle})
+        if (other != by) values.*release_field(other).member = std::nullopt;
+  }
+  if (flags.machine) values.machine = flags.machine;
+  return values;
+}
+
+DesignValues read_design_values(const nlohmann::json& given, const std::string& where, nlohmann::json* passed, SettingsValues* settings) {
+  const bool record = is_record(given);
+  const nlohmann::json unwrapped = record ? design_object(given) : nlohmann::json();
+  const nlohmann::json& object = record ? unwrapped : given;
   if (!object.is_object())
     throw Error(ErrorKind::usage,
                 (where.empty() ? std::string("input") : where) + ": expected a JSON object with keys L1, L2, L3 (or F), L4, M, m, mb, theta_i_deg");
@@ -84,6 +225,12 @@ DesignValues read_design_values(const nlohmann::json& object, const std::string&
   static const std::vector<std::string> known = [] {
     std::vector<std::string> names = input_names(op_shot);
     names.push_back(machine_key);
+    for (const SettingRow& row : setting_rows())  // a shot's settings, read by read_settings
+      if ((row.doors & req_shot) && read_by_table(row.id)) {
+        names.emplace_back(row.key);
+        for (const char* alias : row.aliases)
+          if (std::string_view(alias).find('.') == std::string_view::npos) names.emplace_back(alias);
+      }
     return names;
   }();
   // The programs' JSON keys: their CSV columns that are an input's key with a unit ("L4_m") are
@@ -104,6 +251,7 @@ DesignValues read_design_values(const nlohmann::json& object, const std::string&
     refuse_near_miss(key, known, where);
     if (passed) (*passed)[key] = value;
   }
+  if (settings) *settings = read_settings(object, req_shot, where);
   return v;
 }
 
@@ -306,10 +454,16 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   return in;
 }
 
-EngineRecord read_engine(const nlohmann::json& object, const std::string& where) {
+EngineRecord read_engine(const nlohmann::json& object, const std::string& where, const DesignValues* flags) {
   nlohmann::json passed = nlohmann::json::object();
-  EngineRecord record = engine_record(read_design_values(object, where, &passed), where);
+  SettingsValues settings;
+  std::vector<std::string> notes;
+  DesignValues values = read_design_values(object, where, &passed, &settings);
+  if (flags) values = overlay_flags(values, *flags, where, notes);
+  EngineRecord record = engine_record(values, where);
   record.passed = std::move(passed);
+  record.settings = settings;
+  record.notes = std::move(notes);
   return record;
 }
 

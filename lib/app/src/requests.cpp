@@ -9,39 +9,6 @@
 
 namespace trebuchet {
 
-ShotSettings shot_settings(const SettingsValues& v) {
-  ShotSettings settings;
-  settings.criterion.release = v.quality.value_or(settings.criterion.release);
-  settings.criterion.n = v.n.value_or(settings.criterion.n);
-  settings.integrator.stepper = v.stepper.value_or(settings.integrator.stepper);
-  settings.integrator.rtol = v.rtol.value_or(settings.integrator.rtol);
-  settings.integrator.atol = v.atol.value_or(settings.integrator.atol);
-  settings.range_from_release = v.range_from_release.value_or(false);
-  settings.target_level = v.target_level.value_or(0);
-  const bool air_details = v.air_density || v.cd || v.cd_of_reynolds || v.projectile || v.wind;
-  if (air_details && !v.air)
-    throw Error(ErrorKind::usage,
-                "{{air_density}}, {{cd}}, {{projectile}} and {{wind}} describe the air; add {{air}} to fly through it (vacuum is the default)");
-  if (v.drag_in_sling && !v.air)
-    throw Error(ErrorKind::usage, "{{drag_in_sling}} lets the air act before the release; add {{air}} (vacuum is the default)");
-  settings.drag_in_sling = v.drag_in_sling;
-  if (v.air) {
-    Air air;
-    if (v.air_density && !(*v.air_density > 0))
-      throw Error(ErrorKind::bad_number, "{{air_density}}: " + format_significant(*v.air_density, 6) + " kg/m3 must be positive");
-    air.density = v.air_density.value_or(air.density);
-    if (v.cd_of_reynolds)
-      air.drag_coefficient.reset();
-    else if (v.cd)
-      air.drag_coefficient = v.cd;
-    air.projectile_density = v.projectile.value_or(air.projectile_density);
-    air.wind = v.wind.value_or(0);
-    settings.air = air;
-  }
-  check_shot_settings(settings);
-  return settings;
-}
-
 CompletionRequest completion_request(const DesignValues& v, const ShotSettings& settings) {
   CompletionRequest request;
   Attested& a = request.attested;

@@ -5,7 +5,7 @@
 
 namespace trebuchet {
 
-nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s) {
+nlohmann::ordered_json optimum_json(const Optimum& optimum, const ShotSettings& settings, double wall_time_s) {
   nlohmann::ordered_json out;
   write_engine(out, optimum.fit.engine);
   out["start"] = optimum.start;
@@ -15,6 +15,7 @@ nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s) 
   if (!optimum.note.empty()) out["note"] = optimum.note;
   const nlohmann::ordered_json shot = verification_json(optimum.fit.verification);
   for (const auto& [key, value] : shot.items()) out[key] = value;
+  out["assumptions"] = assumptions_json(optimum.fit.engine, settings);
   out[version_key] = project_version();
   return out;
 }

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
 #include "trebuchet/app/names.hpp"
 #include "trebuchet/app/request.hpp"
 #include "trebuchet/app/verifier.hpp"
@@ -49,6 +50,44 @@ std::vector<std::string> setting_names(unsigned doors) {
     names.insert(names.end(), row.aliases.begin(), row.aliases.end());
   }
   return names;
+}
+
+ShotSettings shot_settings(const SettingsValues& v) {
+  ShotSettings settings;
+  settings.criterion.release = v.quality.value_or(settings.criterion.release);
+  settings.criterion.n = v.n.value_or(settings.criterion.n);
+  settings.integrator.stepper = v.stepper.value_or(settings.integrator.stepper);
+  settings.integrator.rtol = v.rtol.value_or(settings.integrator.rtol);
+  settings.integrator.atol = v.atol.value_or(settings.integrator.atol);
+  settings.range_from_release = v.range_from_release.value_or(false);
+  settings.target_level = v.target_level.value_or(0);
+  const bool air_details = v.air_density || v.cd || v.cd_of_reynolds || v.projectile || v.wind;
+  if (air_details && !v.air)
+    throw Error(ErrorKind::usage,
+                "{{air_density}}, {{cd}}, {{projectile}} and {{wind}} describe the air; add {{air}} to fly through it (vacuum is the default)");
+  if (v.drag_in_sling && !v.air)
+    throw Error(ErrorKind::usage, "{{drag_in_sling}} lets the air act before the release; add {{air}} (vacuum is the default)");
+  settings.drag_in_sling = v.drag_in_sling;
+  if (v.air) {
+    Air air;
+    if (v.air_density && !(*v.air_density > 0))
+      throw Error(ErrorKind::bad_number, "{{air_density}}: " + format_significant(*v.air_density, 6) + " kg/m3 must be positive");
+    air.density = v.air_density.value_or(air.density);
+    if (v.cd_of_reynolds)
+      air.drag_coefficient.reset();
+    else if (v.cd)
+      air.drag_coefficient = v.cd;
+    air.projectile_density = v.projectile.value_or(air.projectile_density);
+    air.wind = v.wind.value_or(0);
+    settings.air = air;
+  }
+  check_shot_settings(settings);
+  return settings;
+}
+
+bool gives_any(const SettingsValues& v) {
+  return v.quality || v.n || v.tol || v.stepper || v.rtol || v.atol || v.target_level || v.range_from_release || v.air || v.vacuum || v.drag_in_sling ||
+         v.air_density || v.cd || v.cd_of_reynolds || v.projectile || v.wind || v.samples || v.seed || v.claim;
 }
 
 std::optional<double> SettingsValues::*number_slot(Setting id) {
@@ -104,7 +143,11 @@ const std::map<Setting, Reader>& readers() {
       {Setting::atol, [](V& v, T text, T name) { v.atol = parse_positive(text, D::dimensionless, name); }},
       {Setting::target_level, [](V& v, T text, T name) { v.target_level = parse_value(text, D::length, name); }},
       {Setting::range_from, [](V& v, T text, T name) { v.range_from_release = parse_range_from(text, name); }},
-      {Setting::air, [](V& v, T text, T name) { v.air = switch_value(text, name); }},
+      {Setting::air,
+       [](V& v, T text, T name) {
+         v.air = text != "vacuum" && switch_value(text, name);
+         v.vacuum = !v.air;
+       }},
       {Setting::drag_in_sling, [](V& v, T text, T name) { v.drag_in_sling = switch_value(text, name); }},
       {Setting::air_density, [](V& v, T text, T name) { v.air_density = parse_positive(text, D::density, name); }},
       {Setting::cd,

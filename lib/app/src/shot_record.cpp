@@ -33,6 +33,11 @@ nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings
     out["release_at"] = {{"by", release_by_name(at->by)}, {"value", at->value}, {"unit", at->by == ReleaseBy::time ? "s" : "deg"}};
   out["n"] = settings.criterion.n;
   out["target_level"] = settings.target_level;
+  // The integrator, where it is not the default, so that the record reads back as the same shot.
+  const IntegratorSettings standard;
+  if (settings.integrator.stepper != standard.stepper) out["stepper"] = stepper_name(settings.integrator.stepper);
+  if (settings.integrator.rtol != standard.rtol) out["rtol"] = settings.integrator.rtol;
+  if (settings.integrator.atol != standard.atol) out["atol"] = settings.integrator.atol;
   return out;
 }
 

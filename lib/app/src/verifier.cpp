@@ -62,11 +62,18 @@ DesignInputs read_design_inputs(const std::string& text, const std::string& path
   nlohmann::json json = parse_json(text, source_name(path), expected);
   if (!json.is_object() && !json.is_array())
     throw Error(ErrorKind::usage, source_name(path) + " holds " + brief_json(json) + ", not a design; give " + expected);
+  // A sweep's record reads back as its points, each a shot's record.
+  const bool sweep = json.is_object() && json.contains("vary") && json.contains("points") && json["points"].is_array();
+  if (sweep) json = std::move(json["points"]);
   in.single = json.is_object();
   // Moved, not copied: a copy of deeply nested input would recurse as deep as it nests.
   for (std::size_t i = 0; i < (in.single ? 1 : json.size()); ++i) {
     in.rows.push_back({0, in.single ? std::move(json) : std::move(json[i]), {}, ""});
-    in.where.push_back(in.single ? "design" : "design[" + std::to_string(i) + "]");
+    in.where.push_back(in.single ? "design" : (sweep ? "point[" : "design[") + std::to_string(i) + "]");
+    // A record of a failure (a sweep's point, a machine compare refused) fails again, as written.
+    const nlohmann::json& row = in.rows.back().design;
+    if (row.is_object() && row.contains("error") && row["error"].is_string() && !row.contains("engine") && !row.contains("L1"))
+      in.rows.back().error = in.where.back() + " failed where it was written: " + row["error"].get<std::string>();
   }
   return in;
 }
@@ -89,6 +96,14 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   engine.material = material_of(check.material, engine.material);
   if (record.mb_from_D) engine.mb = wood_beam_mass(engine);  // in the wood of the run
   ShotSettings settings = check.settings;  // the run's release over the design's own
+  double tolerance = check.tolerance;
+  if (check.given && gives_any(record.settings)) {  // the design's settings (a record's), under the caller's
+    ShotSettings own = shot_settings(overlay(record.settings, *check.given));
+    own.release_at = settings.release_at;
+    own.loads = settings.loads;
+    settings = own;
+    if (record.settings.tol && !check.given->tol) tolerance = *record.settings.tol;
+  }
   if (!settings.release_at) settings.release_at = record.release_at;
   DesignReport out;
   nlohmann::ordered_json simulated;
@@ -134,7 +149,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   // it measures); a capacity to check is the calculator's, in vacuum. In vacuum to level 0 from
   // the pivot the two are the same.
   const bool measured = check.fit && (settings.air || settings.range_from_release || settings.target_level != 0);
-  if (record.capacity) capacity = check_capacity(v, *record.capacity, check.tolerance, measured);
+  if (record.capacity) capacity = check_capacity(v, *record.capacity, tolerance, measured);
   out.json = verification_json(v, capacity);
   if (check.table) out.table = fitted_table + verification_table(engine, settings, v, capacity, check.units);
   if (check.csv) out.csv = verification_csv_row(engine, settings, v, capacity, check.csv_digits);

@@ -204,6 +204,9 @@ std::vector<Optimum> optimize(const OptimizeRequest& request) {
   for (const Start& start : starts_for(request)) {
     try {
       optima.push_back(search_from(request, start));
+      // Its figures are those of the engine it gives, shot in SI: the search's own shot, of the
+      // scaled design, differs in the last digits, and the record must read back as its shot.
+      optima.back().fit.verification = verify_engine(optima.back().fit.engine, request.settings);
     } catch (const Error& e) {
       reasons += (reasons.empty() ? "" : "; ") + e.named_message();
       all_numerical = all_numerical && e.kind() == ErrorKind::numerical;

@@ -13,6 +13,7 @@
 #include "trebuchet/engine.hpp"
 #include "trebuchet/verification.hpp"
 #include "trebuchet/app/fields.hpp"
+#include "trebuchet/app/settings.hpp"
 #include "trebuchet/app/units.hpp"
 
 namespace trebuchet {
@@ -24,7 +25,35 @@ struct EngineRecord {
   bool mb_from_D = false;  ///< mb was not given: it follows from D and the wood (eq:BeamMass)
   std::optional<SetRelease> release_at;  ///< the release its builder set (release_time, release_angle_deg or pin_angle_deg)
   nlohmann::json passed = nlohmann::json::object();  ///< the keys no reader knows, as given: an answer names them
+  SettingsValues settings;  ///< the settings the design gives (a record's "assumptions"), under the flags' and a request's own
+  std::vector<std::string> notes;  ///< what the reader did that the answer should say: a flag that replaced the design's value
 };
+
+/// Whether a JSON object is a record the programs wrote of a shot: one with an "engine" object
+/// (a shot's, fit's, optimum's, contest's, calibration's or a sweep's point), or one with its
+/// "assumptions" beside a shot's keys (a completion's).
+bool is_record(const nlohmann::json& given);
+
+/// The design a JSON object gives: the object itself, or, for a record (is_record), its engine with the settings it was shot with (its "assumptions",
+/// under the settings' keys), the capacity it checked ("predicted" against vacuum, and its
+/// tolerance) and the keys it passed through. So every record reads back as the same shot.
+nlohmann::json design_object(const nlohmann::json& given);
+
+/// The settings a JSON object gives under the keys of the table of settings that a request of
+/// `doors` takes (settings.def), each read as its flag is (read_setting); "air" may be false,
+/// true, "vacuum" or an object of the air's keys (density, drag_coefficient, ...). Messages name
+/// a key "{{key}}" (where empty) or "where.key". Other keys are passed over.
+SettingsValues read_settings(const nlohmann::json& object, unsigned doors, const std::string& where);
+
+/// `over` laid over `base`: each setting that `over` gives replaces `base`'s; the air's details
+/// go with the air (an `over` that gives the air or one of its details replaces all of them).
+SettingsValues overlay(SettingsValues base, const SettingsValues& over);
+
+/// `flags` laid over a file's `values`: each value the flags give replaces the file's, and
+/// `notes` says so where it differs ("--L4 = 5 m replaces design.L4 = 4 m"). A value that the
+/// flag's fixes another way goes with it: --L3 drops the file's F, --F its L3, --theta a pivot
+/// height H the others' record carries, a taper the file's mb and D.
+DesignValues overlay_flags(DesignValues values, const DesignValues& flags, const std::string& where, std::vector<std::string>& notes);
 
 /// The parts as built that do not depend on the engine's other values (complete's, CompletionRequest::parts):
 /// the pins' friction, the counterweight's inertia, the trough's friction and the rope, from the values given.
@@ -39,7 +68,10 @@ std::optional<double> read_value(const nlohmann::json& object, const std::string
 /// its key or an alias (input_fields). A key that the programs write passes silently; a key near
 /// an input's name is refused with that name (near_miss); any other key is put in `passed`.
 /// Throws Error(bad_number | unknown_unit | usage) naming the key.
-DesignValues read_design_values(const nlohmann::json& object, const std::string& where, nlohmann::json* passed = nullptr);
+/// A record the programs wrote reads as its design_object; the settings it gives go to `settings`
+/// when not null (else they are passed over).
+DesignValues read_design_values(const nlohmann::json& object, const std::string& where, nlohmann::json* passed = nullptr,
+                                SettingsValues* settings = nullptr);
 
 /// Refuses `key`, which no reader of `known` takes, when it is near one of them:
 /// 'where: unknown key "theta_i"; did you mean "theta_i_deg"?' (Error(usage)).
@@ -61,7 +93,8 @@ EngineRecord engine_record(const DesignValues& values, const std::string& where)
 /// reads back. `where` names the object in messages ("design[2]"; empty: the command line,
 /// whose keys are named as flags, "--L1"). Throws Error(bad_number | unknown_unit | usage)
 /// naming the key and the fix, and checks the engine (check_engine).
-EngineRecord read_engine(const nlohmann::json& object, const std::string& where);
+/// With `flags`, the flags' values are laid over the design's (overlay_flags), named in the notes.
+EngineRecord read_engine(const nlohmann::json& object, const std::string& where, const DesignValues* flags = nullptr);
 
 /// Designs read from CSV (docs/csv.md), such as the calculator's batch output: one design a row.
 struct DesignRows {

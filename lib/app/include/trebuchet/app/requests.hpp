@@ -19,11 +19,6 @@
 
 namespace trebuchet {
 
-/// The settings of a shot from their values, checked (check_shot_settings): details of the air
-/// without the air are refused, as is drag in the sling. Messages name {{air_density}}, {{cd}},
-/// {{projectile}}, {{wind}} and {{drag_in_sling}}.
-ShotSettings shot_settings(const SettingsValues& values);
-
 /// complete's request: the attested values (engine, stand-ins, parts and material), under `settings`.
 CompletionRequest completion_request(const DesignValues& attested, const ShotSettings& settings);
 

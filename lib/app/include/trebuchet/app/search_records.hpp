@@ -15,8 +15,9 @@
 namespace trebuchet {
 
 /// An optimum: the engine's keys, start, simulations, iterations, wall_time_s (the whole
-/// search's, given by the caller) and the verification's keys of its shot.
-nlohmann::ordered_json optimum_json(const Optimum& optimum, double wall_time_s);
+/// search's, given by the caller), the verification's keys of its shot and the `settings` it was
+/// shot with ("assumptions"), so that it reads back as the same shot.
+nlohmann::ordered_json optimum_json(const Optimum& optimum, const ShotSettings& settings, double wall_time_s);
 
 /// A completed engine: the engine's keys, attested, implied and chosen (names), simulations,
 /// the shot's keys, the assumptions, and the calculator's optimum for the same capacity

@@ -14,6 +14,7 @@
 
 #include "trebuchet/integrator.hpp"
 #include "trebuchet/quality.hpp"
+#include "trebuchet/verification.hpp"
 #include "trebuchet/app/units.hpp"
 
 namespace trebuchet {
@@ -92,6 +93,7 @@ struct SettingsValues {
   std::optional<double> target_level;  ///< [m]
   std::optional<bool> range_from_release;  ///< Denny's range, from the release point
   bool air = false;
+  bool vacuum = false;  ///< the air given as off (false, "vacuum"): so it replaces a design's own air (overlay)
   bool drag_in_sling = false;  ///< the air acts before the release too
   std::optional<double> air_density;  ///< [kg/m^3]
   std::optional<double> cd;  ///< the sphere's drag coefficient
@@ -102,6 +104,14 @@ struct SettingsValues {
   std::optional<std::uint64_t> seed;
   std::optional<double> claim;  ///< a claimed range [m]
 };
+
+/// The settings of a shot from their values, checked (check_shot_settings): details of the air
+/// without the air are refused, as is drag in the sling. Messages name {{air_density}}, {{cd}},
+/// {{projectile}}, {{wind}} and {{drag_in_sling}}.
+ShotSettings shot_settings(const SettingsValues& values);
+
+/// Whether `values` gives any setting.
+bool gives_any(const SettingsValues& values);
 
 /// The member of SettingsValues that a setting given as a number sets (target_level, wind,
 /// air_density, cd: a Monte Carlo run may spread them); nullptr for the others.

@@ -41,6 +41,10 @@ void check_fixed_beam_ratio(double l, const std::string& name);
 /// How each design of a run is checked and reported.
 struct DesignCheck {
   ShotSettings settings;
+  /// The settings as the caller was given them (its flags, a request's keys): a design's own
+  /// (EngineRecord::settings, a record's assumptions) are laid under them. Empty: the design's
+  /// own are not read.
+  std::optional<SettingsValues> given;
   DesignValues material;  ///< its material rows (the flags', a request's top-level g, ...) over each design's own
   double tolerance = 0.02;  ///< relative, on a predicted R and T
   bool fit = false;  ///< fit the design's shape to its capacity first
