@@ -56,8 +56,9 @@ void refuse_near_miss(const std::string& key, const std::vector<std::string>& kn
 }
 
 bool is_record(const nlohmann::json& given) {
-  return given.is_object() && ((given.contains("engine") && given["engine"].is_object()) ||
-                               (given.contains("assumptions") && given["assumptions"].is_object() && given.contains("R_vacuum")));
+  return given.is_object() &&
+      ((given.contains("engine") && given["engine"].is_object()) ||
+       (given.contains("assumptions") && given["assumptions"].is_object() && given.contains("R_vacuum")));
 }
 
 nlohmann::json design_object(const nlohmann::json& given) {
@@ -131,8 +132,9 @@ SettingsValues read_settings(const nlohmann::json& object, unsigned doors, const
     } else if (value == "vacuum") {
       read(*row, value, key);
     } else {
-      throw Error(ErrorKind::usage, name_of("air") + ": " + brief_json(value) +
-                                        " is no air; give false (vacuum), true (the standard air) or an object like {\"wind\": \"5m/s\"}");
+      throw Error(ErrorKind::usage,
+                  name_of("air") + ": " + brief_json(value) +
+                      " is no air; give false (vacuum), true (the standard air) or an object like {\"wind\": \"5m/s\"}");
     }
   }
   return v;
@@ -146,7 +148,8 @@ SettingsValues overlay(SettingsValues base, const SettingsValues& over) {
   take(base.rtol, over.rtol), take(base.atol, over.atol), take(base.target_level, over.target_level);
   take(base.range_from_release, over.range_from_release);
   take(base.samples, over.samples), take(base.seed, over.seed), take(base.claim, over.claim);
-  const bool air_given = over.air || over.vacuum || over.drag_in_sling || over.air_density || over.cd || over.cd_of_reynolds || over.projectile || over.wind;
+  const bool air_given = over.air || over.vacuum || over.drag_in_sling || over.air_density || over.cd || over.cd_of_reynolds || over.projectile ||
+      over.wind;
   if (air_given) {
     base.air = over.air, base.vacuum = over.vacuum, base.drag_in_sling = over.drag_in_sling, base.air_density = over.air_density, base.cd = over.cd;
     base.cd_of_reynolds = over.cd_of_reynolds, base.projectile = over.projectile, base.wind = over.wind;

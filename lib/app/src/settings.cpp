@@ -86,8 +86,8 @@ ShotSettings shot_settings(const SettingsValues& v) {
 }
 
 bool gives_any(const SettingsValues& v) {
-  return v.quality || v.n || v.tol || v.stepper || v.rtol || v.atol || v.target_level || v.range_from_release || v.air || v.vacuum || v.drag_in_sling ||
-         v.air_density || v.cd || v.cd_of_reynolds || v.projectile || v.wind || v.samples || v.seed || v.claim;
+  return v.quality || v.n || v.tol || v.stepper || v.rtol || v.atol || v.target_level || v.range_from_release || v.air || v.vacuum ||
+      v.drag_in_sling || v.air_density || v.cd || v.cd_of_reynolds || v.projectile || v.wind || v.samples || v.seed || v.claim;
 }
 
 std::optional<double> SettingsValues::*number_slot(Setting id) {
