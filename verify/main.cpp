@@ -11,6 +11,7 @@
 
 #include "program.hpp"
 #include "run.hpp"
+#include "trebuchet/app/names.hpp"
 
 namespace {
 
@@ -69,6 +70,8 @@ int main(int argc, char** argv) {
                     "--claim and --draws report a Monte Carlo run; give a value as a range (2.5t..3.5t) or a spread "
                     "(3.5m±0.2m), or drop them");
     }
+    if (options.all_machines && !sub.contest->parsed())
+      throw Error(ErrorKind::usage, "--machine all is contest's (each machine's best side by side); name one machine: " + machine_names());
     if (sub.shot->parsed()) return options.spreads.empty() ? run_shot(options, false) : run_monte_carlo(options, false);
     if (sub.fit->parsed()) return run_shot(options, true);
     if (sub.optimize->parsed()) return run_optimize(options);

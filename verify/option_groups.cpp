@@ -104,7 +104,12 @@ void program_setting(CLI::App* app, Options& o, const SettingRow& row, Door door
     case Setting::draws: app->add_option(flag, o.draws, help); return;
     case Setting::machine:
       parsed_option(
-          app, flag, [&o](const std::string& text) { o.design.machine = parse_machine(text, "--machine"); }, help);
+          app, flag,
+          [&o](const std::string& text) {
+            o.all_machines = text == "all";  // contest's: each machine's best
+            if (!o.all_machines) o.design.machine = parse_machine(text, "--machine");
+          },
+          help);
       return;
     case Setting::measured:
       parsed_option(

@@ -49,6 +49,7 @@ struct Options {
   ContestLimits limits;  ///< contest: --max-width ... --max-acceleration
   std::optional<double> beam_per_m;  ///< contest: the beam's mass per metre [kg/m]
   bool efficiency = false;  ///< contest: --objective eps
+  bool all_machines = false;  ///< contest: --machine all, each machine's best side by side
   int pareto = 0;  ///< contest: points of the Pareto front; 0: none
   double min_clearance = 0;  ///< contest: of the counterweight above the ground [m]
   std::optional<WhatIf> what_if;  ///< sweep: the value varied and its range (--vary)

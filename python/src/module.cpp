@@ -25,6 +25,8 @@ PYBIND11_MODULE(_trebuchet, module) {
   bind("optimize", trebuchet::api::optimize, "the ab-initio optimum");
   bind("sweep", trebuchet::api::sweep, "a what-if sweep: one value of a design over a range");
   bind("complete", trebuchet::api::complete, "the completion of an attested engine");
+  bind("compare", trebuchet::api::compare, "one engine built as each machine, side by side");
+  bind("contest", trebuchet::api::contest, "the best engine of a machine within a contest's limits");
   bind("monte_carlo", trebuchet::api::monte_carlo, "a Monte Carlo run");
   bind("fields", trebuchet::api::fields, "the table of inputs: every key with its aliases, dimension, unit, default and help");
 }

@@ -19,8 +19,8 @@ import numpy as np
 
 from . import _trebuchet
 
-__all__ = ["TrebuchetError", "TrebuchetWarning", "design", "shot", "fit", "optimize", "sweep", "complete", "monte_carlo", "fields", "to_frame", "__version__",
-           "__commit__"]
+__all__ = ["TrebuchetError", "TrebuchetWarning", "design", "shot", "fit", "optimize", "sweep", "complete", "compare", "contest", "monte_carlo", "fields",
+           "settings", "to_frame", "__version__", "__commit__"]
 
 __version__ = _trebuchet.version
 """The project's version, PEP 440: what a notebook records beside the numbers it got."""
@@ -43,18 +43,29 @@ class TrebuchetWarning(UserWarning):
     also kept in the record's "warnings"."""
 
 
-def _plain(value, path):
-    """A request's value as JSON takes it: numbers (Python's, NumPy's scalars), texts with units,
-    True/False, and dicts and lists of them. Any other type is a TypeError naming its key."""
+_MAX_DEPTH = 64  # a request is a few levels deep; the library's JSON reader refuses much less than Python's recursion limit
+
+
+def _plain(value, path, depth=0):
+    """A request's value as JSON takes it: finite numbers (Python's, NumPy's scalars), texts with
+    units, True/False, and dicts and lists of them. Any other type is a TypeError naming its key;
+    NaN or infinity, or a structure that nests too deep or holds itself, a TrebuchetError naming it."""
+    if depth > _MAX_DEPTH:
+        raise TrebuchetError(f"{path or 'the request'} nests lists or dicts more than {_MAX_DEPTH} levels deep (or holds itself); "
+                             "give a design's keys with values", "usage", [path.split(".")[0].split("[")[0]] if path else [])
     if isinstance(value, dict):
-        return {key: _plain(v, f"{path}.{key}" if path else str(key)) for key, v in value.items()}
+        return {key: _plain(v, f"{path}.{key}" if path else str(key), depth + 1) for key, v in value.items()}
     if isinstance(value, (list, tuple)):
-        return [_plain(v, f"{path}[{i}]") for i, v in enumerate(value)]
+        return [_plain(v, f"{path}[{i}]", depth + 1) for i, v in enumerate(value)]
     if value is None or isinstance(value, (str, bool)):
         return value
     if isinstance(value, np.generic) and value.shape == ():
         value = value.item()
     if isinstance(value, numbers.Real):
+        if not isinstance(value, (int, bool)) and not np.isfinite(float(value)):
+            key = path.rsplit(".", 1)[-1] if path else ""
+            raise TrebuchetError(f"{path or 'the request'}: {value!r} is not a finite number; give a finite number", "bad_number",
+                                 [key] if key else [])
         return float(value) if not isinstance(value, (int, bool)) else value
     raise TypeError(f"{path or 'the request'}: a {type(value).__name__} is not a value; give a number, or a text with its unit such as \"3.1t\"")
 
@@ -69,14 +80,7 @@ def _warn(record):
 
 def _call(function, request):
     request = _plain(request, "")
-    try:
-        text = json.dumps(request, allow_nan=False)
-    except ValueError as e:  # NaN or infinity, which JSON has not
-        raise TrebuchetError(f"a value is not a finite number ({e}); give finite numbers", "bad_number", []) from None
-    except TypeError as e:
-        raise TrebuchetError(f"a value is neither a number nor a text ({e})", "usage", []) from None
-    except RecursionError:  # the library refuses such depth anyway (its JSON reader's limit)
-        raise TrebuchetError("the request nests lists or dicts too deeply to be a request; give a design's keys with values", "usage", []) from None
+    text = json.dumps(request, allow_nan=False)
     answer = json.loads(function(text))
     if isinstance(answer, dict) and set(answer) == {"error", "kind", "names"}:
         raise TrebuchetError(answer["error"], answer["kind"], answer["names"])
@@ -98,14 +102,37 @@ def design(**givens):
     return _call(_trebuchet.design, givens)
 
 
+# The keys of the engine that a keyword argument may give beside the design: the release its
+# builder set, and the machine (fields(): group "release", and "machine").
+_BESIDE_THE_DESIGN = ("release_time", "release_angle_deg", "release_angle", "pin_angle_deg", "pin_angle", "machine")
+
+
+def _with_engine_keys(design, settings):
+    """The design with the release and the machine given as keyword arguments, over its own."""
+    beside = {key: settings.pop(key) for key in _BESIDE_THE_DESIGN if key in settings}
+    if beside and not isinstance(design, dict):
+        raise TypeError("design: give the engine as a dict of its keys")
+    return dict(design, **beside) if beside else design
+
+
 def shot(design, *, series=False, **settings):
-    """One shot of an engine (a dict of the programs' keys). Settings, each under its flag's word
-    (settings(), docs/inputs.md): quality ("Q", "eps", "range"; or release=), n, tol (or
-    tolerance=), stepper, rtol, atol, target_level, range_from ("pivot", "release"), air (False,
-    True or a dict of density, drag_coefficient, projectile_density, wind, drag_in_sling), or the
-    air's details flat (air_density, cd, projectile, wind, drag_in_sling), and the material (g,
-    youngs_modulus, wood_density, modulus_of_rupture) over the design's own.
+    """One shot of an engine: a dict of the programs' keys (fields(), docs/inputs.md), or any
+    record the programs or this module wrote (a shot, fit, optimum, completion, contest, sweep
+    point), which is shot again with its own settings.
+
+    The release: at the optimum of `quality` unless the engine sets one, by release_time [s],
+    release_angle_deg (the projectile's velocity angle, VirtualTrebuchet's) or pin_angle_deg (the
+    pin a builder bends), each in the design or as a keyword here. The machine: machine="hinged"
+    (the default), "fixed", "floating-arm" or "whipper" (docs/machines.md), likewise.
+
+    Settings, each under its flag's word (settings(), docs/inputs.md), over a record's own:
+    quality ("Q", "eps", "range"; or release=), n, tol (or tolerance=), stepper, rtol, atol,
+    target_level, range_from ("pivot", "release"), air (False, True or a dict of density,
+    drag_coefficient, projectile_density, wind, drag_in_sling), or the air's details flat
+    (air_density, cd, projectile, wind, drag_in_sling), and the material (g, youngs_modulus,
+    wood_density, modulus_of_rupture) over the design's own.
     With series=True the answer's "series" holds the motion, its frames as arrays."""
+    design = _with_engine_keys(design, settings)
     request = dict(settings, design=design)
     if series:
         request["series"] = True
@@ -118,8 +145,9 @@ def shot(design, *, series=False, **settings):
 
 
 def fit(design, R, T, **settings):
-    """The design's shape (l, l4, mu_b, theta_i, F) fitted in mu and size to the capacity R, T."""
-    return _call(_trebuchet.shot, dict(settings, design=dict(design, R=R, T=T), fit=True))
+    """The design's shape (l, l4, mu_b, theta_i, F) fitted in mu and size to the capacity R, T.
+    Settings: those of shot."""
+    return _call(_trebuchet.shot, dict(settings, design=dict(_with_engine_keys(design, settings), R=R, T=T), fit=True))
 
 
 def optimize(R, T=None, *, m=None, **options):
@@ -138,8 +166,35 @@ def sweep(design, vary, *, points=21, **settings):
     """What if one value changes: the shot of the design at each of `points` values of `vary`
     ("L4=2m..5m": a value of the engine, its parts or its release, and its range), the rest held.
     The answer's "points" are shot records, the same as shot() of each engine, or {key, "error"}.
-    Settings: those of shot."""
-    return _call(_trebuchet.sweep, dict(settings, design=design, vary=vary, points=points))
+    The design and the settings: those of shot (a record too, with its own settings)."""
+    return _call(_trebuchet.sweep, dict(settings, design=_with_engine_keys(design, settings), vary=vary, points=points))
+
+
+def compare(design, **settings):
+    """One engine's parts built as each machine, hinged, fixed, floating-arm and whipper, side by
+    side (trebuchet-verify compare): a list of shot records, one a machine (its engine's
+    "machine"), or {"machine", "error"} where a machine refuses the engine. Released where the
+    range peaks unless quality= says otherwise. The design and the settings: those of shot."""
+    return _call(_trebuchet.compare, dict(settings, design=_with_engine_keys(design, settings)))
+
+
+def contest(m, *, machine="hinged", **options):
+    """The best engine of a machine for the projectile m within a contest's limits
+    (trebuchet-verify contest): the beam by D (its diameter, of the wood) or mb_per_m (kg/m);
+    the limits max_width, max_height, max_M, max_axle_load, max_acceleration and min_clearance;
+    objective ("range" or "eps"), pareto (points of the front of range against the axle's load),
+    theta_i_deg, box_width, box_height, the material and the air's settings. machine="all" gives
+    a dict of each machine's best (or its TrebuchetError) by name; the whipper is not designed by
+    search."""
+    if machine == "all":
+        best = {}
+        for name in ("hinged", "fixed", "floating-arm"):
+            try:
+                best[name] = contest(m, machine=name, **options)
+            except TrebuchetError as e:
+                best[name] = e
+        return best
+    return _call(_trebuchet.contest, dict(options, m=m, machine=machine))
 
 
 def complete(attested, **settings):
@@ -162,6 +217,10 @@ def monte_carlo(design=None, *, attested=None, samples=10000, seed=1, threads=No
     KeyboardInterrupt. progress=True shows how many samples are done, on stderr."""
     if (design is None) == (attested is None):
         raise TrebuchetError("give a design (for shots) or attested values (for completions), one of them", "usage", ["design", "attested"])
+    parts = sorted(set(settings) & {"first", "count", "outcomes"})
+    if parts:
+        raise TrebuchetError(f"{', '.join(parts)}: monte_carlo splits the run into parts itself; leave them out (samples= sets the run's size)",
+                             "usage", parts)
     if threads is not None and (isinstance(threads, bool) or not isinstance(threads, numbers.Integral) or threads < 1):
         raise TypeError(f"threads: {threads!r} is not a number of threads; give a whole number from 1 up, or None for the cores")
     request = dict(settings, samples=samples, seed=seed)
@@ -237,9 +296,18 @@ def to_frame(answer):
     import pandas as pd
 
     if isinstance(answer, list):
-        return pd.DataFrame([{k: v for k, v in r.items() if v is None or isinstance(v, (bool, int, float, str))} for r in answer])
+        rows = []
+        for r in answer:
+            row = {k: v for k, v in r.items() if v is None or isinstance(v, (bool, int, float, str))}
+            # Why a record warns or failed, in columns of their own: "" where it did not.
+            row["warnings"] = "; ".join(r.get("warnings") or [])
+            row["error"] = r.get("error", "")
+            rows.append(row)
+        return pd.DataFrame(rows)
     if isinstance(answer, dict) and "points" in answer and "vary" in answer:  # a sweep: a row a point, the value varied first
-        frame = to_frame(answer["points"])
+        # A failed point holds the value varied under its key, as the sweep's text gave it: the
+        # column takes the sweep's number instead, and the point keeps its error.
+        frame = to_frame([{k: v for k, v in p.items() if k != answer["vary"]} for p in answer["points"]])
         frame.insert(0, answer["vary"], answer["values"])
         return frame
     if isinstance(answer, dict) and "draws" in answer:

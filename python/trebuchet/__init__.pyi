@@ -1,13 +1,18 @@
 # Type hints for editors and type checkers (PEP 561): the functions' keyword arguments are the
 # programs' keys (docs/inputs.md: trebuchet.fields() and trebuchet.settings(), each setting under
-# its flag's word, its aliases read too); values are numbers or texts with units.
+# its flag's word, its aliases read too); values are numbers or texts with units. Each function
+# names every keyword it takes, so that a type checker catches a misspelt one (relase=).
 from typing import Any, Literal, Mapping, Optional, Sequence, Union
 
 import numpy as np
+import pandas
 
 Value = Union[float, int, str, np.generic]
-Design = Mapping[str, Value]
+Design = Mapping[str, Any]
 Record = dict[str, Any]
+Quality = Literal["Q", "eps", "range"]
+Air = Union[bool, Literal["vacuum"], Mapping[str, Value]]
+Machine = Literal["hinged", "fixed", "floating-arm", "whipper"]
 
 __version__: str
 __commit__: str
@@ -20,17 +25,56 @@ class TrebuchetError(ValueError):
 class TrebuchetWarning(UserWarning): ...
 
 def design(**givens: Value) -> Record: ...
-def shot(design: Design, *, series: bool = ..., air: Union[bool, Mapping[str, Any]] = ..., quality: Literal["Q", "eps", "range"] = ...,
-         release: Literal["Q", "eps", "range"] = ..., n: float = ..., tol: float = ..., tolerance: float = ...,
-         stepper: str = ..., rtol: float = ..., atol: float = ..., target_level: Value = ...,
-         range_from: Literal["pivot", "release"] = ..., air_density: Value = ..., cd: Union[float, str] = ...,
-         projectile: Value = ..., wind: Value = ..., drag_in_sling: bool = ..., **settings: Any) -> Record: ...
-def fit(design: Design, R: Value, T: Value, **settings: Any) -> Record: ...
-def optimize(R: Value, T: Optional[Value] = ..., *, m: Optional[Value] = ..., **options: Any) -> list[Record]: ...
-def sweep(design: Design, vary: str, *, points: int = ..., **settings: Any) -> Record: ...
-def complete(attested: Design, **settings: Any) -> Record: ...
+def shot(design: Design, *, series: bool = ..., quality: Quality = ..., release: Quality = ..., n: float = ..., tol: float = ...,
+         tolerance: float = ..., stepper: str = ..., rtol: float = ..., atol: float = ..., target_level: Value = ...,
+         range_from: Literal["pivot", "release"] = ..., air: Air = ..., air_density: Value = ..., cd: Union[float, str] = ...,
+         projectile: Value = ..., wind: Value = ..., drag_in_sling: bool = ..., g: Value = ..., youngs_modulus: Value = ...,
+         wood_density: Value = ..., modulus_of_rupture: Value = ..., rupture: Value = ..., beta2: Value = ...,
+         release_time: Value = ..., release_angle_deg: Value = ..., release_angle: Value = ..., pin_angle_deg: Value = ...,
+         pin_angle: Value = ..., machine: Machine = ...) -> Record: ...
+def fit(design: Design, R: Value, T: Value, *, quality: Quality = ..., release: Quality = ..., n: float = ..., tol: float = ...,
+        tolerance: float = ..., stepper: str = ..., rtol: float = ..., atol: float = ..., target_level: Value = ...,
+        range_from: Literal["pivot", "release"] = ..., air: Air = ..., air_density: Value = ..., cd: Union[float, str] = ...,
+        projectile: Value = ..., wind: Value = ..., drag_in_sling: bool = ..., g: Value = ..., youngs_modulus: Value = ...,
+        wood_density: Value = ..., modulus_of_rupture: Value = ..., rupture: Value = ..., beta2: Value = ...,
+        machine: Machine = ...) -> Record: ...
+def optimize(R: Value, T: Optional[Value] = ..., *, m: Optional[Value] = ..., theta_i_deg: Value = ..., theta: Value = ..., F: Value = ...,
+             l: Value = ..., machine: Machine = ..., quality: Quality = ..., release: Quality = ..., n: float = ..., stepper: str = ...,
+             rtol: float = ..., atol: float = ..., range_from: Literal["pivot", "release"] = ..., air: Air = ..., air_density: Value = ...,
+             cd: Union[float, str] = ..., projectile: Value = ..., wind: Value = ..., drag_in_sling: bool = ..., g: Value = ...,
+             youngs_modulus: Value = ..., wood_density: Value = ..., modulus_of_rupture: Value = ..., rupture: Value = ...,
+             beta2: Value = ...) -> list[Record]: ...
+def sweep(design: Design, vary: str, *, points: int = ..., quality: Quality = ..., release: Quality = ..., n: float = ..., stepper: str = ...,
+          rtol: float = ..., atol: float = ..., target_level: Value = ..., range_from: Literal["pivot", "release"] = ..., air: Air = ...,
+          air_density: Value = ..., cd: Union[float, str] = ..., projectile: Value = ..., wind: Value = ..., drag_in_sling: bool = ...,
+          g: Value = ..., youngs_modulus: Value = ..., wood_density: Value = ..., modulus_of_rupture: Value = ..., rupture: Value = ...,
+          beta2: Value = ..., release_time: Value = ..., release_angle_deg: Value = ..., release_angle: Value = ...,
+          pin_angle_deg: Value = ..., pin_angle: Value = ..., machine: Machine = ...) -> Record: ...
+def compare(design: Design, *, quality: Quality = ..., release: Quality = ..., n: float = ..., stepper: str = ..., rtol: float = ...,
+            atol: float = ..., target_level: Value = ..., range_from: Literal["pivot", "release"] = ..., air: Air = ...,
+            air_density: Value = ..., cd: Union[float, str] = ..., projectile: Value = ..., wind: Value = ..., drag_in_sling: bool = ...,
+            g: Value = ..., youngs_modulus: Value = ..., wood_density: Value = ..., modulus_of_rupture: Value = ..., rupture: Value = ...,
+            beta2: Value = ..., release_time: Value = ..., release_angle_deg: Value = ..., release_angle: Value = ...,
+            pin_angle_deg: Value = ..., pin_angle: Value = ...) -> list[Record]: ...
+def contest(m: Value, *, machine: Union[Machine, Literal["all"]] = ..., D: Value = ..., mb_per_m: float = ..., theta_i_deg: Value = ...,
+            theta: Value = ..., box_width: Value = ..., box_height: Value = ..., max_width: Value = ..., max_height: Value = ...,
+            max_M: Value = ..., max_axle_load: Value = ..., max_acceleration: Value = ..., min_clearance: Value = ...,
+            objective: Literal["range", "eps"] = ..., pareto: int = ..., stepper: str = ..., rtol: float = ..., atol: float = ...,
+            target_level: Value = ..., range_from: Literal["pivot", "release"] = ..., air: Air = ..., air_density: Value = ...,
+            cd: Union[float, str] = ..., projectile: Value = ..., wind: Value = ..., drag_in_sling: bool = ..., g: Value = ...,
+            youngs_modulus: Value = ..., wood_density: Value = ..., modulus_of_rupture: Value = ..., rupture: Value = ...,
+            beta2: Value = ...) -> Any: ...
+def complete(attested: Design, *, quality: Quality = ..., release: Quality = ..., n: float = ..., stepper: str = ..., rtol: float = ...,
+             atol: float = ..., target_level: Value = ..., range_from: Literal["pivot", "release"] = ..., air: Air = ...,
+             air_density: Value = ..., cd: Union[float, str] = ..., projectile: Value = ..., wind: Value = ..., drag_in_sling: bool = ...,
+             g: Value = ..., youngs_modulus: Value = ..., wood_density: Value = ..., modulus_of_rupture: Value = ..., rupture: Value = ...,
+             beta2: Value = ...) -> Record: ...
 def monte_carlo(design: Optional[Design] = ..., *, attested: Optional[Design] = ..., samples: int = ..., seed: int = ...,
-                threads: Optional[int] = ..., progress: bool = ..., claim: Value = ..., **settings: Any) -> Record: ...
+                threads: Optional[int] = ..., progress: bool = ..., claim: Value = ..., draws_csv: bool = ..., quality: Quality = ...,
+                release: Quality = ..., n: float = ..., stepper: str = ..., rtol: float = ..., atol: float = ..., target_level: Value = ...,
+                range_from: Literal["pivot", "release"] = ..., air: Air = ..., air_density: Value = ..., cd: Union[float, str] = ...,
+                projectile: Value = ..., wind: Value = ..., drag_in_sling: bool = ..., g: Value = ..., youngs_modulus: Value = ...,
+                wood_density: Value = ..., modulus_of_rupture: Value = ..., rupture: Value = ..., beta2: Value = ...) -> Record: ...
 def fields() -> list[Record]: ...
 def settings() -> list[Record]: ...
-def to_frame(answer: Union[Record, Sequence[Record]]) -> Any: ...
+def to_frame(answer: Union[Record, Sequence[Record]]) -> pandas.DataFrame: ...

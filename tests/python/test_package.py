@@ -149,3 +149,98 @@ def test_the_module_agrees_with_the_programs():
     done = subprocess.run([sys.executable, str(Path(__file__).with_name("test_module.py")), calc, verify], capture_output=True, text=True, timeout=600)
     print(done.stdout)
     assert done.returncode == 0, done.stdout + done.stderr
+
+
+# Issue 50: records that read back, and a notebook's friction.
+
+def test_a_record_is_shot_again_as_the_same_shot_with_its_settings():
+    first = trebuchet.shot(dict(CA, pin_angle_deg=40), air=True, wind="3m/s", target_level="-2m")
+    assert trebuchet.shot(first) == first  # every number, bit for bit, and the settings it carries
+    # A keyword replaces the record's own setting: vacuum flies farther than air.
+    assert trebuchet.shot(first, air=False)["assumptions"]["air"] == "vacuum"
+    assert trebuchet.shot(first, air=False)["R"] > first["R"]
+    optimum = trebuchet.optimize("300m", "50kJ")[0]
+    assert trebuchet.shot(optimum)["R"] == optimum["R"]
+
+
+def test_a_failed_sweep_point_keeps_its_row_with_its_error_and_warnings_have_a_column():
+    pytest.importorskip("pandas")
+    for vary in ["L4=0m..5m", "pin_angle=-180..0", "release_time=0.01s..1s", "release_angle=-90..89"]:
+        answer = trebuchet.sweep(CA, vary, points=3)
+        frame = trebuchet.to_frame(answer)
+        assert len(frame) == 3 and list(frame[frame.columns[0]]) == answer["values"]
+        failed = [i for i, p in enumerate(answer["points"]) if "error" in p]
+        assert failed, vary  # each range starts where no shot is made
+        for i in failed:
+            assert frame["error"].iloc[i] == answer["points"][i]["error"] and np.isnan(frame["R"].iloc[i])
+    frame = trebuchet.to_frame([trebuchet.shot(WHIPPER, release_angle_deg=45)])
+    assert "slack" in frame["warnings"].iloc[0] and frame["error"].iloc[0] == ""
+
+
+def test_compare_and_contest_are_the_programs():
+    machines = trebuchet.compare(CA)
+    assert [r.get("machine") or r["engine"].get("machine", "hinged") for r in machines] == ["hinged", "fixed", "floating-arm", "whipper"]
+    best = trebuchet.contest("0.5kg", D="5cm", max_width="3m", max_height="3m", max_M="300kg")
+    assert best["limits"]["max_width"]["measured"] <= 3 * (1 + 1e-9)
+    every = trebuchet.contest("0.5kg", machine="all", D="5cm", max_width="3m", max_height="3m", max_M="300kg")
+    assert set(every) == {"hinged", "fixed", "floating-arm"} and every["hinged"]["R"] == best["R"]
+
+
+def test_the_release_and_the_machine_may_be_keywords_and_help_names_them():
+    assert trebuchet.shot(CA, pin_angle_deg=35) == trebuchet.shot(dict(CA, pin_angle_deg=35))
+    assert trebuchet.shot(CA, machine="fixed")["engine"]["machine"] == "fixed"
+    for word in ["release_time", "release_angle_deg", "pin_angle_deg", "machine"]:
+        assert word in trebuchet.shot.__doc__
+
+
+def test_refusals_name_their_key():
+    with pytest.raises(trebuchet.TrebuchetError) as refused:
+        trebuchet.shot(dict(CA, M=-3))
+    assert refused.value.names == ["M"]
+    for bad in [float("nan"), float("inf"), np.float64("-inf")]:
+        with pytest.raises(trebuchet.TrebuchetError, match="design.L4: .* is not a finite number") as refused:
+            trebuchet.shot(dict(CA, L4=bad))
+        assert refused.value.names == ["L4"]
+    circular = dict(CA)
+    circular["site"] = circular
+    deep = {}
+    for _ in range(5000):
+        deep = {"a": deep}
+    for design in [circular, dict(CA, site=deep)]:
+        with pytest.raises(trebuchet.TrebuchetError, match="nests lists or dicts") as refused:
+            trebuchet.shot(design)
+        assert refused.value.kind == "usage"
+
+
+def test_monte_carlo_and_fields_follow_the_programs_rules():
+    with pytest.raises(trebuchet.TrebuchetError, match="range .* or a spread"):
+        trebuchet.monte_carlo(CA, samples=10)
+    with pytest.raises(trebuchet.TrebuchetError, match="range .* or a spread"):
+        trebuchet.monte_carlo(CA, samples=10, claim="100m")
+    with pytest.raises(trebuchet.TrebuchetError, match="splits the run") as refused:
+        trebuchet.monte_carlo(dict(CA, M="3t..3.2t"), first=0, count=5)
+    assert refused.value.names == ["count", "first"]
+    assert "machine" in [f["key"] for f in trebuchet.fields()]
+
+
+def test_the_stubs_keywords_are_those_the_library_takes():
+    # Each keyword the type hints name is one the request takes (a setting, a material row, the
+    # release, the machine) or the wrapper's own: so a type checker that refuses relase= refuses
+    # nothing the library takes by mistake.
+    import ast
+    import pathlib
+    stub = ast.parse(pathlib.Path(trebuchet.__file__).with_suffix(".pyi").read_text())
+    settings = trebuchet.settings()
+    fields = trebuchet.fields()
+    own = {"series", "threads", "progress", "points", "R", "T", "m", "attested", "design"}
+    requests = {"shot": "shot", "fit": "shot", "sweep": "sweep", "compare": "compare", "contest": "contest", "complete": "complete",
+                "monte_carlo": "monte_carlo", "optimize": "optimize"}
+    for node in stub.body:
+        if isinstance(node, ast.FunctionDef) and node.name in requests:
+            assert node.args.kwarg is None, f"{node.name} takes **settings: its keywords are unchecked"
+            request = requests[node.name]
+            taken = {name for s in settings if request in s["requests"] for name in [s["key"], *s["aliases"]]}
+            taken |= {name for f in fields if f["group"] in ("material", "release") or f["key"] == "machine" for name in [f["key"], *f["aliases"]]}
+            taken |= {"theta_i_deg", "theta", "F", "l", "D", "box_width", "box_height"}
+            for argument in node.args.kwonlyargs + node.args.args[1:]:
+                assert argument.arg in taken | own, f"{node.name}({argument.arg}=...) is no key the library takes"

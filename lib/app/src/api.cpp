@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <random>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@
 #include "trebuchet/app/requests.hpp"
 #include "trebuchet/app/schema.hpp"
 #include "trebuchet/app/design_input.hpp"
+#include "trebuchet/app/contest_record.hpp"
 #include "trebuchet/app/design_record.hpp"
 #include "trebuchet/app/search_records.hpp"
 #include "trebuchet/app/settings.hpp"
@@ -291,6 +293,61 @@ ordered_json sweep(const json& request) {
   return what_if_json(what_if, run_what_if(values, "design", what_if, check, 1), key_word);
 }
 
+ordered_json compare(const json& request) {
+  require_keys(request, keys_of(req_compare, op_shot), "compare");
+  if (!request.contains("design"))
+    throw Error(ErrorKind::usage, "{{design}} is missing; give the engine, e.g. {\"design\": {\"L1\": \"6.13m\", ...}}");
+  json passed = json::object();
+  SettingsValues own;
+  DesignValues values = read_design_values(request["design"], "design", &passed, &own);
+  const SettingsValues settings = overlay(own, settings_values_of(request, req_compare));  // the request's over the design's own
+  DesignCheck check;
+  check.settings = shot_settings(settings);
+  check.material = material_of_request(request, op_shot);
+  check.settings.release_at = release_of(values, "design");
+  // Machines are compared as contest ranks them and the peers shoot them: for range, unless quality says otherwise.
+  if (!settings.quality && !settings.n) check.settings.criterion.release = Release::range;
+  if (values.machine == MachineKind::whipper)
+    throw Error(
+        ErrorKind::usage,
+        "compare starts from an engine of the other machines and builds the whipper's column from it; give that engine, without the machine whipper");
+  values.machine = values.psi_i_deg.value_or(0) != 0 ? MachineKind::hinged : MachineKind::fixed;
+  return comparison_json(compare_machines(engine_record(values, "design"), check), key_word);
+}
+
+ordered_json contest(const json& request) {
+  std::vector<std::string> known = keys_of(req_contest, op_optimize);
+  for (const char* key : {"m", "D", "theta_i_deg", "theta", "box_width", "box_height"}) known.emplace_back(key);
+  require_keys(request, known, "contest");
+  DesignValues v = material_of_request(request, op_optimize);
+  for (const auto& [member, key, dimension] : {std::tuple{&DesignValues::m, "m", UnitDimension::mass},
+                                               {&DesignValues::D, "D", UnitDimension::length},
+                                               {&DesignValues::box_width, "box_width", UnitDimension::length},
+                                               {&DesignValues::box_height, "box_height", UnitDimension::length}})
+    v.*member = positive_value(request, key, dimension);
+  v.theta_i_deg = read_value(request, request.contains("theta") ? "theta" : "theta_i_deg", UnitDimension::angle, "");
+  if (request.contains(machine_key)) v.machine = parse_machine(text_of(request[machine_key], machine_key), "{{machine}}");
+  bool efficiency = false;
+  if (request.contains("objective")) {
+    const std::string objective = text_of(request["objective"], "objective");
+    if (objective != "range" && objective != "eps")
+      throw Error(ErrorKind::usage, "{{objective}}: '" + objective + "' is not an objective; use range or eps");
+    efficiency = objective == "eps";
+  }
+  ContestRequest r = contest_request(v, settings_of(request, req_contest), positive_value(request, "mb_per_m", UnitDimension::dimensionless),
+                                     efficiency);
+  for (std::size_t k = 0; k < contest_limit_count; ++k) {
+    const char* key = contest_limit_key(static_cast<ContestLimit>(k));
+    r.limits[k] = positive_value(request, key, setting_row(find_setting(key, req_contest)->id).dimension);
+  }
+  r.min_clearance = read_value(request, "min_clearance", UnitDimension::length, "").value_or(0);
+  const double pareto = read_value(request, "pareto", UnitDimension::dimensionless, "").value_or(0);
+  if (pareto != 0 && (!(pareto >= 2 && pareto <= 200) || pareto != std::floor(pareto)))
+    throw Error(ErrorKind::bad_number, "{{pareto}} = " + format_significant(pareto, 6) + " must be a whole number from 2 to 200");
+  const ContestEngine best = contest_optimum(r);
+  return contest_json(best, r, pareto > 0 ? pareto_front(r, static_cast<int>(pareto)) : std::vector<ContestEngine>{});
+}
+
 ordered_json complete(const json& request) {
   require_keys(request, keys_of(req_complete, op_complete), "complete");
   if (!request.contains("attested"))
@@ -319,6 +376,10 @@ ordered_json monte_carlo(const json& request) {
   run.completes = completes;
   run.where = where;
   run.settings = settings_values_of(request, req_monte_carlo);
+  if (run.spreads.empty())  // as the programs refuse a run of identical samples
+    throw Error(ErrorKind::usage,
+                "monte_carlo samples the values of {{" + where +
+                    "}} given as a range (\"2.5t..3.5t\") or a spread (\"3.5m±0.2m\"); give one, or call shot for one value each");
   const ShotSettings settings = shot_settings(run.settings);
   // As the program does: the design at each spread's first number must be an engine.
   const std::int64_t shots = shots_per_sample(run);
@@ -439,10 +500,24 @@ ordered_json fields(const json& request) {
                     {"default", field.fallback},
                     {"range", field.range}});
   }
+  // The machine, a name rather than a number: a key of the engine as the others are.
+  rows.push_back({{"key", machine_key},
+                  {"flag", "--machine"},
+                  {"aliases", ordered_json::array()},
+                  {"dimension", "name"},
+                  {"unit", ""},
+                  {"units", ordered_json::array()},
+                  {"group", "engine"},
+                  {"operations", {"design", "shot", "optimize"}},
+                  {"label", "machine"},
+                  {"help", setting_row(Setting::machine).help},
+                  {"example", "fixed"},
+                  {"default", setting_row(Setting::machine).fallback},
+                  {"range", setting_row(Setting::machine).range}});
   // The settings (settings.def): each with the requests that take it, by their names here.
   const std::pair<unsigned, const char*> request_names[] = {{req_design, "design"},     {req_shot, "shot"},         {req_sweep, "sweep"},
                                                             {req_optimize, "optimize"}, {req_complete, "complete"}, {req_monte_carlo, "monte_carlo"},
-                                                            {req_value, "value"}};
+                                                            {req_value, "value"},       {req_compare, "compare"},   {req_contest, "contest"}};
   ordered_json settings = ordered_json::array();
   for (const SettingRow& row : setting_rows()) {
     if (!*row.key) continue;  // the programs' alone
@@ -474,6 +549,13 @@ std::string answer_text(Request request, const std::string& text, const std::str
 ordered_json error_json(const Error& error) {
   std::vector<std::string> names;
   for (const std::string& name : error.names()) names.push_back(key_word(name));
+  // A value of a request's object is named "design.M", "attested[2].Lb": its key is named too.
+  static const std::regex in_object(R"((?:design|attested)(?:\[\d+\])?\.([A-Za-z_][A-Za-z0-9_]*))");
+  const std::string text = error.message(key_word);
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), in_object); it != std::sregex_iterator(); ++it) {
+    const std::string key = key_word((*it)[1].str());
+    if (std::find(names.begin(), names.end(), key) == names.end()) names.push_back(key);
+  }
   return {{"error", error.message(key_word)}, {"kind", kind_name(error.kind())}, {"names", names}};
 }
 

@@ -1,6 +1,7 @@
 #include "trebuchet/app/requests.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
@@ -8,6 +9,29 @@
 #include "trebuchet/app/report.hpp"
 
 namespace trebuchet {
+
+ContestRequest contest_request(const DesignValues& v, const ShotSettings& settings, std::optional<double> beam_per_m, bool efficiency) {
+  ContestRequest request;
+  request.machine = v.machine.value_or(MachineKind::hinged);
+  if (!v.m) throw Error(ErrorKind::usage, "contest needs the projectile's mass; give {{m}}, e.g. {{m}} 0.5kg");
+  request.projectile_mass = *v.m;
+  request.material = material_of(v, Material{});
+  if (beam_per_m && v.D) throw Error(ErrorKind::usage, "{{mb_per_m}} and {{D}} both give the beam's mass per metre; give one");
+  if (!beam_per_m && !v.D)
+    throw Error(
+        ErrorKind::usage,
+        "contest needs the beam: its diameter {{D}} (of the wood, {{wood_density}}) or its mass per metre {{mb_per_m}}, e.g. {{mb_per_m}} 1.5");
+  request.beam_mass_per_length = beam_per_m ? *beam_per_m : request.material.wood_density * M_PI / 4 * *v.D * *v.D;  // eq:BeamMass per metre
+  request.theta_i_deg = v.theta_i_deg.value_or(standard_theta_i_deg);
+  if (!(request.theta_i_deg > 0 && request.theta_i_deg < 90))
+    throw Error(ErrorKind::bad_number,
+                "{{theta_i_deg}} = " + format_significant(request.theta_i_deg, 6) + ": the initial beam angle must lie between 0 and 90 degrees");
+  request.settings = settings;
+  request.efficiency = efficiency;
+  request.settings.criterion.release = efficiency ? Release::efficiency : Release::range;  // released where the objective peaks
+  request.box_width = v.box_width, request.box_height = v.box_height;
+  return request;
+}
 
 CompletionRequest completion_request(const DesignValues& v, const ShotSettings& settings) {
   CompletionRequest request;

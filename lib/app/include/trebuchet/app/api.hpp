@@ -33,6 +33,17 @@ nlohmann::ordered_json shot(const nlohmann::json& request);
 /// answer for that engine, or {key: value, "error"}.
 nlohmann::ordered_json sweep(const nlohmann::json& request);
 
+/// One engine's parts built as each machine, side by side (trebuchet-verify compare --format
+/// json): "design" (as shot's, a record too) and the settings of shot; released where the range
+/// peaks unless "quality" says otherwise.
+nlohmann::ordered_json compare(const nlohmann::json& request);
+
+/// The best engine of a machine within a contest's limits (trebuchet-verify contest --format
+/// json): "m", the beam by "D" or "mb_per_m", "machine", "theta_i_deg", the material, the box,
+/// the limits ("max_width", ..., "min_clearance"), "objective" (range or eps), "pareto" and the
+/// air and the target's settings.
+nlohmann::ordered_json contest(const nlohmann::json& request);
+
 /// The ab-initio optimum (trebuchet-verify optimize --format json, an array of the optima found):
 /// "R" with "T" or with the stone's "m"; optional "theta_i_deg", "F", "l" (a fixed beam ratio),
 /// the material (beta2, youngs_modulus, wood_density, g) and the settings of shot.

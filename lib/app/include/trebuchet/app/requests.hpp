@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "trebuchet/completion.hpp"
+#include "trebuchet/contest.hpp"
 #include "trebuchet/optimizer.hpp"
 #include "trebuchet/verification.hpp"
 #include "trebuchet/app/fields.hpp"
@@ -20,6 +21,12 @@
 namespace trebuchet {
 
 /// complete's request: the attested values (engine, stand-ins, parts and material), under `settings`.
+/// A contest's request (contest.hpp) from the values given: the projectile {{m}}, the beam by its
+/// diameter {{D}} (of the wood) or its mass per metre `beam_per_m` [kg/m], theta_i, the material,
+/// the counterweight's box, the machine (hinged unless given); released where the objective (the
+/// range, or eps with `efficiency`) peaks. Throws Error(usage | bad_number) naming the value.
+ContestRequest contest_request(const DesignValues& values, const ShotSettings& settings, std::optional<double> beam_per_m, bool efficiency);
+
 CompletionRequest completion_request(const DesignValues& attested, const ShotSettings& settings);
 
 /// optimize's request: R with T or with the stone's m, theta_i and F (the standard 30 deg, 2/3

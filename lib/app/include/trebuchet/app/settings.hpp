@@ -39,10 +39,12 @@ enum Door : unsigned {
   req_complete = 1u << 20,
   req_monte_carlo = 1u << 21,
   req_value = 1u << 22,
+  req_compare = 1u << 23,
+  req_contest = 1u << 24,
   /// The subcommands that shoot an engine at a release they search for, and the requests that do.
   shooting = cmd_shot | cmd_fit | cmd_calibrate | cmd_compare | cmd_sweep | cmd_complete | cmd_optimize,
   shooting_but_optimize = shooting & ~cmd_optimize,
-  req_shooting = req_shot | req_sweep | req_optimize | req_complete | req_monte_carlo,
+  req_shooting = req_shot | req_sweep | req_optimize | req_complete | req_monte_carlo | req_compare,
   /// The commands that print a table or a record (derive-table and merge write a table's file).
   printing = cmd_calc | shooting | cmd_contest,
 };
