@@ -48,8 +48,12 @@ int run_compare(const Options& flags) {
   } else {
     std::cout << comparison_table(comparison, o.units, option_word);
   }
-  // Every machine refused: the engine's fault, reported as the worst refusal; else what shot stands.
-  return refused == static_cast<int>(comparison.size()) ? code : exit_success;
+  // Every machine refused: the engine's fault, reported as the worst refusal (on stderr, as
+  // every error is); else what shot stands.
+  if (refused != static_cast<int>(comparison.size())) return exit_success;
+  for (const MachineComparison& c : comparison)
+    std::cerr << "trebuchet-verify: " << machine_name(c.machine) << " refused: " << c.error->message(option_word) << "\n";
+  return code;
 }
 
 }  // namespace trebuchet::verify

@@ -30,8 +30,15 @@ int run_sweep(const Options& flags) {
     std::cout << what_if_csv(what_if, points, option_word);
   else
     std::cout << what_if_table(what_if, points, o.units, option_word);
-  // Every point failed: the engine's fault, reported as the worst failure; a point that fails among others is a finding.
-  return failed == static_cast<int>(points.size()) ? code : exit_success;
+  // Every point failed: the engine's fault, reported as the worst failure (on stderr, as every
+  // error is); a point that fails among others is a finding.
+  if (failed != static_cast<int>(points.size())) return exit_success;
+  for (const WhatIfPoint& p : points)
+    if (exit_code(Program::verify, p.error->kind()) == code) {
+      std::cerr << "trebuchet-verify: every point of the sweep failed; the first: " << p.error->message(option_word) << "\n";
+      break;
+    }
+  return code;
 }
 
 }  // namespace trebuchet::verify

@@ -184,15 +184,31 @@
     attested: (v) => typeof v === 'object' && v !== null && !Array.isArray(v) &&
       Object.entries(v).every(([key, text]) => ATTESTED.some(([k]) => k === key) && isText(text)),
   };
+  // A link's value the page cannot take is left out and named, never dropped without a word.
   function loadState() {
     const params = new URLSearchParams(location.hash.slice(1));
+    const refused = [];
+    const shown = (text) => (text.length > 40 ? text.slice(0, 40) + '…' : text);
     for (const [k, text] of params) {
-      if (!Object.prototype.hasOwnProperty.call(CHECKS, k)) continue;
+      if (!Object.prototype.hasOwnProperty.call(CHECKS, k)) { refused.push(`${shown(k)} (no setting of this page)`); continue; }
       let value = text;
       if (k === 'air' || k === 'own_table') value = text === 'true' ? true : text === 'false' ? false : null;
-      else if (['first', 'second', 'edit', 'attested'].includes(k)) { try { value = JSON.parse(text); } catch (e) { continue; } }
+      else if (['first', 'second', 'edit', 'attested'].includes(k)) {
+        try { value = JSON.parse(text); } catch (e) { refused.push(`${k} = ${shown(text)}`); continue; }
+      }
+      // An edited engine keeps the values it can take; each other one is named.
+      if (k === 'edit' && value && typeof value === 'object' && !Array.isArray(value) && !CHECKS.edit(value)) {
+        for (const [key, x] of Object.entries(value))
+          if (!CHECKS.edit({ [key]: x })) { refused.push(`edit.${shown(key)} = ${shown(JSON.stringify(x))}`); delete value[key]; }
+        if (Object.keys(value).length === 0) continue;
+      }
       if (CHECKS[k](value)) state[k] = value;
+      else refused.push(`${k} = ${shown(text)}`);
     }
+    const message = $('link-message');
+    message.hidden = refused.length === 0;
+    message.textContent = refused.length ? `This link's ${refused.join(', ')} ${refused.length > 1 ? 'are' : 'is'} not a value the page takes, so ` +
+      `${refused.length > 1 ? 'they were' : 'it was'} left out; the page shows the rest.` : '';
     linkEdit = state.edit;  // put over the engine the edit view opens on (showView)
     state.edit = null;
     if (state.theta === '40') state.F = '2/3';
@@ -297,12 +313,14 @@
     $('shot-title').textContent = title;
     // A change keeps the animation where it stood, so that a drag shows the same moment.
     viewer = V.render($('viewer'), answer, { units: state.units, time: viewer ? viewer.time() : 0, playing: viewer ? viewer.playing() : false });
-    // The engine in the programs' schema; the settings beside it, as the shot's answer states them
-    // (trebuchet-verify reads the engine's keys and passes over the others).
+    // The shot's record, as the programs write it (its engine and the settings it was shot with),
+    // less its series: trebuchet-verify and trebuchet.shot() read it back as the same shot
+    // (docs/schema.md); "command" is that shot, with the page's settings as flags too.
     const name = { design: 'optimal-engine', edit: 'edited-engine', reconstruct: 'completed-engine' }[state.view] || 'engine';
     const command = ['trebuchet-verify', 'shot', name + '.json'].concat(verifyFlags()).join(' ');
-    const json = JSON.stringify(Object.assign({ comment: 'The engine as this page shot it: "command" shoots it again with the page\'s settings (docs/web.md)', command },
-      asBuilt(engine), { assumptions: answer.assumptions }), null, 2) + '\n';
+    const record = Object.assign({}, answer, { command });
+    delete record.series;
+    const json = JSON.stringify(record, null, 2) + '\n';
     $('download-json').href = 'data:application/json;charset=utf-8,' + encodeURIComponent(json);
     $('download-json').download = name + '.json';
     $('download-csv').download = name + '-shot.csv';

@@ -9,7 +9,9 @@
 //    swing (and inside the scene), the phone's caption, a select's words within its box;
 // 4. another machine is explained, and its own optimum is the program's; the whipper opens one that throws;
 // 5. a pin without a release says why, in its row and on its chart;
-// 6. a download is shot again by its own command, with the page's settings, as the page shot it.
+// 6. a download is shot again by its own command, with the page's settings, as the page shot it,
+//    and, given to trebuchet-verify itself, as a record that reads back;
+// 7. a link's value the page cannot take is named on the page, the rest kept.
 // Each check prints how close it came. Exit 1 on any failure.
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync } from 'node:fs';
@@ -253,6 +255,19 @@ try {
     // As the page and the programs agree on any shot (page.test.mjs: 3.1e-10 at most), 1e-9.
     check(closeness < 1e-9 && program.engine.machine === 'fixed' && program.assumptions.air.projectile_density === 11340,
       `the download's command "${record.command}" shoots the page's shot again: R ${program.R} m against the page's ${shown.R} m (relative ${closeness.toExponential(2)}), the fixed machine, lead in air`);
+    // Issue 50: the download is a record, and a record reads back as the same shot with its settings.
+    const again = JSON.parse(execFileSync(verify, [file, '--format', 'json'], { encoding: 'utf8' }));
+    check(Math.abs(again.R / shown.R - 1) < 1e-9 && again.engine.machine === 'fixed' && again.assumptions.air.projectile_density === 11340,
+      `the download itself, given to trebuchet-verify, is shot again: R ${again.R} m against the page's ${shown.R} m`);
+    await context.close();
+  }
+  // ---- 7. a link's value the page cannot take is named, never dropped silently (issue 50) ------------
+  {
+    const { page, context } = await open(browser, link({ view: 'edit', edit: { L4: 4, beam_cm: '<img src=x onerror=alert(1)>' } }));
+    const said = await page.evaluate(() => { const box = document.getElementById('link-message'); return box.hidden ? '' : box.textContent; });
+    const L4 = await page.evaluate(() => window.trebuchet.current().engine.L4);
+    check(/edit\.beam_cm = "<img src=x onerror=alert\(1\)>" is not a value the page takes/.test(said) && L4 === 4,
+      `a link's hostile beam_cm is named and left out, its L4 = 4 m kept: "${said}"`);
     await context.close();
   }
 } finally {

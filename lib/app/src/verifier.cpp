@@ -225,7 +225,17 @@ std::vector<MachineComparison> compare_machines(const EngineRecord& record, cons
       built.engine.whipper.H = pivot_height(record.engine);
     }
     try {
-      check_engine(built.engine);  // what one machine takes another may not (L3 = 0, a propped counterweight)
+      // What one machine takes another may not (L3 = 0, a propped counterweight). A column that
+      // hangs its counterweight on an arm, given none, is offered the paper's: F = 2/3 of the
+      // pivot height (section 2), L3 = F H - L2.
+      if (built.engine.L3 == 0 && (machine == MachineKind::hinged || machine == MachineKind::whipper)) {
+        const double arm = standard_F * (machine == MachineKind::whipper ? built.engine.whipper.H : pivot_height(built.engine)) - built.engine.L2;
+        throw Error(ErrorKind::usage, "the " + machine_name(machine) + " machine hangs its counterweight on an arm, and {{L3}} is 0" +
+                                          (arm > 0 ? "; give one, e.g. {{L3}} " + format_significant(arm, 3) +
+                                                         "m (the paper's F = 2/3: L3 = 2/3 H - L2), to compare it"
+                                                   : "; give one to compare it"));
+      }
+      check_engine(built.engine);
       one.report = check_design(built, plain);
     } catch (const Error& e) {
       one.error = e;
@@ -241,7 +251,9 @@ std::string comparison_table(const std::vector<MachineComparison>& comparison, U
   const auto sig = [](double x) { return format_significant(x, 4); };
   using Row = std::pair<const char*, std::function<std::string(const DesignReport&)>>;
   const std::vector<Row> rows = {
-      {"range R", [&](const DesignReport& r) { return q(r.verification.capacity.R, UnitDimension::length); }},
+      // A shot that warns (the model stops holding: a slack sling, a weight through the ground) is
+      // marked where its range is read, its warnings listed below.
+      {"range R", [&](const DesignReport& r) { return q(r.verification.capacity.R, UnitDimension::length) + (r.verification.warnings.empty() ? "" : " !"); }},
       {"energy T", [&](const DesignReport& r) { return q(r.verification.capacity.T, UnitDimension::energy); }},
       {"efficiency eps", [&](const DesignReport& r) { return sig(100 * r.verification.eps) + " %"; }},
       {"quality Q", [&](const DesignReport& r) { return sig(100 * r.verification.Q) + " %"; }},
@@ -273,8 +285,12 @@ std::string comparison_table(const std::vector<MachineComparison>& comparison, U
     for (const MachineComparison& c : comparison) cell(c.report ? value(*c.report) : "refused", width);
     out << "\n";
   }
-  for (const MachineComparison& c : comparison)
+  for (const MachineComparison& c : comparison) {
     if (c.error) out << machine_name(c.machine) << ": " << c.error->message(word) << "\n";
+    if (c.report)
+      for (const std::string& warning : c.report->verification.warnings)
+        out << machine_name(c.machine) << " (!): warning: " << with_words(warning, word) << "\n";
+  }
   return out.str();
 }
 

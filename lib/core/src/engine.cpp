@@ -239,10 +239,12 @@ void check_whipper(const Engine::WhipperStart& w) {
     throw Error(ErrorKind::bad_number,
                 "{{H}} = " + format_significant(w.H, 6) + ": the whipper stands on a frame: give its pivot's height above the base, e.g. 5m");
   check_ordinary(w.H, 1e-6, 1e6, "H", "m", "pivot height");
-  if (!(w.rope_angle_deg >= 0 && w.rope_angle_deg < 90))
+  // At 0 the rope would lie along the arm, its counterweight on the arm's line rather than off
+  // its upper side, where the whipper's start (whipper.hpp) rests it.
+  if (!(w.rope_angle_deg > 0 && w.rope_angle_deg < 90))
     throw Error(ErrorKind::bad_number,
                 "{{rope_angle_deg}} = " + format_significant(w.rope_angle_deg, 6) +
-                    ": the counterweight's rope lies off the arm by 0 to below 90 deg, on its upper side; pytrebuchet's is 10");
+                    ": the counterweight's rope lies off the arm by above 0 to below 90 deg, on its upper side; pytrebuchet's is 10");
   if (w.projectile_diameter) check_ordinary(*w.projectile_diameter, 1e-6, 1e6, "projectile_diameter", "m", "projectile's diameter");
 }
 
@@ -253,6 +255,10 @@ void check_engine(const Engine& e) {
     if (!(value > 0))
       throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + format_significant(value, 6) + ": the " + what + " must be positive");
   };
+  if (e.machine == MachineKind::whipper && e.whipper.projectile_diameter && !(*e.whipper.projectile_diameter < e.L1))
+    throw Error(ErrorKind::bad_number, "{{projectile_diameter}} = " + format_significant(*e.whipper.projectile_diameter, 6) +
+                                           " m: the whipper's ball rests on its long arm, L1 = " + format_significant(e.L1, 6) +
+                                           " m; give a ball smaller than the arm");
   if (e.machine == MachineKind::whipper) {
     if (!(e.theta_i_deg > -180 && e.theta_i_deg <= -90))
       throw Error(ErrorKind::bad_number,

@@ -530,7 +530,7 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
       if (phase == Phase::held && !(snap.normal_force > 0))
         fail(
             "the whipper's projectile would leave the arm before its counterweight, which the model (pytrebuchet's order) leaves out; "
-            "lengthen the sling {{L4}} or the counterweight's rope {{L3}}");
+            "lengthen the sling {{L4}} or the counterweight's rope {{L3}}, or turn the rope further off the arm (a larger {{rope_angle_deg}})");
       if (!(contact(snap) > 0)) {
         const StepEnd& before = record.samples().back();
         const StepEnd after = integrator.step_end(t, y, snap);
