@@ -244,3 +244,9 @@ def test_the_stubs_keywords_are_those_the_library_takes():
             taken |= {"theta_i_deg", "theta", "F", "l", "D", "box_width", "box_height"}
             for argument in node.args.kwonlyargs + node.args.args[1:]:
                 assert argument.arg in taken | own, f"{node.name}({argument.arg}=...) is no key the library takes"
+
+
+def test_complete_refuses_a_shots_input_by_name():
+    with pytest.raises(trebuchet.TrebuchetError, match="attested.beam_cm: complete does not take") as refused:
+        trebuchet.complete(dict(Lb="9.5m", M="3t", m="50kg", beam_cm="2m"))
+    assert refused.value.names == ["beam_cm"]

@@ -209,9 +209,12 @@ std::string calibration_table(const Calibration& c, const MeasuredRange& measure
       << energy_budget_text(c.shot, units);
   if (!predictions.empty()) {
     out << "predicted with the calibrated friction (band: the fit's band):\n";
-    for (const Prediction& pr : predictions)
-      out << "  " << pr.changed << ": R = " << q(pr.R, UnitDimension::length) << " (" << q(pr.R_low, UnitDimension::length) << " to "
-          << q(pr.R_high, UnitDimension::length) << "), T = " << q(pr.shot.capacity.T, UnitDimension::energy) << "\n";
+    for (const Prediction& pr : predictions) {
+      const auto end = [&](const std::optional<double>& R) { return R ? q(*R, UnitDimension::length) : std::string("refused"); };
+      out << "  " << pr.changed << ": R = " << q(pr.R, UnitDimension::length) << " (" << end(pr.R_low) << " to " << end(pr.R_high)
+          << "), T = " << q(pr.shot.capacity.T, UnitDimension::energy) << "\n";
+      if (!pr.band_end_refused.empty()) out << "    refused at an end of the band: " << pr.band_end_refused << "\n";
+    }
   }
   out << "(" << c.simulations << " shots)\n";
   return out.str();
@@ -365,16 +368,18 @@ std::string completion_table(const Completion& c, const ShotSettings& settings, 
   out << verification_table(c.engine, settings, c.verification, std::nullopt, units);
   if (c.calculator) {
     const OptimalEngine& o = *c.calculator;
-    out << "the calculator's optimum for this engine's capacity in vacuum (R = " << format_significant(o.capacity.R, 4)
-        << " m, T = " << format_significant(o.capacity.T / 1e3, 4) << " kJ), and how far this engine's values lie from it:\n ";
+    out << "the calculator's optimum for this engine's capacity as the paper measures it (in vacuum, to the base's level, released where Q "
+           "peaks: R = "
+        << quantity_text(o.capacity.R, UnitDimension::length, units, 4) << ", T = " << quantity_text(o.capacity.T, UnitDimension::energy, units, 4)
+        << "; the shot above, under its own settings, may differ), and how far this engine's values lie from it:\n ";
     const auto ours = completed_values(c.engine), optimum = completed_values(o.engine);
     for (std::size_t k = 0; k < ours.size(); ++k) {
       const std::string& name = ours[k].first;
       if (name == "D" && !(c.engine.D > 0)) continue;
       const double deviation = ours[k].second / optimum[k].second - 1;
       const bool mass = name == "M" || name == "m" || name == "mb";
-      out << (k ? "," : "") << " " << name << " " << format_significant(optimum[k].second, 4) << (mass ? " kg" : " m") << " ("
-          << (deviation >= 0 ? "+" : "") << format_significant(100 * deviation, 3) << " %"
+      out << (k ? "," : "") << " " << name << " " << quantity_text(optimum[k].second, mass ? UnitDimension::mass : UnitDimension::length, units, 4)
+          << " (" << (deviation >= 0 ? "+" : "") << format_significant(100 * deviation, 3) << " %"
           << (listed(c.attested, name)     ? ", attested"
                   : listed(c.chosen, name) ? ", chosen"
                                            : "")

@@ -43,13 +43,15 @@ nlohmann::ordered_json calibration_json(const Calibration& c, const MeasuredRang
   out["T_frictionless"] = c.frictionless.capacity.T;
   out["shot"] = verification_json(c.shot, std::nullopt);
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (const Prediction& prediction : predictions)
+  for (const Prediction& prediction : predictions) {
     list.push_back({{"changed", prediction.changed},
                     {"R", prediction.R},
-                    {"R_low", prediction.R_low},
-                    {"R_high", prediction.R_high},
+                    {"R_low", prediction.R_low ? nlohmann::ordered_json(*prediction.R_low) : nlohmann::ordered_json(nullptr)},
+                    {"R_high", prediction.R_high ? nlohmann::ordered_json(*prediction.R_high) : nlohmann::ordered_json(nullptr)},
                     {"T", prediction.shot.capacity.T},
                     {"eps", prediction.shot.eps}});
+    if (!prediction.band_end_refused.empty()) list.back()["band_end_refused"] = prediction.band_end_refused;
+  }
   out["predictions"] = list;
   out["simulations"] = c.simulations;
   require_finite_json(out, "the calibration");

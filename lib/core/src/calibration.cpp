@@ -25,8 +25,9 @@ double largest_value(const Engine& e, FrictionFit fitted) {
 Engine with_friction(const Engine& engine, FrictionFit fitted, double value) {
   Engine e = engine;
   EngineParts& p = e.parts;
-  if (fitted == FrictionFit::pin_coefficient) {
-    p.axle.friction = p.hinge.friction = value;
+  if (fitted == FrictionFit::pin_coefficient) {  // at each pin given a radius that the engine has (the fixed counterweight has no hinge)
+    if (p.axle.radius > 0) p.axle.friction = value;
+    if (p.hinge.radius > 0 && engine.machine != MachineKind::fixed) p.hinge.friction = value;
   } else {
     p.axle.friction *= value, p.hinge.friction *= value, p.trough_friction *= value;
   }
@@ -36,11 +37,12 @@ Engine with_friction(const Engine& engine, FrictionFit fitted, double value) {
 FrictionFit friction_fit_of(const Engine& engine) {
   const EngineParts& p = engine.parts;
   const bool has_friction = p.axle.friction > 0 || p.hinge.friction > 0 || p.trough_friction > 0;
-  if (!has_friction && !(p.axle.radius > 0 && p.hinge.radius > 0))
+  // A pin of radius 0 has no friction's torque: one pin's radius is enough, the other's 0.
+  if (!has_friction && !(p.axle.radius > 0 || p.hinge.radius > 0))
     throw Error(ErrorKind::usage,
                 "calibrate fits the engine's friction: give its coefficients ({{axle_friction}}, {{hinge_friction}}, "
-                "{{trough_friction}}), whose common scale it fits, or the pins' radii ({{axle_radius}} and {{hinge_radius}}), "
-                "and it fits one coefficient at both pins");
+                "{{trough_friction}}), whose common scale it fits, or a pin's radius ({{axle_radius}}, {{hinge_radius}} or both), "
+                "and it fits one coefficient at the pins");
   return has_friction ? FrictionFit::scale : FrictionFit::pin_coefficient;
 }
 
@@ -174,10 +176,20 @@ Prediction predict(const Calibration& c, const Engine& changed, const std::strin
   out.engine = changed;
   out.shot = verify_engine(changed, settings);
   out.R = out.shot.capacity.R;
-  const auto range_with = [&](double value) {
+  // At a band's end the changed engine may stop being one the model shoots (friction that jams
+  // the beam, or sticks the counterweight to it): that end is left empty, with why, rather than
+  // losing the fit.
+  const auto range_with = [&](double value) -> std::optional<double> {
     const Engine e = c.fitted == FrictionFit::pin_coefficient ? with_friction(changed, c.fitted, value)
                                                               : with_friction(changed, FrictionFit::scale, value / c.value);
-    return verify_engine(e, settings).capacity.R;
+    try {
+      return verify_engine(e, settings).capacity.R;
+    } catch (const Error& error) {
+      // Its words without its advice: the friction there is the band's, not one the user gave.
+      const std::string why = with_words(error.named_message(), [](std::string_view key) { return std::string(key); });
+      out.band_end_refused = why.substr(0, why.find("; give"));
+      return std::nullopt;
+    }
   };
   out.R_low = range_with(c.value_high);
   out.R_high = range_with(c.value_low);

@@ -72,7 +72,9 @@ Calibration calibrate(const Engine& engine, const MeasuredRange& measured, const
 struct Prediction {
   std::string changed;  ///< "m = 60 kg"
   Engine engine;
-  double R = 0, R_low = 0, R_high = 0;  ///< at the fitted value and at the ends of its band [m]
+  double R = 0;  ///< at the fitted value [m]
+  std::optional<double> R_low, R_high;  ///< at the ends of its band [m]; empty where that end's shot is refused
+  std::string band_end_refused;  ///< why an end's shot is refused (the model's words)
   Verification shot;
 };
 Prediction predict(const Calibration& calibration, const Engine& changed, const std::string& what, const ShotSettings& settings);
