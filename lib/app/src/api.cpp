@@ -143,9 +143,10 @@ DesignValues values_of(const json& object, unsigned operation, const std::string
     if (std::find(known.begin(), known.end(), key) == known.end()) {
       // An input of a shot that a completion does not take is refused by name, never passed over.
       if (const InputField* field = find_field(key))
-        throw Error(ErrorKind::usage, where + "." + key + ": complete does not take the " + field->label +
-                                          " (it chooses a uniform beam, a point or given counterweight, the paper's release); leave it out, and "
-                                          "give it to shot with the completed engine");
+        throw Error(ErrorKind::usage,
+                    where + "." + key + ": complete does not take the " + field->label +
+                        " (it chooses a uniform beam, a point or given counterweight, the paper's release); leave it out, and "
+                        "give it to shot with the completed engine");
       refuse_near_miss(key, known, where);
       passed[key] = value;
     }

@@ -230,10 +230,10 @@ std::vector<MachineComparison> compare_machines(const EngineRecord& record, cons
       // pivot height (section 2), L3 = F H - L2.
       if (built.engine.L3 == 0 && (machine == MachineKind::hinged || machine == MachineKind::whipper)) {
         const double arm = standard_F * (machine == MachineKind::whipper ? built.engine.whipper.H : pivot_height(built.engine)) - built.engine.L2;
-        throw Error(ErrorKind::usage, "the " + machine_name(machine) + " machine hangs its counterweight on an arm, and {{L3}} is 0" +
-                                          (arm > 0 ? "; give one, e.g. {{L3}} " + format_significant(arm, 3) +
-                                                         "m (the paper's F = 2/3: L3 = 2/3 H - L2), to compare it"
-                                                   : "; give one to compare it"));
+        throw Error(ErrorKind::usage,
+                    "the " + machine_name(machine) + " machine hangs its counterweight on an arm, and {{L3}} is 0" +
+                        (arm > 0 ? "; give one, e.g. {{L3}} " + format_significant(arm, 3) + "m (the paper's F = 2/3: L3 = 2/3 H - L2), to compare it"
+                                 : "; give one to compare it"));
       }
       check_engine(built.engine);
       one.report = check_design(built, plain);
@@ -253,7 +253,8 @@ std::string comparison_table(const std::vector<MachineComparison>& comparison, U
   const std::vector<Row> rows = {
       // A shot that warns (the model stops holding: a slack sling, a weight through the ground) is
       // marked where its range is read, its warnings listed below.
-      {"range R", [&](const DesignReport& r) { return q(r.verification.capacity.R, UnitDimension::length) + (r.verification.warnings.empty() ? "" : " !"); }},
+      {"range R",
+       [&](const DesignReport& r) { return q(r.verification.capacity.R, UnitDimension::length) + (r.verification.warnings.empty() ? "" : " !"); }},
       {"energy T", [&](const DesignReport& r) { return q(r.verification.capacity.T, UnitDimension::energy); }},
       {"efficiency eps", [&](const DesignReport& r) { return sig(100 * r.verification.eps) + " %"; }},
       {"quality Q", [&](const DesignReport& r) { return sig(100 * r.verification.Q) + " %"; }},

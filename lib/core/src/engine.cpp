@@ -256,9 +256,9 @@ void check_engine(const Engine& e) {
       throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + format_significant(value, 6) + ": the " + what + " must be positive");
   };
   if (e.machine == MachineKind::whipper && e.whipper.projectile_diameter && !(*e.whipper.projectile_diameter < e.L1))
-    throw Error(ErrorKind::bad_number, "{{projectile_diameter}} = " + format_significant(*e.whipper.projectile_diameter, 6) +
-                                           " m: the whipper's ball rests on its long arm, L1 = " + format_significant(e.L1, 6) +
-                                           " m; give a ball smaller than the arm");
+    throw Error(ErrorKind::bad_number,
+                "{{projectile_diameter}} = " + format_significant(*e.whipper.projectile_diameter, 6) +
+                    " m: the whipper's ball rests on its long arm, L1 = " + format_significant(e.L1, 6) + " m; give a ball smaller than the arm");
   if (e.machine == MachineKind::whipper) {
     if (!(e.theta_i_deg > -180 && e.theta_i_deg <= -90))
       throw Error(ErrorKind::bad_number,
