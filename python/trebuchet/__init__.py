@@ -64,7 +64,7 @@ def _plain(value, path, depth=0):
     if isinstance(value, numbers.Real):
         if not isinstance(value, (int, bool)) and not np.isfinite(float(value)):
             key = path.rsplit(".", 1)[-1] if path else ""
-            raise TrebuchetError(f"{path or 'the request'}: {value!r} is not a finite number; give a finite number", "bad_number",
+            raise TrebuchetError(f"{path or 'the request'}: '{float(value)}' is not a finite number; give a finite number", "bad_number",
                                  [key] if key else [])
         return float(value) if not isinstance(value, (int, bool)) else value
     raise TypeError(f"{path or 'the request'}: a {type(value).__name__} is not a value; give a number, or a text with its unit such as \"3.1t\"")
