@@ -14,19 +14,8 @@ int run_compare(const Options& flags) {
   nlohmann::json passed = nlohmann::json::object();
   std::string where;
   Options o = flags;  // with the file's settings under the flags'
-  DesignValues values = one_design(flags, "compare", where, passed, o.settings);
-  DesignCheck check = design_check(o);
-  check.settings.release_at = release_of(values, where);
-  // Machines are compared as contest ranks them and the peers shoot them: for range, unless --quality says otherwise.
-  if (!o.settings.quality && !o.settings.n) check.settings.criterion.release = Release::range;
-  if (values.machine == MachineKind::whipper)
-    throw Error(ErrorKind::usage,
-                "compare starts from an engine of the other machines (theta_i from 0 to 90 deg) and builds the whipper's column from it; "
-                "give that engine, without the machine whipper");
-  // Read as a machine that takes it (L3 = 0 is not the hinged engine's, a prop only its); each
-  // machine then checks what it takes.
-  values.machine = values.psi_i_deg.value_or(0) != 0 ? MachineKind::hinged : MachineKind::fixed;
-  const std::vector<MachineComparison> comparison = compare_machines(engine_record(values, where), check);
+  const DesignValues values = one_design(flags, "compare", where, passed, o.settings);
+  const std::vector<MachineComparison> comparison = compare_design(values, where, o.settings, design_check(o));
   int code = exit_success, refused = 0;
   for (const MachineComparison& c : comparison)
     if (c.error) ++refused, code = std::max(code, exit_code(Program::verify, c.error->kind()));

@@ -305,20 +305,11 @@ ordered_json compare(const json& request) {
     throw Error(ErrorKind::usage, "{{design}} is missing; give the engine, e.g. {\"design\": {\"L1\": \"6.13m\", ...}}");
   json passed = json::object();
   SettingsValues own;
-  DesignValues values = read_design_values(request["design"], "design", &passed, &own);
-  const SettingsValues settings = overlay(own, settings_values_of(request, req_compare));  // the request's over the design's own
+  const DesignValues values = read_design_values(request["design"], "design", &passed, &own);
   DesignCheck check;
-  check.settings = shot_settings(settings);
   check.material = material_of_request(request, op_shot);
-  check.settings.release_at = release_of(values, "design");
-  // Machines are compared as contest ranks them and the peers shoot them: for range, unless quality says otherwise.
-  if (!settings.quality && !settings.n) check.settings.criterion.release = Release::range;
-  if (values.machine == MachineKind::whipper)
-    throw Error(
-        ErrorKind::usage,
-        "compare starts from an engine of the other machines and builds the whipper's column from it; give that engine, without the machine whipper");
-  values.machine = values.psi_i_deg.value_or(0) != 0 ? MachineKind::hinged : MachineKind::fixed;
-  return comparison_json(compare_machines(engine_record(values, "design"), check), key_word);
+  // The request's settings over the design's own.
+  return comparison_json(compare_design(values, "design", overlay(own, settings_values_of(request, req_compare)), check), key_word);
 }
 
 ordered_json contest(const json& request) {
@@ -562,7 +553,7 @@ ordered_json error_json(const Error& error) {
     const std::string key = key_word((*it)[1].str());
     if (std::find(names.begin(), names.end(), key) == names.end()) names.push_back(key);
   }
-  return {{"error", error.message(key_word)}, {"kind", kind_name(error.kind())}, {"names", names}};
+  return {{"error", text}, {"kind", kind_name(error.kind())}, {"names", names}};
 }
 
 }  // namespace trebuchet::api

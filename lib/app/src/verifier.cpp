@@ -295,6 +295,21 @@ std::string comparison_table(const std::vector<MachineComparison>& comparison, U
   return out.str();
 }
 
+std::vector<MachineComparison> compare_design(DesignValues values, const std::string& where, const SettingsValues& settings, DesignCheck check) {
+  check.settings = shot_settings(settings);
+  check.settings.release_at = release_of(values, where);
+  // Machines are compared as contest ranks them and the peers shoot them: for range, unless the quality is given.
+  if (!settings.quality && !settings.n) check.settings.criterion.release = Release::range;
+  if (values.machine == MachineKind::whipper)
+    throw Error(ErrorKind::usage,
+                "compare starts from an engine of the other machines (theta_i from 0 to 90 deg) and builds the whipper's column from it; "
+                "give that engine, without the machine whipper");
+  // Read as a machine that takes it (L3 = 0 is not the hinged engine's, a prop only its); each
+  // machine then checks what it takes.
+  values.machine = values.psi_i_deg.value_or(0) != 0 ? MachineKind::hinged : MachineKind::fixed;
+  return compare_machines(engine_record(values, where), check);
+}
+
 nlohmann::ordered_json comparison_json(const std::vector<MachineComparison>& comparison, const std::function<std::string(std::string_view)>& word) {
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
   for (const MachineComparison& c : comparison)

@@ -87,6 +87,12 @@ struct MachineComparison {
 /// `check` (no series or pictures), each refusal kept in its place.
 std::vector<MachineComparison> compare_machines(const EngineRecord& record, const DesignCheck& check);
 
+/// compare's run, as trebuchet-verify compare and api::compare take it: the design's `values`
+/// (`where` names them), built as each machine under `settings` (released where the range peaks
+/// unless they give quality or n), reported as `check` says. Throws Error(usage) for the whipper,
+/// whose column compare builds from another machine's engine.
+std::vector<MachineComparison> compare_design(DesignValues values, const std::string& where, const SettingsValues& settings, DesignCheck check);
+
 /// The comparison side by side: range, efficiency, the release, the pin to bend and the peak
 /// loads, a column a machine, then what refused a machine (its names written by `word`, error.hpp).
 std::string comparison_table(const std::vector<MachineComparison>& comparison, UnitSystem units,
