@@ -53,7 +53,8 @@ int run_calibrate(const Options& flags) {
     // One engine: an object, or an array or CSV of one row.
     if (in.rows.size() != 1)
       throw Error(ErrorKind::usage, "calibrate fits one engine; " + source_name(o.input) + " holds " + std::to_string(in.rows.size()));
-    if (!in.rows.front().error.empty()) throw Error(ErrorKind::usage, in.where.front() + ": " + in.rows.front().error);
+    if (const std::string refusal = row_refusal(in.rows.front(), flags.settings); !refusal.empty())
+      throw Error(ErrorKind::usage, in.where.front() + ": " + refusal);
     where = in.where.front();
     // What the flags give (the parts as built, the release, an unknown's range) over the file's, each change noted.
     std::vector<std::string> notes;

@@ -15,6 +15,11 @@ int run_compare(const Options& flags) {
   std::string where;
   Options o = flags;  // with the file's settings under the flags'
   const DesignValues values = one_design(flags, "compare", where, passed, o.settings);
+  // A record carries the release its shot maximised (a shot's: Q), which compare takes as the
+  // file's setting; say so, as compare's own is the range.
+  if (o.settings.quality && !flags.settings.quality && *o.settings.quality != Release::range)
+    print_notes({"the release maximises " + release_name(*o.settings.quality) + ", as " + where +
+                 " says (a shot's record keeps its own); compare's own is the range: give {{quality}} range for it"});
   const std::vector<MachineComparison> comparison = compare_design(values, where, o.settings, design_check(o));
   int code = exit_success, refused = 0;
   for (const MachineComparison& c : comparison)

@@ -228,9 +228,8 @@ void setting_options(CLI::App* app, Options& o, Door door, bool spreads) {
     }
     const std::string flag = row.flag;
     const auto read = [&o, id = row.id, flag](const std::string& text) { read_setting(id, text, o.settings, flag); };
-    if (row.id == Setting::air || row.id == Setting::drag_in_sling)  // switches
-      app->add_flag_callback(
-          flag, [read] { read("true"); }, setting_help(row));
+    if (row.id == Setting::air || row.id == Setting::drag_in_sling)  // switches: --air, --air=false, --air=vacuum
+      app->add_flag(flag)->description(setting_help(row))->each(read);
     else if (const auto slot = number_slot(row.id))
       value_option(app, o, flag, Slot{nullptr, slot}, row.dimension, setting_help(row), spreads, read);
     else

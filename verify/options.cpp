@@ -110,10 +110,10 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
   return s;
 }
 
-ShotSettings settings_of(const Options& o) {
+ShotSettings settings_of(const Options& o, bool over_designs) {
   if (o.series_dt_s > 0 && o.series.empty())
     throw Error(ErrorKind::usage, "--series-dt samples the series; add --series FILE to write it, or leave --series-dt out");
-  return shot_settings(o.settings);
+  return over_designs ? shot_settings_over_designs(o.settings) : shot_settings(o.settings);
 }
 
 MonteCarloRequest monte_carlo_request(const Options& o, bool completes) { return {o.design, o.settings, o.spreads, completes, ""}; }

@@ -62,8 +62,9 @@ struct Subcommands {
 };
 Subcommands declare_subcommands(CLI::App& app, Options& options);
 
-/// The settings of the flags (requests.hpp's shot_settings); --series-dt needs --series.
-ShotSettings settings_of(const Options& options);
+/// The settings of the flags (settings.hpp's shot_settings); --series-dt needs --series. With
+/// `over_designs`, as they go over each design's own (shot_settings_over_designs).
+ShotSettings settings_of(const Options& options, bool over_designs = false);
 
 /// The Monte Carlo run of the flags' values, shots or (`completes`) completions.
 MonteCarloRequest monte_carlo_request(const Options& options, bool completes);

@@ -15,8 +15,10 @@
 namespace trebuchet::verify {
 DesignCheck design_check(const Options& o) {
   DesignCheck check;
-  check.settings = settings_of(o);
-  check.given = o.settings;  // over a file's own (a record's assumptions)
+  // With a file, the flags' settings go over each design's own (a record's assumptions) and
+  // are checked there: --wind alone may change a record's air.
+  check.settings = settings_of(o, !o.input.empty());
+  check.given = o.settings;
   check.material = o.design;  // its material rows, over each design's own
   check.csv = o.format == Format::csv;
   check.table = o.format == Format::table;
@@ -53,7 +55,7 @@ int run_many(const Options& o, const DesignInputs& in, const DesignCheck& check)
       [&](std::size_t i) {
         try {
           // Unreadable, or failed upstream (the calculator's "error" column).
-          if (!in.rows[i].error.empty()) throw Error(ErrorKind::usage, in.rows[i].error);
+          if (const std::string refusal = row_refusal(in.rows[i], o.settings); !refusal.empty()) throw Error(ErrorKind::usage, refusal);
           const EngineRecord record = read_engine(in.rows[i].design, in.where[i], &o.design);
           notes[i] = record.notes;
           reports[i] = check_design(record, check);
@@ -126,6 +128,7 @@ DesignValues one_design(const Options& o, const std::string& subcommand, std::st
   const DesignInputs in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}, or CSV with one row"), o.input);
   if (!in.single || in.rows.size() != 1) throw Error(ErrorKind::usage, subcommand + " takes one design; " + source_name(o.input) + " holds more");
   where = in.where.front();
+  if (const std::string refusal = row_refusal(in.rows.front(), o.settings); !refusal.empty()) throw Error(ErrorKind::usage, where + ": " + refusal);
   SettingsValues own;
   std::vector<std::string> notes;
   // The flags over the file's values (--machine builds the file's design as that machine), and its settings under theirs.

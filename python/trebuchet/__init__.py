@@ -48,13 +48,17 @@ _MAX_DEPTH = 64  # a request is a few levels deep; the library's JSON reader ref
 
 def _plain(value, path, depth=0):
     """A request's value as JSON takes it: finite numbers (Python's, NumPy's scalars), texts with
-    units, True/False, and dicts and lists of them. Any other type is a TypeError naming its key;
+    units, True/False, and dicts (keyed by texts) and lists of them. Any other type or key is a
+    TypeError naming its path;
     NaN or infinity, or a structure that nests too deep or holds itself, a TrebuchetError naming it."""
     if depth > _MAX_DEPTH:
         raise TrebuchetError(f"{path or 'the request'} nests lists or dicts more than {_MAX_DEPTH} levels deep (or holds itself); "
                              "give a design's keys with values", "usage", [path.split(".")[0].split("[")[0]] if path else [])
     if isinstance(value, dict):
-        return {key: _plain(v, f"{path}.{key}" if path else str(key), depth + 1) for key, v in value.items()}
+        for key in value:
+            if not isinstance(key, str):
+                raise TypeError(f"{path or 'the request'}: the key {key!r} is not a text but of type {type(key).__name__}; give each key as a text, such as \"L1\"")
+        return {key: _plain(v, f"{path}.{key}" if path else key, depth + 1) for key, v in value.items()}
     if isinstance(value, (list, tuple)):
         return [_plain(v, f"{path}[{i}]", depth + 1) for i, v in enumerate(value)]
     if value is None or isinstance(value, (str, bool)):
@@ -104,15 +108,37 @@ def design(**givens):
 
 # The keys of the engine that a keyword argument may give beside the design: the release its
 # builder set, and the machine (fields(): group "release", and "machine").
-_BESIDE_THE_DESIGN = ("release_time", "release_angle_deg", "release_angle", "pin_angle_deg", "pin_angle", "machine")
+_RELEASE_KEYS = ("release_time", "release_angle_deg", "release_angle", "pin_angle_deg", "pin_angle")
+_BESIDE_THE_DESIGN = (*_RELEASE_KEYS, "machine")
+
+
+def _over_engine(design, keys):
+    """The design with `keys` over its engine's own: a record's "engine", or the design itself. A
+    completion's record, whose engine's keys sit beside its shot's R and T, is given its
+    "engine" first, so that a capacity given for fit is not read as that shot's."""
+    if not keys:
+        return design
+    if not isinstance(design, dict):
+        raise TypeError("design: give the engine as a dict of its keys")
+    if "engine" not in design and isinstance(design.get("assumptions"), dict) and "R_vacuum" in design:
+        engine = {k: v for k, v in design.items() if k not in ("R", "T", "assumptions", "passed")}
+        design = {"engine": engine, "assumptions": design["assumptions"], "passed": design.get("passed", {})}
+
+    def over(engine):  # a release given replaces the engine's own, of any form, as the programs' flags do
+        kept = {k: v for k, v in engine.items() if k not in _RELEASE_KEYS} if set(keys) & set(_RELEASE_KEYS) else engine
+        return dict(kept, **keys)
+
+    if isinstance(design.get("engine"), dict):
+        record = dict(design, engine=over(design["engine"]))
+        if "R" in keys or "T" in keys:
+            record.pop("predicted", None)  # the capacity it was checked against; fit's replaces it
+        return record
+    return over(design)
 
 
 def _with_engine_keys(design, settings):
     """The design with the release and the machine given as keyword arguments, over its own."""
-    beside = {key: settings.pop(key) for key in _BESIDE_THE_DESIGN if key in settings}
-    if beside and not isinstance(design, dict):
-        raise TypeError("design: give the engine as a dict of its keys")
-    return dict(design, **beside) if beside else design
+    return _over_engine(design, {key: settings.pop(key) for key in _BESIDE_THE_DESIGN if key in settings})
 
 
 def shot(design, *, series=False, **settings):
@@ -147,7 +173,7 @@ def shot(design, *, series=False, **settings):
 def fit(design, R, T, **settings):
     """The design's shape (l, l4, mu_b, theta_i, F) fitted in mu and size to the capacity R, T.
     Settings: those of shot."""
-    return _call(_trebuchet.shot, dict(settings, design=dict(_with_engine_keys(design, settings), R=R, T=T), fit=True))
+    return _call(_trebuchet.shot, dict(settings, design=_over_engine(_with_engine_keys(design, settings), {"R": R, "T": T}), fit=True))
 
 
 def optimize(R, T=None, *, m=None, **options):
@@ -184,15 +210,21 @@ def contest(m, *, machine="hinged", **options):
     the limits max_width, max_height, max_M, max_axle_load, max_acceleration and min_clearance;
     objective ("range" or "eps"), pareto (points of the front of range against the axle's load),
     theta_i_deg, box_width, box_height, the material and the air's settings. machine="all" gives
-    a dict of each machine's best (or its TrebuchetError) by name; the whipper is not designed by
-    search."""
+    a dict of each machine's best (or the TrebuchetError that machine refused with) by name; the
+    whipper is not designed by search. A refusal every machine gives alike (bad input) is raised."""
     if machine == "all":
+        if options.get("pareto"):
+            raise TrebuchetError("machine=\"all\" sets the machines' best side by side; leave out pareto, or name one machine",
+                                 "usage", ["pareto", "machine"])
         best = {}
         for name in ("hinged", "fixed", "floating-arm"):
             try:
                 best[name] = contest(m, machine=name, **options)
             except TrebuchetError as e:
                 best[name] = e
+        refusals = [answer for answer in best.values() if isinstance(answer, TrebuchetError)]
+        if len(refusals) == len(best) and len({str(e) for e in refusals}) == 1:
+            raise refusals[0]
         return best
     return _call(_trebuchet.contest, dict(options, m=m, machine=machine))
 

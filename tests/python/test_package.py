@@ -193,6 +193,24 @@ def test_the_release_and_the_machine_may_be_keywords_and_help_names_them():
         assert word in trebuchet.shot.__doc__
 
 
+def test_keywords_beside_a_record_go_to_its_engine():
+    record = trebuchet.shot(CA, air=True, wind="3m/s")
+    # A release, the machine and fit's capacity replace the record's own, as they do beside a design.
+    assert trebuchet.shot(record, pin_angle_deg=35)["R"] == trebuchet.shot(dict(CA, pin_angle_deg=35), air=True, wind="3m/s")["R"]
+    assert trebuchet.shot(record, machine="fixed")["engine"]["machine"] == "fixed"
+    fitted = trebuchet.fit(record, "300m", "20kJ")
+    # fit sizes the engine in vacuum (the paper's capacity); it solves to about 1e-10 (read_back.py), 1e-6 is far above that
+    assert fitted["predicted"]["R"] == 300 and fitted["R_vacuum"] == pytest.approx(300, rel=1e-6)
+    completion = trebuchet.complete(dict(Lb="9.5m", M="3t", m="50kg"))
+    assert trebuchet.fit(completion, "200m", "20kJ")["predicted"]["R"] == 200
+    # A release over a record's own release replaces it, of any form, as the programs' flag does.
+    pinned = trebuchet.shot(record, pin_angle_deg=35)
+    assert trebuchet.shot(pinned, release_angle_deg=40)["engine"].get("pin_angle_deg") is None
+    # One detail of the air replaces the record's, the others kept.
+    calm = trebuchet.shot(record, wind=0)["assumptions"]["air"]
+    assert calm == dict(record["assumptions"]["air"], wind=0.0)
+
+
 def test_refusals_name_their_key():
     with pytest.raises(trebuchet.TrebuchetError) as refused:
         trebuchet.shot(dict(CA, M=-3))
@@ -210,6 +228,13 @@ def test_refusals_name_their_key():
         with pytest.raises(trebuchet.TrebuchetError, match="nests lists or dicts") as refused:
             trebuchet.shot(design)
         assert refused.value.kind == "usage"
+    for key in [float("nan"), (1, 2)]:
+        with pytest.raises(TypeError, match="give each key as a text"):
+            trebuchet.shot({**CA, key: 1})
+    # Bad input is the same for every machine: raised once, not returned three times.
+    with pytest.raises(trebuchet.TrebuchetError) as refused:
+        trebuchet.contest("-1kg", machine="all", D="5cm")
+    assert refused.value.names == ["m"]
 
 
 def test_monte_carlo_and_fields_follow_the_programs_rules():

@@ -13,7 +13,7 @@ import tempfile
 VERIFY = sys.argv[1]
 ENGINE = ["--L1", "6m", "--L2", "1.5m", "--L3", "2m", "--L4", "5m", "--M", "2000kg", "--m", "10kg", "--mb", "100kg"]
 # The figures of a shot that any lost input or setting changes.
-FIGURES = ["R", "T", "R_vacuum", "eps", "Q", "v", "t_release", "pin_angle_at_release_deg", "sling_tension", "pivot_force"]
+FIGURES = ["R", "T", "R_vacuum", "eps", "Q", "v", "t_release", "pin_angle_at_release_deg", "sling_tension", "pivot_force", "rupture_margin"]
 failures = []
 
 
@@ -60,9 +60,28 @@ sweep = run(["sweep", *ENGINE, "--vary", "L4=0m..8m", "--points", "3", "--range-
 read_back("sweep points", sweep["points"])
 read_back("sweep record", sweep)  # the record itself reads as its points
 read_back("compare", run(["compare", *ENGINE])[0])
-whipper, _ = run(["--machine", "whipper", "--L1", "4m", "--L2", "2m", "--L3", "4m", "--L4", "4m", "--M", "100kg", "--m", "3kg", "--mb", "10kg",
-                  "--H", "5m", "--projectile-diameter", "0.2m", "--rope-angle", "12", "--release-angle", "45"])
+WHIPPER = ["--machine", "whipper", "--L1", "4m", "--L2", "2m", "--L3", "4m", "--L4", "4m", "--M", "100kg", "--m", "3kg", "--mb", "10kg",
+           "--H", "5m", "--projectile-diameter", "0.2m", "--rope-angle", "12", "--release-angle", "45"]
+whipper, _ = run(WHIPPER)
 read_back("whipper", whipper)
+# The whipper's ball is sized by its diameter; in air the record also writes its density.
+read_back("whipper in air", run([*WHIPPER, "--air"])[0])
+# A beam of another wood's strength: its margin reads back.
+read_back("modulus of rupture", run([*ENGINE, "--rupture", "60MPa"])[0])
+# A sweep of L1 whose first point fails: that point fails again, not read as a design.
+read_back("sweep of L1", run(["sweep", *ENGINE, "--vary", "L1=0m..8m", "--points", "3"])[0])
+# The verifier's own CSV, with 17 digits, carries its release criterion, target level and range_from.
+with tempfile.NamedTemporaryFile("w", suffix=".csv", delete=False) as f:
+    written = subprocess.run([VERIFY, *ENGINE, "--target-level", "3m", "--quality", "range", "--range-from", "release", "--rupture", "60MPa",
+                              "--digits", "17",
+                              "--format", "csv"], capture_output=True, text=True, check=True).stdout
+    f.write(written)
+again = subprocess.run([VERIFY, f.name, "--digits", "17", "--format", "csv"], capture_output=True, text=True).stdout
+# A file's shots add the "error" column, last.
+same = [line.rsplit(",", 1)[0] for line in again.splitlines()] == written.splitlines()
+print("CSV with its settings read back the same:", same)
+if not same:
+    failures.append("the CSV of a shot with a target level, the range's release and range_from did not read back the same")
 
 # A flag beside a record replaces its value, with a note.
 with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
@@ -71,6 +90,52 @@ changed, said = run([f.name, "--L4", "4.5m"])
 print("--L4 beside the record:", said.strip())
 if "--L4 4.5 m replaces design.L4 = 5 m" not in said or changed["engine"]["L4"] != 4.5 or changed["assumptions"] != shot["assumptions"]:
     failures.append("a flag beside a record: no note, or the value or the settings were lost")
+
+# Flags that change a record's geometry: its written F goes, its L3 stays (a hinged record) and
+# the whipper keeps its own H.
+with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+    json.dump(run(ENGINE)[0], f)
+for flag in (["--L1", "6.5m"], ["--L2", "1.6m"], ["--theta", "40"], ["--H", "4m"]):
+    changed, _ = run([f.name, *flag])
+    if changed["engine"]["L3"] != 2.0:
+        failures.append(f"{flag[0]} over a hinged record: L3 {changed['engine']['L3']}")
+# A sweep over a record varies its geometry as the flag would: every point shoots.
+for vary in ("L1=5m..7m", "L2=1m..2m", "theta_i_deg=20..40"):
+    swept, _ = run(["sweep", f.name, "--vary", vary, "--points", "3"])
+    if any("error" in point for point in swept["points"]):
+        failures.append(f"sweep {vary} over a hinged record: a point failed")
+with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+    json.dump(whipper, f)
+changed, _ = run([f.name, "--L1", "4.5m"])
+if changed["engine"]["H"] != 5.0:
+    failures.append(f"--L1 over a whipper record: H {changed['engine']['H']}, not the record's 5 m")
+
+# One detail of the air over a record in air keeps the others; --air=false turns it off.
+with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+    json.dump(shot, f)
+calm, _ = run([f.name, "--wind", "0m/s"])
+expected = dict(shot["assumptions"]["air"], wind=0.0)
+print("--wind 0m/s over the record's air:", calm["assumptions"]["air"])
+if calm["assumptions"]["air"] != expected or calm["assumptions"]["target_level"] != shot["assumptions"]["target_level"]:
+    failures.append("--wind over a record in air: the other details or settings were lost")
+still, _ = run([f.name, "--air=false"])
+if still["assumptions"]["air"] != "vacuum":
+    failures.append("--air=false over a record in air did not shoot it in vacuum")
+# A constant Cd over a record's Cd(Re), and the sling's drag turned off, shoot as from flags.
+for record_flags, over, fresh in ((["--air", "--cd", "Re"], ["--cd", "0.47"], ["--air", "--cd", "0.47"]),
+                                  (["--air", "--drag-in-sling"], ["--drag-in-sling=false"], ["--air"])):
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+        json.dump(run([*ENGINE, *record_flags])[0], f)
+    if run([f.name, *over])[0]["R"] != run([*ENGINE, *fresh])[0]["R"]:
+        failures.append(f"{' '.join(over)} over a record shot with {' '.join(record_flags)}: not the shot of {' '.join(fresh)}")
+# A CSV row shot in air describes its air but cannot give it: refused, unless the flags give one.
+with tempfile.NamedTemporaryFile("w", suffix=".csv", delete=False) as f:
+    f.write(subprocess.run([VERIFY, *ENGINE, "--air", "--format", "csv"], capture_output=True, text=True, check=True).stdout)
+refused = subprocess.run([VERIFY, f.name], capture_output=True, text=True)
+given = subprocess.run([VERIFY, f.name, "--air"], capture_output=True, text=True)
+print("a CSV row in air:", refused.returncode, refused.stderr.strip())
+if refused.returncode != 2 or "--air=false" not in refused.stderr or given.returncode != 0:
+    failures.append("a CSV row shot in air: not refused by name, or refused although --air was given")
 
 if failures:
     print("FAILED:", *failures, sep="\n  ")

@@ -266,8 +266,8 @@ ordered_json shot(const json& request) {
     throw Error(ErrorKind::usage, "{{design}} is missing; give the engine, e.g. {\"design\": {\"L1\": \"6.13m\", ...}}");
   const SettingsValues settings = settings_values_of(request, req_shot);
   DesignCheck check;
-  check.settings = shot_settings(settings);
-  check.given = settings;  // over the design's own: a record's assumptions
+  check.settings = shot_settings_over_designs(settings);
+  check.given = settings;  // over the design's own (a record's assumptions), checked there
   check.material = material_of_request(request, op_shot);
   check.tolerance = settings.tol.value_or(check.tolerance);
   check.fit = flag_of(request, "fit");
@@ -545,14 +545,14 @@ std::string answer_text(Request request, const std::string& text, const std::str
 
 ordered_json error_json(const Error& error) {
   std::vector<std::string> names;
-  for (const std::string& name : error.names()) names.push_back(key_word(name));
+  const auto name = [&](const std::string& key) {
+    if (std::find(names.begin(), names.end(), key) == names.end()) names.push_back(key);
+  };
+  for (const std::string& given : error.names()) name(key_word(given));
   // A value of a request's object is named "design.M", "attested[2].Lb": its key is named too.
   static const std::regex in_object(R"((?:design|attested)(?:\[\d+\])?\.([A-Za-z_][A-Za-z0-9_]*))");
   const std::string text = error.message(key_word);
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), in_object); it != std::sregex_iterator(); ++it) {
-    const std::string key = key_word((*it)[1].str());
-    if (std::find(names.begin(), names.end(), key) == names.end()) names.push_back(key);
-  }
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), in_object); it != std::sregex_iterator(); ++it) name(key_word((*it)[1].str()));
   return {{"error", text}, {"kind", kind_name(error.kind())}, {"names", names}};
 }
 

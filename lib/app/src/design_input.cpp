@@ -4,6 +4,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "trebuchet/air.hpp"
 #include "trebuchet/angles.hpp"
 #include "trebuchet/app/csv.hpp"
 #include "trebuchet/error.hpp"
@@ -61,6 +62,22 @@ bool is_record(const nlohmann::json& given) {
        (given.contains("assumptions") && given["assumptions"].is_object() && given.contains("R_vacuum")));
 }
 
+namespace {
+
+// Whether a record's air writes the ball's density as the one that follows from the engine's m
+// and its ball's diameter (the whipper's), to round-off: a density edited by hand is kept, and
+// refused beside the diameter.
+bool written_by_diameter(const nlohmann::json& engine, const nlohmann::json& air) {
+  const auto number = [](const nlohmann::json& object, const char* key) {
+    return object.contains(key) && object[key].is_number() ? std::optional<double>(object[key].get<double>()) : std::nullopt;
+  };
+  const auto d = number(engine, "projectile_diameter"), m = number(engine, "m"), density = number(air, "projectile_density");
+  if (!d || !m || !density) return d.has_value();
+  return *density > 0 && *m > 0 && std::abs(sphere_diameter(*m, *density) - *d) <= 1e-9 * *d;
+}
+
+}  // namespace
+
 nlohmann::json design_object(const nlohmann::json& given) {
   if (!is_record(given)) return given;
   // The engine: its own object, or (a completion's record) the record's keys, less the shot's
@@ -69,12 +86,16 @@ nlohmann::json design_object(const nlohmann::json& given) {
   if (!given.contains("engine")) design.erase("R"), design.erase("T"), design.erase("assumptions"), design.erase("passed");
   // "assumptions" holds the settings under their keys, and beside them what is no setting: the
   // engine's own g, theta_i_deg and F (in "engine" too), the given release's description (the
-  // engine carries its key) and the sphere's diameter, which follows from m and its density.
+  // engine carries its key) and the sphere's size, which follows from m and the other: its
+  // density, or the diameter the engine gives (the whipper's ball).
   if (given.contains("assumptions") && given["assumptions"].is_object())
     for (const auto& [key, value] : given["assumptions"].items()) {
       if (key == "g" || key == "theta_i_deg" || key == "F" || key == "release_at") continue;
       design[key] = value;
-      if (key == "air" && value.is_object()) design[key].erase("projectile_diameter");
+      if (key == "air" && value.is_object()) {
+        design[key].erase("projectile_diameter");
+        if (written_by_diameter(design, value)) design[key].erase("projectile_density");
+      }
     }
   // The capacity it checked in vacuum, with the tolerance; fit's, checked as measured, is no
   // claim of the engine it wrote.
@@ -148,30 +169,37 @@ SettingsValues overlay(SettingsValues base, const SettingsValues& over) {
   take(base.rtol, over.rtol), take(base.atol, over.atol), take(base.target_level, over.target_level);
   take(base.range_from_release, over.range_from_release);
   take(base.samples, over.samples), take(base.seed, over.seed), take(base.claim, over.claim);
-  const bool air_given = over.air || over.vacuum || over.drag_in_sling || over.air_density || over.cd || over.cd_of_reynolds || over.projectile ||
-      over.wind;
-  if (air_given) {
-    base.air = over.air, base.vacuum = over.vacuum, base.drag_in_sling = over.drag_in_sling, base.air_density = over.air_density, base.cd = over.cd;
-    base.cd_of_reynolds = over.cd_of_reynolds, base.projectile = over.projectile, base.wind = over.wind;
+  // The air: off replaces the base's air with its details; otherwise each detail given replaces
+  // the base's own, and the air is on if either turns it on.
+  if (over.vacuum) {
+    const SettingsValues none;
+    base.drag_in_sling = none.drag_in_sling, base.air_density = none.air_density, base.cd = none.cd;
+    base.cd_of_reynolds = none.cd_of_reynolds, base.projectile = none.projectile, base.wind = none.wind;
   }
+  base.air = over.air || (base.air && !over.vacuum);
+  base.vacuum = over.vacuum || (base.vacuum && !over.air);
+  if (over.cd || over.cd_of_reynolds) base.cd = over.cd, base.cd_of_reynolds = over.cd_of_reynolds;  // a drag coefficient, or Cd(Re)
+  take(base.drag_in_sling, over.drag_in_sling), take(base.air_density, over.air_density), take(base.projectile, over.projectile);
+  take(base.wind, over.wind);
   return base;
 }
 
 DesignValues overlay_flags(DesignValues values, const DesignValues& flags, const std::string& where, std::vector<std::string>& notes) {
   using V = DesignValues;
+  const auto say = [&](const InputField& flag, const InputField& replaced) {
+    const auto with_unit = [](const InputField& field, double x) { return quantity_text(x, field.dimension, UnitSystem::si, 6); };
+    notes.push_back("{{" + std::string(flag.key) + "}} " + with_unit(flag, *(flags.*flag.member)) + " replaces " +
+                    engine_key_name(where, replaced.key) + " = " + with_unit(replaced, *(values.*replaced.member)));
+  };
   for (const InputField& field : input_fields()) {
     const std::optional<double>& flag = flags.*field.member;
     if (!flag) continue;
     std::optional<double>& own = values.*field.member;
-    const auto with_unit = [&](double x) {
-      const std::string unit = field.dimension == UnitDimension::angle ? "deg" : field.unit;
-      return format_significant(x, 6) + (unit.empty() ? "" : " " + unit);
-    };
-    if (own && *own != *flag)
-      notes.push_back("{{" + std::string(field.key) + "}} " + with_unit(*flag) + " replaces " + engine_key_name(where, field.key) + " = " +
-                      with_unit(*own));
+    // A record writes D = 0 for a beam given by its mass: no value to replace.
+    if (own && *own != *flag && !(field.member == &V::D && *own == 0)) say(field, field);
     own = flag;
   }
+  if (flags.machine) values.machine = flags.machine;
   // A value the flag fixes another way goes with it, as a program's flags could not give both.
   const auto drop = [&](std::optional<double> V::*given, std::initializer_list<std::optional<double> V::*> others) {
     if (flags.*given)
@@ -180,19 +208,34 @@ DesignValues overlay_flags(DesignValues values, const DesignValues& flags, const
   };
   drop(&V::L3, {&V::F});
   drop(&V::F, {&V::L3});
-  drop(&V::theta_i_deg, {&V::H});
-  drop(&V::L1, {&V::H});
+  // A record writes F beside its L3; F follows from L3 and the geometry (eq:Design), so the flags'
+  // new geometry keeps L3, the part as built, and F goes.
+  if (values.L3) drop(&V::L1, {&V::F}), drop(&V::L2, {&V::F}), drop(&V::H, {&V::F}), drop(&V::theta_i_deg, {&V::F});
+  // The whipper's start is its own theta_i and H; the other machines' H follows from L1 and theta_i.
+  if (values.machine.value_or(MachineKind::hinged) != MachineKind::whipper) {
+    drop(&V::theta_i_deg, {&V::H});
+    drop(&V::L1, {&V::H});
+    if (flags.H && !flags.theta_i_deg) values.theta_i_deg = std::nullopt;
+  }
   drop(&V::D_hinge, {&V::mb, &V::D});
   drop(&V::D_tip, {&V::mb, &V::D});
   drop(&V::mb, {&V::D_hinge, &V::D_tip});
-  if (flags.H && !flags.theta_i_deg && values.machine.value_or(MachineKind::hinged) != MachineKind::whipper) values.theta_i_deg = std::nullopt;
+  // The wood gives a taper's mass and diameter again; a round beam's mass, written beside its D,
+  // stands (it may have been weighed).
+  if (flags.wood_density && values.D_hinge && values.D_tip) drop(&V::wood_density, {&V::mb, &V::D});
+  if (flags.wood_density && !flags.mb && !values.D_tip && values.D.value_or(0) > 0 && values.mb)
+    notes.push_back("{{wood_density}} leaves " + engine_key_name(where, "mb") + " = " +
+                    quantity_text(*values.mb, UnitDimension::mass, UnitSystem::si, 6) +
+                    " as given; leave mb out of the file to take the beam's mass from its D in this wood");
   for (const ReleaseBy by : {ReleaseBy::time, ReleaseBy::velocity_angle, ReleaseBy::pin_angle}) {  // one release: the flags' replaces the file's
     const InputField& field = release_field(by);
     if (flags.*field.member)
       for (const ReleaseBy other : {ReleaseBy::time, ReleaseBy::velocity_angle, ReleaseBy::pin_angle})
-        if (other != by) values.*release_field(other).member = std::nullopt;
+        if (other != by && values.*release_field(other).member) {
+          say(field, release_field(other));
+          values.*release_field(other).member = std::nullopt;
+        }
   }
-  if (flags.machine) values.machine = flags.machine;
   return values;
 }
 
@@ -470,6 +513,13 @@ EngineRecord read_engine(const nlohmann::json& object, const std::string& where,
   return record;
 }
 
+std::string row_refusal(const DesignRows::Row& row, const SettingsValues& given) {
+  if (!row.error.empty() || row.air_described.empty() || given.air || given.vacuum) return row.error;
+  return "its shot flew through " + row.air_described +
+      ", which the CSV describes but does not give; give the air ({{air}} and its details) or vacuum ({{air}}=false), or shoot its JSON "
+      "record, which reads back in its air";
+}
+
 DesignRows read_design_rows(std::istream& input, const std::string& source) {
   const std::vector<std::string> inputs = input_names(op_shot);
   const std::vector<std::string_view> engine_keys(inputs.begin(), inputs.end());
@@ -485,20 +535,30 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
     std::vector<std::string> inputs = part_columns();
     inputs.push_back("psi_i_deg");
     inputs.push_back(machine_key);
+    inputs.push_back(csv_column_of(field_of(&DesignValues::modulus_of_rupture)));
     for (const InputField& field : input_fields())  // a given release reads back
       if (field.group == FieldGroup::release) inputs.push_back(csv_column_of(field));
     for (const Field& field : engine_fields(Engine{})) inputs.push_back(csv_column(field));
     for (const std::string& column : verification_csv_header())
       if (std::find(inputs.begin(), inputs.end(), column) == inputs.end()) results.push_back(column);
   }
+  // The settings its shot was made with, read back under their keys; its air is described, not
+  // given, so a row shot in air is refused rather than shot again in vacuum.
+  const std::vector<std::pair<std::string, ColumnName>> settings_columns = {
+      {"release", {"release", ""}}, {"n", {"n", ""}}, {"target_level_m", {"target_level", "m"}}, {"range_from", {"range_from", ""}}};
   struct Column {
-    enum { engine, machine, dropped, passed, error } role;
+    enum { engine, machine, setting, air, dropped, passed, error } role;
     ColumnName name;
   };
   std::vector<Column> columns;
   DesignRows out;
   for (const std::string& header : reader.header()) {
-    if (own_output && (header == "predicted_R_m" || header == "predicted_T_J")) {
+    const auto setting = std::find_if(settings_columns.begin(), settings_columns.end(), [&](const auto& c) { return c.first == header; });
+    if (own_output && setting != settings_columns.end()) {
+      columns.push_back({Column::setting, setting->second});
+    } else if (own_output && header == "air") {
+      columns.push_back({Column::air, {header, ""}});
+    } else if (own_output && (header == "predicted_R_m" || header == "predicted_T_J")) {
       columns.push_back({Column::engine, {header == "predicted_R_m" ? "R" : "T", header == "predicted_R_m" ? "m" : "J"}});
     } else if (own_output && std::find(results.begin(), results.end(), header) != results.end()) {
       columns.push_back({Column::dropped, {header, ""}});
@@ -560,6 +620,12 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
           row.design[columns[k].name.key] = cell_value(cells.cells[k], columns[k].name.unit, reader.header()[k]);
         else if (columns[k].role == Column::machine && !cells.cells[k].empty())
           row.design[machine_key] = cells.cells[k];
+        else if (columns[k].role == Column::setting && !cells.cells[k].empty())
+          row.design[columns[k].name.key] = columns[k].name.unit.empty()
+              ? nlohmann::json(cells.cells[k])
+              : nlohmann::json(cell_value(cells.cells[k], columns[k].name.unit, reader.header()[k]));
+        else if (columns[k].role == Column::air && !cells.cells[k].empty() && cells.cells[k] != "vacuum")
+          row.air_described = cells.cells[k];
     } catch (const Error& e) {
       row.line = cells.line;
       row.error = e.what();

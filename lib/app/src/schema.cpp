@@ -97,6 +97,7 @@ void write_engine(nlohmann::ordered_json& out, const Engine& engine) {
   if (p.rope_mass > 0) put(&V::rope_mass, p.rope_mass);
   if (p.pouch_mass > 0) put(&V::pouch_mass, p.pouch_mass);
   if (p.pin_friction > 0) put(&V::pin_friction, p.pin_friction);
+  if (engine.material.modulus_of_rupture != Material{}.modulus_of_rupture) put(&V::modulus_of_rupture, engine.material.modulus_of_rupture);
   if (engine.machine == MachineKind::whipper) {  // its start besides theta_i and H (engine_fields)
     put(&V::rope_angle_deg, engine.whipper.rope_angle_deg);
     if (engine.whipper.projectile_diameter) put(&V::projectile_diameter, *engine.whipper.projectile_diameter);

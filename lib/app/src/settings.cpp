@@ -65,9 +65,9 @@ ShotSettings shot_settings(const SettingsValues& v) {
   if (air_details && !v.air)
     throw Error(ErrorKind::usage,
                 "{{air_density}}, {{cd}}, {{projectile}} and {{wind}} describe the air; add {{air}} to fly through it (vacuum is the default)");
-  if (v.drag_in_sling && !v.air)
+  if (v.drag_in_sling.value_or(false) && !v.air)
     throw Error(ErrorKind::usage, "{{drag_in_sling}} lets the air act before the release; add {{air}} (vacuum is the default)");
-  settings.drag_in_sling = v.drag_in_sling;
+  settings.drag_in_sling = v.drag_in_sling.value_or(false);
   if (v.air) {
     Air air;
     if (v.air_density && !(*v.air_density > 0))
@@ -85,9 +85,11 @@ ShotSettings shot_settings(const SettingsValues& v) {
   return settings;
 }
 
-bool gives_any(const SettingsValues& v) {
-  return v.quality || v.n || v.tol || v.stepper || v.rtol || v.atol || v.target_level || v.range_from_release || v.air || v.vacuum ||
-      v.drag_in_sling || v.air_density || v.cd || v.cd_of_reynolds || v.projectile || v.wind || v.samples || v.seed || v.claim;
+ShotSettings shot_settings_over_designs(SettingsValues v) {
+  // A detail of the air alone may change a design's own air (a record's, check_design): it is
+  // refused there, laid over a design in vacuum.
+  if (!v.vacuum) v.air = v.air || v.drag_in_sling.value_or(false) || v.air_density || v.cd || v.cd_of_reynolds || v.projectile || v.wind;
+  return shot_settings(v);
 }
 
 std::optional<double> SettingsValues::*number_slot(Setting id) {
@@ -121,7 +123,9 @@ Integer whole_number(std::string_view text, std::string_view name, Integer lowes
 bool switch_value(std::string_view text, std::string_view name) {
   if (text == "true") return true;
   if (text == "false") return false;
-  throw Error(ErrorKind::usage, std::string(name) + ": '" + std::string(text) + "' is neither true nor false");
+  throw Error(ErrorKind::usage,
+              std::string(name) + ": '" + std::string(text) +
+                  "' is neither true nor false; give true or false (on the command line: the flag alone, or =false)");
 }
 
 // Each setting a request takes as the programs' flag does, read from its text into its member.

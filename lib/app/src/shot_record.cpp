@@ -138,7 +138,11 @@ std::vector<std::string> verification_csv_header() {
   for (const InputField* field : release_fields()) header.push_back(csv_column_of(*field));  // a given release, which reads back
   header.push_back(machine_key);
   header.insert(header.end(), {"clearance_geometric_m", "clearance_in_shot_m"});  // Verification::Clearance: the columns before keep their places
-  header.insert(header.end(), {range_efficiency_keys[0], range_efficiency_keys[1], pin_to_bend_key, "energy_sling_J"});  // issue 48, last
+  header.insert(header.end(), {range_efficiency_keys[0], range_efficiency_keys[1], pin_to_bend_key, "energy_sling_J"});  // issue 48
+  // Issue 50, last: with release, n and target_level_m, the settings a CSV reads back with; and
+  // the beam's wood's strength, an input beside the material's others.
+  header.push_back("range_from");
+  header.push_back(csv_column_of(field_of(&DesignValues::modulus_of_rupture)));
   return header;
 }
 
@@ -168,6 +172,8 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
   row.push_back(v.clearance.in_shot ? csv_number(*v.clearance.in_shot, digits) : "");
   for (const double value : {v.range_efficiency, v.range_efficiency_counterweight, v.pin_to_bend_deg, v.energy.sling})
     row.push_back(csv_number(value, digits));
+  row.push_back(assumed["range_from"].get<std::string>());
+  row.push_back(csv_number(engine.material.modulus_of_rupture, digits));
   return row;
 }
 

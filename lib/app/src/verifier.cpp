@@ -49,7 +49,7 @@ DesignInputs read_design_inputs(const std::string& text, const std::string& path
       in.single = false;
       for (std::size_t i = 0; i < members->size(); ++i) {
         const std::string where = "design[" + std::to_string(i) + "]";
-        DesignRows::Row row{0, nullptr, {}, ""};
+        DesignRows::Row row{0, nullptr, {}, "", ""};
         if (json_depth((*members)[i]) > max_json_depth - 1)
           row.error = where + " nests arrays or objects more than " + std::to_string(max_json_depth) + " levels deep; give " + expected;
         else
@@ -68,11 +68,12 @@ DesignInputs read_design_inputs(const std::string& text, const std::string& path
   in.single = json.is_object();
   // Moved, not copied: a copy of deeply nested input would recurse as deep as it nests.
   for (std::size_t i = 0; i < (in.single ? 1 : json.size()); ++i) {
-    in.rows.push_back({0, in.single ? std::move(json) : std::move(json[i]), {}, ""});
+    in.rows.push_back({0, in.single ? std::move(json) : std::move(json[i]), {}, "", ""});
     in.where.push_back(in.single ? "design" : (sweep ? "point[" : "design[") + std::to_string(i) + "]");
-    // A record of a failure (a sweep's point, a machine compare refused) fails again, as written.
+    // A record of a failure (a sweep's point with its varied value, a machine compare refused)
+    // fails again, as written: it holds an error and no engine, which needs both masses.
     const nlohmann::json& row = in.rows.back().design;
-    if (row.is_object() && row.contains("error") && row["error"].is_string() && !row.contains("engine") && !row.contains("L1"))
+    if (row.is_object() && row.contains("error") && row["error"].is_string() && !row.contains("engine") && !(row.contains("M") && row.contains("m")))
       in.rows.back().error = in.where.back() + " failed where it was written: " + row["error"].get<std::string>();
   }
   return in;
@@ -97,7 +98,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   if (record.mb_from_D) engine.mb = wood_beam_mass(engine);  // in the wood of the run
   ShotSettings settings = check.settings;  // the run's release over the design's own
   double tolerance = check.tolerance;
-  if (check.given && gives_any(record.settings)) {  // the design's settings (a record's), under the caller's
+  if (check.given) {  // the design's settings (a record's), under the caller's
     ShotSettings own = shot_settings(overlay(record.settings, *check.given));
     own.release_at = settings.release_at;
     own.loads = settings.loads;
@@ -297,6 +298,7 @@ std::string comparison_table(const std::vector<MachineComparison>& comparison, U
 
 std::vector<MachineComparison> compare_design(DesignValues values, const std::string& where, const SettingsValues& settings, DesignCheck check) {
   check.settings = shot_settings(settings);
+  check.given.reset();  // `settings` are the design's own with the caller's over them
   check.settings.release_at = release_of(values, where);
   // Machines are compared as contest ranks them and the peers shoot them: for range, unless the quality is given.
   if (!settings.quality && !settings.n) check.settings.criterion.release = Release::range;

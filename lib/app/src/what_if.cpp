@@ -48,8 +48,12 @@ std::vector<WhatIfPoint> run_what_if(const DesignValues& values, const std::stri
       grid.size(), threads,
       [&](std::size_t i) {
         points[i].value = grid[i];
-        DesignValues at = values;
-        at.*field.member = grid[i];
+        // The value laid over the design as its flag would be (overlay_flags): what it fixes
+        // another way goes with it (a record's F beside its L3, an H beside L1 and theta_i).
+        DesignValues value;
+        value.*field.member = grid[i];
+        std::vector<std::string> unsaid;  // the sweep's own change, said by its table
+        DesignValues at = overlay_flags(values, value, where, unsaid);
         at.R.reset(), at.T.reset();  // a capacity the design carries (the calculator's) is one engine's; each point is another
         try {
           points[i].report = check_design(engine_record(at, where), check);

@@ -37,8 +37,14 @@ Engine with_friction(const Engine& engine, FrictionFit fitted, double value) {
 FrictionFit friction_fit_of(const Engine& engine) {
   const EngineParts& p = engine.parts;
   const bool has_friction = p.axle.friction > 0 || p.hinge.friction > 0 || p.trough_friction > 0;
-  // A pin of radius 0 has no friction's torque: one pin's radius is enough, the other's 0.
-  if (!has_friction && !(p.axle.radius > 0 || p.hinge.radius > 0))
+  // A pin of radius 0 has no friction's torque: one pin's radius is enough, the other's 0. The
+  // fixed machine's counterweight has no hinge to rub.
+  const bool hinge_rubs = p.hinge.radius > 0 && engine.machine != MachineKind::fixed;
+  if (!has_friction && !hinge_rubs && !(p.axle.radius > 0) && p.hinge.radius > 0)
+    throw Error(ErrorKind::usage,
+                "the fixed machine's counterweight has no hinge, so {{hinge_radius}} gives calibrate no pin to rub; give the axle's radius "
+                "{{axle_radius}}");
+  if (!has_friction && !hinge_rubs && !(p.axle.radius > 0))
     throw Error(ErrorKind::usage,
                 "calibrate fits the engine's friction: give its coefficients ({{axle_friction}}, {{hinge_friction}}, "
                 "{{trough_friction}}), whose common scale it fits, or a pin's radius ({{axle_radius}}, {{hinge_radius}} or both), "

@@ -45,14 +45,16 @@ nlohmann::json design_object(const nlohmann::json& given);
 /// a key "{{key}}" (where empty) or "where.key". Other keys are passed over.
 SettingsValues read_settings(const nlohmann::json& object, unsigned doors, const std::string& where);
 
-/// `over` laid over `base`: each setting that `over` gives replaces `base`'s; the air's details
-/// go with the air (an `over` that gives the air or one of its details replaces all of them).
+/// `over` laid over `base`: each setting that `over` gives replaces `base`'s, each of the air's
+/// details too; the air is on if either turns it on, unless `over` turns it off (vacuum), which
+/// drops `base`'s details.
 SettingsValues overlay(SettingsValues base, const SettingsValues& over);
 
 /// `flags` laid over a file's `values`: each value the flags give replaces the file's, and
 /// `notes` says so where it differs ("--L4 = 5 m replaces design.L4 = 4 m"). A value that the
-/// flag's fixes another way goes with it: --L3 drops the file's F, --F its L3, --theta a pivot
-/// height H the others' record carries, a taper the file's mb and D.
+/// flag's fixes another way goes with it: --L3 drops the file's F, --F its L3, a new geometry
+/// (--L1, --L2, --H, --theta) the F a record writes beside its L3, --theta or --L1 a pivot height
+/// H (but the whipper's, which is its own), a taper the file's mb and D.
 DesignValues overlay_flags(DesignValues values, const DesignValues& flags, const std::string& where, std::vector<std::string>& notes);
 
 /// The parts as built that do not depend on the engine's other values (complete's, CompletionRequest::parts):
@@ -104,9 +106,14 @@ struct DesignRows {
     nlohmann::json design;  ///< the engine keys as strings with units, for read_engine
     std::vector<std::string> passed;  ///< the pass-through cells
     std::string error;  ///< a row that cannot be read, or an "error" cell written upstream
+    std::string air_described;  ///< the verifier's "air" cell of a shot in air: described, not given
   };
   std::vector<Row> rows;
 };
+
+/// Why `row` makes no shot under the caller's settings `given` (empty: it may): it could not be
+/// read, failed upstream, or was shot in an air its CSV only describes and `given` sets none.
+std::string row_refusal(const DesignRows::Row& row, const SettingsValues& given);
 
 /// Reads CSV text: the engine's keys (with units in the header, "L1_m", or in the cells), R and
 /// T as the capacity to check, theta for theta_i_deg. The calculator's other columns (X, Y, Lb,

@@ -96,7 +96,7 @@ struct SettingsValues {
   std::optional<bool> range_from_release;  ///< Denny's range, from the release point
   bool air = false;
   bool vacuum = false;  ///< the air given as off (false, "vacuum"): so it replaces a design's own air (overlay)
-  bool drag_in_sling = false;  ///< the air acts before the release too
+  std::optional<bool> drag_in_sling;  ///< the air acts before the release too (given false: not, over a design's own)
   std::optional<double> air_density;  ///< [kg/m^3]
   std::optional<double> cd;  ///< the sphere's drag coefficient
   bool cd_of_reynolds = false;  ///< Cd(Re) of a smooth sphere instead of a constant Cd
@@ -112,8 +112,9 @@ struct SettingsValues {
 /// {{projectile}}, {{wind}} and {{drag_in_sling}}.
 ShotSettings shot_settings(const SettingsValues& values);
 
-/// Whether `values` gives any setting.
-bool gives_any(const SettingsValues& values);
+/// The settings a caller lays over each design's own (DesignCheck::given), checked as far as
+/// they go alone: a detail of the air without the air is left to the design's air.
+ShotSettings shot_settings_over_designs(SettingsValues values);
 
 /// The member of SettingsValues that a setting given as a number sets (target_level, wind,
 /// air_density, cd: a Monte Carlo run may spread them); nullptr for the others.

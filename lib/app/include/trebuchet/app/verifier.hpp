@@ -42,8 +42,9 @@ void check_fixed_beam_ratio(double l, const std::string& name);
 struct DesignCheck {
   ShotSettings settings;
   /// The settings as the caller was given them (its flags, a request's keys): a design's own
-  /// (EngineRecord::settings, a record's assumptions) are laid under them. Empty: the design's
-  /// own are not read.
+  /// (EngineRecord::settings, a record's assumptions) are laid under them, and the shot's
+  /// settings are theirs with the release and loads of `settings`. Empty: `settings` are the
+  /// shot's, and the design's own are not read.
   std::optional<SettingsValues> given;
   DesignValues material;  ///< its material rows (the flags', a request's top-level g, ...) over each design's own
   double tolerance = 0.02;  ///< relative, on a predicted R and T
@@ -88,8 +89,9 @@ struct MachineComparison {
 std::vector<MachineComparison> compare_machines(const EngineRecord& record, const DesignCheck& check);
 
 /// compare's run, as trebuchet-verify compare and api::compare take it: the design's `values`
-/// (`where` names them), built as each machine under `settings` (released where the range peaks
-/// unless they give quality or n), reported as `check` says. Throws Error(usage) for the whipper,
+/// (`where` names them), built as each machine under `settings` (the design's own with the
+/// caller's over them; released where the range peaks unless they give quality or n), reported as
+/// `check` says. Throws Error(usage) for the whipper,
 /// whose column compare builds from another machine's engine.
 std::vector<MachineComparison> compare_design(DesignValues values, const std::string& where, const SettingsValues& settings, DesignCheck check);
 
