@@ -60,6 +60,7 @@ int run_calibrate(const Options& flags) {
     std::vector<std::string> notes;
     SettingsValues own;
     values = overlay_flags(read_design_values(in.rows.front().design, where, nullptr, &own), o.design, where, notes);
+    for (std::string& note : settings_notes(own, flags.settings, where)) notes.push_back(std::move(note));
     print_notes(notes);
     o.settings = overlay(own, flags.settings);
   }

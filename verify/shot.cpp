@@ -58,6 +58,7 @@ int run_many(const Options& o, const DesignInputs& in, const DesignCheck& check)
           if (const std::string refusal = row_refusal(in.rows[i], o.settings); !refusal.empty()) throw Error(ErrorKind::usage, refusal);
           const EngineRecord record = read_engine(in.rows[i].design, in.where[i], &o.design);
           notes[i] = record.notes;
+          for (std::string& note : settings_notes(record.settings, o.settings, in.where[i])) notes[i].push_back(std::move(note));
           reports[i] = check_design(record, check);
         } catch (const Error& e) {
           errors[i] = e;
@@ -133,6 +134,7 @@ DesignValues one_design(const Options& o, const std::string& subcommand, std::st
   std::vector<std::string> notes;
   // The flags over the file's values (--machine builds the file's design as that machine), and its settings under theirs.
   const DesignValues values = overlay_flags(read_design_values(in.rows.front().design, where, &passed, &own), o.design, where, notes);
+  for (std::string& note : settings_notes(own, o.settings, where)) notes.push_back(std::move(note));
   print_notes(notes);
   settings = overlay(own, o.settings);
   return values;
@@ -165,8 +167,11 @@ int run_shot(const Options& o, bool fit) {
                 "--series and --plot name the same path '" + o.plot + "'; give the series a file and the pictures a folder of their own");
   if (!o.input.empty() && !in.single) return run_many(o, in, check);
 
+  if (!o.input.empty())
+    if (const std::string refusal = row_refusal(in.rows.front(), o.settings); !refusal.empty()) throw Error(ErrorKind::usage, refusal);
   const EngineRecord record = o.input.empty() ? engine_record(o.design, "") : read_engine(in.rows.front().design, in.where.front(), &o.design);
   print_notes(record.notes);
+  if (!o.input.empty()) print_notes(settings_notes(record.settings, o.settings, in.where.front()));
   const DesignReport report = check_design(record, check);
   if (o.format == Format::json)
     std::cout << pretty_json(report.json);

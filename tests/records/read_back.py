@@ -113,11 +113,13 @@ if changed["engine"]["H"] != 5.0:
 # One detail of the air over a record in air keeps the others; --air=false turns it off.
 with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
     json.dump(shot, f)
-calm, _ = run([f.name, "--wind", "0m/s"])
+calm, said = run([f.name, "--wind", "0m/s"])
 expected = dict(shot["assumptions"]["air"], wind=0.0)
-print("--wind 0m/s over the record's air:", calm["assumptions"]["air"])
+print("--wind 0m/s over the record's air:", calm["assumptions"]["air"], said.strip())
 if calm["assumptions"]["air"] != expected or calm["assumptions"]["target_level"] != shot["assumptions"]["target_level"]:
     failures.append("--wind over a record in air: the other details or settings were lost")
+if "--wind 0 m/s replaces design.wind = 3 m/s" not in said:
+    failures.append("--wind over a record in air: no note of the wind it replaces")
 still, _ = run([f.name, "--air=false"])
 if still["assumptions"]["air"] != "vacuum":
     failures.append("--air=false over a record in air did not shoot it in vacuum")

@@ -184,6 +184,32 @@ SettingsValues overlay(SettingsValues base, const SettingsValues& over) {
   return base;
 }
 
+std::vector<std::string> settings_notes(const SettingsValues& own, const SettingsValues& over, const std::string& where) {
+  std::vector<std::string> notes;
+  const auto say = [&](const char* key, const std::string& given, const std::string& replaced) {
+    if (given != replaced) notes.push_back("{{" + std::string(key) + "}} " + given + " replaces " + engine_key_name(where, key) + " = " + replaced);
+  };
+  const auto number = [&](const char* key, const std::optional<double>& mine, const std::optional<double>& theirs, UnitDimension dimension) {
+    if (mine && theirs) say(key, quantity_text(*theirs, dimension, UnitSystem::si, 6), quantity_text(*mine, dimension, UnitSystem::si, 6));
+  };
+  using D = UnitDimension;
+  if (own.quality && over.quality) say("quality", release_name(*over.quality), release_name(*own.quality));
+  number("n", own.n, over.n, D::dimensionless);
+  number("tol", own.tol, over.tol, D::dimensionless);
+  number("rtol", own.rtol, over.rtol, D::dimensionless);
+  number("atol", own.atol, over.atol, D::dimensionless);
+  number("target_level", own.target_level, over.target_level, D::length);
+  if (own.range_from_release && over.range_from_release)
+    say("range_from", *over.range_from_release ? "release" : "pivot", *own.range_from_release ? "release" : "pivot");
+  if (own.air && over.vacuum)
+    notes.push_back("{{air}}=false replaces the air " + (where.empty() ? "the design" : where) + " gives: it flies in vacuum");
+  number("air_density", own.air_density, over.air_density, D::density);
+  number("cd", own.cd, over.cd, D::dimensionless);
+  number("projectile", own.projectile, over.projectile, D::density);
+  number("wind", own.wind, over.wind, D::speed);
+  return notes;
+}
+
 DesignValues overlay_flags(DesignValues values, const DesignValues& flags, const std::string& where, std::vector<std::string>& notes) {
   using V = DesignValues;
   const auto say = [&](const InputField& flag, const InputField& replaced) {

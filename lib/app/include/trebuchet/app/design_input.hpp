@@ -50,6 +50,10 @@ SettingsValues read_settings(const nlohmann::json& object, unsigned doors, const
 /// drops `base`'s details.
 SettingsValues overlay(SettingsValues base, const SettingsValues& over);
 
+/// What laying `over` on a design's own settings `own` (named in `where`) changes, a note each
+/// ("--wind 0 m/s replaces design.wind = 5 m/s"), as overlay_flags says it of the engine's values.
+std::vector<std::string> settings_notes(const SettingsValues& own, const SettingsValues& over, const std::string& where);
+
 /// `flags` laid over a file's `values`: each value the flags give replaces the file's, and
 /// `notes` says so where it differs ("--L4 = 5 m replaces design.L4 = 4 m"). A value that the
 /// flag's fixes another way goes with it: --L3 drops the file's F, --F its L3, a new geometry
