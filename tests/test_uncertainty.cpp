@@ -2,6 +2,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "trebuchet/error.hpp"
@@ -25,6 +27,29 @@ TEST_CASE("ranges and spreads read with their units", "[uncertainty]") {
   CHECK(!parse_spread("3.5m", UnitDimension::length, "--L4"));
   CHECK_THROWS_WITH(parse_spread("3.5t..2.5t", UnitDimension::mass, "--M"), Catch::Contains("not a range from low to high"));
   CHECK_THROWS_WITH(parse_spread("3.5m..4kg", UnitDimension::length, "--L4"), Catch::Contains("is a mass"));
+}
+
+TEST_CASE("a spread written as text reads back to the same bits, in every dimension a run may spread", "[uncertainty]") {
+  // A run's report writes its spreads as text (spread_text) and reads them again: any lost bit
+  // would draw other numbers. The ends are chosen so that a short or rounded form would not do.
+  const std::vector<std::pair<Spread, UnitDimension>> cases = {
+      {{Spread::Kind::uniform, 0.1 + 0.2, 0.7}, UnitDimension::length}, {{Spread::Kind::normal, 1900.0000000000002, 1e-7}, UnitDimension::mass},
+      {{Spread::Kind::uniform, -60, -54.3}, UnitDimension::length},  // a target level below the base
+      {{Spread::Kind::normal, 35, 2.5}, UnitDimension::angle},          {{Spread::Kind::uniform, -3, 1e-300}, UnitDimension::speed},
+      {{Spread::Kind::normal, 1.225, 0.05}, UnitDimension::density},    {{Spread::Kind::uniform, 0.4, 0.6}, UnitDimension::dimensionless},
+      {{Spread::Kind::normal, 45, 5}, UnitDimension::inertia},
+  };
+  for (const auto& [spread, dimension] : cases) {
+    const std::string text = spread_text(spread, dimension);
+    INFO(text);
+    const auto read = parse_spread(text, dimension, "M");
+    REQUIRE(read);
+    CHECK(read->kind == spread.kind);
+    CHECK(read->a == spread.a);
+    CHECK(read->b == spread.b);
+  }
+  CHECK(spread_text({Spread::Kind::uniform, 1900, 2100}, UnitDimension::mass) == "1900kg..2100kg");
+  CHECK(spread_text({Spread::Kind::normal, 3.55, 0.2}, UnitDimension::length) == "3.55m\u00b10.2m");
 }
 
 TEST_CASE("a Monte Carlo run is the same on any number of threads, and new with a new seed", "[uncertainty]") {

@@ -58,21 +58,13 @@ int main(int argc, char** argv) {
     if (!options.input.empty() && options.input != "-" && !std::filesystem::exists(options.input, unreadable_input))
       if (const std::string hint = did_you_mean(app, options.input); !hint.empty())
         throw Error(ErrorKind::usage, "there is no file '" + options.input + "' to read" + hint);
-    // --samples and --seed set a Monte Carlo run, --claim and --draws report one: only a run with a range or a spread has them.
-    for (CLI::App* s : {sub.shot, sub.complete}) {
-      if (!s->parsed() || !options.spreads.empty()) continue;
-      if (s->count("--samples") > 0 || s->count("--seed") > 0)
-        throw Error(ErrorKind::usage,
-                    "--samples and --seed set a Monte Carlo run; give a value as a range (2.5t..3.5t) or a spread "
-                    "(3.5m±0.2m), or drop them");
-      if (s->count("--claim") > 0 || s->count("--draws") > 0)
-        throw Error(ErrorKind::usage,
-                    "--claim and --draws report a Monte Carlo run; give a value as a range (2.5t..3.5t) or a spread "
-                    "(3.5m±0.2m), or drop them");
-    }
+    // --samples and --seed set a Monte Carlo run, --claim and --draws report one: only a run with a
+    // range or a spread has them (a design file's, which shot reads, or a flag's).
+    if ((sub.shot->parsed() && options.input.empty()) || sub.complete->parsed())
+      if (options.spreads.empty()) refuse_monte_carlo_settings(options);
     if (options.all_machines && !sub.contest->parsed())
       throw Error(ErrorKind::usage, "--machine all is contest's (each machine's best side by side); name one machine: " + machine_names());
-    if (sub.shot->parsed()) return options.spreads.empty() ? run_shot(options, false) : run_monte_carlo(options, false);
+    if (sub.shot->parsed()) return options.spreads.empty() || !options.input.empty() ? run_shot(options, false) : run_monte_carlo(options, false);
     if (sub.fit->parsed()) return run_shot(options, true);
     if (sub.optimize->parsed()) return run_optimize(options);
     if (sub.derive_table->parsed()) return run_derive_table(options);

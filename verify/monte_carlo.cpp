@@ -18,8 +18,58 @@
 
 namespace trebuchet::verify {
 
-int run_monte_carlo(const Options& o, bool complete) {
-  if (!o.input.empty()) throw Error(ErrorKind::usage, "ranges and spreads are for values given as flags; drop the file '" + o.input + "'");
+void refuse_monte_carlo_settings(const Options& o) {
+  if (o.settings.samples || o.settings.seed)
+    throw Error(ErrorKind::usage,
+                "--samples and --seed set a Monte Carlo run; give a value as a range (2.5t..3.5t) or a spread "
+                "(3.5m±0.2m), or drop them");
+  if (o.settings.claim || !o.draws.empty())
+    throw Error(ErrorKind::usage,
+                "--claim and --draws report a Monte Carlo run; give a value as a range (2.5t..3.5t) or a spread "
+                "(3.5m±0.2m), or drop them");
+}
+
+bool holds_spreads(const nlohmann::json& design) {
+  std::vector<SpreadInput> spreads;
+  take_spreads(design_object(design), op_shot, "design", spreads);
+  return !spreads.empty();
+}
+
+namespace {
+
+// The run of a design file's (its values, spreads and settings, or a run's report read back)
+// with the flags' values, spreads and settings over its own, each change a note.
+MonteCarloRequest file_run(const Options& o, const nlohmann::json& design, const std::string& where) {
+  nlohmann::json passed;
+  MonteCarloRequest run = read_monte_carlo_design(design, where, passed);
+  if (run.values.R || run.values.T)
+    throw Error(ErrorKind::usage,
+                where +
+                    " gives R and T, which check one shot against a predicted capacity; a Monte Carlo run reports the spread of "
+                    "R and T instead: drop them from the design");
+  std::vector<std::string> notes;
+  // A file's spread that a flag gives (one value or its own spread) is no longer drawn.
+  std::erase_if(run.spreads, [&](const SpreadInput& s) {
+    const bool given = (s.value ? o.design.*s.value : o.settings.*s.setting).has_value();
+    if (!given) return false;
+    notes.push_back("{{" + s.input.name + "}} given replaces " + where + "." + s.input.name + " = " + spread_text(s.input.spread, s.input.dimension));
+    if (s.value)
+      run.values.*s.value = std::nullopt;
+    else
+      run.settings.*s.setting = std::nullopt;
+    return true;
+  });
+  run.values = overlay_flags(run.values, o.design, where, notes);
+  for (std::string& note : settings_notes(run.settings, o.settings, where)) notes.push_back(std::move(note));
+  print_notes(notes);
+  run.settings = overlay(run.settings, o.settings);
+  for (const SpreadInput& spread : o.spreads) add_spread(run.spreads, spread);
+  return run;
+}
+
+}  // namespace
+
+int run_monte_carlo(const Options& o, bool complete, const nlohmann::json* design, const std::string& where) {
   if (!o.series.empty()) throw Error(ErrorKind::usage, "--series writes the motion of one shot; a Monte Carlo run has many");
   if (!o.draws.empty()) refuse_output_over_input(o.draws, "draws", {o.input});
   if (o.design.R || o.design.T)
@@ -29,11 +79,11 @@ int run_monte_carlo(const Options& o, bool complete) {
   // The run's assumptions are those of each uncertain value at its first number (a range's low
   // end, a spread's mean). A design that is bad input there is refused before the run, with the
   // exit code of bad input: a range must hold only values that make an engine.
-  const MonteCarloRequest request = monte_carlo_request(o, complete);
+  const MonteCarloRequest request = design ? file_run(o, *design, where) : monte_carlo_request(o, complete);
   const ShotSettings settings = shot_settings(with_draws(request, [](const Spread& s) { return s.a; }).settings);
   const std::int64_t shots = shots_per_sample(request);
-  const int samples = o.settings.samples.value_or(complete ? default_completion_samples : default_shot_samples);
-  const std::uint64_t seed = o.settings.seed.value_or(1);
+  const int samples = request.settings.samples.value_or(complete ? default_completion_samples : default_shot_samples);
+  const std::uint64_t seed = request.settings.seed.value_or(1);
   check_monte_carlo_work(samples, shots, complete ? "completions" : "shots");
   const auto start = std::chrono::steady_clock::now();
   const MonteCarloSummary summary = trebuchet::run_monte_carlo(
@@ -52,7 +102,8 @@ int run_monte_carlo(const Options& o, bool complete) {
                                 settings.air.has_value(),
                                 seconds,
                                 thread_count(o.threads, static_cast<std::size_t>(summary.samples)),
-                                o.settings.claim};
+                                request.settings.claim,
+                                monte_carlo_request_json(request, samples, seed)};
   if (o.format == Format::json) {
     std::cout << pretty_json(monte_carlo_json(report));
   } else if (o.format == Format::csv) {

@@ -19,22 +19,6 @@ struct Slot {
 };
 std::optional<double>& slot_in(Options& o, const Slot& slot) { return slot.value ? o.design.*slot.value : o.settings.*slot.setting; }
 
-// The order in which uncertain values are drawn and listed, whatever the order they were given
-// in: the same command draws the same numbers. A shot's values in the table's order, the
-// settings that may be spread, then what a completion alone takes (Lb, H, l).
-int draw_rank(const std::string& name) {
-  static const std::vector<std::string> order = [] {
-    std::vector<std::string> names;
-    for (const InputField& field : input_fields())
-      if (field.operations & op_shot) names.emplace_back(field.flag);
-    for (Setting id : {Setting::target_level, Setting::wind, Setting::air_density}) names.emplace_back(setting_row(id).flag);
-    for (const InputField& field : input_fields())
-      if (!(field.operations & op_shot)) names.emplace_back(field.flag);
-    return names;
-  }();
-  return static_cast<int>(std::find(order.begin(), order.end(), name) - order.begin());
-}
-
 // A value with a unit into `slot`, read by `read`. With `spreads`, it may be a range or a spread
 // (uncertainty.hpp): the slot then holds its first number, and the spread is kept for the Monte
 // Carlo run.
@@ -51,9 +35,7 @@ CLI::Option* value_option(CLI::App* app, Options& o, const std::string& name, Sl
                           "engine's values, --theta, --psi-i, --target-level and the air, in shot and complete)");
         if (!spread) return read(text);
         slot_in(o, slot) = spread->a;
-        const auto after = std::find_if(o.spreads.begin(), o.spreads.end(),
-                                        [&](const SpreadInput& u) { return draw_rank(u.input.name) > draw_rank(name); });
-        o.spreads.insert(after, {{name, dimension, *spread}, slot.value, slot.setting});
+        add_spread(o.spreads, {{name, dimension, *spread}, slot.value, slot.setting});
       },
       help);
 }

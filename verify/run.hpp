@@ -7,7 +7,16 @@
 namespace trebuchet::verify {
 
 int run_shot(const Options& options, bool fit);  // shot.cpp: shot and fit
-int run_monte_carlo(const Options& options, bool complete);  // monte_carlo.cpp: a value given as a range or a spread
+/// monte_carlo.cpp: a run of shots (or, with `complete`, of completions) whose values are given as
+/// ranges or spreads: by the flags, or by the one design of a file (`design`, named `where`) with
+/// the flags' over it.
+int run_monte_carlo(const Options& options, bool complete, const nlohmann::json* design = nullptr, const std::string& where = "");
+
+/// Whether a design object (a run's report too, design_object) gives a value as a range or a spread.
+bool holds_spreads(const nlohmann::json& design);
+
+/// Refuses --samples, --seed, --claim and --draws for a run with no range or spread (Error(usage)).
+void refuse_monte_carlo_settings(const Options& options);
 int run_complete(const Options& options);  // complete.cpp
 int run_calibrate(const Options& options);  // calibrate.cpp
 int run_optimize(const Options& options);  // tables.cpp

@@ -165,7 +165,18 @@ int run_shot(const Options& o, bool fit) {
   if (!o.series.empty() && !o.plot.empty() && std::filesystem::weakly_canonical(o.series) == std::filesystem::weakly_canonical(o.plot))
     throw Error(ErrorKind::usage,
                 "--series and --plot name the same path '" + o.plot + "'; give the series a file and the pictures a folder of their own");
-  if (!o.input.empty() && !in.single) return run_many(o, in, check);
+  if (!o.input.empty() && !in.single) {
+    if (!o.spreads.empty())
+      throw Error(ErrorKind::usage,
+                  "ranges and spreads are for one design's Monte Carlo run, but " + source_name(o.input) + " holds " + std::to_string(count) +
+                      "; give one design, or each value as one number");
+    refuse_monte_carlo_settings(o);
+    return run_many(o, in, check);
+  }
+  // One design whose values (a file's or the flags') hold a range or a spread: its Monte Carlo run.
+  if (!fit && !o.input.empty() && in.rows.front().error.empty() && (!o.spreads.empty() || holds_spreads(in.rows.front().design)))
+    return run_monte_carlo(o, false, &in.rows.front().design, in.where.front());
+  if (!fit && !o.input.empty()) refuse_monte_carlo_settings(o);
 
   if (!o.input.empty())
     if (const std::string refusal = row_refusal(in.rows.front(), o.settings); !refusal.empty()) throw Error(ErrorKind::usage, refusal);

@@ -235,7 +235,7 @@ def complete(attested, **settings):
     return _call(_trebuchet.complete, dict(settings, attested=attested))
 
 
-def monte_carlo(design=None, *, attested=None, samples=10000, seed=1, threads=None, progress=False, **settings):
+def monte_carlo(design=None, *, attested=None, samples=None, seed=None, threads=None, progress=False, **settings):
     """A Monte Carlo run over values given as ranges ("2.5t..3.5t") or spreads ("3.5m±0.2m"), of
     shots (design) or completions (attested). The answer is the programs' report; its "draws"
     holds, as arrays over the samples in order, each drawn input under its key and R, T, eps and
@@ -246,7 +246,11 @@ def monte_carlo(design=None, *, attested=None, samples=10000, seed=1, threads=No
     The samples run in chunks on `threads` threads (default: the cores), each with the
     interpreter's lock released; the answer is the same on any number. Ctrl-C or a notebook's
     interrupt stops the run between chunks, with no thread left running, and raises
-    KeyboardInterrupt. progress=True shows how many samples are done, on stderr."""
+    KeyboardInterrupt. progress=True shows how many samples are done, on stderr.
+
+    samples defaults to 10000 shots or 1000 completions, seed to 1. A run's report given back as
+    its design (or attested) is the same run again: its ranges, spreads, settings, samples and
+    seed, with the keywords given here over them."""
     if (design is None) == (attested is None):
         raise TrebuchetError("give a design (for shots) or attested values (for completions), one of them", "usage", ["design", "attested"])
     parts = sorted(set(settings) & {"first", "count", "outcomes"})
@@ -255,9 +259,13 @@ def monte_carlo(design=None, *, attested=None, samples=10000, seed=1, threads=No
                              "usage", parts)
     if threads is not None and (isinstance(threads, bool) or not isinstance(threads, numbers.Integral) or threads < 1):
         raise TypeError(f"threads: {threads!r} is not a number of threads; give a whole number from 1 up, or None for the cores")
-    request = dict(settings, samples=samples, seed=seed)
-    request["design" if design is not None else "attested"] = design if design is not None else attested
-    _call(_trebuchet.monte_carlo, dict(request, first=0, count=0))  # the request checked once, before any thread starts
+    request = dict(settings)
+    request.update({key: value for key, value in (("samples", samples), ("seed", seed)) if value is not None})
+    key, given = ("design", design) if design is not None else ("attested", attested)
+    # A run's report given back is sent as its run, the part a request gives: its draws are arrays.
+    request[key] = given[key] if isinstance(given, dict) and "uncertain" in given and isinstance(given.get(key), dict) else given
+    # The request checked once, before any thread starts; it answers with the run's samples.
+    samples = _call(_trebuchet.monte_carlo, dict(request, first=0, count=0))["samples"]
     # A chunk is a few milliseconds of shots, or one completion (each a search of its own), so
     # that an interrupt waits for one chunk a thread at most.
     chunk = 1 if attested is not None else 16

@@ -69,7 +69,7 @@ def complete(attested: Design, *, quality: Quality = ..., release: Quality = ...
              air_density: Value = ..., cd: Union[float, str] = ..., projectile: Value = ..., wind: Value = ..., drag_in_sling: bool = ...,
              g: Value = ..., youngs_modulus: Value = ..., wood_density: Value = ..., modulus_of_rupture: Value = ..., rupture: Value = ...,
              beta2: Value = ...) -> Record: ...
-def monte_carlo(design: Optional[Design] = ..., *, attested: Optional[Design] = ..., samples: int = ..., seed: int = ...,
+def monte_carlo(design: Optional[Design] = ..., *, attested: Optional[Design] = ..., samples: Optional[int] = ..., seed: Optional[int] = ...,
                 threads: Optional[int] = ..., progress: bool = ..., claim: Value = ..., draws_csv: bool = ..., quality: Quality = ...,
                 release: Quality = ..., n: float = ..., stepper: str = ..., rtol: float = ..., atol: float = ..., target_level: Value = ...,
                 range_from: Literal["pivot", "release"] = ..., air: Air = ..., air_density: Value = ..., cd: Union[float, str] = ...,

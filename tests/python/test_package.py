@@ -100,6 +100,20 @@ def test_monte_carlo_threads_give_the_same_answer():
         trebuchet.monte_carlo(design, samples=10, threads=0)
 
 
+def test_a_monte_carlo_report_given_back_is_the_same_run():
+    # Its "design" holds the ranges and spreads as text, the spread wind in its air, the target
+    # level, the samples, seed and claim: given back, the same draws come again, bit for bit.
+    run = trebuchet.monte_carlo(dict(CA, M="2.9t..3.3t", L4="3.55m±0.1m"), air={"wind": "0m/s..4m/s"}, target_level="-5m", samples=60,
+                                seed=11, claim="280m", threads=2)
+    assert run["design"]["M"] == "2900kg..3300kg" and run["design"]["air"]["wind"] == "0m/s..4m/s" and run["design"]["seed"] == 11
+    again = trebuchet.monte_carlo(run, threads=1)
+    assert again["samples"] == 60 and again["percentiles"] == run["percentiles"] and again["claim"] == run["claim"]
+    assert np.array_equal(again["samples_R"], run["samples_R"], equal_nan=True)
+    # A keyword over the report's own changes that one thing: a fixed wind is no longer drawn.
+    calm = trebuchet.monte_carlo(run, air={"wind": "0m/s"}, samples=20)
+    assert [u["option"] for u in calm["uncertain"]] == ["L4", "M"] and calm["design"]["air"]["wind"] == 0
+
+
 def test_to_frame_gives_pandas_a_row_a_sample_a_moment_or_a_record():
     pd = pytest.importorskip("pandas")
     run = trebuchet.monte_carlo(dict(CA, M="2.9t..3.3t"), samples=50, threads=1)

@@ -2,10 +2,12 @@
 trebuchet-verify as its input, is shot again with the settings it carries, and the shot's
 figures must agree bit for bit. Not a snapshot: both sides are today's program, and the test
 fails if any engine value or setting is lost or rounded on the way (a lost wind or target level
-moves R by metres, a rounded L4 moves its last digits).
+moves R by metres, a rounded L4 moves its last digits). A Monte Carlo run's report reads back
+as its run: the same draws and percentiles.
 
 Usage: read_back.py VERIFY"""
 import json
+import shlex
 import subprocess
 import sys
 import tempfile
@@ -138,6 +140,41 @@ given = subprocess.run([VERIFY, f.name, "--air"], capture_output=True, text=True
 print("a CSV row in air:", refused.returncode, refused.stderr.strip())
 if refused.returncode != 2 or "--air=false" not in refused.stderr or given.returncode != 0:
     failures.append("a CSV row shot in air: not refused by name, or refused although --air was given")
+
+# A Monte Carlo run's report reads back as its run: its "design" gives the ranges and spreads as
+# text, the settings (a spread wind in its air, the target level, a given release) and the run's
+# samples, seed and claim, so the same draws come again, bit for bit, on one thread as on two.
+# The draws are compared column by column: the flags' run names them "--M", the file's "M".
+# The file's keys come in another order than the table's (JSON's "axle_friction" before "mb");
+# the run draws in the table's either way.
+SPREADS = ["--mb", "90kg..110kg", "--M", "1900kg..2100kg", "--L4", "5m±0.1m", *ENGINE[:6], "--m", "10kg", "--air", "--wind", "1m/s..3m/s",
+           "--axle-friction", "0.05..0.15", "--axle-radius", "2cm",
+           "--target-level", "-3m", "--release-angle", "40", "--samples", "300", "--seed", "7", "--claim", "440m", "--threads", "2"]
+report, _ = run(SPREADS)
+with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+    json.dump(report, f)
+again, _ = run([f.name, "--threads", "1"])
+same_draws = [again["draws"][k] for k in again["draws"]] == [report["draws"][k] for k in report["draws"]]
+print(f"Monte Carlo report: R p50 {report['percentiles']['R']['p50']!r} read back as {again['percentiles']['R']['p50']!r}; "
+      f"draws the same: {same_draws}; claim {report['claim']['probability']!r} read back as {again['claim']['probability']!r}")
+for key in ("percentiles", "design", "samples", "seed", "failures", "assumptions", "air"):
+    if again[key] != report[key]:
+        failures.append(f"Monte Carlo report: {key} differs when read back")
+if not same_draws or again["claim"]["probability"] != report["claim"]["probability"]:
+    failures.append("Monte Carlo report: its draws or its claim's odds differ when read back")
+# complete's run takes its attested values as flags: its report says which, and they run it again.
+completion, _ = run(["complete", "--Lb", "9.5m", "--M", "2.5t..3.5t", "--m", "50kg", "--air", "--target-level", "5m", "--samples", "20"])
+with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+    json.dump(completion, f)
+said = subprocess.run([VERIFY, f.name], capture_output=True, text=True)
+command = said.stderr.split("run it again with trebuchet-verify ", 1)[-1].strip()
+print("complete's Monte Carlo report:", said.returncode, command)
+if said.returncode != 2 or not command.startswith("complete "):
+    failures.append("complete's Monte Carlo report: not refused with the flags that run it again")
+else:
+    rerun, _ = run(shlex.split(command))
+    if rerun["percentiles"] != completion["percentiles"] or rerun["attested"] != completion["attested"]:
+        failures.append("complete's Monte Carlo report: its flags do not run the same run again")
 
 if failures:
     print("FAILED:", *failures, sep="\n  ")

@@ -121,26 +121,24 @@ DesignValues with_material(DesignValues values, const DesignValues& material) {
   return values;
 }
 
-// The values of a request's object (a design's or the attested) that `operation` takes, each
-// given as a range or a spread taken at `at`(spread) and, with `spreads`, kept there with where
-// its draws go. A key near an input's name is refused with that name.
-DesignValues values_of(const json& object, unsigned operation, const std::string& where, const std::function<double(const Spread&)>& at, json& passed,
-                       std::vector<SpreadInput>* spreads = nullptr) {
-  if (!object.is_object()) throw Error(ErrorKind::usage, where + ": expected a JSON object");
-  json plain = object;
-  for (const auto& [key, value] : object.items()) {
-    const InputField* field = find_field(key);
-    if (!field || !(field->operations & operation) || field->group == FieldGroup::capacity || !value.is_string()) continue;
-    if (const auto spread = parse_spread(value.get<std::string>(), field->dimension, where + "." + key)) {
-      plain[key] = at(*spread);
-      if (spreads) spreads->push_back({{key, field->dimension, *spread}, field->member, nullptr});
-    }
-  }
-  if (operation != op_complete) return read_design_values(plain, where, &passed);
+// The attested values of a request's object (or of complete's Monte Carlo report, read back),
+// each given as a range or a spread taken at `at`(spread) and, with `spreads`, kept there with
+// where its draws go; the settings it gives (a report's) go to `settings`. A key near an input's
+// name is refused with that name.
+DesignValues attested_of(const json& given, const std::string& where, const std::function<double(const Spread&)>& at, json& passed,
+                         SettingsValues& settings, std::vector<SpreadInput>* spreads = nullptr) {
+  if (!given.is_object()) throw Error(ErrorKind::usage, where + ": expected a JSON object");
+  const json& object = given.contains("uncertain") && given.contains("attested") ? given["attested"] : given;
+  std::vector<SpreadInput> taken;
+  json plain = take_spreads(object, op_complete, where, taken);
+  for (const SpreadInput& spread : taken) plain[spread.input.name] = at(spread.input.spread);
+  if (spreads) *spreads = taken;
+  settings = read_settings(plain, req_monte_carlo, where);
   // Attested values: a near miss is refused, any other key passes through, named in the answer.
   const std::vector<std::string> known = input_names(op_complete);
   for (const auto& [key, value] : object.items())
     if (std::find(known.begin(), known.end(), key) == known.end()) {
+      if (const SettingRow* row = find_setting(key, req_monte_carlo); row && read_by_table(row->id)) continue;  // read above
       // An input of a shot that a completion does not take is refused by name, never passed over.
       if (const InputField* field = find_field(key))
         throw Error(ErrorKind::usage,
@@ -351,9 +349,10 @@ ordered_json complete(const json& request) {
     throw Error(ErrorKind::usage,
                 "{{attested}} is missing; give what the source attests, e.g. {\"attested\": {\"Lb\": \"9.5m\", \"M\": \"3t\", \"m\": \"50kg\"}}");
   json passed = json::object();
-  const DesignValues attested = with_material(values_of(request["attested"], op_complete, "attested", middle, passed),
+  SettingsValues own;
+  const DesignValues attested = with_material(attested_of(request["attested"], "attested", middle, passed, own),
                                               material_of_request(request, op_complete));
-  ordered_json answer = completion_answer(completion_request(attested, settings_of(request, req_complete)));
+  ordered_json answer = completion_answer(completion_request(attested, shot_settings(overlay(own, settings_values_of(request, req_complete)))));
   if (!passed.empty()) answer["passed"] = passed;  // the attested keys no reader knows, as given
   return answer;
 }
@@ -364,15 +363,25 @@ ordered_json monte_carlo(const json& request) {
   if (completes == request.contains("design"))
     throw Error(ErrorKind::usage, "give {{design}} (a shot of each sample) or {{attested}} (a completion of each sample), one of them");
   const std::string where = completes ? "attested" : "design";
-  MonteCarloRequest run;
   json passed = json::object();
   const unsigned operation = completes ? op_complete : op_shot;
-  run.values = with_material(values_of(
-                                 request[where], operation, where, [](const Spread& s) { return s.a; }, passed, &run.spreads),
-                             material_of_request(request, operation));
+  MonteCarloRequest run;
+  if (completes) {
+    run.values = attested_of(
+        request[where], where, [](const Spread& s) { return s.a; }, passed, run.settings, &run.spreads);
+    run.where = where;
+  } else {
+    run = read_monte_carlo_design(request[where], where, passed);  // a design, or a run's report read back
+  }
+  run.values = with_material(run.values, material_of_request(request, operation));
   run.completes = completes;
-  run.where = where;
-  run.settings = settings_values_of(request, req_monte_carlo);
+  // The request's settings over the design's own, each may be a range or a spread too (the wind,
+  // say); a setting the request gives is no longer drawn from the design's.
+  std::vector<SpreadInput> spread_settings;
+  const SettingsValues given = settings_values_of(take_spreads(request, op_shot, "", spread_settings), req_monte_carlo);
+  run.settings = overlay(run.settings, given);
+  std::erase_if(run.spreads, [&](const SpreadInput& s) { return s.setting && given.*s.setting; });
+  for (const SpreadInput& spread : spread_settings) add_spread(run.spreads, spread);
   if (run.spreads.empty())  // as the programs refuse a run of identical samples
     throw Error(ErrorKind::usage,
                 "monte_carlo samples the values of {{" + where +
@@ -450,7 +459,8 @@ ordered_json monte_carlo(const json& request) {
                                 settings.air.has_value(),
                                 0,
                                 1,
-                                claim};
+                                claim,
+                                monte_carlo_request_json(run, samples, seed)};
   ordered_json answer = monte_carlo_json(report);
   answer.erase("wall_time_s");  // a time is the caller's to measure; the report is the same on any machine
   // Every sample's drawn inputs and outcomes as the programs' --draws writes them, to 17 digits: the run's own numbers.

@@ -46,8 +46,76 @@ std::optional<double> read_value(const nlohmann::json& object, const std::string
     if (!std::isfinite(number)) throw Error(ErrorKind::bad_number, name + ": " + brief_json(value) + " is not a finite number");
     return number;
   }
-  if (value.is_string()) return parse_value(value.get<std::string>(), dimension, name);
+  if (value.is_string()) {
+    const std::string text = value.get<std::string>();
+    if (parse_spread(text, dimension, name))
+      throw Error(ErrorKind::usage,
+                  name + ": '" + text +
+                      "' is a range or a spread; give one value (ranges and spreads are for one design's Monte Carlo run: "
+                      "shot with a single design, or monte_carlo)");
+    return parse_value(text, dimension, name);
+  }
   throw Error(ErrorKind::bad_number, name + ": " + brief_json(value) + " is neither a number nor a value with a unit like \"6.13m\"");
+}
+
+namespace {
+
+// The settings a Monte Carlo run may spread (number_slot), in the order it draws them.
+constexpr Setting spread_settings[] = {Setting::target_level, Setting::wind, Setting::air_density, Setting::cd};
+
+// A spread's place in the order of add_spread.
+std::size_t draw_rank(const SpreadInput& spread) {
+  std::size_t rank = 0;
+  for (const bool shot : {true, false}) {
+    for (const InputField& field : input_fields())
+      if (static_cast<bool>(field.operations & op_shot) == shot) {
+        if (spread.value == field.member) return rank;
+        ++rank;
+      }
+    if (shot)
+      for (const Setting id : spread_settings) {
+        if (spread.setting == number_slot(id)) return rank;
+        ++rank;
+      }
+  }
+  return rank;
+}
+
+}  // namespace
+
+void add_spread(std::vector<SpreadInput>& spreads, SpreadInput spread) {
+  const std::size_t rank = draw_rank(spread);
+  const auto after = std::find_if(spreads.begin(), spreads.end(), [&](const SpreadInput& s) { return draw_rank(s) > rank; });
+  spreads.insert(after, std::move(spread));
+}
+
+nlohmann::json take_spreads(const nlohmann::json& object, unsigned operation, const std::string& where, std::vector<SpreadInput>& spreads) {
+  if (!object.is_object()) return object;
+  nlohmann::json plain = object;
+  // The spread of `value`, named `key` in messages, at its first number in `slot`; false for one value.
+  using Value = std::optional<double> DesignValues::*;
+  using SettingValue = std::optional<double> SettingsValues::*;
+  const auto take = [&](nlohmann::json& slot, const std::string& key, UnitDimension dimension, Value value, SettingValue setting) {
+    if (!slot.is_string()) return;
+    const auto given = parse_spread(slot.get<std::string>(), dimension, engine_key_name(where, key));
+    if (!given) return;
+    slot = given->a;
+    add_spread(spreads, SpreadInput{UncertainInput{key, dimension, *given}, value, setting});
+  };
+  for (auto& [key, value] : plain.items()) {
+    const InputField* field = find_field(key);
+    if (field && (field->operations & operation) && field->group != FieldGroup::capacity && field->group != FieldGroup::material)
+      take(value, key, field->dimension, field->member, nullptr);
+  }
+  for (const Setting id : spread_settings) {
+    if (!(operation & op_shot)) break;  // the attested values hold no settings
+    const SettingRow& row = setting_row(id);
+    if (plain.contains(row.key)) take(plain[row.key], row.key, row.dimension, nullptr, number_slot(id));
+    for (const std::string alias : row.aliases)
+      if (alias.rfind("air.", 0) == 0 && plain.contains("air") && plain["air"].is_object() && plain["air"].contains(alias.substr(4)))
+        take(plain["air"][alias.substr(4)], row.key, row.dimension, nullptr, number_slot(id));
+  }
+  return plain;
 }
 
 void refuse_near_miss(const std::string& key, const std::vector<std::string>& known, const std::string& where) {
@@ -57,9 +125,10 @@ void refuse_near_miss(const std::string& key, const std::vector<std::string>& kn
 }
 
 bool is_record(const nlohmann::json& given) {
+  const auto holds_object = [&](const char* key) { return given.contains(key) && given[key].is_object(); };
   return given.is_object() &&
-      ((given.contains("engine") && given["engine"].is_object()) ||
-       (given.contains("assumptions") && given["assumptions"].is_object() && given.contains("R_vacuum")));
+      (holds_object("engine") || (holds_object("assumptions") && given.contains("R_vacuum")) ||
+       (given.contains("uncertain") && (holds_object("design") || holds_object("attested"))));
 }
 
 namespace {
@@ -80,6 +149,35 @@ bool written_by_diameter(const nlohmann::json& engine, const nlohmann::json& air
 
 nlohmann::json design_object(const nlohmann::json& given) {
   if (!is_record(given)) return given;
+  if (given.contains("uncertain")) {  // a Monte Carlo run's report: the run as a request gives it
+    if (given.contains("design") && given["design"].is_object()) return given["design"];
+    std::vector<std::string> flags;
+    const auto flag = [&](const char* name, const nlohmann::json& value) {
+      if (value.is_boolean()) {
+        if (value.get<bool>()) flags.emplace_back(name);
+      } else if (value.is_string() || value.is_number()) {
+        const std::string text = value.is_string() ? value.get<std::string>() : format_number(value.get<double>());
+        const bool plain = text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789.+-/%\xC2\xB1") == std::string::npos;
+        flags.push_back(std::string(name) + (plain ? " " + text : " '" + text + "'"));  // quoted for a shell where it must be
+      }
+    };
+    for (const auto& [key, value] : given["attested"].items()) {
+      const InputField* field = find_field(key);
+      if (field) {
+        flag(field->flag, value);
+      } else if (key == "air" && value.is_object()) {
+        flags.emplace_back("--air");
+        for (const auto& [detail, detail_value] : value.items())
+          if (const SettingRow* row = find_setting("air." + detail, cmd_complete)) flag(row->flag, detail_value);
+      } else if (const SettingRow* row = find_setting(key, cmd_complete)) {
+        if (*row->flag && !(key == "air" && value == "vacuum")) flag(row->flag, value);
+      }
+    }
+    throw Error(ErrorKind::usage,
+                "this is the report of complete's Monte Carlo run, which takes its attested values as flags; run it again with "
+                "trebuchet-verify complete " +
+                    join(flags, " "));
+  }
   // The engine: its own object, or (a completion's record) the record's keys, less the shot's
   // range and energy, which are no claim.
   nlohmann::json design = given.contains("engine") && given["engine"].is_object() ? given["engine"] : given;
@@ -207,6 +305,9 @@ std::vector<std::string> settings_notes(const SettingsValues& own, const Setting
   number("cd", own.cd, over.cd, D::dimensionless);
   number("projectile", own.projectile, over.projectile, D::density);
   number("wind", own.wind, over.wind, D::speed);
+  if (own.samples && over.samples) say("samples", std::to_string(*over.samples), std::to_string(*own.samples));
+  if (own.seed && over.seed) say("seed", std::to_string(*over.seed), std::to_string(*own.seed));
+  number("claim", own.claim, over.claim, D::length);
   return notes;
 }
 
@@ -320,6 +421,12 @@ DesignValues read_design_values(const nlohmann::json& given, const std::string& 
   }();
   for (const auto& [key, value] : object.items()) {
     if (std::find(known.begin(), known.end(), key) != known.end() || std::find(written.begin(), written.end(), key) != written.end()) continue;
+    for (const Setting id : {Setting::samples, Setting::seed, Setting::claim})  // a run's, read where a value is a range or a spread
+      if (key == setting_row(id).key)
+        throw Error(ErrorKind::usage,
+                    engine_key_name(where, key) +
+                        " belongs to a Monte Carlo run; give a value of the design as a range (2.5t..3.5t) or a spread "
+                        "(3.5m±0.2m), or drop it");
     refuse_near_miss(key, known, where);
     if (passed) (*passed)[key] = value;
   }

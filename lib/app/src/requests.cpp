@@ -6,7 +6,10 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/uncertainty.hpp"
+#include "trebuchet/app/names.hpp"
 #include "trebuchet/app/report.hpp"
+#include "trebuchet/app/shot_record.hpp"
+#include "trebuchet/app/units.hpp"
 
 namespace trebuchet {
 
@@ -66,6 +69,52 @@ OptimizeRequest optimize_request(const DesignValues& v, const ShotSettings& sett
     request.fixed_l = v.l;
   }
   return request;
+}
+
+MonteCarloRequest read_monte_carlo_design(const nlohmann::json& design, const std::string& where, nlohmann::json& passed) {
+  MonteCarloRequest run;
+  run.where = where;
+  nlohmann::json plain = take_spreads(design_object(design), op_shot, where, run.spreads);
+  run.settings = read_settings(plain, req_monte_carlo, where);
+  if (plain.is_object())  // a run's own, which a shot's design does not take
+    for (const Setting id : {Setting::samples, Setting::seed, Setting::claim}) plain.erase(setting_row(id).key);
+  run.values = read_design_values(plain, where, &passed);
+  return run;
+}
+
+nlohmann::ordered_json monte_carlo_request_json(const MonteCarloRequest& request, int samples, std::uint64_t seed) {
+  const MonteCarloRequest first = with_draws(request, [](const Spread& s) { return s.a; });
+  nlohmann::ordered_json design = nlohmann::ordered_json::object();
+  const auto spread_of = [&](const auto& found) -> const SpreadInput* {
+    const auto at = std::find_if(request.spreads.begin(), request.spreads.end(), found);
+    return at == request.spreads.end() ? nullptr : &*at;
+  };
+  for (const InputField& field : input_fields()) {
+    if (field.group == FieldGroup::capacity || !(first.values.*field.member)) continue;
+    const SpreadInput* spread = spread_of([&](const SpreadInput& s) { return s.value == field.member; });
+    design[field.key] = spread ? nlohmann::ordered_json(spread_text(spread->input.spread, field.dimension))
+                               : nlohmann::ordered_json(*(first.values.*field.member));
+  }
+  if (first.values.machine) design[machine_key] = machine_name(*first.values.machine);
+  nlohmann::ordered_json settings = settings_json(shot_settings(first.settings), nullptr);
+  // The whipper's ball gives the projectile's density by its diameter; the air says none of its own.
+  if (first.values.projectile_diameter && settings["air"].is_object()) settings["air"].erase("projectile_density");
+  // A spread setting's text in its place: the target level, or the air's wind, density or drag coefficient.
+  for (const SpreadInput& spread : request.spreads) {
+    if (!spread.setting) continue;
+    const std::string text = spread_text(spread.input.spread, spread.input.dimension);
+    if (spread.setting == &SettingsValues::target_level)
+      settings["target_level"] = text;
+    else
+      settings["air"][spread.setting == &SettingsValues::wind              ? "wind"
+                          : spread.setting == &SettingsValues::air_density ? "density"
+                                                                           : "drag_coefficient"] = text;
+  }
+  for (const auto& item : settings.items()) design[item.key()] = item.value();
+  design["samples"] = samples;
+  design["seed"] = seed;
+  if (request.settings.claim) design["claim"] = *request.settings.claim;
+  return {{request.completes ? "attested" : "design", design}};
 }
 
 MonteCarloRequest with_draws(const MonteCarloRequest& request, const std::function<double(const Spread&)>& value) {

@@ -10,24 +10,25 @@
 
 namespace trebuchet {
 
-nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings& given) {
-  const ShotSettings settings = settings_for(engine, given);  // the whipper's ball sets the projectile's density
+nlohmann::ordered_json settings_json(const ShotSettings& settings, const Engine* engine) {
   nlohmann::ordered_json out = nlohmann::ordered_json::object();
   if (settings.air) {
     const Air& air = *settings.air;
     out["air"] = {{"density", air.density},
                   {"drag_coefficient", air.drag_coefficient ? nlohmann::ordered_json(*air.drag_coefficient) : nlohmann::ordered_json("Cd(Re)")},
-                  {"projectile_density", air.projectile_density},
-                  {"projectile_diameter", sphere_diameter(engine.m, air.projectile_density)},
-                  {"wind", air.wind}};
+                  {"projectile_density", air.projectile_density}};
+    if (engine) out["air"]["projectile_diameter"] = sphere_diameter(engine->m, air.projectile_density);
+    out["air"]["wind"] = air.wind;
     if (settings.drag_in_sling) out["air"]["drag_in_sling"] = true;  // the air acts before the release too
   } else {
     out["air"] = "vacuum";
   }
   out["range_from"] = settings.range_from_release ? "release" : "pivot";
-  out["g"] = engine.material.g;
-  out["theta_i_deg"] = engine.theta_i_deg;
-  out["F"] = arm_fraction(engine);
+  if (engine) {
+    out["g"] = engine->material.g;
+    out["theta_i_deg"] = engine->theta_i_deg;
+    out["F"] = arm_fraction(*engine);
+  }
   out["release"] = release_name(settings.criterion.release);
   if (const auto& at = settings.release_at)  // given: the release is there, and "release" names what Q is
     out["release_at"] = {{"by", release_by_name(at->by)}, {"value", at->value}, {"unit", at->by == ReleaseBy::time ? "s" : "deg"}};
@@ -39,6 +40,10 @@ nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings
   if (settings.integrator.rtol != standard.rtol) out["rtol"] = settings.integrator.rtol;
   if (settings.integrator.atol != standard.atol) out["atol"] = settings.integrator.atol;
   return out;
+}
+
+nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings& given) {
+  return settings_json(settings_for(engine, given), &engine);  // the whipper's ball sets the projectile's density
 }
 
 namespace {

@@ -286,6 +286,17 @@ std::optional<Spread> parse_spread(std::string_view text, UnitDimension dimensio
   return std::nullopt;
 }
 
+std::string spread_text(const Spread& spread, UnitDimension dimension) {
+  std::string_view unit;  // the dimension's first SI suffix; none for a number
+  for (const Unit& u : units)
+    if (u.dimension == dimension && u.to_si == 1.0) {
+      unit = u.suffix;
+      break;
+    }
+  const auto side = [&](double x) { return format_number(x) + std::string(unit); };
+  return side(spread.a) + (spread.kind == Spread::Kind::uniform ? ".." : "\u00b1") + side(spread.b);
+}
+
 std::vector<UnitFactor> unit_factors() {
   std::vector<UnitFactor> out;
   for (const Unit& unit : units) out.push_back({std::string(unit.suffix), unit.dimension, unit.to_si});

@@ -402,6 +402,7 @@ nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
   out["samples"] = summary.samples;
   out["seed"] = r.seed;
   out["worked"] = summary.values.size();
+  for (const auto& item : r.request.items()) out[item.key()] = item.value();
   nlohmann::ordered_json uncertain = nlohmann::ordered_json::array();
   for (const auto& [name, dimension, spread] : r.inputs) {
     const bool uniform = spread.kind == Spread::Kind::uniform;

@@ -11,6 +11,7 @@
 
 #include "trebuchet/capacity.hpp"
 #include "trebuchet/engine.hpp"
+#include "trebuchet/uncertainty.hpp"
 #include "trebuchet/verification.hpp"
 #include "trebuchet/app/fields.hpp"
 #include "trebuchet/app/settings.hpp"
@@ -29,14 +30,47 @@ struct EngineRecord {
   std::vector<std::string> notes;  ///< what the reader did that the answer should say: a flag that replaced the design's value
 };
 
+/// An uncertain input of a Monte Carlo run, named as its user gave it ("--M", "M").
+struct UncertainInput {
+  std::string name;
+  UnitDimension dimension;
+  Spread spread;
+};
+
+/// A value of a Monte Carlo run given as a range or a spread, and where its draw goes: a design's
+/// value or a setting's (the target level, the wind, the air's density, its drag coefficient).
+struct SpreadInput {
+  UncertainInput input;
+  std::optional<double> DesignValues::*value = nullptr;
+  std::optional<double> SettingsValues::*setting = nullptr;
+};
+
+/// Puts `spread` into `spreads` in the order a run draws them, whatever the order they were given
+/// in: a shot's values in the table's order, the settings that may be spread, then what a
+/// completion alone takes (Lb, H, l). So a run draws the same numbers from flags, a file or a
+/// request, and its report read back draws them again.
+void add_spread(std::vector<SpreadInput>& spreads, SpreadInput spread);
+
+/// `object`, a design's (or, with op_complete, the attested values) as a Monte Carlo run gives
+/// it, with each value given as a range ("2.5t..3.5t") or a spread ("3.5m±0.2m") replaced by its
+/// first number (a range's low end, a spread's mean) and that spread put into `spreads`
+/// (add_spread), named by its key: the inputs of `operation` but the capacity and the material,
+/// the target level and the air's wind, density and drag coefficient (top-level or in "air").
+/// Messages name a value "where.key". Throws Error(bad_number | unknown_unit) for a bad spread.
+nlohmann::json take_spreads(const nlohmann::json& object, unsigned operation, const std::string& where, std::vector<SpreadInput>& spreads);
+
 /// Whether a JSON object is a record the programs wrote of a shot: one with an "engine" object
-/// (a shot's, fit's, optimum's, contest's, calibration's or a sweep's point), or one with its
-/// "assumptions" beside a shot's keys (a completion's).
+/// (a shot's, fit's, optimum's, contest's, calibration's or a sweep's point), one with its
+/// "assumptions" beside a shot's keys (a completion's), or a Monte Carlo run's report (its
+/// "uncertain" beside its "design" or "attested").
 bool is_record(const nlohmann::json& given);
 
 /// The design a JSON object gives: the object itself, or, for a record (is_record), its engine with the settings it was shot with (its "assumptions",
 /// under the settings' keys), the capacity it checked ("predicted" against vacuum, and its
 /// tolerance) and the keys it passed through. So every record reads back as the same shot.
+/// A Monte Carlo run's report gives its "design", the run as a request gives it: its ranges and
+/// spreads as text, its settings and its samples, seed and claim; complete's run (its
+/// "attested") is refused with the flags that run it again (Error(usage)).
 nlohmann::json design_object(const nlohmann::json& given);
 
 /// The settings a JSON object gives under the keys of the table of settings that a request of

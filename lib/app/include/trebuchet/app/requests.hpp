@@ -34,14 +34,6 @@ CompletionRequest completion_request(const DesignValues& attested, const ShotSet
 /// capacity that is not R with one of T and m, naming {{R}}, {{T}} and {{m}}.
 OptimizeRequest optimize_request(const DesignValues& values, const ShotSettings& settings);
 
-/// A value of a Monte Carlo run given as a range or a spread, and where its draw goes: a design's
-/// value or a setting's (the target level, the wind, the air's density).
-struct SpreadInput {
-  UncertainInput input;  ///< named as its user gave it ("--M", "M")
-  std::optional<double> DesignValues::*value = nullptr;
-  std::optional<double> SettingsValues::*setting = nullptr;
-};
-
 /// A Monte Carlo run: the shot of a design, or the completion of attested values, at draws of
 /// its spreads. The values hold each spread's first number (a range's low end, a spread's mean).
 struct MonteCarloRequest {
@@ -51,6 +43,18 @@ struct MonteCarloRequest {
   bool completes = false;  ///< complete each sample (attested values) instead of shooting it
   std::string where;  ///< how messages name the design's values: "" flags ("--M"), "design" a request's ("design.M")
 };
+
+/// The Monte Carlo run of the shots of a design object (a file's, a request's "design", or a
+/// run's report read back, design_object): its values, each range or spread at its first number
+/// and kept (take_spreads), and its settings with its samples, seed and claim. Messages name a
+/// value "where.key"; keys no reader knows go to `passed`. Throws Error as read_design_values.
+MonteCarloRequest read_monte_carlo_design(const nlohmann::json& design, const std::string& where, nlohmann::json& passed);
+
+/// The run as a request gives it, for its report: {"design": ...} (or "attested" for
+/// completions) with each value under its key (SI, degrees for angles), each range or spread as
+/// its text (spread_text), the machine, the settings as a shot's record writes them with the air
+/// in full (settings_json), and `samples`, `seed` and the claim. It reads back as the same run.
+nlohmann::ordered_json monte_carlo_request_json(const MonteCarloRequest& request, int samples, std::uint64_t seed);
 
 /// The values and settings of a sample: each spread set to value(its spread).
 MonteCarloRequest with_draws(const MonteCarloRequest& request, const std::function<double(const Spread&)>& value);

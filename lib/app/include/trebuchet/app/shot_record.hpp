@@ -11,8 +11,15 @@
 
 namespace trebuchet {
 
-/// What a shot assumed: "air" ("vacuum"), g [m/s^2], theta_i_deg, the arm fraction F, the
-/// release criterion (--quality) and n, and the target level [m].
+/// The settings of a shot under the keys a request gives them: "air" ("vacuum", or an object of
+/// its density [kg/m^3], drag coefficient, projectile's density [kg/m^3], wind [m/s] and drag in
+/// the sling), "range_from", the release criterion ("release") and n, a given release
+/// ("release_at"), the target level [m] and the integrator where it is not the default. With
+/// `engine`, also what follows from it: the sphere's diameter [m] in the air, g [m/s^2],
+/// theta_i_deg and the arm fraction F (assumptions_json).
+nlohmann::ordered_json settings_json(const ShotSettings& settings, const Engine* engine);
+
+/// What a shot of `engine` assumed: settings_json of its settings (settings_for), with the engine.
 nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings& settings);
 
 /// Throws Error(numerical) naming the first figure of the shot that is not finite.

@@ -36,6 +36,10 @@ std::string unit_list(UnitDimension dimension);
 /// an empty or reversed range or a negative deviation, naming `name`.
 std::optional<Spread> parse_spread(std::string_view text, UnitDimension dimension, std::string_view name);
 
+/// `spread` as parse_spread reads it back, to the last bit: each side's shortest exact digits
+/// with the SI unit of `dimension` ("1900kg..2100kg", "3.55m±0.2m"; degrees for angles).
+std::string spread_text(const Spread& spread, UnitDimension dimension);
+
 /// One accepted suffix and its size in SI base units (degrees for angles).
 struct UnitFactor {
   std::string suffix;

@@ -113,13 +113,6 @@ struct CompletionReport {
 };
 CompletionReport complete_with_longest(const CompletionRequest& request, const std::function<std::string(std::string_view)>& word);
 
-/// An uncertain input of a Monte Carlo run, named as its user gave it ("--M").
-struct UncertainInput {
-  std::string name;
-  UnitDimension dimension;
-  Spread spread;
-};
-
 /// The work one run may do, decided before it starts: a Monte Carlo run's samples times the
 /// shots of one sample (1 for a shot, those of a trial completion for complete), or
 /// derive-table's X points times about shots_per_sweep_point, at most max_run_shots: about 30 s on
@@ -168,8 +161,9 @@ struct MonteCarloReport {
   double seconds;
   int threads;
   std::optional<double> claim;  ///< a claimed range [m] whose odds the run reports (assess_claim)
+  nlohmann::ordered_json request;  ///< the run as a request gives it (monte_carlo_request_json): it reads back as the same run
 };
-/// The report as JSON: with the claim's odds, the inputs ranked by their rank correlation with R
+/// The report as JSON: the run as a request gives it ("design" or "attested"), with the claim's odds, the inputs ranked by their rank correlation with R
 /// ("sensitivity"), and every sample's drawn inputs beside its outputs ("draws", by column).
 nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& report);
 /// The percentiles as CSV: a row for each of R_m, T_J, eps, v_m_s with p5, p50, p95 in SI
