@@ -168,8 +168,9 @@ int run_shot(const Options& o, bool fit) {
   if (!o.input.empty() && !in.single) {
     if (!o.spreads.empty())
       throw Error(ErrorKind::usage,
-                  "ranges and spreads are for one design's Monte Carlo run, but " + source_name(o.input) + " holds " + std::to_string(count) +
-                      "; give one design, or each value as one number");
+                  "ranges and spreads are for the Monte Carlo run of one design object, but " + source_name(o.input) + " holds " +
+                      (count == 1 ? std::string("its design in an array or a CSV row") : std::to_string(count) + " designs") +
+                      "; give one JSON object, or each value as one number");
     refuse_monte_carlo_settings(o);
     return run_many(o, in, check);
   }

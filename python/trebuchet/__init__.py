@@ -262,8 +262,11 @@ def monte_carlo(design=None, *, attested=None, samples=None, seed=None, threads=
     request = dict(settings)
     request.update({key: value for key, value in (("samples", samples), ("seed", seed)) if value is not None})
     key, given = ("design", design) if design is not None else ("attested", attested)
-    # A run's report given back is sent as its run, the part a request gives: its draws are arrays.
-    request[key] = given[key] if isinstance(given, dict) and "uncertain" in given and isinstance(given.get(key), dict) else given
+    # A run's report given back is sent as its run, the part a request gives (its draws are
+    # arrays); the library reads it, and names the key to give it under if it is the other's.
+    if isinstance(given, dict) and "uncertain" in given:
+        given = {part: given[part] for part in ("uncertain", "design", "attested") if part in given}
+    request[key] = given
     # The request checked once, before any thread starts; it answers with the run's samples.
     samples = _call(_trebuchet.monte_carlo, dict(request, first=0, count=0))["samples"]
     # A chunk is a few milliseconds of shots, or one completion (each a search of its own), so

@@ -112,6 +112,13 @@ def test_a_monte_carlo_report_given_back_is_the_same_run():
     # A keyword over the report's own changes that one thing: a fixed wind is no longer drawn.
     calm = trebuchet.monte_carlo(run, air={"wind": "0m/s"}, samples=20)
     assert [u["option"] for u in calm["uncertain"]] == ["L4", "M"] and calm["design"]["air"]["wind"] == 0
+    # complete's report, with its spread wind, is given back as attested; each report under its own key.
+    completed = trebuchet.monte_carlo(attested=dict(Lb="9.5m", M="2.5t..3.5t", m="50kg", air={"wind": "0..4m/s"}), samples=4, threads=1)
+    assert trebuchet.monte_carlo(attested=completed, threads=1)["percentiles"] == completed["percentiles"]
+    with pytest.raises(trebuchet.TrebuchetError, match="give it as design"):
+        trebuchet.monte_carlo(attested=run)
+    with pytest.raises(trebuchet.TrebuchetError, match="attested=report"):
+        trebuchet.monte_carlo(completed)
 
 
 def test_to_frame_gives_pandas_a_row_a_sample_a_moment_or_a_record():

@@ -162,8 +162,23 @@ for key in ("percentiles", "design", "samples", "seed", "failures", "assumptions
         failures.append(f"Monte Carlo report: {key} differs when read back")
 if not same_draws or again["claim"]["probability"] != report["claim"]["probability"]:
     failures.append("Monte Carlo report: its draws or its claim's odds differ when read back")
+# Flags over a report's spread settings: Cd(Re) replaces a spread Cd and --air=false the air's
+# spreads, and what they run reads back as itself; flags that leave nothing to draw are refused.
+with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+    json.dump(run([*ENGINE[:8], *ENGINE[10:], "--air", "--cd", "0.4..0.5", "--air-density", "1.1..1.3", "--M", "1.9t..2.1t", "--samples", "30"])[0], f)
+for over in (["--cd", "Re"], ["--air=false"]):
+    changed, _ = run([f.name, *over])
+    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as g:
+        json.dump(changed, g)
+    if run([g.name])[0]["percentiles"] != changed["percentiles"]:
+        failures.append(f"{over[0]} over a Monte Carlo report: the run it made does not read back as itself")
+    print(f"{' '.join(over)} over a report: draws {[u['option'] for u in changed['uncertain']]}")
+fixed = subprocess.run([VERIFY, f.name, "--M", "2t", "--cd", "0.45", "--air-density", "1.2"], capture_output=True, text=True)
+if fixed.returncode != 2 or "nothing is left to draw" not in fixed.stderr:
+    failures.append("flags that fix every spread of a report: not refused")
 # complete's run takes its attested values as flags: its report says which, and they run it again.
-completion, _ = run(["complete", "--Lb", "9.5m", "--M", "2.5t..3.5t", "--m", "50kg", "--air", "--target-level", "5m", "--samples", "20"])
+completion, _ = run(["complete", "--Lb", "9.5m", "--M", "2.5t..3.5t", "--m", "50kg", "--air", "--wind", "0..4m/s", "--target-level", "5m",
+                      "--samples", "20", "--seed", "123456789012345678"])
 with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
     json.dump(completion, f)
 said = subprocess.run([VERIFY, f.name], capture_output=True, text=True)

@@ -128,10 +128,11 @@ DesignValues with_material(DesignValues values, const DesignValues& material) {
 DesignValues attested_of(const json& given, const std::string& where, const std::function<double(const Spread&)>& at, json& passed,
                          SettingsValues& settings, std::vector<SpreadInput>* spreads = nullptr) {
   if (!given.is_object()) throw Error(ErrorKind::usage, where + ": expected a JSON object");
+  if (given.contains("uncertain") && given.contains("design"))
+    throw Error(ErrorKind::usage, where + ": this is the report of a Monte Carlo run of shots; give it as {{design}}, which runs it again");
   const json& object = given.contains("uncertain") && given.contains("attested") ? given["attested"] : given;
   std::vector<SpreadInput> taken;
-  json plain = take_spreads(object, op_complete, where, taken);
-  for (const SpreadInput& spread : taken) plain[spread.input.name] = at(spread.input.spread);
+  const json plain = take_spreads(object, op_complete, where, taken, at);
   if (spreads) *spreads = taken;
   settings = read_settings(plain, req_monte_carlo, where);
   // Attested values: a near miss is refused, any other key passes through, named in the answer.
@@ -380,7 +381,7 @@ ordered_json monte_carlo(const json& request) {
   std::vector<SpreadInput> spread_settings;
   const SettingsValues given = settings_values_of(take_spreads(request, op_shot, "", spread_settings), req_monte_carlo);
   run.settings = overlay(run.settings, given);
-  std::erase_if(run.spreads, [&](const SpreadInput& s) { return s.setting && given.*s.setting; });
+  std::erase_if(run.spreads, [&](const SpreadInput& s) { return replaces_spread(given, s); });
   for (const SpreadInput& spread : spread_settings) add_spread(run.spreads, spread);
   if (run.spreads.empty())  // as the programs refuse a run of identical samples
     throw Error(ErrorKind::usage,

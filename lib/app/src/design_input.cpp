@@ -46,22 +46,22 @@ std::optional<double> read_value(const nlohmann::json& object, const std::string
     if (!std::isfinite(number)) throw Error(ErrorKind::bad_number, name + ": " + brief_json(value) + " is not a finite number");
     return number;
   }
-  if (value.is_string()) {
-    const std::string text = value.get<std::string>();
-    if (parse_spread(text, dimension, name))
-      throw Error(ErrorKind::usage,
-                  name + ": '" + text +
-                      "' is a range or a spread; give one value (ranges and spreads are for one design's Monte Carlo run: "
-                      "shot with a single design, or monte_carlo)");
-    return parse_value(text, dimension, name);
-  }
+  if (value.is_string()) return parse_value(value.get<std::string>(), dimension, name);
   throw Error(ErrorKind::bad_number, name + ": " + brief_json(value) + " is neither a number nor a value with a unit like \"6.13m\"");
 }
 
 namespace {
 
-// The settings a Monte Carlo run may spread (number_slot), in the order it draws them.
-constexpr Setting spread_settings[] = {Setting::target_level, Setting::wind, Setting::air_density, Setting::cd};
+// The settings a Monte Carlo run may spread (those with a number_slot), in the table's order.
+const std::vector<const SettingRow*>& spread_setting_rows() {
+  static const std::vector<const SettingRow*> rows = [] {
+    std::vector<const SettingRow*> found;
+    for (const SettingRow& row : setting_rows())
+      if (number_slot(row.id)) found.push_back(&row);
+    return found;
+  }();
+  return rows;
+}
 
 // A spread's place in the order of add_spread.
 std::size_t draw_rank(const SpreadInput& spread) {
@@ -73,8 +73,8 @@ std::size_t draw_rank(const SpreadInput& spread) {
         ++rank;
       }
     if (shot)
-      for (const Setting id : spread_settings) {
-        if (spread.setting == number_slot(id)) return rank;
+      for (const SettingRow* row : spread_setting_rows()) {
+        if (spread.setting == number_slot(row->id)) return rank;
         ++rank;
       }
   }
@@ -89,17 +89,34 @@ void add_spread(std::vector<SpreadInput>& spreads, SpreadInput spread) {
   spreads.insert(after, std::move(spread));
 }
 
-nlohmann::json take_spreads(const nlohmann::json& object, unsigned operation, const std::string& where, std::vector<SpreadInput>& spreads) {
+std::string spread_setting_path(std::optional<double> SettingsValues::*slot) {
+  for (const SettingRow* row : spread_setting_rows())
+    if (number_slot(row->id) == slot) {
+      for (const std::string alias : row->aliases)
+        if (alias.rfind("air.", 0) == 0) return alias;
+      return row->key;
+    }
+  return "";
+}
+
+bool replaces_spread(const SettingsValues& over, const SpreadInput& spread) {
+  if (!spread.setting) return false;
+  return (over.*spread.setting).has_value() || (spread.setting == &SettingsValues::cd && over.cd_of_reynolds) ||
+      (over.vacuum && spread_setting_path(spread.setting).rfind("air.", 0) == 0);
+}
+
+nlohmann::json take_spreads(const nlohmann::json& object, unsigned operation, const std::string& where, std::vector<SpreadInput>& spreads,
+                            const std::function<double(const Spread&)>& at) {
   if (!object.is_object()) return object;
   nlohmann::json plain = object;
-  // The spread of `value`, named `key` in messages, at its first number in `slot`; false for one value.
+  // The spread in `slot`, named `key` in messages, replaced by at(spread) and kept.
   using Value = std::optional<double> DesignValues::*;
   using SettingValue = std::optional<double> SettingsValues::*;
   const auto take = [&](nlohmann::json& slot, const std::string& key, UnitDimension dimension, Value value, SettingValue setting) {
     if (!slot.is_string()) return;
     const auto given = parse_spread(slot.get<std::string>(), dimension, engine_key_name(where, key));
     if (!given) return;
-    slot = given->a;
+    slot = at ? at(*given) : given->a;
     add_spread(spreads, SpreadInput{UncertainInput{key, dimension, *given}, value, setting});
   };
   for (auto& [key, value] : plain.items()) {
@@ -107,13 +124,11 @@ nlohmann::json take_spreads(const nlohmann::json& object, unsigned operation, co
     if (field && (field->operations & operation) && field->group != FieldGroup::capacity && field->group != FieldGroup::material)
       take(value, key, field->dimension, field->member, nullptr);
   }
-  for (const Setting id : spread_settings) {
-    if (!(operation & op_shot)) break;  // the attested values hold no settings
-    const SettingRow& row = setting_row(id);
-    if (plain.contains(row.key)) take(plain[row.key], row.key, row.dimension, nullptr, number_slot(id));
-    for (const std::string alias : row.aliases)
-      if (alias.rfind("air.", 0) == 0 && plain.contains("air") && plain["air"].is_object() && plain["air"].contains(alias.substr(4)))
-        take(plain["air"][alias.substr(4)], row.key, row.dimension, nullptr, number_slot(id));
+  for (const SettingRow* row : spread_setting_rows()) {
+    const std::string path = spread_setting_path(number_slot(row->id));
+    if (plain.contains(row->key)) take(plain[row->key], row->key, row->dimension, nullptr, number_slot(row->id));
+    if (path.rfind("air.", 0) == 0 && plain.contains("air") && plain["air"].is_object() && plain["air"].contains(path.substr(4)))
+      take(plain["air"][path.substr(4)], row->key, row->dimension, nullptr, number_slot(row->id));
   }
   return plain;
 }
@@ -156,7 +171,9 @@ nlohmann::json design_object(const nlohmann::json& given) {
       if (value.is_boolean()) {
         if (value.get<bool>()) flags.emplace_back(name);
       } else if (value.is_string() || value.is_number()) {
-        const std::string text = value.is_string() ? value.get<std::string>() : format_number(value.get<double>());
+        const std::string text = value.is_string() ? value.get<std::string>()
+            : value.is_number_integer()            ? value.dump()  // a seed to 2^64, whole
+                                                   : format_number(value.get<double>());
         const bool plain = text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789.+-/%\xC2\xB1") == std::string::npos;
         flags.push_back(std::string(name) + (plain ? " " + text : " '" + text + "'"));  // quoted for a shell where it must be
       }
@@ -174,8 +191,8 @@ nlohmann::json design_object(const nlohmann::json& given) {
       }
     }
     throw Error(ErrorKind::usage,
-                "this is the report of complete's Monte Carlo run, which takes its attested values as flags; run it again with "
-                "trebuchet-verify complete " +
+                "this is the report of complete's Monte Carlo run, which runs again from its attested values (a request's or "
+                "Python's attested=report), or as flags: run it again with trebuchet-verify complete " +
                     join(flags, " "));
   }
   // The engine: its own object, or (a completion's record) the record's keys, less the shot's
@@ -373,6 +390,18 @@ DesignValues read_design_values(const nlohmann::json& given, const std::string& 
   if (!object.is_object())
     throw Error(ErrorKind::usage,
                 (where.empty() ? std::string("input") : where) + ": expected a JSON object with keys L1, L2, L3 (or F), L4, M, m, mb, theta_i_deg");
+  // A range or a spread is a Monte Carlo run's (take_spreads takes them out first).
+  std::vector<SpreadInput> spreads;
+  take_spreads(object, op_shot, where, spreads);
+  if (!spreads.empty()) {
+    const UncertainInput& first = spreads.front().input;
+    const std::string text = object.contains(first.name) && object[first.name].is_string() ? object[first.name].get<std::string>()
+                                                                                           : spread_text(first.spread, first.dimension);
+    throw Error(ErrorKind::usage,
+                engine_key_name(where, first.name) + ": '" + text +
+                    "' is a range or a spread; give one value (ranges and spreads are for the Monte Carlo run of one design: "
+                    "shot with one design object, or monte_carlo)");
+  }
   DesignValues v;
   for (const InputField& field : input_fields()) {
     if (!(field.operations & op_shot)) continue;

@@ -99,16 +99,14 @@ nlohmann::ordered_json monte_carlo_request_json(const MonteCarloRequest& request
   nlohmann::ordered_json settings = settings_json(shot_settings(first.settings), nullptr);
   // The whipper's ball gives the projectile's density by its diameter; the air says none of its own.
   if (first.values.projectile_diameter && settings["air"].is_object()) settings["air"].erase("projectile_density");
-  // A spread setting's text in its place: the target level, or the air's wind, density or drag coefficient.
+  // A spread setting's text in its place: under its key (the target level) or in the air.
   for (const SpreadInput& spread : request.spreads) {
     if (!spread.setting) continue;
-    const std::string text = spread_text(spread.input.spread, spread.input.dimension);
-    if (spread.setting == &SettingsValues::target_level)
-      settings["target_level"] = text;
+    const std::string path = spread_setting_path(spread.setting), text = spread_text(spread.input.spread, spread.input.dimension);
+    if (path.rfind("air.", 0) == 0)
+      settings["air"][path.substr(4)] = text;
     else
-      settings["air"][spread.setting == &SettingsValues::wind              ? "wind"
-                          : spread.setting == &SettingsValues::air_density ? "density"
-                                                                           : "drag_coefficient"] = text;
+      settings[path] = text;
   }
   for (const auto& item : settings.items()) design[item.key()] = item.value();
   design["samples"] = samples;

@@ -2,6 +2,7 @@
 // programs' records carry them, into an engine with the capacity it claims.
 #pragma once
 
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -46,18 +47,29 @@ struct SpreadInput {
 };
 
 /// Puts `spread` into `spreads` in the order a run draws them, whatever the order they were given
-/// in: a shot's values in the table's order, the settings that may be spread, then what a
-/// completion alone takes (Lb, H, l). So a run draws the same numbers from flags, a file or a
-/// request, and its report read back draws them again.
+/// in: a shot's inputs in the table's order (inputs.def), the settings that may be spread in
+/// theirs (settings.def: the target level, the air's density, its drag coefficient, the wind),
+/// then what a completion alone takes (Lb, l). So a run draws the same numbers from flags, a
+/// file or a request, and its report read back draws them again.
 void add_spread(std::vector<SpreadInput>& spreads, SpreadInput spread);
 
-/// `object`, a design's (or, with op_complete, the attested values) as a Monte Carlo run gives
-/// it, with each value given as a range ("2.5t..3.5t") or a spread ("3.5m±0.2m") replaced by its
-/// first number (a range's low end, a spread's mean) and that spread put into `spreads`
-/// (add_spread), named by its key: the inputs of `operation` but the capacity and the material,
-/// the target level and the air's wind, density and drag coefficient (top-level or in "air").
-/// Messages name a value "where.key". Throws Error(bad_number | unknown_unit) for a bad spread.
-nlohmann::json take_spreads(const nlohmann::json& object, unsigned operation, const std::string& where, std::vector<SpreadInput>& spreads);
+/// Where a design object gives the setting a run may spread into `slot`: in its air ("air.wind",
+/// as settings.def's alias says), or under its key ("target_level").
+std::string spread_setting_path(std::optional<double> SettingsValues::*slot);
+
+/// Whether `over`, laid over a design's own settings (overlay), gives what the design's `spread`
+/// of a setting draws: that setting, Cd(Re) for the drag coefficient, or vacuum for the air's.
+bool replaces_spread(const SettingsValues& over, const SpreadInput& spread);
+
+/// `object`, a design's or the attested values as a Monte Carlo run gives them, with each value
+/// given as a range ("2.5t..3.5t") or a spread ("3.5m±0.2m") replaced by at(spread) (unless
+/// given: its first number, a range's low end or a spread's mean) and that spread put into
+/// `spreads` (add_spread), named by its key: the inputs of `operation` but the capacity and the
+/// material, and the settings a run may spread, under their key or in "air"
+/// (spread_setting_path). Messages name a value "where.key". Throws Error(bad_number |
+/// unknown_unit) for a bad spread.
+nlohmann::json take_spreads(const nlohmann::json& object, unsigned operation, const std::string& where, std::vector<SpreadInput>& spreads,
+                            const std::function<double(const Spread&)>& at = nullptr);
 
 /// Whether a JSON object is a record the programs wrote of a shot: one with an "engine" object
 /// (a shot's, fit's, optimum's, contest's, calibration's or a sweep's point), one with its
@@ -107,7 +119,8 @@ std::optional<double> read_value(const nlohmann::json& object, const std::string
 /// The values of a JSON design object, each an SI number or a string with a unit ("6.13m"), under
 /// its key or an alias (input_fields). A key that the programs write passes silently; a key near
 /// an input's name is refused with that name (near_miss); any other key is put in `passed`.
-/// Throws Error(bad_number | unknown_unit | usage) naming the key.
+/// Throws Error(bad_number | unknown_unit | usage) naming the key, and Error(usage) for a value
+/// given as a range or a spread (a Monte Carlo run's: take_spreads reads them).
 /// A record the programs wrote reads as its design_object; the settings it gives go to `settings`
 /// when not null (else they are passed over).
 DesignValues read_design_values(const nlohmann::json& object, const std::string& where, nlohmann::json* passed = nullptr,

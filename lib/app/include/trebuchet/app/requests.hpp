@@ -75,7 +75,7 @@ std::int64_t shots_per_sample(const MonteCarloRequest& request);
 std::vector<UncertainInput> uncertain_inputs(const MonteCarloRequest& request);
 
 /// The values the run holds fixed, in the order the report lists them: what a completion alone
-/// takes (Lb, H, l), then the others of the table's order (the engine's, its parts, its
+/// takes (Lb, l), then the others of the table's order (the engine's, its parts, its
 /// material), none of them spread.
 std::vector<FixedInput> fixed_inputs(const MonteCarloRequest& request);
 
