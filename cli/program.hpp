@@ -21,7 +21,7 @@
 #include "exit_codes.hpp"
 #include "trebuchet/app/fields.hpp"
 #include "trebuchet/app/units.hpp"
-#include "trebuchet_version.hpp"
+#include "version.hpp"
 #include "trebuchet/error.hpp"
 
 namespace trebuchet {
@@ -77,11 +77,11 @@ inline const char* message_start() { return isatty(STDERR_FILENO) ? "\r\033[K" :
 /// What --version prints: the program, its version and the commit it is built from, and how
 /// to cite it with the paper whose physics and tables it implements.
 inline std::string version_text(const std::string& program) {
-  return program +
-      " " TREBUCHET_VERSION " (commit " TREBUCHET_COMMIT
+  const std::string version = build_version(), commit = build_commit();
+  return program + " " + version + " (commit " + commit +
       ")\n"
-      "To cite: E. Horsdal, \"The swinging counterweight trebuchet - on scaling and optimization\"; computed with trebuchet " TREBUCHET_VERSION
-      ", commit " TREBUCHET_COMMIT ".";
+      "To cite: E. Horsdal, \"The swinging counterweight trebuchet - on scaling and optimization\"; computed with trebuchet " +
+      version + ", commit " + commit + ".";
 }
 
 /// The first option of `app` or its parsed subcommands that was given an empty value

@@ -6,6 +6,7 @@
 # Needs the packages of scripts/install-deps.sh; no network.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/ccache.sh
 out=${1:-build-web}
 # emcc's JavaScript optimiser needs acorn from Debian's node modules (node-acorn), which a node
 # of another packaging does not look in.

@@ -12,6 +12,7 @@ scope=${1:-all}
 
 packages=(
   cmake g++ make
+  ccache            # every build compiles through it (scripts/ccache.sh)
   libeigen3-dev     # Eigen 3.4
   libgsl-dev        # GSL 2.7: odeiv2, roots, minimisation
   nlohmann-json3-dev

@@ -5,7 +5,7 @@
 # each file that differs or each problem found.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-mapfile -t cpp < <(git ls-files 'lib/*.cpp' 'lib/*.hpp' 'calc/*.cpp' 'verify/*.cpp' 'verify/*.hpp' 'cli/*.hpp' 'python/src/*.cpp' \
+mapfile -t cpp < <(git ls-files 'lib/*.cpp' 'lib/*.hpp' 'calc/*.cpp' 'verify/*.cpp' 'verify/*.hpp' 'cli/*.cpp' 'cli/*.hpp' 'python/src/*.cpp' \
   'web/src/*.cpp' 'tests/*.cpp' 'tests/*.hpp' 'tests/**/*.cpp' 'tests/**/*.hpp')
 clang-format-14 --dry-run --Werror "${cpp[@]}"
 echo "lint.sh: ${#cpp[@]} C++ files as .clang-format lays them out"

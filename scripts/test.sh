@@ -5,45 +5,56 @@
 #      corpus and the command-line fuzzer, which stage 2 runs;
 #   2. one clang build under AddressSanitizer and UndefinedBehaviorSanitizer, instrumented for
 #      libFuzzer: the five fuzz targets run at once for a minute each, then the tiers that run
-#      the code on inputs (unit, cli, robustness; every 10th reference design) run again under
-#      the sanitizers, where any memory error or undefined behaviour aborts the test that hit it;
-#      the corpus and the command-line fuzzer run here only.
-# First the formatters (scripts/lint.sh). Each stage prints its time. TREBUCHET_FUZZ_SECONDS changes the fuzzing time.
+#      the code on inputs (unit, cli, robustness; every 10th reference design, the contests of the
+#      label heavy in part) run again under the sanitizers, where any memory error or undefined
+#      behaviour aborts the test that hit it; the corpus and the command-line fuzzer run here only.
+# First the formatters (scripts/lint.sh). Every build compiles through ccache (scripts/ccache.sh).
+# Each stage prints its wall and CPU time, each ctest run its slowest tests, and the end a table
+# of the stages. TREBUCHET_FUZZ_SECONDS changes the fuzzing time.
+# The quick tier for work in progress is scripts/quick.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
 start=$SECONDS
-stage() { echo "== $1 (at $((SECONDS - start)) s) =="; }
+source scripts/ccache.sh
+source scripts/stages.sh
 
-stage "installing what is missing"
-bash scripts/install-deps.sh
+installing() { bash scripts/install-deps.sh; }
+formatters() { bash scripts/lint.sh; }
+release_build() {
+  # With the Python module for Debian's own interpreter (docs/python.md).
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTREBUCHET_WERROR=ON -DTREBUCHET_BUILD_BENCHMARKS=ON \
+    -DTREBUCHET_PYTHON=ON -DPython3_EXECUTABLE=/usr/bin/python3 >/dev/null
+  cmake --build build -j"$jobs"
+}
+page_build() { bash scripts/build-web.sh build-web; }
+every_tier() {
+  # The hostile-input corpus and the command-line fuzzer run once, in the sanitizer stage: there
+  # every case is checked for its exit code, its message and no nan or inf as here, and for
+  # memory errors and undefined behaviour besides.
+  run_ctest build --output-on-failure -j"$jobs" --timeout 600 -E '^(robustness_corpus_[0-9]+of[0-9]+|cli\.fuzz)$'
+}
+sanitizer_build() {
+  # Line tables only: a sanitizer's report still names file and line, and the build skips the
+  # rest of the debug information (issue 33: the largest stage).
+  CXX=clang++-14 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
+    -DTREBUCHET_SANITIZE=ON -DTREBUCHET_FUZZ=ON >/dev/null
+  cmake --build build-sanitize -j"$jobs" --target unit-tests trebuchet-calc trebuchet-verify fuzz-units fuzz-design fuzz-batch fuzz-table fuzz-part
+}
+fuzzing() { bash tests/fuzz/run.sh build-sanitize "${TREBUCHET_FUZZ_SECONDS:-60}"; }
+sanitized_tiers() {
+  # TREBUCHET_REFERENCE_STRIDE and TREBUCHET_HEAVY_STRIDE: every 10th reference design and every
+  # 4th contest of the heavy tests (docs/testing.md); the Release tiers run them all.
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 TREBUCHET_REFERENCE_STRIDE=10 TREBUCHET_HEAVY_STRIDE=4 \
+    run_ctest build-sanitize --output-on-failure -j"$jobs" -L "^(unit|heavy|cli|robustness)$" --timeout 900
+}
 
-stage "formatters: clang-format and ESLint"
-bash scripts/lint.sh
-
-stage "Release build"
-# With the Python module for Debian's own interpreter (docs/python.md).
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTREBUCHET_WERROR=ON -DTREBUCHET_BUILD_BENCHMARKS=ON \
-  -DTREBUCHET_PYTHON=ON -DPython3_EXECUTABLE=/usr/bin/python3 >/dev/null
-cmake --build build -j"$jobs"
-stage "browser page build (WebAssembly)"
-bash scripts/build-web.sh build-web
-stage "the suite, every tier"
-# The hostile-input corpus and the command-line fuzzer run once, in stage 2, under the
-# sanitizers: there every case is checked for its exit code, its message and no nan or inf as
-# here, and for memory errors and undefined behaviour besides. Run here too, they doubled the
-# largest part of CI's time (370 of its 1050 CPU seconds) for no check of their own.
-ctest --test-dir build --output-on-failure -j"$jobs" --timeout 600 -E '^(robustness_corpus_[0-9]of2|cli\.fuzz)$'
-
-stage "sanitizer and fuzzer build (clang)"
-# Line tables only: a sanitizer's report still names file and line, and the build skips the
-# rest of the debug information (issue 33: the largest stage).
-CXX=clang++-14 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
-  -DTREBUCHET_SANITIZE=ON -DTREBUCHET_FUZZ=ON >/dev/null
-cmake --build build-sanitize -j"$jobs" --target unit-tests trebuchet-calc trebuchet-verify fuzz-units fuzz-design fuzz-batch fuzz-table fuzz-part
-stage "fuzzing: the five targets at once, ${TREBUCHET_FUZZ_SECONDS:-60} s each"
-bash tests/fuzz/run.sh build-sanitize "${TREBUCHET_FUZZ_SECONDS:-60}"
-stage "unit, cli and robustness tiers under the sanitizers"
-ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 TREBUCHET_REFERENCE_STRIDE=10 \
-  ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -L "unit|cli|robustness" --timeout 900
-stage "done"
+stage "installing what is missing" installing
+stage "formatters: clang-format and ESLint" formatters
+stage "Release build" release_build
+stage "browser page build (WebAssembly)" page_build
+stage "the suite, every tier" every_tier
+stage "sanitizer and fuzzer build (clang)" sanitizer_build
+stage "fuzzing: the five targets at once, ${TREBUCHET_FUZZ_SECONDS:-60} s each" fuzzing
+stage "unit, cli and robustness tiers under the sanitizers" sanitized_tiers
+stages_table

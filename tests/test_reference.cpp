@@ -110,7 +110,7 @@ struct Agreement {
 // does the quintic interpolant of before, by 1.8e-7 in R and 1e-8 in Q. Since issue 26 the
 // reference seeks the release over the whole of phase II (tests/reference), so a release search
 // that ranks maxima by where the samples are highest fails here too, on about 1 % of such designs.
-TEST_CASE("the shot agrees with the independent reference on 500 random designs", "[reference][shot]") {
+TEST_CASE("the shot agrees with the independent reference on 500 random designs", "[reference][shot][heavy]") {
   std::mt19937_64 random(20261121);
   auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(random); };
   // The sanitizer pass checks every 10th design (TREBUCHET_REFERENCE_STRIDE=10, scripts/test.sh):

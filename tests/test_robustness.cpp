@@ -42,7 +42,7 @@ std::string reason_of(const Error& e) {
 
 }  // namespace
 
-TEST_CASE("10 000 random engines: a finite result or a named error each", "[robustness]") {
+TEST_CASE("10 000 random engines: a finite result or a named error each", "[robustness][heavy]") {
   std::mt19937_64 random(4);
   std::uniform_real_distribution<double> uniform(0, 1);
   std::map<std::string, int> outcomes;

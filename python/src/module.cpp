@@ -8,12 +8,12 @@
 #include <string>
 
 #include "trebuchet/app/api.hpp"
-#include "trebuchet_version.hpp"
+#include "version.hpp"
 
 PYBIND11_MODULE(_trebuchet, module) {
   module.doc() = "trebuchet's library as JSON requests (trebuchet/app/api.hpp); use the package trebuchet";
-  module.attr("version") = TREBUCHET_VERSION;  // the project's, PEP 440 (0.1.0)
-  module.attr("commit") = TREBUCHET_COMMIT;  // git describe of the source it is built from
+  module.attr("version") = trebuchet::build_version();  // the project's, PEP 440 (0.1.0)
+  module.attr("commit") = trebuchet::build_commit();  // git describe of the source it is built from
   namespace py = pybind11;
   const auto bind = [&](const char* name, trebuchet::api::Request request, const char* doc) {
     module.def(

@@ -1,0 +1,48 @@
+# Sourced by scripts/test.sh and scripts/quick.sh: a run in named stages, each timed.
+#   stage NAME FUNCTION   runs FUNCTION, then prints its wall time and the CPU time (user and
+#                         system) of everything it started
+#   run_ctest BUILD ARGS  ctest over BUILD, then its ten slowest tests (wall seconds)
+#   stages_table          every stage's times, and the whole run's
+# The caller sets start=$SECONDS first.
+stage_rows=()
+
+# The CPU seconds the shell's finished children have used, user plus system (bash's `times`,
+# read in this shell: a command substitution would be a child with children of its own).
+children_cpu_seconds() {
+  local file
+  file=$(mktemp)
+  times >"$file"
+  awk 'NR == 2 { split($1, u, "m"); split($2, s, "m"); sub("s", "", u[2]); sub("s", "", s[2]);
+                 printf "%.0f\n", u[1] * 60 + u[2] + s[1] * 60 + s[2] }' "$file"
+  rm -f "$file"
+}
+
+stage() {
+  local name=$1 run=$2 wall0=$SECONDS cpu0 cpu wall
+  echo "== $name (at $((SECONDS - start)) s) =="
+  cpu0=$(children_cpu_seconds)
+  "$run"
+  wall=$((SECONDS - wall0))
+  cpu=$(($(children_cpu_seconds) - cpu0))
+  echo "== $name: ${wall} s wall, ${cpu} s CPU =="
+  stage_rows+=("$(printf '%6d s %7d s  %s' "$wall" "$cpu" "$name")")
+}
+
+# ctest's ten slowest tests, read from its output (a line "N/M Test #K: NAME .... Passed 1.23
+# sec" a test): run_ctest BUILD ARGS... runs ctest on BUILD with ARGS and keeps the output in
+# BUILD/ctest-output.log. (Its own CTestCostData.txt cuts a name at its first space.)
+run_ctest() {
+  local build=$1 status=0
+  shift
+  ctest --test-dir "$build" "$@" | tee "$build/ctest-output.log" || status=$?
+  echo "-- the ten slowest tests of $build (wall seconds, $(nproc) at a time):"
+  sed -nE 's/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: (.*[^ .]) \.+ *\**[A-Za-z ]+ +([0-9.]+) sec$/\2  \1/p' "$build/ctest-output.log" |
+    sort -g -r | head -n 10 | awk '{ printf "%8.1f  %s\n", $1, substr($0, index($0, "  ") + 2) }'
+  return "$status"
+}
+
+stages_table() {
+  echo "== done at $((SECONDS - start)) s =="
+  echo "  wall      CPU  stage"
+  printf '%s\n' "${stage_rows[@]}"
+}
