@@ -4,8 +4,8 @@
 # design ab initio.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-source scripts/ccache.sh
 bash scripts/install-deps.sh native
+source scripts/ccache.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$(nproc)" --target trebuchet-calc trebuchet-verify
 echo

@@ -16,7 +16,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
 start=$SECONDS
-source scripts/ccache.sh
 source scripts/stages.sh
 
 installing() { bash scripts/install-deps.sh; }
@@ -50,6 +49,7 @@ sanitized_tiers() {
 }
 
 stage "installing what is missing" installing
+source scripts/ccache.sh  # after the install, which brings ccache to a new machine
 stage "formatters: clang-format and ESLint" formatters
 stage "Release build" release_build
 stage "browser page build (WebAssembly)" page_build
