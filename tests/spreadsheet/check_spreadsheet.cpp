@@ -492,7 +492,8 @@ bool export_csv(const fs::path& dir, const std::string& mode, const std::string&
 // format was chosen for the value written and must still show the new one. The sheet "from R
 // and one" is written for 480 m (X = +0.37) and set to 150 m (X = -0.55, negative); the model
 // to lambda = 0 (every value 0); the derived sheet's L1 to 12,345 m (H, Lb large).
-void check_edited(const fs::path& dir) {
+// write_edited writes the book; check_edited reads it as LibreOffice recalculated it.
+fs::path write_edited(const fs::path& dir) {
   SpreadsheetInputs inputs;
   inputs.range_and_one = SpreadsheetInputs::example(Quantity::R, 480, Quantity::m, 50);
   const fs::path book = dir / "edited.xlsx";
@@ -500,11 +501,12 @@ void check_edited(const fs::path& dir) {
   set_cell(book, 4, "B5", 150);  // from R and one: the first value, R [m]
   set_cell(book, 9, "B4", 0);  // model scaling: lambda
   set_cell(book, 8, "B4", 12345);  // derived: L1 [m]
-  const std::string files = " '" + book.string() + "'";
-  if (!export_csv(dir, "edited-full", files, true, false) || !export_csv(dir, "edited-shown", files, true, true)) return ++failures, void();
+  return book;
+}
+void check_edited(const fs::path& dir) {
   for (const char* sheet : {"from R and one", "model scaling", "derived"}) {
     const std::string file = std::string("edited-") + sheet + ".csv";
-    const Cells full = read_csv(dir / "edited-full" / file), shown = read_csv(dir / "edited-shown" / file);
+    const Cells full = read_csv(dir / "recalculated" / file), shown = read_csv(dir / "shown" / file);
     check_shown(shown, full, sheet, std::string("edited '") + sheet + "'", false);
     if (std::string(sheet) == "from R and one") {
       std::printf("edited 'from R and one': R = 150 m, X shows '%s' (its format was chosen for +0.373)\n", value_of(shown, "X").c_str());
@@ -529,16 +531,19 @@ void check_edited(const fs::path& dir) {
 // separates them); a row the batch refuses has no "ok", blank results and the batch's message.
 int compared_sites = 0;
 double worst_site_shown = 0;  // of half a unit of the last digit shown
-void check_user_sites(const fs::path& dir, const std::string& calc) {
-  const std::pair<const char*, const char*> files[] = {
-      {"sites-rm.csv",
-       "site,R,m,theta,F\n"
-       "Ca,150m,50kg,30,2/3\nMa,480m,50kg,30,2/3\nSa,250m,50kg,30,2/3\nheavy,300m,120kg,30,1\nforty,300m,60kg,40,2/3\n"
-       "far,5000m,10kg,30,2/3\nunread,abc,50kg,30,2/3\nno block,200m,50kg,35,2/3\n"},
-      {"sites-lb.csv", "name,Lb,l,F\nVillard,9m,4.5,1\nnot at 2/3,9m,4.5,2/3\nlong,12m,6,2/3\nshort l,9m,2,1\n"},
-      // An ill-conditioned pair: Ca's engine, and one that solves far to both sides of the seam X = 0.
-      {"sites-l1m.csv", "name,L1,M\nCa,4.13343m,3116.57kg\nfar past the seam,6.928m,20670kg\n"}};
-  for (const auto& [name, text] : files) {
+const std::pair<const char*, const char*> site_files[] = {
+    {"sites-rm.csv",
+     "site,R,m,theta,F\n"
+     "Ca,150m,50kg,30,2/3\nMa,480m,50kg,30,2/3\nSa,250m,50kg,30,2/3\nheavy,300m,120kg,30,1\nforty,300m,60kg,40,2/3\n"
+     "far,5000m,10kg,30,2/3\nunread,abc,50kg,30,2/3\nno block,200m,50kg,35,2/3\n"},
+    {"sites-lb.csv", "name,Lb,l,F\nVillard,9m,4.5,1\nnot at 2/3,9m,4.5,2/3\nlong,12m,6,2/3\nshort l,9m,2,1\n"},
+    // An ill-conditioned pair: Ca's engine, and one that solves far to both sides of the seam X = 0.
+    {"sites-l1m.csv", "name,L1,M\nCa,4.13343m,3116.57kg\nfar past the seam,6.928m,20670kg\n"}};
+// The books of the sites files, and the batch's CSV of each, written by the program; then, once
+// LibreOffice has recalculated them, their sheets 'your sites' against the batch.
+std::vector<fs::path> write_user_sites(const fs::path& dir, const std::string& calc) {
+  std::vector<fs::path> books;
+  for (const auto& [name, text] : site_files) {
     std::ofstream(dir / name) << text;
     const std::string stem = fs::path(name).stem().string();
     const fs::path book = dir / (stem + ".xlsx"), printed_csv = dir / (stem + "-batch.csv");
@@ -547,11 +552,16 @@ void check_user_sites(const fs::path& dir, const std::string& calc) {
     const int batched = shell("'" + calc + "' --batch '" + (dir / name).string() + "' --format csv --digits 17 > '" + printed_csv.string() +
                               "' 2> /dev/null");
     if (WEXITSTATUS(wrote) != 8 || WEXITSTATUS(batched) != 8) fail(std::string(name) + ": --spreadsheet --batch or --batch did not exit 8");
-    const std::string quoted = " '" + book.string() + "'";
-    if (!export_csv(dir, stem + "-full", quoted, true, false) || !export_csv(dir, stem + "-shown", quoted, true, true)) return ++failures, void();
-    const Cells full = read_csv(dir / (stem + "-full") / (stem + "-your sites.csv"));
-    const Cells shown = read_csv(dir / (stem + "-shown") / (stem + "-your sites.csv"));
-    const Cells printed = read_csv(printed_csv);
+    books.push_back(book);
+  }
+  return books;
+}
+void check_user_sites(const fs::path& dir) {
+  for (const auto& [name, text] : site_files) {
+    const std::string stem = fs::path(name).stem().string();
+    const Cells full = read_csv(dir / "recalculated" / (stem + "-your sites.csv"));
+    const Cells shown = read_csv(dir / "shown" / (stem + "-your sites.csv"));
+    const Cells printed = read_csv(dir / (stem + "-batch.csv"));
     const std::vector<std::string>& heading = full.at(4);
     const auto valid_at = std::find(heading.begin(), heading.end(), "valid");
     const auto status_at = std::find(heading.begin(), heading.end(), "status");
@@ -597,12 +607,17 @@ void check_user_sites(const fs::path& dir, const std::string& calc) {
     }
     if (full.size() < printed.size() + 5) fail(std::string(name) + ": the sheet has fewer rows than the file");
   }
-  // The workbook as the program writes it with no givens: the sheet for Lb and one opens on its
-  // example, tab:SketchBook-II row 2 (Lb = 9 m, l = 4.5, F = 1), with an engine (docs/spreadsheet.md).
+}
+
+// The workbook as the program writes it with no givens: the sheet for Lb and one opens on its
+// example, tab:SketchBook-II row 2 (Lb = 9 m, l = 4.5, F = 1), with an engine (docs/spreadsheet.md).
+fs::path write_default(const fs::path& dir, const std::string& calc) {
   const fs::path book = dir / "default.xlsx";
-  if (shell("'" + calc + "' --spreadsheet '" + book.string() + "' > /dev/null") != 0) return fail("trebuchet-calc --spreadsheet failed");
-  if (!export_csv(dir, "default", " '" + book.string() + "'", true, false)) return ++failures, void();
-  const Cells beam = read_csv(dir / "default" / "default-from Lb and one.csv");
+  if (shell("'" + calc + "' --spreadsheet '" + book.string() + "' > /dev/null") != 0) fail("trebuchet-calc --spreadsheet failed");
+  return book;
+}
+void check_default(const fs::path& dir) {
+  const Cells beam = read_csv(dir / "recalculated" / "default-from Lb and one.csv");
   std::printf("the default workbook's sheet 'from Lb and one': F = %s, status '%s'\n", value_of(beam, "F").c_str(), value_of(beam, "status").c_str());
   if (value_of(beam, "F") != "1" || value_of(beam, "status") != "ok")
     fail("the default sheet 'from Lb and one' does not open on F = 1 with an engine");
@@ -617,10 +632,17 @@ int run(const fs::path& dir, const std::string& calc) {
     write_spreadsheet(table, c.inputs, (dir / (c.name + ".xlsx")).string());
     files += " '" + (dir / (c.name + ".xlsx")).string() + "'";
   }
+  // The other books (an edited one, the sites files', the default) go through the same three
+  // runs of LibreOffice: each run starts it once for all its books.
+  std::string other_files;
+  std::vector<fs::path> others = write_user_sites(dir, calc);
+  others.push_back(write_edited(dir));
+  others.push_back(write_default(dir, calc));
+  for (const fs::path& book : others) other_files += " '" + book.string() + "'";
   // Two LibreOffice profiles: one recalculates every formula on load, one never does; the
   // first also exports what a reader sees.
-  if (!export_csv(dir, "recalculated", files, true, false) || !export_csv(dir, "cached", files, false, false) ||
-      !export_csv(dir, "shown", files, true, true))
+  if (!export_csv(dir, "recalculated", files + other_files, true, false) || !export_csv(dir, "cached", files, false, false) ||
+      !export_csv(dir, "shown", files + other_files, true, true))
     return 1;
   const char* sheets[] = {"constants",       "material", "from R and T", "from R and one", "from any pair",
                           "from Lb and one", "sites",    "derived",      "model scaling",  "glossary"};
@@ -669,7 +691,8 @@ int run(const fs::path& dir, const std::string& calc) {
     }
   }
   check_edited(dir);
-  check_user_sites(dir, calc);
+  check_user_sites(dir);
+  check_default(dir);
   std::cout << all.size() << " workbooks, " << std::size(sheets) << " sheets each: " << compared_cached
             << " numbers recalculated by LibreOffice against the cached ones, worst difference " << worst_cached
             << " of its tolerance (1e-12 relative); " << compared_calculator << " outputs against the calculator, worst relative difference "
