@@ -6,24 +6,28 @@
 # The caller sets start=$SECONDS first.
 stage_rows=()
 
-# The CPU seconds the shell's finished children have used, user plus system (bash's `times`,
-# read in this shell: a command substitution would be a child with children of its own).
-children_cpu_seconds() {
+# The CPU seconds the shell's finished children have used, user plus system, into
+# children_cpu: bash's `times`, run in this shell (in a command substitution it would be a child
+# whose own children have used nothing).
+children_cpu=0
+read_children_cpu() {
   local file
   file=$(mktemp)
   times >"$file"
-  awk 'NR == 2 { split($1, u, "m"); split($2, s, "m"); sub("s", "", u[2]); sub("s", "", s[2]);
-                 printf "%.0f\n", u[1] * 60 + u[2] + s[1] * 60 + s[2] }' "$file"
+  children_cpu=$(awk 'NR == 2 { split($1, u, "m"); split($2, s, "m"); sub("s", "", u[2]); sub("s", "", s[2]);
+                                printf "%.0f\n", u[1] * 60 + u[2] + s[1] * 60 + s[2] }' "$file")
   rm -f "$file"
 }
 
 stage() {
   local name=$1 run=$2 wall0=$SECONDS cpu0 cpu wall
   echo "== $name (at $((SECONDS - start)) s) =="
-  cpu0=$(children_cpu_seconds)
+  read_children_cpu
+  cpu0=$children_cpu
   "$run"
   wall=$((SECONDS - wall0))
-  cpu=$(($(children_cpu_seconds) - cpu0))
+  read_children_cpu
+  cpu=$((children_cpu - cpu0))
   echo "== $name: ${wall} s wall, ${cpu} s CPU =="
   stage_rows+=("$(printf '%6d s %7d s  %s' "$wall" "$cpu" "$name")")
 }
