@@ -86,7 +86,7 @@ void check_air(const Air& air) {
   check_ordinary(air.density, 1e-6, 1e4, "air_density", "kg/m3", "density of the air");
   check_ordinary(air.projectile_density, 1, 1e5, "projectile", "kg/m3", "projectile's density");
   if (air.drag_coefficient) check_ordinary(*air.drag_coefficient, 1e-3, 1e2, "cd", "", "drag coefficient");
-  check_ordinary(std::abs(air.wind), 0, 1e3, "wind", "m/s", "wind's speed");
+  check_ordinary(air.wind, -1e3, 1e3, "wind", "m/s", "wind's speed (against the throw when negative)");
 }
 
 Drag drag_of(const Air& air, double mass) {

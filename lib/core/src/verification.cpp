@@ -155,7 +155,7 @@ bool Verification::Clearance::buildable() const { return geometric >= 0 && (!in_
 void check_shot_settings(const ShotSettings& settings) {
   check_integrator(settings.integrator);
   if (settings.air) check_air(*settings.air);
-  check_ordinary(std::abs(settings.target_level), 0, 1e6, "target_level", "m", "target level's distance from the engine's base");
+  check_ordinary(settings.target_level, -1e6, 1e6, "target_level", "m", "target level above the engine's base (below it when negative)");
   // eq:Q_n asks n >= 0. Beyond max_quality_exponent, eps^n of an engine's eps (0.5 to 0.98)
   // falls below 1e-6 or flattens Q_n to round-off, and no release or design is preferred.
   check_ordinary(settings.criterion.n, 0, max_quality_exponent, "n", "", "exponent of eps in eq:Q_n");
