@@ -137,7 +137,7 @@ int run_monte_carlo(const Options& o, bool complete, const nlohmann::json* desig
   } else {
     std::cout << monte_carlo_table(report);
   }
-  if (!o.draws.empty()) write_output_file(o.draws, monte_carlo_draws_csv(report, o.digits), "draws");
+  if (!o.draws.empty()) write_output_file(o.draws, monte_carlo_draws_csv(report), "draws");
   refuse_when_no_sample_worked(summary);  // after the report of the failures; no histogram
   if (!o.plot.empty()) {
     std::vector<std::string> described;

@@ -465,7 +465,7 @@ ordered_json monte_carlo(const json& request) {
   ordered_json answer = monte_carlo_json(report);
   answer.erase("wall_time_s");  // a time is the caller's to measure; the report is the same on any machine
   // Every sample's drawn inputs and outcomes as the programs' --draws writes them, to 17 digits: the run's own numbers.
-  if (flag_of(request, "draws_csv")) answer["draws_csv"] = monte_carlo_draws_csv(report, 17);
+  if (flag_of(request, "draws_csv")) answer["draws_csv"] = monte_carlo_draws_csv(report);
   if (!passed.empty()) answer["passed"] = passed;
   return answer;
 }

@@ -466,7 +466,8 @@ nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
   return out;
 }
 
-std::string monte_carlo_draws_csv(const MonteCarloReport& r, int digits) {
+std::string monte_carlo_draws_csv(const MonteCarloReport& r) {
+  constexpr int digits = 17;  // every digit of a double
   std::vector<std::string> header{"sample"};
   for (const UncertainInput& input : r.inputs) header.push_back(draw_column(input));
   header.insert(header.end(), {"R_m", "T_J", "eps", "v_m_s"});

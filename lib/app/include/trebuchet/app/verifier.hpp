@@ -172,7 +172,8 @@ std::string monte_carlo_csv(const MonteCarloReport& report, int digits);
 std::string monte_carlo_table(const MonteCarloReport& report);
 /// Every sample as a CSV row: its number, its drawn inputs (SI columns: "M_kg", "theta_i_deg"),
 /// R_m, T_J, eps, v_m_s (empty where it failed), whether it reaches the claim (with one), and
-/// its failure. `digits` significant digits.
-std::string monte_carlo_draws_csv(const MonteCarloReport& report, int digits);
+/// its failure. Every number to 17 significant digits, whatever --digits says: the file is data
+/// for analysis, and reads back as the run's own numbers.
+std::string monte_carlo_draws_csv(const MonteCarloReport& report);
 
 }  // namespace trebuchet
