@@ -16,11 +16,10 @@
 #include "trebuchet/app/units.hpp"
 
 namespace trebuchet {
-namespace {
 
-// How messages name a key of a design: "{{key}}" for flags, which the program writes as its
-// option (error.hpp), or "where.key" in a file.
 std::string engine_key_name(const std::string& where, const std::string& key) { return where.empty() ? "{{" + key + "}}" : where + "." + key; }
+
+namespace {
 
 // A value a design must have: the message says what it is, with the table's example written as
 // a flag ("--mb 660kg") or as a key ("mb": "660kg"), as the design was given.

@@ -135,6 +135,10 @@ void refuse_near_miss(const std::string& key, const std::vector<std::string>& kn
 /// naming the keys as engine_record does.
 std::optional<SetRelease> release_of(const DesignValues& values, const std::string& where);
 
+/// How messages name a key of a design: "{{key}}" for flags, which a program writes as its
+/// option (error.hpp), or "where.key" in a file ("design.L4").
+std::string engine_key_name(const std::string& where, const std::string& key);
+
 /// The engine of a design's values: L3, or F = (L2 + L3)/H, theta_i 30 deg unless given, the
 /// material of eq:kMkD where not given; checked (check_engine). `where` names the design in
 /// messages ("design[2]"; empty: a program's options, named "{{L4}}" as error.hpp says).
