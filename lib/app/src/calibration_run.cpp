@@ -58,11 +58,20 @@ CalibrationRun calibrate_over_unknowns(const CalibrationRunInputs& in, const Pro
     throw Error(ErrorKind::bad_number,
                 "{{measured}} = " + format_significant(in.measured.range, 4) + " m ± " + format_significant(in.measured.uncertainty, 4) +
                     " m: give the measured range, e.g. 34.4m±1.5m");
+  // The friction at the pins is what the run fits: drawn as an unknown, it would be fitted over
+  // itself (issue 62: a "coefficient" of 2.9 to 82 from --axle-friction 0..0.3).
+  for (const SpreadInput& spread : in.request.spreads)
+    for (const auto& [member, key] : {std::pair{&DesignValues::axle_friction, "axle_friction"}, {&DesignValues::hinge_friction, "hinge_friction"}})
+      if (spread.value == member)
+        throw Error(ErrorKind::usage, "{{" + std::string(key) +
+                                          "}} is what calibrate fits: drop its range (the span you deem plausible is --plausible-friction, "
+                                          "0.1..0.5 by default)");
   CalibrationRun run;
   run.given = in;
-  // Bad input ends the run before it starts, with its exit code: at the unknowns' first values,
-  // and at each end of each unknown's range (a normal spread's 4 sigma), the others at their
-  // first: a range of radii that reaches zero leaves nothing to fit at its end.
+  // Bad input ends the run before it starts, with its exit code: the engine at the unknowns'
+  // first values (in its own words), then at each end of each unknown's range (a normal spread's
+  // 4 sigma), the others at their first (in the range's words): a range of radii that reaches
+  // zero leaves nothing to fit at its end.
   const auto engine_at = [&](const SpreadInput* varied, double value) {
     const MonteCarloRequest sample = with_draws(in.request, [&](const Spread& s) { return varied && &s == &varied->input.spread ? value : s.a; });
     const auto [engine, settings] = engine_of_values(sample);
@@ -75,6 +84,11 @@ CalibrationRun calibrate_over_unknowns(const CalibrationRunInputs& in, const Pro
       throw Error(ErrorKind::bad_number, "no pin has a radius for a friction to act on there; start the range above 0");
     }
   };
+  {  // the first values: a refusal of the engine there is its own, in its own words
+    const auto [engine, settings] = engine_of_values(with_draws(in.request, [](const Spread& s) { return s.a; }));
+    check_engine(engine);
+    check_shot_settings(settings);
+  }
   for (const SpreadInput& spread : in.request.spreads) {
     const Spread& s = spread.input.spread;
     const bool uniform = s.kind == Spread::Kind::uniform;
