@@ -28,6 +28,9 @@ __commit__ = _trebuchet.commit
 """The commit the module is built from (git describe), as trebuchet-verify --version prints it."""
 
 
+_MAX_THREADS = 65536  # settings.def's row of --threads: "1 or more (at most 65536)"
+
+
 class TrebuchetError(ValueError):
     """A request the library refuses: the programs' message, its kind (docs/exit_codes.md) and
     the keys it names."""
@@ -259,6 +262,8 @@ def monte_carlo(design=None, *, attested=None, samples=None, seed=None, threads=
                              "usage", parts)
     if threads is not None and (isinstance(threads, bool) or not isinstance(threads, numbers.Integral) or threads < 1):
         raise TypeError(f"threads: {threads!r} is not a number of threads; give a whole number from 1 up, or None for the cores")
+    if threads is not None and threads > _MAX_THREADS:  # the programs' --threads has the same bound
+        raise TrebuchetError(f"threads: {threads} must be 1 or more (at most {_MAX_THREADS})", "usage", ["threads"])
     request = dict(settings)
     request.update({key: value for key, value in (("samples", samples), ("seed", seed)) if value is not None})
     key, given = ("design", design) if design is not None else ("attested", attested)

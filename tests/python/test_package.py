@@ -98,6 +98,10 @@ def test_monte_carlo_threads_give_the_same_answer():
     assert one["percentiles"] == two["percentiles"]
     with pytest.raises(TypeError, match="threads"):
         trebuchet.monte_carlo(design, samples=10, threads=0)
+    # More threads than the programs take is refused as they refuse it (issue 62).
+    with pytest.raises(trebuchet.TrebuchetError, match="at most 65536") as refused:
+        trebuchet.monte_carlo(design, samples=10, threads=10**30)
+    assert refused.value.names == ["threads"]
 
 
 def test_a_monte_carlo_report_given_back_is_the_same_run():
