@@ -225,7 +225,12 @@ TEST_CASE("every key of every request has its row, and a setting has one name at
   with_claim["R"] = "300m", with_claim["T"] = "200kJ";
   CHECK(api::shot({{"design", with_claim}, {"tol", 1e-9}}) == api::shot({{"design", with_claim}, {"tolerance", 1e-9}}));
   // Given twice under its two names, or misspelt: refused by name.
-  CHECK_THAT(refusal(api::shot, {{"design", design}, {"quality", "range"}, {"release", "Q"}}).what(), Catch::Contains("given already"));
+  CHECK_THAT(refusal(api::shot, {{"design", design}, {"quality", "range"}, {"release", "Q"}}).what(),
+             Catch::Contains("quality and release both give quality; keep one"));
+  // Both of the wind's names are named, the air's detail as its path (issue 62).
+  nlohmann::json windy = design;
+  windy["air"] = {{"wind", "1m/s"}}, windy["wind"] = "2m/s";
+  CHECK_THAT(refusal(api::shot, {{"design", windy}}).what(), Catch::Contains("design.air.wind and design.wind both give wind; keep one"));
   CHECK_THAT(refusal(api::shot, {{"design", design}, {"tolerence", 0.1}}).what(), Catch::Contains("did you mean \"tolerance\""));
   // The air's details flat, as the flags give them, or in the air's object: one shot.
   CHECK(api::shot({{"design", design}, {"air", true}, {"wind", "5m/s"}, {"cd", 0.5}}) ==

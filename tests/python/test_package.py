@@ -42,7 +42,7 @@ def test_a_setting_has_one_name_and_its_alias():
     assert trebuchet.shot(claimed, tol=1e-9) == trebuchet.shot(claimed, tolerance=1e-9)
     with pytest.raises(trebuchet.TrebuchetError, match='unknown key "tolerence"; did you mean "tolerance"'):
         trebuchet.shot(CA, tolerence=1e-9)
-    with pytest.raises(trebuchet.TrebuchetError, match="given already"):
+    with pytest.raises(trebuchet.TrebuchetError, match="both give"):
         trebuchet.shot(CA, quality="range", release="Q")
     assert {"quality", "tol", "air", "samples"} <= {row["key"] for row in trebuchet.settings()}
 

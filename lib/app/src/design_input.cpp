@@ -226,7 +226,7 @@ nlohmann::json design_object(const nlohmann::json& given) {
 
 SettingsValues read_settings(const nlohmann::json& object, unsigned doors, const std::string& where) {
   SettingsValues v;
-  std::vector<Setting> given;
+  std::vector<std::pair<Setting, std::string>> given;  // each setting read, and the key that gave it
   const auto name_of = [&](const std::string& key) { return where.empty() ? "{{" + key + "}}" : where + "." + key; };
   const auto text_of = [&](const nlohmann::json& value, const std::string& key) -> std::string {
     if (value.is_string()) return value.get<std::string>();
@@ -240,9 +240,10 @@ SettingsValues read_settings(const nlohmann::json& object, unsigned doors, const
     throw Error(ErrorKind::usage, name_of(key) + ": " + brief_json(value) + " must be a number, a text or true or false");
   };
   const auto read = [&](const SettingRow& row, const nlohmann::json& value, const std::string& key) {
-    if (std::find(given.begin(), given.end(), row.id) != given.end())
-      throw Error(ErrorKind::usage, name_of(key) + " is " + row.key + ", given already; keep one");
-    given.push_back(row.id);
+    const auto first = std::find_if(given.begin(), given.end(), [&](const auto& g) { return g.first == row.id; });
+    if (first != given.end())
+      throw Error(ErrorKind::usage, name_of(first->second) + " and " + name_of(key) + " both give " + row.key + "; keep one");
+    given.emplace_back(row.id, key);
     read_setting(row.id, text_of(value, key), v, name_of(key));
   };
   if (!object.is_object()) return v;
