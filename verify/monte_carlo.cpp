@@ -122,7 +122,7 @@ int run_monte_carlo(const Options& o, bool complete, const nlohmann::json* desig
                                 describe_monte_carlo_release(request),
                                 seed,
                                 complete ? "the completed engine" : "the shot",
-                                settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"),
+                                describe_monte_carlo_air(request),
                                 settings.air.has_value(),
                                 seconds,
                                 thread_count(o.threads, static_cast<std::size_t>(summary.samples)),

@@ -456,7 +456,7 @@ ordered_json monte_carlo(const json& request) {
                                 describe_monte_carlo_release(run),
                                 seed,
                                 completes ? "the completed engine" : "the shot",
-                                settings.air ? describe_air(*settings.air, 0) : std::string("vacuum"),
+                                describe_monte_carlo_air(run),
                                 settings.air.has_value(),
                                 0,
                                 1,

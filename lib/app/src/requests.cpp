@@ -135,6 +135,18 @@ Verification sample_verification(const MonteCarloRequest& sample) {
   return verify_engine(engine_record(sample.values, sample.where).engine, settings);
 }
 
+std::string describe_monte_carlo_air(const MonteCarloRequest& request) {
+  const ShotSettings settings = shot_settings(with_draws(request, [](const Spread& s) { return s.a; }).settings);
+  if (!settings.air) return "vacuum";
+  AirDrawn drawn;
+  for (const SpreadInput& spread : request.spreads) {
+    drawn.cd = drawn.cd || spread.setting == &SettingsValues::cd;
+    drawn.density = drawn.density || spread.setting == &SettingsValues::air_density;
+    drawn.wind = drawn.wind || spread.setting == &SettingsValues::wind;
+  }
+  return describe_air(*settings.air, 0, drawn);
+}
+
 std::string describe_monte_carlo_release(const MonteCarloRequest& request) {
   const MonteCarloRequest first = with_draws(request, [](const Spread& s) { return s.a; });
   ShotSettings settings = shot_settings(first.settings);

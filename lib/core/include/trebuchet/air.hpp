@@ -69,6 +69,11 @@ std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Dr
 
 /// "air (Cd 0.47, air 1.2 kg/m3, a sphere of 2500 kg/m3, d = 0.43 m, no wind)" for outputs; the
 /// diameter only for a mass > 0.
-std::string describe_air(const Air& air, double mass);
+/// Which of an air's values a Monte Carlo run draws from a spread: described as drawn, not as the
+/// value of its first sample.
+struct AirDrawn {
+  bool cd = false, density = false, wind = false;
+};
+std::string describe_air(const Air& air, double mass, AirDrawn drawn = {});
 
 }  // namespace trebuchet

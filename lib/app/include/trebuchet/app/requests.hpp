@@ -67,6 +67,11 @@ Verification sample_verification(const MonteCarloRequest& sample);
 /// the user named it.
 std::string describe_monte_carlo_release(const MonteCarloRequest& request);
 
+/// The air the run's shots fly through, for its report: "vacuum", or describe_air with the
+/// values drawn from a spread said to be drawn ("air (Cd drawn, ...)"), not given as the first
+/// sample's.
+std::string describe_monte_carlo_air(const MonteCarloRequest& request);
+
 /// The shots a sample takes (1, or those of a completion at the first values), checking that
 /// the first values make an engine and its shot: bad input there is thrown, as the run's.
 std::int64_t shots_per_sample(const MonteCarloRequest& request);
