@@ -41,7 +41,7 @@ run_ctest() {
   ctest --test-dir "$build" "$@" | tee "$build/ctest-output.log" || status=$?
   echo "-- the ten slowest tests of $build (wall seconds, $(nproc) at a time):"
   sed -nE 's/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: (.*[^ .]) \.+ *\**[A-Za-z ]+ +([0-9.]+) sec$/\2  \1/p' "$build/ctest-output.log" |
-    sort -g -r | head -n 10 | awk '{ printf "%8.1f  %s\n", $1, substr($0, index($0, "  ") + 2) }'
+    sort -g -r | awk 'NR <= 10 { printf "%8.1f  %s\n", $1, substr($0, index($0, "  ") + 2) }'  # no head: it would end sort by SIGPIPE, and pipefail the script
   return "$status"
 }
 
