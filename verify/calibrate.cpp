@@ -68,9 +68,9 @@ int run_calibrate(const Options& flags) {
   // --samples and --seed draw the unknowns; with none, they would go unused without a word.
   for (const auto& [given, flag] : {std::pair{o.settings.samples.has_value(), "--samples"}, {o.settings.seed.has_value(), "--seed"}})
     if (given)
-      throw Error(ErrorKind::usage, std::string(flag) +
-                                        " draws the unknowns of a calibration, and none is given as a range or a spread: drop " + flag +
-                                        ", or give an unknown as one (--axle-radius 2cm..3cm)");
+      throw Error(ErrorKind::usage,
+                  std::string(flag) + " draws the unknowns of a calibration, and none is given as a range or a spread: drop " + flag +
+                      ", or give an unknown as one (--axle-radius 2cm..3cm)");
   const EngineRecord record = engine_record(values, where);
   Engine engine = record.engine;
   engine.material = material_of(o.design, engine.material);  // the flags' material over a file's

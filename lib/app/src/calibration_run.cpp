@@ -63,9 +63,10 @@ CalibrationRun calibrate_over_unknowns(const CalibrationRunInputs& in, const Pro
   for (const SpreadInput& spread : in.request.spreads)
     for (const auto& [member, key] : {std::pair{&DesignValues::axle_friction, "axle_friction"}, {&DesignValues::hinge_friction, "hinge_friction"}})
       if (spread.value == member)
-        throw Error(ErrorKind::usage, "{{" + std::string(key) +
-                                          "}} is what calibrate fits: drop its range (the span you deem plausible is --plausible-friction, "
-                                          "0.1..0.5 by default)");
+        throw Error(ErrorKind::usage,
+                    "{{" + std::string(key) +
+                        "}} is what calibrate fits: drop its range (the span you deem plausible is --plausible-friction, "
+                        "0.1..0.5 by default)");
   CalibrationRun run;
   run.given = in;
   // Bad input ends the run before it starts, with its exit code: the engine at the unknowns'

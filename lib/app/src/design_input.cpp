@@ -241,8 +241,7 @@ SettingsValues read_settings(const nlohmann::json& object, unsigned doors, const
   };
   const auto read = [&](const SettingRow& row, const nlohmann::json& value, const std::string& key) {
     const auto first = std::find_if(given.begin(), given.end(), [&](const auto& g) { return g.first == row.id; });
-    if (first != given.end())
-      throw Error(ErrorKind::usage, name_of(first->second) + " and " + name_of(key) + " both give " + row.key + "; keep one");
+    if (first != given.end()) throw Error(ErrorKind::usage, name_of(first->second) + " and " + name_of(key) + " both give " + row.key + "; keep one");
     given.emplace_back(row.id, key);
     read_setting(row.id, text_of(value, key), v, name_of(key));
   };

@@ -171,7 +171,8 @@ const std::map<Setting, Reader>& readers() {
        [](V& v, T text, T name) {
          v.samples = whole_number<int>(text, name, 1, static_cast<int>(max_run_shots), setting_row(Setting::samples).range);
        }},
-      {Setting::seed, [](V& v, T text, T name) { v.seed = whole_number<std::uint64_t>(text, name, 0, UINT64_MAX, setting_row(Setting::seed).range); }},
+      {Setting::seed,
+       [](V& v, T text, T name) { v.seed = whole_number<std::uint64_t>(text, name, 0, UINT64_MAX, setting_row(Setting::seed).range); }},
       {Setting::claim,
        [](V& v, T text, T name) {
          v.claim = parse_positive(text, D::length, name);

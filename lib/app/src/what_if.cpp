@@ -48,8 +48,9 @@ std::vector<WhatIfPoint> run_what_if(const DesignValues& values, const std::stri
   if (field.group == FieldGroup::release)
     for (const ReleaseBy by : {ReleaseBy::time, ReleaseBy::velocity_angle, ReleaseBy::pin_angle})
       if (const InputField& other = release_field(by); &other != &field && values.*other.member)
-        throw Error(ErrorKind::usage, engine_key_name(where, other.key) + " sets the release that the sweep varies as " + field.key +
-                                          "; give one of them (drop it, or vary " + other.key + " instead)");
+        throw Error(ErrorKind::usage,
+                    engine_key_name(where, other.key) + " sets the release that the sweep varies as " + field.key +
+                        "; give one of them (drop it, or vary " + other.key + " instead)");
   const std::vector<double> grid = what_if_values(what_if.from, what_if.to, what_if.points);
   std::vector<WhatIfPoint> points(grid.size());
   for_each_index(

@@ -175,15 +175,15 @@ std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Dr
 
 std::string describe_air(const Air& air, double mass, AirDrawn drawn) {
   std::string text = "air (";
-  text += drawn.cd               ? std::string("Cd drawn")
-      : air.drag_coefficient     ? "Cd " + format_significant(*air.drag_coefficient, 3)
-                                 : std::string("Cd(Re) of a smooth sphere");
+  text += drawn.cd           ? std::string("Cd drawn")
+      : air.drag_coefficient ? "Cd " + format_significant(*air.drag_coefficient, 3)
+                             : std::string("Cd(Re) of a smooth sphere");
   text += drawn.density ? std::string(", air density drawn") : ", air " + format_significant(air.density, 3) + " kg/m3";
   text += ", a sphere of " + format_significant(air.projectile_density, 5) + " kg/m3, ";
   if (mass > 0) text += "d = " + format_significant(sphere_diameter(mass, air.projectile_density), 3) + " m, ";
-  text += drawn.wind    ? std::string("wind drawn")
-      : air.wind == 0   ? std::string("no wind")
-                        : "wind " + format_significant(air.wind, 3) + " m/s toward the target";
+  text += drawn.wind  ? std::string("wind drawn")
+      : air.wind == 0 ? std::string("no wind")
+                      : "wind " + format_significant(air.wind, 3) + " m/s toward the target";
   return text + ")";
 }
 
