@@ -342,6 +342,11 @@ DesignValues overlay_flags(DesignValues values, const DesignValues& flags, const
     if (own && *own != *flag && !(field.member == &V::D && *own == 0)) say(field, field);
     own = flag;
   }
+  // The machine's flag over another machine is a change like a value's, and noted as one.
+  const MachineKind own_machine = values.machine.value_or(MachineKind::hinged);
+  if (flags.machine && *flags.machine != own_machine)
+    notes.push_back("{{machine}} " + machine_name(*flags.machine) + " replaces " + engine_key_name(where, machine_key) + " = " +
+                    machine_name(own_machine));
   if (flags.machine) values.machine = flags.machine;
   // A value the flag fixes another way goes with it, as a program's flags could not give both.
   const auto drop = [&](std::optional<double> V::*given, std::initializer_list<std::optional<double> V::*> others) {
