@@ -151,7 +151,7 @@ int run(const Options& options, bool format_given, bool F_given, bool block_give
                   "--spreadsheet opens on the paper's examples, or on exactly two givens; found " + std::to_string(givens.size()));
     }
     // The user's sites: a row each on the sheet "your sites", a refused row with its reason.
-    int failures = 0;
+    int failures = 0, overlong_rows = 0;
     if (!batch.empty()) {
       UserSites sites{batch == "-" ? std::string("stdin") : std::filesystem::path(batch).filename().string(), {}, {}};
       // --scale sets the sheet "model scaling" here: the sites are designed full size, as the sheet designs them.
@@ -160,11 +160,15 @@ int run(const Options& options, bool format_given, bool F_given, bool block_give
       failures = run_batch(
           input, table, full_size, [&](const std::vector<std::string>& passed) { sites.columns = passed; },
           [&](const BatchRow& row) {
-            if (row.error)
-              std::cerr << message_start() + ("trebuchet-calc: line " + std::to_string(row.line) + ": " + row.error->message(option_word) + "\n");
-            sites.rows.push_back({row.line, row.passed, row.request ? std::optional<DesignRequest>(*row.request) : std::nullopt,
-                                  row.error ? row.error->message(option_word) : std::string()});
+            // A name longer than a cell holds is refused with the row, the good rows kept.
+            const std::string overlong = overlong_cell(sites.columns, row.passed);
+            const std::string refusal = row.error ? row.error->message(option_word) : overlong;
+            if (!refusal.empty()) std::cerr << message_start() + ("trebuchet-calc: line " + std::to_string(row.line) + ": " + refusal + "\n");
+            if (!row.error && !overlong.empty()) ++overlong_rows;
+            sites.rows.push_back(
+                {row.line, row.passed, row.request && overlong.empty() ? std::optional<DesignRequest>(*row.request) : std::nullopt, refusal});
           });
+      failures += overlong_rows;
       inputs.sites = std::move(sites);
     }
     write_spreadsheet(table, inputs, spreadsheet);

@@ -183,7 +183,10 @@ class Sheet {
     worksheet_write_string(sheet_, 1, 0, explanation.c_str(), formats_.note);
   }
   void heading(int row, int col, const std::string& text) { worksheet_write_string(sheet_, row, col, text.c_str(), formats_.heading); }
-  void text(int row, int col, const std::string& text) { worksheet_write_string(sheet_, row, col, text.c_str(), nullptr); }
+  // A text longer than a cell holds is cut to it (overlong_cell refuses its row), not left blank.
+  void text(int row, int col, const std::string& text) {
+    worksheet_write_string(sheet_, row, col, text.substr(0, max_cell_characters).c_str(), nullptr);
+  }
 
   // A drop-down of the texts of `list` (ends with nullptr) on an input cell.
   void choices(int row, int col, const char** list) {
@@ -1128,6 +1131,14 @@ void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& input
   if (workbook_close(owned.release()) != LXW_NO_ERROR)
     throw Error(ErrorKind::usage, "{{spreadsheet}}: cannot write '" + path + "'; give a file you can write to");
   output.commit();
+}
+
+std::string overlong_cell(const std::vector<std::string>& columns, const std::vector<std::string>& passed) {
+  for (std::size_t k = 0; k < passed.size() && k < columns.size(); ++k)
+    if (passed[k].size() > max_cell_characters)
+      return "column '" + columns[k] + "' holds " + std::to_string(passed[k].size()) + " characters, more than a spreadsheet's cell holds (" +
+          std::to_string(max_cell_characters) + "); shorten it";
+  return "";
 }
 
 }  // namespace trebuchet

@@ -22,6 +22,15 @@ struct SiteRow {
   std::string refusal;  ///< the calculator's message for the row; empty when it designs
 };
 
+/// The most characters a spreadsheet's cell holds (Excel's limit, libxlsxwriter's LXW_STR_MAX):
+/// a longer text would leave its cell blank.
+inline constexpr std::size_t max_cell_characters = 32767;
+
+/// Why a site row's passed cells cannot stand in the workbook: "column 'site' holds 40000
+/// characters, ..." for the first cell longer than a cell holds; empty when each fits. Its
+/// cell then shows the text cut to the limit, and the row is refused with this reason.
+std::string overlong_cell(const std::vector<std::string>& columns, const std::vector<std::string>& passed);
+
 /// A user's sites: the file's name, its pass-through columns and its rows.
 struct UserSites {
   std::string source;
