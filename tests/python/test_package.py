@@ -40,8 +40,9 @@ def test_a_setting_has_one_name_and_its_alias():
     assert trebuchet.shot(CA, quality="range") == trebuchet.shot(CA, release="range")
     claimed = dict(CA, R="150m", T="40kJ")
     assert trebuchet.shot(claimed, tol=1e-9) == trebuchet.shot(claimed, tolerance=1e-9)
-    with pytest.raises(trebuchet.TrebuchetError, match='unknown key "tolerence"; did you mean "tolerance"'):
+    with pytest.raises(trebuchet.TrebuchetError, match='unknown key "tolerence"; did you mean "tolerance"') as refused:
         trebuchet.shot(CA, tolerence=1e-9)
+    assert refused.value.names == ["tolerence"]  # the key as given (issue 62)
     with pytest.raises(trebuchet.TrebuchetError, match="both give"):
         trebuchet.shot(CA, quality="range", release="Q")
     assert {"quality", "tol", "air", "samples"} <= {row["key"] for row in trebuchet.settings()}

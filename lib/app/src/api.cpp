@@ -564,6 +564,11 @@ ordered_json error_json(const Error& error) {
   static const std::regex in_object(R"((?:design|attested)(?:\[\d+\])?\.([A-Za-z_][A-Za-z0-9_]*))");
   const std::string text = error.message(key_word);
   for (auto it = std::sregex_iterator(text.begin(), text.end(), in_object); it != std::sregex_iterator(); ++it) name(key_word((*it)[1].str()));
+  // A key no reader knows is named as the user gave it (issue 62): unknown key "tol", or
+  // 'rope_mass' is no key of this request.
+  static const std::regex unknown_key(R"re(unknown key "([^"]+)"|'([^']+)' is no key)re");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), unknown_key); it != std::sregex_iterator(); ++it)
+    name((*it)[1].matched ? (*it)[1].str() : (*it)[2].str());
   return {{"error", text}, {"kind", kind_name(error.kind())}, {"names", names}};
 }
 
