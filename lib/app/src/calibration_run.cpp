@@ -61,12 +61,11 @@ CalibrationRun calibrate_over_unknowns(const CalibrationRunInputs& in, const Pro
   // The friction at the pins is what the run fits: drawn as an unknown, it would be fitted over
   // itself (issue 62: a "coefficient" of 2.9 to 82 from --axle-friction 0..0.3).
   for (const SpreadInput& spread : in.request.spreads)
-    for (const auto& [member, key] : {std::pair{&DesignValues::axle_friction, "axle_friction"}, {&DesignValues::hinge_friction, "hinge_friction"}})
-      if (spread.value == member)
-        throw Error(ErrorKind::usage,
-                    "{{" + std::string(key) +
-                        "}} is what calibrate fits: drop its range (the span you deem plausible is --plausible-friction, "
-                        "0.1..0.5 by default)");
+    if (spread.value == &DesignValues::axle_friction || spread.value == &DesignValues::hinge_friction)
+      throw Error(ErrorKind::usage,
+                  "{{" + std::string(field_of(spread.value).key) +
+                      "}} is what calibrate fits: drop its range (the span you deem plausible is --plausible-friction, "
+                      "0.1..0.5 by default)");
   CalibrationRun run;
   run.given = in;
   // Bad input ends the run before it starts, with its exit code: the engine at the unknowns'

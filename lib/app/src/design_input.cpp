@@ -227,7 +227,7 @@ nlohmann::json design_object(const nlohmann::json& given) {
 SettingsValues read_settings(const nlohmann::json& object, unsigned doors, const std::string& where) {
   SettingsValues v;
   std::vector<std::pair<Setting, std::string>> given;  // each setting read, and the key that gave it
-  const auto name_of = [&](const std::string& key) { return where.empty() ? "{{" + key + "}}" : where + "." + key; };
+  const auto name_of = [&](const std::string& key) { return engine_key_name(where, key); };
   const auto text_of = [&](const nlohmann::json& value, const std::string& key) -> std::string {
     if (value.is_string()) return value.get<std::string>();
     if (value.is_boolean()) return value.get<bool>() ? "true" : "false";

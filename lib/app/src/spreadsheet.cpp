@@ -156,6 +156,18 @@ struct Formats {
 
 // A worksheet whose rows are label | value | unit | equation and note. Formulas refer to other
 // sheets by name; references to the sheet itself are written without it.
+// A cell's limit counts characters, as libxlsxwriter does (UTF-8: every byte but 10xxxxxx
+// starts one); a text is cut at the start of a character, never inside one.
+std::size_t characters(const std::string& text) {
+  return static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+}
+std::string first_characters(const std::string& text, std::size_t count) {
+  std::size_t seen = 0;
+  for (std::size_t at = 0; at < text.size(); ++at)
+    if ((static_cast<unsigned char>(text[at]) & 0xC0) != 0x80 && seen++ == count) return text.substr(0, at);
+  return text;
+}
+
 class Sheet {
  public:
   Sheet(lxw_workbook* book, const std::string& name, Formats& formats)
@@ -185,7 +197,7 @@ class Sheet {
   void heading(int row, int col, const std::string& text) { worksheet_write_string(sheet_, row, col, text.c_str(), formats_.heading); }
   // A text longer than a cell holds is cut to it (overlong_cell refuses its row), not left blank.
   void text(int row, int col, const std::string& text) {
-    worksheet_write_string(sheet_, row, col, text.substr(0, max_cell_characters).c_str(), nullptr);
+    worksheet_write_string(sheet_, row, col, first_characters(text, max_cell_characters).c_str(), nullptr);
   }
 
   // A drop-down of the texts of `list` (ends with nullptr) on an input cell.
@@ -1135,8 +1147,8 @@ void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& input
 
 std::string overlong_cell(const std::vector<std::string>& columns, const std::vector<std::string>& passed) {
   for (std::size_t k = 0; k < passed.size() && k < columns.size(); ++k)
-    if (passed[k].size() > max_cell_characters)
-      return "column '" + columns[k] + "' holds " + std::to_string(passed[k].size()) + " characters, more than a spreadsheet's cell holds (" +
+    if (characters(passed[k]) > max_cell_characters)
+      return "column '" + columns[k] + "' holds " + std::to_string(characters(passed[k])) + " characters, more than a spreadsheet's cell holds (" +
           std::to_string(max_cell_characters) + "); shorten it";
   return "";
 }

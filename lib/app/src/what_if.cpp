@@ -45,12 +45,16 @@ std::vector<WhatIfPoint> run_what_if(const DesignValues& values, const std::stri
   if (!check.series_path.empty() || !check.plot_dir.empty()) throw Error(ErrorKind::usage, "a sweep's points draw no series or pictures");
   // A sweep of one release (release_angle) over a design that sets it another way (pin_angle)
   // would release at the swept value and drop the other without a word: refused by name.
-  if (field.group == FieldGroup::release)
-    for (const ReleaseBy by : {ReleaseBy::time, ReleaseBy::velocity_angle, ReleaseBy::pin_angle})
-      if (const InputField& other = release_field(by); &other != &field && values.*other.member)
-        throw Error(ErrorKind::usage,
-                    engine_key_name(where, other.key) + " sets the release that the sweep varies as " + field.key +
-                        "; give one of them (drop it, or vary " + other.key + " instead)");
+  if (field.group == FieldGroup::release) {
+    DesignValues others = values;
+    others.*field.member = std::nullopt;
+    if (const std::optional<SetRelease> other = release_of(others, where)) {
+      const char* key = release_field(other->by).key;
+      throw Error(ErrorKind::usage,
+                  engine_key_name(where, key) + " sets the release that the sweep varies as " + field.key + "; give one of them (drop it, or vary " +
+                      key + " instead)");
+    }
+  }
   const std::vector<double> grid = what_if_values(what_if.from, what_if.to, what_if.points);
   std::vector<WhatIfPoint> points(grid.size());
   for_each_index(
