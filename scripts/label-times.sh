@@ -5,6 +5,7 @@
 # Default: build (the Release tiers) and build-sanitize (the sanitizer pass).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/stages.sh
 builds=("$@")
 [ ${#builds[@]} -gt 0 ] || builds=(build build-sanitize)
 labels=(unit heavy cli robustness golden docs package python physics external web scale quick slow)
@@ -17,8 +18,8 @@ for label in "${labels[@]}"; do
     names=$(ctest --test-dir "$b" -N -L "^$label\$" | sed -nE 's/^ *Test +#[0-9]+: (.*)$/\1/p')
     entries=$(printf '%s' "$names" | grep -c . || true)
     seconds=$( { printf '%s\n' "$names" | sed 's/^/N\t/'; [ -f "$b/ctest-output.log" ] &&
-      sed -nE 's/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: (.*[^ .]) \.+ *\**[A-Za-z ]+ +([0-9.]+) sec$/T\t\1\t\2/p' "$b/ctest-output.log"; } |
-      awk -F'\t' '$1 == "N" { want[$2] = 1 } $1 == "T" && ($2 in want) { s += $3; n++ } END { printf n ? "%.0f" : "", s }')
+      test_seconds "$b/ctest-output.log" | sed 's/^/T\t/'; } |
+      awk -F'\t' '$1 == "N" { want[$2] = 1 } $1 == "T" && ($3 in want) { s += $2; n++ } END { printf n ? "%.0f" : "", s }')
     printf ' %s | %s |' "$entries" "${seconds:-not run}"
   done
   echo

@@ -35,13 +35,18 @@ stage() {
 # ctest's ten slowest tests, read from its output (a line "N/M Test #K: NAME .... Passed 1.23
 # sec" a test): run_ctest BUILD ARGS... runs ctest on BUILD with ARGS and keeps the output in
 # BUILD/ctest-output.log. (Its own CTestCostData.txt cuts a name at its first space.)
+# Each test's wall seconds in a ctest output LOG, a line "SECONDS<tab>NAME" a test.
+test_seconds() {
+  sed -nE 's/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: (.*[^ .]) \.+ *\**[A-Za-z ]+ +([0-9.]+) sec$/\2\t\1/p' "$1"
+}
+
 run_ctest() {
   local build=$1 status=0
   shift
   ctest --test-dir "$build" "$@" | tee "$build/ctest-output.log" || status=$?
   echo "-- the ten slowest tests of $build (wall seconds, $(nproc) at a time):"
-  sed -nE 's/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: (.*[^ .]) \.+ *\**[A-Za-z ]+ +([0-9.]+) sec$/\2  \1/p' "$build/ctest-output.log" |
-    sort -g -r | awk 'NR <= 10 { printf "%8.1f  %s\n", $1, substr($0, index($0, "  ") + 2) }'  # no head: it would end sort by SIGPIPE, and pipefail the script
+  test_seconds "$build/ctest-output.log" |
+    sort -g -r | awk -F'\t' 'NR <= 10 { printf "%8.1f  %s\n", $1, $2 }'  # no head: it would end sort by SIGPIPE, and pipefail the script
   return "$status"
 }
 
