@@ -27,7 +27,7 @@ int run_calibrate_over_unknowns(const Options& o, const DesignValues& values) {
       throw Error(ErrorKind::usage,
                   std::string(flag) + " follows one calibrated engine; with unknowns given as ranges or spreads there is one per draw: drop " + flag +
                       ", or give each unknown one value");
-  const MonteCarloRequest request{values, o.settings, o.spreads, false, ""};
+  const MonteCarloRequest request{values, o.settings, o.spreads, false, "", {}};
   CalibrationRunInputs inputs{request, *o.measured, o.plausible_friction, o.settings.samples.value_or(200), o.settings.seed.value_or(1), o.threads};
   check_monte_carlo_work(inputs.samples, 12, "fits");  // about a dozen shots a fit
   const CalibrationRun run = calibrate_over_unknowns(inputs, progress_bar("fits"));

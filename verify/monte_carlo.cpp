@@ -42,12 +42,7 @@ namespace {
 MonteCarloRequest file_run(const Options& o, const nlohmann::json& design, const std::string& where) {
   nlohmann::json passed;
   MonteCarloRequest run = read_monte_carlo_design(design, where, passed);
-  if (run.values.R || run.values.T)
-    throw Error(ErrorKind::usage,
-                where +
-                    " gives R and T, which check one shot against a predicted capacity; a Monte Carlo run reports the spread of "
-                    "R and T instead: drop them from the design");
-  std::vector<std::string> notes;
+  std::vector<std::string> notes = run.notes;
   // What the flags give for a value or setting, as a note writes it: its spread, Cd(Re), or its value.
   const auto flag_text = [&](const SpreadInput& s) -> std::string {
     for (const SpreadInput& flag : o.spreads)
@@ -55,8 +50,16 @@ MonteCarloRequest file_run(const Options& o, const nlohmann::json& design, const
     if (s.setting == &SettingsValues::cd && o.settings.cd_of_reynolds) return "Cd(Re)";
     return quantity_text(*(s.value ? o.design.*s.value : o.settings.*s.setting), s.input.dimension, UnitSystem::si, 6);
   };
+  // The value's key, whether the spread is the file's (named by its key) or a flag's (by its flag).
+  const auto key_of_spread = [](const SpreadInput& s) -> std::string {
+    if (s.value) return key_of(s.value);
+    for (const SettingRow& row : setting_rows())
+      if (number_slot(row.id) == s.setting) return row.key;
+    return s.input.name;
+  };
   const auto note = [&](const SpreadInput& s, const std::string& replaced) {
-    notes.push_back("{{" + s.input.name + "}} " + flag_text(s) + " replaces " + where + "." + s.input.name + " = " + replaced);
+    const std::string key = key_of_spread(s);
+    notes.push_back("{{" + key + "}} " + flag_text(s) + " replaces " + where + "." + key + " = " + replaced);
   };
   // A file's spread that the flags give (one value, a spread, Cd(Re), or vacuum for the air's) is no longer drawn.
   std::erase_if(run.spreads, [&](const SpreadInput& s) {

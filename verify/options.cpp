@@ -116,6 +116,6 @@ ShotSettings settings_of(const Options& o, bool over_designs) {
   return over_designs ? shot_settings_over_designs(o.settings) : shot_settings(o.settings);
 }
 
-MonteCarloRequest monte_carlo_request(const Options& o, bool completes) { return {o.design, o.settings, o.spreads, completes, ""}; }
+MonteCarloRequest monte_carlo_request(const Options& o, bool completes) { return {o.design, o.settings, o.spreads, completes, "", {}}; }
 
 }  // namespace trebuchet::verify

@@ -79,10 +79,13 @@ def _plain(value, path, depth=0):
 
 def _warn(record):
     """The record's warnings through warnings.warn, where a notebook shows them and a test can
-    turn them into errors."""
+    turn them into errors; and each key the library passed through unread, by name."""
     if isinstance(record, dict):
         for text in record.get("warnings", []) or []:
             warnings.warn(text, TrebuchetWarning, stacklevel=3)
+        for key in record.get("passed", {}) or {}:
+            warnings.warn(f"{key}: passed through unread, as a text of your own (a site, a comment); a value meant for the engine "
+                          "goes under its input's key (fields())", TrebuchetWarning, stacklevel=3)
 
 
 def _call(function, request):
@@ -109,10 +112,17 @@ def design(**givens):
     return _call(_trebuchet.design, givens)
 
 
-# The keys of the engine that a keyword argument may give beside the design: the release its
-# builder set, and the machine (fields(): group "release", and "machine").
+def _input_names(operation):
+    """Each input's names (its key, then its aliases) that a keyword argument may give over a
+    design or attested values: every row of fields() that `operation` takes, less the capacity
+    (fit's own arguments) and the material (a key of the request itself)."""
+    rows = json.loads(_trebuchet.fields("{}"))["fields"]
+    return [[row["key"], *row["aliases"]] for row in rows if operation in row["operations"] and row["group"] not in ("capacity", "material")]
+
+
+_SHOT_INPUTS = _input_names("shot")
+_COMPLETE_INPUTS = _input_names("complete")
 _RELEASE_KEYS = ("release_time", "release_angle_deg", "release_angle", "pin_angle_deg", "pin_angle")
-_BESIDE_THE_DESIGN = (*_RELEASE_KEYS, "machine")
 
 
 def _over_engine(design, keys):
@@ -127,21 +137,32 @@ def _over_engine(design, keys):
         engine = {k: v for k, v in design.items() if k not in ("R", "T", "assumptions", "passed")}
         design = {"engine": engine, "assumptions": design["assumptions"], "passed": design.get("passed", {})}
 
-    def over(engine):  # a release given replaces the engine's own, of any form, as the programs' flags do
-        kept = {k: v for k, v in engine.items() if k not in _RELEASE_KEYS} if set(keys) & set(_RELEASE_KEYS) else engine
-        return dict(kept, **keys)
-
     if isinstance(design.get("engine"), dict):
-        record = dict(design, engine=over(design["engine"]))
+        record = dict(design, engine=_over_values(design["engine"], keys))
         if "R" in keys or "T" in keys:
             record.pop("predicted", None)  # the capacity it was checked against; fit's replaces it
         return record
-    return over(design)
+    return _over_values(design, keys)
+
+
+def _over_values(values, keys):
+    """`values` with `keys` over them: a value given replaces the one given under any of its
+    names, a release the one given in any form, as the programs' flags do."""
+    replaced = {name for names in _SHOT_INPUTS + _COMPLETE_INPUTS if set(names) & set(keys) for name in names}
+    if set(keys) & set(_RELEASE_KEYS):
+        replaced |= set(_RELEASE_KEYS)
+    return dict({k: v for k, v in values.items() if k not in replaced}, **keys)
+
+
+def _taken(settings, inputs):
+    """The keyword arguments that give one of `inputs`, taken out of `settings`."""
+    return {name: settings.pop(name) for names in inputs for name in names if name in settings}
 
 
 def _with_engine_keys(design, settings):
-    """The design with the release and the machine given as keyword arguments, over its own."""
-    return _over_engine(design, {key: settings.pop(key) for key in _BESIDE_THE_DESIGN if key in settings})
+    """The design with each of its inputs given as a keyword argument (L4=, rope_mass=, the
+    release, the machine) over its own."""
+    return _over_engine(design, _taken(settings, _SHOT_INPUTS))
 
 
 def shot(design, *, series=False, **settings):
@@ -149,6 +170,8 @@ def shot(design, *, series=False, **settings):
     record the programs or this module wrote (a shot, fit, optimum, completion, contest, sweep
     point), which is shot again with its own settings.
 
+    Each input of the design (fields(): L4, rope_mass, ...) may also be given as a keyword here,
+    over the design's own, as the programs' flags go over a file's.
     The release: at the optimum of `quality` unless the engine sets one, by release_time [s],
     release_angle_deg (the projectile's velocity angle, VirtualTrebuchet's) or pin_angle_deg (the
     pin a builder bends), each in the design or as a keyword here. The machine: machine="hinged"
@@ -234,7 +257,12 @@ def contest(m, *, machine="hinged", **options):
 
 def complete(attested, **settings):
     """The best engine that keeps the attested values (Lb, L1, L2, H, L4, M, m, mb, D, l,
-    theta_i_deg, F, ...)."""
+    theta_i_deg, F, ...); each may also be given as a keyword argument, over attested's own."""
+    given = _taken(settings, _COMPLETE_INPUTS)
+    if given:
+        if not isinstance(attested, dict):
+            raise TypeError("attested: give the attested values as a dict of their keys")
+        attested = _over_values(attested, given)
     return _call(_trebuchet.complete, dict(settings, attested=attested))
 
 
@@ -264,6 +292,7 @@ def monte_carlo(design=None, *, attested=None, samples=None, seed=None, threads=
         raise TypeError(f"threads: {threads!r} is not a number of threads; give a whole number from 1 up, or None for the cores")
     if threads is not None and threads > _MAX_THREADS:  # the programs' --threads has the same bound
         raise TrebuchetError(f"threads: {threads} must be 1 or more (at most {_MAX_THREADS})", "usage", ["threads"])
+    inputs = _taken(settings, _SHOT_INPUTS if design is not None else _COMPLETE_INPUTS)  # a value, range or spread over the design's own
     request = dict(settings)
     request.update({key: value for key, value in (("samples", samples), ("seed", seed)) if value is not None})
     key, given = ("design", design) if design is not None else ("attested", attested)
@@ -271,6 +300,10 @@ def monte_carlo(design=None, *, attested=None, samples=None, seed=None, threads=
     # arrays); the library reads it, and names the key to give it under if it is the other's.
     if isinstance(given, dict) and "uncertain" in given:
         given = {part: given[part] for part in ("uncertain", "design", "attested") if part in given}
+        if inputs and isinstance(given.get(key), dict):
+            given[key] = _over_values(given[key], inputs)
+    elif inputs:
+        given = _over_engine(given, inputs) if design is not None else _over_values(given, inputs)
     request[key] = given
     # The request checked once, before any thread starts; it answers with the run's samples.
     samples = _call(_trebuchet.monte_carlo, dict(request, first=0, count=0))["samples"]
@@ -316,6 +349,8 @@ def monte_carlo(design=None, *, attested=None, samples=None, seed=None, threads=
             print(file=sys.stderr)
     outcomes = [outcome for part in parts for outcome in part]
     answer = _call(_trebuchet.monte_carlo, dict(request, outcomes=outcomes))
+    for text in answer.get("notes", []):  # what reading the design left out (its capacity), as the programs' notes say
+        warnings.warn(text, TrebuchetWarning, stacklevel=2)
     _arrays(answer["draws"])
     for name in ["R", "T", "eps", "v"]:
         answer["samples_" + name] = answer["draws"][name]

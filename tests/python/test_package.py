@@ -293,11 +293,87 @@ def test_the_stubs_keywords_are_those_the_library_takes():
             taken = {name for s in settings if request in s["requests"] for name in [s["key"], *s["aliases"]]}
             taken |= {name for f in fields if f["group"] in ("material", "release") or f["key"] == "machine" for name in [f["key"], *f["aliases"]]}
             taken |= {"theta_i_deg", "theta", "F", "l", "D", "box_width", "box_height"}
-            for argument in node.args.kwonlyargs + node.args.args[1:]:
-                assert argument.arg in taken | own, f"{node.name}({argument.arg}=...) is no key the library takes"
+            # Each input of the design (every row of fields() the function's operation takes, with
+            # its aliases) is a keyword over the design's own, and the stub names each.
+            operations = {"complete": {"complete"}, "monte_carlo": {"shot", "complete"}, "contest": set(), "optimize": set()}.get(node.name, {"shot"})
+            inputs = {name for f in fields if set(f["operations"]) & operations and f["group"] not in ("capacity", "material")
+                      for name in [f["key"], *f["aliases"]]}
+            named = {argument.arg for argument in node.args.kwonlyargs + node.args.args[1:]}
+            for name in named:
+                assert name in taken | inputs | own, f"{node.name}({name}=...) is no key the library takes"
+            assert not inputs - named, f"{node.name} takes {sorted(inputs - named)} as keywords, which its stub does not name"
 
 
 def test_complete_refuses_a_shots_input_by_name():
     with pytest.raises(trebuchet.TrebuchetError, match="attested.beam_cm: complete does not take") as refused:
         trebuchet.complete(dict(Lb="9.5m", M="3t", m="50kg", beam_cm="2m"))
     assert refused.value.names == ["beam_cm"]
+
+
+# Issue 62: every value a user gives is used, refused or passed through in plain sight.
+E = dict(L1=4.13, L2=0.88, F=2 / 3, L4=3.55, M=3110, m=50, mb=174)
+
+
+def test_a_number_under_a_key_that_is_no_input_is_refused_by_name():
+    # A number (or a quantity) meant for the engine must not pass unread: the refusal names the
+    # key and the place for a user's own numbers.
+    for key, value in [("counterweight", 3000), ("weight", "0.5kg"), ("year", "1304")]:
+        with pytest.raises(trebuchet.TrebuchetError, match=f"design.{key}: .* is a number under a key that is no input") as refused:
+            trebuchet.shot(dict(E, **{key: value}))
+        assert refused.value.kind == "usage" and refused.value.names == [key]
+        assert '"notes"' in str(refused.value)
+    # Near an input's name (the peer's slingMass is our pouch_mass): the input is named.
+    with pytest.raises(trebuchet.TrebuchetError, match='did you mean "pouch_mass"'):
+        trebuchet.shot(dict(E, sling_mass="0.5kg"))
+
+
+def test_the_peers_sling_mass_is_the_pouchs():
+    # Trebuchator's slingMass is a mass at the sling's end, carried with the stone: our pouch_mass.
+    assert trebuchet.shot(dict(E, slingMass=0.5))["R"] == trebuchet.shot(dict(E, pouch_mass=0.5))["R"]
+    assert trebuchet.shot(dict(E, slingMass=0.5))["R"] != trebuchet.shot(E)["R"]
+
+
+def test_texts_and_notes_pass_through_with_a_warning_naming_each_key():
+    with pytest.warns(trebuchet.TrebuchetWarning, match="site: passed through unread") as caught:
+        record = trebuchet.shot(dict(E, site="Alcalá", notes={"year": 1304, "catalogue": "B12"}))
+    assert record["passed"] == {"site": "Alcalá", "notes": {"year": 1304, "catalogue": "B12"}}
+    assert {str(w.message).split(":")[0] for w in caught} == {"site", "notes"}
+    # The record read back keeps them, and its shot is the same.
+    with pytest.warns(trebuchet.TrebuchetWarning):
+        again = trebuchet.shot(record)
+    assert again["passed"] == record["passed"] and again["R"] == record["R"]
+
+
+def test_a_value_beside_a_records_engine_is_refused_and_a_keyword_goes_over_it():
+    record = trebuchet.shot(E)
+    with pytest.raises(trebuchet.TrebuchetError, match='"L4" beside a record\'s "engine" is not read') as refused:
+        trebuchet.shot(dict(record, L4=2.0))
+    assert refused.value.names == ["L4"]
+    with pytest.raises(trebuchet.TrebuchetError, match='"tol" beside a record\'s "engine"'):
+        trebuchet.shot(dict(record, tol=0.001))
+    # The same value as a keyword over the record is the shot of the design with it (56.94 m).
+    assert trebuchet.shot(record, L4=2.0)["R"] == trebuchet.shot(dict(E, L4=2.0))["R"]
+
+
+def test_every_input_is_a_keyword_with_the_result_of_its_key_in_the_design():
+    assert trebuchet.shot(E, rope_mass=0.3) == trebuchet.shot(dict(E, rope_mass=0.3))
+    assert trebuchet.shot(E, theta=40) == trebuchet.shot(dict(E, theta_i_deg=40))
+    # A keyword over the design's own under another name of the same input replaces it.
+    assert trebuchet.shot(dict(E, theta=40), theta_i_deg=35) == trebuchet.shot(dict(E, theta_i_deg=35))
+    assert trebuchet.compare(E, M=3000) == trebuchet.compare(dict(E, M=3000))
+    attested = dict(Lb="5m", M="3t", m="50kg")
+    assert trebuchet.complete(attested, L4="3.5m") == trebuchet.complete(dict(attested, L4="3.5m"))
+    run = trebuchet.monte_carlo(E, M="2.9t..3.3t", samples=20)
+    assert run["percentiles"] == trebuchet.monte_carlo(dict(E, M="2.9t..3.3t"), samples=20)["percentiles"]
+
+
+def test_a_monte_carlo_run_leaves_out_a_calculators_capacity_with_a_warning():
+    # One rule with the programs: a design's R and T (a calculator's record) are not checked by a
+    # run, which reports their spread; a tolerance without them is refused by name.
+    ca = trebuchet.design(R="150m", m="50kg")
+    with pytest.warns(trebuchet.TrebuchetWarning, match=r"design.R, design.T: the capacity the design gives is not checked"):
+        run = trebuchet.monte_carlo(dict(ca, M="2.9t..3.3t"), samples=20)
+    assert run["worked"] == 20
+    with pytest.raises(trebuchet.TrebuchetError, match="design.tol: a Monte Carlo run checks no capacity") as refused:
+        trebuchet.monte_carlo(dict(E, M="2.9t..3.3t", tol="abc"), samples=20)
+    assert refused.value.names == ["tol"]

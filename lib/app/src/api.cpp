@@ -146,8 +146,7 @@ DesignValues attested_of(const json& given, const std::string& where, const std:
                     where + "." + key + ": complete does not take the " + field->label +
                         " (it chooses a uniform beam, a point or given counterweight, the paper's release); leave it out, and "
                         "give it to shot with the completed engine");
-      refuse_near_miss(key, known, where);
-      passed[key] = value;
+      pass_through(key, value, known, where, &passed);
     }
   DesignValues v;
   for (const InputField& field : input_fields()) {
@@ -466,6 +465,7 @@ ordered_json monte_carlo(const json& request) {
   answer.erase("wall_time_s");  // a time is the caller's to measure; the report is the same on any machine
   // Every sample's drawn inputs and outcomes as the programs' --draws writes them, to 17 digits: the run's own numbers.
   if (flag_of(request, "draws_csv")) answer["draws_csv"] = monte_carlo_draws_csv(report);
+  if (!run.notes.empty()) answer["notes"] = run.notes;  // what reading the design left out, as the programs' notes say
   if (!passed.empty()) answer["passed"] = passed;
   return answer;
 }
@@ -565,10 +565,11 @@ ordered_json error_json(const Error& error) {
   const std::string text = error.message(key_word);
   for (auto it = std::sregex_iterator(text.begin(), text.end(), in_object); it != std::sregex_iterator(); ++it) name(key_word((*it)[1].str()));
   // A key no reader knows is named as the user gave it (issue 62): unknown key "tol", or
-  // 'rope_mass' is no key of this request.
-  static const std::regex unknown_key(R"re(unknown key "([^"]+)"|'([^']+)' is no key)re");
+  // 'rope_mass' is no key of this request; or a value a record holds but does not read: "L4" beside a record's "engine".
+  static const std::regex unknown_key(R"re(unknown key "([^"]+)"|'([^']+)' is no key|"([^"]+)" beside a record's)re");
   for (auto it = std::sregex_iterator(text.begin(), text.end(), unknown_key); it != std::sregex_iterator(); ++it)
-    name((*it)[1].matched ? (*it)[1].str() : (*it)[2].str());
+    for (int group = 1; group <= 3; ++group)
+      if ((*it)[group].matched) name((*it)[group].str());
   return {{"error", text}, {"kind", kind_name(error.kind())}, {"names", names}};
 }
 

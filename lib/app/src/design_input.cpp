@@ -138,6 +138,46 @@ void refuse_near_miss(const std::string& key, const std::vector<std::string>& kn
     throw Error(ErrorKind::usage, (where.empty() ? std::string() : where + ": ") + "unknown key \"" + key + "\"; did you mean \"" + meant + "\"?");
 }
 
+namespace {
+
+// Whether `value` reads as a number or a quantity of some dimension: 0.5, "0.5", "0.5kg",
+// "2/3", "2t..3t", "3.5m±0.2m".
+bool reads_as_quantity(const nlohmann::json& value) {
+  if (value.is_number()) return true;
+  if (!value.is_string()) return false;
+  const std::string text = value.get<std::string>();
+  std::vector<UnitDimension> dimensions{UnitDimension::dimensionless};
+  for (const UnitFactor& unit : unit_factors())
+    if (std::find(dimensions.begin(), dimensions.end(), unit.dimension) == dimensions.end()) dimensions.push_back(unit.dimension);
+  for (const UnitDimension dimension : dimensions) {
+    try {
+      parse_value(text, dimension, "");
+      return true;
+    } catch (const Error&) {
+    }
+    try {
+      if (parse_spread(text, dimension, "")) return true;
+    } catch (const Error&) {
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+void pass_through(const std::string& key, const nlohmann::json& value, const std::vector<std::string>& known, const std::string& where,
+                  nlohmann::json* passed) {
+  if (key == notes_key && value.is_array()) return;  // a record's own notes, written again when it is shot
+  refuse_near_miss(key, known, where);
+  if (key != notes_key && reads_as_quantity(value))
+    throw Error(ErrorKind::usage,
+                engine_key_name(where, key) + ": " + brief_json(value) +
+                    " is a number under a key that is no input or setting, so it would pass unread; give it under its "
+                    "input's key (docs/inputs.md), or keep your own numbers under \"" +
+                    notes_key + "\": {\"" + notes_key + "\": {\"" + key + "\": " + brief_json(value) + "}}");
+  if (passed) (*passed)[key] = value;
+}
+
 bool is_record(const nlohmann::json& given) {
   const auto holds_object = [&](const char* key) { return given.contains(key) && given[key].is_object(); };
   return given.is_object() &&
@@ -157,6 +197,24 @@ bool written_by_diameter(const nlohmann::json& engine, const nlohmann::json& air
   const auto d = number(engine, "projectile_diameter"), m = number(engine, "m"), density = number(air, "projectile_density");
   if (!d || !m || !density) return d.has_value();
   return *density > 0 && *m > 0 && std::abs(sphere_diameter(*m, *density) - *d) <= 1e-9 * *d;
+}
+
+// A record keeps its engine under "engine" and its settings under "assumptions": an input or a
+// setting put beside them would not be read, so it is refused by name. The record's own R and T
+// (its shot's), tolerance (its check's, beside "predicted") and copies of its engine's values
+// (calibrate's fitted friction; 0 for a part the engine leaves out) are no such value.
+void refuse_beside_engine(const nlohmann::json& record) {
+  const nlohmann::json& engine = record["engine"];
+  for (const auto& [key, value] : record.items()) {
+    if (key == "R" || key == "T" || (key == "tolerance" && record.contains("predicted"))) continue;
+    const bool input = find_field(key) != nullptr || key == machine_key;
+    if (input && (engine.contains(key) ? engine[key] == value : value.is_number() && value.get<double>() == 0)) continue;
+    if (!input && !find_setting(key, req_shot)) continue;  // a setting a shot of the record reads
+    throw Error(ErrorKind::usage,
+                "\"" + key + "\" beside a record's \"engine\" is not read; give it " +
+                    (input ? "in the engine (\"engine\": {\"" + key + "\": ...})" : std::string("in its \"assumptions\"")) +
+                    ", or over the record as a flag or a keyword (shot(record, " + key + "=...))");
+  }
 }
 
 }  // namespace
@@ -197,6 +255,7 @@ nlohmann::json design_object(const nlohmann::json& given) {
   // The engine: its own object, or (a completion's record) the record's keys, less the shot's
   // range and energy, which are no claim.
   nlohmann::json design = given.contains("engine") && given["engine"].is_object() ? given["engine"] : given;
+  if (given.contains("engine")) refuse_beside_engine(given);
   if (!given.contains("engine")) design.erase("R"), design.erase("T"), design.erase("assumptions"), design.erase("passed");
   // "assumptions" holds the settings under their keys, and beside them what is no setting: the
   // engine's own g, theta_i_deg and F (in "engine" too), the given release's description (the
@@ -445,11 +504,13 @@ DesignValues read_design_values(const nlohmann::json& given, const std::string& 
     std::vector<std::string> names;
     for (const auto& list : {design_output_names(), verification_output_names()})
       for (const std::string& name : list)
-        if (std::none_of(input_fields().begin(), input_fields().end(), [&](const InputField& field) { return unit_column_of(name, field); }))
+        if (name != notes_key &&  // a record's notes are its own (pass_through drops them); a user's are passed through
+            std::none_of(input_fields().begin(), input_fields().end(), [&](const InputField& field) { return unit_column_of(name, field); }))
           names.push_back(name);
     names.insert(names.end(),
                  {version_key, "passed", "simulations", "start", "iterations", "wall_time_s", "note", "attested", "implied", "chosen", "calculator",
-                  "calculator_note", "longest_range", "longest_range_note", "warnings", "notes"});
+                  "calculator_note", "longest_range", "longest_range_note", "warnings", "theta_release_deg",
+                  "optima_found"});  // the last two: a derived table's point (table_json.cpp)
     return names;
   }();
   for (const auto& [key, value] : object.items()) {
@@ -460,8 +521,7 @@ DesignValues read_design_values(const nlohmann::json& given, const std::string& 
                     engine_key_name(where, key) +
                         " belongs to a Monte Carlo run; give a value of the design as a range (2.5t..3.5t) or a spread "
                         "(3.5m±0.2m), or drop it");
-    refuse_near_miss(key, known, where);
-    if (passed) (*passed)[key] = value;
+    pass_through(key, value, known, where, passed);
   }
   if (settings) *settings = read_settings(object, req_shot, where);
   return v;

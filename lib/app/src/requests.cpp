@@ -71,13 +71,37 @@ OptimizeRequest optimize_request(const DesignValues& v, const ShotSettings& sett
   return request;
 }
 
+namespace {
+
+// A design's capacity (a calculator's R and T, or a check's, with its tolerance) is taken out of
+// a Monte Carlo run, which reports the spread of R and T and checks none, with a note; a check's
+// setting without a capacity (a tolerance) is refused by name.
+void leave_out_capacity(nlohmann::json& design, const std::string& where, std::vector<std::string>& notes) {
+  std::vector<std::string> keys;
+  for (const char* key : {"R", "T"})
+    if (design.contains(key)) keys.emplace_back(key);
+  for (const auto& [key, value] : design.items())
+    if (find_setting(key, req_shot) && !find_setting(key, req_monte_carlo)) {
+      if (keys.empty()) throw Error(ErrorKind::usage, engine_key_name(where, key) + ": a Monte Carlo run checks no capacity; leave out " + key);
+      keys.push_back(key);
+    }
+  if (keys.empty()) return;
+  std::vector<std::string> names;
+  for (const std::string& key : keys) names.push_back(engine_key_name(where, key)), design.erase(key);
+  notes.push_back(join(names, ", ") + ": the capacity the design gives is not checked; a Monte Carlo run reports the spread of R and T");
+}
+
+}  // namespace
+
 MonteCarloRequest read_monte_carlo_design(const nlohmann::json& design, const std::string& where, nlohmann::json& passed) {
   MonteCarloRequest run;
   run.where = where;
   nlohmann::json plain = take_spreads(design_object(design), op_shot, where, run.spreads);
   run.settings = read_settings(plain, req_monte_carlo, where);
-  if (plain.is_object())  // a run's own, which a shot's design does not take
-    for (const Setting id : {Setting::samples, Setting::seed, Setting::claim}) plain.erase(setting_row(id).key);
+  if (plain.is_object()) {
+    for (const Setting id : {Setting::samples, Setting::seed, Setting::claim}) plain.erase(setting_row(id).key);  // a run's own
+    leave_out_capacity(plain, where, run.notes);
+  }
   run.values = read_design_values(plain, where, &passed);
   return run;
 }

@@ -117,8 +117,8 @@ EngineParts independent_parts(const DesignValues& values);
 std::optional<double> read_value(const nlohmann::json& object, const std::string& key, UnitDimension dimension, const std::string& where);
 
 /// The values of a JSON design object, each an SI number or a string with a unit ("6.13m"), under
-/// its key or an alias (input_fields). A key that the programs write passes silently; a key near
-/// an input's name is refused with that name (near_miss); any other key is put in `passed`.
+/// its key or an alias (input_fields). A key that the programs write passes silently; any other
+/// key is refused or put in `passed` by pass_through.
 /// Throws Error(bad_number | unknown_unit | usage) naming the key, and Error(usage) for a value
 /// given as a range or a spread (a Monte Carlo run's: take_spreads reads them).
 /// A record the programs wrote reads as its design_object; the settings it gives go to `settings`
@@ -129,6 +129,18 @@ DesignValues read_design_values(const nlohmann::json& object, const std::string&
 /// Refuses `key`, which no reader of `known` takes, when it is near one of them:
 /// 'where: unknown key "theta_i"; did you mean "theta_i_deg"?' (Error(usage)).
 void refuse_near_miss(const std::string& key, const std::vector<std::string>& known, const std::string& where);
+
+/// The key under which a user's own numbers pass through a design unread ({"notes": {"year":
+/// 1304}}), as a site's name or a comment does under any key of its own.
+inline constexpr const char* notes_key = "notes";
+
+/// A key of a design that no reader of `known` takes: refused when it is near one of them
+/// (refuse_near_miss) or when its value is a number or a quantity ("0.5", "0.5kg", "2t..3t"), which
+/// may be meant for the engine and must not pass unread (Error(usage), naming notes_key as the
+/// place for a user's own numbers); any other value (a text, true, a list, an object) is put in
+/// `passed` when not null.
+void pass_through(const std::string& key, const nlohmann::json& value, const std::vector<std::string>& known, const std::string& where,
+                  nlohmann::json* passed);
 
 /// The release that a design's values set, by time, velocity angle or pin angle; none when they
 /// set none. Throws Error(usage) for more than one, Error(bad_number) for a value out of range,

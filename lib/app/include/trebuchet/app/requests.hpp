@@ -42,12 +42,14 @@ struct MonteCarloRequest {
   std::vector<SpreadInput> spreads;  ///< in the order they are drawn
   bool completes = false;  ///< complete each sample (attested values) instead of shooting it
   std::string where;  ///< how messages name the design's values: "" flags ("--M"), "design" a request's ("design.M")
+  std::vector<std::string> notes;  ///< what reading the design left out, and why
 };
 
 /// The Monte Carlo run of the shots of a design object (a file's, a request's "design", or a
 /// run's report read back, design_object): its values, each range or spread at its first number
 /// and kept (take_spreads), and its settings with its samples, seed and claim. Messages name a
-/// value "where.key"; keys no reader knows go to `passed`. Throws Error as read_design_values.
+/// value "where.key"; keys no reader knows go to `passed`. The design's capacity (R, T, its
+/// tolerance) is left out, with a note. Throws Error as read_design_values.
 MonteCarloRequest read_monte_carlo_design(const nlohmann::json& design, const std::string& where, nlohmann::json& passed);
 
 /// The run as a request gives it, for its report: {"design": ...} (or "attested" for
