@@ -377,3 +377,10 @@ def test_a_monte_carlo_run_leaves_out_a_calculators_capacity_with_a_warning():
     with pytest.raises(trebuchet.TrebuchetError, match="design.tol: a Monte Carlo run checks no capacity") as refused:
         trebuchet.monte_carlo(dict(E, M="2.9t..3.3t", tol="abc"), samples=20)
     assert refused.value.names == ["tol"]
+
+
+def test_a_capacity_outside_the_table_names_the_givens():
+    # The keys the user gave come first; extrapolate, the way out, after them.
+    with pytest.raises(trebuchet.TrebuchetError, match="change R to lie there, or change m") as refused:
+        trebuchet.design(R="5000m", m="50kg")
+    assert refused.value.names == ["R", "m", "extrapolate"]

@@ -659,11 +659,15 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
     e.L3 = whipper ? *F * e.whipper.H - e.L2 : counterweight_arm(e.L1, e.L2, e.theta_i_deg, *F);
     const bool at_arm_end = e.machine != MachineKind::hinged && std::abs(e.L3) <= 1e-12 * e.L2;  // F = L2/H, within its rounding
     if (at_arm_end) e.L3 = 0;
+    // The angle as the user gave it: theta_i, or the pivot height H that set it (theta_i = acos(H/L1)).
+    const bool by_height = v.H && !v.theta_i_deg;
+    const std::string angle = by_height ? "H = " + format_significant(*v.H, 4) + " m (theta_i = " + format_significant(e.theta_i_deg, 4) + " deg)"
+                                        : "theta_i = " + format_significant(e.theta_i_deg, 4) + " deg";
     if (e.theta_i_deg > 0 && e.theta_i_deg < 90 && e.L1 > 0 && e.L2 > 0 && !(e.L3 > 0) && !at_arm_end)
       throw Error(ErrorKind::bad_number,
-                  named + ": with F = " + format_significant(*F, 4) + " and theta_i = " + format_significant(e.theta_i_deg, 4) +
-                      " deg, L2 + L3 = F L1 cos(theta_i) = " + format_significant(*F * pivot_height(e), 4) + " m is not longer than L2 = " +
-                      format_significant(e.L2, 4) + " m: no room for the counterweight arm; lower theta_i, raise F or lengthen L1");
+                  named + ": with F = " + format_significant(*F, 4) + " and " + angle + ", L2 + L3 = F L1 cos(theta_i) = " +
+                      format_significant(*F * pivot_height(e), 4) + " m is not longer than L2 = " + format_significant(e.L2, 4) +
+                      " m: no room for the counterweight arm; " + (by_height ? "raise H" : "lower theta_i") + ", raise F or lengthen L1");
   } else {
     throw Error(ErrorKind::usage, named + ": give the counterweight arm L3 in metres, or the fraction F = (L2 + L3)/H, e.g. F = 2/3");
   }

@@ -491,7 +491,7 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
       } else if (const auto range = R_range_for(table, *block, gi, gj, scaling)) {
         const Given& other = gi.quantity == Quantity::R ? gj : gi;
         message += "; with " + describe_given(other) + " the table covers R from " + format_significant(range->first, 3) + " m to " +
-            format_significant(range->second, 3) + " m: change R to lie there, or change " + std::string(quantity_name(other.quantity));
+            format_significant(range->second, 3) + " m: change {{R}} to lie there, or change {{" + std::string(quantity_name(other.quantity)) + "}}";
       } else if (!both_capacity) {
         message += "; give another pair";
       }

@@ -209,17 +209,20 @@ void check_parts(const Engine& e) {
   if (!(p.counterweight_inertia >= 0))
     throw Error(ErrorKind::bad_number, "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + ": a moment of inertia must not be negative");
   // Its radius of gyration sqrt(I/M) beyond twice the arm: a counterweight that could not swing under the beam.
-  // A counterweight bolted on is no larger than the beam it rides on.
+  // A counterweight bolted on is no larger than the beam it rides on. The message names what the user gave: the inertia, or its box.
+  const bool box = p.box_width && p.box_height;
+  const std::string inertia_given = box ? "the box {{box_width}} = " + say(*p.box_width) + " m by {{box_height}} = " + say(*p.box_height) +
+          " m (a moment of inertia M (w^2 + h^2)/12 = " + say(p.counterweight_inertia) + " kg m^2)"
+                                        : "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + " kg m^2";
+  const std::string smaller = box ? "; give a smaller box" : "; a box of width w and height h has M (w^2 + h^2)/12";
   if (e.machine == MachineKind::fixed && !(p.counterweight_inertia <= e.M * beam_length(e) * beam_length(e)))
     throw Error(ErrorKind::bad_number,
-                "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + " kg m^2 gives the counterweight a radius of gyration of " +
-                    say(std::sqrt(p.counterweight_inertia / e.M)) + " m, more than the beam's length Lb = " + say(beam_length(e)) +
-                    " m; a box of width w and height h has M (w^2 + h^2)/12");
+                inertia_given + " gives the counterweight a radius of gyration of " + say(std::sqrt(p.counterweight_inertia / e.M)) +
+                    " m, more than the beam's length Lb = " + say(beam_length(e)) + " m" + smaller);
   if (e.machine != MachineKind::fixed && e.machine != MachineKind::floating_arm && !(p.counterweight_inertia <= e.M * 4 * e.L3 * e.L3))
     throw Error(ErrorKind::bad_number,
-                "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + " kg m^2 gives the counterweight a radius of gyration of " +
-                    say(std::sqrt(p.counterweight_inertia / e.M)) + " m, more than twice its arm L3 = " + say(e.L3) +
-                    " m; a box of width w and height h has M (w^2 + h^2)/12");
+                inertia_given + " gives the counterweight a radius of gyration of " + say(std::sqrt(p.counterweight_inertia / e.M)) +
+                    " m, more than twice its arm L3 = " + say(e.L3) + " m" + smaller);
   if (!(p.rope_diameter >= 0 && p.rope_diameter <= e.L4 / 2))
     throw Error(ErrorKind::bad_number,
                 "{{rope_diameter}} = " + say(p.rope_diameter) + " m: the sling's rope must have a diameter from 0 (no drag) to half its length, " +

@@ -502,9 +502,16 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
           "the whipper's beam starts to turn backwards, away from the throw: what rests on its arm, the counterweight (or a heavy ball on a "
           "sling longer than the long arm), lies too far behind the pivot; lengthen the counterweight's rope {{L3}}, turn it less off the arm "
           "(a smaller {{rope_angle_deg}}), or lighten the projectile {{m}}");
-    fail("the beam starts to turn away from the throw (the counterweight, propped at psi_i = " + format_significant(e.psi_i_deg, 4) +
-         " deg, pulls the short arm backwards); " +
-         (e.psi_i_deg > 0 ? std::string("prop it less, or back ({{psi_i_deg}} < 0)") : std::string("hold it back less ({{psi_i_deg}} nearer 0)")));
+    if (e.psi_i_deg != 0)
+      fail("the beam starts to turn away from the throw (the counterweight, propped at psi_i = " + format_significant(e.psi_i_deg, 4) +
+           " deg, pulls the short arm backwards); " +
+           (e.psi_i_deg > 0 ? std::string("prop it less, or back ({{psi_i_deg}} < 0)") : std::string("hold it back less ({{psi_i_deg}} nearer 0)")));
+    // Hanging, the counterweight is outweighed at rest by what the long arm holds: name what the engine gives of it.
+    std::string held = "the projectile {{m}}, the beam {{mb}}";
+    if (e.parts.sling.rope > 0) held += ", the sling's rope {{rope_mass}}";
+    if (e.parts.sling.pouch > 0) held += ", the pouch {{pouch_mass}}";
+    fail("the beam starts to turn away from the throw: at rest, what the long arm holds (" + held +
+         ") outweighs the counterweight {{M}} about the pivot; lighten it, or give a heavier {{M}}");
   }
   energy0 = snap.energy;
   // Runs a phase that carries the projectile (and, held, the counterweight) from (t, y) to where
@@ -525,7 +532,10 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
         fail(std::string("friction stops the beam before the projectile ") + (whips ? "leaves the arm" : "lifts off") +
              ": the engine jams; give smaller friction coefficients or pin radii ({{axle_friction}}, {{hinge_friction}}, {{trough_friction}})");
       if (dynamics.trough_cos_phi(y[0]) < abandon_trough_cos_phi)
-        fail("the sling stands vertical in the trough (phi -> 90 deg) before lift-off; lengthen the sling L4 or lighten the projectile m");
+        fail(
+            "the sling stands vertical in the trough (phi -> 90 deg) before lift-off; lengthen the sling {{L4}} or lighten what it carries, the "
+            "projectile {{m}}" +
+            std::string(e.parts.sling.pouch > 0 ? " and the pouch {{pouch_mass}}" : ""));
       snap = dynamics.snapshot(phase, integrator.state(y));
       if (phase == Phase::held && !(snap.normal_force > 0))
         fail(
