@@ -126,6 +126,7 @@ int run(const Options& options, bool format_given, bool F_given, bool block_give
     // sheet, R and another on the sheet for R and one parameter, Lb and another on the sheet for
     // Lb and one (Lb first), any other pair on the last.
     SpreadsheetInputs inputs;
+    std::optional<Error> refusal;
     inputs.material = request.material;
     if (!scale.empty()) inputs.model_scale = request.scale;  // the sheet "model scaling" opens on it
     // Each sheet keeps its example's block (the sheet for Lb and one opens on F = 1) unless
@@ -146,6 +147,18 @@ int run(const Options& options, bool format_given, bool F_given, bool block_give
                                                        : inputs.any_pair;
       sheet.first = givens[0], sheet.second = givens[1];
       set_block(sheet);
+      // Givens the calculator refuses still open their sheet, which says why; the run exits as the calculator does.
+      try {
+        design_optimal_engine(table, sheet);
+      } catch (const Error& e) {
+        // The workbook has no extrapolation: the calculator's advice to add it is cut.
+        std::string why = e.named_message();
+        if (const std::size_t cut = why.find("; or add {{extrapolate}}"); cut != std::string::npos) why.resize(cut);
+        refusal = Error(e.kind(), why);
+        inputs.refusal = {&sheet,
+                          "The calculator refuses the givens this sheet opened on (trebuchet-calc: exit " +
+                              std::to_string(exit_code(Program::calc, e.kind())) + "): " + refusal->message(option_word)};
+      }
     } else if (!givens.empty()) {
       throw Error(ErrorKind::given_count,
                   "--spreadsheet opens on the paper's examples, or on exactly two givens; found " + std::to_string(givens.size()));
@@ -177,6 +190,10 @@ int run(const Options& options, bool format_given, bool F_given, bool block_give
       std::cout << ", opening on your " << inputs.sites->rows.size() << " site(s) on the sheet 'your sites'"
                 << (failures > 0 ? ", " + std::to_string(failures) + " of them refused, each with its reason in its row" : std::string());
     std::cout << "\n";
+    if (refusal) {
+      std::cerr << "trebuchet-calc: " << refusal->message(option_word) << "\n";
+      return exit_code(Program::calc, refusal->kind());
+    }
     if (failures > 0) {
       std::cerr << "trebuchet-calc: " << failures << " row(s) refused; the workbook holds every row, the refused ones with their reasons\n";
       return exit_code(Program::calc, ErrorKind::batch_rows);

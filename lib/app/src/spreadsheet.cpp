@@ -195,6 +195,9 @@ class Sheet {
     worksheet_write_string(sheet_, 1, 0, explanation.c_str(), formats_.note);
   }
   void heading(int row, int col, const std::string& text) { worksheet_write_string(sheet_, row, col, text.c_str(), formats_.heading); }
+  void note(int row, const std::string& text) {
+    worksheet_write_string(sheet_, row, 0, first_characters(text, max_cell_characters).c_str(), formats_.note);
+  }
   // A text longer than a cell holds is cut to it (overlong_cell refuses its row), not left blank.
   void text(int row, int col, const std::string& text) {
     worksheet_write_string(sheet_, row, col, first_characters(text, max_cell_characters).c_str(), nullptr);
@@ -655,7 +658,7 @@ struct DesignResult {
 };
 
 DesignResult write_design(lxw_workbook* book, Formats& formats, const std::string& name, const std::string& heading, const ConstantsSheet& c,
-                          const MaterialFactors& f, const DesignRequest& request, int fixed) {
+                          const MaterialFactors& f, const DesignRequest& request, int fixed, const std::string& refusal) {
   const bool beam = request.first.quantity == Quantity::Lb;
   Sheet s(book, name, formats);
   s.title(heading,
@@ -663,6 +666,7 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
                  "and keep the one whose interval holds X; the engine follows from eq:ZRT."
                : "Type the yellow cells. The rows below solve eq:ZiZj_RT in every segment of the table and keep the one whose "
                  "interval holds X; the engine follows from eq:ZRT.");
+  if (!refusal.empty()) s.note(2, refusal);  // why the givens it opened on give no engine, in the calculator's words
   std::array<Text, 2> names;
   std::array<Expr, 2> values;
   const Given givens[] = {request.first, request.second};
@@ -1124,14 +1128,16 @@ void write_spreadsheet(const ScalingTable& table, const SpreadsheetInputs& input
   format_set_font_color(formats.note, 0x555555);
   const ConstantsSheet constants = write_constants(book, formats, table);
   const MaterialFactors factors = write_material(book, formats, constants, inputs.material);
+  const auto refusal_of = [&](const DesignRequest& sheet) { return inputs.refusal.first == &sheet ? inputs.refusal.second : std::string(); };
   const DesignResult capacity_sheet = write_design(book, formats, "from R and T", "The optimal engine for a capacity (R, T) (eq:ZRT)", constants,
-                                                   factors, capacity, 2);
+                                                   factors, capacity, 2, refusal_of(capacity));
   worksheet_activate(workbook_get_worksheet_by_name(book, "from R and T"));  // it opens on the first design, not on the constants
   write_design(book, formats, "from R and one", "The optimal engine for R and one parameter (eq:RT_ZiZj with Z_i = R)", constants, factors,
-               range_and_one, 1);
-  write_design(book, formats, "from any pair", "The optimal engine for any two givens (eq:RT_ZiZj, eq:ZiZj_RT)", constants, factors, any_pair, 0);
+               range_and_one, 1, refusal_of(range_and_one));
+  write_design(book, formats, "from any pair", "The optimal engine for any two givens (eq:RT_ZiZj, eq:ZiZj_RT)", constants, factors, any_pair, 0,
+               refusal_of(any_pair));
   write_design(book, formats, "from Lb and one", "The optimal engine for the beam length Lb = L1 + L2 and one parameter", constants, factors,
-               beam_length, 1);
+               beam_length, 1, refusal_of(beam_length));
   write_sites(book, formats, constants, factors);
   if (inputs.sites) {  // the user's, and the workbook opens on them
     write_user_sites(book, formats, constants, factors, *inputs.sites);

@@ -48,6 +48,8 @@ struct SpreadsheetInputs {
   double model_scale = 80.0 / 425;  ///< Denny's 80 m model, on the (R, T) sheet's engine
   Material material{};  ///< beta2, Young's modulus, wood density and g of the designs
   std::optional<UserSites> sites;  ///< the sheet "your sites", on which the workbook then opens
+  /// The calculator's refusal of the givens a design sheet opens on (one of the four above), written under that sheet's title.
+  std::pair<const DesignRequest*, std::string> refusal{nullptr, ""};
 
   static DesignRequest example(Quantity first, double first_value, Quantity second, double second_value);
   static DesignRequest villard();  ///< Lb = 9 m, l = 4.5, theta_i = 30 deg, F = 1
