@@ -370,31 +370,53 @@ def settings():
     return _call(_trebuchet.fields, {})["settings"]
 
 
+def _frame_row(record, machine=None):
+    """A record as one row: its numbers and texts, then its engine's inputs beside them (L1, M,
+    m, ...: what each row is), its machine, and why it warns or failed ("" where it did not)."""
+    if isinstance(record, TrebuchetError):
+        return {"machine": machine, "warnings": "", "error": str(record)}
+    scalar = (bool, int, float, str)
+    row = {k: v for k, v in record.items() if v is None or isinstance(v, scalar)}
+    engine = record.get("engine")
+    if isinstance(engine, dict):
+        for key, value in engine.items():
+            if key not in row and (value is None or isinstance(value, scalar)):
+                row[key] = value
+    if machine is not None:
+        row["machine"] = machine
+    elif isinstance(engine, dict) or "machine" in row:
+        row["machine"] = row.get("machine") or "hinged"  # an engine that names none is the paper's hinged one
+    row["warnings"] = "; ".join(record.get("warnings") or [])
+    row["error"] = record.get("error", "")
+    return row
+
+
 def to_frame(answer):
     """A pandas DataFrame of a result (pandas, Debian's python3-pandas, is imported here only):
     a Monte Carlo run's draws, a row a sample, its drawn inputs and R, T, eps, v and failure; a
     shot's series frames (shot(..., series=True)), a row a moment; a sweep, a row a point, the
-    value varied first; or a list of records (the
-    optima of optimize, shots of a batch), a row each, with their numbers and texts."""
+    value varied first; a list of records (the optima of optimize, compare's machines, shots of a
+    batch) or contest(machine="all")'s dict of machines, a row each; or one record, one row. Each
+    record's row has its numbers and texts, its engine's inputs and machine, and its warnings and
+    error."""
     import pandas as pd
 
     if isinstance(answer, list):
-        rows = []
-        for r in answer:
-            row = {k: v for k, v in r.items() if v is None or isinstance(v, (bool, int, float, str))}
-            # Why a record warns or failed, in columns of their own: "" where it did not.
-            row["warnings"] = "; ".join(r.get("warnings") or [])
-            row["error"] = r.get("error", "")
-            rows.append(row)
-        return pd.DataFrame(rows)
+        return pd.DataFrame([_frame_row(r) for r in answer])
     if isinstance(answer, dict) and "points" in answer and "vary" in answer:  # a sweep: a row a point, the value varied first
         # A failed point holds the value varied under its key, as the sweep's text gave it: the
         # column takes the sweep's number instead, and the point keeps its error.
         frame = to_frame([{k: v for k, v in p.items() if k != answer["vary"]} for p in answer["points"]])
+        frame = frame.drop(columns=[answer["vary"]], errors="ignore")  # the engine's value, which the sweep's number replaces
         frame.insert(0, answer["vary"], answer["values"])
         return frame
     if isinstance(answer, dict) and "draws" in answer:
         return pd.DataFrame(answer["draws"])
     if isinstance(answer, dict) and "series" in answer:
         return pd.DataFrame(answer["series"]["frames"])
-    raise TypeError("to_frame takes a Monte Carlo run, a shot with its series, a sweep, or a list of records")
+    if isinstance(answer, dict) and answer and all(isinstance(v, (dict, TrebuchetError)) for v in answer.values()) \
+            and all(isinstance(v, TrebuchetError) or "engine" in v for v in answer.values()):  # contest(machine="all")
+        return pd.DataFrame([_frame_row(record, machine) for machine, record in answer.items()])
+    if isinstance(answer, dict):
+        return pd.DataFrame([_frame_row(answer)])
+    raise TypeError("to_frame takes a Monte Carlo run, a shot with its series, a sweep, a record, contest's machines, or a list of records")

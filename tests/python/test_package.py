@@ -384,3 +384,20 @@ def test_a_capacity_outside_the_table_names_the_givens():
     with pytest.raises(trebuchet.TrebuchetError, match="change R to lie there, or change m") as refused:
         trebuchet.design(R="5000m", m="50kg")
     assert refused.value.names == ["R", "m", "extrapolate"]
+
+
+def test_every_record_frames_with_its_machine_and_its_engines_inputs():
+    pytest.importorskip("pandas")
+    # compare: each row names its machine, from its engine or (a refused machine) its own key.
+    machines = trebuchet.compare(CA)
+    frame = trebuchet.to_frame(machines)
+    assert list(frame["machine"]) == ["hinged", "fixed", "floating-arm", "whipper"]
+    # A list of shots carries each engine's inputs beside its figures.
+    shots = trebuchet.to_frame([trebuchet.shot(CA), trebuchet.shot(dict(CA, M="3t"))])
+    assert list(shots["M"]) == [3110, 3000] and list(shots["L4"]) == [3.55, 3.55] and list(shots["m"]) == [50, 50]
+    # One record is one row; contest's machines a row each, a refused one with its error.
+    one = trebuchet.to_frame(trebuchet.shot(CA))
+    assert len(one) == 1 and one["R"].iloc[0] == trebuchet.shot(CA)["R"] and one["machine"].iloc[0] == "hinged"
+    best = {"hinged": trebuchet.shot(CA), "fixed": trebuchet.TrebuchetError("refused", "usage", [])}
+    frame = trebuchet.to_frame(best)
+    assert list(frame["machine"]) == ["hinged", "fixed"] and list(frame["error"]) == ["", "refused"]
