@@ -28,7 +28,13 @@ int run_calibrate_over_unknowns(const Options& o, const DesignValues& values) {
                   std::string(flag) + " follows one calibrated engine; with unknowns given as ranges or spreads there is one per draw: drop " + flag +
                       ", or give each unknown one value");
   const MonteCarloRequest request{values, o.settings, o.spreads, false, "", {}};
-  CalibrationRunInputs inputs{request, *o.measured, o.plausible_friction, o.settings.samples.value_or(200), o.settings.seed.value_or(1), o.threads};
+  return run_calibration(o, {request, *o.measured, o.plausible_friction, o.settings.samples.value_or(200), o.settings.seed.value_or(1), o.threads});
+}
+
+}  // namespace
+
+int run_calibration(const Options& o, CalibrationRunInputs inputs) {
+  inputs.threads = o.threads;
   check_monte_carlo_work(inputs.samples, 12, "fits");  // about a dozen shots a fit
   const CalibrationRun run = calibrate_over_unknowns(inputs, progress_bar("fits"));
   if (o.format == Format::json)
@@ -39,8 +45,6 @@ int run_calibrate_over_unknowns(const Options& o, const DesignValues& values) {
   if (!o.plot.empty()) write_picture_folder(o.plot, calibration_run_pictures(run), {"friction.gp"});
   return exit_success;
 }
-
-}  // namespace
 
 int run_calibrate(const Options& flags) {
   Options o = flags;  // with a file's settings under the flags'

@@ -50,15 +50,8 @@ MonteCarloRequest file_run(const Options& o, const nlohmann::json& design, const
     if (s.setting == &SettingsValues::cd && o.settings.cd_of_reynolds) return "Cd(Re)";
     return quantity_text(*(s.value ? o.design.*s.value : o.settings.*s.setting), s.input.dimension, UnitSystem::si, 6);
   };
-  // The value's key, whether the spread is the file's (named by its key) or a flag's (by its flag).
-  const auto key_of_spread = [](const SpreadInput& s) -> std::string {
-    if (s.value) return key_of(s.value);
-    for (const SettingRow& row : setting_rows())
-      if (number_slot(row.id) == s.setting) return row.key;
-    return s.input.name;
-  };
   const auto note = [&](const SpreadInput& s, const std::string& replaced) {
-    const std::string key = key_of_spread(s);
+    const std::string key = spread_key(s);  // the file's spread is named by its key, a flag's by its flag
     notes.push_back("{{" + key + "}} " + flag_text(s) + " replaces " + where + "." + key + " = " + replaced);
   };
   // A file's spread that the flags give (one value, a spread, Cd(Re), or vacuum for the air's) is no longer drawn.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "options.hpp"
+#include "trebuchet/app/calibration_run.hpp"
 
 namespace trebuchet::verify {
 
@@ -19,6 +20,7 @@ bool holds_spreads(const nlohmann::json& design);
 void refuse_monte_carlo_settings(const Options& options);
 int run_complete(const Options& options);  // complete.cpp
 int run_calibrate(const Options& options);  // calibrate.cpp
+int run_calibration(const Options& options, CalibrationRunInputs inputs);  // calibrate.cpp: over unknowns, from flags or a report read back
 int run_optimize(const Options& options);  // tables.cpp
 int run_derive_table(const Options& options);  // tables.cpp
 int run_merge(const Options& options);  // tables.cpp

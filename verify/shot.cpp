@@ -174,6 +174,13 @@ int run_shot(const Options& o, bool fit) {
     refuse_monte_carlo_settings(o);
     return run_many(o, in, check);
   }
+  // A calibration's report over unknowns, read back: the same run again.
+  if (!fit && !o.input.empty() && in.single && is_calibration_record(in.rows.front().design)) {
+    if (has_engine_flags(o.design) || !o.spreads.empty())
+      throw Error(ErrorKind::usage,
+                  source_name(o.input) + " is calibrate's report, which runs again as written; give the flags to calibrate instead");
+    return run_calibration(o, calibration_run_inputs(in.rows.front().design, in.where.front()));
+  }
   // One design whose values (a file's or the flags') hold a range or a spread: its Monte Carlo run.
   if (!fit && !o.input.empty() && in.rows.front().error.empty() && (!o.spreads.empty() || holds_spreads(in.rows.front().design)))
     return run_monte_carlo(o, false, &in.rows.front().design, in.where.front());

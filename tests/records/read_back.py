@@ -58,6 +58,18 @@ read_back("complete in air", run(["complete", "--Lb", "9.5m", "--M", "3t", "--m"
 read_back("contest", run(["contest", "--m", "0.5kg", "--D", "5cm", "--max-width", "3m", "--max-height", "3m", "--max-M", "300kg"])[0])
 calibration = run(["calibrate", "--L1", "2.4m", "--L2", "0.6m", "--L3", "0.5m", "--M", "300kg", "--m", "4kg", "--mb", "30kg", "--axle-radius", "2.5cm", "--hinge-radius", "1.5cm", "--measured", "95m±3m", "--L4", "2.2m", "--target-level", "2m"])[0]
 read_back("calibrate", calibration, lambda r: r["shot"])
+# Issue 62: calibrate over unknowns carries its run (version, engine, settings, unknowns, samples,
+# seed) and reads back as that run: the same draws, so the same percentiles and verdict.
+over_unknowns = run(["calibrate", "--L1", "2.4m", "--L2", "0.6m", "--L3", "0.5m", "--M", "300kg", "--m", "4kg", "--mb", "30kg", "--axle-radius",
+                     "2cm..3cm", "--hinge-radius", "1.5cm", "--measured", "95m±3m", "--L4", "2.2m", "--target-level", "2m", "--samples", "20",
+                     "--seed", "7"])[0]
+with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+    json.dump(over_unknowns, f)
+again, _ = run([f.name])
+same = {k: v for k, v in again.items() if k != "wall_time_s"} == {k: v for k, v in over_unknowns.items() if k != "wall_time_s"}
+print("calibrate over unknowns read back as the same run:", same, "; its version:", over_unknowns.get("version"))
+if not same or "version" not in over_unknowns or over_unknowns["design"].get("seed") != 7:
+    failures.append("calibrate over unknowns: its report did not read back as the same run")
 sweep = run(["sweep", *ENGINE, "--vary", "L4=0m..8m", "--points", "3", "--range-from", "release"])[0]
 read_back("sweep points", sweep["points"])
 read_back("sweep record", sweep)  # the record itself reads as its points

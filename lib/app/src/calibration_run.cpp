@@ -10,6 +10,7 @@
 #include "trebuchet/app/design_input.hpp"
 #include "trebuchet/app/names.hpp"
 #include "trebuchet/app/report.hpp"
+#include "trebuchet/app/schema.hpp"
 #include "trebuchet/app/settings.hpp"
 #include "trebuchet/format.hpp"
 
@@ -185,9 +186,10 @@ nlohmann::ordered_json calibration_run_json(const CalibrationRun& run) {
   out["fitted"] = run.fitted == FrictionFit::pin_coefficient ? "pin_coefficient" : "friction_scale";
   out["measured"] = {{"R", run.given.measured.range}, {"uncertainty", run.given.measured.uncertainty}};
   nlohmann::ordered_json unknowns = nlohmann::ordered_json::array();
+  const std::vector<SpreadInput>& spreads = run.given.request.spreads;  // the unknowns, then the measured range
   for (std::size_t k = 0; k < run.unknowns.size(); ++k) {
     const UncertainInput& u = run.unknowns[k];
-    unknowns.push_back({{"name", u.name},
+    unknowns.push_back({{"name", k < spreads.size() ? spread_key(spreads[k]) : std::string("measured")},
                         {"distribution", u.spread.kind == Spread::Kind::uniform ? "uniform" : "normal"},
                         {"a", u.spread.a},
                         {"b", u.spread.b},
@@ -208,6 +210,8 @@ nlohmann::ordered_json calibration_run_json(const CalibrationRun& run) {
   out["failures"] = failures;
   out["verdict"] = verdict(run);
   out["wall_time_s"] = run.seconds;
+  out[version_key] = project_version();
+  out["design"] = monte_carlo_request_json(run.given.request, run.given.samples, run.given.seed)["design"];
   return out;
 }
 
@@ -238,6 +242,33 @@ std::vector<PictureFile> calibration_run_pictures(const CalibrationRun& run) {
   else
     gp << "plot 'friction.dat' using (bin($1)):(1) smooth frequency with boxes fs solid 0.5 lc rgb '#4682b4' notitle\n";
   return {{"friction.dat", data.str()}, {"friction.gp", gp.str()}};
+}
+
+bool is_calibration_record(const nlohmann::json& given) {
+  return given.is_object() && given.contains("fitted") && given.contains("measured") && given["measured"].is_object() && given.contains("design") &&
+      given["design"].is_object();
+}
+
+CalibrationRunInputs calibration_run_inputs(const nlohmann::json& report, const std::string& where) {
+  CalibrationRunInputs in;
+  nlohmann::json passed;
+  in.request = read_monte_carlo_design(report["design"], where + ".design", passed);
+  in.samples = in.request.settings.samples.value_or(in.samples);
+  in.seed = in.request.settings.seed.value_or(in.seed);
+  const auto number = [&](const nlohmann::json& object, const char* key, const std::string& path) {
+    if (!object.is_object() || !object.contains(key) || !object[key].is_number() || !std::isfinite(object[key].get<double>()))
+      throw Error(ErrorKind::usage, path + "." + key + ": expected a number, as calibrate writes it");
+    return object[key].get<double>();
+  };
+  in.measured = {number(report["measured"], "R", where + ".measured"), number(report["measured"], "uncertainty", where + ".measured")};
+  if (report.contains("plausible")) {
+    const nlohmann::json& range = report["plausible"].is_object() && report["plausible"].contains("range") ? report["plausible"]["range"] : nullptr;
+    if (!range.is_array() || range.size() != 2 || !range[0].is_number() || !range[1].is_number() ||
+        !(range[0].get<double>() >= 0 && range[0].get<double>() < range[1].get<double>()))
+      throw Error(ErrorKind::usage, where + ".plausible.range: expected two friction coefficients, the low one first, as calibrate writes them");
+    in.plausible = {range[0].get<double>(), range[1].get<double>()};
+  }
+  return in;
 }
 
 }  // namespace trebuchet

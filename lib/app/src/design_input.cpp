@@ -88,6 +88,13 @@ void add_spread(std::vector<SpreadInput>& spreads, SpreadInput spread) {
   spreads.insert(after, std::move(spread));
 }
 
+std::string spread_key(const SpreadInput& spread) {
+  if (spread.value) return key_of(spread.value);
+  for (const SettingRow* row : spread_setting_rows())
+    if (number_slot(row->id) == spread.setting) return row->key;
+  return spread.input.name;
+}
+
 std::string spread_setting_path(std::optional<double> SettingsValues::*slot) {
   for (const SettingRow* row : spread_setting_rows())
     if (number_slot(row->id) == slot) {

@@ -54,7 +54,18 @@ struct CalibrationRun {
 CalibrationRun calibrate_over_unknowns(const CalibrationRunInputs& inputs, const Progress& progress = {});
 
 std::string calibration_run_table(const CalibrationRun& run);
+/// The run's report, which also carries what runs it again: the version, and its "design" as a
+/// Monte Carlo report writes it (the engine with the unknowns as ranges or spreads, the
+/// settings, samples and seed) beside the measured range and the plausible friction.
 nlohmann::ordered_json calibration_run_json(const CalibrationRun& run);
+
+/// Whether `given` is a report calibration_run_json wrote.
+bool is_calibration_record(const nlohmann::json& given);
+
+/// The run a calibration report holds, to run again as the same run (the same draws and
+/// percentiles); messages name its values "where.design.key". Throws Error as
+/// read_monte_carlo_design does, and Error(usage) for a malformed measured range or friction.
+CalibrationRunInputs calibration_run_inputs(const nlohmann::json& report, const std::string& where);
 /// friction.svg: the histogram of the fitted friction, the plausible range shaded.
 std::vector<PictureFile> calibration_run_pictures(const CalibrationRun& run);
 

@@ -57,6 +57,10 @@ void add_spread(std::vector<SpreadInput>& spreads, SpreadInput spread);
 /// as settings.def's alias says), or under its key ("target_level").
 std::string spread_setting_path(std::optional<double> SettingsValues::*slot);
 
+/// The key of the value a spread draws, however it was given (a flag's spread is named by its
+/// flag): an input's ("axle_radius"), or a setting's ("wind").
+std::string spread_key(const SpreadInput& spread);
+
 /// Whether `over`, laid over a design's own settings (overlay), gives what the design's `spread`
 /// of a setting draws: that setting, Cd(Re) for the drag coefficient, or vacuum for the air's.
 bool replaces_spread(const SettingsValues& over, const SpreadInput& spread);
