@@ -302,8 +302,9 @@ TEST_CASE("X outside the covered interval is refused, or extrapolated with a war
   } catch (const Error& e) {
     CHECK(e.kind() == ErrorKind::out_of_range);
     CHECK_THAT(e.what(), Catch::Contains("X = 0.8") && Catch::Contains("[-0.55, 0.57]") && Catch::Contains("add extrapolate"));
-    // The setting is named by its name in the API; a program writes its own word for it.
-    CHECK(e.names() == std::vector<std::string>{"extrapolate"});
+    // The givens and the setting are named by their names in the API (the givens first: what to
+    // change); a program writes its own word for each.
+    CHECK(e.names() == std::vector<std::string>{"R", "T", "extrapolate"});
     CHECK_THAT(e.message([](std::string_view name) { return "--" + std::string(name); }), Catch::Contains("add --extrapolate"));
   }
   r.extrapolate = true;

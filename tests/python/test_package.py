@@ -401,3 +401,29 @@ def test_every_record_frames_with_its_machine_and_its_engines_inputs():
     best = {"hinged": trebuchet.shot(CA), "fixed": trebuchet.TrebuchetError("refused", "usage", [])}
     frame = trebuchet.to_frame(best)
     assert list(frame["machine"]) == ["hinged", "fixed"] and list(frame["error"]) == ["", "refused"]
+
+
+def test_every_key_of_every_record_is_read_or_refused_at_this_door():
+    # Each record kind the library writes reads back with no key passed through unread (every key
+    # is read, or known as the record's own output), and each input of its engine, put beside the
+    # engine with another value, is refused by name rather than dropped.
+    inputs = {name for f in trebuchet.fields() for name in [f["key"], *f["aliases"]]}
+    records = {
+        "shot": trebuchet.shot(CA, air=True, wind="2m/s"),
+        "fit": trebuchet.fit(CA, "150m", "40kJ"),
+        "optimize": trebuchet.optimize("300m", "50kJ")[0],
+        "complete": trebuchet.complete(dict(Lb="5m", M="3t", m="50kg")),
+        "sweep point": trebuchet.sweep(CA, "L4=3m..4m", points=2)["points"][1],
+        "compare": trebuchet.compare(CA)[1],
+    }
+    for kind, record in records.items():
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            again = trebuchet.shot(record)
+        assert "passed" not in again and not [w for w in caught if "passed through" in str(w.message)], kind
+        assert again["R"] == record["R"], kind
+        for key, value in (record.get("engine") or {}).items():
+            if key in inputs and isinstance(value, (int, float)) and not isinstance(value, bool) and value != 0:
+                with pytest.raises(trebuchet.TrebuchetError) as refused:
+                    trebuchet.shot(dict(record, **{key: value * 1.5}))
+                assert refused.value.names == [key], (kind, key)
