@@ -7,6 +7,8 @@
 #include <map>
 #include <random>
 
+#include "heavy.hpp"
+
 #include "engines.hpp"
 #include "exit_codes.hpp"
 #include "trebuchet/calculator.hpp"
@@ -46,6 +48,7 @@ TEST_CASE("10 000 random engines: a finite result or a named error each", "[robu
   std::mt19937_64 random(4);
   std::uniform_real_distribution<double> uniform(0, 1);
   std::map<std::string, int> outcomes;
+  int shot = 0;
   for (int k = 0; k < 10000; ++k) {
     Engine e;
     e.theta_i_deg = 5 + 80 * uniform(random);
@@ -56,6 +59,8 @@ TEST_CASE("10 000 random engines: a finite result or a named error each", "[robu
     e.M = log_uniform(random, 10, 1e6);
     e.m = e.M * log_uniform(random, 1e-5, 1);
     e.mb = e.M * log_uniform(random, 1e-5, 2);
+    if (!heavy_case_runs(k)) continue;  // drawn all the same, so that each pass meets the same engines
+    ++shot;
     INFO("engine " << k << ": L1 " << e.L1 << " L2 " << e.L2 << " L3 " << e.L3 << " L4 " << e.L4 << " M " << e.M << " m " << e.m << " mb " << e.mb
                    << " theta " << e.theta_i_deg);
     try {
@@ -69,7 +74,7 @@ TEST_CASE("10 000 random engines: a finite result or a named error each", "[robu
     }
   }
   print_counts("10 000 random engines", outcomes);
-  CHECK(outcomes["result"] > 1000);
+  CHECK(outcomes["result"] > shot / 4);  // a quarter or more make a shot (47 % of the 10 000 do): the set is not all refusals
 }
 
 TEST_CASE("random calculator requests: a design with finite numbers or a named error each", "[robustness]") {
