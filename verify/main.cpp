@@ -12,6 +12,7 @@
 #include "program.hpp"
 #include "run.hpp"
 #include "trebuchet/app/names.hpp"
+#include "trebuchet/app/output_files.hpp"
 
 namespace {
 
@@ -62,6 +63,8 @@ int main(int argc, char** argv) {
     // range or a spread has them (a design file's, which shot reads, or a flag's).
     if ((sub.shot->parsed() && options.input.empty()) || sub.complete->parsed())
       if (options.spreads.empty()) refuse_monte_carlo_settings(options);
+    // A picture folder that is a file is refused before the shots it would draw.
+    if (!options.plot.empty()) refuse_file_as_folder(options.plot, "plot");
     if (options.all_machines && !sub.contest->parsed())
       throw Error(ErrorKind::usage, "--machine all is contest's (each machine's best side by side); name one machine: " + machine_names());
     if (sub.shot->parsed()) return options.spreads.empty() || !options.input.empty() ? run_shot(options, false) : run_monte_carlo(options, false);

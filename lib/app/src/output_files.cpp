@@ -21,7 +21,16 @@ bool same_file(int fd, const std::string& path) {
   return fstat(fd, &open) == 0 && stat(path.c_str(), &named) == 0 && open.st_dev == named.st_dev && open.st_ino == named.st_ino;
 }
 
+std::string not_a_folder(const std::string& option, const std::string& shown) {
+  return "{{" + option + "}}: cannot write '" + shown + "': it is not a folder; give a folder you can write to";
+}
+
 }  // namespace
+
+void refuse_file_as_folder(const std::string& folder, const std::string& option) {
+  std::error_code ec;
+  if (fs::exists(folder, ec) && !fs::is_directory(folder, ec)) throw Error(ErrorKind::usage, not_a_folder(option, folder));
+}
 
 PendingOutput::PendingOutput(std::string path, std::string option, bool folder, std::vector<std::string> inputs)
     : path_(std::move(path)), shown_(path_), option_(std::move(option)), inputs_(std::move(inputs)), folder_(folder) {
@@ -101,7 +110,7 @@ void PendingOutput::commit() {
     return;
   }
   fs::create_directories(path_, ec);
-  if (!fs::is_directory(path_, ec)) throw Error(ErrorKind::usage, fail + ": it is not a folder; give a folder you can write to");
+  if (!fs::is_directory(path_, ec)) throw Error(ErrorKind::usage, not_a_folder(option_, shown_));
   // Every file is checked before any moves: one that would replace an input stops them all.
   std::vector<fs::path> names;
   for (fs::directory_iterator it(temporary_, ec), end; !ec && it != end; it.increment(ec)) names.push_back(it->path().filename());

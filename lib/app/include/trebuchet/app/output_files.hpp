@@ -37,6 +37,10 @@ class PendingOutput {
   bool folder_ = false, committed_ = false, direct_ = false;  // direct_: a device or pipe, written into
 };
 
+/// Refuses, before the work, a folder output (`option`, as PendingOutput names it) that is a file:
+/// its commit would refuse it only at the end.
+void refuse_file_as_folder(const std::string& folder, const std::string& option);
+
 /// `text` written to `path` whole or not at all (PendingOutput).
 void write_output_file(const std::string& path, std::string_view text, const std::string& option);
 
