@@ -179,7 +179,13 @@ int run_shot(const Options& o, bool fit) {
     if (has_engine_flags(o.design) || !o.spreads.empty())
       throw Error(ErrorKind::usage,
                   source_name(o.input) + " is calibrate's report, which runs again as written; give the flags to calibrate instead");
-    return run_calibration(o, calibration_run_inputs(in.rows.front().design, in.where.front()));
+    // Its settings (samples, seed, the air, ...) under the flags', each change noted.
+    CalibrationRunInputs inputs = calibration_run_inputs(in.rows.front().design, in.where.front());
+    print_notes(settings_notes(inputs.request.settings, o.settings, in.where.front()));
+    inputs.request.settings = overlay(inputs.request.settings, o.settings);
+    inputs.samples = inputs.request.settings.samples.value_or(inputs.samples);
+    inputs.seed = inputs.request.settings.seed.value_or(inputs.seed);
+    return run_calibration(o, inputs);
   }
   // One design whose values (a file's or the flags') hold a range or a spread: its Monte Carlo run.
   if (!fit && !o.input.empty() && in.rows.front().error.empty() && (!o.spreads.empty() || holds_spreads(in.rows.front().design)))

@@ -84,8 +84,8 @@ def _warn(record):
         for text in record.get("warnings", []) or []:
             warnings.warn(text, TrebuchetWarning, stacklevel=3)
         for key in record.get("passed", {}) or {}:
-            warnings.warn(f"{key}: passed through unread, as a text of your own (a site, a comment); a value meant for the engine "
-                          "goes under its input's key (fields())", TrebuchetWarning, stacklevel=3)
+            warnings.warn(f"{key}: passed through unread, as a value of your own (a site, a comment, your notes); a value meant for "
+                          "the engine goes under its input's key (fields())", TrebuchetWarning, stacklevel=3)
 
 
 def _call(function, request):
@@ -135,7 +135,8 @@ def _over_engine(design, keys):
         raise TypeError("design: give the engine as a dict of its keys")
     if "engine" not in design and isinstance(design.get("assumptions"), dict) and "R_vacuum" in design:
         engine = {k: v for k, v in design.items() if k not in ("R", "T", "assumptions", "passed")}
-        design = {"engine": engine, "assumptions": design["assumptions"], "passed": design.get("passed", {})}
+        design = {"engine": engine, "assumptions": design["assumptions"], "passed": design.get("passed", {}),
+                  **({"version": design["version"]} if "version" in design else {})}  # still the programs' record: its outputs read back
 
     if isinstance(design.get("engine"), dict):
         record = dict(design, engine=_over_values(design["engine"], keys))
@@ -226,7 +227,10 @@ def compare(design, **settings):
     """One engine's parts built as each machine, hinged, fixed, floating-arm and whipper, side by
     side (trebuchet-verify compare): a list of shot records, one a machine (its engine's
     "machine"), or {"machine", "error"} where a machine refuses the engine. Released where the
-    range peaks unless quality= says otherwise. The design and the settings: those of shot."""
+    range peaks unless quality= says otherwise. The design and the settings: those of shot, but
+    the machine, which compare chooses."""
+    if "machine" in settings:  # as the programs refuse compare --machine
+        raise TrebuchetError("compare builds the engine as each machine in turn; leave out machine", "usage", ["machine"])
     return _call(_trebuchet.compare, dict(settings, design=_with_engine_keys(design, settings)))
 
 
@@ -384,7 +388,7 @@ def _frame_row(record, machine=None):
                 row[key] = value
     if machine is not None:
         row["machine"] = machine
-    elif isinstance(engine, dict) or "machine" in row:
+    elif isinstance(engine, dict) or "machine" in row or "L1" in row:  # a record of an engine: its own, or flat (optimize's, complete's)
         row["machine"] = row.get("machine") or "hinged"  # an engine that names none is the paper's hinged one
     row["warnings"] = "; ".join(record.get("warnings") or [])
     row["error"] = record.get("error", "")

@@ -80,7 +80,7 @@ def compare(design: Design, *, quality: Quality = ..., release: Quality = ..., n
             counterweight_inertia: Value = ..., box_width: Value = ..., box_height: Value = ..., axle_friction: Value = ..., axle_radius: Value = ...,
             hinge_friction: Value = ..., hinge_radius: Value = ..., trough_friction: Value = ..., rope_diameter: Value = ..., rope_mass: Value = ...,
             pouch_mass: Value = ..., slingMass: Value = ..., pin_friction: Value = ..., rope_cd: Value = ..., rope_angle_deg: Value = ...,
-            rope_angle: Value = ..., projectile_diameter: Value = ..., machine: Machine = ...) -> list[Record]: ...
+            rope_angle: Value = ..., projectile_diameter: Value = ...) -> list[Record]: ...
 def contest(m: Value, *, machine: Union[Machine, Literal["all"]] = ..., D: Value = ..., mb_per_m: float = ..., theta_i_deg: Value = ...,
             theta: Value = ..., box_width: Value = ..., box_height: Value = ..., max_width: Value = ..., max_height: Value = ..., max_M: Value = ...,
             max_axle_load: Value = ..., max_acceleration: Value = ..., min_clearance: Value = ..., objective: Literal["range", "eps"] = ...,

@@ -297,7 +297,7 @@ def test_the_stubs_keywords_are_those_the_library_takes():
             # its aliases) is a keyword over the design's own, and the stub names each.
             operations = {"complete": {"complete"}, "monte_carlo": {"shot", "complete"}, "contest": set(), "optimize": set()}.get(node.name, {"shot"})
             inputs = {name for f in fields if set(f["operations"]) & operations and f["group"] not in ("capacity", "material")
-                      for name in [f["key"], *f["aliases"]]}
+                      for name in [f["key"], *f["aliases"]]} - ({"machine"} if node.name == "compare" else set())  # compare chooses the machine
             named = {argument.arg for argument in node.args.kwonlyargs + node.args.args[1:]}
             for name in named:
                 assert name in taken | inputs | own, f"{node.name}({name}=...) is no key the library takes"
@@ -427,3 +427,20 @@ def test_every_key_of_every_record_is_read_or_refused_at_this_door():
                 with pytest.raises(trebuchet.TrebuchetError) as refused:
                     trebuchet.shot(dict(record, **{key: value * 1.5}))
                 assert refused.value.names == [key], (kind, key)
+
+
+def test_a_value_beside_a_records_engine_under_another_key_passes_by_name():
+    record = trebuchet.shot(E)
+    # Beside a record's engine, a key that is no input is passed through by name, never dropped.
+    with pytest.warns(trebuchet.TrebuchetWarning, match="year: passed through unread"):
+        again = trebuchet.shot(dict(record, year=1304))
+    assert again["passed"] == {"year": 1304} and again["R"] == record["R"]
+    # A misspelt input beside it is refused with the input meant.
+    with pytest.raises(trebuchet.TrebuchetError, match='did you mean "pouch_mass"'):
+        trebuchet.shot(dict(record, pouch_mas=0.5))
+
+
+def test_compare_chooses_the_machine():
+    with pytest.raises(trebuchet.TrebuchetError, match="compare builds the engine as each machine") as refused:
+        trebuchet.compare(E, machine="fixed")
+    assert refused.value.names == ["machine"]

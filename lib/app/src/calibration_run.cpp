@@ -244,11 +244,6 @@ std::vector<PictureFile> calibration_run_pictures(const CalibrationRun& run) {
   return {{"friction.dat", data.str()}, {"friction.gp", gp.str()}};
 }
 
-bool is_calibration_record(const nlohmann::json& given) {
-  return given.is_object() && given.contains("fitted") && given.contains("measured") && given["measured"].is_object() && given.contains("design") &&
-      given["design"].is_object();
-}
-
 CalibrationRunInputs calibration_run_inputs(const nlohmann::json& report, const std::string& where) {
   CalibrationRunInputs in;
   nlohmann::json passed;

@@ -173,10 +173,10 @@ bool reads_as_quantity(const nlohmann::json& value) {
 }  // namespace
 
 void pass_through(const std::string& key, const nlohmann::json& value, const std::vector<std::string>& known, const std::string& where,
-                  nlohmann::json* passed) {
-  if (key == notes_key && value.is_array()) return;  // a record's own notes, written again when it is shot
+                  nlohmann::json* passed, bool by_program) {
+  if (by_program && key == notes_key && value.is_array()) return;  // a record's own notes, written again when it is shot
   refuse_near_miss(key, known, where);
-  if (key != notes_key && reads_as_quantity(value))
+  if (!by_program && key != notes_key && reads_as_quantity(value))
     throw Error(ErrorKind::usage,
                 engine_key_name(where, key) + ": " + brief_json(value) +
                     " is a number under a key that is no input or setting, so it would pass unread; give it under its "
@@ -185,11 +185,16 @@ void pass_through(const std::string& key, const nlohmann::json& value, const std
   if (passed) (*passed)[key] = value;
 }
 
+bool is_calibration_record(const nlohmann::json& given) {
+  return given.is_object() && given.contains("fitted") && given.contains("measured") && given["measured"].is_object() && given.contains("design") &&
+      given["design"].is_object();
+}
+
 bool is_record(const nlohmann::json& given) {
   const auto holds_object = [&](const char* key) { return given.contains(key) && given[key].is_object(); };
   return given.is_object() &&
       (holds_object("engine") || (holds_object("assumptions") && given.contains("R_vacuum")) ||
-       (given.contains("uncertain") && (holds_object("design") || holds_object("attested"))));
+       (given.contains("uncertain") && (holds_object("design") || holds_object("attested"))) || is_calibration_record(given));
 }
 
 namespace {
@@ -261,8 +266,20 @@ nlohmann::json design_object(const nlohmann::json& given) {
   }
   // The engine: its own object, or (a completion's record) the record's keys, less the shot's
   // range and energy, which are no claim.
+  if (is_calibration_record(given))
+    throw Error(ErrorKind::usage,
+                "this is the report of calibrate's run over unknowns, which runs again as a whole: give it to trebuchet-verify as its input "
+                "(trebuchet-verify report.json), or shoot its engine with each unknown given one value");
   nlohmann::json design = given.contains("engine") && given["engine"].is_object() ? given["engine"] : given;
-  if (given.contains("engine")) refuse_beside_engine(given);
+  if (given.contains("engine")) {
+    refuse_beside_engine(given);
+    // What else it holds beside its engine is read as a design's other keys are: its own outputs
+    // silently, the rest passed through by name.
+    for (const auto& [key, value] : given.items())
+      if (key != "engine" && key != "assumptions" && key != "passed" && key != notes_key && key != "R" && key != "T" && !find_field(key) &&
+          key != machine_key && !find_setting(key, ~0u) && !design.contains(key))
+        design[key] = value;
+  }
   if (!given.contains("engine")) design.erase("R"), design.erase("T"), design.erase("assumptions"), design.erase("passed");
   // "assumptions" holds the settings under their keys, and beside them what is no setting: the
   // engine's own g, theta_i_deg and F (in "engine" too), the given release's description (the
@@ -455,6 +472,7 @@ DesignValues overlay_flags(DesignValues values, const DesignValues& flags, const
 
 DesignValues read_design_values(const nlohmann::json& given, const std::string& where, nlohmann::json* passed, SettingsValues* settings) {
   const bool record = is_record(given);
+  const bool by_program = given.is_object() && given.contains(version_key);  // a record the programs wrote (written_by_program)
   const nlohmann::json unwrapped = record ? design_object(given) : nlohmann::json();
   const nlohmann::json& object = record ? unwrapped : given;
   if (!object.is_object())
@@ -515,20 +533,61 @@ DesignValues read_design_values(const nlohmann::json& given, const std::string& 
             std::none_of(input_fields().begin(), input_fields().end(), [&](const InputField& field) { return unit_column_of(name, field); }))
           names.push_back(name);
     names.insert(names.end(),
-                 {version_key, "passed", "simulations", "start", "iterations", "wall_time_s", "note", "attested", "implied", "chosen", "calculator",
-                  "calculator_note", "longest_range", "longest_range_note", "warnings", "theta_release_deg",
-                  "optima_found"});  // the last two: a derived table's point (table_json.cpp)
+                 {version_key,
+                  "passed",
+                  "simulations",
+                  "start",
+                  "iterations",
+                  "wall_time_s",
+                  "note",
+                  "attested",
+                  "implied",
+                  "chosen",
+                  "calculator",
+                  "calculator_note",
+                  "longest_range",
+                  "longest_range_note",
+                  "warnings",
+                  "theta_release_deg",
+                  "optima_found",
+                  "predicted",
+                  "deviation",
+                  "against",
+                  "pass",
+                  "energy",
+                  "clearance",
+                  "pin_tolerance",
+                  "pin_to_bend_by_friction",
+                  "objective",
+                  "shots",
+                  "limits",
+                  "measured",
+                  "steps",
+                  "fitted",
+                  "value",
+                  "value_low",
+                  "value_high",
+                  "band_clipped",
+                  "jams_at",
+                  "R_frictionless",
+                  "T_frictionless",
+                  "shot",
+                  "predictions",
+                  "series",
+                  "line",
+                  "error"});
     return names;
   }();
   for (const auto& [key, value] : object.items()) {
-    if (std::find(known.begin(), known.end(), key) != known.end() || std::find(written.begin(), written.end(), key) != written.end()) continue;
+    if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+    if (std::find(written.begin(), written.end(), key) != written.end()) continue;  // the records' own outputs, read back silently
     for (const Setting id : {Setting::samples, Setting::seed, Setting::claim})  // a run's, read where a value is a range or a spread
       if (key == setting_row(id).key)
         throw Error(ErrorKind::usage,
                     engine_key_name(where, key) +
                         " belongs to a Monte Carlo run; give a value of the design as a range (2.5t..3.5t) or a spread "
                         "(3.5m±0.2m), or drop it");
-    pass_through(key, value, known, where, passed);
+    pass_through(key, value, known, where, passed, by_program);
   }
   if (settings) *settings = read_settings(object, req_shot, where);
   return v;

@@ -130,6 +130,30 @@ void proportion_of_beam(const Engine& e) {
                 "{{D}} = " + format_significant(e.D, 6) + " m and the beam's length L1 + L2 = " + format_significant(Lb, 6) +
                     " m differ by more than a factor 10^3; give the beam's diameter in its own unit, e.g. {{D}} 25cm");
 }
+// The counterweight's moment of inertia about its centre (EngineParts::counterweight_inertia),
+// given or from its box: not negative, and of a counterweight that could swing under the beam.
+void check_counterweight_inertia(const Engine& e) {
+  const EngineParts& p = e.parts;
+  const auto say = [](double value) { return format_significant(value, 6); };
+  if (!(p.counterweight_inertia >= 0))
+    throw Error(ErrorKind::bad_number, "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + ": a moment of inertia must not be negative");
+  // Its radius of gyration sqrt(I/M) beyond twice the arm: a counterweight that could not swing under the beam.
+  // A counterweight bolted on is no larger than the beam it rides on. The message names what the user gave: the inertia, or its box.
+  const bool box = p.box_width && p.box_height;
+  const std::string inertia_given = box ? "the box {{box_width}} = " + say(*p.box_width) + " m by {{box_height}} = " + say(*p.box_height) +
+          " m (a moment of inertia M (w^2 + h^2)/12 = " + say(p.counterweight_inertia) + " kg m^2)"
+                                        : "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + " kg m^2";
+  const std::string smaller = box ? "; give a smaller box" : "; a box of width w and height h has M (w^2 + h^2)/12";
+  if (e.machine == MachineKind::fixed && !(p.counterweight_inertia <= e.M * beam_length(e) * beam_length(e)))
+    throw Error(ErrorKind::bad_number,
+                inertia_given + " gives the counterweight a radius of gyration of " + say(std::sqrt(p.counterweight_inertia / e.M)) +
+                    " m, more than the beam's length Lb = " + say(beam_length(e)) + " m" + smaller);
+  if (e.machine != MachineKind::fixed && e.machine != MachineKind::floating_arm && !(p.counterweight_inertia <= e.M * 4 * e.L3 * e.L3))
+    throw Error(ErrorKind::bad_number,
+                inertia_given + " gives the counterweight a radius of gyration of " + say(std::sqrt(p.counterweight_inertia / e.M)) +
+                    " m, more than twice its arm L3 = " + say(e.L3) + " m" + smaller);
+}
+
 // The parts of an engine as built (EngineParts), each within what a real engine can have.
 void check_parts(const Engine& e) {
   const EngineParts& p = e.parts;
@@ -206,23 +230,7 @@ void check_parts(const Engine& e) {
                         " m; give the diameter in its own unit, e.g. 30cm");
     }
   }
-  if (!(p.counterweight_inertia >= 0))
-    throw Error(ErrorKind::bad_number, "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + ": a moment of inertia must not be negative");
-  // Its radius of gyration sqrt(I/M) beyond twice the arm: a counterweight that could not swing under the beam.
-  // A counterweight bolted on is no larger than the beam it rides on. The message names what the user gave: the inertia, or its box.
-  const bool box = p.box_width && p.box_height;
-  const std::string inertia_given = box ? "the box {{box_width}} = " + say(*p.box_width) + " m by {{box_height}} = " + say(*p.box_height) +
-          " m (a moment of inertia M (w^2 + h^2)/12 = " + say(p.counterweight_inertia) + " kg m^2)"
-                                        : "{{counterweight_inertia}} = " + say(p.counterweight_inertia) + " kg m^2";
-  const std::string smaller = box ? "; give a smaller box" : "; a box of width w and height h has M (w^2 + h^2)/12";
-  if (e.machine == MachineKind::fixed && !(p.counterweight_inertia <= e.M * beam_length(e) * beam_length(e)))
-    throw Error(ErrorKind::bad_number,
-                inertia_given + " gives the counterweight a radius of gyration of " + say(std::sqrt(p.counterweight_inertia / e.M)) +
-                    " m, more than the beam's length Lb = " + say(beam_length(e)) + " m" + smaller);
-  if (e.machine != MachineKind::fixed && e.machine != MachineKind::floating_arm && !(p.counterweight_inertia <= e.M * 4 * e.L3 * e.L3))
-    throw Error(ErrorKind::bad_number,
-                inertia_given + " gives the counterweight a radius of gyration of " + say(std::sqrt(p.counterweight_inertia / e.M)) +
-                    " m, more than twice its arm L3 = " + say(e.L3) + " m" + smaller);
+  check_counterweight_inertia(e);
   if (!(p.rope_diameter >= 0 && p.rope_diameter <= e.L4 / 2))
     throw Error(ErrorKind::bad_number,
                 "{{rope_diameter}} = " + say(p.rope_diameter) + " m: the sling's rope must have a diameter from 0 (no drag) to half its length, " +

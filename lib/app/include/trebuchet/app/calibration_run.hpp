@@ -59,9 +59,6 @@ std::string calibration_run_table(const CalibrationRun& run);
 /// settings, samples and seed) beside the measured range and the plausible friction.
 nlohmann::ordered_json calibration_run_json(const CalibrationRun& run);
 
-/// Whether `given` is a report calibration_run_json wrote.
-bool is_calibration_record(const nlohmann::json& given);
-
 /// The run a calibration report holds, to run again as the same run (the same draws and
 /// percentiles); messages name its values "where.design.key". Throws Error as
 /// read_monte_carlo_design does, and Error(usage) for a malformed measured range or friction.

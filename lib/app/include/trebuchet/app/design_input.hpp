@@ -81,6 +81,10 @@ nlohmann::json take_spreads(const nlohmann::json& object, unsigned operation, co
 /// "uncertain" beside its "design" or "attested").
 bool is_record(const nlohmann::json& given);
 
+/// Whether `given` is the report of calibrate's run over unknowns (calibration_run.hpp), which
+/// runs again as a whole, not as a design.
+bool is_calibration_record(const nlohmann::json& given);
+
 /// The design a JSON object gives: the object itself, or, for a record (is_record), its engine with the settings it was shot with (its "assumptions",
 /// under the settings' keys), the capacity it checked ("predicted" against vacuum, and its
 /// tolerance) and the keys it passed through. So every record reads back as the same shot.
@@ -122,7 +126,8 @@ std::optional<double> read_value(const nlohmann::json& object, const std::string
 
 /// The values of a JSON design object, each an SI number or a string with a unit ("6.13m"), under
 /// its key or an alias (input_fields). A key that the programs write passes silently; any other
-/// key is refused or put in `passed` by pass_through.
+/// key is refused or put in `passed` by pass_through (which lets a record's own, one that carries
+/// its version, pass as written).
 /// Throws Error(bad_number | unknown_unit | usage) naming the key, and Error(usage) for a value
 /// given as a range or a spread (a Monte Carlo run's: take_spreads reads them).
 /// A record the programs wrote reads as its design_object; the settings it gives go to `settings`
@@ -142,9 +147,11 @@ inline constexpr const char* notes_key = "notes";
 /// (refuse_near_miss) or when its value is a number or a quantity ("0.5", "0.5kg", "2t..3t"), which
 /// may be meant for the engine and must not pass unread (Error(usage), naming notes_key as the
 /// place for a user's own numbers); any other value (a text, true, a list, an object) is put in
-/// `passed` when not null.
+/// `passed` when that is not null. In a record the programs wrote (`by_program`: it carries its
+/// version), what passed through once (a CSV's columns) passes again, numbers too, and its own
+/// notes are dropped (they are written again).
 void pass_through(const std::string& key, const nlohmann::json& value, const std::vector<std::string>& known, const std::string& where,
-                  nlohmann::json* passed);
+                  nlohmann::json* passed, bool by_program = false);
 
 /// The release that a design's values set, by time, velocity angle or pin angle; none when they
 /// set none. Throws Error(usage) for more than one, Error(bad_number) for a value out of range,
