@@ -313,6 +313,18 @@ try {
   const kinds = answers.map((a) => a.kind);
   check(answers.every((a) => a.error && a.kind !== 'numerical'),
     `hostile requests are refused as bad input, not failures: ${kinds.join(', ')}; e.g. "${answers[0].error}", "${answers[8].error}"`);
+  // Issue 62 at the page's door: a number under a key that is no input is refused by name, a
+  // text passes through by name, and a value beside a record's engine is refused, not dropped.
+  const unread = await page.evaluate(() => {
+    const t = window.trebuchet, e = { L1: 4.13, L2: 0.88, F: 2 / 3, L4: 3.55, M: 3110, m: 50, mb: 174 };
+    const record = t.shot({ design: e });
+    return { number: t.shot({ design: Object.assign({ year: 1304 }, e) }), text: t.shot({ design: Object.assign({ site: 'Alcalá' }, e) }),
+             beside: t.shot({ design: Object.assign({}, record, { L4: 2 }) }) };
+  });
+  check(unread.number.kind === 'usage' && unread.number.names.includes('year') && /"notes"/.test(unread.number.error),
+    `a number under no input's key is refused by name: "${unread.number.error}"`);
+  check(unread.text.passed && unread.text.passed.site === 'Alcalá', `a text passes through, named under passed: ${JSON.stringify(unread.text.passed)}`);
+  check(unread.beside.kind === 'usage' && unread.beside.names.includes('L4'), `a value beside a record's engine is refused by name: "${unread.beside.error}"`);
   const parallel = await page.evaluate(() => window.trebuchet.monteCarloParallel({ attested: { Lb: '9.5m', M: '2.5t..3.5t', m: '50kg' }, samples: -1 }));
   check(Boolean(parallel.error), `monteCarloParallel refuses samples -1 before any work: "${parallel.error}"`);
 } finally {
