@@ -135,6 +135,11 @@ DesignValues one_design(const Options& o, const std::string& subcommand, std::st
   // The flags over the file's values (--machine builds the file's design as that machine), and its settings under theirs.
   const DesignValues values = overlay_flags(read_design_values(in.rows.front().design, where, &passed, &own), o.design, where, notes);
   for (std::string& note : settings_notes(own, o.settings, where)) notes.push_back(std::move(note));
+  if (!passed.empty()) {  // as a shot's table says it
+    std::vector<std::string> keys;
+    for (const auto& [key, value] : passed.items()) keys.push_back(key);
+    notes.push_back("passed through, not read: " + join(keys, ", "));
+  }
   print_notes(notes);
   settings = overlay(own, o.settings);
   return values;

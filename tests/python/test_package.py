@@ -444,3 +444,12 @@ def test_compare_chooses_the_machine():
     with pytest.raises(trebuchet.TrebuchetError, match="compare builds the engine as each machine") as refused:
         trebuchet.compare(E, machine="fixed")
     assert refused.value.names == ["machine"]
+
+
+def test_sweep_and_compare_name_what_passes_through():
+    with pytest.warns(trebuchet.TrebuchetWarning, match="site: passed through unread"):
+        swept = trebuchet.sweep(dict(E, site="Alcalá"), "L4=3m..4m", points=2)
+    assert swept["passed"] == {"site": "Alcalá"}
+    with pytest.warns(trebuchet.TrebuchetWarning, match="site: passed through unread"):
+        machines = trebuchet.compare(dict(E, site="Alcalá"))
+    assert all(m["passed"] == {"site": "Alcalá"} for m in machines)

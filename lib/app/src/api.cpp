@@ -294,7 +294,9 @@ ordered_json sweep(const json& request) {
   check.settings = shot_settings(overlay(own, settings_values_of(request, req_sweep)));  // the request's over the design's own
   check.material = material_of_request(request, op_shot);
   if (what_if.field->group != FieldGroup::release) check.settings.release_at = release_of(values, "design");
-  return what_if_json(what_if, run_what_if(values, "design", what_if, check, 1), key_word);
+  ordered_json answer = what_if_json(what_if, run_what_if(values, "design", what_if, check, 1), key_word);
+  if (!passed.empty()) answer["passed"] = passed;  // the design's keys no reader knows, as given
+  return answer;
 }
 
 ordered_json compare(const json& request) {
@@ -307,7 +309,10 @@ ordered_json compare(const json& request) {
   DesignCheck check;
   check.material = material_of_request(request, op_shot);
   // The request's settings over the design's own.
-  return comparison_json(compare_design(values, "design", overlay(own, settings_values_of(request, req_compare)), check), key_word);
+  ordered_json answer = comparison_json(compare_design(values, "design", overlay(own, settings_values_of(request, req_compare)), check), key_word);
+  if (!passed.empty())  // the design's keys no reader knows, as given, in each machine's record
+    for (ordered_json& record : answer) record["passed"] = passed;
+  return answer;
 }
 
 ordered_json contest(const json& request) {
