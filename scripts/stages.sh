@@ -44,7 +44,7 @@ run_ctest() {
   local build=$1 status=0
   shift
   ctest --test-dir "$build" "$@" | tee "$build/ctest-output.log" || status=$?
-  echo "-- the ten slowest tests of $build (wall seconds, $(nproc) at a time):"
+  echo "-- the ten slowest tests of $build (wall seconds, each beside the others ctest ran at once):"
   test_seconds "$build/ctest-output.log" |
     sort -g -r | awk -F'\t' 'NR <= 10 { printf "%8.1f  %s\n", $1, $2 }'  # no head: it would end sort by SIGPIPE, and pipefail the script
   return "$status"
