@@ -92,11 +92,13 @@ MonteCarloRequest file_run(const Options& o, const nlohmann::json& design, const
 int run_monte_carlo(const Options& o, bool complete, const nlohmann::json* design, const std::string& where) {
   if (!o.series.empty()) throw Error(ErrorKind::usage, "--series writes the motion of one shot; a Monte Carlo run has many");
   if (!o.draws.empty()) refuse_output_over_input(o.draws, "draws", {o.input});
-  if (o.design.R || o.design.T || o.settings.tol)
+  if (o.design.R || o.design.T || o.settings.tol) {
+    const bool tolerance_alone = !o.design.R && !o.design.T;
     throw Error(ErrorKind::usage,
-                std::string(o.settings.tol && !o.design.R && !o.design.T ? "--tol checks" : "--R and --T check") +
+                std::string(tolerance_alone ? "--tol checks" : "--R and --T check") +
                     " one shot against a predicted capacity; a Monte Carlo run reports the spread of R and T instead: drop " +
-                    (o.settings.tol && !o.design.R && !o.design.T ? "it" : "them") + ", or give each value as one number");
+                    (tolerance_alone ? "it" : "them") + ", or give each value as one number");
+  }
   // The run's assumptions are those of each uncertain value at its first number (a range's low
   // end, a spread's mean). A design that is bad input there is refused before the run, with the
   // exit code of bad input: a range must hold only values that make an engine.

@@ -153,9 +153,12 @@ bool reads_as_quantity(const nlohmann::json& value) {
   if (value.is_number()) return true;
   if (!value.is_string()) return false;
   const std::string text = value.get<std::string>();
-  std::vector<UnitDimension> dimensions{UnitDimension::dimensionless};
-  for (const UnitFactor& unit : unit_factors())
-    if (std::find(dimensions.begin(), dimensions.end(), unit.dimension) == dimensions.end()) dimensions.push_back(unit.dimension);
+  static const std::vector<UnitDimension> dimensions = [] {  // every dimension a unit has, and a bare number's
+    std::vector<UnitDimension> found{UnitDimension::dimensionless};
+    for (const UnitFactor& unit : unit_factors())
+      if (std::find(found.begin(), found.end(), unit.dimension) == found.end()) found.push_back(unit.dimension);
+    return found;
+  }();
   for (const UnitDimension dimension : dimensions) {
     try {
       parse_value(text, dimension, "");
@@ -211,21 +214,26 @@ bool written_by_diameter(const nlohmann::json& engine, const nlohmann::json& air
   return *density > 0 && *m > 0 && std::abs(sphere_diameter(*m, *density) - *d) <= 1e-9 * *d;
 }
 
-// A record keeps its engine under "engine" and its settings under "assumptions": an input or a
-// setting put beside them would not be read, so it is refused by name. The record's own R and T
-// (its shot's), tolerance (its check's, beside "predicted") and copies of its engine's values
-// (calibrate's fitted friction; 0 for a part the engine leaves out) are no such value.
-void refuse_beside_engine(const nlohmann::json& record) {
+// What a record holds beside its engine and its settings ("assumptions"), taken into `design`,
+// the engine's values. Its own R and T (its shot's), its check's tolerance (beside "predicted")
+// and copies of its engine's values (calibrate's fitted friction; 0 for a part the engine leaves
+// out) are the record's. An input or a shot's setting put beside them would not be read, so it
+// is refused by name. Any other key joins the design's other keys, which read_design_values reads
+// as it reads them: the records' outputs silently, the rest passed through by name.
+void take_beside_engine(const nlohmann::json& record, nlohmann::json& design) {
   const nlohmann::json& engine = record["engine"];
   for (const auto& [key, value] : record.items()) {
-    if (key == "R" || key == "T" || (key == "tolerance" && record.contains("predicted"))) continue;
+    if (key == "engine" || key == "assumptions" || key == "passed" || key == notes_key || key == "R" || key == "T" ||
+        (key == "tolerance" && record.contains("predicted")))
+      continue;
     const bool input = find_field(key) != nullptr || key == machine_key;
     if (input && (engine.contains(key) ? engine[key] == value : value.is_number() && value.get<double>() == 0)) continue;
-    if (!input && !find_setting(key, req_shot)) continue;  // a setting a shot of the record reads
-    throw Error(ErrorKind::usage,
-                "\"" + key + "\" beside a record's \"engine\" is not read; give it " +
-                    (input ? "in the engine (\"engine\": {\"" + key + "\": ...})" : std::string("in its \"assumptions\"")) +
-                    ", or over the record as a flag or a keyword (shot(record, " + key + "=...))");
+    if (input || find_setting(key, req_shot))
+      throw Error(ErrorKind::usage,
+                  "\"" + key + "\" beside a record's \"engine\" is not read; give it " +
+                      (input ? "in the engine (\"engine\": {\"" + key + "\": ...})" : std::string("in its \"assumptions\"")) +
+                      ", or over the record as a flag or a keyword (shot(record, " + key + "=...))");
+    if (!find_setting(key, ~0u) && !design.contains(key)) design[key] = value;  // a contest's own settings (objective) are its record's
   }
 }
 
@@ -271,15 +279,7 @@ nlohmann::json design_object(const nlohmann::json& given) {
                 "this is the report of calibrate's run over unknowns, which runs again as a whole: give it to trebuchet-verify as its input "
                 "(trebuchet-verify report.json), or shoot its engine with each unknown given one value");
   nlohmann::json design = given.contains("engine") && given["engine"].is_object() ? given["engine"] : given;
-  if (given.contains("engine")) {
-    refuse_beside_engine(given);
-    // What else it holds beside its engine is read as a design's other keys are: its own outputs
-    // silently, the rest passed through by name.
-    for (const auto& [key, value] : given.items())
-      if (key != "engine" && key != "assumptions" && key != "passed" && key != notes_key && key != "R" && key != "T" && !find_field(key) &&
-          key != machine_key && !find_setting(key, ~0u) && !design.contains(key))
-        design[key] = value;
-  }
+  if (given.contains("engine")) take_beside_engine(given, design);
   if (!given.contains("engine")) design.erase("R"), design.erase("T"), design.erase("assumptions"), design.erase("passed");
   // "assumptions" holds the settings under their keys, and beside them what is no setting: the
   // engine's own g, theta_i_deg and F (in "engine" too), the given release's description (the
