@@ -15,6 +15,7 @@ packages=(
   ccache            # every build compiles through it (scripts/ccache.sh)
   libeigen3-dev     # Eigen 3.4
   libgsl-dev        # GSL 2.7: odeiv2, roots, minimisation
+  libnlopt-dev      # NLopt 2.7: the contest's constrained search (COBYLA)
   nlohmann-json3-dev
   libfmt-dev        # {fmt} 9: numbers in CSV (header-only)
   libfast-float-dev # fast_float: numbers read as from_chars reads them, also in the browser build

@@ -69,14 +69,16 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
                                  "the best engine of a --machine for a projectile --m within a contest's limits (--max-width, --max-height, "
                                  "--max-M, --max-axle-load, --max-acceleration), with the pin to bend, and the Pareto front of range "
                                  "against the axle's load (--pareto)");
-  // The contest's projectile, beam and box, each positive, and the beam's angle at rest.
-  for (auto member : {&DesignValues::m, &DesignValues::D, &DesignValues::box_width, &DesignValues::box_height, &DesignValues::theta_i_deg})
+  // The contest's projectile, beam and box, each positive, the beam's angle at rest, and the
+  // sling's parts (0 or more: the contest checks them as the shot does).
+  for (auto member : {&DesignValues::m, &DesignValues::D, &DesignValues::box_width, &DesignValues::box_height, &DesignValues::theta_i_deg,
+                      &DesignValues::rope_mass, &DesignValues::pouch_mass, &DesignValues::pin_friction})
     parsed_option(
         s.contest, field_of(member).flag,
         [&o, member](const std::string& text) {
           const InputField& field = field_of(member);
-          o.design.*member = member == &DesignValues::theta_i_deg ? parse_value(text, field.dimension, field.flag)
-                                                                  : parse_positive(text, field.dimension, field.flag);
+          const bool positive = member != &DesignValues::theta_i_deg && field.group != FieldGroup::part;
+          o.design.*member = positive ? parse_positive(text, field.dimension, field.flag) : parse_value(text, field.dimension, field.flag);
         },
         member == &DesignValues::D
             ? "the beam's diameter, of the wood (--wood-density): its mass per metre [" + unit_list(UnitDimension::length) + "]"

@@ -1,5 +1,7 @@
 #include "trebuchet/app/api.hpp"
 
+#include "api_input.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -26,7 +28,6 @@
 #include "trebuchet/app/requests.hpp"
 #include "trebuchet/app/schema.hpp"
 #include "trebuchet/app/design_input.hpp"
-#include "trebuchet/app/contest_record.hpp"
 #include "trebuchet/app/design_record.hpp"
 #include "trebuchet/app/search_records.hpp"
 #include "trebuchet/app/settings.hpp"
@@ -49,69 +50,10 @@ std::string key_word(std::string_view name) {
   return std::string(name);
 }
 
-// An optional value that must be positive (as the programs' options are), or 0 or more.
-std::optional<double> positive_value(const json& request, const std::string& key, UnitDimension dimension, bool zero_allowed = false) {
-  const auto value = read_value(request, key, dimension, "");
-  if (value && !(zero_allowed ? *value >= 0 : *value > 0))
-    throw Error(ErrorKind::bad_number,
-                "{{" + key + "}} = " + format_significant(*value, 6) + " must be " + (zero_allowed ? "0 or more" : "positive") + "; give a value " +
-                    (zero_allowed ? ">= 0" : "> 0"));
-  return value;
-}
-
-// A request must be an object of known keys; a key it does not know is named with the keys it does.
-void require_keys(const json& request, const std::vector<std::string>& known, const std::string& what) {
-  if (!request.is_object()) throw Error(ErrorKind::usage, what + ": expected a JSON object, got " + brief_json(request));
-  for (const auto& [key, value] : request.items())
-    if (std::find(known.begin(), known.end(), key) == known.end()) {
-      refuse_near_miss(key, known, what);
-      throw Error(ErrorKind::usage, what + ": '" + key + "' is no key of this request; use " + join(known, ", "));
-    }
-}
-
-// The keys a request of `door` takes: its own, the settings of that door (settings.def) and,
-// where it shoots a design, the material's rows, which a request gives over the design's own as
-// the programs' flags do over a file's.
-std::vector<std::string> keys_of(unsigned door, unsigned material_operation = 0) {
-  std::vector<std::string> keys;
-  for (const std::string& name : setting_names(door))
-    if (name.find('.') == std::string::npos) keys.push_back(name);  // "air.density" is a key of "air"
-  for (const InputField& field : input_fields())
-    if (field.group == FieldGroup::material && (field.operations & material_operation))
-      for (const char* name : names_of(field)) keys.emplace_back(name);
-  return keys;
-}
-
-std::string text_of(const json& value, const std::string& key) {
-  if (!value.is_string()) throw Error(ErrorKind::usage, "{{" + key + "}}: " + brief_json(value) + " must be a string");
-  return value.get<std::string>();
-}
-
 bool flag_of(const json& request, const std::string& key) {
   if (!request.contains(key)) return false;
   if (!request[key].is_boolean()) throw Error(ErrorKind::usage, "{{" + key + "}}: " + brief_json(request[key]) + " must be true or false");
   return request[key].get<bool>();
-}
-
-// The settings of a request of `door` (settings.def), each read as its flag is, named as the
-// request gives it.
-SettingsValues settings_values_of(const json& request, unsigned door) { return read_settings(request, door, ""); }
-
-// The shot's settings from a request's keys, checked as the programs check their options.
-ShotSettings settings_of(const json& request, unsigned door) { return shot_settings(settings_values_of(request, door)); }
-
-// The material's rows a request gives over its design's own, each positive.
-DesignValues material_of_request(const json& request, unsigned operation) {
-  DesignValues v;
-  for (const InputField& field : input_fields())
-    if (field.group == FieldGroup::material && (field.operations & operation))
-      for (const char* name : names_of(field))
-        if (const auto value = positive_value(request, name, field.dimension)) {
-          if (v.*field.member)
-            throw Error(ErrorKind::usage, std::string("{{") + field.key + "}} and {{" + name + "}} are one value given twice; keep one");
-          v.*field.member = value;
-        }
-  return v;
 }
 
 // `values` with the material rows of `material` put over its own.
@@ -313,39 +255,6 @@ ordered_json compare(const json& request) {
   if (!passed.empty())  // the design's keys no reader knows, as given, in each machine's record
     for (ordered_json& record : answer) record["passed"] = passed;
   return answer;
-}
-
-ordered_json contest(const json& request) {
-  std::vector<std::string> known = keys_of(req_contest, op_optimize);
-  for (const char* key : {"m", "D", "theta_i_deg", "theta", "box_width", "box_height"}) known.emplace_back(key);
-  require_keys(request, known, "contest");
-  DesignValues v = material_of_request(request, op_optimize);
-  for (const auto& [member, key, dimension] : {std::tuple{&DesignValues::m, "m", UnitDimension::mass},
-                                               {&DesignValues::D, "D", UnitDimension::length},
-                                               {&DesignValues::box_width, "box_width", UnitDimension::length},
-                                               {&DesignValues::box_height, "box_height", UnitDimension::length}})
-    v.*member = positive_value(request, key, dimension);
-  v.theta_i_deg = read_value(request, request.contains("theta") ? "theta" : "theta_i_deg", UnitDimension::angle, "");
-  if (request.contains(machine_key)) v.machine = parse_machine(text_of(request[machine_key], machine_key), "{{machine}}");
-  bool efficiency = false;
-  if (request.contains("objective")) {
-    const std::string objective = text_of(request["objective"], "objective");
-    if (objective != "range" && objective != "eps")
-      throw Error(ErrorKind::usage, "{{objective}}: '" + objective + "' is not an objective; use range or eps");
-    efficiency = objective == "eps";
-  }
-  ContestRequest r = contest_request(v, settings_of(request, req_contest), positive_value(request, "mb_per_m", UnitDimension::dimensionless),
-                                     efficiency);
-  for (std::size_t k = 0; k < contest_limit_count; ++k) {
-    const char* key = contest_limit_key(static_cast<ContestLimit>(k));
-    r.limits[k] = positive_value(request, key, setting_row(find_setting(key, req_contest)->id).dimension);
-  }
-  r.min_clearance = read_value(request, "min_clearance", UnitDimension::length, "").value_or(0);
-  const double pareto = read_value(request, "pareto", UnitDimension::dimensionless, "").value_or(0);
-  if (pareto != 0 && (!(pareto >= 2 && pareto <= 200) || pareto != std::floor(pareto)))
-    throw Error(ErrorKind::bad_number, "{{pareto}} = " + format_significant(pareto, 6) + " must be a whole number from 2 to 200");
-  const ContestEngine best = contest_optimum(r);
-  return contest_json(best, r, pareto > 0 ? pareto_front(r, static_cast<int>(pareto)) : std::vector<ContestEngine>{});
 }
 
 ordered_json complete(const json& request) {

@@ -15,10 +15,24 @@ const char* const limit_words[contest_limit_count] = {"box width", "box height",
 const UnitDimension limit_dimensions[contest_limit_count] = {UnitDimension::length, UnitDimension::length, UnitDimension::mass, UnitDimension::force,
                                                              UnitDimension::acceleration};
 
-// The clearance binds where it meets the least asked for (0: the ground) to 1e-4 of the engine's
-// height, as a limit binds (contest_binds).
-bool clearance_binds(const ContestEngine& best, const ContestRequest& request) {
-  return best.clearance - request.min_clearance <= 1e-4 * pivot_height(best.engine);
+// How many of the local searches reached the best (to reached_best of it).
+int starts_at_best(const ContestEngine& best) {
+  int count = 0;
+  for (const auto& reached : best.start_objectives) count += reached && *reached >= best.objective * (1 - reached_best);
+  return count;
+}
+
+// The clearance binds where asking for 10 % less gains; at the ground (none asked for) it only touches.
+bool clearance_binds(const ContestEngine& best) {
+  return best.gain_if_clearance_relaxed && *best.gain_if_clearance_relaxed > binding_gain * best.objective;
+}
+
+// What a limit the engine stands at costs, in words: "binds; 10 % more gains 3.08 m", or that it does not bind.
+std::string gain_words(const std::optional<double>& gain, bool binds, const ContestRequest& request, UnitSystem units, const char* looser) {
+  if (!gain) return "";
+  if (!binds) return std::string(": stands at it, but ") + looser + " gains nothing: does not bind";
+  return std::string(": binds; ") + looser + " gains " +
+      (request.efficiency ? format_significant(100 * *gain, 3) + " % in eps" : quantity_text(*gain, UnitDimension::length, units, 4));
 }
 
 }  // namespace
@@ -37,12 +51,20 @@ nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequ
     const auto limit = static_cast<ContestLimit>(k);
     nlohmann::ordered_json one{{"measured", best.measured[k]}};
     one["limit"] = request.limits[k] ? nlohmann::ordered_json(*request.limits[k]) : nlohmann::ordered_json(nullptr);
-    one["binds"] = contest_binds(best, request, limit);
+    one["at_limit"] = best.at_limit[k];
+    one["binds"] = best.binds[k];
     if (const auto& gain = best.gain_if_relaxed[k]) one["gain_if_relaxed_10_percent"] = *gain;  // R [m] or eps
     limits[contest_limit_key(limit)] = one;
   }
   out["limits"] = limits;
-  out["min_clearance"] = {{"measured", best.clearance}, {"least", request.min_clearance}, {"binds", clearance_binds(best, request)}};
+  nlohmann::ordered_json clearance{
+      {"measured", best.clearance}, {"least", request.min_clearance}, {"at_limit", best.clearance_at_limit}, {"binds", clearance_binds(best)}};
+  if (best.gain_if_clearance_relaxed) clearance["gain_if_relaxed_10_percent"] = *best.gain_if_clearance_relaxed;
+  out["min_clearance"] = clearance;
+  nlohmann::ordered_json reached = nlohmann::ordered_json::array();
+  for (const auto& objective : best.start_objectives)
+    reached.push_back(objective ? nlohmann::ordered_json(*objective) : nlohmann::ordered_json(nullptr));
+  out["search"] = {{"local_searches", best.start_objectives.size()}, {"reached_best", starts_at_best(best)}, {"objectives", reached}};
   if (!front.empty()) {
     nlohmann::ordered_json points = nlohmann::ordered_json::array();
     for (const ContestEngine& p : front)
@@ -69,26 +91,26 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
       << "pin to bend for this release: " << format_significant(best.verification.pin_angle_deg, 4) << " deg\nlimits:\n";
   bool any = false;
   for (int k = 0; k < contest_limit_count; ++k) {
-    const auto limit = static_cast<ContestLimit>(k);
     const std::string measured = quantity_text(best.measured[k], limit_dimensions[k], units, 5);
-    out << "  " << limit_words[k] << std::string(20 - std::string(limit_words[k]).size(), ' ') << measured
-        << (request.limits[k] ? std::string(std::max<std::size_t>(1, 16 - measured.size()), ' ') + "limit " +
-                    quantity_text(*request.limits[k], limit_dimensions[k], units, 5) + (contest_binds(best, request, limit) ? ": binds" : "")
-                              : std::string());
-    if (const auto& gain = best.gain_if_relaxed[k])
-      out << "; 10 % more gains "
-          << (request.efficiency ? format_significant(100 * *gain, 3) + " % in eps" : quantity_text(*gain, UnitDimension::length, units, 4));
+    out << "  " << limit_words[k] << std::string(20 - std::string(limit_words[k]).size(), ' ') << measured;
+    if (request.limits[k])
+      out << std::string(std::max<std::size_t>(1, 16 - measured.size()), ' ') << "limit "
+          << quantity_text(*request.limits[k], limit_dimensions[k], units, 5)
+          << gain_words(best.gain_if_relaxed[k], best.binds[k], request, units, "10 % more");
     out << "\n";
-    any = any || contest_binds(best, request, limit);
+    any = any || best.binds[k];
   }
   const std::string clearance = quantity_text(best.clearance, UnitDimension::length, units, 5);
-  const bool clearance_bound = clearance_binds(best, request);
   out << "  counterweight clear " << clearance << std::string(std::max<std::size_t>(1, 16 - clearance.size()), ' ') << "least "
-      << quantity_text(request.min_clearance, UnitDimension::length, units, 5) << " above the ground" << (clearance_bound ? ": binds" : "") << "\n";
-  any = any || clearance_bound;
+      << quantity_text(request.min_clearance, UnitDimension::length, units, 5) << " above the ground"
+      << (best.clearance_at_limit && !best.gain_if_clearance_relaxed ? ": touches the ground" : "")
+      << gain_words(best.gain_if_clearance_relaxed, clearance_binds(best), request, units, "10 % less") << "\n";
+  any = any || clearance_binds(best) || best.clearance_at_limit;
   if (!any)
     out << "  no limit binds: the engine stops short of them where the model stops holding (a larger one would put its counterweight or tip below "
            "the base)\n";
+  out << "search: " << starts_at_best(best) << " of " << best.start_objectives.size()
+      << " local searches reached this best to 1e-4 (from the paper's proportions and the best of " << contest_sample_size << " Sobol points)\n";
   if (!front.empty()) {
     out << "Pareto front of " << (request.efficiency ? "eps" : "the range") << " against the peak axle load (" << front.size() << " optima):\n"
         << "  axle load       R               eps       M               pin to bend\n";

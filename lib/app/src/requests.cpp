@@ -33,6 +33,7 @@ ContestRequest contest_request(const DesignValues& v, const ShotSettings& settin
   request.efficiency = efficiency;
   request.settings.criterion.release = efficiency ? Release::efficiency : Release::range;  // released where the objective peaks
   request.box_width = v.box_width, request.box_height = v.box_height;
+  request.rope_mass = v.rope_mass.value_or(0), request.pouch_mass = v.pouch_mass.value_or(0), request.pin_friction = v.pin_friction.value_or(0);
   return request;
 }
 

@@ -1,12 +1,16 @@
 #include "trebuchet/contest.hpp"
 
+#include <gsl/gsl_qrng.h>
+#include <nlopt.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "simplex.hpp"
 #include "solve_1d.hpp"
 #include "trebuchet/angles.hpp"
 #include "trebuchet/error.hpp"
@@ -16,181 +20,305 @@
 namespace trebuchet {
 namespace {
 
-// A candidate: L1/L2, L4/L1, m/M, L2 [m] and, for the hinged machine, L3/L2.
-struct Shape {
-  double l = 4, l4 = 0.9, mu = 0.02, L2 = 1, L = 0.8;
-};
+// A candidate's point: the logs of L1/L2, L4/L1, m/M, L2 [m] and, for the hinged machine, L3/L2.
+using SearchPoint = std::vector<double>;
 
-Engine engine_of_shape(const ContestRequest& r, const Shape& s) {
+Engine engine_at(const ContestRequest& r, const SearchPoint& x) {
   Engine e;
   e.machine = r.machine;
   e.theta_i_deg = r.theta_i_deg;
   e.material = r.material;
-  e.L2 = s.L2;
-  e.L1 = s.l * s.L2;
-  e.L3 = r.machine == MachineKind::hinged ? s.L * s.L2 : 0;  // the others' counterweight at the short arm's end
-  e.L4 = s.l4 * e.L1;
+  e.L2 = std::exp(x[3]);
+  e.L1 = std::exp(x[0]) * e.L2;
+  e.L3 = r.machine == MachineKind::hinged ? std::exp(x[4]) * e.L2 : 0;  // the others' counterweight at the short arm's end
+  e.L4 = std::exp(x[1]) * e.L1;
   e.m = r.projectile_mass;
-  e.M = r.projectile_mass / s.mu;
+  e.M = r.projectile_mass / std::exp(x[2]);
   e.mb = r.beam_mass_per_length * (e.L1 + e.L2);
   if (r.box_width && r.box_height) give_box(e, *r.box_width, *r.box_height);
+  e.parts.rope_mass = r.rope_mass, e.parts.pouch_mass = r.pouch_mass, e.parts.pin_friction = r.pin_friction;
   return e;
+}
+
+SearchPoint point_of(const Engine& e) {
+  SearchPoint x{std::log(e.L1 / e.L2), std::log(e.L4 / e.L1), std::log(e.m / e.M), std::log(e.L2)};
+  if (e.machine == MachineKind::hinged) x.push_back(std::log(e.L3 / e.L2));
+  return x;
 }
 
 // The counterweight's clearance above the ground [m]: the smaller of the geometry's and the shot's.
 double clearance_of(const Verification& v) { return std::min(v.clearance.geometric, v.clearance.in_shot.value_or(v.clearance.geometric)); }
 
-// How far the measures lie beyond the limits given, each as a fraction of its limit; 0 when they meet them all.
-double violation(const std::array<double, contest_limit_count>& measured, const ContestLimits& limits) {
-  double sum = 0;
-  for (int k = 0; k < contest_limit_count; ++k)
-    if (limits[k]) sum += std::max(0.0, measured[k] / *limits[k] - 1 - 1e-12);  // M = m/(m/M) may round a part in 1e16 above its limit
-  return sum;
-}
+// What one candidate's shot gave: the engine with its measures, or why it could not be shot.
+struct Outcome {
+  std::optional<ContestEngine> engine;
+  std::string failure;
+};
 
-struct Search {
-  const ContestRequest* request = nullptr;
-  double mu_least = 0;  // m over the largest counterweight: M at its limit where the search would pass it
-  bool hinged = false;
-  int shots = 0;
-  std::optional<ContestEngine> best;  // the best that meets the limits
-  std::string last_failure;  // why the last candidate that could not be shot failed
-  bool until_feasible = false;  // whether any engine meets the limits is all that is asked
-
-  Shape shape_of(const std::vector<double>& x) const {
-    Shape s{std::exp(x[0]), std::exp(x[1]), std::max(std::exp(x[2]), mu_least), std::exp(x[3]), 0};
-    if (hinged) s.L = std::exp(x[4]);
-    return s;
+// Every candidate of one contest, shot once: the objective and every limit come from the same
+// shot, and the searches at relaxed limits (the gains) share the shots they repeat.
+class Shots {
+ public:
+  explicit Shots(const ContestRequest& r) : request_(r) {}
+  const Outcome& at(const SearchPoint& x) {
+    auto found = outcomes_.find(x);
+    return found != outcomes_.end() ? found->second : outcomes_.emplace(x, shoot(x)).first->second;
   }
-  std::vector<double> point_of(const Shape& s) const {
-    std::vector<double> x{std::log(s.l), std::log(s.l4), std::log(s.mu), std::log(s.L2)};
-    if (hinged) x.push_back(std::log(s.L));
-    return x;
-  }
+  int count() const { return static_cast<int>(outcomes_.size()); }
 
-  // Minus the objective of a candidate that meets the limits; how far it misses them otherwise
-  // (above every one that meets them); a candidate that cannot be built or shot, more still.
-  double cost(const Shape& s) {
-    if (until_feasible && best) return -1e300;  // answered: the simplex, all alike, shrinks to its end
-    ++shots;
-    if (!(s.l > 1.05 && s.l < 60 && s.l4 > 0.05 && s.l4 < 20 && s.mu < 1 && s.L2 > 1e-3 && s.L2 < 1e3 && s.L < 20)) return 1e6;
+ private:
+  Outcome shoot(const SearchPoint& x) const {
+    Outcome out;
     try {
       ContestEngine c;
-      c.engine = engine_of_shape(*request, s);
-      c.measured = contest_measures(c.engine, request->settings, &c.verification);
-      c.objective = request->efficiency ? c.verification.eps : c.verification.capacity.R;
-      // The model stops holding before the release: no engine. A counterweight that strikes the
-      // ground (one warning more) misses the clearance below, by how much.
-      if (c.verification.warnings.size() > (c.verification.clearance.buildable() ? 0u : 1u)) {
-        last_failure = c.verification.warnings.front();
-        return 1e5;
-      }
+      c.engine = engine_at(request_, x);
+      c.measured = contest_measures(c.engine, request_.settings, &c.verification);
+      c.objective = request_.efficiency ? c.verification.eps : c.verification.capacity.R;
       c.clearance = clearance_of(c.verification);
-      // A clearance short of the one asked for misses by its shortfall over the engine's height.
-      const double missed = violation(c.measured, request->limits) +
-          std::max(0.0, (request->min_clearance - c.clearance) / pivot_height(c.engine) - 1e-12);
-      c.feasible = missed == 0;
-      if (!c.feasible) return missed;
-      if (!best || c.objective > best->objective) best = c;
-      return -c.objective;
+      // The model stops holding before the release: no engine. A counterweight that strikes the
+      // ground (one warning more) is an engine that misses the clearance.
+      if (c.verification.warnings.size() > (c.verification.clearance.buildable() ? 0u : 1u))
+        out.failure = c.verification.warnings.front();
+      else
+        out.engine = c;
     } catch (const Error& e) {
-      last_failure = e.named_message();
-      return 1e6;
+      out.failure = e.named_message();
     }
+    return out;
+  }
+  const ContestRequest& request_;  // its engine and settings (the limits differ between searches)
+  std::map<SearchPoint, Outcome> outcomes_;
+};
+
+// By how much an engine misses each limit, scaled to it (positive: missed): the limits given but
+// the counterweight's mass (a bound of the search), then the clearance over the engine's height.
+std::vector<double> misses(const ContestEngine& c, const ContestRequest& r) {
+  std::vector<double> out;
+  for (int k = 0; k < contest_limit_count; ++k)
+    if (r.limits[k] && k != mass_limit) out.push_back(c.measured[k] / *r.limits[k] - 1);
+  out.push_back((r.min_clearance - c.clearance) / pivot_height(c.engine));
+  return out;
+}
+
+std::size_t miss_count(const ContestRequest& r) {
+  std::size_t count = 1;
+  for (int k = 0; k < contest_limit_count; ++k) count += r.limits[k] && k != mass_limit;
+  return count;
+}
+
+bool meets_limits(const ContestEngine& c, const ContestRequest& r) {
+  // M = m/(m/M) may round a part in 1e16 above its limit.
+  if (r.limits[mass_limit] && c.measured[mass_limit] > *r.limits[mass_limit] * (1 + 1e-12)) return false;
+  for (double miss : misses(c, r))
+    if (miss > 0) return false;
+  return true;
+}
+
+// The searches of one request: local searches by COBYLA (NLopt's constrained simplex of linear
+// approximations) in the candidate's point, each limit a constraint, the counterweight's mass a
+// bound; the best engine that meets the limits over all of them.
+struct Search {
+  Search(const ContestRequest& r, Shots& s) : request(r), shots(s) {}
+  const ContestRequest& request;
+  Shots& shots;
+  bool until_feasible = false;  // whether any engine that meets the limits is all that is asked
+  std::optional<ContestEngine> best;  // the best that meets the limits
+  std::optional<ContestEngine> best_of_start;  // the same, of the local search under way
+  std::string last_failure;  // why the last candidate that could not be shot failed
+  nlopt_opt optimizer = nullptr;
+
+  const Outcome& shoot(const SearchPoint& x) {
+    const Outcome& out = shots.at(x);
+    if (!out.engine) {
+      last_failure = out.failure;
+    } else if (meets_limits(*out.engine, request)) {
+      if (!best_of_start || out.engine->objective > best_of_start->objective) best_of_start = out.engine;
+      if (!best || out.engine->objective > best->objective) best = out.engine;
+      if (until_feasible) nlopt_force_stop(optimizer);
+    }
+    return out;
   }
 
-  // The size scales the range and the box, not the shape's accelerations: the best shape is
-  // grown (or shrunk) to the largest size that meets the limits, by bisection in log L2.
-  void push_size() {
-    if (!best) return;
-    Shape s;
-    s.l = best->engine.L1 / best->engine.L2, s.l4 = best->engine.L4 / best->engine.L1, s.mu = best->engine.m / best->engine.M;
-    s.L2 = best->engine.L2, s.L = best->engine.L3 / best->engine.L2;
-    const double start = s.L2;
-    double low = 0, high = 0;  // log of the factor: feasible at low, not at high
-    bool bracketed = false;
-    for (int k = 1; k <= 40 && !bracketed; ++k) {
-      Shape grown = s;
-      grown.L2 = start * std::exp(0.05 * k);
-      const double before = best->objective;
-      if (cost(grown) > 0)
-        bracketed = true, high = 0.05 * k;
-      else if (!(best->objective > before))
-        return;  // a larger engine does no better: the size does not bind
-      else
-        low = 0.05 * k;
+  static double minus_log_objective(unsigned n, const double* x, double*, void* data) {
+    Search& s = *static_cast<Search*>(data);
+    const Outcome& out = s.shoot(SearchPoint(x, x + n));
+    return out.engine && out.engine->objective > 0 ? -std::log(out.engine->objective) : 50;  // none: worse than any engine
+  }
+  static void limits_missed(unsigned m, double* result, unsigned n, const double* x, double*, void* data) {
+    Search& s = *static_cast<Search*>(data);
+    const Outcome& out = s.shoot(SearchPoint(x, x + n));
+    const std::vector<double> missed = out.engine ? misses(*out.engine, s.request) : std::vector<double>(m, 1.0);
+    std::copy(missed.begin(), missed.end(), result);
+  }
+
+  // The bounds of the point: L1/L2 from 1.05 to 60, L4/L1 from 0.05 to 20, M up to its limit
+  // (m/M from m over it, or 1e-5, to 0.999), L2 from 1 mm to 1 km, L3/L2 from 0.01 to 20.
+  std::pair<SearchPoint, SearchPoint> bounds() const {
+    const double mu_least = request.limits[mass_limit] ? request.projectile_mass / *request.limits[mass_limit] : 1e-5;
+    SearchPoint low{std::log(1.05), std::log(0.05), std::log(std::min(mu_least, 0.5)), std::log(1e-3), std::log(0.01)};
+    SearchPoint high{std::log(60.0), std::log(20.0), std::log(0.999), std::log(1e3), std::log(20.0)};
+    const std::size_t n = request.machine == MachineKind::hinged ? 5 : 4;
+    low.resize(n), high.resize(n);
+    return {low, high};
+  }
+
+  // One run of COBYLA from `x`, its first steps `step` in the logs, stopped where a step of
+  // `resolution` changes nothing (the limits then met to about that of them), or after 1500 shots.
+  void cobyla(SearchPoint x, double step, double resolution) {
+    auto [low, high] = bounds();
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::clamp(x[i], low[i], high[i]);
+    optimizer = nlopt_create(NLOPT_LN_COBYLA, static_cast<unsigned>(x.size()));
+    nlopt_set_lower_bounds(optimizer, low.data());
+    nlopt_set_upper_bounds(optimizer, high.data());
+    nlopt_set_min_objective(optimizer, minus_log_objective, this);
+    const std::vector<double> tolerances(miss_count(request), 0.0);
+    nlopt_add_inequality_mconstraint(optimizer, static_cast<unsigned>(tolerances.size()), limits_missed, this, tolerances.data());
+    nlopt_set_initial_step1(optimizer, step);
+    nlopt_set_xtol_abs1(optimizer, resolution);
+    nlopt_set_maxeval(optimizer, 1500);
+    double value = 0;
+    nlopt_optimize(optimizer, x.data(), &value);
+    nlopt_destroy(optimizer);
+    optimizer = nullptr;
+  }
+
+  // A coarse local search from `start`: steps of `step` in the logs (a quarter from a start far
+  // from any optimum) down to 1e-3. Its end: the best engine it found that meets the limits.
+  std::optional<ContestEngine> coarse(const SearchPoint& start, double step) {
+    best_of_start.reset();
+    cobyla(start, step, 1e-3);
+    return best_of_start;
+  }
+
+  // A coarse search's end refined: steps of 0.05 down to 1e-6, and again from the end while that
+  // gains (at most 3 times): COBYLA, its steps shrunk against several limits at once, can stop
+  // short of their corner. The objective it reached.
+  double refine(const ContestEngine& end) {
+    best_of_start = end;
+    for (int run = 0; run < 4; ++run) {
+      const double before = best_of_start->objective;
+      cobyla(point_of(best_of_start->engine), 0.05, 1e-6);
+      if (run > 0 && !(best_of_start->objective > before * (1 + 1e-9))) break;
     }
-    if (!bracketed) return;
-    for (int k = 0; k < 40 && high - low > 1e-10; ++k) {
-      const double middle = (low + high) / 2;
-      Shape trial = s;
-      trial.L2 = start * std::exp(middle);
-      (cost(trial) > 0 ? high : low) = middle;
-    }
+    return best_of_start->objective;
   }
 };
 
-Shape shape_of_engine(const Engine& e) {
-  Shape s;
-  s.l = e.L1 / e.L2, s.l4 = e.L4 / e.L1, s.mu = e.m / e.M, s.L2 = e.L2, s.L = e.L3 > 0 ? e.L3 / e.L2 : 0.8;
-  return s;
+// The first point of every search: the paper's proportions (L1/L2 = 4, L4/L1 = 0.9, M = 50 m or
+// its limit, L3/L2 = 0.8) at a size within the box when one is given.
+SearchPoint paper_start(const ContestRequest& r, double box) {
+  const double mu = std::max(0.02, r.limits[mass_limit] ? r.projectile_mass / *r.limits[mass_limit] : 0.0);
+  SearchPoint x{std::log(4.0), std::log(0.9), std::log(std::min(mu, 0.5)), std::log(box < 1e300 ? 0.15 * box / 4 : 1)};
+  if (r.machine == MachineKind::hinged) x.push_back(std::log(0.8));
+  return x;
 }
 
-Search search_from(const ContestRequest& r, const Shape& start, bool until_feasible = false) {
-  Search search;
-  search.request = &r;
-  search.until_feasible = until_feasible;
-  search.hinged = r.machine == MachineKind::hinged;
-  if (r.limits[mass_limit]) search.mu_least = r.projectile_mass / *r.limits[mass_limit];
-  Shape first = start;
-  first.mu = std::max(first.mu, search.mu_least);
-  const auto cost = [&](const std::vector<double>& x) { return search.cost(search.shape_of(x)); };
-  minimize_simplex(cost, search.point_of(first), 0.25, 1e-5, 500);
-  if (until_feasible) return search;
-  search.push_size();
-  // The simplex, shrunk against a limit it presses on, stops a few parts in 1e4 short of it. A
-  // second, small simplex from the best, then the size pushed again, meets an active limit to
-  // 1e-4 (contest_binds).
-  if (search.best) {
-    minimize_simplex(cost, search.point_of(shape_of_engine(search.best->engine)), 0.02, 1e-8, 300);
-    search.push_size();
+// The points of a Sobol sequence (GSL's gsl_qrng) over the shapes a contest's engine takes,
+// log-uniform: L1/L2 from 1.5 to 8, L4/L1 from 0.4 to 1.6, M from its limit to a twentieth of it
+// (or 10 to 200 m), L2 about 0.3 of the box over L1/L2 + 1 (within a factor 3), or 0.2 to 5 m
+// without a box, L3/L2 from 0.3 to 1.5.
+std::vector<SearchPoint> sobol_sample(const ContestRequest& r, double box, int count) {
+  const std::size_t n = r.machine == MachineKind::hinged ? 5 : 4;
+  std::unique_ptr<gsl_qrng, decltype(&gsl_qrng_free)> sequence(gsl_qrng_alloc(gsl_qrng_sobol, static_cast<unsigned>(n)), gsl_qrng_free);
+  const auto between = [](double low, double high, double u) { return std::log(low) + u * (std::log(high) - std::log(low)); };
+  const double mu_least = r.limits[mass_limit] ? std::min(r.projectile_mass / *r.limits[mass_limit], 0.5) : 0.005;
+  std::vector<SearchPoint> sample;
+  for (int k = 0; k < count; ++k) {
+    double u[5] = {};
+    gsl_qrng_get(sequence.get(), u);
+    SearchPoint x{between(1.5, 8, u[0]), between(0.4, 1.6, u[1]), between(mu_least, std::min(20 * mu_least, 0.999), u[2])};
+    const double l = std::exp(x[0]);
+    x.push_back(box < 1e300 ? between(0.3 * box / (l + 1) / std::sqrt(3.0), 0.3 * box / (l + 1) * std::sqrt(3.0), u[3]) : between(0.2, 5, u[3]));
+    if (n == 5) x.push_back(between(0.3, 1.5, u[4]));
+    sample.push_back(x);
   }
-  return search;
+  return sample;
 }
 
-// The starting shapes: the paper's proportions, and a shorter beam with a longer sling, each at
-// a size within the box when one is given.
-std::vector<Shape> starts_of(const ContestRequest& r) {
-  std::vector<Shape> starts{Shape{}, Shape{3, 1.2, 0.02, 1, 1}};
+// The starts of a search: `warm` first, the paper's proportions, then the best of a Sobol sample
+// (those that meet the limits by their objective, then the others by how little they miss).
+std::vector<SearchPoint> starts_of(Search& search, const std::vector<SearchPoint>& warm, int sample_starts) {
+  const ContestRequest& r = search.request;
   const double box = std::min(r.limits[width_limit].value_or(1e300), r.limits[height_limit].value_or(1e300));
-  for (Shape& s : starts) s.L2 = box < 1e300 ? 0.15 * box / s.l : 1;
+  std::vector<SearchPoint> starts = warm;
+  starts.push_back(paper_start(r, box));
+  std::vector<std::pair<double, SearchPoint>> ranked;
+  for (const SearchPoint& x : sobol_sample(r, box, contest_sample_size)) {
+    const Outcome& out = search.shoot(x);
+    if (search.until_feasible && search.best) return {};
+    if (!out.engine) continue;
+    double missed = 0;
+    for (double miss : misses(*out.engine, r)) missed += std::max(0.0, miss);
+    ranked.emplace_back(missed > 0 ? missed : -out.engine->objective, x);
+  }
+  std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  // The best first, each at least 0.3 from every start before it in some log: starts in distinct
+  // places, not five in one basin.
+  const auto apart = [&](const SearchPoint& x) {
+    for (const SearchPoint& start : starts) {
+      double distance = 0;
+      for (std::size_t i = 0; i < x.size(); ++i) distance = std::max(distance, std::abs(x[i] - start[i]));
+      if (distance < 0.3) return false;
+    }
+    return true;
+  };
+  for (std::size_t k = 0; k < ranked.size() && starts.size() < warm.size() + 1 + sample_starts; ++k)
+    if (apart(ranked[k].second)) starts.push_back(ranked[k].second);
   return starts;
 }
 
-// The better of two searches: one that meets the limits, then the larger objective.
-Search better(Search a, Search b) {
-  b.shots += a.shots, a.shots = b.shots;
-  if (!a.best) return b;
-  if (!b.best) return a;
-  return b.best->objective > a.best->objective ? b : a;
-}
+// What a search found: the best engine that meets the limits, what each local search reached
+// (none where it found no such engine), and why the last candidate that failed, failed.
+struct Found {
+  std::optional<ContestEngine> best;
+  std::vector<std::optional<double>> start_objectives;
+  std::vector<SearchPoint> ends;  // where the local searches that found such an engine ended, the best first
+  std::string last_failure;
+};
 
-// The best of the searches from each start, and from `warm` first when given; with
-// `until_feasible`, the first engine found that meets the limits.
-Search search_all(const ContestRequest& r, const std::optional<Shape>& warm = std::nullopt, bool until_feasible = false) {
-  Search found;
-  found.request = &r;
-  if (warm) found = search_from(r, *warm, until_feasible);
-  for (const Shape& start : starts_of(r)) {
-    if (until_feasible && found.best) break;
-    found = better(found, search_from(r, start, until_feasible));
+// How far a search reaches beyond its warm starts: not at all (the Pareto front's next point);
+// near (the gains: the paper's proportions and the sample's best two, the two best ends
+// refined); or wholly (the contest: the paper's proportions and the sample's best five, every end
+// within 1 % of the best refined).
+enum class Reach { warm_only, near, whole };
+
+// The best engine of a request: coarse local searches from `warm` and the starts `reach` adds,
+// then the best of their ends refined; with `until_feasible`, the first engine found that meets
+// the limits.
+Found search(const ContestRequest& r, Shots& shots, const std::vector<SearchPoint>& warm, Reach reach = Reach::whole, bool until_feasible = false) {
+  Search s{r, shots};
+  s.until_feasible = until_feasible;
+  const std::vector<SearchPoint> starts = reach == Reach::warm_only ? warm
+                                                                    : starts_of(s, warm, reach == Reach::whole ? contest_local_searches - 1 : 2);
+  Found found;
+  std::vector<std::optional<ContestEngine>> ends;
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    if (until_feasible && s.best) break;
+    ends.push_back(s.coarse(starts[k], k < warm.size() ? 0.05 : 0.25));  // a warm start: an optimum of nearby limits
+    found.start_objectives.push_back(ends.back() ? std::optional<double>(ends.back()->objective) : std::nullopt);
   }
+  if (!until_feasible && s.best) {
+    std::vector<std::size_t> order(ends.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    const auto objective = [&](std::size_t k) { return ends[k] ? ends[k]->objective : -1e300; };
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return objective(a) > objective(b); });
+    const double best_end = s.best->objective;
+    std::size_t refined = 0;
+    for (std::size_t k : order)
+      if (ends[k]) {
+        if (ends[k]->objective >= 0.99 * best_end && (reach == Reach::whole || refined < 2))
+          found.start_objectives[k] = s.refine(*ends[k]), ends[k] = s.best_of_start, ++refined;
+        found.ends.push_back(point_of(ends[k]->engine));
+      }
+  }
+  found.best = s.best;
+  found.last_failure = s.last_failure;
   return found;
 }
 
 // The fewest of the request's limits that no search meets together; the whole set without a
 // search when `whole_fails` says it is already known to fail.
-std::vector<ContestLimit> fewest_conflicting(const ContestRequest& request, bool whole_fails) {
+std::vector<ContestLimit> fewest_conflicting(const ContestRequest& request, Shots& shots, bool whole_fails) {
   std::vector<ContestLimit> given;
   for (int k = 0; k < contest_limit_count; ++k)
     if (request.limits[k]) given.push_back(static_cast<ContestLimit>(k));
@@ -204,7 +332,7 @@ std::vector<ContestLimit> fewest_conflicting(const ContestRequest& request, bool
       std::vector<ContestLimit> chosen;
       for (std::size_t i = 0; i < given.size(); ++i)
         if (mask & (1u << i)) some.limits[given[i]] = request.limits[given[i]], chosen.push_back(given[i]);
-      if (!search_all(some, std::nullopt, true).best) return chosen;
+      if (!search(some, shots, {}, Reach::whole, true).best) return chosen;
     }
   }
   return {};
@@ -231,6 +359,11 @@ void check_request(const ContestRequest& r) {
   for (const auto& side : {r.box_width, r.box_height})
     if (side && !(*side > 0 && *side < 1e6)) throw Error(ErrorKind::bad_number, "a side of the counterweight's box must be positive");
   check_shot_settings(r.settings);
+  // The sling's parts as the shot checks them, on the paper's proportions with the heaviest
+  // counterweight allowed (a pouch may not outweigh it).
+  Engine probe = engine_at(r, paper_start(r, 1e300));
+  if (r.limits[mass_limit]) probe.M = *r.limits[mass_limit];
+  check_engine(probe);
 }
 
 // The largest of sign f over samples of a smooth f at increasing times t: the best sample, or
@@ -294,31 +427,27 @@ std::array<double, contest_limit_count> contest_measures(const Engine& engine, c
   return {(x_high - x_low) * engine.L2, (y_high - y_low) * engine.L2, engine.M, v.loads[pivot_load].value, acceleration * engine.material.g};
 }
 
-bool contest_binds(const ContestEngine& engine, const ContestRequest& request, ContestLimit limit) {
-  const auto& given = request.limits[limit];
-  return given && std::abs(engine.measured[limit] / *given - 1) <= 1e-4;
-}
-
 namespace {
 
 // The best engine of a checked request, without what relaxing its limits would gain.
-ContestEngine best_engine(const ContestRequest& request) {
-  const Search search = search_all(request);
-  if (!search.best) {
+ContestEngine best_engine(const ContestRequest& request, Shots& shots, std::vector<SearchPoint>* ends = nullptr) {
+  const Found found = search(request, shots, {});
+  if (ends) *ends = found.ends;
+  if (!found.best) {
     // A clearance asked for that no engine meets, where the limits alone can be met, is named itself.
     if (request.min_clearance > 0) {
       ContestRequest without = request;
       without.min_clearance = 0;
-      if (search_all(without, std::nullopt, true).best)
+      if (search(without, shots, {}, Reach::whole, true).best)
         throw Error(ErrorKind::out_of_range,
                     "no engine found keeps its counterweight {{min_clearance}} = " + format_significant(request.min_clearance, 4) +
                         " m above the ground within the other limits; ask for less clearance, or loosen the box's height");
     }
-    const std::vector<ContestLimit> conflict = fewest_conflicting(request, true);
+    const std::vector<ContestLimit> conflict = fewest_conflicting(request, shots, true);
     if (conflict.empty())
       throw Error(ErrorKind::out_of_range,
                   "no engine the search tried could be built and shot" +
-                      (search.last_failure.empty() ? std::string() : " (the last: " + search.last_failure + ")") +
+                      (found.last_failure.empty() ? std::string() : " (the last: " + found.last_failure + ")") +
                       "; give a projectile, beam and angle of ordinary size, or limits that allow one");
     std::string names;
     for (ContestLimit k : conflict) names += (names.empty() ? "" : " and ") + std::string("{{") + contest_limit_key(k) + "}}";
@@ -326,54 +455,82 @@ ContestEngine best_engine(const ContestRequest& request) {
                 "no engine found meets " + names +
                     (conflict.size() > 1 ? " together, though it meets any fewer of them; loosen one of them" : "; loosen it"));
   }
-  ContestEngine best = *search.best;
-  best.shots = search.shots;
+  ContestEngine best = *found.best;
+  best.start_objectives = found.start_objectives;
+  best.shots = shots.count();
   return best;
+}
+
+// What relaxing one limit (or the clearance) of `relaxed` gains over `best`: a search under the
+// looser limits from where the contest's own local searches ended, `best` first (it meets them
+// too, so the gain is never negative), and from the starts of its own that reach near.
+double gain_over(const ContestEngine& best, const ContestRequest& relaxed, Shots& shots, const std::vector<SearchPoint>& ends) {
+  const Found more = search(relaxed, shots, ends, Reach::near);
+  return more.best ? std::max(0.0, more.best->objective - best.objective) : 0;
 }
 
 }  // namespace
 
 ContestEngine contest_optimum(const ContestRequest& request) {
   check_request(request);
-  ContestEngine best = best_engine(request);
-  // What each binding limit costs: the search again, from the best engine, with it 10 % looser.
+  Shots shots(request);
+  std::vector<SearchPoint> ends;
+  ContestEngine best = best_engine(request, shots, &ends);
+  if (!request.gains) return best;
+  // Each limit the engine stands at (to 1e-3 of it): what it costs, found by searching again with
+  // it 10 % looser. It binds where that gains (more than 1e-5 of the objective, above the search's
+  // resolution); a limit the engine only touches gains nothing.
+  const auto binds = [&](double gain) { return gain > binding_gain * best.objective; };
   for (int k = 0; k < contest_limit_count; ++k) {
-    const auto limit = static_cast<ContestLimit>(k);
-    if (!contest_binds(best, request, limit)) continue;
+    if (!request.limits[k] || std::abs(best.measured[k] / *request.limits[k] - 1) > at_limit_tolerance) continue;
     ContestRequest relaxed = request;
     relaxed.limits[k] = *request.limits[k] * 1.1;
-    const Search more = search_from(relaxed, shape_of_engine(best.engine));
-    best.shots += more.shots;
-    if (more.best) best.gain_if_relaxed[k] = std::max(0.0, more.best->objective - best.objective);
+    best.at_limit[k] = true;
+    best.gain_if_relaxed[k] = gain_over(best, relaxed, shots, ends);
+    best.binds[k] = binds(*best.gain_if_relaxed[k]);
   }
+  const double height = pivot_height(best.engine);
+  if (best.clearance - request.min_clearance <= at_limit_tolerance * height) {
+    best.clearance_at_limit = true;
+    if (request.min_clearance > 0) {  // the ground itself is no limit to relax
+      ContestRequest relaxed = request;
+      relaxed.min_clearance = request.min_clearance * 0.9;
+      best.gain_if_clearance_relaxed = gain_over(best, relaxed, shots, ends);
+    }
+  }
+  best.shots = shots.count();
   return best;
 }
 
-std::vector<ContestLimit> conflicting_limits(const ContestRequest& request) { return fewest_conflicting(request, false); }
+std::vector<ContestLimit> conflicting_limits(const ContestRequest& request) {
+  Shots shots(request);
+  return fewest_conflicting(request, shots, false);
+}
 
 std::vector<ContestEngine> pareto_front(const ContestRequest& request, int points) {
   check_request(request);
   if (!(points >= 2 && points <= 200)) throw Error(ErrorKind::bad_number, "{{points}} = " + std::to_string(points) + ": give 2 to 200 points");
+  Shots shots(request);
   ContestRequest free = request;
   free.limits[axle_limit].reset();
-  const ContestEngine top = best_engine(free);
+  const ContestEngine top = best_engine(free, shots);
   const double most = request.limits[axle_limit] ? std::min(*request.limits[axle_limit], top.measured[axle_limit]) : top.measured[axle_limit];
   // Every engine found, from the largest load down, each search warm from the last optimum: the
   // front's point at a load is the best of them all within it (a search that stopped short is
   // bettered by one that went farther at a smaller load).
   std::vector<ContestEngine> found{top};
-  std::optional<Shape> warm = shape_of_engine(top.engine);
+  SearchPoint warm = point_of(top.engine);
   std::vector<double> loads;
   for (int k = points - 1; k >= 0; --k) {
     ContestRequest limited = request;
     limited.limits[axle_limit] = most * (0.2 + 0.8 * k / (points - 1));
     loads.push_back(*limited.limits[axle_limit]);
-    Search search = search_from(limited, *warm);
-    if (!search.best) search = search_all(limited);  // the warm start could not reach this load
-    if (!search.best) continue;
-    search.best->shots = search.shots;
-    found.push_back(*search.best);
-    warm = shape_of_engine(search.best->engine);
+    Found search_found = search(limited, shots, {warm}, Reach::warm_only);
+    if (!search_found.best) search_found = search(limited, shots, {});  // the warm start could not reach this load
+    if (!search_found.best) continue;
+    search_found.best->shots = shots.count();
+    found.push_back(*search_found.best);
+    warm = point_of(search_found.best->engine);
   }
   std::vector<ContestEngine> front;
   for (auto load = loads.rbegin(); load != loads.rend(); ++load) {

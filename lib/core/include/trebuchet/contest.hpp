@@ -40,7 +40,27 @@ struct ContestRequest {
   /// The least clearance of the counterweight (its box's bottom) above the ground [m], in the
   /// machine's geometry and in the shot (Verification::Clearance): 0 unless a margin is asked for.
   double min_clearance = 0;
+  /// The builder's parts of the sling and its pin (EngineParts), on every engine tried: the
+  /// rope's and the pouch's mass [kg], and mu of the loop on the release pin (scaled), which
+  /// gives the pin to bend with the engine.
+  double rope_mass = 0, pouch_mass = 0, pin_friction = 0;
+  /// Whether to find what relaxing each limit the engine stands at gains: a search each, most of
+  /// a contest's cost. Without, the same engine, its gains and binds left empty.
+  bool gains = true;
 };
+
+/// A limit the engine stands at: within this fraction of it (the clearance: of the engine's
+/// height above its least). Only there can relaxing it gain.
+inline constexpr double at_limit_tolerance = 1e-3;
+/// A limit binds where relaxing it by 10 % gains more than this fraction of the objective: above
+/// the resolution of the search, which meets a limit to about 1e-6 of it.
+inline constexpr double binding_gain = 1e-5;
+/// Within this fraction of the best, a local search reached the best (ContestEngine::start_objectives).
+inline constexpr double reached_best = 1e-4;
+/// The search's starts: the paper's proportions and the best of a Sobol sample of this many points.
+inline constexpr int contest_sample_size = 64;
+/// The local searches of a contest: from the paper's proportions and the best five of the sample.
+inline constexpr int contest_local_searches = 6;
 
 /// One engine of a contest, with what each limit measures on it (in the limits' units) and
 /// whether it meets them all.
@@ -49,12 +69,20 @@ struct ContestEngine {
   Verification verification;
   std::array<double, contest_limit_count> measured{};
   double clearance = 0;  ///< the smaller of Verification::Clearance's two [m]
-  /// For each limit that binds (contest_binds), the objective (R [m] or eps) that relaxing it by
-  /// 10 % gains, the others held: what that limit costs. None for the others, and for the
-  /// engines of a Pareto front.
+  /// The limits the engine stands at (at_limit_tolerance), and of them those that bind: relaxing
+  /// them by 10 % gains (binding_gain). None for the engines of a Pareto front.
+  std::array<bool, contest_limit_count> at_limit{}, binds{};
+  /// For each limit the engine stands at, the objective (R [m] or eps) that the contest gains
+  /// with it 10 % looser, the others held: what that limit costs (0 where it does not bind).
   std::array<std::optional<double>, contest_limit_count> gain_if_relaxed{};
+  /// The same for the least clearance the request asks for: whether the counterweight stands at
+  /// it (or at the ground), and what asking 10 % less gains (none at the ground).
+  bool clearance_at_limit = false;
+  std::optional<double> gain_if_clearance_relaxed;
   double objective = 0;  ///< R [m] or eps
-  bool feasible = false;
+  /// What each local search of the contest reached, in the order run (none: no engine that meets
+  /// the limits): how sure the search is of its best.
+  std::vector<std::optional<double>> start_objectives;
   int shots = 0;  ///< of the search that found it
 };
 
@@ -65,18 +93,17 @@ struct ContestEngine {
 /// mass, its peak axle load, and the projectile's peak acceleration up to the release.
 std::array<double, contest_limit_count> contest_measures(const Engine& engine, const ShotSettings& settings, Verification* verification = nullptr);
 
-/// The best engine: Nelder-Mead in the logs of L1/L2, L4/L1, m/M, L2 (and L3/L2 for the hinged
-/// machine; the others hold their counterweight at the short arm's end), the limits as exact
-/// penalties, M at its limit where that binds, then the size pushed to the largest that meets
-/// the limits (bisection to 1e-10), so that a limit that binds is met with equality. Throws
-/// No engine returned strikes the ground: each meets the request's clearance. Throws
+/// The best engine (docs/machines.md): coarse local searches by COBYLA (NLopt) in the logs of
+/// L1/L2, L4/L1, m/M, L2 (and L3/L2 for the hinged machine; the others hold their counterweight
+/// at the short arm's end), each limit a constraint and M bounded by its limit, from the paper's
+/// proportions and the best five of 64 points of a Sobol sequence; those within 1 % of the best
+/// refined; the best engine that meets the limits over them all. Every candidate is shot once.
+/// Then, with request.gains, for each limit the engine stands at, a search with that limit 10 %
+/// looser, from the contest's own ends and from starts of its own: what it gains, and whether
+/// it binds. No engine returned strikes the ground: each meets the request's clearance. Throws
 /// Error(bad_number) for a request no engine could meet (no projectile, no beam), Error(out_of_range)
 /// when no engine meets the limits, naming the fewest limits that cannot be met together.
 ContestEngine contest_optimum(const ContestRequest& request);
-
-/// Whether `limit` binds on `engine`: given, and met to within 1e-4 of it (the search meets an
-/// active limit to that, docs/machines.md).
-bool contest_binds(const ContestEngine& engine, const ContestRequest& request, ContestLimit limit);
 
 /// The fewest limits of the request that no engine the search finds meets together; empty when
 /// it meets them all.
