@@ -4,23 +4,42 @@
 
 #include "program.hpp"
 #include "run.hpp"
+#include "trebuchet/app/contest_record.hpp"
 #include "trebuchet/app/names.hpp"
 #include "trebuchet/app/text_input.hpp"
 #include "trebuchet/app/verifier.hpp"
 
 namespace trebuchet::verify {
 
+namespace {
+
+// The contest's limits compare measures each column against: the flags', or else those of the
+// contest's record it reads (`design`: its "limits" and "min_clearance"), with a note.
+LimitsToMeet comparison_limits(const Options& flags, const nlohmann::json& design, const std::string& where) {
+  const LimitsToMeet given{flags.limits, flags.min_clearance};
+  if (given.any()) return given;
+  const LimitsToMeet recorded = contest_record_limits(design);
+  if (recorded.any())
+    print_notes({"measured against the limits of the contest " + where + " records; give --max-width ... to measure against others"});
+  return recorded;
+}
+
+}  // namespace
+
 int run_compare(const Options& flags) {
   nlohmann::json passed = nlohmann::json::object();
   std::string where;
   Options o = flags;  // with the file's settings under the flags'
-  const DesignValues values = one_design(flags, "compare", where, passed, o.settings);
+  nlohmann::json design;
+  const DesignValues values = one_design(flags, "compare", where, passed, o.settings, &design);
   // A record carries the release its shot maximised (a shot's: Q), which compare takes as the
   // file's setting; say so, as compare's own is the range.
   if (o.settings.quality && !flags.settings.quality && *o.settings.quality != Release::range)
     print_notes({"the release maximises " + release_name(*o.settings.quality) + ", as " + where +
                  " says (a shot's record keeps its own); compare's own is the range: give {{quality}} range for it"});
-  const std::vector<MachineComparison> comparison = compare_design(values, where, o.settings, design_check(o));
+  DesignCheck check = design_check(o);
+  check.limits = comparison_limits(flags, design, source_name(flags.input));
+  const std::vector<MachineComparison> comparison = compare_design(values, where, o.settings, check);
   int code = exit_success, refused = 0;
   for (const MachineComparison& c : comparison)
     if (c.error) ++refused, code = std::max(code, exit_code(Program::verify, c.error->kind()));
@@ -29,14 +48,20 @@ int run_compare(const Options& flags) {
   } else if (o.format == Format::csv) {
     std::vector<std::string> header = verification_csv_header();
     header.push_back("error");
+    if (check.limits.any()) header.push_back("breaks_limits");  // the contest's limits a column breaks, by key
     std::cout << csv_line(header);
     for (const MachineComparison& c : comparison) {
-      std::vector<std::string> cells = c.report ? c.report->csv : std::vector<std::string>(header.size() - 1, "");
+      std::vector<std::string> cells = c.report ? c.report->csv : std::vector<std::string>(verification_csv_header().size(), "");
       if (!c.report) {  // a refused machine: its name in the machine column, the rest empty
         const auto column = std::find(header.begin(), header.end(), machine_key) - header.begin();
         cells[static_cast<std::size_t>(column)] = machine_name(c.machine);
       }
       cells.push_back(c.error ? c.error->message(option_word) : "");
+      if (check.limits.any()) {
+        std::string keys;
+        for (const BrokenLimit& b : c.broken) keys += (keys.empty() ? "" : " ") + std::string(b.key);
+        cells.push_back(c.unmeasured ? "not measured" : keys);
+      }
       std::cout << csv_line(cells);
     }
   } else {

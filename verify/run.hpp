@@ -40,7 +40,8 @@ DesignCheck design_check(const Options& options);
 /// values over its own (each change printed as a note), refusing a file of more designs; or from
 /// the flags. `where` names it in messages, `passed` gets a file's keys that no reader knows,
 /// `settings` the flags' settings over the file's own (a record's assumptions).
-DesignValues one_design(const Options& options, const std::string& subcommand, std::string& where, nlohmann::json& passed, SettingsValues& settings);
+DesignValues one_design(const Options& options, const std::string& subcommand, std::string& where, nlohmann::json& passed, SettingsValues& settings,
+                        nlohmann::json* object = nullptr);
 
 /// Prints what a reader did that the user should know (a flag that replaced a file's value) to
 /// stderr, as notes.

@@ -118,7 +118,8 @@ bool has_engine_flags(const DesignValues& d) {
   return false;
 }
 
-DesignValues one_design(const Options& o, const std::string& subcommand, std::string& where, nlohmann::json& passed, SettingsValues& settings) {
+DesignValues one_design(const Options& o, const std::string& subcommand, std::string& where, nlohmann::json& passed, SettingsValues& settings,
+                        nlohmann::json* object) {
   settings = o.settings;
   if (o.input.empty()) {
     if (!has_engine_flags(o.design))
@@ -129,6 +130,7 @@ DesignValues one_design(const Options& o, const std::string& subcommand, std::st
   const DesignInputs in = read_design_inputs(read_text(o.input, "a design object like {\"L1\": \"6.13m\", ...}, or CSV with one row"), o.input);
   if (!in.single || in.rows.size() != 1) throw Error(ErrorKind::usage, subcommand + " takes one design; " + source_name(o.input) + " holds more");
   where = in.where.front();
+  if (object) *object = in.rows.front().design;
   if (const std::string refusal = row_refusal(in.rows.front(), o.settings); !refusal.empty()) throw Error(ErrorKind::usage, where + ": " + refusal);
   SettingsValues own;
   std::vector<std::string> notes;

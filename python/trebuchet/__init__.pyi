@@ -69,7 +69,9 @@ def sweep(design: Design, vary: str, *, points: int = ..., quality: Quality = ..
           axle_radius: Value = ..., hinge_friction: Value = ..., hinge_radius: Value = ..., trough_friction: Value = ..., rope_diameter: Value = ...,
           rope_mass: Value = ..., pouch_mass: Value = ..., slingMass: Value = ..., pin_friction: Value = ..., rope_cd: Value = ...,
           rope_angle_deg: Value = ..., rope_angle: Value = ..., projectile_diameter: Value = ...) -> Record: ...
-def compare(design: Design, *, quality: Quality = ..., release: Quality = ..., n: float = ..., stepper: str = ..., rtol: float = ...,
+def compare(design: Design, *, max_width: Value = ..., max_height: Value = ..., max_M: Value = ..., max_axle_load: Value = ...,
+            max_acceleration: Value = ..., min_clearance: Value = ..., quality: Quality = ..., release: Quality = ..., n: float = ...,
+            stepper: str = ..., rtol: float = ...,
             atol: float = ..., target_level: Value = ..., range_from: Literal["pivot", "release"] = ..., air: Air = ..., air_density: Value = ...,
             cd: Union[float, str] = ..., projectile: Value = ..., wind: Value = ..., drag_in_sling: bool = ..., g: Value = ...,
             youngs_modulus: Value = ..., wood_density: Value = ..., modulus_of_rupture: Value = ..., rupture: Value = ..., beta2: Value = ...,

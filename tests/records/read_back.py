@@ -55,7 +55,18 @@ if again != shot:  # the whole record, not only its figures
 read_back("fit", run(["fit", *ENGINE, "--R", "500m", "--T", "30kJ"])[0])
 read_back("optimize", run(["optimize", "--R", "300m", "--T", "50kJ", "--range-from", "release"])[0])
 read_back("complete in air", run(["complete", "--Lb", "9.5m", "--M", "3t", "--m", "50kg", "--air", "--target-level", "5m"])[0])
-read_back("contest", run(["contest", "--m", "0.5kg", "--D", "5cm", "--max-width", "3m", "--max-height", "3m", "--max-M", "300kg"])[0])
+contest = run(["contest", "--m", "0.5kg", "--D", "5cm", "--max-width", "3m", "--max-height", "3m", "--max-M", "300kg"])[0]
+read_back("contest", contest)
+# Issue 63: compare reads a contest's record with its limits and measures each column against
+# them. The contest's own engine (the hinged column, first) meets them: the same shot measured
+# by the same rule; every shot column says whether it breaks any.
+with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
+    json.dump(contest, f)
+columns, notes = run(["compare", f.name])
+measured = [c for c in columns if "error" not in c]
+print(f"compare under the contest's limits: {[(c['within_limits'], [b['key'] for b in c['breaks']]) for c in measured]}")
+if not (columns[0].get("within_limits") is True and all("within_limits" in c for c in measured) and "limits of the contest" in notes):
+    failures.append("compare under a contest record's limits")
 calibration = run(["calibrate", "--L1", "2.4m", "--L2", "0.6m", "--L3", "0.5m", "--M", "300kg", "--m", "4kg", "--mb", "30kg", "--axle-radius", "2.5cm", "--hinge-radius", "1.5cm", "--measured", "95m±3m", "--L4", "2.2m", "--target-level", "2m"])[0]
 read_back("calibrate", calibration, lambda r: r["shot"])
 # Issue 62: calibrate over unknowns carries its run (version, engine, settings, unknowns, samples,

@@ -250,6 +250,12 @@ ordered_json compare(const json& request) {
   const DesignValues values = read_design_values(request["design"], "design", &passed, &own);
   DesignCheck check;
   check.material = material_of_request(request, op_shot);
+  // A contest's limits, each column measured against them (contest.hpp).
+  for (std::size_t k = 0; k < contest_limit_count; ++k) {
+    const std::string key = contest_limit_key(static_cast<ContestLimit>(k));
+    check.limits.limits[k] = positive_value(request, key, find_setting(key, req_compare)->dimension);
+  }
+  check.limits.min_clearance = positive_value(request, "min_clearance", UnitDimension::length, true).value_or(0);
   // The request's settings over the design's own.
   ordered_json answer = comparison_json(compare_design(values, "design", overlay(own, settings_values_of(request, req_compare)), check), key_word);
   if (!passed.empty())  // the design's keys no reader knows, as given, in each machine's record

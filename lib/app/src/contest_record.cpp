@@ -37,6 +37,21 @@ std::string gain_words(const std::optional<double>& gain, bool binds, const Cont
 
 }  // namespace
 
+LimitsToMeet contest_record_limits(const nlohmann::json& record) {
+  LimitsToMeet out;
+  if (!record.is_object() || !record.contains("limits") || !record["limits"].is_object()) return out;
+  for (int k = 0; k < contest_limit_count; ++k) {
+    const char* key = contest_limit_key(static_cast<ContestLimit>(k));
+    if (const auto& limits = record["limits"];
+        limits.contains(key) && limits[key].is_object() && limits[key].contains("limit") && limits[key]["limit"].is_number())
+      out.limits[k] = limits[key]["limit"].get<double>();
+  }
+  if (record.contains("min_clearance") && record["min_clearance"].is_object() && record["min_clearance"].contains("least") &&
+      record["min_clearance"]["least"].is_number())
+    out.min_clearance = record["min_clearance"]["least"].get<double>();
+  return out;
+}
+
 nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequest& request, const std::vector<ContestEngine>& front) {
   nlohmann::ordered_json out = verification_json(best.verification);
   out["pin_to_bend_deg"] = best.verification.pin_angle_deg;

@@ -560,6 +560,7 @@ DesignValues read_design_values(const nlohmann::json& given, const std::string& 
                   "pin_to_bend_by_friction",
                   "objective",
                   "shots",
+                  "search",
                   "limits",
                   "measured",
                   "steps",

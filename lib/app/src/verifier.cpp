@@ -216,7 +216,8 @@ std::vector<MachineComparison> compare_machines(const EngineRecord& record, cons
   plain.series_path.clear(), plain.plot_dir.clear();
   std::vector<MachineComparison> out;
   for (MachineKind machine : {MachineKind::hinged, MachineKind::fixed, MachineKind::floating_arm, MachineKind::whipper}) {
-    MachineComparison one{machine, std::nullopt, std::nullopt};
+    MachineComparison one;
+    one.machine = machine;
     EngineRecord built = record;
     built.engine.machine = machine;
     // A box counterweight, given as the machine it was read as, is given again as this one (give_box).
@@ -241,10 +242,37 @@ std::vector<MachineComparison> compare_machines(const EngineRecord& record, cons
     } catch (const Error& e) {
       one.error = e;
     }
+    one.limited = check.limits.any();
+    if (one.report && one.limited) try {
+        one.broken = broken_limits(one.report->engine, one.report->settings, check.limits);
+      } catch (const Error& e) {
+        one.unmeasured = e;
+      }
     out.push_back(std::move(one));
   }
   return out;
 }
+
+namespace {
+
+// What a column measures against the contest's limits: "met", "breaks 2" or "not measured".
+std::string limits_cell(const MachineComparison& c) {
+  if (c.unmeasured) return "not measured";
+  return c.broken.empty() ? "met" : "breaks " + std::to_string(c.broken.size());
+}
+
+// The limits a column breaks, each with its measure and the limit: "{{max_axle_load}} 18 kN over 12 kN".
+std::string broken_words(const std::vector<BrokenLimit>& broken, UnitSystem units) {
+  std::string words;
+  for (const BrokenLimit& b : broken) {
+    const UnitDimension dimension = find_setting(b.key, req_contest)->dimension;
+    words += (words.empty() ? "" : ", ") + std::string("{{") + b.key + "}} " + quantity_text(b.measured, dimension, units, 4) +
+        (std::string(b.key) == "min_clearance" ? " under " : " over ") + quantity_text(b.limit, dimension, units, 4);
+  }
+  return words;
+}
+
+}  // namespace
 
 std::string comparison_table(const std::vector<MachineComparison>& comparison, UnitSystem units,
                              const std::function<std::string(std::string_view)>& word) {
@@ -282,13 +310,25 @@ std::string comparison_table(const std::vector<MachineComparison>& comparison, U
   cell("", label);
   for (const MachineComparison& c : comparison) cell(machine_name(c.machine), width);
   out << "\n";
+  // Under a contest's limits, a column that breaks one is marked where its range is read (x), never a peer of the others.
+  const bool limited = std::any_of(comparison.begin(), comparison.end(), [](const MachineComparison& c) { return c.limited; });
   for (const auto& [name, value] : rows) {
     cell(name, label);
-    for (const MachineComparison& c : comparison) cell(c.report ? value(*c.report) : "refused", width);
+    for (const MachineComparison& c : comparison)
+      cell(c.report ? value(*c.report) + (name == rows.front().first && !c.broken.empty() ? " x" : "") : "refused", width);
+    out << "\n";
+  }
+  if (limited) {
+    cell("the contest's limits", label);
+    for (const MachineComparison& c : comparison) cell(c.report ? limits_cell(c) : "refused", width);
     out << "\n";
   }
   for (const MachineComparison& c : comparison) {
     if (c.error) out << machine_name(c.machine) << ": " << c.error->message(word) << "\n";
+    if (!c.broken.empty())
+      out << machine_name(c.machine)
+          << " (x) breaks the contest's limits, not a peer of the others: " << with_words(broken_words(c.broken, units), word) << "\n";
+    if (c.unmeasured) out << machine_name(c.machine) << ": not measured against the contest's limits: " << c.unmeasured->message(word) << "\n";
     if (c.report)
       for (const std::string& warning : c.report->verification.warnings)
         out << machine_name(c.machine) << " (!): warning: " << with_words(warning, word) << "\n";
@@ -314,8 +354,18 @@ std::vector<MachineComparison> compare_design(DesignValues values, const std::st
 
 nlohmann::ordered_json comparison_json(const std::vector<MachineComparison>& comparison, const std::function<std::string(std::string_view)>& word) {
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  for (const MachineComparison& c : comparison)
-    out.push_back(c.report ? c.report->json : nlohmann::ordered_json{{"machine", machine_name(c.machine)}, {"error", c.error->message(word)}});
+  for (const MachineComparison& c : comparison) {
+    nlohmann::ordered_json one = c.report ? c.report->json
+                                          : nlohmann::ordered_json{{"machine", machine_name(c.machine)}, {"error", c.error->message(word)}};
+    if (c.report && c.limited) {  // under a contest's limits: those it breaks, with what it measures
+      nlohmann::ordered_json broken = nlohmann::ordered_json::array();
+      for (const BrokenLimit& b : c.broken) broken.push_back({{"key", b.key}, {"measured", b.measured}, {"limit", b.limit}});
+      one["within_limits"] = c.broken.empty() && !c.unmeasured;
+      one["breaks"] = broken;
+      if (c.unmeasured) one["limits_not_measured"] = c.unmeasured->message(word);
+    }
+    out.push_back(one);
+  }
   return out;
 }
 

@@ -105,6 +105,25 @@ std::array<double, contest_limit_count> contest_measures(const Engine& engine, c
 /// when no engine meets the limits, naming the fewest limits that cannot be met together.
 ContestEngine contest_optimum(const ContestRequest& request);
 
+/// The limits an engine is held to outside a contest (compare under a contest's limits): the
+/// five, each optional, and the least clearance of the counterweight above the ground [m].
+struct LimitsToMeet {
+  ContestLimits limits{};
+  double min_clearance = 0;
+  bool any() const;  ///< whether any is given
+};
+
+/// One limit an engine breaks: its key ("max_axle_load", ..., "min_clearance"), what the engine
+/// measures and the limit, in the limit's units (contest_measures; the clearance [m]).
+struct BrokenLimit {
+  const char* key;
+  double measured, limit;
+};
+
+/// The limits of `to_meet` that `engine` breaks under `settings`, from one shot
+/// (contest_measures; the clearance: the smaller of Verification::Clearance's two).
+std::vector<BrokenLimit> broken_limits(const Engine& engine, const ShotSettings& settings, const LimitsToMeet& to_meet);
+
 /// The fewest limits of the request that no engine the search finds meets together; empty when
 /// it meets them all.
 std::vector<ContestLimit> conflicting_limits(const ContestRequest& request);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "trebuchet/completion.hpp"
+#include "trebuchet/contest.hpp"
 #include "trebuchet/uncertainty.hpp"
 #include "trebuchet/verification.hpp"
 #include "trebuchet/app/csv.hpp"
@@ -57,6 +58,8 @@ struct DesignCheck {
   std::string plot_dir;  ///< draw the shot into this folder when not empty
   std::vector<std::string> inputs;  ///< the run's input files, which no picture may replace
   UnitSystem units = UnitSystem::si;  ///< of the table
+  /// compare's: a contest's limits each column is measured against (contest_measures)
+  LimitsToMeet limits;
 };
 
 /// One design checked: its record as JSON, (with check.table) as a table and (with check.csv) as CSV cells, and whether a capacity
@@ -81,6 +84,11 @@ struct MachineComparison {
   MachineKind machine = MachineKind::hinged;
   std::optional<DesignReport> report;
   std::optional<Error> error;
+  /// Under a contest's limits (DesignCheck::limits): those the column's engine breaks, or why it
+  /// could not be measured against them.
+  bool limited = false;  ///< whether it was measured against a contest's limits
+  std::vector<BrokenLimit> broken;
+  std::optional<Error> unmeasured;
 };
 
 /// Shoots `record`'s engine as the hinged counterweight, the fixed counterweight, the floating arm
