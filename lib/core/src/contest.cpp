@@ -358,11 +358,13 @@ void check_request(const ContestRequest& r) {
   for (const auto& side : {r.box_width, r.box_height})
     if (side && !(*side > 0 && *side < 1e6)) throw Error(ErrorKind::bad_number, "a side of the counterweight's box must be positive");
   check_shot_settings(r.settings);
-  // The sling's parts as the shot checks them, on the paper's proportions with the heaviest
-  // counterweight allowed (a pouch may not outweigh it).
-  Engine probe = engine_at(r, paper_start(r, 1e300));
-  if (r.limits[mass_limit]) probe.M = *r.limits[mass_limit];
-  check_engine(probe);
+  // The sling's parts, where given, as the shot checks them: on the paper's proportions with the
+  // heaviest counterweight allowed (a pouch may not outweigh it).
+  if (r.rope_mass != 0 || r.pouch_mass != 0 || r.pin_friction != 0) {
+    Engine probe = engine_at(r, paper_start(r, 1e300));
+    if (r.limits[mass_limit]) probe.M = *r.limits[mass_limit];
+    check_engine(probe);
+  }
 }
 
 }  // namespace
