@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "lowest_clearance.hpp"
 #include "trebuchet/angles.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
@@ -18,6 +19,15 @@
 
 namespace trebuchet {
 namespace {
+
+// m over the largest counterweight allowed (at most 0.5), where the request limits it.
+std::optional<double> least_mu(const ContestRequest& r) {
+  if (!r.limits[mass_limit]) return std::nullopt;
+  return std::min(r.projectile_mass / *r.limits[mass_limit], 0.5);
+}
+
+// How many coordinates a candidate's point has: L3/L2 the hinged machine's alone.
+std::size_t point_size(const ContestRequest& r) { return r.machine == MachineKind::hinged ? 5 : 4; }
 
 // A candidate's point: the logs of L1/L2, L4/L1, m/M, L2 [m] and, for the hinged machine, L3/L2.
 using SearchPoint = std::vector<double>;
@@ -45,9 +55,6 @@ SearchPoint point_of(const Engine& e) {
   return x;
 }
 
-// The counterweight's clearance above the ground [m]: the smaller of the geometry's and the shot's.
-double clearance_of(const Verification& v) { return std::min(v.clearance.geometric, v.clearance.in_shot.value_or(v.clearance.geometric)); }
-
 // What one candidate's shot gave: the engine with its measures, or why it could not be shot.
 struct Outcome {
   std::optional<ContestEngine> engine;
@@ -73,7 +80,7 @@ class Shots {
       c.engine = engine_at(request_, x);
       c.measured = contest_measures(c.engine, request_.settings, &c.verification);
       c.objective = request_.efficiency ? c.verification.eps : c.verification.capacity.R;
-      c.clearance = clearance_of(c.verification);
+      c.clearance = lowest_clearance(c.verification);
       // The model stops holding before the release: no engine. A counterweight that strikes the
       // ground (one warning more) is an engine that misses the clearance.
       if (c.verification.warnings.size() > (c.verification.clearance.buildable() ? 0u : 1u))
@@ -153,11 +160,9 @@ struct Search {
   // The bounds of the point: L1/L2 from 1.05 to 60, L4/L1 from 0.05 to 20, M up to its limit
   // (m/M from m over it, or 1e-5, to 0.999), L2 from 1 mm to 1 km, L3/L2 from 0.01 to 20.
   std::pair<SearchPoint, SearchPoint> bounds() const {
-    const double mu_least = request.limits[mass_limit] ? request.projectile_mass / *request.limits[mass_limit] : 1e-5;
-    SearchPoint low{std::log(1.05), std::log(0.05), std::log(std::min(mu_least, 0.5)), std::log(1e-3), std::log(0.01)};
+    SearchPoint low{std::log(1.05), std::log(0.05), std::log(least_mu(request).value_or(1e-5)), std::log(1e-3), std::log(0.01)};
     SearchPoint high{std::log(60.0), std::log(20.0), std::log(0.999), std::log(1e3), std::log(20.0)};
-    const std::size_t n = request.machine == MachineKind::hinged ? 5 : 4;
-    low.resize(n), high.resize(n);
+    low.resize(point_size(request)), high.resize(point_size(request));
     return {low, high};
   }
 
@@ -206,8 +211,8 @@ struct Search {
 // The first point of every search: the paper's proportions (L1/L2 = 4, L4/L1 = 0.9, M = 50 m or
 // its limit, L3/L2 = 0.8) at a size within the box when one is given.
 SearchPoint paper_start(const ContestRequest& r, double box) {
-  const double mu = std::max(0.02, r.limits[mass_limit] ? r.projectile_mass / *r.limits[mass_limit] : 0.0);
-  SearchPoint x{std::log(4.0), std::log(0.9), std::log(std::min(mu, 0.5)), std::log(box < 1e300 ? 0.15 * box / 4 : 1)};
+  const double mu = std::max(0.02, least_mu(r).value_or(0));
+  SearchPoint x{std::log(4.0), std::log(0.9), std::log(mu), std::log(box < 1e300 ? 0.15 * box / 4 : 1)};
   if (r.machine == MachineKind::hinged) x.push_back(std::log(0.8));
   return x;
 }
@@ -217,10 +222,10 @@ SearchPoint paper_start(const ContestRequest& r, double box) {
 // (or 10 to 200 m), L2 about 0.3 of the box over L1/L2 + 1 (within a factor 3), or 0.2 to 5 m
 // without a box, L3/L2 from 0.3 to 1.5.
 std::vector<SearchPoint> sobol_sample(const ContestRequest& r, double box, int count) {
-  const std::size_t n = r.machine == MachineKind::hinged ? 5 : 4;
+  const std::size_t n = point_size(r);
   std::unique_ptr<gsl_qrng, decltype(&gsl_qrng_free)> sequence(gsl_qrng_alloc(gsl_qrng_sobol, static_cast<unsigned>(n)), gsl_qrng_free);
   const auto between = [](double low, double high, double u) { return std::log(low) + u * (std::log(high) - std::log(low)); };
-  const double mu_least = r.limits[mass_limit] ? std::min(r.projectile_mass / *r.limits[mass_limit], 0.5) : 0.005;
+  const double mu_least = least_mu(r).value_or(0.005);
   std::vector<SearchPoint> sample;
   for (int k = 0; k < count; ++k) {
     double u[5] = {};

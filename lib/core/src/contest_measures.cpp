@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "lowest_clearance.hpp"
 #include "solve_1d.hpp"
 #include "trebuchet/contest.hpp"
 #include "trebuchet/machine.hpp"
@@ -85,7 +86,7 @@ std::vector<BrokenLimit> broken_limits(const Engine& engine, const ShotSettings&
   for (int k = 0; k < contest_limit_count; ++k)
     if (to_meet.limits[k] && measured[k] > *to_meet.limits[k] * (1 + 1e-12))  // a part in 1e16 of rounding, as the contest allows
       broken.push_back({contest_limit_key(static_cast<ContestLimit>(k)), measured[k], *to_meet.limits[k]});
-  const double clearance = std::min(v.clearance.geometric, v.clearance.in_shot.value_or(v.clearance.geometric));
+  const double clearance = lowest_clearance(v);
   if (clearance < to_meet.min_clearance) broken.push_back({"min_clearance", clearance, to_meet.min_clearance});
   return broken;
 }
