@@ -451,13 +451,13 @@ ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criter
 }
 
 ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterion, const IntegratorSettings& settings, std::vector<TracePoint>* trace,
-                         double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads, const OtherReleases& others) {
-  return simulate_shot(*machine_of(e), criterion, settings, trace, trace_dt, unreleased, find_loads, others);
+                         double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads, const OtherReleases& others, TraceSpan span) {
+  return simulate_shot(*machine_of(e), criterion, settings, trace, trace_dt, unreleased, find_loads, others, span);
 }
 
 ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
                          std::vector<TracePoint>* trace, double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads,
-                         const OtherReleases& others) {
+                         const OtherReleases& others, TraceSpan span) {
   use_gsl_return_codes();
   const ScaledDesign& e = dynamics.design();
   ShotResult result;
@@ -882,9 +882,9 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   }
   if (trace) {
     record_trace(trace, lifted, phase2, result.t_liftoff, t_release, trace_dt);
-    if (!(trace_dt > 0))  // the continuous record ends on the release already
+    if (!(trace_dt > 0) || span == TraceSpan::to_release)  // the continuous record ends on the release already
       trace->push_back({Phase::lifted, t_release, result.release.state, dynamics.snapshot(Phase::lifted, result.release.state), result.work});
-    trace_released(dynamics, e, settings, result.release.state, result.work, t_release, trace_dt, *trace);
+    if (span == TraceSpan::with_phase_iii) trace_released(dynamics, e, settings, result.release.state, result.work, t_release, trace_dt, *trace);
   }
   if (unreleased) {  // phase II past the release, as far as the search looked
     std::vector<TracePoint> all;

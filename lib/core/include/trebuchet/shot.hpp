@@ -128,16 +128,18 @@ struct TracePoint {
 /// point (ShotResult::lowest_counterweight, which follows phase III) are found: what searches
 /// that only rank engines save. With `others`, the further releases it asks for once the shot's
 /// own is found are read off the same trajectory (ShotResult::others); the shot's own figures do
-/// not change.
+/// not change. With `span` to_release, the trace ends on the release (phase III, which the
+/// pictures show, is neither integrated for it nor traced).
+enum class TraceSpan { with_phase_iii, to_release };
 ShotResult simulate_shot(const ScaledDesign& design, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
                          std::vector<TracePoint>* trace = nullptr, double trace_dt = 0, std::vector<TracePoint>* unreleased = nullptr,
-                         bool find_loads = false, const OtherReleases& others = {});
+                         bool find_loads = false, const OtherReleases& others = {}, TraceSpan span = TraceSpan::with_phase_iii);
 
 /// The same for any machine (machine.hpp): the paper's engine is simulate_shot(Dynamics(design), ...)
 /// once the design has room for its counterweight arm and a beam that can turn, which the
 /// overload above checks first.
 ShotResult simulate_shot(const Machine& machine, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
                          std::vector<TracePoint>* trace = nullptr, double trace_dt = 0, std::vector<TracePoint>* unreleased = nullptr,
-                         bool find_loads = false, const OtherReleases& others = {});
+                         bool find_loads = false, const OtherReleases& others = {}, TraceSpan span = TraceSpan::with_phase_iii);
 
 }  // namespace trebuchet
