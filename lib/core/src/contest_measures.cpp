@@ -37,7 +37,8 @@ std::array<double, contest_limit_count> contest_measures(const Engine& engine, c
   settings.loads = true;
   const ScaledDesign d = shot_design(engine, settings);
   std::vector<TracePoint> trace;
-  const ShotResult shot = simulate_shot(d, release_criterion(engine, settings), settings.integrator, &trace, 0.02, nullptr, true, {}, TraceSpan::to_release);
+  const ShotResult shot = simulate_shot(d, release_criterion(engine, settings), settings.integrator, &trace, 0.02, nullptr, true, {},
+                                        TraceSpan::to_release);
   const Verification v = verification_of(engine, shot, settings.target_level, settings.air, settings.range_from_release);
   // Heights above the base, which the box stands on; x along the ground. Each body's coordinate,
   // and the projectile's acceleration, is sampled every 0.02 (scaled time) and at the release; its
@@ -73,7 +74,8 @@ std::array<double, contest_limit_count> contest_measures(const Engine& engine, c
       y_low = std::min(y_low, low), y_high = std::max(y_high, high);
   }
   if (verification) *verification = v;
-  return {(x_high - x_low) * engine.L2, (y_high - y_low) * engine.L2, engine.M, v.loads[pivot_load].value, sampled_extreme(times, accelerations, 1) * engine.material.g};
+  return {(x_high - x_low) * engine.L2, (y_high - y_low) * engine.L2, engine.M, v.loads[pivot_load].value,
+          sampled_extreme(times, accelerations, 1) * engine.material.g};
 }
 
 bool LimitsToMeet::any() const {

@@ -138,6 +138,10 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
   const std::string bottom = engine.parts.box_height ? "the bottom of the counterweight's box" : "the counterweight's centre";
   out.clearance.geometric = clear(pivot_height(engine) - engine.L2 - engine.L3 - half_box);
   if (shot.lowest_counterweight) out.clearance.in_shot = clear(*shot.lowest_counterweight * L2 - half_box);
+  if (shot.phase_iii_cut)
+    out.notes.push_back("after the release the counterweight was followed only to t = " + format_significant(shot.phase_iii_cut->t * time_unit, 4) +
+                        " s of " + format_significant(2 * out.t_release, 4) + " s (" + shot.phase_iii_cut->why +
+                        "): its clearance in the shot is the lowest up to then");
   // Short enough for a picture's foot (pictures.cpp): the docs say how H follows from L1 and theta_i.
   const std::string fix = std::string(": not buildable as given; ") +
       (engine.machine == MachineKind::whipper ? "raise its frame (H)" : "raise the pivot") + " or shorten L2 + L3" +

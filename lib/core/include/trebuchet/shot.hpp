@@ -6,6 +6,7 @@
 #include <array>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "trebuchet/design.hpp"
@@ -76,6 +77,12 @@ struct OtherRelease {
 /// e.g. the pins a degree or two either side of the optimum's.
 using OtherReleases = std::function<std::vector<GivenRelease>(const ReleasePoint& own)>;
 
+/// Where phase III (after the release) could not be followed further: its scaled time, and why.
+struct PhaseIiiCut {
+  double t = 0;
+  std::string why;
+};
+
 struct ShotResult {
   double t_liftoff = 0;  ///< scaled; the whipper's: when the projectile leaves the arm
   std::optional<double> t_counterweight_free;  ///< the whipper's: when its counterweight leaves the arm, scaled
@@ -102,6 +109,9 @@ struct ShotResult {
   /// shot up to the release and after it for as long again (phase III, or until friction holds
   /// the machine at rest); found with the builder's loads (simulate_shot's find_loads).
   std::optional<double> lowest_counterweight;
+  /// Where phase III stopped short of as long again, and why (simulate_shot): the lowest point
+  /// above is then the lowest up to there.
+  std::optional<PhaseIiiCut> phase_iii_cut;
   /// The further releases asked for (simulate_shot's `others`), in their order: none where a shot
   /// given that release would refuse it (in the trough, never, not forward) or fail.
   std::vector<std::optional<OtherRelease>> others;

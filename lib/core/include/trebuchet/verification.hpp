@@ -129,7 +129,7 @@ struct Verification {
   /// counterweight that would strike the ground (clearance): the engine cannot be built as given.
   std::vector<std::string> warnings;
   /// What makes a figure less certain without making it unphysical: Cd(Re) used beyond the
-  /// Reynolds numbers it was fitted to.
+  /// Reynolds numbers it was fitted to; phase III followed only part of the way (ShotResult::phase_iii_cut).
   std::vector<std::string> notes;
 };
 
