@@ -43,12 +43,13 @@ TEST_CASE("calibration over unknowns finds a known friction, and a thicker pin a
   in.samples = 40;
   const CalibrationRun run = calibrate_over_unknowns(in);
   std::printf("known friction 0.3: fitted percentiles %.4g %.4g %.4g %.4g %.4g, rank correlation with the axle %.3f\n", run.percentiles[0],
-              run.percentiles[1], run.percentiles[2], run.percentiles[3], run.percentiles[4], run.moves[0]);
+              run.percentiles[1], run.percentiles[2], run.percentiles[3], run.percentiles[4], run.moves[0].rho);
   CHECK(run.summary.values.size() == 40u);
   CHECK(std::abs(run.percentiles[2] / 0.3 - 1) < 0.05);
   CHECK(run.percentiles[0] < 0.3);
   CHECK(run.percentiles[4] > 0.3);
-  CHECK(run.moves[0] < -0.95);
+  CHECK(run.moves[0].rho < -0.95);
+  CHECK(run.moves[0].resolved());  // 40 samples: z's 95 % half-width 0.33 leaves -0.95 far from 0
   CHECK(run.share.fraction == 1);  // every fit inside the handbooks' 0.1 to 0.5
   const std::string table = calibration_run_table(run);
   CHECK(table.find("Plausible:") != std::string::npos);

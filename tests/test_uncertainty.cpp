@@ -1,6 +1,7 @@
 // Uncertain inputs and the Monte Carlo run (issue 14, part 3).
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <string>
 #include <utility>
@@ -115,8 +116,45 @@ TEST_CASE("the rank correlation ranks an input that moves R monotonically above 
     const double x = std::uniform_real_distribution<double>(1, 2)(random), y = std::uniform_real_distribution<double>(1, 2)(random);
     outcomes.push_back({{x * x * x, 1, 0.5, 30}, {y, x}, "", ErrorKind::numerical});
   }
-  const std::vector<double> rho = rank_correlations(summarize_samples(outcomes));
+  const std::vector<RankCorrelation> rho = rank_correlations(summarize_samples(outcomes));
   REQUIRE(rho.size() == 2);
-  CHECK(std::abs(rho[0]) < 0.1);
-  CHECK(rho[1] == Approx(1).margin(1e-12));
+  CHECK(std::abs(rho[0].rho) < 0.1);
+  CHECK(rho[1].rho == Approx(1).margin(1e-12));
+  CHECK(rho[1].resolved());
+}
+
+TEST_CASE("a rank correlation is resolved only where its 95 % interval leaves out 0", "[uncertainty]") {
+  // Inputs drawn apart from R: their rho is noise, near normal in Fisher's z with the standard
+  // deviation sqrt(1.06/(n - 3)). Over 200 such inputs of 100 samples each, about 5 % are
+  // resolved by chance (binomial: 10 expected, 2 to 20 with more than 99.8 % probability); and
+  // the interval holds the true 0 in the others. An input that moves R weakly (R = y + 4 x, y
+  // spread 10 times as wide) is resolved at 2000 samples, where rho's noise is 0.02.
+  std::mt19937_64 random(11);
+  const auto uniform = [&] { return std::uniform_real_distribution<double>(0, 1)(random); };
+  std::vector<SampleOutcome> outcomes;
+  for (int i = 0; i < 100; ++i) {
+    std::vector<double> drawn;
+    for (int k = 0; k < 200; ++k) drawn.push_back(uniform());
+    outcomes.push_back({{uniform(), 1, 0.5, 30}, drawn, "", ErrorKind::numerical});
+  }
+  int by_chance = 0;
+  for (const RankCorrelation& c : rank_correlations(summarize_samples(outcomes))) {
+    CHECK(c.low < c.rho);
+    CHECK(c.rho < c.high);
+    // Near 0 the interval is +-tanh(1.96 sqrt(1.06/97)) = +-0.20; it narrows as rho nears +-1.
+    if (std::abs(c.rho) < 0.05) CHECK(c.high - c.low == Approx(2 * std::tanh(1.96 * std::sqrt(1.06 / 97))).epsilon(0.01));
+    by_chance += c.resolved();
+  }
+  std::printf("resolved by chance: %d of 200 inputs that do not move R (about 10 expected)\n", by_chance);
+  CHECK(by_chance >= 2);
+  CHECK(by_chance <= 20);
+  outcomes.clear();
+  for (int i = 0; i < 2000; ++i) {
+    const double x = uniform(), y = 40 * uniform();
+    outcomes.push_back({{y + 4 * x, 1, 0.5, 30}, {x}, "", ErrorKind::numerical});
+  }
+  const RankCorrelation weak = rank_correlations(summarize_samples(outcomes)).front();
+  std::printf("a weak input at 2000 samples: rho %.3f, 95 %% interval %.3f to %.3f\n", weak.rho, weak.low, weak.high);
+  CHECK(weak.resolved());
+  CHECK(weak.rho > 0.03);  // its own rho is near 0.1 (the share of R's variance x explains, 1/101, rooted), the noise 0.023
 }

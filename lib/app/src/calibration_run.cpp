@@ -167,12 +167,9 @@ std::string calibration_run_table(const CalibrationRun& run) {
   }
   for (const SampleFailures& f : s.failures) out << "  " << f.count << (f.count == 1 ? " draw: " : " draws: ") << f.first << "\n";
   if (!run.moves.empty()) {
-    std::vector<std::size_t> order(run.moves.size());
-    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return std::abs(run.moves[a]) > std::abs(run.moves[b]); });
-    out << "what moves the fit most (Spearman's rank correlation with the fitted friction):";
-    for (std::size_t k : order) out << (k == order.front() ? " " : ", ") << run.unknowns[k].name << " " << format_significant(run.moves[k], 2);
-    out << "\n";
+    std::vector<std::string> names;
+    for (const UncertainInput& unknown : run.unknowns) names.push_back(unknown.name);
+    out << moves_most_text("the fit", "the fitted friction", names, run.moves, s.values.size()) << "\n";
   }
   out << verdict(run) << "\n";
   return out.str();
@@ -189,11 +186,15 @@ nlohmann::ordered_json calibration_run_json(const CalibrationRun& run) {
   const std::vector<SpreadInput>& spreads = run.given.request.spreads;  // the unknowns, then the measured range
   for (std::size_t k = 0; k < run.unknowns.size(); ++k) {
     const UncertainInput& u = run.unknowns[k];
-    unknowns.push_back({{"name", k < spreads.size() ? spread_key(spreads[k]) : std::string("measured")},
-                        {"distribution", u.spread.kind == Spread::Kind::uniform ? "uniform" : "normal"},
-                        {"a", u.spread.a},
-                        {"b", u.spread.b},
-                        {"rank_correlation", k < run.moves.size() ? nlohmann::ordered_json(run.moves[k]) : nlohmann::ordered_json()}});
+    unknowns.push_back(
+        {{"name", k < spreads.size() ? spread_key(spreads[k]) : std::string("measured")},
+         {"distribution", u.spread.kind == Spread::Kind::uniform ? "uniform" : "normal"},
+         {"a", u.spread.a},
+         {"b", u.spread.b},
+         {"rank_correlation", k < run.moves.size() ? nlohmann::ordered_json(run.moves[k].rho) : nlohmann::ordered_json()},
+         {"rank_correlation_interval_95",
+          k < run.moves.size() ? nlohmann::ordered_json{run.moves[k].low, run.moves[k].high} : nlohmann::ordered_json()},
+         {"rank_correlation_resolved", k < run.moves.size() ? nlohmann::ordered_json(run.moves[k].resolved()) : nlohmann::ordered_json()}});
   }
   out["unknowns"] = unknowns;
   out["fitted_draws"] = s.values.size();

@@ -58,6 +58,36 @@ std::string describe_assumptions(const Engine& engine, const ShotSettings& setti
       " m/s2, " + describe_release(settings);
 }
 
+namespace {
+
+// A correlation with its sign: "+0.98", "-0.31".
+std::string signed_correlation(double rho) { return (rho >= 0 ? "+" : "") + format_significant(rho, 2); }
+
+}  // namespace
+
+std::vector<std::size_t> strongest_first(const std::vector<RankCorrelation>& correlations) {
+  std::vector<std::size_t> order(correlations.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return std::abs(correlations[a].rho) > std::abs(correlations[b].rho); });
+  return order;
+}
+
+std::string moves_most_text(const std::string& subject, const std::string& against, const std::vector<std::string>& names,
+                            const std::vector<RankCorrelation>& correlations, std::size_t samples) {
+  std::vector<std::string> resolved, not_resolved;
+  for (std::size_t k : strongest_first(correlations)) {
+    const RankCorrelation& c = correlations[k];
+    (c.resolved() ? resolved : not_resolved)
+        .push_back(names[k] + " " + signed_correlation(c.rho) + " (" + signed_correlation(c.low) + " to " + signed_correlation(c.high) + ")");
+  }
+  std::string out = "what moves " + subject + " most (Spearman's rank correlation with " + against + ", its 95 % interval): ";
+  const std::string at = " at " + std::to_string(samples) + " samples";
+  if (resolved.empty()) return out + "none resolved" + at + ": " + join(not_resolved, ", ");
+  out += join(resolved, ", ");
+  return not_resolved.empty() ? out : out + "; not resolved" + at + ": " + join(not_resolved, ", ");
+}
+
 std::string design_table(const OptimalEngine& design, UnitSystem units) {
   require_finite(design);
   const Engine& e = design.engine;

@@ -411,14 +411,6 @@ std::string describe_uncertain(const UncertainInput& u) {
 
 namespace {
 
-// The inputs' places, the strongest rank correlation with R first (ties in the run's order).
-std::vector<std::size_t> by_influence(const std::vector<double>& rho) {
-  std::vector<std::size_t> order(rho.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return std::abs(rho[a]) > std::abs(rho[b]); });
-  return order;
-}
-
 // The median of input k over the samples that worked (0 when none did).
 double median_drawn(const MonteCarloSummary& summary, std::size_t k) {
   std::vector<double> all;
@@ -489,11 +481,13 @@ nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
                     {"median_reaching", medians},
                     {"median_all", medians_all}};
   }
-  const std::vector<double> rho = rank_correlations(summary);
+  const std::vector<RankCorrelation> rho = rank_correlations(summary);
   if (!rho.empty()) {
     nlohmann::ordered_json ranking = nlohmann::ordered_json::array();
-    for (std::size_t k : by_influence(rho)) ranking.push_back({{"input", r.inputs[k].name}, {"spearman_R", rho[k]}});
-    out["sensitivity"] = {{"method", "Spearman's rank correlation of each drawn input with R, over the samples that worked"}, {"ranking", ranking}};
+    for (std::size_t k : strongest_first(rho))
+      ranking.push_back(
+          {{"input", r.inputs[k].name}, {"spearman_R", rho[k].rho}, {"interval_95", {rho[k].low, rho[k].high}}, {"resolved", rho[k].resolved()}});
+    out["sensitivity"] = {{"method", rank_correlation_method}, {"ranking", ranking}};
   }
   nlohmann::ordered_json draws = nlohmann::ordered_json::object();
   for (std::size_t k = 0; k < r.inputs.size(); ++k) {
@@ -611,11 +605,11 @@ std::string monte_carlo_table(const MonteCarloReport& r) {
       out << "  the samples that reach it, at their median: " << join(medians, ", ") << "\n";
     }
   }
-  const std::vector<double> rho = rank_correlations(summary);
+  const std::vector<RankCorrelation> rho = rank_correlations(summary);
   if (!rho.empty()) {
-    std::vector<std::string> ranked;
-    for (std::size_t k : by_influence(rho)) ranked.push_back(r.inputs[k].name + " " + (rho[k] >= 0 ? "+" : "") + format_significant(rho[k], 2));
-    out << "what moves R most (Spearman's rank correlation with R): " << join(ranked, ", ") << "\n";
+    std::vector<std::string> names;
+    for (const UncertainInput& input : r.inputs) names.push_back(input.name);
+    out << moves_most_text("R", "R", names, rho, summary.values.size()) << "\n";
   }
   return out.str();
 }

@@ -110,16 +110,23 @@ ClaimAssessment assess_claim(const MonteCarloSummary& summary, double claim) {
   return out;
 }
 
-std::vector<double> rank_correlations(const MonteCarloSummary& summary) {
+std::vector<RankCorrelation> rank_correlations(const MonteCarloSummary& summary) {
   const std::size_t n = summary.values.size();
   if (n < 3 || summary.drawn.front().empty()) return {};
-  std::vector<double> R(n), work(2 * n), out;
+  std::vector<double> R(n), work(2 * n);
+  std::vector<RankCorrelation> out;
   for (std::size_t i = 0; i < n; ++i) R[i] = summary.values[i][0];
+  // 1.96 standard deviations of z either side: 95 %. With 3 samples the interval is all of -1..1.
+  const double half_width = n > 3 ? 1.96 * std::sqrt(1.06 / static_cast<double>(n - 3)) : 1e300;
   for (std::size_t k = 0; k < summary.drawn.front().size(); ++k) {
     std::vector<double> input(n);
     for (std::size_t i = 0; i < n; ++i) input[i] = summary.drawn[i][k];
-    const double rho = gsl_stats_spearman(input.data(), 1, R.data(), 1, n, work.data());
-    out.push_back(std::isfinite(rho) ? std::clamp(rho, -1.0, 1.0) : 0);  // a constant column has none; round-off can pass +-1
+    const double value = gsl_stats_spearman(input.data(), 1, R.data(), 1, n, work.data());
+    RankCorrelation c;
+    c.rho = std::isfinite(value) ? std::clamp(value, -1.0, 1.0) : 0;  // a constant column has none; round-off can pass +-1
+    const double z = std::atanh(std::clamp(c.rho, -1 + 1e-12, 1 - 1e-12));  // finite at +-1 (14.2), where a few samples still leave doubt
+    c.low = std::tanh(z - half_width), c.high = std::tanh(z + half_width);
+    out.push_back(c);
   }
   return out;
 }

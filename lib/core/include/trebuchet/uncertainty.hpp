@@ -83,11 +83,22 @@ struct ClaimAssessment {
 };
 ClaimAssessment assess_claim(const MonteCarloSummary& summary, double claim);
 
+/// How much a drawn input moves the first of the sample values, with the 95 % interval of that
+/// correlation over runs of as many samples: Fisher's z, atanh rho, is near normal with the
+/// variance 1.06/(n - 3) for Spearman's rho (Fieller, Hartley and Pearson 1957). Resolved where
+/// the interval leaves 0 out: the run's samples tell its sign; otherwise another seed may rank
+/// it elsewhere.
+struct RankCorrelation {
+  double rho = 0, low = -1, high = 1;
+  bool resolved() const { return low > 0 || high < 0; }
+};
+
 /// How much each drawn input moves the first of the sample values (R in a shot's run, the fitted
 /// friction in a calibration's): Spearman's rank correlation of the input with it over the
 /// samples that worked (GSL's gsl_stats_spearman), which a monotone effect of any shape shows
-/// and the other inputs' independent draws do not bias. By input, in the run's order; 0 for an
-/// input or an R that does not vary. Empty with fewer than 3 samples that worked.
-std::vector<double> rank_correlations(const MonteCarloSummary& summary);
+/// and the other inputs' independent draws do not bias, with its interval. By input, in the
+/// run's order; 0 for an input or an R that does not vary. Empty with fewer than 3 samples that
+/// worked.
+std::vector<RankCorrelation> rank_correlations(const MonteCarloSummary& summary);
 
 }  // namespace trebuchet

@@ -45,7 +45,7 @@ struct CalibrationRun {
   std::array<double, 5> percentiles{};  ///< 5, 25, 50, 75 and 95 % of the fitted friction
   int plausible = 0;  ///< draws fitted inside the plausible range
   Share share;  ///< of all draws
-  std::vector<double> moves;  ///< Spearman's rank correlation of each unknown with the fit
+  std::vector<RankCorrelation> moves;  ///< Spearman's rank correlation of each unknown with the fit, with its interval
   double seconds = 0;
   int threads = 1;
 };

@@ -15,9 +15,25 @@
 #include "trebuchet/verification.hpp"
 #include "trebuchet/app/units.hpp"
 #include "trebuchet/shot.hpp"
+#include "trebuchet/uncertainty.hpp"
 #include "trebuchet/verification.hpp"
 
 namespace trebuchet {
+
+/// The places of a run's rank correlations (rank_correlations), the strongest first (ties in the run's order).
+std::vector<std::size_t> strongest_first(const std::vector<RankCorrelation>& correlations);
+
+/// How the records' rank correlations are found, as they say it.
+inline constexpr const char* rank_correlation_method =
+    "Spearman's rank correlation of each drawn input with the result, over the samples that worked; its 95 % interval by Fisher's z "
+    "(variance 1.06/(n - 3)); resolved where the interval leaves 0 out";
+
+/// What moves `subject` most, from a run's rank correlations with `against` (rank_correlations,
+/// by input as `names`), over the `samples` that worked: those the samples resolve, the strongest
+/// first, each with its 95 % interval; then the rest, named as not resolved at that many samples.
+/// One line, without its end.
+std::string moves_most_text(const std::string& subject, const std::string& against, const std::vector<std::string>& names,
+                            const std::vector<RankCorrelation>& correlations, std::size_t samples);
 
 /// The calculator's design. Throws Error(numerical) if a number is not finite.
 std::string design_table(const OptimalEngine& design, UnitSystem units = UnitSystem::si);
