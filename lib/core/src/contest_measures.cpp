@@ -53,7 +53,6 @@ std::array<double, contest_limit_count> contest_measures(const Engine& engine, c
   const Vec2 half_box{engine.parts.box_width.value_or(0) / 2 / engine.L2, engine.parts.box_height.value_or(0) / 2 / engine.L2};  // scaled
   std::vector<double> accelerations;  // scaled, in g
   for (const TracePoint& p : trace) {
-    if (p.phase == Phase::released) continue;
     if (!times.empty() && !(p.t > times.back())) continue;  // a phase's end, sampled twice
     const Snapshot& s = p.snapshot;
     times.push_back(p.t);

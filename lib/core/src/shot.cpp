@@ -884,7 +884,7 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   }
   if (trace) {
     record_trace(trace, lifted, phase2, result.t_liftoff, t_release, trace_dt);
-    if (!(trace_dt > 0) || span == TraceSpan::to_release)  // the continuous record ends on the release already
+    if (!(trace_dt > 0))  // the continuous record ends on the release already
       trace->push_back({Phase::lifted, t_release, result.release.state, dynamics.snapshot(Phase::lifted, result.release.state), result.work});
     if (span == TraceSpan::with_phase_iii) trace_released(dynamics, e, settings, result.release.state, result.work, t_release, trace_dt, *trace);
   }
