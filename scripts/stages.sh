@@ -3,6 +3,10 @@
 #                         system) of everything it started
 #   run_ctest BUILD ARGS  ctest over BUILD, then its ten slowest tests (wall seconds)
 #   stages_table          every stage's times, and the whole run's
+#   beside NAME NICE SCRIPT [ARGS]  starts `bash SCRIPT ARGS` in the background at niceness NICE,
+#                         in its own process group, its output kept aside
+#   joined NAME           waits for it, prints its output, and fails where it failed
+# A run that ends before it joins them (a failed stage) stops what still runs beside it.
 # The caller sets start=$SECONDS first.
 stage_rows=()
 
@@ -54,4 +58,28 @@ stages_table() {
   echo "== done at $((SECONDS - start)) s =="
   echo "  wall      CPU  stage"
   printf '%s\n' "${stage_rows[@]}"
+}
+
+declare -A beside_pid beside_log
+stop_beside() {
+  local name
+  for name in "${!beside_pid[@]}"; do kill -- -"${beside_pid[$name]}" 2>/dev/null || true; done
+}
+beside() {
+  local name=$1 niceness=$2
+  shift 2
+  beside_log[$name]=$(mktemp)
+  # Started with &, setsid is no group's leader, so it makes its own session without a fork: $! is
+  # the group to stop.
+  setsid nice -n "$niceness" bash "$@" >"${beside_log[$name]}" 2>&1 &
+  beside_pid[$name]=$!
+  trap stop_beside EXIT
+}
+joined() {
+  local name=$1 status=0
+  wait "${beside_pid[$name]}" || status=$?
+  cat "${beside_log[$name]}"
+  rm -f "${beside_log[$name]}"
+  unset "beside_pid[$name]" "beside_log[$name]"
+  return "$status"
 }

@@ -1,16 +1,19 @@
 #!/usr/bin/env bash
 # The README's test command, and CI's (.ci/run): installs what is missing, then
-#   1. the Release build with the benchmarks, warnings as errors, the browser page (WebAssembly,
-#      scripts/build-web.sh), and every tier of the suite (docs/testing.md) but the hostile
-#      corpus and the command-line fuzzer, which stage 2 runs;
+#   1. the Release build with the benchmarks, warnings as errors, and beside it the browser page
+#      (WebAssembly, scripts/build-web.sh); then every tier of the suite (docs/testing.md) but the
+#      hostile corpus and the command-line fuzzer, which stage 2 runs;
 #   2. one clang build under AddressSanitizer and UndefinedBehaviorSanitizer, instrumented for
-#      libFuzzer: the five fuzz targets run at once for a minute each, then the tiers that run
-#      the code on inputs (unit, cli, robustness; every 10th reference design, the contests of the
-#      label heavy in part) run again under the sanitizers, where any memory error or undefined
-#      behaviour aborts the test that hit it; the corpus and the command-line fuzzer run here only.
+#      libFuzzer (scripts/build-sanitize.sh), begun beside the suite at a lower priority: it fills
+#      the cores where the suite's tests wait on LibreOffice, Chromium or gnuplot. The five fuzz
+#      targets run at once for a minute each, then the tiers that run the code on inputs (unit,
+#      cli, robustness; every 10th reference design, the contests of the label heavy in part) run
+#      again under the sanitizers, where any memory error or undefined behaviour aborts the test
+#      that hit it; the corpus and the command-line fuzzer run here only.
 # First the formatters (scripts/lint.sh). Every build compiles through ccache (scripts/ccache.sh).
-# Each stage prints its wall and CPU time, each ctest run its slowest tests, and the end a table
-# of the stages. TREBUCHET_FUZZ_SECONDS changes the fuzzing time.
+# Each stage prints its wall and CPU time (a stage that joins work begun beside an earlier one
+# counts that work's CPU), each ctest run its slowest tests, and the end a table of the stages.
+# TREBUCHET_FUZZ_SECONDS changes the fuzzing time.
 # The quick tier for work in progress is scripts/quick.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,22 +29,21 @@ release_build() {
     -DTREBUCHET_PYTHON=ON -DPython3_EXECUTABLE=/usr/bin/python3 >/dev/null
   cmake --build build -j"$jobs"
 }
-page_build() { bash scripts/build-web.sh build-web; }
+release_build_and_page() {
+  beside page 0 scripts/build-web.sh build-web
+  release_build
+  joined page
+}
 every_tier() {
   # The hostile-input corpus and the command-line fuzzer run once, in the sanitizer stage: there
   # every case is checked for its exit code, its message and no nan or inf as here, and for
   # memory errors and undefined behaviour besides. One test more than the cores: many here wait
   # on LibreOffice, Chromium or gnuplot (464 s of CPU in 291 s on two cores at -j2), and a third
   # fills those waits.
+  beside sanitizer 10 scripts/build-sanitize.sh
   run_ctest build --output-on-failure -j"$((jobs + 1))" --timeout 600 -E '^(robustness_corpus_[0-9]+of[0-9]+|cli\.fuzz)$'
 }
-sanitizer_build() {
-  # Line tables only: a sanitizer's report still names file and line, and the build skips the
-  # rest of the debug information (issue 33: the largest stage).
-  CXX=clang++-14 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
-    -DTREBUCHET_SANITIZE=ON -DTREBUCHET_FUZZ=ON >/dev/null
-  cmake --build build-sanitize -j"$jobs" --target unit-tests trebuchet-calc trebuchet-verify fuzz-units fuzz-design fuzz-batch fuzz-table fuzz-part
-}
+sanitizer_build() { joined sanitizer; }
 fuzzing() { bash tests/fuzz/run.sh build-sanitize "${TREBUCHET_FUZZ_SECONDS:-60}"; }
 sanitized_tiers() {
   # TREBUCHET_REFERENCE_STRIDE and TREBUCHET_HEAVY_STRIDE: every 10th reference design and every
@@ -53,10 +55,9 @@ sanitized_tiers() {
 stage "installing what is missing" installing
 source scripts/ccache.sh  # after the install, which brings ccache to a new machine
 stage "formatters: clang-format and ESLint" formatters
-stage "Release build" release_build
-stage "browser page build (WebAssembly)" page_build
-stage "the suite, every tier" every_tier
-stage "sanitizer and fuzzer build (clang)" sanitizer_build
+stage "Release build, the browser page (WebAssembly) beside it" release_build_and_page
+stage "the suite, every tier; the sanitizer build begun beside it" every_tier
+stage "sanitizer and fuzzer build (clang), the rest of it" sanitizer_build
 stage "fuzzing: the five targets at once, ${TREBUCHET_FUZZ_SECONDS:-60} s each" fuzzing
 stage "unit, cli and robustness tiers under the sanitizers" sanitized_tiers
 stages_table
