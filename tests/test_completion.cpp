@@ -50,6 +50,22 @@ TEST_CASE("complete keeps every attested value and verifies the engine", "[compl
     kept(c.engine.mb, 2000, "mb");
     CHECK(c.chosen == std::vector<std::string>{"L4"});
   }
+  SECTION("the counterweight's drop fixes L2 (issue 64: a pumpkin team's ten-foot drop)") {
+    // With a massless beam Delta U is the counterweight's fall alone (eq:DU): M g drop.
+    CompletionRequest r;
+    r.attested.drop = 3.048, r.attested.M = 998, r.attested.m = 4.1, r.attested.mb = 0;
+    const Completion c = complete_engine(r);
+    kept(potential_energy_drop(c.engine) / (998 * c.engine.material.g), 3.048, "drop");
+    kept(c.engine.L2, 3.048 / (1 + std::cos(M_PI / 6)), "L2");
+    CHECK(c.attested == std::vector<std::string>{"M", "m", "mb", "drop"});
+    CHECK(c.chosen == std::vector<std::string>{"L1", "L4"});
+    // With the beam's length and an angle: L1 = Lb - L2.
+    r.attested.Lb = 12, r.attested.theta_i_deg = 40;
+    const Completion with_beam = complete_engine(r);
+    kept(potential_energy_drop(with_beam.engine) / (998 * c.engine.material.g), 3.048, "drop");
+    kept(with_beam.engine.L1 + with_beam.engine.L2, 12, "Lb");
+    CHECK(with_beam.chosen == std::vector<std::string>{"L4"});
+  }
   SECTION("a beam mass and diameter fix the beam's length (eq:BeamMass)") {
     CompletionRequest r;  // 470 kg of wood of 700 kg/m3, 0.3 m across: Lb = 470/(700 pi/4 0.3^2) = 9.4986 m
     r.attested.mb = 470, r.attested.D = 0.3, r.attested.M = 3000, r.attested.m = 50;
@@ -109,4 +125,10 @@ TEST_CASE("conflicting or unbounded subsets are named errors", "[complete]") {
   a = Attested{};
   a.L1 = 5, a.H = 6, a.M = 3000, a.m = 50;
   CHECK_THAT(message(a), Catch::Contains("the pivot height H = 6 m is not below the long arm's length"));
+  a = Attested{};
+  a.L2 = 2, a.drop = 3.048, a.M = 3000, a.m = 50;  // 3.048/(1 + cos 30 deg) = 1.63342 m
+  CHECK_THAT(message(a), Catch::Contains("drop/(1 + cos theta_i) = 1.63342 m with the standard theta_i = 30 deg, but L2 = 2 m"));
+  a = Attested{};
+  a.Lb = 1.5, a.drop = 3.048, a.M = 3000, a.m = 50;
+  CHECK_THAT(message(a), Catch::Contains("Lb = 1.5 m is not longer than drop/(1 + cos theta_i) = 1.63342 m"));
 }

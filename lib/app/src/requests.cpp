@@ -41,7 +41,7 @@ CompletionRequest completion_request(const DesignValues& v, const ShotSettings& 
   CompletionRequest request;
   Attested& a = request.attested;
   a.Lb = v.Lb, a.L1 = v.L1, a.L2 = v.L2, a.H = v.H, a.L4 = v.L4, a.M = v.M, a.m = v.m, a.mb = v.mb, a.D = v.D, a.l = v.l;
-  a.theta_i_deg = v.theta_i_deg, a.F = v.F;
+  a.theta_i_deg = v.theta_i_deg, a.F = v.F, a.drop = v.drop;
   request.material = material_of(v, Material{});
   request.settings = settings;
   request.parts = independent_parts(v);

@@ -138,7 +138,8 @@ Completion complete_engine(const CompletionRequest& request) {
                                     {a.D, "D"},
                                     {a.l, "l"},
                                     {a.theta_i_deg, "theta_i"},
-                                    {a.F, "F"}}) {
+                                    {a.F, "F"},
+                                    {a.drop, "drop"}}) {
     if (!value) continue;
     const std::string key(name);
     if (key == "mb" && !(*value >= 0)) throw Error(ErrorKind::bad_number, "{{mb}} = " + format_significant(*value, 6) + " must not be negative");
@@ -209,6 +210,19 @@ Completion complete_engine(const CompletionRequest& request) {
     L1.add(*a.H / std::cos(radians(p.theta_i_deg)),
            "H / cos(theta_i) = " + value_text(*a.H / std::cos(radians(p.theta_i_deg)), "m") +
                (a.theta_i_deg ? "" : " with the standard theta_i = 30 deg"));
+  // The hinged counterweight hangs from the short arm's end, which falls L2 (1 + cos theta_i)
+  // to its lowest point (eq:DU); the drop gives L2, and with the beam's length L1.
+  if (a.drop) {
+    const double fall = 1 + std::cos(radians(p.theta_i_deg));  // per L2, scaled
+    L2.add(
+        *a.drop / fall,
+        "drop/(1 + cos theta_i) = " + value_text(*a.drop / fall, "m") + (a.theta_i_deg || theta_from_H ? "" : " with the standard theta_i = 30 deg"));
+    if (beam_length && !L1.value) {
+      if (!(*beam_length > *L2.value))
+        throw Error(ErrorKind::usage, "the attested values conflict: " + beam_source + " is not longer than " + L2.source);
+      L1.add(*beam_length - *L2.value, "Lb - L2 = " + value_text(*beam_length - *L2.value, "m") + " (L2 from " + L2.source + ")");
+    }
+  }
   if (a.l && beam_length) L1.add(*beam_length * *a.l / (*a.l + 1), "Lb l/(l + 1) = " + value_text(*beam_length * *a.l / (*a.l + 1), "m"));
   if (a.L2) L2.add(*a.L2, "L2 = " + value_text(*a.L2, "m"));
   if (a.l && L1.value) L2.add(*L1.value / *a.l, "L1/l = " + value_text(*L1.value / *a.l, "m"));
@@ -238,9 +252,9 @@ Completion complete_engine(const CompletionRequest& request) {
                               : "D and mb (from beta2 = " + format_fraction(p.material.beta2) + " and the wood, eq:bend_L2 and eq:BeamMass)");
   // Q does not fix the size: without a length it grows as the engine shrinks, and without M or
   // m as the counterweight grows against the beam.
-  if (!(beam_length || a.L1 || a.L2 || a.H || a.L4) || !(a.M || a.m))
+  if (!(beam_length || a.L1 || a.L2 || a.H || a.L4 || a.drop) || !(a.M || a.m))
     throw Error(ErrorKind::usage,
-                "complete needs an attested length (Lb, L1, L2, H or L4, or mb with D) and the counterweight M or the stone m: "
+                "complete needs an attested length (Lb, L1, L2, H, L4 or the drop, or mb with D) and the counterweight M or the stone m: "
                 "without them the best engine has no size, e.g. {{Lb}} 9.5m {{m}} 50kg");
   const ReleaseCriterion& criterion = request.settings.criterion;
   if (criterion.release == Release::range && (!a.M || !a.m))

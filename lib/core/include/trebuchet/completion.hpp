@@ -23,6 +23,9 @@ struct Attested {
   std::optional<double> l;  ///< beam ratio L1/L2, scaled
   std::optional<double> theta_i_deg;  ///< [deg]
   std::optional<double> F;  ///< arm fraction (L2 + L3)/H, scaled
+  /// The counterweight's drop: the fall of its centre from rest to its lowest point, the short
+  /// arm straight down, L2 (1 + cos theta_i) (eq:DU) [m]. Sources give it, not L2.
+  std::optional<double> drop;
 };
 
 struct CompletionRequest {
