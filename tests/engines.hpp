@@ -55,7 +55,7 @@ inline Engine pytrebuchet_default() {
   e.machine = MachineKind::whipper;
   e.L1 = 4, e.L2 = 2, e.L3 = 4, e.L4 = 4, e.M = 100, e.m = 3, e.mb = 10;
   e.theta_i_deg = whipper_theta_i_deg;
-  e.whipper.H = 5, e.whipper.rope_angle_deg = 10, e.whipper.projectile_diameter = 0.2;
+  e.whipper.H = 5, e.whipper.rope_angle_deg = 10, e.projectile_diameter = 0.2;
   return e;
 }
 

@@ -143,6 +143,31 @@ TEST_CASE("Denny's engine in air: the paper's 380 m and Denny's own range", "[ai
   CHECK(std::abs(denny_range.capacity.R - 366) <= 1.5);
 }
 
+// Issue 64: a projectile's diameter gives its density with its mass, for any machine: the shot
+// through air is the one at the density m/(pi/6 d^3), to the last bit of the density.
+// A pumpkin-chunk team's 4.1 kg pumpkin, 0.2 m across: 978.8 kg/m3.
+TEST_CASE("a projectile's diameter sets its density in air on every machine", "[air]") {
+  Engine engine = testing::denny_standard();
+  engine.m = 4.1, engine.projectile_diameter = 0.2;
+  ShotSettings in_air;
+  in_air.criterion.release = Release::range;
+  in_air.air = Air{};
+  const ShotSettings as_shot = settings_for(engine, in_air);
+  CHECK(as_shot.air->projectile_density == Approx(4.1 / (M_PI / 6 * 0.008)).epsilon(1e-15));
+  ShotSettings by_density = in_air;
+  by_density.air->projectile_density = as_shot.air->projectile_density;
+  Engine without = engine;
+  without.projectile_diameter.reset();
+  const double by_size = verify_engine(engine, in_air).capacity.R, same = verify_engine(without, by_density).capacity.R;
+  std::printf("a 4.1 kg ball 0.2 m across from Denny's engine: R = %.6f m; at its density %.6f m\n", by_size, same);
+  CHECK(by_size == same);
+  // Its density given too is a conflict; in vacuum the size has no use on the paper's engine.
+  CHECK_THROWS_WITH(verify_engine(engine, by_density), Catch::Contains("both size the projectile"));
+  ShotSettings vacuum = in_air;
+  vacuum.air.reset();
+  CHECK_THROWS_WITH(verify_engine(engine, vacuum), Catch::Contains("sizes the projectile for its drag in air"));
+}
+
 // Morrison's Cd(Re) was fitted up to Re = 1e6. Denny's 100 kg stone leaves at 64 m/s, a
 // sphere of 0.42 m: Re = 1.2 * 0.42 * 64 / 1.81e-5 = 1.8e6, beyond it, and the shot says so in a
 // note (not a warning: the shot is physical, its drag is extrapolated). A fixed Cd needs no

@@ -69,10 +69,10 @@ Subcommands declare_subcommands(CLI::App& app, Options& o) {
                                  "the best engine of a --machine for a projectile --m within a contest's limits (--max-width, --max-height, "
                                  "--max-M, --max-axle-load, --max-acceleration), with the pin to bend, and the Pareto front of range "
                                  "against the axle's load (--pareto)");
-  // The contest's projectile, beam and box, each positive, the beam's angle at rest, and the
+  // The contest's projectile (its mass, and its size for the air), beam and box, each positive, the beam's angle at rest, and the
   // sling's parts (0 or more: the contest checks them as the shot does).
   for (auto member : {&DesignValues::m, &DesignValues::D, &DesignValues::box_width, &DesignValues::box_height, &DesignValues::theta_i_deg,
-                      &DesignValues::rope_mass, &DesignValues::pouch_mass, &DesignValues::pin_friction})
+                      &DesignValues::rope_mass, &DesignValues::pouch_mass, &DesignValues::pin_friction, &DesignValues::projectile_diameter})
     parsed_option(
         s.contest, field_of(member).flag,
         [&o, member](const std::string& text) {

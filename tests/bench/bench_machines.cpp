@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
   Engine whipper;
   whipper.machine = MachineKind::whipper;
   whipper.L1 = 4, whipper.L2 = 2, whipper.L3 = 4, whipper.L4 = 4, whipper.M = 100, whipper.m = 3, whipper.mb = 10;
-  whipper.theta_i_deg = whipper_theta_i_deg, whipper.whipper.H = 5, whipper.whipper.projectile_diameter = 0.2;
+  whipper.theta_i_deg = whipper_theta_i_deg, whipper.whipper.H = 5, whipper.projectile_diameter = 0.2;
   Engine hung = whipper;
   hung.machine = MachineKind::hinged, hung.theta_i_deg = standard_theta_i_deg;
   const double whip = median_seconds([&] { verify_engine(whipper, settings); }, budget);

@@ -687,7 +687,6 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
   if (whipper) {  // its frame and where its bodies rest (whipper.hpp)
     e.whipper.H = required(v, &V::H, where, "the whipper's pivot height over the base (its frame)");
     e.whipper.rope_angle_deg = v.rope_angle_deg.value_or(e.whipper.rope_angle_deg);
-    e.whipper.projectile_diameter = v.projectile_diameter;
   } else {
     // A pivot height without theta_i sets it, the tip on the ground: H = L1 cos(theta_i), as
     // VirtualTrebuchet and pytrebuchet give an engine.
@@ -700,12 +699,12 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
                         " m, so that its tip rests on the ground; give a lower H or a longer L1");
       e.theta_i_deg = degrees(std::acos(*v.H / e.L1));
     }
-    for (const auto member : {&V::rope_angle_deg, &V::projectile_diameter})
-      if (v.*member)
-        throw Error(ErrorKind::usage,
-                    engine_key_name(where, field_of(member).key) +
-                        " is the whipper's start; leave it out, or give the machine as whipper (docs/machines.md)");
+    if (v.rope_angle_deg)
+      throw Error(
+          ErrorKind::usage,
+          engine_key_name(where, "rope_angle_deg") + " is the whipper's start; leave it out, or give the machine as whipper (docs/machines.md)");
   }
+  e.projectile_diameter = v.projectile_diameter;
   // D = 0 is how the outputs write "not given" (they read back); below 0 it is a mistake.
   if (v.D && !(*v.D >= 0))
     throw Error(ErrorKind::bad_number,

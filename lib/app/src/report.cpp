@@ -53,7 +53,7 @@ std::string describe_release(const ShotSettings& settings) {
 }
 
 std::string describe_assumptions(const Engine& engine, const ShotSettings& settings) {
-  const std::optional<Air>& air = settings_for(engine, settings).air;  // the whipper's ball sets the projectile's density
+  const std::optional<Air>& air = settings_for(engine, settings).air;  // a ball of given size sets the projectile's density
   return (air ? describe_air(*air, engine.m) : std::string("vacuum (no air drag)")) + ", g = " + format_significant(engine.material.g, 4) +
       " m/s2, " + describe_release(settings);
 }
@@ -153,7 +153,8 @@ std::string whipper_start(const Engine& engine, UnitSystem units) {
   const Engine::WhipperStart& w = engine.whipper;
   return " (the long arm " + format_significant(-90 - engine.theta_i_deg, 4) + " deg above the horizontal, forward; the rope " +
       format_significant(w.rope_angle_deg, 4) + " deg off it" +
-      (w.projectile_diameter ? "; the ball " + quantity_text(*w.projectile_diameter, UnitDimension::length, units, 4) + " across" : std::string()) +
+      (engine.projectile_diameter ? "; the ball " + quantity_text(*engine.projectile_diameter, UnitDimension::length, units, 4) + " across"
+                                  : std::string()) +
       ")";
 }
 

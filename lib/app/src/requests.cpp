@@ -34,6 +34,7 @@ ContestRequest contest_request(const DesignValues& v, const ShotSettings& settin
   request.settings.criterion.release = efficiency ? Release::efficiency : Release::range;  // released where the objective peaks
   request.box_width = v.box_width, request.box_height = v.box_height;
   request.rope_mass = v.rope_mass.value_or(0), request.pouch_mass = v.pouch_mass.value_or(0), request.pin_friction = v.pin_friction.value_or(0);
+  request.projectile_diameter = v.projectile_diameter;
   return request;
 }
 
@@ -45,6 +46,7 @@ CompletionRequest completion_request(const DesignValues& v, const ShotSettings& 
   request.material = material_of(v, Material{});
   request.settings = settings;
   request.parts = independent_parts(v);
+  request.projectile_diameter = v.projectile_diameter;
   return request;
 }
 
@@ -161,14 +163,20 @@ Verification sample_verification(const MonteCarloRequest& sample) {
 }
 
 std::string describe_monte_carlo_air(const MonteCarloRequest& request) {
-  const ShotSettings settings = shot_settings(with_draws(request, [](const Spread& s) { return s.a; }).settings);
+  const MonteCarloRequest first = with_draws(request, [](const Spread& s) { return s.a; });
+  ShotSettings settings = shot_settings(first.settings);
   if (!settings.air) return "vacuum";
   AirDrawn drawn;
   for (const SpreadInput& spread : request.spreads) {
     drawn.cd = drawn.cd || spread.setting == &SettingsValues::cd;
     drawn.density = drawn.density || spread.setting == &SettingsValues::air_density;
     drawn.wind = drawn.wind || spread.setting == &SettingsValues::wind;
+    // A given diameter makes the sphere's density follow its mass and its diameter.
+    drawn.projectile = drawn.projectile ||
+        (first.values.projectile_diameter && (spread.value == &DesignValues::projectile_diameter || spread.value == &DesignValues::m));
   }
+  const std::optional<double>& d = first.values.projectile_diameter;
+  if (d && first.values.m) settings.air->projectile_density = sphere_density(*first.values.m, *d);
   return describe_air(*settings.air, 0, drawn);
 }
 

@@ -98,10 +98,8 @@ void write_engine(nlohmann::ordered_json& out, const Engine& engine) {
   if (p.pouch_mass > 0) put(&V::pouch_mass, p.pouch_mass);
   if (p.pin_friction > 0) put(&V::pin_friction, p.pin_friction);
   if (engine.material.modulus_of_rupture != Material{}.modulus_of_rupture) put(&V::modulus_of_rupture, engine.material.modulus_of_rupture);
-  if (engine.machine == MachineKind::whipper) {  // its start besides theta_i and H (engine_fields)
-    put(&V::rope_angle_deg, engine.whipper.rope_angle_deg);
-    if (engine.whipper.projectile_diameter) put(&V::projectile_diameter, *engine.whipper.projectile_diameter);
-  }
+  if (engine.machine == MachineKind::whipper) put(&V::rope_angle_deg, engine.whipper.rope_angle_deg);  // its start besides theta_i and H
+  if (engine.projectile_diameter) put(&V::projectile_diameter, *engine.projectile_diameter);
 }
 
 // The parts as built, as write_engine gives them (empty where the engine has no such part).

@@ -43,7 +43,7 @@ nlohmann::ordered_json settings_json(const ShotSettings& settings, const Engine*
 }
 
 nlohmann::ordered_json assumptions_json(const Engine& engine, const ShotSettings& given) {
-  return settings_json(settings_for(engine, given), &engine);  // the whipper's ball sets the projectile's density
+  return settings_json(settings_for(engine, given), &engine);  // a ball of given size sets the projectile's density
 }
 
 namespace {

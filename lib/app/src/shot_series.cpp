@@ -33,7 +33,7 @@ Moments moments_of(const std::vector<TracePoint>& trace) {
 
 ShotSeries shot_series(const Engine& engine, const ShotSettings& settings, const Verification& verification) {
   ShotSeries series;
-  const ShotSettings as_shot = settings_for(engine, settings);  // as verify_engine shoots it (the whipper's ball in air)
+  const ShotSettings as_shot = settings_for(engine, settings);  // as verify_engine shoots it (a ball of given size in air)
   const ScaledDesign d = shot_design(engine, as_shot);
   const double g = engine.material.g;
   const double time_unit = std::sqrt(engine.L2 / g);  // section 3 [s]

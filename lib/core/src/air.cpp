@@ -68,6 +68,8 @@ const ProjectileMaterial* find_projectile_material(const std::string& name) {
 
 double sphere_diameter(double mass, double density) { return std::cbrt(6 * mass / (M_PI * density)); }
 
+double sphere_density(double mass, double diameter) { return mass / (M_PI / 6 * diameter * diameter * diameter); }
+
 double drag_coefficient_of(double re) {
   if (!(re > 0)) return 0;
   // F. A. Morrison, An Introduction to Fluid Mechanics (Cambridge University Press, 2013), as
@@ -179,8 +181,12 @@ std::string describe_air(const Air& air, double mass, AirDrawn drawn) {
       : air.drag_coefficient ? "Cd " + format_significant(*air.drag_coefficient, 3)
                              : std::string("Cd(Re) of a smooth sphere");
   text += drawn.density ? std::string(", air density drawn") : ", air " + format_significant(air.density, 3) + " kg/m3";
-  text += ", a sphere of " + format_significant(air.projectile_density, 5) + " kg/m3, ";
-  if (mass > 0) text += "d = " + format_significant(sphere_diameter(mass, air.projectile_density), 3) + " m, ";
+  if (drawn.projectile) {
+    text += ", a sphere of the given diameter, its density drawn with it, ";
+  } else {
+    text += ", a sphere of " + format_significant(air.projectile_density, 5) + " kg/m3, ";
+    if (mass > 0) text += "d = " + format_significant(sphere_diameter(mass, air.projectile_density), 3) + " m, ";
+  }
   text += drawn.wind  ? std::string("wind drawn")
       : air.wind == 0 ? std::string("no wind")
                       : "wind " + format_significant(air.wind, 3) + " m/s toward the target";

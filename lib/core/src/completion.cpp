@@ -38,6 +38,7 @@ struct Plan {
   std::optional<double> L1, L2, Lb, L4, M, m;
   std::optional<double> l;  // attested beam ratio, when neither section is known
   std::optional<double> mb, D;  // attested beam
+  std::optional<double> projectile_diameter;
   Material material;
   EngineParts parts;
 };
@@ -63,6 +64,7 @@ Engine build(const Plan& p, const std::vector<double>& x) {
   e.theta_i_deg = p.theta_i_deg;
   e.material = p.material;
   e.parts = p.parts;
+  e.projectile_diameter = p.projectile_diameter;
   if (p.L1 && p.L2) {
     e.L1 = *p.L1, e.L2 = *p.L2;
   } else if (p.L1) {
@@ -160,6 +162,7 @@ Completion complete_engine(const CompletionRequest& request) {
   Plan p;
   p.material = request.material;
   p.parts = request.parts;
+  p.projectile_diameter = request.projectile_diameter;
   if (p.parts.beam_cm || p.parts.D_tip)
     throw Error(ErrorKind::usage,
                 "complete builds a uniform beam from the attested values; a beam as built ({{beam_cm}}, {{D_tip}}) is checked "
@@ -290,11 +293,16 @@ Completion complete_engine(const CompletionRequest& request) {
   const int blind_trials = 4 * static_cast<int>(x0.size() + 1);
   std::vector<std::vector<double>> tried;
   bool blind_in_air = false;
+  // The engine as a shot in `settings` takes it: a projectile's size matters only in air.
+  const auto shot_as = [](Engine e, const ShotSettings& settings) {
+    if (!settings.air) e.projectile_diameter.reset();
+    return e;
+  };
   const auto works_in_vacuum = [&](const std::vector<double>& x) {
     ShotSettings vacuum = search;
     vacuum.air.reset(), vacuum.drag_in_sling = false;
     try {
-      return verify_engine(build(p, x), vacuum).warnings.empty();
+      return verify_engine(shot_as(build(p, x), vacuum), vacuum).warnings.empty();
     } catch (const Error&) {
       return false;
     }
@@ -309,7 +317,7 @@ Completion complete_engine(const CompletionRequest& request) {
     ++out.simulations;
     try {
       const Engine e = build(p, x);
-      const Verification v = verify_engine(e, search);  // checks the engine first
+      const Verification v = verify_engine(shot_as(e, search), search);  // checks the engine first
       if (!v.warnings.empty()) throw Error(ErrorKind::out_of_range, v.warnings.front());
       const double objective = objective_of(v, criterion);
       if (objective > best) best = objective, out.engine = e, out.verification = v;
@@ -343,7 +351,7 @@ Completion complete_engine(const CompletionRequest& request) {
   // The calculator's optimum for the same capacity, in vacuum at the base's level (section 6).
   ShotSettings paper;
   paper.integrator = request.settings.integrator;
-  const Verification vacuum = verify_engine(out.engine, paper);
+  const Verification vacuum = verify_engine(shot_as(out.engine, paper), paper);
   DesignRequest same;
   same.first = {Quantity::R, vacuum.capacity.R};
   same.second = {Quantity::T, vacuum.capacity.T};

@@ -46,6 +46,7 @@ Engine engine_at(const ContestRequest& r, const SearchPoint& x) {
   e.mb = r.beam_mass_per_length * (e.L1 + e.L2);
   if (r.box_width && r.box_height) give_box(e, *r.box_width, *r.box_height);
   e.parts.rope_mass = r.rope_mass, e.parts.pouch_mass = r.pouch_mass, e.parts.pin_friction = r.pin_friction;
+  e.projectile_diameter = r.projectile_diameter;
   return e;
 }
 
@@ -363,12 +364,13 @@ void check_request(const ContestRequest& r) {
   for (const auto& side : {r.box_width, r.box_height})
     if (side && !(*side > 0 && *side < 1e6)) throw Error(ErrorKind::bad_number, "a side of the counterweight's box must be positive");
   check_shot_settings(r.settings);
-  // The sling's parts, where given, as the shot checks them: on the paper's proportions with the
-  // heaviest counterweight allowed (a pouch may not outweigh it).
-  if (r.rope_mass != 0 || r.pouch_mass != 0 || r.pin_friction != 0) {
+  // The sling's parts and the ball's size, where given, as the shot checks them: on the paper's
+  // proportions with the heaviest counterweight allowed (a pouch may not outweigh it).
+  if (r.rope_mass != 0 || r.pouch_mass != 0 || r.pin_friction != 0 || r.projectile_diameter) {
     Engine probe = engine_at(r, paper_start(r, 1e300));
     if (r.limits[mass_limit]) probe.M = *r.limits[mass_limit];
     check_engine(probe);
+    settings_for(probe, r.settings);  // a size beside a density, or with no air to act in
   }
 }
 

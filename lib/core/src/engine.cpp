@@ -73,7 +73,7 @@ ScaledDesign scaled_design(const Engine& engine) {  // eq:Design
     const Engine::WhipperStart& w = engine.whipper;
     out.psi_i_deg = engine.theta_i_deg - w.rope_angle_deg;
     out.H = w.H / engine.L2;
-    out.projectile_radius = w.projectile_diameter.value_or(sphere_diameter(engine.m, Air{}.projectile_density)) / 2 / engine.L2;
+    out.projectile_radius = engine.projectile_diameter.value_or(sphere_diameter(engine.m, Air{}.projectile_density)) / 2 / engine.L2;
   }
   const EngineParts& p = engine.parts;
   const double L2 = engine.L2, M = engine.M, inertia_unit = M * L2 * L2;  // section 3
@@ -116,7 +116,7 @@ Engine engine_of(const ScaledDesign& design, double L2, const Material& material
     e.psi_i_deg = 0;
     e.whipper.H = design.H.value_or(0) * L2;
     e.whipper.rope_angle_deg = design.theta_i_deg - design.psi_i_deg;
-    e.whipper.projectile_diameter = 2 * design.projectile_radius * L2;
+    e.projectile_diameter = 2 * design.projectile_radius * L2;
   }
   return e;
 }
@@ -256,7 +256,6 @@ void check_whipper(const Engine::WhipperStart& w) {
     throw Error(ErrorKind::bad_number,
                 "{{rope_angle_deg}} = " + format_significant(w.rope_angle_deg, 6) +
                     ": the counterweight's rope lies off the arm by above 0 to below 90 deg, on its upper side; pytrebuchet's is 10");
-  if (w.projectile_diameter) check_ordinary(*w.projectile_diameter, 1e-6, 1e6, "projectile_diameter", "m", "projectile's diameter");
 }
 
 }  // namespace
@@ -266,9 +265,10 @@ void check_engine(const Engine& e) {
     if (!(value > 0))
       throw Error(ErrorKind::bad_number, "{{" + std::string(key) + "}} = " + format_significant(value, 6) + ": the " + what + " must be positive");
   };
-  if (e.machine == MachineKind::whipper && e.whipper.projectile_diameter && !(*e.whipper.projectile_diameter < e.L1))
+  if (e.projectile_diameter) check_ordinary(*e.projectile_diameter, 1e-6, 1e6, "projectile_diameter", "m", "projectile's diameter");
+  if (e.machine == MachineKind::whipper && e.projectile_diameter && !(*e.projectile_diameter < e.L1))
     throw Error(ErrorKind::bad_number,
-                "{{projectile_diameter}} = " + format_significant(*e.whipper.projectile_diameter, 6) +
+                "{{projectile_diameter}} = " + format_significant(*e.projectile_diameter, 6) +
                     " m: the whipper's ball rests on its long arm, L1 = " + format_significant(e.L1, 6) + " m; give a ball smaller than the arm");
   if (e.machine == MachineKind::whipper) {
     if (!(e.theta_i_deg > -180 && e.theta_i_deg <= -90))
@@ -366,8 +366,8 @@ Engine resized(const Engine& engine, const SizeFactors& f) {
   out.M *= f.mass;
   out.m *= f.mass;
   out.mb *= f.mass;
-  out.whipper.H *= f.length;  // the whipper's frame and ball keep their shape
-  if (out.whipper.projectile_diameter) *out.whipper.projectile_diameter *= f.length;
+  out.whipper.H *= f.length;  // the whipper's frame and the ball keep their shape
+  if (out.projectile_diameter) *out.projectile_diameter *= f.length;
   return out;
 }
 

@@ -192,7 +192,7 @@ ReleaseCriterion release_criterion(const Engine& engine, const ShotSettings& set
 ScaledDesign shot_design(const Engine& engine, const ShotSettings& settings) {
   ScaledDesign design = scaled_design(engine);
   // The whipper's ball, not given, is a sphere of the air's projectile density, as its drag's.
-  if (engine.machine == MachineKind::whipper && !engine.whipper.projectile_diameter && settings.air)
+  if (engine.machine == MachineKind::whipper && !engine.projectile_diameter && settings.air)
     design.projectile_radius = sphere_diameter(engine.m, settings.air->projectile_density) / 2 / engine.L2;
   if (settings.air && settings.drag_in_sling) {
     design.parts.drag = scaled(drag_of(*settings.air, engine.m), engine.L2, engine.material.g);
@@ -204,11 +204,17 @@ ScaledDesign shot_design(const Engine& engine, const ShotSettings& settings) {
 
 ShotSettings settings_for(const Engine& engine, const ShotSettings& settings) {
   ShotSettings out = settings;
-  const std::optional<double>& d = engine.whipper.projectile_diameter;
-  if (!(out.air && engine.machine == MachineKind::whipper && d)) return out;
+  const std::optional<double>& d = engine.projectile_diameter;
+  if (!d) return out;
+  // In vacuum only the whipper's ball has a use for its size: where it rests on the arm.
+  if (!out.air && engine.machine != MachineKind::whipper)
+    throw Error(ErrorKind::usage,
+                "{{projectile_diameter}} = " + format_significant(*d, 6) +
+                    " m sizes the projectile for its drag in air; add {{air}} to fly through it (vacuum is the default), or leave it out");
+  if (!out.air) return out;
   if (out.air->projectile_density != Air{}.projectile_density)
-    throw Error(ErrorKind::usage, "{{projectile}} and {{projectile_diameter}} both size the whipper's ball (with its mass m); give one of them");
-  out.air->projectile_density = engine.m / (M_PI / 6 * *d * *d * *d);  // m over its volume
+    throw Error(ErrorKind::usage, "{{projectile}} and {{projectile_diameter}} both size the projectile (with its mass m); give one of them");
+  out.air->projectile_density = sphere_density(engine.m, *d);
   return out;
 }
 

@@ -44,6 +44,9 @@ void check_air(const Air& air);
 /// The diameter of a sphere of `mass` [kg] and `density` [kg/m^3] [m].
 double sphere_diameter(double mass, double density);
 
+/// The density of a sphere of `mass` [kg] and `diameter` [m]: the mass over its volume [kg/m^3].
+double sphere_density(double mass, double diameter);
+
 /// The drag on a projectile of `mass` [kg] in SI units.
 Drag drag_of(const Air& air, double mass);
 
@@ -70,9 +73,10 @@ std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Dr
 /// "air (Cd 0.47, air 1.2 kg/m3, a sphere of 2500 kg/m3, d = 0.43 m, no wind)" for outputs; the
 /// diameter only for a mass > 0.
 /// Which of an air's values a Monte Carlo run draws from a spread: described as drawn, not as the
-/// value of its first sample.
+/// value of its first sample. `projectile`: the sphere's density, drawn as its given diameter or
+/// its mass is.
 struct AirDrawn {
-  bool cd = false, density = false, wind = false;
+  bool cd = false, density = false, wind = false, projectile = false;
 };
 std::string describe_air(const Air& air, double mass, AirDrawn drawn = {});
 

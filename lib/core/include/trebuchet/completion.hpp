@@ -36,6 +36,8 @@ struct CompletionRequest {
   /// the counterweight's own inertia, the rope. A beam as built is refused: complete builds a
   /// uniform beam from the attested values (a beam as built is checked by a shot).
   EngineParts parts{};
+  /// The projectile's diameter [m], where known: with m its density in air (Engine::projectile_diameter).
+  std::optional<double> projectile_diameter;
 };
 
 struct Completion {

@@ -44,6 +44,8 @@ struct ContestRequest {
   /// rope's and the pouch's mass [kg], and mu of the loop on the release pin (scaled), which
   /// gives the pin to bend with the engine.
   double rope_mass = 0, pouch_mass = 0, pin_friction = 0;
+  /// The ball's diameter [m], where given: with its mass, its density in air (Engine::projectile_diameter).
+  std::optional<double> projectile_diameter;
   /// Whether to find what relaxing each limit the engine stands at gains: a search each, most of
   /// a contest's cost. Without, the same engine, its gains and binds left empty.
   bool gains = true;

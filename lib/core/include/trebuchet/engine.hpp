@@ -75,15 +75,16 @@ struct Engine {
   /// The machine it is built as; for the fixed counterweight and the floating arm L3 places the
   /// counterweight's centre beyond the short arm's end, or below its pin, and may be 0 (design.hpp).
   MachineKind machine = MachineKind::hinged;
+  /// The projectile's diameter [m]: with m, its density, and so its drag in air
+  /// (verification.hpp, settings_for); the whipper's ball also rests on its arm by it. None: a
+  /// sphere of the air's projectile density, or the whipper's of stone in vacuum.
+  std::optional<double> projectile_diameter;
   /// The whipper's start (whipper.hpp) besides theta_i (-90 deg less its long arm's angle above
   /// the horizontal, forward: pytrebuchet's 60 deg is -150): its pivot's height over the base
-  /// [m], its counterweight's rope's angle off the arm [deg] (pytrebuchet's 10), and the ball's
-  /// diameter, which sets where it rests on the arm, and its drag in air [m] (none: a stone
-  /// sphere of mass m, or of the air's projectile density in a shot through air).
+  /// [m] and its counterweight's rope's angle off the arm [deg] (pytrebuchet's 10).
   struct WhipperStart {
     double H = 0;
     double rope_angle_deg = 10;
-    std::optional<double> projectile_diameter;
   };
   WhipperStart whipper{};
 };
