@@ -162,6 +162,36 @@ TEST_CASE("api::monte_carlo with a claim: its odds agree with the samples' own r
   CHECK(answer["sensitivity"]["ranking"][0]["spearman_R"].get<double>() > 0.9);
 }
 
+// Issue 64: a pumpkin team's claim of 1895 ft from a ten-foot drop of 998 kg, a 4.1 kg pumpkin
+// 0.2 m across, its beam's mass unknown. The verdict turns on the drag coefficient, left at its
+// default: a smooth sphere past its drag crisis reaches the claim, a rough ball does not.
+TEST_CASE("api::monte_carlo with a claim says what decides it and reads back as its run", "[api]") {
+  const json request = {{"attested", {{"drop", "10ft"}, {"M", "998kg"}, {"m", "4.1kg"}, {"mb", "30kg..100kg"}, {"projectile_diameter", "0.2m"}}},
+                        {"air", true},
+                        {"release", "range"},
+                        {"claim", "1895ft"},
+                        {"samples", 8}};
+  const auto answer = api::monte_carlo(request);
+  const auto& decided = answer["claim"]["decided_by"];
+  INFO(decided.dump());
+  // No engine of this energy throws beyond Siano's black box, 2 Delta U/(m g), even in vacuum.
+  CHECK(decided["farthest"].get<double>() < decided["energy_bound"].get<double>());
+  CHECK(decided["energy_bound"].get<double>() > 577.6);
+  // The density follows from the diameter, so only Cd and the wind are left at their defaults.
+  REQUIRE(decided["defaults"].size() == 2);
+  const auto& cd = decided["defaults"][0];
+  CHECK(cd["input"] == "cd");
+  CHECK(cd["R_low"].get<double>() >= 577.6);  // Cd(Re) falls to about 0.1 past the drag crisis
+  CHECK(cd["R_high"].get<double>() < 577.6);  // Cd 0.5
+  CHECK(cd["decides"] == true);
+  const auto& wind = decided["defaults"][1];
+  CHECK(wind["input"] == "wind");
+  CHECK(wind["R_low"].get<double>() < wind["R_high"].get<double>());  // against the shot, then with it
+  CHECK(wind["decides"] == false);
+  // The report read back is the same run, the values left at their defaults too.
+  CHECK(api::monte_carlo({{"attested", answer}})["claim"].dump() == answer["claim"].dump());
+}
+
 TEST_CASE("api::complete applies the request's modulus of rupture, as the program's --rupture", "[api]") {
   const json attested = {{"Lb", "9.5m"}, {"M", "3t"}, {"m", "50kg"}};
   const auto standard = api::complete({{"attested", attested}});

@@ -126,7 +126,8 @@ int run_monte_carlo(const Options& o, bool complete, const nlohmann::json* desig
                                 seconds,
                                 thread_count(o.threads, static_cast<std::size_t>(summary.samples)),
                                 request.settings.claim,
-                                monte_carlo_request_json(request, samples, seed)};
+                                monte_carlo_request_json(request, samples, seed),
+                                request.settings.claim ? std::optional(claim_context(request, *request.settings.claim, option_word)) : std::nullopt};
   if (o.format == Format::json) {
     std::cout << pretty_json(monte_carlo_json(report));
   } else if (o.format == Format::csv) {

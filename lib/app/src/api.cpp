@@ -380,7 +380,8 @@ ordered_json monte_carlo(const json& request) {
                                 0,
                                 1,
                                 claim,
-                                monte_carlo_request_json(run, samples, seed)};
+                                monte_carlo_request_json(run, samples, seed),
+                                claim ? std::optional(claim_context(run, *claim, key_word)) : std::nullopt};
   ordered_json answer = monte_carlo_json(report);
   answer.erase("wall_time_s");  // a time is the caller's to measure; the report is the same on any machine
   // Every sample's drawn inputs and outcomes as the programs' --draws writes them, to 17 digits: the run's own numbers.

@@ -126,6 +126,13 @@ nlohmann::ordered_json monte_carlo_request_json(const MonteCarloRequest& request
   nlohmann::ordered_json settings = settings_json(shot_settings(first.settings), nullptr);
   // The whipper's ball gives the projectile's density by its diameter; the air says none of its own.
   if (first.values.projectile_diameter && settings["air"].is_object()) settings["air"].erase("projectile_density");
+  // A claim's verdict names the air's values left at their defaults (claim_context): they stay
+  // unwritten, so that the run read back leaves them at their defaults too.
+  if (request.settings.claim && settings["air"].is_object()) {
+    if (!first.settings.cd && !first.settings.cd_of_reynolds) settings["air"].erase("drag_coefficient");
+    if (!first.settings.projectile) settings["air"].erase("projectile_density");
+    if (!first.settings.wind) settings["air"].erase("wind");
+  }
   // A spread setting's text in its place: under its key (the target level) or in the air.
   for (const SpreadInput& spread : request.spreads) {
     if (!spread.setting) continue;
@@ -240,6 +247,86 @@ SampleOutcome sample_outcome(const MonteCarloRequest& request, std::mt19937_64& 
     outcome.failure_kind = e.kind();
   }
   return outcome;
+}
+
+}  // namespace trebuchet
+
+namespace trebuchet {
+namespace {
+
+// The spans of the air's values left at their defaults (docs/verifier.md, "What decides a
+// claim"): Cd from a smooth sphere's Cd(Re), which falls to about 0.1 past its drag crisis, to
+// 0.5, a rough ball below it; the density from fired clay (1800 kg/m3) to basalt (3000 kg/m3);
+// the wind a moderate breeze (Beaufort 4, 5 m/s) against the shot or with it.
+constexpr double densest_stone = 3000, lightest_shot = 1800, breeze = 5, roughest_cd = 0.5;
+
+ClaimSpan span_of(const Engine& engine, const ShotSettings& settings, std::string key, std::string what, std::string low_text,
+                  const std::function<void(ShotSettings&)>& low, std::string high_text, const std::function<void(ShotSettings&)>& high) {
+  const auto range_at = [&](const std::function<void(ShotSettings&)>& end) -> std::optional<double> {
+    ShotSettings at = settings;
+    end(at);
+    try {
+      return verify_engine(engine, at).capacity.R;
+    } catch (const Error&) {
+      return std::nullopt;  // the span's end is shown as not shot
+    }
+  };
+  return {std::move(key), std::move(what), std::move(low_text), std::move(high_text), range_at(low), range_at(high), false};
+}
+
+}  // namespace
+
+namespace {
+
+ClaimContext middle_context(const MonteCarloRequest& request, double claim) {
+  const MonteCarloRequest middle = with_draws(request, [](const Spread& s) { return s.kind == Spread::Kind::uniform ? (s.a + s.b) / 2 : s.a; });
+  ShotSettings settings = shot_settings(middle.settings);
+  settings.loads = false;
+  Engine engine;
+  if (middle.completes) {
+    engine = complete_engine(completion_request(middle.values, settings)).engine;  // as the run's samples complete it
+  } else {
+    engine = engine_record(middle.values, middle.where).engine;
+    settings.release_at = release_of(middle.values, middle.where);  // a given release stays the engine's
+  }
+  settings.criterion.release = Release::range;
+  ClaimContext c;
+  c.energy_bound = 2 * potential_energy_drop(engine) / (engine.m * engine.material.g);  // Siano's black box
+  c.farthest = verify_engine(engine, settings).capacity.R;
+  const SettingsValues& given = middle.settings;  // a spread's setting holds its middle here
+  if (!settings.air) {
+    c.spans.push_back(span_of(
+        engine, settings, "air", "the air (vacuum is the default)", "vacuum", [](ShotSettings&) {},
+        "air at its defaults (Cd 0.47, a stone sphere, no wind)", [](ShotSettings& s) { s.air = Air{}; }));
+  } else {
+    if (!given.cd && !given.cd_of_reynolds)
+      c.spans.push_back(span_of(
+          engine, settings, "cd", "the drag coefficient Cd", "Cd(Re) of a smooth sphere", [](ShotSettings& s) { s.air->drag_coefficient.reset(); },
+          format_significant(roughest_cd, 2), [](ShotSettings& s) { s.air->drag_coefficient = roughest_cd; }));
+    if (!given.projectile && !middle.values.projectile_diameter)
+      c.spans.push_back(span_of(
+          engine, settings, "projectile", "the projectile's density", "fired clay, 1800 kg/m3",
+          [](ShotSettings& s) { s.air->projectile_density = lightest_shot; }, "basalt, 3000 kg/m3",
+          [](ShotSettings& s) { s.air->projectile_density = densest_stone; }));
+    if (!given.wind)
+      c.spans.push_back(span_of(
+          engine, settings, "wind", "the wind", "5 m/s against the shot", [](ShotSettings& s) { s.air->wind = -breeze; }, "5 m/s with it",
+          [](ShotSettings& s) { s.air->wind = breeze; }));
+  }
+  for (ClaimSpan& span : c.spans) span.decides = span.R_low && span.R_high && (*span.R_low >= claim) != (*span.R_high >= claim);
+  return c;
+}
+
+}  // namespace
+
+ClaimContext claim_context(const MonteCarloRequest& request, double claim, const std::function<std::string(std::string_view)>& word) {
+  try {
+    return middle_context(request, claim);
+  } catch (const Error& e) {
+    ClaimContext c;
+    c.unavailable = e.message(word);
+    return c;
+  }
 }
 
 }  // namespace trebuchet

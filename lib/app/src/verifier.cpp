@@ -438,6 +438,47 @@ std::string draw_column(const UncertainInput& input) {
 
 }  // namespace
 
+namespace {
+
+// A range at one end of a span, and whether it reaches the claim: "718.9 m (reaches it)".
+std::string reach_text(const std::optional<double>& R, double claim) {
+  if (!R) return "not shot there";
+  return format_significant(*R, 4) + " m (" + (*R >= claim ? "reaches it" : "falls short") + ")";
+}
+
+// What decides a claim's verdict, in words for a historian (ClaimContext).
+std::string claim_context_text(const ClaimContext& c, double claim) {
+  if (!c.unavailable.empty()) return "  what decides it is not known: the run's middle could not be shot (" + c.unavailable + ")\n";
+  std::string out = "  what decides it, at the run's middle (each range at its centre, each spread at its mean):\n";
+  out += "    the energy bound 2 Delta U/(m g) = " + format_significant(c.energy_bound, 4) +
+      " m, the farthest any engine of this energy throws in vacuum: " +
+      (claim <= c.energy_bound ? "the claim is within it" : "the claim is BEYOND it, for any engine") + "\n";
+  out += "    this engine's farthest throw, released where the range peaks: " + reach_text(c.farthest, claim) + "\n";
+  for (const ClaimSpan& s : c.spans) {
+    const std::string how = s.key == "air" ? "add --air" : "give --" + s.key + ", or a range of it";
+    out += "    " + s.what + ", left at its default, " + (s.decides ? "DECIDES it" : "does not decide it") + ": " + s.low + " " +
+        reach_text(s.R_low, claim) + ", " + s.high + " " + reach_text(s.R_high, claim) + (s.decides ? "; " + how : std::string()) + "\n";
+  }
+  return out;
+}
+
+nlohmann::ordered_json claim_context_json(const ClaimContext& c) {
+  if (!c.unavailable.empty()) return {{"unavailable", c.unavailable}};
+  nlohmann::ordered_json defaults = nlohmann::ordered_json::array();
+  const auto range = [](const std::optional<double>& R) { return R ? nlohmann::ordered_json(*R) : nlohmann::ordered_json(nullptr); };
+  for (const ClaimSpan& s : c.spans)
+    defaults.push_back({{"input", s.key},
+                        {"what", s.what},
+                        {"low", s.low},
+                        {"high", s.high},
+                        {"R_low", range(s.R_low)},
+                        {"R_high", range(s.R_high)},
+                        {"decides", s.decides}});
+  return {{"energy_bound", c.energy_bound}, {"farthest", c.farthest}, {"defaults", defaults}};
+}
+
+}  // namespace
+
 nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
   const MonteCarloSummary& summary = r.summary;
   nlohmann::ordered_json out;
@@ -480,6 +521,7 @@ nlohmann::ordered_json monte_carlo_json(const MonteCarloReport& r) {
                     {"interval_method", "Wilson score"},
                     {"median_reaching", medians},
                     {"median_all", medians_all}};
+    if (r.claim_context) out["claim"]["decided_by"] = claim_context_json(*r.claim_context);
   }
   const std::vector<RankCorrelation> rho = rank_correlations(summary);
   if (!rho.empty()) {
@@ -604,6 +646,7 @@ std::string monte_carlo_table(const MonteCarloReport& r) {
       }
       out << "  the samples that reach it, at their median: " << join(medians, ", ") << "\n";
     }
+    if (r.claim_context) out << claim_context_text(*r.claim_context, c.claim);
   }
   const std::vector<RankCorrelation> rho = rank_correlations(summary);
   if (!rho.empty()) {

@@ -58,6 +58,14 @@ MonteCarloRequest read_monte_carlo_design(const nlohmann::json& design, const st
 /// in full (settings_json), and `samples`, `seed` and the claim. It reads back as the same run.
 nlohmann::ordered_json monte_carlo_request_json(const MonteCarloRequest& request, int samples, std::uint64_t seed);
 
+/// What decides the verdict on a `claim`ed range [m] (issue 64), at the run's middle: each
+/// spread at its centre (a range) or mean (a spread). Its engine (completed as the run's samples
+/// are, where the run completes) gives the energy bound 2 Delta U/(m g) and its farthest throw
+/// under the run's settings, released where the range peaks; then each air value left at its
+/// default is shot at the ends of its span, the same engine (docs/verifier.md, "What decides a
+/// claim"). Where the middle cannot be completed or shot, says why (its names by `word`).
+ClaimContext claim_context(const MonteCarloRequest& request, double claim, const std::function<std::string(std::string_view)>& word);
+
 /// The values and settings of a sample: each spread set to value(its spread).
 MonteCarloRequest with_draws(const MonteCarloRequest& request, const std::function<double(const Spread&)>& value);
 

@@ -157,6 +157,25 @@ struct FixedInput {
 /// What a Monte Carlo run reports: its samples, seed, inputs (the uncertain and the fixed),
 /// percentiles and failures; `air` describes the flight ("vacuum" or describe_air),
 /// `assumptions` the release and the target level, `subject` what was sampled ("the shot").
+/// A value a claim's run left at its default, shot at the two ends of its plausible span
+/// (docs/verifier.md, "What decides a claim"): the drag coefficient, the projectile's density,
+/// the wind, or in vacuum the air itself.
+struct ClaimSpan {
+  std::string key;  ///< the setting: "cd", "projectile", "wind" or "air"
+  std::string what;  ///< in words: "the drag coefficient Cd"
+  std::string low, high;  ///< the span's ends in words: "Cd(Re) of a smooth sphere", "0.5"
+  std::optional<double> R_low, R_high;  ///< the farthest engine's range at each end [m]; none where it cannot be shot
+  bool decides = false;  ///< the ends fall on both sides of the claim
+};
+
+/// What decides a claim's verdict, from the run's middle (each spread at its centre, or mean).
+struct ClaimContext {
+  double energy_bound = 0;  ///< 2 Delta U/(m g): Siano's black box, no engine throws farther in vacuum [m]
+  double farthest = 0;  ///< the middle engine's range released where it peaks, under the run's air [m]
+  std::vector<ClaimSpan> spans;  ///< the values left at their defaults, each across its span
+  std::string unavailable;  ///< why the middle could not be completed or shot; then nothing above is known
+};
+
 struct MonteCarloReport {
   const MonteCarloSummary& summary;
   const std::vector<UncertainInput>& inputs;
@@ -170,6 +189,7 @@ struct MonteCarloReport {
   int threads;
   std::optional<double> claim;  ///< a claimed range [m] whose odds the run reports (assess_claim)
   nlohmann::ordered_json request;  ///< the run as a request gives it (monte_carlo_request_json): it reads back as the same run
+  std::optional<ClaimContext> claim_context;  ///< with a claim: what decides its verdict
 };
 /// The report as JSON: the run as a request gives it ("design" or "attested"), with the claim's odds, the inputs ranked by their rank correlation with R
 /// ("sensitivity"), and every sample's drawn inputs beside its outputs ("draws", by column).
