@@ -85,7 +85,7 @@ def compare(design: Design, *, max_width: Value = ..., max_height: Value = ..., 
             rope_angle: Value = ..., projectile_diameter: Value = ...) -> list[Record]: ...
 def contest(m: Value, *, machine: Union[Machine, Literal["all"]] = ..., D: Value = ..., mb_per_m: float = ..., theta_i_deg: Value = ...,
             theta: Value = ..., box_width: Value = ..., box_height: Value = ..., rope_mass: Value = ..., pouch_mass: Value = ...,
-            pin_friction: float = ..., max_width: Value = ..., max_height: Value = ..., max_M: Value = ...,
+            pin_friction: float = ..., projectile_diameter: Value = ..., max_width: Value = ..., max_height: Value = ..., max_M: Value = ...,
             max_axle_load: Value = ..., max_acceleration: Value = ..., min_clearance: Value = ..., objective: Literal["range", "eps"] = ...,
             pareto: int = ..., stepper: str = ..., rtol: float = ..., atol: float = ..., target_level: Value = ...,
             range_from: Literal["pivot", "release"] = ..., air: Air = ..., air_density: Value = ..., cd: Union[float, str] = ...,

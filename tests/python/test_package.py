@@ -292,7 +292,7 @@ def test_the_stubs_keywords_are_those_the_library_takes():
             request = requests[node.name]
             taken = {name for s in settings if request in s["requests"] for name in [s["key"], *s["aliases"]]}
             taken |= {name for f in fields if f["group"] in ("material", "release") or f["key"] == "machine" for name in [f["key"], *f["aliases"]]}
-            taken |= {"theta_i_deg", "theta", "F", "l", "D", "box_width", "box_height", "rope_mass", "pouch_mass", "pin_friction"}
+            taken |= {"theta_i_deg", "theta", "F", "l", "D", "box_width", "box_height", "rope_mass", "pouch_mass", "pin_friction", "projectile_diameter"}
             # Each input of the design (every row of fields() the function's operation takes, with
             # its aliases) is a keyword over the design's own, and the stub names each.
             operations = {"complete": {"complete"}, "monte_carlo": {"shot", "complete"}, "contest": set(), "optimize": set()}.get(node.name, {"shot"})

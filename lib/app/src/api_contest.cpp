@@ -17,14 +17,16 @@ using ordered_json = nlohmann::ordered_json;
 
 ordered_json contest(const json& request) {
   std::vector<std::string> known = keys_of(req_contest, op_optimize);
-  for (const char* key : {"m", "D", "theta_i_deg", "theta", "box_width", "box_height", "rope_mass", "pouch_mass", "pin_friction"})
+  for (const char* key :
+       {"m", "D", "theta_i_deg", "theta", "box_width", "box_height", "rope_mass", "pouch_mass", "pin_friction", "projectile_diameter"})
     known.emplace_back(key);
   require_keys(request, known, "contest");
   DesignValues v = material_of_request(request, op_optimize);
   for (const auto& [member, key, dimension] : {std::tuple{&DesignValues::m, "m", UnitDimension::mass},
                                                {&DesignValues::D, "D", UnitDimension::length},
                                                {&DesignValues::box_width, "box_width", UnitDimension::length},
-                                               {&DesignValues::box_height, "box_height", UnitDimension::length}})
+                                               {&DesignValues::box_height, "box_height", UnitDimension::length},
+                                               {&DesignValues::projectile_diameter, "projectile_diameter", UnitDimension::length}})
     v.*member = positive_value(request, key, dimension);
   for (const auto& [member, key, dimension] : {std::tuple{&DesignValues::rope_mass, "rope_mass", UnitDimension::mass},
                                                {&DesignValues::pouch_mass, "pouch_mass", UnitDimension::mass},

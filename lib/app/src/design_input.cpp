@@ -203,7 +203,7 @@ bool is_record(const nlohmann::json& given) {
 namespace {
 
 // Whether a record's air writes the ball's density as the one that follows from the engine's m
-// and its ball's diameter (the whipper's), to round-off: a density edited by hand is kept, and
+// and its ball's diameter, to round-off: a density edited by hand is kept, and
 // refused beside the diameter.
 bool written_by_diameter(const nlohmann::json& engine, const nlohmann::json& air) {
   const auto number = [](const nlohmann::json& object, const char* key) {
@@ -284,7 +284,7 @@ nlohmann::json design_object(const nlohmann::json& given) {
   // "assumptions" holds the settings under their keys, and beside them what is no setting: the
   // engine's own g, theta_i_deg and F (in "engine" too), the given release's description (the
   // engine carries its key) and the sphere's size, which follows from m and the other: its
-  // density, or the diameter the engine gives (the whipper's ball).
+  // density, or the diameter the engine gives its ball.
   if (given.contains("assumptions") && given["assumptions"].is_object())
     for (const auto& [key, value] : given["assumptions"].items()) {
       if (key == "g" || key == "theta_i_deg" || key == "F" || key == "release_at") continue;

@@ -124,7 +124,7 @@ nlohmann::ordered_json monte_carlo_request_json(const MonteCarloRequest& request
   }
   if (first.values.machine) design[machine_key] = machine_name(*first.values.machine);
   nlohmann::ordered_json settings = settings_json(shot_settings(first.settings), nullptr);
-  // The whipper's ball gives the projectile's density by its diameter; the air says none of its own.
+  // A ball of given diameter gives the projectile's density; the air says none of its own.
   if (first.values.projectile_diameter && settings["air"].is_object()) settings["air"].erase("projectile_density");
   // A claim's verdict names the air's values left at their defaults (claim_context): they stay
   // unwritten, so that the run read back leaves them at their defaults too.
@@ -184,6 +184,7 @@ std::string describe_monte_carlo_air(const MonteCarloRequest& request) {
   }
   const std::optional<double>& d = first.values.projectile_diameter;
   if (d && first.values.m) settings.air->projectile_density = sphere_density(*first.values.m, *d);
+  drawn.projectile = drawn.projectile || (d && !first.values.m);  // complete chooses each sample's m
   return describe_air(*settings.air, 0, drawn);
 }
 
@@ -249,9 +250,6 @@ SampleOutcome sample_outcome(const MonteCarloRequest& request, std::mt19937_64& 
   return outcome;
 }
 
-}  // namespace trebuchet
-
-namespace trebuchet {
 namespace {
 
 // The spans of the air's values left at their defaults (docs/verifier.md, "What decides a
@@ -274,10 +272,6 @@ ClaimSpan span_of(const Engine& engine, const ShotSettings& settings, std::strin
   return {std::move(key), std::move(what), std::move(low_text), std::move(high_text), range_at(low), range_at(high), false};
 }
 
-}  // namespace
-
-namespace {
-
 ClaimContext middle_context(const MonteCarloRequest& request, double claim) {
   const MonteCarloRequest middle = with_draws(request, [](const Spread& s) { return s.kind == Spread::Kind::uniform ? (s.a + s.b) / 2 : s.a; });
   ShotSettings settings = shot_settings(middle.settings);
@@ -291,7 +285,11 @@ ClaimContext middle_context(const MonteCarloRequest& request, double claim) {
   }
   settings.criterion.release = Release::range;
   ClaimContext c;
-  c.energy_bound = 2 * potential_energy_drop(engine) / (engine.m * engine.material.g);  // Siano's black box
+  // Siano's black box: Delta U given whole to the projectile on the ground, v^2 = 2 Delta U/m,
+  // thrown at its best angle to a target `level` above the base: (v^2/g) sqrt(1 - 2 g level/v^2).
+  const double g = engine.material.g, v2 = 2 * potential_energy_drop(engine) / engine.m;
+  c.energy_bound = v2 / g * std::sqrt(std::max(0.0, 1 - 2 * g * settings.target_level / v2));
+  c.given_release = settings.release_at.has_value();
   c.farthest = verify_engine(engine, settings).capacity.R;
   const SettingsValues& given = middle.settings;  // a spread's setting holds its middle here
   if (!settings.air) {

@@ -160,7 +160,8 @@ std::vector<std::string> verification_csv_row(const Engine& engine, const ShotSe
     for (const Field& field : fields) row.push_back(csv_number(field.value, digits));
   for (const Field& field : check_fields(check)) row.push_back(check ? csv_number(field.value, digits) : "");
   const nlohmann::ordered_json assumed = assumptions_json(engine, settings);
-  const std::string air = settings.air ? describe_air(*settings.air, engine.m) : "vacuum";
+  const std::optional<Air>& as_shot = settings_for(engine, settings).air;  // a ball of given size sets its density
+  const std::string air = as_shot ? describe_air(*as_shot, engine.m) : "vacuum";
   row.insert(row.end(),
              {check ? (check->pass ? "yes" : "no") : "", air, assumed["release"].get<std::string>(), csv_number(settings.criterion.n, digits),
               csv_number(settings.target_level, digits), join(v.warnings, "; "), join(v.notes, "; ")});

@@ -119,6 +119,10 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
                   "fit scales the paper's ideal engine to a capacity; an engine as built (friction, a beam or counterweight "
                   "as built, a rope) is checked by shot, or fitted to a measured range by calibrate");
     if (!record.capacity) throw Error(ErrorKind::usage, "fit needs a capacity; give {{R}} and {{T}}, or \"R\" and \"T\" in the input");
+    if (engine.projectile_diameter && engine.machine != MachineKind::whipper)
+      throw Error(ErrorKind::usage,
+                  "fit sizes the projectile anew (its mass m), and a diameter held fixed would change its density with it; "
+                  "give its density ({{projectile}}) instead, or leave {{projectile_diameter}} out");
     const CapacityFit result = fit_capacity(scaled_design(engine), *record.capacity, engine.material, check.settings);
     engine = result.engine;
     simulated["simulations"] = result.simulations;
@@ -446,18 +450,26 @@ std::string reach_text(const std::optional<double>& R, double claim) {
   return format_significant(*R, 4) + " m (" + (*R >= claim ? "reaches it" : "falls short") + ")";
 }
 
+// How a user settles a value left at its default (ClaimSpan::key).
+std::string settle_text(const std::string& key) {
+  if (key == "air") return "add --air";
+  if (key == "projectile") return "give --projectile, or the ball's --projectile-diameter (a range of it too)";
+  return "give --" + key + ", or a range of it";
+}
+
 // What decides a claim's verdict, in words for a historian (ClaimContext).
 std::string claim_context_text(const ClaimContext& c, double claim) {
   if (!c.unavailable.empty()) return "  what decides it is not known: the run's middle could not be shot (" + c.unavailable + ")\n";
   std::string out = "  what decides it, at the run's middle (each range at its centre, each spread at its mean):\n";
   out += "    the energy bound 2 Delta U/(m g) = " + format_significant(c.energy_bound, 4) +
-      " m, the farthest any engine of this energy throws in vacuum: " +
-      (claim <= c.energy_bound ? "the claim is within it" : "the claim is BEYOND it, for any engine") + "\n";
-  out += "    this engine's farthest throw, released where the range peaks: " + reach_text(c.farthest, claim) + "\n";
+      " m, the farthest any engine of this energy throws, in vacuum to the target level: " +
+      (claim <= c.energy_bound ? "the claim is within it" : "the claim is BEYOND it") + "\n";
+  out += std::string("    this engine's farthest throw, ") + (c.given_release ? "at the run's release" : "released where the range peaks") + ": " +
+      reach_text(c.farthest, claim) + "\n";
   for (const ClaimSpan& s : c.spans) {
-    const std::string how = s.key == "air" ? "add --air" : "give --" + s.key + ", or a range of it";
-    out += "    " + s.what + ", left at its default, " + (s.decides ? "DECIDES it" : "does not decide it") + ": " + s.low + " " +
-        reach_text(s.R_low, claim) + ", " + s.high + " " + reach_text(s.R_high, claim) + (s.decides ? "; " + how : std::string()) + "\n";
+    const std::string verdict = s.decides ? "DECIDES it" : s.R_low && s.R_high ? "does not decide it" : "may decide it (an end was not shot)";
+    out += "    " + s.what + ", left at its default, " + verdict + ": " + s.low + " " + reach_text(s.R_low, claim) + ", " + s.high + " " +
+        reach_text(s.R_high, claim) + (s.decides ? "; " + settle_text(s.key) : std::string()) + "\n";
   }
   return out;
 }
@@ -474,7 +486,7 @@ nlohmann::ordered_json claim_context_json(const ClaimContext& c) {
                         {"R_low", range(s.R_low)},
                         {"R_high", range(s.R_high)},
                         {"decides", s.decides}});
-  return {{"energy_bound", c.energy_bound}, {"farthest", c.farthest}, {"defaults", defaults}};
+  return {{"energy_bound", c.energy_bound}, {"farthest", c.farthest}, {"farthest_at_given_release", c.given_release}, {"defaults", defaults}};
 }
 
 }  // namespace

@@ -182,7 +182,7 @@ std::string describe_air(const Air& air, double mass, AirDrawn drawn) {
                              : std::string("Cd(Re) of a smooth sphere");
   text += drawn.density ? std::string(", air density drawn") : ", air " + format_significant(air.density, 3) + " kg/m3";
   if (drawn.projectile) {
-    text += ", a sphere of the given diameter, its density drawn with it, ";
+    text += ", a sphere of the given diameter, its density following its mass, ";
   } else {
     text += ", a sphere of " + format_significant(air.projectile_density, 5) + " kg/m3, ";
     if (mass > 0) text += "d = " + format_significant(sphere_diameter(mass, air.projectile_density), 3) + " m, ";

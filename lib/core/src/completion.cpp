@@ -163,6 +163,11 @@ Completion complete_engine(const CompletionRequest& request) {
   p.material = request.material;
   p.parts = request.parts;
   p.projectile_diameter = request.projectile_diameter;
+  if (p.projectile_diameter) {  // a size beside a density is refused before the search, which would take it for a failed engine
+    Engine ball;
+    ball.m = 1, ball.projectile_diameter = p.projectile_diameter;
+    settings_for(ball, request.settings);
+  }
   if (p.parts.beam_cm || p.parts.D_tip)
     throw Error(ErrorKind::usage,
                 "complete builds a uniform beam from the attested values; a beam as built ({{beam_cm}}, {{D_tip}}) is checked "
@@ -293,16 +298,11 @@ Completion complete_engine(const CompletionRequest& request) {
   const int blind_trials = 4 * static_cast<int>(x0.size() + 1);
   std::vector<std::vector<double>> tried;
   bool blind_in_air = false;
-  // The engine as a shot in `settings` takes it: a projectile's size matters only in air.
-  const auto shot_as = [](Engine e, const ShotSettings& settings) {
-    if (!settings.air) e.projectile_diameter.reset();
-    return e;
-  };
   const auto works_in_vacuum = [&](const std::vector<double>& x) {
     ShotSettings vacuum = search;
     vacuum.air.reset(), vacuum.drag_in_sling = false;
     try {
-      return verify_engine(shot_as(build(p, x), vacuum), vacuum).warnings.empty();
+      return verify_engine(build(p, x), vacuum).warnings.empty();
     } catch (const Error&) {
       return false;
     }
@@ -317,7 +317,7 @@ Completion complete_engine(const CompletionRequest& request) {
     ++out.simulations;
     try {
       const Engine e = build(p, x);
-      const Verification v = verify_engine(shot_as(e, search), search);  // checks the engine first
+      const Verification v = verify_engine(e, search);  // checks the engine first
       if (!v.warnings.empty()) throw Error(ErrorKind::out_of_range, v.warnings.front());
       const double objective = objective_of(v, criterion);
       if (objective > best) best = objective, out.engine = e, out.verification = v;
@@ -351,7 +351,7 @@ Completion complete_engine(const CompletionRequest& request) {
   // The calculator's optimum for the same capacity, in vacuum at the base's level (section 6).
   ShotSettings paper;
   paper.integrator = request.settings.integrator;
-  const Verification vacuum = verify_engine(shot_as(out.engine, paper), paper);
+  const Verification vacuum = verify_engine(out.engine, paper);
   DesignRequest same;
   same.first = {Quantity::R, vacuum.capacity.R};
   same.second = {Quantity::T, vacuum.capacity.T};

@@ -33,7 +33,7 @@ const char* contest_limit_key(ContestLimit limit) {
 
 std::array<double, contest_limit_count> contest_measures(const Engine& engine, const ShotSettings& given, Verification* verification) {
   check_engine(engine);
-  ShotSettings settings = given;
+  ShotSettings settings = settings_for(engine, given);  // a ball of given size sets its density
   settings.loads = true;
   const ScaledDesign d = shot_design(engine, settings);
   std::vector<TracePoint> trace;

@@ -120,6 +120,10 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
                           format_significant(implied_density, 3) + " kg/m3 (eq:BeamMass), not " +
                           format_significant(engine.material.wood_density, 3) + ": the motion uses mb, the stress D");
   }
+  // In vacuum only the whipper's ball has a use for its size (where it rests on the arm).
+  if (engine.projectile_diameter && !air && engine.machine != MachineKind::whipper)
+    out.notes.push_back("the projectile's diameter, " + format_significant(*engine.projectile_diameter, 4) +
+                        " m, sets its drag in air alone: this shot is in vacuum, where it is not used (fly through air to use it)");
   auto warn = [&](const std::optional<double>& t, const std::string& what) {
     if (t)
       out.warnings.push_back(what + " at t = " + format_significant(*t * time_unit, 4) + " s, before the release at " +
@@ -205,13 +209,7 @@ ScaledDesign shot_design(const Engine& engine, const ShotSettings& settings) {
 ShotSettings settings_for(const Engine& engine, const ShotSettings& settings) {
   ShotSettings out = settings;
   const std::optional<double>& d = engine.projectile_diameter;
-  if (!d) return out;
-  // In vacuum only the whipper's ball has a use for its size: where it rests on the arm.
-  if (!out.air && engine.machine != MachineKind::whipper)
-    throw Error(ErrorKind::usage,
-                "{{projectile_diameter}} = " + format_significant(*d, 6) +
-                    " m sizes the projectile for its drag in air; add {{air}} to fly through it (vacuum is the default), or leave it out");
-  if (!out.air) return out;
+  if (!d || !out.air) return out;
   if (out.air->projectile_density != Air{}.projectile_density)
     throw Error(ErrorKind::usage, "{{projectile}} and {{projectile_diameter}} both size the projectile (with its mass m); give one of them");
   out.air->projectile_density = sphere_density(engine.m, *d);

@@ -73,8 +73,8 @@ std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Dr
 /// "air (Cd 0.47, air 1.2 kg/m3, a sphere of 2500 kg/m3, d = 0.43 m, no wind)" for outputs; the
 /// diameter only for a mass > 0.
 /// Which of an air's values a Monte Carlo run draws from a spread: described as drawn, not as the
-/// value of its first sample. `projectile`: the sphere's density, drawn as its given diameter or
-/// its mass is.
+/// value of its first sample. `projectile`: the sphere's density, which follows its given
+/// diameter and its mass where either is drawn (or chosen, by a completion).
 struct AirDrawn {
   bool cd = false, density = false, wind = false, projectile = false;
 };

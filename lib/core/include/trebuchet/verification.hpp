@@ -149,8 +149,8 @@ inline constexpr double max_series_points = 1e6;
 
 /// The settings as they hold for `engine`: its projectile's diameter, where given, sets the
 /// projectile's density in air (m over the ball's volume), so that its drag is the ball's.
-/// Throws Error(usage) where the density is given too, and where the engine flies in vacuum
-/// and is no whipper (whose ball rests on its arm by its size): a diameter would go unused.
+/// Throws Error(usage) where the density is given too. In vacuum a diameter is the whipper's
+/// alone (its ball rests on its arm by it); another machine's shot notes it unused (Verification::notes).
 ShotSettings settings_for(const Engine& engine, const ShotSettings& settings);
 
 /// The shot of `engine` released at a pin bent to a given angle: its range (as the settings

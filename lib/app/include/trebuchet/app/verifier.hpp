@@ -154,9 +154,6 @@ struct FixedInput {
   double value;  ///< SI; degrees for angles
 };
 
-/// What a Monte Carlo run reports: its samples, seed, inputs (the uncertain and the fixed),
-/// percentiles and failures; `air` describes the flight ("vacuum" or describe_air),
-/// `assumptions` the release and the target level, `subject` what was sampled ("the shot").
 /// A value a claim's run left at its default, shot at the two ends of its plausible span
 /// (docs/verifier.md, "What decides a claim"): the drag coefficient, the projectile's density,
 /// the wind, or in vacuum the air itself.
@@ -170,12 +167,18 @@ struct ClaimSpan {
 
 /// What decides a claim's verdict, from the run's middle (each spread at its centre, or mean).
 struct ClaimContext {
-  double energy_bound = 0;  ///< 2 Delta U/(m g): Siano's black box, no engine throws farther in vacuum [m]
-  double farthest = 0;  ///< the middle engine's range released where it peaks, under the run's air [m]
+  /// Siano's black box: Delta U thrown whole from the ground at the best angle to the target
+  /// level, 2 Delta U/(m g) on level ground; no engine of that energy throws farther [m].
+  double energy_bound = 0;
+  double farthest = 0;  ///< the middle engine's range under the run's air, released where it peaks (or as the run releases it) [m]
+  bool given_release = false;  ///< the run's release is given: `farthest` is at it
   std::vector<ClaimSpan> spans;  ///< the values left at their defaults, each across its span
   std::string unavailable;  ///< why the middle could not be completed or shot; then nothing above is known
 };
 
+/// What a Monte Carlo run reports: its samples, seed, inputs (the uncertain and the fixed),
+/// percentiles and failures; `air` describes the flight ("vacuum" or describe_air),
+/// `assumptions` the release and the target level, `subject` what was sampled ("the shot").
 struct MonteCarloReport {
   const MonteCarloSummary& summary;
   const std::vector<UncertainInput>& inputs;
