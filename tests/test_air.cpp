@@ -9,6 +9,7 @@
 #include "engines.hpp"
 #include "trebuchet/air.hpp"
 #include "trebuchet/capacity_fit.hpp"
+#include "trebuchet/contest.hpp"
 #include "trebuchet/dynamics.hpp"
 #include "trebuchet/verification.hpp"
 
@@ -161,6 +162,14 @@ TEST_CASE("a projectile's diameter sets its density in air on every machine", "[
   const double by_size = verify_engine(engine, in_air).capacity.R, same = verify_engine(without, by_density).capacity.R;
   std::printf("a 4.1 kg ball 0.2 m across from Denny's engine: R = %.6f m; at its density %.6f m\n", by_size, same);
   CHECK(by_size == same);
+  // The contest measures its engines' shots so too (it once flew them at the default stone's
+  // density, a sphere of 0.146 m, while its record gave the ball's).
+  Verification contest_by_size, contest_by_density, contest_of_stone;
+  contest_measures(engine, in_air, &contest_by_size);
+  contest_measures(without, by_density, &contest_by_density);
+  contest_measures(without, in_air, &contest_of_stone);
+  CHECK(contest_by_size.capacity.R == contest_by_density.capacity.R);
+  CHECK(contest_of_stone.capacity.R > contest_by_size.capacity.R);  // the denser, smaller stone meets less drag
   // Its density given too is a conflict; in vacuum the size has no use on the paper's engine,
   // and the shot says so (it is the shot without it).
   CHECK_THROWS_WITH(verify_engine(engine, by_density), Catch::Contains("both size the projectile"));
