@@ -457,371 +457,472 @@ ShotResult simulate_shot(const ScaledDesign& e, const ReleaseCriterion& criterio
   return simulate_shot(*machine_of(e), criterion, settings, trace, trace_dt, unreleased, find_loads, others, span);
 }
 
-ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
-                         std::vector<TracePoint>* trace, double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads,
-                         const OtherReleases& others, TraceSpan span) {
-  use_gsl_return_codes();
-  const ScaledDesign& e = dynamics.design();
-  ShotResult result;
-  const double energy_scale = e.energy_drop();
-  double energy0 = 0;
-  // The bodies' energy and the work of the losses balance (with none, the energy is conserved).
-  auto track_energy = [&](const Snapshot& s, const Losses& work) {
-    double lost = 0;
-    for (double w : work) lost += w;
-    result.energy_drift = std::max(result.energy_drift, std::abs(s.energy + lost - energy0) / energy_scale);
-  };
+namespace {
+
+// One shot of appendix A, in the order a reader follows it: phase I from rest (with the
+// whipper's phase held before it), phase II to the end of the release window, the release
+// search, and from the release the loads and the counterweight's lowest point through phase
+// III. Its members are what one phase hands on to the next.
+class ShotRun {
+ public:
+  ShotRun(const Machine& dynamics, const ReleaseCriterion& criterion, const IntegratorSettings& settings, bool keep_for_others)
+      : dynamics_(dynamics),
+        e_(dynamics.design()),
+        criterion_(criterion),
+        settings_(settings),
+        whips_(dynamics.first_phase() == Phase::held),
+        keep_for_others_(keep_for_others),
+        energy_scale_(e_.energy_drop()) {}
+
+  void phase_one(std::vector<TracePoint>* trace, double trace_dt);
+  void phase_two();
+  void search_window(bool unreleased);
+  void find_release();
+  void follow_others(const OtherReleases& others);
+  void mark_onsets();
+  void find_loads();
+  void find_lowest_counterweight();
+  void write_trace(std::vector<TracePoint>* trace, double trace_dt, TraceSpan span, std::vector<TracePoint>* unreleased);
+  const ShotResult& result() const { return result_; }
+
+ private:
+  void track_energy(const Snapshot& s, const Losses& work);
+  bool count_step(const char* phase, const State& s, bool hinge_turns = true);
+  void start();
+  [[noreturn]] void refuse_backward_start() const;
+  double carry(PhaseIntegrator& integrator, PhaseRecord& record);
+  void check_carried_step(Phase phase, bool axle_holds) const;
+  ReleasePoint point_from(double time, const OdeVector& state) const;
+  ReleasePoint point_at(double time) const { return point_from(time, phase2_->y_at(time)); }
+  void keep_for_others(const Snapshot& at, bool thrown);
+  bool step_ends_shot();
+  bool past_release() const;
+  [[noreturn]] void refuse_given(const std::string& what);
+  [[noreturn]] void fail_no_forward_release() const;
+  Candidate optimal_release() const;
+  double given_release(const GivenWatch& g) const;
+
+  const Machine& dynamics_;
+  const ScaledDesign& e_;
+  const ReleaseCriterion& criterion_;
+  const IntegratorSettings& settings_;
+  const bool whips_;  // the whipper, whose counterweight rests on the arm in a phase held first
+  const bool keep_for_others_;  // whether further releases may be asked for (OtherReleases)
+  const double energy_scale_;
+  ShotResult result_;
+  double energy0_ = 0;
   // The hinge pin's friction turns with the counterweight's swing relative to the beam, which
   // reverses a few times in a shot. A pin whose friction can hold that swing makes it stick and
   // slip, which Coulomb's law as modelled here (sliding only) leaves out: the turn then reverses
   // at nearly every step, and the shot says so rather than spend its step budget.
-  PinWatch pins;
-  // Counts an accepted step against the budget; whether the axle's friction now holds the beam.
-  // In the whipper's phase held the counterweight does not turn on its pin: nothing to watch.
-  auto count_step = [&](const char* phase, const State& s, bool hinge_turns = true) {
-    if (++result.steps > settings.max_steps)
-      fail("step budget of " + std::to_string(settings.max_steps) + " steps exceeded in " + phase +
-           "; loosen {{rtol}} or choose a higher-order {{stepper}}");
-    if (hinge_turns && pins.hinge_holds(e, s))
-      fail(
-          "the hinge pin's friction makes the counterweight stick to the beam and slip, which the model leaves out "
-          "(docs/verifier.md, \"Real engines\"); give a smaller {{hinge_friction}} or {{hinge_radius}}");
-    return pins.axle_holds(e, s);
-  };
-
-  // Phase I: from rest (eq:InitialConditions: phi_i = 0, and psi_i = 0 unless propped) until
-  // the trough's normal force vanishes. The whipper starts with a phase `held`, until its
-  // counterweight leaves the arm, and its phase I ends where the projectile leaves it.
-  const bool whips = dynamics.first_phase() == Phase::held;
-  OdeVector y = {dynamics.theta_i(), radians(e.psi_i_deg), 0, 0, 0, 0};
-  double t = 0, h = 1e-3;
-  Onsets onsets;
-  Snapshot snap = dynamics.snapshot(dynamics.first_phase(), State{y[0], y[1], 0, 0, 0, 0});
-  // A counterweight propped forward can pull the short arm the wrong way: the shot never starts.
-  if (!(snap.theta_ddot > 0)) {
-    if (whips)
-      fail(
-          "the whipper's beam starts to turn backwards, away from the throw: what rests on its arm, the counterweight (or a heavy ball on a "
-          "sling longer than the long arm), lies too far behind the pivot; lengthen the counterweight's rope {{L3}}, turn it less off the arm "
-          "(a smaller {{rope_angle_deg}}), or lighten the projectile {{m}}");
-    if (e.psi_i_deg != 0)
-      fail("the beam starts to turn away from the throw (the counterweight, propped at psi_i = " + format_significant(e.psi_i_deg, 4) +
-           " deg, pulls the short arm backwards); " +
-           (e.psi_i_deg > 0 ? std::string("prop it less, or back ({{psi_i_deg}} < 0)") : std::string("hold it back less ({{psi_i_deg}} nearer 0)")));
-    // Hanging, the counterweight is outweighed at rest by what the long arm holds: name what the engine gives of it.
-    std::string held = "the projectile {{m}}, the beam {{mb}}";
-    if (e.parts.sling.rope > 0) held += ", the sling's rope {{rope_mass}}";
-    if (e.parts.sling.pouch > 0) held += ", the pouch {{pouch_mass}}";
-    fail("the beam starts to turn away from the throw: at rest, what the long arm holds (" + held +
-         ") outweighs the counterweight {{M}} about the pivot; lighten it, or give a heavier {{M}}");
-  }
-  energy0 = snap.energy;
-  // Runs a phase that carries the projectile (and, held, the counterweight) from (t, y) to where
-  // its contact lets go: the root of the contact's value on the interpolant, the state there
-  // integrated anew from the step start. Returns the time.
-  const auto carry = [&](PhaseIntegrator& integrator, PhaseRecord& record) {
-    const Phase phase = integrator.phase();
-    const auto contact = [&](const Snapshot& at) { return phase == Phase::held ? at.counterweight_on_arm : at.normal_force; };
-    if (phase != dynamics.first_phase()) snap = dynamics.snapshot(phase, integrator.state(y));  // the first's is the start's, above
-    record.add(integrator.step_end(t, y, snap), snap);
-    if (!(contact(snap) > 0)) return t;  // it lets go at once
-    while (true) {
-      if (!integrator.step(t, y.data(), settings.max_time, h))
-        fail(integrator.friction_unsettled() ? unsettled_friction : "integrator failure in phase I; tighten {{rtol}} or choose another {{stepper}}");
-      const bool axle_holds = count_step("phase I", integrator.state(y), phase != Phase::held);
-      // Friction that stops the beam holds it (Coulomb's law at rest): the engine jams.
-      if (axle_holds || (dynamics.dissipates() && !(y[2] > 0)))
-        fail(std::string("friction stops the beam before the projectile ") + (whips ? "leaves the arm" : "lifts off") +
-             ": the engine jams; give smaller friction coefficients or pin radii ({{axle_friction}}, {{hinge_friction}}, {{trough_friction}})");
-      if (dynamics.trough_cos_phi(y[0]) < abandon_trough_cos_phi)
-        fail(
-            "the sling stands vertical in the trough (phi -> 90 deg) before lift-off; lengthen the sling {{L4}} or lighten what it carries, the "
-            "projectile {{m}}" +
-            std::string(e.parts.sling.pouch > 0 ? " and the pouch {{pouch_mass}}" : ""));
-      snap = dynamics.snapshot(phase, integrator.state(y));
-      if (phase == Phase::held && !(snap.normal_force > 0))
-        fail(
-            "the whipper's projectile would leave the arm before its counterweight, which the model (pytrebuchet's order) leaves out; "
-            "lengthen the sling {{L4}} or the counterweight's rope {{L3}}, or turn the rope further off the arm (a larger {{rope_angle_deg}})");
-      if (!(contact(snap) > 0)) {
-        const StepEnd& before = record.samples().back();
-        const StepEnd after = integrator.step_end(t, y, snap);
-        auto contact_at = [&](double time) {
-          return contact(dynamics.snapshot(phase, integrator.state(hermite(before, after, time, integrator.angles(), integrator.dimension()))));
-        };
-        t = find_root(contact_at, before.t, t, 1e-13, 0);
-        y = integrator.at(before.t, before.y, t);
-        snap = dynamics.snapshot(phase, integrator.state(y));
-        record.add(integrator.step_end(t, y, snap), snap);
-        track_energy(snap, integrator.work(y));
-        return t;
-      }
-      record.add(integrator.step_end(t, y, snap), snap);
-      track_energy(snap, integrator.work(y));
-      if (y[0] >= dynamics.turn_limit(phase) || t >= settings.max_time)
-        fail(phase == Phase::held ? "the whipper's counterweight never leaves the arm; lengthen its rope {{L3}} or change the masses"
-                 : whips          ? "the whipper's projectile never leaves the arm; change the sling length {{L4}} or the masses"
-                                  : "the projectile never lifts off: the trough still carries it when the beam is upright; "
-                                    "change the sling length L4 or the masses");
-    }
-  };
-  std::unique_ptr<PhaseIntegrator> held;
-  std::unique_ptr<PhaseRecord> held_record;
-  if (whips) {
-    held = std::make_unique<PhaseIntegrator>(dynamics, Phase::held, settings);
-    held_record = std::make_unique<PhaseRecord>(*held, ForceExtremes{}, onsets);
-    result.t_counterweight_free = carry(*held, *held_record);
-    record_trace(trace, *held, *held_record, 0, t, trace_dt);
-  }
-  PhaseIntegrator trough(dynamics, Phase::trough, settings);
-  PhaseRecord phase1(trough, held_record ? held_record->samples().back().extremes : ForceExtremes{}, onsets);
-  result.t_liftoff = carry(trough, phase1);
-  record_trace(trace, trough, phase1, result.t_counterweight_free.value_or(0), t, trace_dt);
-
-  // Phase II from the located lift-off state.
-  const State lift = trough.state(y);
-  PhaseIntegrator lifted(dynamics, Phase::lifted, settings);
-  PhaseRecord phase2(lifted, phase1.samples().back().extremes, onsets);
-  const Losses work_at_liftoff = trough.work(y);
-  y = {lift.theta, lift.psi, lift.phi, lift.theta_dot, lift.psi_dot, lift.phi_dot};
-  for (std::size_t k = 0; k + 6 < lifted.dimension(); ++k) y[6 + k] = work_at_liftoff[k];
-  const Snapshot lift_snapshot = dynamics.snapshot(Phase::lifted, lift);
-  phase2.add(lifted.step_end(t, y, lift_snapshot), lift_snapshot);
-  auto point_from = [&](double time, const OdeVector& state) {
-    const State s = lifted.state(state);
-    return release_point(e, criterion, time, s, dynamics.snapshot(Phase::lifted, s), phase2.extremes_before(time));
-  };
-  auto point_at = [&](double time) { return point_from(time, phase2.y_at(time)); };
-  // The objective at every step end of phase II, in the order of the samples.
-  const ReleasePoint at_liftoff = point_at(t);
+  PinWatch pins_;
+  OdeVector y_{};
+  double t_ = 0, h_ = 1e-3;
+  Onsets onsets_;
+  Snapshot snap_;
+  std::unique_ptr<PhaseIntegrator> held_;
+  std::unique_ptr<PhaseRecord> held_record_;
+  std::optional<PhaseIntegrator> trough_, lifted_;
+  std::optional<PhaseRecord> phase1_, phase2_;
+  // Phase II: the objective at every step end, in the order of the samples, and its best.
+  std::vector<double> sampled_;
+  double best_quality_ = 0;
   // The highest apex, in vacuum, of the flights that a release at a step end sends forward
   // (scaled, above the base): what a target level above every flight is told.
-  double highest_apex = 0;
-  std::vector<double> sampled{at_liftoff.objective};
-  double best_quality = sampled.front();
+  double highest_apex_ = 0;
   // What a given release watches at each sample (the snapshot, whether a release there throws),
   // and the energy drift up to it: what a further release replays (OtherReleases), kept only
   // when further releases may be asked for.
-  const bool thrown_at_liftoff = throws(e, at_liftoff);
-  std::vector<Snapshot> snapshots;
-  std::vector<char> throwing;
-  std::vector<double> drift_up_to;
-  const auto keep_for_others = [&](const Snapshot& at, bool thrown) {
-    if (others) snapshots.push_back(at), throwing.push_back(thrown), drift_up_to.push_back(result.energy_drift);
-  };
+  std::vector<Snapshot> snapshots_;
+  std::vector<char> throwing_;
+  std::vector<double> drift_up_to_;
+  std::optional<GivenWatch> given_;
+  std::optional<BackwardWatch> backward_;
+  std::string window_end_;  // why the window ended, for a given release that never comes
+  bool ended_ = false;  // the shot ended (not merely past the release)
+  double search_end_ = 0;  // the last sample's time when the release was sought
+  double t_release_ = 0;
+};
+
+// The bodies' energy and the work of the losses balance (with none, the energy is conserved).
+void ShotRun::track_energy(const Snapshot& s, const Losses& work) {
+  double lost = 0;
+  for (double w : work) lost += w;
+  result_.energy_drift = std::max(result_.energy_drift, std::abs(s.energy + lost - energy0_) / energy_scale_);
+}
+
+// Counts an accepted step against the budget; whether the axle's friction now holds the beam.
+// In the whipper's phase held the counterweight does not turn on its pin: nothing to watch.
+bool ShotRun::count_step(const char* phase, const State& s, bool hinge_turns) {
+  if (++result_.steps > settings_.max_steps)
+    fail("step budget of " + std::to_string(settings_.max_steps) + " steps exceeded in " + phase +
+         "; loosen {{rtol}} or choose a higher-order {{stepper}}");
+  if (hinge_turns && pins_.hinge_holds(e_, s))
+    fail(
+        "the hinge pin's friction makes the counterweight stick to the beam and slip, which the model leaves out "
+        "(docs/verifier.md, \"Real engines\"); give a smaller {{hinge_friction}} or {{hinge_radius}}");
+  return pins_.axle_holds(e_, s);
+}
+
+// The start of phase I: at rest (eq:InitialConditions: phi_i = 0, and psi_i = 0 unless propped).
+void ShotRun::start() {
+  y_ = {dynamics_.theta_i(), radians(e_.psi_i_deg), 0, 0, 0, 0};
+  snap_ = dynamics_.snapshot(dynamics_.first_phase(), State{y_[0], y_[1], 0, 0, 0, 0});
+  // A counterweight propped forward can pull the short arm the wrong way: the shot never starts.
+  if (!(snap_.theta_ddot > 0)) refuse_backward_start();
+  energy0_ = snap_.energy;
+}
+
+void ShotRun::refuse_backward_start() const {
+  if (whips_)
+    fail(
+        "the whipper's beam starts to turn backwards, away from the throw: what rests on its arm, the counterweight (or a heavy ball on a "
+        "sling longer than the long arm), lies too far behind the pivot; lengthen the counterweight's rope {{L3}}, turn it less off the arm "
+        "(a smaller {{rope_angle_deg}}), or lighten the projectile {{m}}");
+  if (e_.psi_i_deg != 0)
+    fail("the beam starts to turn away from the throw (the counterweight, propped at psi_i = " + format_significant(e_.psi_i_deg, 4) +
+         " deg, pulls the short arm backwards); " +
+         (e_.psi_i_deg > 0 ? std::string("prop it less, or back ({{psi_i_deg}} < 0)") : std::string("hold it back less ({{psi_i_deg}} nearer 0)")));
+  // Hanging, the counterweight is outweighed at rest by what the long arm holds: name what the engine gives of it.
+  std::string held = "the projectile {{m}}, the beam {{mb}}";
+  if (e_.parts.sling.rope > 0) held += ", the sling's rope {{rope_mass}}";
+  if (e_.parts.sling.pouch > 0) held += ", the pouch {{pouch_mass}}";
+  fail("the beam starts to turn away from the throw: at rest, what the long arm holds (" + held +
+       ") outweighs the counterweight {{M}} about the pivot; lighten it, or give a heavier {{M}}");
+}
+
+// What ends a carrying phase's step in failure: friction that stops the beam holds it (Coulomb's
+// law at rest: the engine jams), the sling standing vertical in the trough, or the whipper's
+// projectile leaving the arm before its counterweight.
+void ShotRun::check_carried_step(Phase phase, bool axle_holds) const {
+  if (axle_holds || (dynamics_.dissipates() && !(y_[2] > 0)))
+    fail(std::string("friction stops the beam before the projectile ") + (whips_ ? "leaves the arm" : "lifts off") +
+         ": the engine jams; give smaller friction coefficients or pin radii ({{axle_friction}}, {{hinge_friction}}, {{trough_friction}})");
+  if (dynamics_.trough_cos_phi(y_[0]) < abandon_trough_cos_phi)
+    fail(
+        "the sling stands vertical in the trough (phi -> 90 deg) before lift-off; lengthen the sling {{L4}} or lighten what it carries, the "
+        "projectile {{m}}" +
+        std::string(e_.parts.sling.pouch > 0 ? " and the pouch {{pouch_mass}}" : ""));
+  if (phase == Phase::held && !(snap_.normal_force > 0))
+    fail(
+        "the whipper's projectile would leave the arm before its counterweight, which the model (pytrebuchet's order) leaves out; "
+        "lengthen the sling {{L4}} or the counterweight's rope {{L3}}, or turn the rope further off the arm (a larger {{rope_angle_deg}})");
+}
+
+// Runs a phase that carries the projectile (and, held, the counterweight) from (t, y) to where
+// its contact lets go: the root of the contact's value on the interpolant, the state there
+// integrated anew from the step start. Returns the time.
+double ShotRun::carry(PhaseIntegrator& integrator, PhaseRecord& record) {
+  const Phase phase = integrator.phase();
+  const auto contact = [&](const Snapshot& at) { return phase == Phase::held ? at.counterweight_on_arm : at.normal_force; };
+  if (phase != dynamics_.first_phase()) snap_ = dynamics_.snapshot(phase, integrator.state(y_));  // the first's is the start's
+  record.add(integrator.step_end(t_, y_, snap_), snap_);
+  if (!(contact(snap_) > 0)) return t_;  // it lets go at once
+  while (true) {
+    if (!integrator.step(t_, y_.data(), settings_.max_time, h_))
+      fail(integrator.friction_unsettled() ? unsettled_friction : "integrator failure in phase I; tighten {{rtol}} or choose another {{stepper}}");
+    const bool axle_holds = count_step("phase I", integrator.state(y_), phase != Phase::held);
+    snap_ = dynamics_.snapshot(phase, integrator.state(y_));
+    check_carried_step(phase, axle_holds);
+    if (!(contact(snap_) > 0)) {
+      const StepEnd& before = record.samples().back();
+      const StepEnd after = integrator.step_end(t_, y_, snap_);
+      auto contact_at = [&](double time) {
+        return contact(dynamics_.snapshot(phase, integrator.state(hermite(before, after, time, integrator.angles(), integrator.dimension()))));
+      };
+      t_ = find_root(contact_at, before.t, t_, 1e-13, 0);
+      y_ = integrator.at(before.t, before.y, t_);
+      snap_ = dynamics_.snapshot(phase, integrator.state(y_));
+      record.add(integrator.step_end(t_, y_, snap_), snap_);
+      track_energy(snap_, integrator.work(y_));
+      return t_;
+    }
+    record.add(integrator.step_end(t_, y_, snap_), snap_);
+    track_energy(snap_, integrator.work(y_));
+    if (y_[0] >= dynamics_.turn_limit(phase) || t_ >= settings_.max_time)
+      fail(phase == Phase::held ? "the whipper's counterweight never leaves the arm; lengthen its rope {{L3}} or change the masses"
+               : whips_         ? "the whipper's projectile never leaves the arm; change the sling length {{L4}} or the masses"
+                                : "the projectile never lifts off: the trough still carries it when the beam is upright; "
+                                  "change the sling length L4 or the masses");
+  }
+}
+
+// Phase I: from rest until the trough's normal force vanishes. The whipper starts with a phase
+// `held`, until its counterweight leaves the arm, and its phase I ends where the projectile leaves it.
+void ShotRun::phase_one(std::vector<TracePoint>* trace, double trace_dt) {
+  start();
+  if (whips_) {
+    held_ = std::make_unique<PhaseIntegrator>(dynamics_, Phase::held, settings_);
+    held_record_ = std::make_unique<PhaseRecord>(*held_, ForceExtremes{}, onsets_);
+    result_.t_counterweight_free = carry(*held_, *held_record_);
+    record_trace(trace, *held_, *held_record_, 0, t_, trace_dt);
+  }
+  trough_.emplace(dynamics_, Phase::trough, settings_);
+  phase1_.emplace(*trough_, held_record_ ? held_record_->samples().back().extremes : ForceExtremes{}, onsets_);
+  result_.t_liftoff = carry(*trough_, *phase1_);
+  record_trace(trace, *trough_, *phase1_, result_.t_counterweight_free.value_or(0), t_, trace_dt);
+}
+
+ReleasePoint ShotRun::point_from(double time, const OdeVector& state) const {
+  const State s = lifted_->state(state);
+  return release_point(e_, criterion_, time, s, dynamics_.snapshot(Phase::lifted, s), phase2_->extremes_before(time));
+}
+
+void ShotRun::keep_for_others(const Snapshot& at, bool thrown) {
+  if (keep_for_others_) snapshots_.push_back(at), throwing_.push_back(thrown), drift_up_to_.push_back(result_.energy_drift);
+}
+
+// Phase II from the located lift-off state, its first sample taken.
+void ShotRun::phase_two() {
+  const State lift = trough_->state(y_);
+  lifted_.emplace(dynamics_, Phase::lifted, settings_);
+  phase2_.emplace(*lifted_, phase1_->samples().back().extremes, onsets_);
+  const Losses work_at_liftoff = trough_->work(y_);
+  y_ = {lift.theta, lift.psi, lift.phi, lift.theta_dot, lift.psi_dot, lift.phi_dot};
+  for (std::size_t k = 0; k + 6 < lifted_->dimension(); ++k) y_[6 + k] = work_at_liftoff[k];
+  const Snapshot lift_snapshot = dynamics_.snapshot(Phase::lifted, lift);
+  phase2_->add(lifted_->step_end(t_, y_, lift_snapshot), lift_snapshot);
+  const ReleasePoint at_liftoff = point_at(t_);
+  sampled_ = {at_liftoff.objective};
+  best_quality_ = sampled_.front();
+  const bool thrown_at_liftoff = throws(e_, at_liftoff);
   keep_for_others(lift_snapshot, thrown_at_liftoff);
   // A given release watches its value from lift-off on; one already past there would release in the trough.
   // The whipper's projectile leaves the arm falling forward, and its velocity and pin angles turn
   // through a whole turn before the release: a given angle is the first one below their value
   // there, whole turns apart (docs/machines.md, "The whipper").
-  std::optional<GivenWatch> given;
-  if (criterion.given) given.emplace(*criterion.given, t, lift_snapshot, thrown_at_liftoff, whips);
-  h = 1e-3;
+  if (criterion_.given) given_.emplace(*criterion_.given, t_, lift_snapshot, thrown_at_liftoff, whips_);
+  h_ = 1e-3;
   // The release window (docs/verifier.md, "Window"): one for every shot, every form of release
   // and every machine, lossless or not. It ends where the projectile's velocity turns backward
   // after a forward throw (BackwardWatch; located on the continuous solution, where the last
   // sample of phase II is then taken), or where the beam turns over, friction holds it (the
   // machine stops), or the time is out. Where the beam stops turning forward is no end.
-  BackwardWatch backward(throws(e, at_liftoff));
-  std::string window_end;  // why the window ended, for a given release that never comes
-  // One step of phase II; whether the shot ends there.
-  const auto step_ends_shot = [&]() {
-    const StepEnd step_start = phase2.samples().back();
-    if (!lifted.step(t, y.data(), settings.max_time, h))
-      fail(lifted.friction_unsettled() ? unsettled_friction : "integrator failure in phase II; tighten {{rtol}} or choose another {{stepper}}");
-    State s = lifted.state(y);
-    const bool axle_holds = count_step("phase II", s);
-    snap = dynamics.snapshot(Phase::lifted, s);
-    track_energy(snap, lifted.work(y));
-    if (backward.turns_backward(snap)) {
-      // The window closes inside this step: the state where the velocity turns, integrated anew from the step's start.
-      const StepEnd after = lifted.step_end(t, y, snap);
-      const auto forward_at = [&](double time) {
-        return BackwardWatch::forward_speed(dynamics.snapshot(Phase::lifted, lifted.state(hermite(step_start, after, time, 3, lifted.dimension()))));
-      };
-      t = find_root(forward_at, step_start.t, t, 1e-13, 0);
-      y = lifted.at(step_start.t, step_start.y, t);
-      s = lifted.state(y);
-      snap = dynamics.snapshot(Phase::lifted, s);
-      window_end = "the projectile's velocity turns backward first";
-    }
-    const ReleasePoint here = release_point(e, criterion, t, s, snap, phase2.samples().back().extremes);
-    phase2.add(lifted.step_end(t, y, snap), snap);
-    sampled.push_back(here.objective);
-    const bool thrown = throws(e, here);
-    keep_for_others(snap, thrown);
-    best_quality = std::max(best_quality, here.objective);
-    if (here.range > 0) highest_apex = std::max(highest_apex, here.height + std::pow(std::max(here.velocity.y, 0.0), 2) / 2);  // scaled, g = 1
-    if (given) given->add(phase2.samples().size() - 1, t, snap, thrown);
-    backward.add(thrown);
-    if (window_end.empty()) {
-      if (s.theta > dynamics.turn_limit(Phase::lifted))
-        window_end = "the beam turns over first";
-      else if (t >= settings.max_time)
-        window_end = "the time runs out first";
-      else if (axle_holds)
-        window_end = "the axle's friction stops the beam first";
-    }
-    return !window_end.empty() || (given && given->spent());
-  };
-  // Past the release: the objective has fallen to half its maximum, or two steps past a given
-  // release, so that the running extremes of eq:F before it are refined as an optimum's are.
-  // The whipper's projectile first drops off the arm forward, with an objective that peaks near
-  // zero, before the beam whips it round: its optimum is sought over the whole forward swing.
-  const auto past_release = [&]() {
-    // With `unreleased` asked for, phase II goes on as an optimum's window would (to half the
-    // objective's best), so that the pictures show what the given release gave up.
-    const bool fallen = !whips && best_quality > 0 && sampled.back() < 0.5 * best_quality;
-    if (given) return given->done(phase2.samples().size()) && (!unreleased || fallen);
-    return fallen;
-  };
-  bool ended = false;  // the shot ended (not merely past the release)
-  while (!(ended = step_ends_shot()) && !past_release()) {
-  }
-  // A given release that cannot be made is refused with the values the whole swing runs through:
-  // where the search stopped past it, the swing is followed on to its end.
-  const auto refuse_given = [&](const std::string& what) {
-    while (!ended) ended = step_ends_shot();
-    refuse_given_release(*criterion.given, given->watch, what, whips);  // the value as given, not moved by whole turns
-  };
-  if (given && given->in_trough)
-    refuse_given(whips ? "the release would come before the projectile leaves the arm"
-                       : "the release would come before lift-off, with the projectile still in the trough");
-  if (given && !given->watch.crossed)
-    refuse_given("the release never comes: " +
-                 (window_end.empty() ? std::string("the watched value never reaches it") : "the release window ends, " + window_end));
-  // No release with a positive objective: under Release::range with a target level above the
-  // base, the flights go forward but none comes down at that level; else none goes forward.
-  const auto fail_no_forward_release = [&] {
-    if (criterion.release == Release::range && !criterion.range_from_release && criterion.target_level > 0 && highest_apex > 0)
-      throw Error(ErrorKind::usage,
-                  "{{target_level}} = " + format_significant(criterion.target_level * criterion.length_unit, 4) +
-                      " m lies above the flight of every release: the highest apex, in vacuum, is about " +
-                      format_significant(highest_apex * criterion.length_unit, 4) + " m above the engine's base" +
-                      (criterion.drag ? " (the air lowers it)" : "") + "; give a lower target level");
-    fail("no release sends the projectile forward: over phase II it never flies toward the target");
-  };
-  if (!given && !(best_quality > 0)) fail_no_forward_release();
-  if (result.energy_drift > settings.max_energy_drift)
-    fail("energy drift " + format_significant(result.energy_drift, 3) + " of Delta U exceeds " + format_significant(settings.max_energy_drift, 3) +
-         "; tighten {{rtol}} or choose another {{stepper}}");
+  backward_.emplace(thrown_at_liftoff);
+}
 
-  // The release search (docs/verifier.md, "Release"). The objective is smooth between the onsets
-  // of growth of the running extremes, so its maximum over phase II lies at an onset or at the
-  // maximum of a smooth piece. Every onset of phase II is located on the continuous solution. A
-  // smooth maximum lies within a step of a step end that is at least as high as both its
-  // neighbours, as long as no step holds both a minimum and a maximum of one smooth piece: the two
-  // steps beside each such step end are searched, each on its own (the slope is scanned at the
-  // step end between them). An onset higher than every candidate so far is searched too, within
-  // its step.
-  const auto& samples = phase2.samples();
-  const auto optimal_release = [&]() {
-    const auto objective = [&](double time) { return point_at(time).objective; };
-    const std::size_t last = samples.size() - 1;
-    // The onsets of phase II; none is sought in a step whose ends both have the objective at 0,
-    // where the projectile would not fly forward.
-    std::vector<PhaseRecord::Onset> onsets_ii;
-    for (std::size_t j = 0; j < last; ++j)
-      if (sampled[j] > 0 || sampled[j + 1] > 0)
-        for (const auto& onset : phase2.growth_onsets(samples[j].t, samples[j + 1].t)) onsets_ii.push_back(onset);
-    Candidate found{samples.front().t, 0, std::nullopt};
-    auto search = [&](std::size_t first, std::size_t end) {
-      std::vector<double> scan;
-      for (std::size_t i = first + 1; i < end; ++i) scan.push_back(samples[i].t);
-      const Candidate c = release_time(objective, samples[first].t, samples[end].t, scan, onsets_ii);
-      if (c.value > found.value) found = c;
+// One step of phase II; whether the shot ends there.
+bool ShotRun::step_ends_shot() {
+  const StepEnd step_start = phase2_->samples().back();
+  if (!lifted_->step(t_, y_.data(), settings_.max_time, h_))
+    fail(lifted_->friction_unsettled() ? unsettled_friction : "integrator failure in phase II; tighten {{rtol}} or choose another {{stepper}}");
+  State s = lifted_->state(y_);
+  const bool axle_holds = count_step("phase II", s);
+  snap_ = dynamics_.snapshot(Phase::lifted, s);
+  track_energy(snap_, lifted_->work(y_));
+  if (backward_->turns_backward(snap_)) {
+    // The window closes inside this step: the state where the velocity turns, integrated anew from the step's start.
+    const StepEnd after = lifted_->step_end(t_, y_, snap_);
+    const auto forward_at = [&](double time) {
+      return BackwardWatch::forward_speed(
+          dynamics_.snapshot(Phase::lifted, lifted_->state(hermite(step_start, after, time, 3, lifted_->dimension()))));
     };
-    for (std::size_t i = 0; i <= last; ++i) {
-      const bool peak = (i == 0 || sampled[i] >= sampled[i - 1]) && (i == last || sampled[i] >= sampled[i + 1]);
-      if (peak && sampled[i] > 0) search(i > 0 ? i - 1 : 0, std::min(i + 1, last));
-    }
-    for (const auto& onset : onsets_ii) {
-      if (!(objective(onset.t) > found.value)) continue;
-      const std::size_t step_start = phase2.base_of(onset.t);
-      search(step_start, std::min(step_start + 1, last));
-    }
-    // Sampled values within round-off of 0 can leave no candidate with the objective above it.
-    if (!(found.value > 0)) fail_no_forward_release();
-    return found;
+    t_ = find_root(forward_at, step_start.t, t_, 1e-13, 0);
+    y_ = lifted_->at(step_start.t, step_start.y, t_);
+    s = lifted_->state(y_);
+    snap_ = dynamics_.snapshot(Phase::lifted, s);
+    window_end_ = "the projectile's velocity turns backward first";
+  }
+  const ReleasePoint here = release_point(e_, criterion_, t_, s, snap_, phase2_->samples().back().extremes);
+  phase2_->add(lifted_->step_end(t_, y_, snap_), snap_);
+  sampled_.push_back(here.objective);
+  const bool thrown = throws(e_, here);
+  keep_for_others(snap_, thrown);
+  best_quality_ = std::max(best_quality_, here.objective);
+  if (here.range > 0) highest_apex_ = std::max(highest_apex_, here.height + std::pow(std::max(here.velocity.y, 0.0), 2) / 2);  // scaled, g = 1
+  if (given_) given_->add(phase2_->samples().size() - 1, t_, snap_, thrown);
+  backward_->add(thrown);
+  if (window_end_.empty()) {
+    if (s.theta > dynamics_.turn_limit(Phase::lifted))
+      window_end_ = "the beam turns over first";
+    else if (t_ >= settings_.max_time)
+      window_end_ = "the time runs out first";
+    else if (axle_holds)
+      window_end_ = "the axle's friction stops the beam first";
+  }
+  return !window_end_.empty() || (given_ && given_->spent());
+}
+
+// Past the release: the objective has fallen to half its maximum, or two steps past a given
+// release, so that the running extremes of eq:F before it are refined as an optimum's are.
+// The whipper's projectile first drops off the arm forward, with an objective that peaks near
+// zero, before the beam whips it round: its optimum is sought over the whole forward swing.
+// With `unreleased` asked for, phase II goes on as an optimum's window would (to half the
+// objective's best), so that the pictures show what the given release gave up.
+bool ShotRun::past_release() const {
+  const bool fallen = !whips_ && best_quality_ > 0 && sampled_.back() < 0.5 * best_quality_;
+  return fallen;
+}
+
+// A given release that cannot be made is refused with the values the whole swing runs through:
+// where the search stopped past it, the swing is followed on to its end.
+void ShotRun::refuse_given(const std::string& what) {
+  while (!ended_) ended_ = step_ends_shot();
+  refuse_given_release(*criterion_.given, given_->watch, what, whips_);  // the value as given, not moved by whole turns
+}
+
+// No release with a positive objective: under Release::range with a target level above the
+// base, the flights go forward but none comes down at that level; else none goes forward.
+void ShotRun::fail_no_forward_release() const {
+  if (criterion_.release == Release::range && !criterion_.range_from_release && criterion_.target_level > 0 && highest_apex_ > 0)
+    throw Error(ErrorKind::usage,
+                "{{target_level}} = " + format_significant(criterion_.target_level * criterion_.length_unit, 4) +
+                    " m lies above the flight of every release: the highest apex, in vacuum, is about " +
+                    format_significant(highest_apex_ * criterion_.length_unit, 4) + " m above the engine's base" +
+                    (criterion_.drag ? " (the air lowers it)" : "") + "; give a lower target level");
+  fail("no release sends the projectile forward: over phase II it never flies toward the target");
+}
+
+// Phase II stepped through the release window until past the release, and what cannot be
+// released refused: a given release in the trough or never reached, no forward release, or an
+// energy drift above the limit.
+void ShotRun::search_window(bool unreleased) {
+  const auto past = [&] {
+    if (given_) return given_->done(phase2_->samples().size()) && (!unreleased || past_release());
+    return past_release();
   };
-  // A given release is the root of its watched value on the continuous solution, within the step
-  // it was crossed in, each value integrated anew from the step's start (y_exact_at).
-  const auto given_release = [&](const GivenWatch& g) {
-    if (g.given.by == ReleaseBy::time) return g.given.value;
-    const std::size_t i = *g.watch.crossed;
-    const auto ahead = [&](double time) {
-      const State s = lifted.state(phase2.y_exact_at(time));
-      return ahead_of(g.given, watched_value(g.given.by, time, dynamics.snapshot(Phase::lifted, s), g.watch.near));
-    };
-    return find_root(ahead, samples[i - 1].t, samples[i].t, 1e-13, 0);
+  while (!(ended_ = step_ends_shot()) && !past()) {
+  }
+  if (given_ && given_->in_trough)
+    refuse_given(whips_ ? "the release would come before the projectile leaves the arm"
+                        : "the release would come before lift-off, with the projectile still in the trough");
+  if (given_ && !given_->watch.crossed)
+    refuse_given("the release never comes: " +
+                 (window_end_.empty() ? std::string("the watched value never reaches it") : "the release window ends, " + window_end_));
+  if (!given_ && !(best_quality_ > 0)) fail_no_forward_release();
+  if (result_.energy_drift > settings_.max_energy_drift)
+    fail("energy drift " + format_significant(result_.energy_drift, 3) + " of Delta U exceeds " + format_significant(settings_.max_energy_drift, 3) +
+         "; tighten {{rtol}} or choose another {{stepper}}");
+}
+
+// The release search (docs/verifier.md, "Release"). The objective is smooth between the onsets
+// of growth of the running extremes, so its maximum over phase II lies at an onset or at the
+// maximum of a smooth piece. Every onset of phase II is located on the continuous solution. A
+// smooth maximum lies within a step of a step end that is at least as high as both its
+// neighbours, as long as no step holds both a minimum and a maximum of one smooth piece: the two
+// steps beside each such step end are searched, each on its own (the slope is scanned at the
+// step end between them). An onset higher than every candidate so far is searched too, within
+// its step.
+Candidate ShotRun::optimal_release() const {
+  const auto& samples = phase2_->samples();
+  const auto objective = [&](double time) { return point_at(time).objective; };
+  const std::size_t last = samples.size() - 1;
+  // The onsets of phase II; none is sought in a step whose ends both have the objective at 0,
+  // where the projectile would not fly forward.
+  std::vector<PhaseRecord::Onset> onsets_ii;
+  for (std::size_t j = 0; j < last; ++j)
+    if (sampled_[j] > 0 || sampled_[j + 1] > 0)
+      for (const auto& onset : phase2_->growth_onsets(samples[j].t, samples[j + 1].t)) onsets_ii.push_back(onset);
+  Candidate found{samples.front().t, 0, std::nullopt};
+  auto search = [&](std::size_t first, std::size_t end) {
+    std::vector<double> scan;
+    for (std::size_t i = first + 1; i < end; ++i) scan.push_back(samples[i].t);
+    const Candidate c = release_time(objective, samples[first].t, samples[end].t, scan, onsets_ii);
+    if (c.value > found.value) found = c;
   };
-  double t_release = 0;
-  if (given) {
-    t_release = given_release(*given);
+  for (std::size_t i = 0; i <= last; ++i) {
+    const bool peak = (i == 0 || sampled_[i] >= sampled_[i - 1]) && (i == last || sampled_[i] >= sampled_[i + 1]);
+    if (peak && sampled_[i] > 0) search(i > 0 ? i - 1 : 0, std::min(i + 1, last));
+  }
+  for (const auto& onset : onsets_ii) {
+    if (!(objective(onset.t) > found.value)) continue;
+    const std::size_t step_start = phase2_->base_of(onset.t);
+    search(step_start, std::min(step_start + 1, last));
+  }
+  // Sampled values within round-off of 0 can leave no candidate with the objective above it.
+  if (!(found.value > 0)) fail_no_forward_release();
+  return found;
+}
+
+// A given release is the root of its watched value on the continuous solution, within the step
+// it was crossed in, each value integrated anew from the step's start (y_exact_at).
+double ShotRun::given_release(const GivenWatch& g) const {
+  if (g.given.by == ReleaseBy::time) return g.given.value;
+  const auto& samples = phase2_->samples();
+  const std::size_t i = *g.watch.crossed;
+  const auto ahead = [&](double time) {
+    const State s = lifted_->state(phase2_->y_exact_at(time));
+    return ahead_of(g.given, watched_value(g.given.by, time, dynamics_.snapshot(Phase::lifted, s), g.watch.near));
+  };
+  return find_root(ahead, samples[i - 1].t, samples[i].t, 1e-13, 0);
+}
+
+// The release, given or the optimum, and the state there integrated anew.
+void ShotRun::find_release() {
+  if (given_) {
+    t_release_ = given_release(*given_);
   } else {
     const Candidate found = optimal_release();
-    t_release = found.t;
-    result.release_at_growth_of = found.at_onset;
+    t_release_ = found.t;
+    result_.release_at_growth_of = found.at_onset;
   }
-  const OdeVector y_release = phase2.y_exact_at(t_release);
-  result.release = point_from(t_release, y_release);
-  result.work = lifted.work(y_release);
-  if (given && !(result.release.range > 0))
+  const OdeVector y_release = phase2_->y_exact_at(t_release_);
+  result_.release = point_from(t_release_, y_release);
+  result_.work = lifted_->work(y_release);
+  if (given_ && !(result_.release.range > 0))
     refuse_given("released there, the projectile does not fly forward from above the engine's base" +
-                 (given->given.by == ReleaseBy::velocity_angle
+                 (given_->given.by == ReleaseBy::velocity_angle
                       ? std::string()
-                      : " (its velocity angle is " + format_significant(degrees(result.release.velocity_angle), 4) + " deg)"));
-  // The further releases (OtherReleases), each replayed over the samples as its own shot would
-  // watch it, phase II stepped on until each is two samples past its release (GivenWatch::done)
-  // or cannot come. The shot's own figures stay as found: its search's end, its drift and steps.
-  const double search_end = samples.back().t;
-  if (others) {
-    const double drift = result.energy_drift;
-    const long steps = result.steps;
-    std::vector<GivenWatch> watches;
-    std::vector<std::size_t> seen;  // the samples each watch has replayed
-    for (const GivenRelease& asked : others(result.release))
-      watches.emplace_back(asked, samples.front().t, snapshots.front(), throwing.front(), whips), seen.push_back(1);
-    const auto catch_up = [&] {
-      bool waiting = false;
-      for (std::size_t k = 0; k < watches.size(); ++k) {
-        for (; seen[k] < samples.size(); ++seen[k]) watches[k].add(seen[k], samples[seen[k]].t, snapshots[seen[k]], throwing[seen[k]]);
-        waiting = waiting || (!watches[k].in_trough && !watches[k].done(samples.size()) && !watches[k].spent());
-      }
-      return waiting;
-    };
-    // A step that fails here fails a further release's own shot as well, if it needed the step.
-    try {
-      while (catch_up() && window_end.empty()) step_ends_shot();
-    } catch (const Error&) {
+                      : " (its velocity angle is " + format_significant(degrees(result_.release.velocity_angle), 4) + " deg)"));
+  search_end_ = phase2_->samples().back().t;
+}
+
+// The further releases (OtherReleases), each replayed over the samples as its own shot would
+// watch it, phase II stepped on until each is two samples past its release (GivenWatch::done)
+// or cannot come. The shot's own figures stay as found: its search's end, its drift and steps.
+void ShotRun::follow_others(const OtherReleases& others) {
+  const auto& samples = phase2_->samples();
+  const double drift = result_.energy_drift;
+  const long steps = result_.steps;
+  std::vector<GivenWatch> watches;
+  std::vector<std::size_t> seen;  // the samples each watch has replayed
+  for (const GivenRelease& asked : others(result_.release))
+    watches.emplace_back(asked, samples.front().t, snapshots_.front(), throwing_.front(), whips_), seen.push_back(1);
+  const auto catch_up = [&] {
+    bool waiting = false;
+    for (std::size_t k = 0; k < watches.size(); ++k) {
+      for (; seen[k] < samples.size(); ++seen[k]) watches[k].add(seen[k], samples[seen[k]].t, snapshots_[seen[k]], throwing_[seen[k]]);
+      waiting = waiting || (!watches[k].in_trough && !watches[k].done(samples.size()) && !watches[k].spent());
     }
-    catch_up();
-    for (const GivenWatch& w : watches) {
-      std::optional<OtherRelease> other;
-      const auto& crossed = w.watch.crossed;
-      // Its own shot ends two samples past the release, or where the window ends or a step failed first.
-      const bool stepped = crossed && (w.done(samples.size()) || !window_end.empty() || w.spent());
-      if (!w.in_trough && stepped && !(drift_up_to[std::min(*crossed + 2, samples.size() - 1)] > settings.max_energy_drift)) {
-        const double time = given_release(w);
-        const OdeVector at = phase2.y_exact_at(time);
-        const ReleasePoint point = point_from(time, at);
-        if (point.range > 0) other = OtherRelease{point, lifted.work(at)};
-      }
-      result.others.push_back(other);
-    }
-    result.energy_drift = drift, result.steps = steps;
+    return waiting;
+  };
+  // A step that fails here fails a further release's own shot as well, if it needed the step.
+  try {
+    while (catch_up() && window_end_.empty()) step_ends_shot();
+  } catch (const Error&) {
   }
-  // Only what happens before the release invalidates the shot.
-  auto before_release = [&](const std::optional<double>& t) { return t && *t <= t_release ? t : std::nullopt; };
-  result.slack_sling = before_release(onsets[0]);
-  result.counterweight_below_base = before_release(onsets[1]);
-  result.tip_below_base = before_release(onsets[2]);
-  result.counterweight_pulled = before_release(onsets[3]);
-  result.rope_bent = before_release(onsets[4]);
-  // The builder's loads: the largest sampled value of each over the phases (each before the
-  // release ends on its last sample, phase II on the release), refined once, in its phase.
-  const auto at_release = load_values(dynamics.snapshot(Phase::lifted, result.release.state));
-  for (int k = 0; k < (find_loads ? load_count : 0); ++k) {
+  catch_up();
+  for (const GivenWatch& w : watches) {
+    std::optional<OtherRelease> other;
+    const auto& crossed = w.watch.crossed;
+    // Its own shot ends two samples past the release, or where the window ends or a step failed first.
+    const bool stepped = crossed && (w.done(samples.size()) || !window_end_.empty() || w.spent());
+    if (!w.in_trough && stepped && !(drift_up_to_[std::min(*crossed + 2, samples.size() - 1)] > settings_.max_energy_drift)) {
+      const double time = given_release(w);
+      const OdeVector at = phase2_->y_exact_at(time);
+      const ReleasePoint point = point_from(time, at);
+      if (point.range > 0) other = OtherRelease{point, lifted_->work(at)};
+    }
+    result_.others.push_back(other);
+  }
+  result_.energy_drift = drift, result_.steps = steps;
+}
+
+// Only what happens before the release invalidates the shot.
+void ShotRun::mark_onsets() {
+  auto before_release = [&](const std::optional<double>& t) { return t && *t <= t_release_ ? t : std::nullopt; };
+  result_.slack_sling = before_release(onsets_[0]);
+  result_.counterweight_below_base = before_release(onsets_[1]);
+  result_.tip_below_base = before_release(onsets_[2]);
+  result_.counterweight_pulled = before_release(onsets_[3]);
+  result_.rope_bent = before_release(onsets_[4]);
+}
+
+// The builder's loads: the largest sampled value of each over the phases (each before the
+// release ends on its last sample, phase II on the release), refined once, in its phase.
+void ShotRun::find_loads() {
+  const auto at_release = load_values(dynamics_.snapshot(Phase::lifted, result_.release.state));
+  for (int k = 0; k < load_count; ++k) {
     struct PhasePoints {
       const PhaseRecord* record;
       std::vector<Point> points;
@@ -834,67 +935,93 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
       const auto index = static_cast<std::size_t>(top - points.begin());
       phases.push_back({&record, std::move(points), index});
     };
-    if (held_record) add(*held_record, *result.t_counterweight_free, held_record->samples().back().loads[k]);
-    add(phase1, result.t_liftoff, phase1.samples().back().loads[k]);
-    add(phase2, t_release, at_release[k]);
+    if (held_record_) add(*held_record_, *result_.t_counterweight_free, held_record_->samples().back().loads[k]);
+    add(*phase1_, result_.t_liftoff, phase1_->samples().back().loads[k]);
+    add(*phase2_, t_release_, at_release[k]);
     const PhasePoints* best = &phases.front();
     for (const PhasePoints& c : phases)
       if (c.points[c.top].f > best->points[best->top].f) best = &c;
-    result.loads[k] = best->record->refined_load_peak(k, best->points, best->top);
+    result_.loads[k] = best->record->refined_load_peak(k, best->points, best->top);
   }
-  if (find_loads) {
-    // The counterweight's lowest point: sampled at the step ends of the phases up to the release
-    // and of phase III after it, then, where the lowest sample has a neighbour on each side, the
-    // minimum between them, so that it does not depend on where the steps fall: its time on the
-    // interpolant, its height there on the solution integrated anew. The interpolant's error
-    // (~1e-7, scaled) moves the time, and the height at a minimum only by its square.
-    std::vector<Point> heights;
-    for (const PhaseRecord* record : {held_record.get(), &phase1, &phase2})
-      if (record)
-        for (const auto& sample : record->samples())
-          if (sample.t < t_release && (heights.empty() || sample.t > heights.back().x)) heights.push_back({sample.t, sample.counterweight_height});
-    heights.push_back({t_release, dynamics.snapshot(Phase::lifted, result.release.state).counterweight_height});
-    PhaseIntegrator released(dynamics, Phase::released, settings);
-    const OdeVector y_iii = released.vector_of(result.release.state, result.work);
-    std::vector<StepEnd> ends_iii{released.step_end(t_release, y_iii, dynamics.snapshot(Phase::released, released.state(y_iii)))};
-    result.phase_iii_cut = follow_released(e, settings, result.release.state, result.work, t_release, released,
-                                           [&](double, const OdeVector&, double time, const OdeVector& at) {
-                                             const Snapshot s = dynamics.snapshot(Phase::released, released.state(at));
-                                             ends_iii.push_back(released.step_end(time, at, s));
-                                             heights.push_back({time, s.counterweight_height});
-                                           });
-    const auto height_at = [&](double time, bool exact) {
-      if (time > t_release) {
-        const auto after = std::upper_bound(ends_iii.begin() + 1, ends_iii.end() - 1, time, [](double x, const StepEnd& end) { return x < end.t; });
-        const StepEnd& start = *(after - 1);
-        const OdeVector y = exact ? released.at(start.t, start.y, time) : hermite(start, *after, time, released.angles(), released.dimension());
-        return dynamics.snapshot(Phase::released, released.state(y)).counterweight_height;
-      }
-      const PhaseRecord& record = held_record && time <= *result.t_counterweight_free ? *held_record : time <= result.t_liftoff ? phase1 : phase2;
-      return (exact ? record.snapshot_exact_at(time) : record.snapshot_at(time)).counterweight_height;
-    };
-    const auto low = std::min_element(heights.begin(), heights.end(), [](const Point& a, const Point& b) { return a.f < b.f; });
-    double lowest = low->f;
-    if (low != heights.begin() && low + 1 != heights.end()) {
-      const Point estimate = parabola_vertex(*(low - 1), *low, *(low + 1));
-      const double t = peak_between([&](double time) { return -height_at(time, false); }, (low - 1)->x, estimate.x, (low + 1)->x, 1e-6, 1e-8);
-      lowest = std::min(lowest, height_at(t, true));
+}
+
+// The counterweight's lowest point: sampled at the step ends of the phases up to the release
+// and of phase III after it, then, where the lowest sample has a neighbour on each side, the
+// minimum between them, so that it does not depend on where the steps fall: its time on the
+// interpolant, its height there on the solution integrated anew. The interpolant's error
+// (~1e-7, scaled) moves the time, and the height at a minimum only by its square.
+void ShotRun::find_lowest_counterweight() {
+  std::vector<Point> heights;
+  for (const PhaseRecord* record : {held_record_.get(), &*phase1_, &*phase2_})
+    if (record)
+      for (const auto& sample : record->samples())
+        if (sample.t < t_release_ && (heights.empty() || sample.t > heights.back().x)) heights.push_back({sample.t, sample.counterweight_height});
+  heights.push_back({t_release_, dynamics_.snapshot(Phase::lifted, result_.release.state).counterweight_height});
+  PhaseIntegrator released(dynamics_, Phase::released, settings_);
+  const OdeVector y_iii = released.vector_of(result_.release.state, result_.work);
+  std::vector<StepEnd> ends_iii{released.step_end(t_release_, y_iii, dynamics_.snapshot(Phase::released, released.state(y_iii)))};
+  result_.phase_iii_cut = follow_released(e_, settings_, result_.release.state, result_.work, t_release_, released,
+                                          [&](double, const OdeVector&, double time, const OdeVector& at) {
+                                            const Snapshot s = dynamics_.snapshot(Phase::released, released.state(at));
+                                            ends_iii.push_back(released.step_end(time, at, s));
+                                            heights.push_back({time, s.counterweight_height});
+                                          });
+  const auto height_at = [&](double time, bool exact) {
+    if (time > t_release_) {
+      const auto after = std::upper_bound(ends_iii.begin() + 1, ends_iii.end() - 1, time, [](double x, const StepEnd& end) { return x < end.t; });
+      const StepEnd& start = *(after - 1);
+      const OdeVector y = exact ? released.at(start.t, start.y, time) : hermite(start, *after, time, released.angles(), released.dimension());
+      return dynamics_.snapshot(Phase::released, released.state(y)).counterweight_height;
     }
-    result.lowest_counterweight = lowest;
+    const PhaseRecord& record = held_record_ && time <= *result_.t_counterweight_free ? *held_record_
+        : time <= result_.t_liftoff                                                   ? *phase1_
+                                                                                      : *phase2_;
+    return (exact ? record.snapshot_exact_at(time) : record.snapshot_at(time)).counterweight_height;
+  };
+  const auto low = std::min_element(heights.begin(), heights.end(), [](const Point& a, const Point& b) { return a.f < b.f; });
+  double lowest = low->f;
+  if (low != heights.begin() && low + 1 != heights.end()) {
+    const Point estimate = parabola_vertex(*(low - 1), *low, *(low + 1));
+    const double t = peak_between([&](double time) { return -height_at(time, false); }, (low - 1)->x, estimate.x, (low + 1)->x, 1e-6, 1e-8);
+    lowest = std::min(lowest, height_at(t, true));
   }
+  result_.lowest_counterweight = lowest;
+}
+
+// The motion up to the release (and phase III after it, with TraceSpan::with_phase_iii); with
+// `unreleased`, phase II past the release, as far as the search looked.
+void ShotRun::write_trace(std::vector<TracePoint>* trace, double trace_dt, TraceSpan span, std::vector<TracePoint>* unreleased) {
   if (trace) {
-    record_trace(trace, lifted, phase2, result.t_liftoff, t_release, trace_dt);
+    record_trace(trace, *lifted_, *phase2_, result_.t_liftoff, t_release_, trace_dt);
     if (!(trace_dt > 0))  // the continuous record ends on the release already
-      trace->push_back({Phase::lifted, t_release, result.release.state, dynamics.snapshot(Phase::lifted, result.release.state), result.work});
-    if (span == TraceSpan::with_phase_iii) trace_released(dynamics, e, settings, result.release.state, result.work, t_release, trace_dt, *trace);
+      trace->push_back({Phase::lifted, t_release_, result_.release.state, dynamics_.snapshot(Phase::lifted, result_.release.state), result_.work});
+    if (span == TraceSpan::with_phase_iii)
+      trace_released(dynamics_, e_, settings_, result_.release.state, result_.work, t_release_, trace_dt, *trace);
   }
-  if (unreleased) {  // phase II past the release, as far as the search looked
+  if (unreleased) {
     std::vector<TracePoint> all;
-    record_trace(&all, lifted, phase2, t_release, search_end, trace_dt);
+    record_trace(&all, *lifted_, *phase2_, t_release_, search_end_, trace_dt);
     for (const TracePoint& p : all)
-      if (p.t > t_release) unreleased->push_back(p);
+      if (p.t > t_release_) unreleased->push_back(p);
   }
-  return result;
+}
+
+}  // namespace
+
+ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
+                         std::vector<TracePoint>* trace, double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads,
+                         const OtherReleases& others, TraceSpan span) {
+  use_gsl_return_codes();
+  ShotRun shot(dynamics, criterion, settings, static_cast<bool>(others));
+  shot.phase_one(trace, trace_dt);
+  shot.phase_two();
+  shot.search_window(unreleased != nullptr);
+  shot.find_release();
+  if (others) shot.follow_others(others);
+  shot.mark_onsets();
+  if (find_loads) shot.find_loads(), shot.find_lowest_counterweight();
+  shot.write_trace(trace, trace_dt, span, unreleased);
+  return shot.result();
 }
 
 }  // namespace trebuchet
