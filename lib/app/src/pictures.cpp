@@ -135,33 +135,47 @@ std::string scene_of(const ShotSettings& settings) {
   return air + ", " + describe_release(settings);
 }
 
-}  // namespace
-
-std::vector<std::string> picture_scripts() { return {"engine.gp", "paths.gp", "forces.gp", "energy.gp", "release.gp", "pin.gp", "animation.gp"}; }
-
-std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings, const Verification& verification,
-                                       const nlohmann::ordered_json& report, UnitSystem units) {
-  const ShotSeries series = shot_series(engine, settings, verification);
-  const double g = engine.material.g, H = pivot_height(engine);
-  const double mg_kN = engine.m * g / 1000, Mg_kN = engine.M * g / 1000, energy_kJ = engine.M * g * engine.L2 / 1000;
-  const ScaledDesign d = scaled_design(engine);
-  const Verification& v = series.verification;
-  const std::vector<TracePoint>& trace = series.trace;
+// What every picture of one shot draws on: the engine, its series and its figures, the moments
+// the pictures mark, the scale of its forces and energies, and the shot's words for the titles.
+struct PictureShot {
+  PictureShot(const Engine& engine, const ShotSettings& settings, const Verification& verification)
+      : engine(engine),
+        settings(settings),
+        series(shot_series(engine, settings, verification)),
+        H(pivot_height(engine)),
+        mg_kN(engine.m * engine.material.g / 1000),
+        Mg_kN(engine.M * engine.material.g / 1000),
+        energy_kJ(engine.M * engine.material.g * engine.L2 / 1000),
+        d(scaled_design(engine)),
+        scene(scene_of(settings)),
+        warnings(warning_labels(series.verification)) {
+    m.liftoff = series.liftoff, m.peak_reaction = series.peak_reaction, m.first_extreme = series.first_extreme,
+    m.second_extreme = series.second_extreme, m.release = series.release;
+  }
+  double seconds(std::size_t i) const { return series.trace[i].t * series.time_unit; }
+  const Engine& engine;
+  const ShotSettings& settings;
+  const ShotSeries series;
+  const double H;  // the pivot's height [m]
+  const double mg_kN, Mg_kN, energy_kJ;  // the projectile's and the counterweight's weights [kN], M g L2 [kJ]
+  const ScaledDesign d;
+  const std::string scene, warnings;  // the shot in words for the titles, and its warnings as labels
   Moments m;
-  m.liftoff = series.liftoff, m.peak_reaction = series.peak_reaction, m.first_extreme = series.first_extreme,
-  m.second_extreme = series.second_extreme, m.release = series.release;
-  auto seconds = [&](std::size_t i) { return trace[i].t * series.time_unit; };
-  const std::string scene = scene_of(settings), warnings = warning_labels(v);
+};
+
+// The data the scripts plot: every sample (shot.csv), the flight (flight.csv), and Q(t), eps(t), R(t)
+// and the running extremes of eq:F, each over its value at the release (release.csv).
+std::vector<PictureFile> data_files(const PictureShot& c) {
+  const Engine& engine = c.engine;
+  const ShotSeries& series = c.series;
+  const std::vector<TracePoint>& trace = series.trace;
+  const std::vector<SitePoint>& flight = series.flight;
   std::vector<PictureFile> files;
   files.push_back({"shot.csv", trace_csv(trace, engine)});
-  const std::vector<SitePoint>& flight = series.flight;
   std::ostringstream flight_csv;
   flight_csv << "x_m,y_m\n";
   for (const SitePoint& p : flight) flight_csv << num(p.x) << "," << num(p.y) << "\n";
   files.push_back({"flight.csv", flight_csv.str()});
-  auto stone_at = [&](double after) { return series.stone_at(after); };
-
-  // Q(t), eps(t), R(t) and the running extremes of eq:F, each over its value at the release.
   std::ostringstream release_csv;
   release_csv << "t_s,Q_over_Q_release,eps_over_eps_release,R_over_R_release,FS_perp,FR,FRh_max,FRh_min\n";
   const ShotSeries::Moment& at = series.phase_two[series.release_row];
@@ -172,9 +186,20 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
     release_csv << "\n";
   }
   files.push_back({"release.csv", release_csv.str()});
+  return files;
+}
 
-  // 1. The engine at four moments, to scale, in one frame that holds all four with a margin. The
-  // whipper's projectile leaves its arm where the others' lift off their trough.
+// 1. The engine at four moments, to scale, in one frame that holds all four with a margin. The
+// whipper's projectile leaves its arm where the others' lift off their trough.
+PictureFile engine_script(const PictureShot& c) {
+  const Engine& engine = c.engine;
+  const ShotSeries& series = c.series;
+  const Verification& v = series.verification;
+  const std::vector<TracePoint>& trace = series.trace;
+  const Moments& m = c.m;
+  const double H = c.H;
+  const std::string& scene = c.scene;
+  const auto seconds = [&](std::size_t i) { return c.seconds(i); };
   const bool whipper = engine.machine == MachineKind::whipper;
   const std::pair<std::size_t, std::string> panels[] = {
       {m.start, "at rest: θ_i = " + format_significant(engine.theta_i_deg, 3) + "°"},
@@ -210,9 +235,19 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
     engine_gp << "plot 0 lc rgb '#6b8e23' lw 2 notitle\n";
   }
   engine_gp << "unset multiplot\n";
-  files.push_back({"engine.gp", engine_gp.str()});
+  return {"engine.gp", engine_gp.str()};
+}
 
-  // 2. The paths, then the flight to its end; on the right the engine's part enlarged.
+// 2. The paths, then the flight to its end; on the right the engine's part enlarged.
+PictureFile paths_script(const PictureShot& c) {
+  const Engine& engine = c.engine;
+  const ShotSettings& settings = c.settings;
+  const ShotSeries& series = c.series;
+  const Verification& v = series.verification;
+  const std::vector<SitePoint>& flight = series.flight;
+  const double H = c.H;
+  const std::string& scene = c.scene;
+  const std::string& warnings = c.warnings;
   std::ostringstream paths;
   const SitePoint impact = flight.back();
   const double from_x = settings.range_from_release ? v.x : 0;  // R runs from the pivot, or from the release point (Denny's)
@@ -239,10 +274,20 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
         << "set title 'Phases I and II, enlarged' noenhanced\nset xrange [" << num(-engine.L1 - engine.L4 - 0.5) << ":"
         << num(std::max(engine.L1 + engine.L4, engine.L2 + engine.L3) + 0.5) << "]\nset yrange [-0.5:" << num(H + engine.L1 + engine.L4 + 0.5)
         << "]\nplot " << curves << "unset multiplot\n";
-  files.push_back({"paths.gp", paths.str()});
+  return {"paths.gp", paths.str()};
+}
 
-  // 3. The forces against time, in kN, with multiples of M g on the right; the marks' names
-  // stand above the frame, in two rows, clear of the curves and of each other.
+// 3. The forces against time, in kN, with multiples of M g on the right; the marks' names
+// stand above the frame, in two rows, clear of the curves and of each other.
+PictureFile forces_script(const PictureShot& c) {
+  const Engine& engine = c.engine;
+  const Moments& m = c.m;
+  const std::string& scene = c.scene;
+  const std::string& warnings = c.warnings;
+  const auto seconds = [&](std::size_t i) { return c.seconds(i); };
+  const double mg_kN = c.mg_kN;
+  const double Mg_kN = c.Mg_kN;
+  const bool whipper = c.engine.machine == MachineKind::whipper;
   auto marks = [&](std::ostringstream& gp) {
     const std::pair<std::size_t, const char*> at[] = {{m.liftoff, whipper ? "off the arm" : "lift-off"},
                                                       {m.first_extreme, "t_1"},
@@ -273,10 +318,21 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
          << ") with lines lw 2 title 'F_Rh (pivot, horizontal)', \\\n"
          << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($13*" << num(Mg_kN) << ") with lines lw 2 title '|F_H| (hinge)', \\\n"
          << "     '' every ::1 using (strcol(1) eq 'I' ? $2 : NaN):($14*" << num(mg_kN) << ") with lines lw 2 title 'N (trough on the projectile)'\n";
-  files.push_back({"forces.gp", forces.str()});
+  return {"forces.gp", forces.str()};
+}
 
-  // 4. Where the energy goes: each body's energy over its value at rest, against Delta U; the
-  // projectile keeps what it took at the release.
+// 4. Where the energy goes: each body's energy over its value at rest, against Delta U; the
+// projectile keeps what it took at the release.
+PictureFile energy_script(const PictureShot& c) {
+  const ShotSeries& series = c.series;
+  const Verification& v = series.verification;
+  const std::vector<TracePoint>& trace = series.trace;
+  const Moments& m = c.m;
+  const std::string& scene = c.scene;
+  const std::string& warnings = c.warnings;
+  const auto seconds = [&](std::size_t i) { return c.seconds(i); };
+  const ScaledDesign& d = c.d;
+  const double energy_kJ = c.energy_kJ;
   std::ostringstream energy;
   const Snapshot& at_release = trace[m.release].snapshot;
   const double drop_kJ = d.energy_drop() * energy_kJ;
@@ -314,9 +370,16 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
          << ") : " << num(taken_kJ) << ")" << (losses ? "+" + lost_kJ : "") << ") with lines lw 2 lc rgb 'black' title '"
          << (losses ? "total with what the losses took (conserved)" : "total (conserved)") << "', \\\n"
          << "     " << num(drop_kJ) << " with lines dt 2 lc rgb 'gray30' title 'ΔU (eq:DU)'\n";
-  files.push_back({"energy.gp", energy.str()});
+  return {"energy.gp", energy.str()};
+}
 
-  // 5. Why the release is where it is.
+// 5. Why the release is where it is.
+PictureFile release_script(const PictureShot& c) {
+  const ShotSettings& settings = c.settings;
+  const Moments& m = c.m;
+  const std::string& scene = c.scene;
+  const std::string& warnings = c.warnings;
+  const auto seconds = [&](std::size_t i) { return c.seconds(i); };
   const std::string objective = settings.criterion.release == Release::quality ? "Q" : settings.criterion.release == Release::efficiency ? "ε" : "R";
   std::ostringstream release;
   release << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'release.svg'")
@@ -333,10 +396,17 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
              "so far', \\\n"
           << "     '' every ::1 using 1:7 with lines lw 2 dt 2 title 'max F_Rh so far', '' every ::1 using 1:8 with lines lw 2 dt 2 title 'max −F_Rh "
              "so far'\n";
-  files.push_back({"release.gp", release.str()});
+  return {"release.gp", release.str()};
+}
 
-  // 6. The pin: R and Q of the releases at pin angles 20 deg either side of this shot's (the
-  // series' pin scan), each over its value here; a builder reads how exactly the pin must be bent.
+// 6. The pin: R and Q of the releases at pin angles 20 deg either side of this shot's (the
+// series' pin scan), each over its value here; a builder reads how exactly the pin must be bent.
+std::vector<PictureFile> pin_files(const PictureShot& c) {
+  const ShotSeries& series = c.series;
+  const Verification& v = series.verification;
+  const std::string& scene = c.scene;
+  const std::string& warnings = c.warnings;
+  std::vector<PictureFile> files;
   std::ostringstream pin_csv;
   pin_csv << "pin_angle_deg,R_m,Q\n";
   for (const PinShot& shot : series.pins)
@@ -361,10 +431,24 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
     pin << "plot 'pin.csv' every ::1 using 1:2 with linespoints lw 2 pt 7 ps 0.5 title 'R' axes x1y1, \\\n"
         << "     '' every ::1 using 1:($3*100) with linespoints lw 2 pt 7 ps 0.5 title 'Q' axes x1y2\n";
   files.push_back({"pin.gp", pin.str()});
+  return files;
+}
 
-  // 7. The animation: one frame every second sample of the engine, played at 4 % of real speed
-  // or slower, the stone flying on after the release; then the whole flight to its end, zoomed
-  // out, at about real speed.
+// 7. The animation: one frame every second sample of the engine, played at 4 % of real speed
+// or slower, the stone flying on after the release; then the whole flight to its end, zoomed
+// out, at about real speed.
+PictureFile animation_script(const PictureShot& c) {
+  const Engine& engine = c.engine;
+  const ShotSettings& settings = c.settings;
+  const ShotSeries& series = c.series;
+  const Verification& v = series.verification;
+  const std::vector<TracePoint>& trace = series.trace;
+  const std::vector<SitePoint>& flight = series.flight;
+  const Moments& m = c.m;
+  const double H = c.H;
+  const auto seconds = [&](std::size_t i) { return c.seconds(i); };
+  const auto stone_at = [&](double after) { return series.stone_at(after); };
+  const SitePoint impact = c.series.flight.back();
   const std::size_t stride = 2;
   const double frame_s = stride * (trace.size() > 1 ? seconds(1) - seconds(0) : 0.01);
   const int delay = 8;  // [1/100 s] per frame
@@ -404,10 +488,15 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
          << "plot 'flight.csv' every ::1 using 1:2 with lines lc rgb '#bbbbbb' dt 2 notitle, 0 lc rgb '#6b8e23' lw 2 notitle, " << num(impact.y)
          << " lc rgb 'gray40' notitle\n";
   }
-  files.push_back({"animation.gp", anim.str()});
+  return {"animation.gp", anim.str()};
+}
 
-  // 7. The page: the browser page's viewer (web/viewer.js) with this shot inside, and the
-  // pictures above for print.
+// 7. The page: the browser page's viewer (web/viewer.js) with this shot inside, and the
+// pictures above for print.
+PictureFile page_html(const PictureShot& c, const nlohmann::ordered_json& report, UnitSystem units) {
+  const Engine& engine = c.engine;
+  const ShotSettings& settings = c.settings;
+  const ShotSeries& series = c.series;
   nlohmann::ordered_json shot = report;
   shot["series"] = shot_series_json(series, engine);
   std::string data = shot.dump();
@@ -442,7 +531,21 @@ std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings&
        << viewer_script() << "\n</script>\n"
        << "<script>TrebuchetViewer.render(document.getElementById('viewer'), JSON.parse(document.getElementById('shot-data').textContent), {units: '"
        << (units == UnitSystem::imperial ? "imperial" : "si") << "'});</script>\n</body></html>\n";
-  files.push_back({"index.html", html.str()});
+  return {"index.html", html.str()};
+}
+
+}  // namespace
+
+std::vector<std::string> picture_scripts() { return {"engine.gp", "paths.gp", "forces.gp", "energy.gp", "release.gp", "pin.gp", "animation.gp"}; }
+
+std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings, const Verification& verification,
+                                       const nlohmann::ordered_json& report, UnitSystem units) {
+  const PictureShot shot(engine, settings, verification);
+  std::vector<PictureFile> files = data_files(shot);
+  for (const auto& script : {engine_script, paths_script, forces_script, energy_script, release_script}) files.push_back(script(shot));
+  for (PictureFile& file : pin_files(shot)) files.push_back(std::move(file));
+  files.push_back(animation_script(shot));
+  files.push_back(page_html(shot, report, units));
   return files;
 }
 
