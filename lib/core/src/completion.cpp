@@ -121,14 +121,9 @@ double objective_of(const Verification& v, const ReleaseCriterion& criterion) {
   return v.Q;
 }
 
-}  // namespace
-
-Completion complete_engine(const CompletionRequest& request) {
-  check_shot_settings(request.settings);
-  check_material(request.material);
-  const Attested& a = request.attested;
-  Completion out;
-  // Each attested value, positive (mb may be 0; theta_i is checked below with its range).
+// Each attested value, positive (mb may be 0; theta_i is checked with its range), of ordinary
+// size; its key is listed in out.attested.
+void check_attested(const Attested& a, Completion& out) {
   for (const auto& [value, name] : {std::pair{a.Lb, "Lb"},
                                     {a.L1, "L1"},
                                     {a.L2, "L2"},
@@ -158,29 +153,25 @@ Completion complete_engine(const CompletionRequest& request) {
       check_ordinary(*value, 1e-6, 1e6, key, "m", "attested length");
     out.attested.push_back(key);
   }
+}
 
-  Plan p;
-  p.material = request.material;
-  p.parts = request.parts;
-  p.projectile_diameter = request.projectile_diameter;
-  if (p.projectile_diameter) {  // a size beside a density is refused before the search, which would take it for a failed engine
-    Engine ball;
-    ball.m = 1, ball.projectile_diameter = p.projectile_diameter;
-    settings_for(ball, request.settings);
-  }
-  if (p.parts.beam_cm || p.parts.D_tip)
-    throw Error(ErrorKind::usage,
-                "complete builds a uniform beam from the attested values; a beam as built ({{beam_cm}}, {{D_tip}}) is checked "
-                "by a shot of the whole engine instead");
-  // The beam's length: attested, or, with mb and D attested, from eq:BeamMass, which ties them.
-  std::optional<double> beam_length = a.Lb;
-  std::string beam_source = beam_length ? "Lb = " + value_text(*a.Lb, "m") : std::string();
+// The beam's length and where it comes from.
+struct BeamLength {
+  std::optional<double> value;  // [m]
+  std::string source;
+};
+
+// The beam's length: attested, or, with mb and D attested, from eq:BeamMass, which ties them.
+BeamLength beam_length_of(const Attested& a, const Material& material, Completion& out) {
+  BeamLength beam{a.Lb, a.Lb ? "Lb = " + value_text(*a.Lb, "m") : std::string()};
+  std::optional<double>& beam_length = beam.value;
+  std::string& beam_source = beam.source;
   if (a.mb && a.D && *a.mb > 0) {
-    const double from_beam = *a.mb / beam_mass(*a.D, 1, p.material);  // mb over the mass of a metre of it
+    const double from_beam = *a.mb / beam_mass(*a.D, 1, material);  // mb over the mass of a metre of it
     if (beam_length && std::abs(from_beam - *beam_length) > agreement * *beam_length)
       throw Error(ErrorKind::usage,
                   "the attested values conflict: mb = " + value_text(*a.mb, "kg") + " and D = " + value_text(*a.D, "m") + " make a beam " +
-                      value_text(from_beam, "m") + " long by eq:BeamMass with wood of " + format_significant(p.material.wood_density, 4) +
+                      value_text(from_beam, "m") + " long by eq:BeamMass with wood of " + format_significant(material.wood_density, 4) +
                       " kg/m3, but " + beam_source + "; drop one of them, or give {{wood_density}}");
     if (!beam_length) {
       beam_length = from_beam, beam_source = "Lb = mb/(rho_d (pi/4) D^2) = " + value_text(from_beam, "m");
@@ -191,8 +182,15 @@ Completion complete_engine(const CompletionRequest& request) {
       out.implied.push_back("Lb (from mb and D, eq:BeamMass)");
     }
   }
-  p.L4 = a.L4, p.M = a.M, p.m = a.m, p.mb = a.mb, p.D = a.D, p.Lb = beam_length;
-  // L1 from itself, or from Lb - L2, before H: with H it fixes theta_i, or H fixes L1.
+  return beam;
+}
+
+// The arms and theta_i from what is attested: L1 from itself, or from Lb - L2, before H (with H
+// it fixes theta_i, or H fixes L1); L2 from itself, the drop, l or Lb - L1; F its standard
+// unless attested. What is implied, and from what, is listed in out.implied.
+void find_arms(const Attested& a, const BeamLength& beam, Plan& p, Completion& out) {
+  const std::optional<double>& beam_length = beam.value;
+  const std::string& beam_source = beam.source;
   Known L1, L2;
   bool theta_from_H = false;
   if (a.L1) L1.add(*a.L1, "L1 = " + value_text(*a.L1, "m"));
@@ -246,7 +244,12 @@ Completion complete_engine(const CompletionRequest& request) {
   if (!a.theta_i_deg && !theta_from_H) out.implied.push_back("theta_i = 30 deg (the paper's standard)");
   p.F = a.F.value_or(standard_F);
   if (!a.F) out.implied.push_back("F = 2/3 (the paper's standard)");
-  // The beam: eq:BeamMass ties D, mb and Lb with the wood's density.
+}
+
+// The beam: eq:BeamMass ties D, mb and Lb with the wood's density. And what the search needs to
+// find a size: a length, and M or m (both to maximise the range).
+void check_beam_and_size(const Attested& a, const std::optional<double>& beam_length, const Plan& p, const ReleaseCriterion& criterion,
+                         Completion& out) {
   if (a.mb && a.D && p.L1 && p.L2) {
     const double from_D = beam_mass(*a.D, *p.L1 + *p.L2, p.material);
     if (std::abs(from_D - *a.mb) > agreement * *a.mb)
@@ -264,12 +267,16 @@ Completion complete_engine(const CompletionRequest& request) {
     throw Error(ErrorKind::usage,
                 "complete needs an attested length (Lb, L1, L2, H, L4 or the drop, or mb with D) and the counterweight M or the stone m: "
                 "without them the best engine has no size, e.g. {{Lb}} 9.5m {{m}} 50kg");
-  const ReleaseCriterion& criterion = request.settings.criterion;
   if (criterion.release == Release::range && (!a.M || !a.m))
     throw Error(ErrorKind::usage,
                 "the range grows without bound with a heavier counterweight or a lighter stone: give M and m "
                 "for {{quality}} range, or maximise Q (the default)");
+}
 
+// The search over the values not attested (start and build): the engine whose shot maximises
+// the criterion among those that work, shot again under the request's own settings.
+void search_engine(const Plan& p, const CompletionRequest& request, Completion& out) {
+  const ReleaseCriterion& criterion = request.settings.criterion;
   const std::vector<double> x0 = start(p, out.chosen);
   double best = -1;
   // The search's shots with the default stepper at a tolerance of 1e-8, whatever the request's
@@ -347,8 +354,10 @@ Completion complete_engine(const CompletionRequest& request) {
     out.verification = verify_engine(out.engine, request.settings);
     ++out.simulations;
   }
+}
 
-  // The calculator's optimum for the same capacity, in vacuum at the base's level (section 6).
+// The calculator's optimum for the same capacity, in vacuum at the base's level (section 6).
+void add_calculator(const Plan& p, const CompletionRequest& request, Completion& out) {
   ShotSettings paper;
   paper.integrator = request.settings.integrator;
   const Verification vacuum = verify_engine(out.engine, paper);
@@ -363,6 +372,35 @@ Completion complete_engine(const CompletionRequest& request) {
   } catch (const Error& e) {
     out.calculator_note = e.named_message();  // names kept for the program
   }
+}
+
+}  // namespace
+
+Completion complete_engine(const CompletionRequest& request) {
+  check_shot_settings(request.settings);
+  check_material(request.material);
+  const Attested& a = request.attested;
+  Completion out;
+  check_attested(a, out);
+  Plan p;
+  p.material = request.material;
+  p.parts = request.parts;
+  p.projectile_diameter = request.projectile_diameter;
+  if (p.projectile_diameter) {  // a size beside a density is refused before the search, which would take it for a failed engine
+    Engine ball;
+    ball.m = 1, ball.projectile_diameter = p.projectile_diameter;
+    settings_for(ball, request.settings);
+  }
+  if (p.parts.beam_cm || p.parts.D_tip)
+    throw Error(ErrorKind::usage,
+                "complete builds a uniform beam from the attested values; a beam as built ({{beam_cm}}, {{D_tip}}) is checked "
+                "by a shot of the whole engine instead");
+  const BeamLength beam = beam_length_of(a, p.material, out);
+  p.L4 = a.L4, p.M = a.M, p.m = a.m, p.mb = a.mb, p.D = a.D, p.Lb = beam.value;
+  find_arms(a, beam, p, out);
+  check_beam_and_size(a, beam.value, p, request.settings.criterion, out);
+  search_engine(p, request, out);
+  add_calculator(p, request, out);
   return out;
 }
 
