@@ -65,6 +65,176 @@ OptimalEngine in_option_words(OptimalEngine design) {
   return design;
 }
 
+// The workbook opens on the paper's examples, or on two givens: R and T on the capacity sheet, R
+// and another on the sheet for R and one parameter, Lb and another on the sheet for Lb and one
+// (Lb first), any other pair on the last. Each sheet keeps its example's block (the sheet for Lb
+// and one opens on F = 1) unless --theta or --F is given; the sheet the givens open on takes the
+// block as the calculator would. Givens the calculator refuses still open their sheet, which
+// says why: the refusal is returned, for the run to exit as the calculator does.
+std::optional<Error> open_sheets(const ScalingTable& table, const DesignRequest& request, std::vector<Given> givens, bool block_given,
+                                 SpreadsheetInputs& inputs) {
+  const auto set_block = [&](DesignRequest& sheet) { sheet.theta_i_deg = request.theta_i_deg, sheet.F = request.F; };
+  for (DesignRequest* sheet : {&inputs.capacity, &inputs.range_and_one, &inputs.any_pair, &inputs.beam_length}) {
+    if (block_given) set_block(*sheet);
+    sheet->branch = request.branch, sheet->material = request.material;
+  }
+  if (givens.empty()) return std::nullopt;
+  if (givens.size() != 2)
+    throw Error(ErrorKind::given_count,
+                "--spreadsheet opens on the paper's examples, or on exactly two givens; found " + std::to_string(givens.size()));
+  std::sort(givens.begin(), givens.end(), [](const Given& a, const Given& b) { return a.quantity < b.quantity; });
+  const bool has_R = givens[0].quantity == Quantity::R;
+  if (givens[1].quantity == Quantity::Lb) std::swap(givens[0], givens[1]);
+  const bool has_Lb = givens[0].quantity == Quantity::Lb;
+  DesignRequest& sheet = has_Lb                    ? inputs.beam_length
+      : has_R && givens[1].quantity == Quantity::T ? inputs.capacity
+      : has_R                                      ? inputs.range_and_one
+                                                   : inputs.any_pair;
+  sheet.first = givens[0], sheet.second = givens[1];
+  set_block(sheet);
+  try {
+    design_optimal_engine(table, sheet);
+  } catch (const Error& e) {
+    // The workbook has no extrapolation: the calculator's advice to add it is cut.
+    std::string why = e.named_message();
+    if (const std::size_t cut = why.find("; or add {{extrapolate}}"); cut != std::string::npos) why.resize(cut);
+    const Error refusal(e.kind(), why);
+    inputs.refusal = {&sheet,
+                      "The calculator refuses the givens this sheet opened on (trebuchet-calc: exit " +
+                          std::to_string(exit_code(Program::calc, e.kind())) + "): " + refusal.message(option_word)};
+    return refusal;
+  }
+  return std::nullopt;
+}
+
+// The user's sites: a row each on the sheet "your sites", a refused row with its reason (a name
+// longer than a cell holds too, the good rows kept); how many were refused. --scale sets the
+// sheet "model scaling": the sites are designed full size, as the sheet designs them.
+int read_sites(std::istream& input, const std::string& batch, const ScalingTable& table, const DesignRequest& request, SpreadsheetInputs& inputs) {
+  UserSites sites{batch == "-" ? std::string("stdin") : std::filesystem::path(batch).filename().string(), {}, {}};
+  DesignRequest full_size = request;
+  full_size.scale = 1;
+  int overlong_rows = 0;
+  const int failures = run_batch(
+      input, table, full_size, [&](const std::vector<std::string>& passed) { sites.columns = passed; },
+      [&](const BatchRow& row) {
+        const std::string overlong = overlong_cell(sites.columns, row.passed);
+        const std::string refusal = row.error ? row.error->message(option_word) : overlong;
+        if (!refusal.empty()) std::cerr << message_start() + ("trebuchet-calc: line " + std::to_string(row.line) + ": " + refusal + "\n");
+        if (!row.error && !overlong.empty()) ++overlong_rows;
+        sites.rows.push_back(
+            {row.line, row.passed, row.request && overlong.empty() ? std::optional<DesignRequest>(*row.request) : std::nullopt, refusal});
+      });
+  inputs.sites = std::move(sites);
+  return failures + overlong_rows;
+}
+
+// --spreadsheet: the calculator as a workbook, opening on the givens or on the batch's sites.
+int write_workbook(const ScalingTable& table, const DesignRequest& request, const std::vector<Given>& givens, bool block_given, bool scale_given,
+                   std::istream& input, const std::string& batch, const std::string& spreadsheet) {
+  SpreadsheetInputs inputs;
+  inputs.material = request.material;
+  if (scale_given) inputs.model_scale = request.scale;  // the sheet "model scaling" opens on it
+  const std::optional<Error> refusal = open_sheets(table, request, givens, block_given, inputs);
+  const int failures = batch.empty() ? 0 : read_sites(input, batch, table, request, inputs);
+  write_spreadsheet(table, inputs, spreadsheet);
+  std::cout << "wrote " << spreadsheet << ": the calculator as a workbook with live formulas (docs/spreadsheet.md)";
+  if (inputs.sites)
+    std::cout << ", opening on your " << inputs.sites->rows.size() << " site(s) on the sheet 'your sites'"
+              << (failures > 0 ? ", " + std::to_string(failures) + " of them refused, each with its reason in its row" : std::string());
+  std::cout << "\n";
+  if (refusal) {
+    std::cerr << "trebuchet-calc: " << refusal->message(option_word) << "\n";
+    return exit_code(Program::calc, refusal->kind());
+  }
+  if (failures > 0) {
+    std::cerr << "trebuchet-calc: " << failures << " row(s) refused; the workbook holds every row, the refused ones with their reasons\n";
+    return exit_code(Program::calc, ErrorKind::batch_rows);
+  }
+  return 0;
+}
+
+// --batch: a design a row, as CSV or JSON. A row is printed only once it is whole, so that a
+// failure cannot leave half a row. A failed row keeps its place, with its pass-through cells and
+// the message under "error".
+int print_batch(std::istream& input, const ScalingTable& table, const DesignRequest& request, bool json, int digits) {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  std::vector<std::string> passed_columns;
+  const std::size_t design_columns = design_csv_header(table.machine).size();
+  const auto progress = progress_bar("rows");  // a file's rows are not counted ahead: no total
+  std::size_t rows_done = 0;
+  const auto print_header = [&](const std::vector<std::string>& passed) {
+    passed_columns = passed;
+    std::vector<std::string> header = {"line"};
+    header.insert(header.end(), passed.begin(), passed.end());
+    for (const std::string& column : design_csv_header(table.machine)) header.push_back(column);
+    header.push_back("error");
+    if (!json) std::cout << csv_line(header);
+  };
+  const auto print_row = [&](const BatchRow& row) {
+    if (progress) progress(++rows_done, 0);
+    // One write a message: the error stream is unbuffered.
+    if (row.error)
+      std::cerr << message_start() + ("trebuchet-calc: line " + std::to_string(row.line) + ": " + row.error->message(option_word) + "\n");
+    if (json) {
+      nlohmann::ordered_json out = {{"line", row.line}};
+      for (std::size_t k = 0; k < passed_columns.size(); ++k) out[passed_columns[k]] = row.passed[k];
+      if (row.design)
+        out.update(design_json(in_option_words(*row.design)));
+      else
+        out.update({{"error", row.error->message(option_word)}, {"exit_code", exit_code(Program::calc, row.error->kind())}});
+      rows.push_back(out);
+      return;
+    }
+    std::string line = std::to_string(row.line);
+    for (const std::string& cell : row.passed) {
+      line += ',';
+      append_csv_cell(line, cell);
+    }
+    line += ',';
+    line += row.design ? design_csv_text(in_option_words(*row.design), digits) : std::string(design_columns - 1, ',');
+    line += ',';
+    append_csv_cell(line, row.error ? row.error->message(option_word) : "");
+    line += '\n';
+    std::cout << line;
+  };
+  const int failures = run_batch(input, table, request, print_header, print_row);
+  if (progress) progress(rows_done, rows_done);
+  if (json) std::cout << pretty_json(rows);
+  if (failures > 0) {
+    std::cerr << "trebuchet-calc: " << failures << " row(s) failed; the other rows are in the output\n";
+    return exit_code(Program::calc, ErrorKind::batch_rows);
+  }
+  return 0;
+}
+
+// The request the givens complete: the block, the branch, the material and the scale as given.
+DesignRequest request_of(const Options& options, const ScalingTable& table) {
+  DesignRequest request;
+  request.theta_i_deg = parse_theta(options.theta, "--theta");
+  request.F = parse_positive(options.F, UnitDimension::dimensionless, "--F");
+  request.branch = parse_branch_choice(options.setting(Setting::branch, "auto"));
+  request.material = material_of(options.material, table.reference);
+  check_material(request.material);  // a material beyond the ordinary is named as such, not as a capacity out of range
+  request.extrapolate = options.extrapolate;
+  const std::string scale = options.setting(Setting::scale);
+  if (!scale.empty()) request.scale = parse_positive(scale, UnitDimension::dimensionless, "--scale");
+  return request;
+}
+
+// The batch's file, opened into `file`, or stdin for "-".
+std::istream& batch_input(const std::string& batch, std::ifstream& file) {
+  if (batch == "-") return std::cin;
+  if (!batch.empty()) {
+    std::error_code error;
+    if (std::filesystem::is_directory(batch, error))
+      throw Error(ErrorKind::usage, "--batch: '" + batch + "' is a directory; give a CSV file or - for stdin");
+    file.open(batch);
+    if (!file) throw Error(ErrorKind::usage, "--batch: cannot read '" + batch + "'; give a CSV file or - for stdin");
+  }
+  return file;
+}
+
 int run(const Options& options, bool format_given, bool F_given, bool block_given) {
   const std::string format = options.setting(Setting::format, "table"), digits_text = options.setting(Setting::digits);
   const std::string batch = options.setting(Setting::batch), spreadsheet = options.setting(Setting::spreadsheet);
@@ -77,7 +247,6 @@ int run(const Options& options, bool format_given, bool F_given, bool block_give
   const MachineKind machine = machine_text.empty() ? MachineKind::hinged : parse_machine(machine_text, "--machine");
   if (!machine_text.empty() && !table_file.empty())
     throw Error(ErrorKind::usage, "--table: a table names its own machine (its key \"machine\"); drop --machine");
-
   if (machine != MachineKind::hinged && !spreadsheet.empty())
     throw Error(ErrorKind::usage, "--spreadsheet writes the paper's engine's calculator (tab:CPNC); drop --machine");
   const ScalingTable table_from_file = table_file.empty() ? ScalingTable{} : load_scaling_table(table_file);
@@ -85,35 +254,15 @@ int run(const Options& options, bool format_given, bool F_given, bool block_give
   if (table.machine != MachineKind::hinged && F_given)
     throw Error(ErrorKind::usage,
                 "--F: the " + machine_name(table.machine) + " machine's table holds the counterweight at the short arm's end; drop --F");
-
-  DesignRequest request;
-  request.theta_i_deg = parse_theta(options.theta, "--theta");
-  request.F = parse_positive(options.F, UnitDimension::dimensionless, "--F");
-  request.branch = parse_branch_choice(options.setting(Setting::branch, "auto"));
-  request.material = material_of(options.material, table.reference);
-  check_material(request.material);  // a material beyond the ordinary is named as such, not as a capacity out of range
-  request.extrapolate = options.extrapolate;
-  const std::string scale = options.setting(Setting::scale);
-  if (!scale.empty()) request.scale = parse_positive(scale, UnitDimension::dimensionless, "--scale");
-
+  DesignRequest request = request_of(options, table);
   std::vector<Given> givens;
   for (const auto& [quantity, text] : options.givens)
     if (!text.empty()) givens.push_back(parse_given(quantity_name(quantity), text));
-
   if (!batch.empty() && !givens.empty())
     throw Error(ErrorKind::given_count,
                 "--batch takes the givens from its file; drop --" + std::string(quantity_name(givens.front().quantity)) + " from the command line");
-  // The batch's file, or stdin for "-".
   std::ifstream file;
-  if (!batch.empty() && batch != "-") {
-    std::error_code error;
-    if (std::filesystem::is_directory(batch, error))
-      throw Error(ErrorKind::usage, "--batch: '" + batch + "' is a directory; give a CSV file or - for stdin");
-    file.open(batch);
-    if (!file) throw Error(ErrorKind::usage, "--batch: cannot read '" + batch + "'; give a CSV file or - for stdin");
-  }
-  std::istream& input = batch == "-" ? std::cin : file;
-
+  std::istream& input = batch_input(batch, file);
   if (!spreadsheet.empty()) {
     if (request.extrapolate)
       throw Error(ErrorKind::usage,
@@ -122,139 +271,9 @@ int run(const Options& options, bool format_given, bool F_given, bool block_give
     if (format_given || !digits_text.empty())
       throw Error(ErrorKind::usage,
                   std::string(format_given ? "--format" : "--digits") + " sets what is printed; --spreadsheet writes an .xlsx workbook, drop it");
-    // The workbook opens on the paper's examples, or on the givens: R and T on the capacity
-    // sheet, R and another on the sheet for R and one parameter, Lb and another on the sheet for
-    // Lb and one (Lb first), any other pair on the last.
-    SpreadsheetInputs inputs;
-    std::optional<Error> refusal;
-    inputs.material = request.material;
-    if (!scale.empty()) inputs.model_scale = request.scale;  // the sheet "model scaling" opens on it
-    // Each sheet keeps its example's block (the sheet for Lb and one opens on F = 1) unless
-    // --theta or --F is given; the sheet the givens open on takes the block as the calculator would.
-    const auto set_block = [&](DesignRequest& sheet) { sheet.theta_i_deg = request.theta_i_deg, sheet.F = request.F; };
-    for (DesignRequest* sheet : {&inputs.capacity, &inputs.range_and_one, &inputs.any_pair, &inputs.beam_length}) {
-      if (block_given) set_block(*sheet);
-      sheet->branch = request.branch, sheet->material = request.material;
-    }
-    if (givens.size() == 2) {
-      std::sort(givens.begin(), givens.end(), [](const Given& a, const Given& b) { return a.quantity < b.quantity; });
-      const bool has_R = givens[0].quantity == Quantity::R;
-      if (givens[1].quantity == Quantity::Lb) std::swap(givens[0], givens[1]);
-      const bool has_Lb = givens[0].quantity == Quantity::Lb;
-      DesignRequest& sheet = has_Lb                    ? inputs.beam_length
-          : has_R && givens[1].quantity == Quantity::T ? inputs.capacity
-          : has_R                                      ? inputs.range_and_one
-                                                       : inputs.any_pair;
-      sheet.first = givens[0], sheet.second = givens[1];
-      set_block(sheet);
-      // Givens the calculator refuses still open their sheet, which says why; the run exits as the calculator does.
-      try {
-        design_optimal_engine(table, sheet);
-      } catch (const Error& e) {
-        // The workbook has no extrapolation: the calculator's advice to add it is cut.
-        std::string why = e.named_message();
-        if (const std::size_t cut = why.find("; or add {{extrapolate}}"); cut != std::string::npos) why.resize(cut);
-        refusal = Error(e.kind(), why);
-        inputs.refusal = {&sheet,
-                          "The calculator refuses the givens this sheet opened on (trebuchet-calc: exit " +
-                              std::to_string(exit_code(Program::calc, e.kind())) + "): " + refusal->message(option_word)};
-      }
-    } else if (!givens.empty()) {
-      throw Error(ErrorKind::given_count,
-                  "--spreadsheet opens on the paper's examples, or on exactly two givens; found " + std::to_string(givens.size()));
-    }
-    // The user's sites: a row each on the sheet "your sites", a refused row with its reason.
-    int failures = 0, overlong_rows = 0;
-    if (!batch.empty()) {
-      UserSites sites{batch == "-" ? std::string("stdin") : std::filesystem::path(batch).filename().string(), {}, {}};
-      // --scale sets the sheet "model scaling" here: the sites are designed full size, as the sheet designs them.
-      DesignRequest full_size = request;
-      full_size.scale = 1;
-      failures = run_batch(
-          input, table, full_size, [&](const std::vector<std::string>& passed) { sites.columns = passed; },
-          [&](const BatchRow& row) {
-            // A name longer than a cell holds is refused with the row, the good rows kept.
-            const std::string overlong = overlong_cell(sites.columns, row.passed);
-            const std::string refusal = row.error ? row.error->message(option_word) : overlong;
-            if (!refusal.empty()) std::cerr << message_start() + ("trebuchet-calc: line " + std::to_string(row.line) + ": " + refusal + "\n");
-            if (!row.error && !overlong.empty()) ++overlong_rows;
-            sites.rows.push_back(
-                {row.line, row.passed, row.request && overlong.empty() ? std::optional<DesignRequest>(*row.request) : std::nullopt, refusal});
-          });
-      failures += overlong_rows;
-      inputs.sites = std::move(sites);
-    }
-    write_spreadsheet(table, inputs, spreadsheet);
-    std::cout << "wrote " << spreadsheet << ": the calculator as a workbook with live formulas (docs/spreadsheet.md)";
-    if (inputs.sites)
-      std::cout << ", opening on your " << inputs.sites->rows.size() << " site(s) on the sheet 'your sites'"
-                << (failures > 0 ? ", " + std::to_string(failures) + " of them refused, each with its reason in its row" : std::string());
-    std::cout << "\n";
-    if (refusal) {
-      std::cerr << "trebuchet-calc: " << refusal->message(option_word) << "\n";
-      return exit_code(Program::calc, refusal->kind());
-    }
-    if (failures > 0) {
-      std::cerr << "trebuchet-calc: " << failures << " row(s) refused; the workbook holds every row, the refused ones with their reasons\n";
-      return exit_code(Program::calc, ErrorKind::batch_rows);
-    }
-    return 0;
+    return write_workbook(table, request, givens, block_given, !options.setting(Setting::scale).empty(), input, batch, spreadsheet);
   }
-  if (!batch.empty()) {
-    const bool json = format == "json";
-    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-    std::vector<std::string> passed_columns;
-    const std::size_t design_columns = design_csv_header(table.machine).size();
-    const auto progress = progress_bar("rows");  // a file's rows are not counted ahead: no total
-    std::size_t rows_done = 0;
-    // A row is printed only once it is whole, so that a failure cannot leave half a row. A
-    // failed row keeps its place, with its pass-through cells and the message under "error".
-    const int failures = run_batch(
-        input, table, request,
-        [&](const std::vector<std::string>& passed) {
-          passed_columns = passed;
-          std::vector<std::string> header = {"line"};
-          header.insert(header.end(), passed.begin(), passed.end());
-          for (const std::string& column : design_csv_header(table.machine)) header.push_back(column);
-          header.push_back("error");
-          if (!json) std::cout << csv_line(header);
-        },
-        [&](const BatchRow& row) {
-          if (progress) progress(++rows_done, 0);
-          // One write a message: the error stream is unbuffered.
-          if (row.error)
-            std::cerr << message_start() + ("trebuchet-calc: line " + std::to_string(row.line) + ": " + row.error->message(option_word) + "\n");
-          if (json) {
-            nlohmann::ordered_json out = {{"line", row.line}};
-            for (std::size_t k = 0; k < passed_columns.size(); ++k) out[passed_columns[k]] = row.passed[k];
-            if (row.design)
-              out.update(design_json(in_option_words(*row.design)));
-            else
-              out.update({{"error", row.error->message(option_word)}, {"exit_code", exit_code(Program::calc, row.error->kind())}});
-            rows.push_back(out);
-            return;
-          }
-          std::string line = std::to_string(row.line);
-          for (const std::string& cell : row.passed) {
-            line += ',';
-            append_csv_cell(line, cell);
-          }
-          line += ',';
-          line += row.design ? design_csv_text(in_option_words(*row.design), digits) : std::string(design_columns - 1, ',');
-          line += ',';
-          append_csv_cell(line, row.error ? row.error->message(option_word) : "");
-          line += '\n';
-          std::cout << line;
-        });
-    if (progress) progress(rows_done, rows_done);
-    if (json) std::cout << pretty_json(rows);
-    if (failures > 0) {
-      std::cerr << "trebuchet-calc: " << failures << " row(s) failed; the other rows are in the output\n";
-      return exit_code(Program::calc, ErrorKind::batch_rows);
-    }
-    return 0;
-  }
-
+  if (!batch.empty()) return print_batch(input, table, request, format == "json", digits);
   if (givens.size() != 2) {
     std::string flags;
     for (Quantity quantity : all_quantities) flags += std::string(flags.empty() ? "" : " ") + given_field(quantity).flag;
