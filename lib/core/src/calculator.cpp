@@ -403,19 +403,20 @@ std::optional<std::array<double, param_count>> branch_steps(const TableBlock& bl
   return out;
 }
 
-OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignRequest& request) {
-  const Given& gi = request.first;
-  const Given& gj = request.second;
+namespace {
+
+// Both givens differ, each positive and finite.
+void check_givens(const Given& gi, const Given& gj) {
   if (gi.quantity == gj.quantity)
     throw Error(ErrorKind::given_count,
                 "both givens are " + std::string(quantity_name(gi.quantity)) + "; give two different quantities, e.g. {{R}} 150m {{m}} 50kg");
   for (const Given& g : {gi, gj})
     if (!(g.value > 0) || !std::isfinite(g.value)) throw Error(ErrorKind::bad_number, describe_given(g) + " must be a positive finite number");
+}
 
-  const TableBlock* block = &table.block(request.theta_i_deg, request.F);
-
-  const SizeFactors scaling = size_factors(1, table.reference, 1, request.material);
-  const Material& m = request.material;
+// How the material scales the table's masses, energies and diameters, within the range of numbers.
+SizeFactors checked_size_factors(const ScalingTable& table, const Material& m) {
+  const SizeFactors scaling = size_factors(1, table.reference, 1, m);
   if (!(std::isfinite(scaling.mass) && std::isfinite(scaling.energy) && std::isfinite(scaling.diameter) && scaling.mass > 0 && scaling.diameter > 0 &&
         scaling.energy > 0 && scaling.mass < 1e300 && scaling.mass > 1e-300))
     throw Error(ErrorKind::bad_number,
@@ -423,19 +424,28 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
                     " Pa, wood density " + format_significant(m.wood_density, 3) + " kg/m^3, g = " + format_significant(m.g, 3) +
                     " m/s^2) scales the masses by " +
                     "a factor beyond the range of numbers; give values of ordinary size, e.g. the paper's 1/300, 12GPa, 700kg/m3, 9.81");
-  const double log_i = std::log(gi.value / material_factor(gi.quantity, scaling));
-  const double log_j = std::log(gj.value / material_factor(gj.quantity, scaling));
+  return scaling;
+}
 
+// The solutions of the pair in every segment of the block, and, where Lb is given, the Lb that
+// optimal engines reach per segment (for the message when none holds).
+struct Solutions {
   std::vector<Candidate> candidates;
-  std::string beam_length_spans;  // where Lb is given: the Lb that optimal engines reach per segment
-  for (const Segment& segment : block->segments) {
-    auto law_i = log_law(table, *block, segment, gi.quantity);
-    auto law_j = log_law(table, *block, segment, gj.quantity);
+  std::string beam_length_spans;
+};
+
+Solutions solve_pair(const ScalingTable& table, const TableBlock& block, const Given& gi, double log_i, const Given& gj, double log_j) {
+  Solutions out;
+  std::vector<Candidate>& candidates = out.candidates;
+  std::string& beam_length_spans = out.beam_length_spans;
+  for (const Segment& segment : block.segments) {
+    auto law_i = log_law(table, block, segment, gi.quantity);
+    auto law_j = log_law(table, block, segment, gj.quantity);
     if (law_i && law_j) {
       if (auto c = invert_pair(segment, *law_i, log_i, *law_j, log_j)) candidates.push_back(*c);
     } else {
       const bool first_is_Lb = !law_i;
-      const BeamLengthSolutions solved = invert_with_beam_length(*block, segment, first_is_Lb ? *law_j : *law_i, first_is_Lb ? log_j : log_i,
+      const BeamLengthSolutions solved = invert_with_beam_length(block, segment, first_is_Lb ? *law_j : *law_i, first_is_Lb ? log_j : log_i,
                                                                  first_is_Lb ? log_i : log_j);
       candidates.insert(candidates.end(), solved.found.begin(), solved.found.end());
       // A span beyond the range of numbers (an extreme l) says nothing; the message then names the inversion.
@@ -444,7 +454,105 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
             format_significant(solved.Lb_max, 3) + " m in segment " + describe_interval(segment.X_min, segment.X_max);
     }
   }
+  return out;
+}
 
+// No segment holds the pair (and no extrapolation is asked for, or none solves it): the refusal
+// says where the pair lies, and in the user's terms what would bring it in.
+[[noreturn]] void refuse_uncovered(const ScalingTable& table, const TableBlock* block, const DesignRequest& request, const Solutions& solutions,
+                                   const SizeFactors& scaling) {
+  const Given& gi = request.first;
+  const Given& gj = request.second;
+  const std::vector<Candidate>& candidates = solutions.candidates;
+  const std::string& beam_length_spans = solutions.beam_length_spans;
+  auto pair = [&] { return describe_given(gi) + ", " + describe_given(gj); };
+  auto covered = [&] { return describe_interval(block->X_covered_min(), block->X_covered_max()); };
+  std::string tried;
+  for (const Candidate& c : candidates)
+    tried += (tried.empty() ? "" : ", ") + std::string("X = ") + format_significant(c.X(), 3) + " in segment " +
+        describe_interval(c.segment->X_min, c.segment->X_max);
+  const bool both_capacity = (gi.quantity == Quantity::R || gi.quantity == Quantity::T) && (gj.quantity == Quantity::R || gj.quantity == Quantity::T);
+  std::string message = both_capacity
+      ? "capacity " + pair() + " has X = " + format_significant(candidates.front().X(), 3) + ", outside the interval " + covered() + " covered by " +
+          table_words(table) + " for " + describe_block(*block) + "; raise T or lower R to lower X (X = (5 ln(R/R0) - ln(T/T0))/sqrt(26))"
+      : "no meaningful capacity for the pair " + pair() + " at " + describe_block(*block) + ": " +
+          (!beam_length_spans.empty() && candidates.empty()
+               ? "optimal engines with " + describe_given(first_is_beam_length(gi, gj) ? gj : gi) + " have Lb from " + beam_length_spans
+               : (tried.empty() ? std::string("no segment gives a solution") : "the inversion gives " + tried) + ", outside the covered interval " +
+                   covered());
+  const bool l_given = gi.quantity == Quantity::l || gj.quantity == Quantity::l;
+  const auto l_range = l_given ? l_range_for(table, *block) : std::nullopt;
+  const double l_value = gi.quantity == Quantity::l ? gi.value : gj.value;
+  // In the user's terms: the ranges that work with the other given held.
+  if (l_range && (l_value < l_range->first || l_value > l_range->second)) {
+    // l fixes X whatever the size: no other given can bring it in; another block may.
+    message = "no optimal engine at " + describe_block(*block) + " has " + describe_given(gi.quantity == Quantity::l ? gi : gj) +
+        ": there l = L1/L2 runs from " + format_significant(l_range->first, 3) + " to " + format_significant(l_range->second, 3) +
+        " whatever the engine's size; give l in that span";
+    for (const TableBlock& other : table.blocks)
+      if (&other != block)
+        if (const auto span = l_range_for(table, other); span && l_value >= span->first && l_value <= span->second)
+          message += ", or the block " + describe_block(other) + " (l from " + format_significant(span->first, 3) + " to " +
+              format_significant(span->second, 3) + ")";
+  } else if (const auto range = R_range_for(table, *block, gi, gj, scaling)) {
+    const Given& other = gi.quantity == Quantity::R ? gj : gi;
+    message += "; with " + describe_given(other) + " the table covers R from " + format_significant(range->first, 3) + " m to " +
+        format_significant(range->second, 3) + " m: change {{R}} to lie there, or change {{" + std::string(quantity_name(other.quantity)) + "}}";
+  } else if (!both_capacity) {
+    message += "; give another pair";
+  }
+  // A model of a full-size engine lies at the full-size engine's X: design that and scale it.
+  const bool short_range = (gi.quantity == Quantity::R && gi.value < 0.25 * table.R0) || (gj.quantity == Quantity::R && gj.value < 0.25 * table.R0);
+  if (short_range)
+    message +=
+        "; for a small model of a full-size engine, design the full-size one and scale it, e.g. "
+        "{{R}} 425m {{T}} 224kJ {{scale}} 80/425 (tab:Denny's 80 m model)";
+  message += request.extrapolate ? "; even {{extrapolate}} finds no segment that solves the pair"
+                                 : "; or add {{extrapolate}} to use the nearest segment beyond its interval";
+  throw Error(ErrorKind::out_of_range, message);
+}
+
+// Where a lower and an upper branch compete at the engine's X: a warning with the jump of each
+// parameter at the switch (eq:ZiZj_vs_X), and the steps themselves.
+void warn_branches(const TableBlock& block, const Segment& segment, OptimalEngine& result) {
+  double overlap_lo = -std::numeric_limits<double>::infinity(), overlap_hi = -overlap_lo;
+  for (const Segment& s : block.segments)
+    if (s.branch != Branch::none) {
+      overlap_lo = std::max(overlap_lo, s.X_min);
+      overlap_hi = std::min(overlap_hi, s.X_max);
+    }
+  if (result.coordinates.X >= overlap_lo && result.coordinates.X <= overlap_hi) {
+    result.branch_steps = branch_steps(block);
+    if (result.branch_steps) {
+      std::string steps;
+      for (Param param : all_params) {
+        const double percent = 100 * ((*result.branch_steps)[index(param)] - 1);
+        steps += (steps.empty() ? "" : ", ") + std::string("S_") + std::string(param_name(param)) + " = " + (percent >= 0 ? "+" : "") +
+            format_significant(percent, 2) + "%";
+      }
+      result.warnings.push_back("X = " + format_significant(result.coordinates.X, 3) + " lies where a lower and an upper branch compete " +
+                                describe_interval(overlap_lo, overlap_hi) + "; this is the " + std::string(branch_name(segment.branch)) +
+                                " branch. At X_d = " + format_number(*block.branch_switch_X) + " the optimum jumps by " + steps +
+                                " (eq:ZiZj_vs_X); {{branch}} lower|upper selects one");
+    }
+  }
+}
+
+}  // namespace
+
+OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignRequest& request) {
+  const Given& gi = request.first;
+  const Given& gj = request.second;
+  check_givens(gi, gj);
+
+  const TableBlock* block = &table.block(request.theta_i_deg, request.F);
+
+  const SizeFactors scaling = checked_size_factors(table, request.material);
+  const double log_i = std::log(gi.value / material_factor(gi.quantity, scaling));
+  const double log_j = std::log(gj.value / material_factor(gj.quantity, scaling));
+
+  const Solutions solutions = solve_pair(table, *block, gi, log_i, gj, log_j);
+  const std::vector<Candidate>& candidates = solutions.candidates;
   std::vector<Candidate> inside;
   for (const Candidate& c : candidates)
     if (c.inside()) inside.push_back(c);
@@ -459,53 +567,7 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
   if (!inside.empty()) {
     chosen = choose(inside, *block, request.branch, result.warnings);
   } else {
-    std::string tried;
-    for (const Candidate& c : candidates)
-      tried += (tried.empty() ? "" : ", ") + std::string("X = ") + format_significant(c.X(), 3) + " in segment " +
-          describe_interval(c.segment->X_min, c.segment->X_max);
-    if (candidates.empty() || !request.extrapolate) {
-      const bool both_capacity = (gi.quantity == Quantity::R || gi.quantity == Quantity::T) &&
-          (gj.quantity == Quantity::R || gj.quantity == Quantity::T);
-      std::string message = both_capacity ? "capacity " + pair() + " has X = " + format_significant(candidates.front().X(), 3) +
-              ", outside the interval " + covered() + " covered by " + table_words(table) + " for " + describe_block(*block) +
-              "; raise T or lower R to lower X (X = (5 ln(R/R0) - ln(T/T0))/sqrt(26))"
-                                          : "no meaningful capacity for the pair " + pair() + " at " + describe_block(*block) + ": " +
-              (!beam_length_spans.empty() && candidates.empty()
-                   ? "optimal engines with " + describe_given(first_is_beam_length(gi, gj) ? gj : gi) + " have Lb from " + beam_length_spans
-                   : (tried.empty() ? std::string("no segment gives a solution") : "the inversion gives " + tried) +
-                       ", outside the covered interval " + covered());
-      const bool l_given = gi.quantity == Quantity::l || gj.quantity == Quantity::l;
-      const auto l_range = l_given ? l_range_for(table, *block) : std::nullopt;
-      const double l_value = gi.quantity == Quantity::l ? gi.value : gj.value;
-      // In the user's terms: the ranges that work with the other given held.
-      if (l_range && (l_value < l_range->first || l_value > l_range->second)) {
-        // l fixes X whatever the size: no other given can bring it in; another block may.
-        message = "no optimal engine at " + describe_block(*block) + " has " + describe_given(gi.quantity == Quantity::l ? gi : gj) +
-            ": there l = L1/L2 runs from " + format_significant(l_range->first, 3) + " to " + format_significant(l_range->second, 3) +
-            " whatever the engine's size; give l in that span";
-        for (const TableBlock& other : table.blocks)
-          if (&other != block)
-            if (const auto span = l_range_for(table, other); span && l_value >= span->first && l_value <= span->second)
-              message += ", or the block " + describe_block(other) + " (l from " + format_significant(span->first, 3) + " to " +
-                  format_significant(span->second, 3) + ")";
-      } else if (const auto range = R_range_for(table, *block, gi, gj, scaling)) {
-        const Given& other = gi.quantity == Quantity::R ? gj : gi;
-        message += "; with " + describe_given(other) + " the table covers R from " + format_significant(range->first, 3) + " m to " +
-            format_significant(range->second, 3) + " m: change {{R}} to lie there, or change {{" + std::string(quantity_name(other.quantity)) + "}}";
-      } else if (!both_capacity) {
-        message += "; give another pair";
-      }
-      // A model of a full-size engine lies at the full-size engine's X: design that and scale it.
-      const bool short_range = (gi.quantity == Quantity::R && gi.value < 0.25 * table.R0) ||
-          (gj.quantity == Quantity::R && gj.value < 0.25 * table.R0);
-      if (short_range)
-        message +=
-            "; for a small model of a full-size engine, design the full-size one and scale it, e.g. "
-            "{{R}} 425m {{T}} 224kJ {{scale}} 80/425 (tab:Denny's 80 m model)";
-      message += request.extrapolate ? "; even {{extrapolate}} finds no segment that solves the pair"
-                                     : "; or add {{extrapolate}} to use the nearest segment beyond its interval";
-      throw Error(ErrorKind::out_of_range, message);
-    }
+    if (candidates.empty() || !request.extrapolate) refuse_uncovered(table, block, request, solutions, scaling);
     std::vector<Candidate> allowed;
     for (const Candidate& c : candidates)
       if (branch_allowed(c, request.branch)) allowed.push_back(c);
@@ -560,29 +622,7 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
   if (chosen.amplification > warn_amplification) result.warnings.push_back("ill-conditioned pair: " + conditioning());
   require_representable(result, [&] { return "the request " + pair(); });
 
-  if (segment.branch != Branch::none) {
-    double overlap_lo = -std::numeric_limits<double>::infinity(), overlap_hi = -overlap_lo;
-    for (const Segment& s : block->segments)
-      if (s.branch != Branch::none) {
-        overlap_lo = std::max(overlap_lo, s.X_min);
-        overlap_hi = std::min(overlap_hi, s.X_max);
-      }
-    if (result.coordinates.X >= overlap_lo && result.coordinates.X <= overlap_hi) {
-      result.branch_steps = branch_steps(*block);
-      if (result.branch_steps) {
-        std::string steps;
-        for (Param param : all_params) {
-          const double percent = 100 * ((*result.branch_steps)[index(param)] - 1);
-          steps += (steps.empty() ? "" : ", ") + std::string("S_") + std::string(param_name(param)) + " = " + (percent >= 0 ? "+" : "") +
-              format_significant(percent, 2) + "%";
-        }
-        result.warnings.push_back("X = " + format_significant(result.coordinates.X, 3) + " lies where a lower and an upper branch compete " +
-                                  describe_interval(overlap_lo, overlap_hi) + "; this is the " + std::string(branch_name(segment.branch)) +
-                                  " branch. At X_d = " + format_number(*block->branch_switch_X) + " the optimum jumps by " + steps +
-                                  " (eq:ZiZj_vs_X); {{branch}} lower|upper selects one");
-      }
-    }
-  }
+  if (segment.branch != Branch::none) warn_branches(*block, segment, result);
   return request.scale == 1 ? result : scale_optimal_engine(result, request.scale);
 }
 
