@@ -9,103 +9,83 @@
 
 namespace trebuchet {
 
-Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level, const std::optional<Air>& air,
-                             bool range_from_release) {
-  const ReleasePoint& r = shot.release;
-  const double L2 = engine.L2, g = engine.material.g;
-  const double speed_unit = std::sqrt(g * L2), time_unit = std::sqrt(L2 / g);  // section 3
-  Verification out;
-  const double vx = r.velocity.x * speed_unit, vy = r.velocity.y * speed_unit;
-  out.v = std::hypot(vx, vy);
-  out.h = r.height * L2;
-  const double behind = r.position.x * L2;  // in the frame of the shot, where the target lies toward -x [m]
-  out.x = -behind;
-  out.A_deg = degrees(std::atan2(vy, -vx));
-  out.theta_release_deg = degrees(r.state.theta);
-  out.pin_angle_deg = degrees(r.pin_angle);
-  out.pin_to_bend_deg = pin_to_bend_deg(out.pin_angle_deg, engine.parts.pin_friction);
-  const double drop = out.h - target_level;  // release to target level [m]
-  const double apex = out.h + (vy > 0 ? vy * vy / (2 * g) : 0);  // highest point of the flight above the base [m]
-  if (!(target_level <= apex))
-    throw Error(ErrorKind::usage,
-                "the target level " + format_significant(target_level, 4) + " m lies above the apex of the flight, " + format_significant(apex, 4) +
-                    " m above the engine's base; give a target level below it");
-  out.R_vacuum = vacuum_range({behind, 0}, {vx, vy}, drop, g);
-  out.capacity.R = out.R_vacuum;
-  // The black box throws from the ground to the ground: the range efficiency's range is to the base's level.
-  const double R_base = target_level == 0 ? out.R_vacuum : vacuum_range({behind, 0}, {vx, vy}, out.h, g);
-  // eq:T at the target level: the height above it is drop/L2, scaled; M g L2 turns tau_e into joules.
-  out.capacity.T = energy_at_target(engine.m / engine.M, r.velocity, drop / L2) * engine.M * g * L2;
-  out.T_vacuum = out.capacity.T;
-  out.capacity.target_level = range_from_release ? out.h : target_level;
-  if (air || range_from_release) {
-    // The flight's end: the target level, or back at the release height for Denny's range,
-    // which is measured from the release point (x behind the pivot) rather than the pivot.
-    const double end_drop = range_from_release ? 0 : drop;
-    double range = 0;
-    Vec2 end_velocity{vx, vy};
-    if (air) {
-      const auto end = fly({behind, 0}, {vx, vy}, end_drop, drag_of(*air, engine.m), g);
-      if (!end)
-        throw Error(end_drop < 0 ? ErrorKind::usage : ErrorKind::numerical,
-                    "the flight through " + describe_air(*air, engine.m) + " did not come down to its end" +
-                        (end_drop < 0 ? ": the target level " + format_significant(target_level, 4) +
-                                 " m lies above the apex of the flight in air (drag lowers it); give a lower target level"
-                                      : "; give the air, the wind and the projectile's density values of ordinary size"));
-      range = end->range, end_velocity = end->velocity;
-      if (!air->drag_coefficient) {
-        // The fastest the flight meets the air is at one of its ends (drag slows the stone
-        // toward its terminal speed, and gravity speeds it toward the same).
-        const Drag drag = drag_of(*air, engine.m);
-        const double fastest = std::max(std::hypot(vx + air->wind, vy), std::hypot(end_velocity.x + air->wind, end_velocity.y));
-        const double reynolds = drag.reynolds_per_speed * fastest;
-        if (reynolds > max_fitted_reynolds)
-          out.notes.push_back("the flight reaches Re = " + format_significant(reynolds, 2) +
-                              ", beyond the 1e6 to which Morrison's Cd(Re) was fitted: "
-                              "the range in air is an extrapolation there (a fixed drag coefficient is another choice)");
-      }
-    } else {
-      range = vacuum_range({behind, 0}, {vx, vy}, 0, g);
-      end_velocity.y = -vy;
+namespace {
+
+// The release's velocity and place in SI, in the frame of the shot (the target toward -x), and
+// the height of the release above the target level [m/s, m].
+struct ReleaseInSi {
+  double vx, vy, behind, drop;
+};
+
+// The flight through air, or back to the release height for Denny's range (measured from the
+// release point, x behind the pivot, rather than the pivot): its range and the energy at its end.
+void add_flight(Verification& out, const Engine& engine, const ReleaseInSi& at, double target_level, const std::optional<Air>& air,
+                bool range_from_release) {
+  const double g = engine.material.g, vx = at.vx, vy = at.vy, behind = at.behind, drop = at.drop;
+  // The flight's end: the target level, or back at the release height for Denny's range,
+  // which is measured from the release point (x behind the pivot) rather than the pivot.
+  const double end_drop = range_from_release ? 0 : drop;
+  double range = 0;
+  Vec2 end_velocity{vx, vy};
+  if (air) {
+    const auto end = fly({behind, 0}, {vx, vy}, end_drop, drag_of(*air, engine.m), g);
+    if (!end)
+      throw Error(end_drop < 0 ? ErrorKind::usage : ErrorKind::numerical,
+                  "the flight through " + describe_air(*air, engine.m) + " did not come down to its end" +
+                      (end_drop < 0 ? ": the target level " + format_significant(target_level, 4) +
+                               " m lies above the apex of the flight in air (drag lowers it); give a lower target level"
+                                    : "; give the air, the wind and the projectile's density values of ordinary size"));
+    range = end->range, end_velocity = end->velocity;
+    if (!air->drag_coefficient) {
+      // The fastest the flight meets the air is at one of its ends (drag slows the stone
+      // toward its terminal speed, and gravity speeds it toward the same).
+      const Drag drag = drag_of(*air, engine.m);
+      const double fastest = std::max(std::hypot(vx + air->wind, vy), std::hypot(end_velocity.x + air->wind, end_velocity.y));
+      const double reynolds = drag.reynolds_per_speed * fastest;
+      if (reynolds > max_fitted_reynolds)
+        out.notes.push_back("the flight reaches Re = " + format_significant(reynolds, 2) +
+                            ", beyond the 1e6 to which Morrison's Cd(Re) was fitted: "
+                            "the range in air is an extrapolation there (a fixed drag coefficient is another choice)");
     }
-    out.capacity.R = range_from_release ? range + behind : range;
-    // A headwind can blow the projectile back behind the engine: no range to report.
-    if (air && !(out.capacity.R > 0))
-      throw Error(ErrorKind::out_of_range,
-                  "the flight through " + describe_air(*air, engine.m) + " ends " + format_significant(-out.capacity.R, 4) + " m behind the " +
-                      (range_from_release ? "release point" : "pivot") +
-                      ": the air blows the projectile back; give a weaker headwind ({{wind}}) or less drag");
-    out.capacity.T = engine.m * (end_velocity.x * end_velocity.x + end_velocity.y * end_velocity.y) / 2;
-    if (air) out.energy.flight_drag = engine.m * (out.v * out.v / 2 + g * end_drop) - out.capacity.T;
+  } else {
+    range = vacuum_range({behind, 0}, {vx, vy}, 0, g);
+    end_velocity.y = -vy;
   }
-  out.eps = r.efficiency;
-  out.Q = r.quality;
-  out.force_factor = r.force_factor;
-  out.t_release = r.t * time_unit;
-  out.t_liftoff = shot.t_liftoff * time_unit;
-  if (shot.t_counterweight_free) out.t_counterweight_free = *shot.t_counterweight_free * time_unit;
-  out.FS_perp_mg = r.extremes.max[sling_perpendicular] / (engine.m / engine.M);
-  out.FR_Mg = r.extremes.max[pivot_reaction];
-  out.dFRh_Mg = r.extremes.max[pivot_horizontal] + r.extremes.max[pivot_horizontal_negated];
-  out.energy_drift = shot.energy_drift;
-  const double Mg = engine.M * g;
-  {  // the energy budget at the release, in M g L2, then in J
-    const ScaledDesign design = scaled_design(engine);
-    const Snapshot at_release = machine_of(design)->snapshot(Phase::lifted, r.state);
-    const double at_rest = design.mu_b * design.beam_cm() - 1 - design.L();  // upright beam, hanging counterweight, from the pivot's level
-    const double energy_unit = Mg * L2;
-    out.energy.delta_U = design.energy_drop() * energy_unit;
-    out.energy.projectile = r.energy_at_target * energy_unit;
-    out.energy.engine = (at_release.energies.beam + at_release.energies.counterweight - at_rest) * energy_unit;
-    // The sling's, from its start along the base: what it took by the release.
-    const double sling_at_start = -(design.parts.sling.rope + design.parts.sling.pouch) * design.pivot_height();
-    out.energy.sling = (at_release.energies.sling - sling_at_start) * energy_unit;
-    for (int k = 0; k < loss_count; ++k) out.energy.losses[k] = shot.work[k] * energy_unit;
-    // Siano's black box throws all of Delta U at 45 deg from the ground: 2 Delta U/(m g) = 2 Delta U L2/mu [m].
-    out.range_efficiency = R_base / (2 * design.energy_drop() * L2 / design.mu);
-    out.range_efficiency_counterweight = R_base / (2 * design.counterweight_fall() * L2 / design.mu);
-  }
-  out.FS_perp = out.FS_perp_mg * engine.m * g, out.FR = out.FR_Mg * Mg, out.dFRh = out.dFRh_Mg * Mg;
+  out.capacity.R = range_from_release ? range + behind : range;
+  // A headwind can blow the projectile back behind the engine: no range to report.
+  if (air && !(out.capacity.R > 0))
+    throw Error(ErrorKind::out_of_range,
+                "the flight through " + describe_air(*air, engine.m) + " ends " + format_significant(-out.capacity.R, 4) + " m behind the " +
+                    (range_from_release ? "release point" : "pivot") +
+                    ": the air blows the projectile back; give a weaker headwind ({{wind}}) or less drag");
+  out.capacity.T = engine.m * (end_velocity.x * end_velocity.x + end_velocity.y * end_velocity.y) / 2;
+  if (air) out.energy.flight_drag = engine.m * (out.v * out.v / 2 + g * end_drop) - out.capacity.T;
+}
+
+// The energy budget at the release, in M g L2, then in J, and Siano's range efficiencies, of the
+// range to the base's level R_base [m].
+void add_energy_budget(Verification& out, const Engine& engine, const ShotResult& shot, double R_base) {
+  const ReleasePoint& r = shot.release;
+  const double L2 = engine.L2, Mg = engine.M * engine.material.g;
+  const ScaledDesign design = scaled_design(engine);
+  const Snapshot at_release = machine_of(design)->snapshot(Phase::lifted, r.state);
+  const double at_rest = design.mu_b * design.beam_cm() - 1 - design.L();  // upright beam, hanging counterweight, from the pivot's level
+  const double energy_unit = Mg * L2;
+  out.energy.delta_U = design.energy_drop() * energy_unit;
+  out.energy.projectile = r.energy_at_target * energy_unit;
+  out.energy.engine = (at_release.energies.beam + at_release.energies.counterweight - at_rest) * energy_unit;
+  // The sling's, from its start along the base: what it took by the release.
+  const double sling_at_start = -(design.parts.sling.rope + design.parts.sling.pouch) * design.pivot_height();
+  out.energy.sling = (at_release.energies.sling - sling_at_start) * energy_unit;
+  for (int k = 0; k < loss_count; ++k) out.energy.losses[k] = shot.work[k] * energy_unit;
+  // Siano's black box throws all of Delta U at 45 deg from the ground: 2 Delta U/(m g) = 2 Delta U L2/mu [m].
+  out.range_efficiency = R_base / (2 * design.energy_drop() * L2 / design.mu);
+  out.range_efficiency_counterweight = R_base / (2 * design.counterweight_fall() * L2 / design.mu);
+}
+
+// The builder's loads in SI, and the beam's strength where it has a diameter.
+void add_loads_and_beam(Verification& out, const Engine& engine, const ShotResult& shot, double time_unit) {
+  const double L2 = engine.L2, Mg = engine.M * engine.material.g;
   const double load_unit[load_count] = {Mg, Mg, Mg, Mg * L2};  // LoadIndex, scaled in M g and M g L2
   for (int k = 0; k < load_count; ++k) out.loads[k] = {shot.loads[k].value * load_unit[k], shot.loads[k].t * time_unit};
   const double D = engine.D > 0 ? engine.D : engine.mb > 0 ? beam_diameter(engine.mb, beam_length(engine), engine.material) : 0;
@@ -120,6 +100,12 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
                           format_significant(implied_density, 3) + " kg/m3 (eq:BeamMass), not " +
                           format_significant(engine.material.wood_density, 3) + ": the motion uses mb, the stress D");
   }
+}
+
+// Where the model stops holding before the release, the counterweight's clearance above the
+// ground (hanging, and lowest in the shot), and the notes of what the shot left unused or unfollowed.
+void add_warnings_and_clearance(Verification& out, const Engine& engine, const ShotResult& shot, const std::optional<Air>& air, double time_unit) {
+  const double L2 = engine.L2;
   // In vacuum only the whipper's ball has a use for its size (where it rests on the arm).
   if (engine.projectile_diameter && !air && engine.machine != MachineKind::whipper)
     out.notes.push_back("the projectile's diameter, " + format_significant(*engine.projectile_diameter, 4) +
@@ -155,6 +141,55 @@ Verification verification_of(const Engine& engine, const ShotResult& shot, doubl
                            " m below the ground (H - L2 - L3" + (engine.parts.box_height ? " - half the box's height" : "") + ")" + fix);
   else if (out.clearance.in_shot && !(*out.clearance.in_shot >= 0))
     out.warnings.push_back("in the shot " + bottom + " swings " + format_significant(-*out.clearance.in_shot, 4) + " m below the ground" + fix);
+}
+
+}  // namespace
+
+Verification verification_of(const Engine& engine, const ShotResult& shot, double target_level, const std::optional<Air>& air,
+                             bool range_from_release) {
+  const ReleasePoint& r = shot.release;
+  const double L2 = engine.L2, g = engine.material.g;
+  const double speed_unit = std::sqrt(g * L2), time_unit = std::sqrt(L2 / g);  // section 3
+  Verification out;
+  const double vx = r.velocity.x * speed_unit, vy = r.velocity.y * speed_unit;
+  out.v = std::hypot(vx, vy);
+  out.h = r.height * L2;
+  const double behind = r.position.x * L2;  // in the frame of the shot, where the target lies toward -x [m]
+  out.x = -behind;
+  out.A_deg = degrees(std::atan2(vy, -vx));
+  out.theta_release_deg = degrees(r.state.theta);
+  out.pin_angle_deg = degrees(r.pin_angle);
+  out.pin_to_bend_deg = pin_to_bend_deg(out.pin_angle_deg, engine.parts.pin_friction);
+  const double drop = out.h - target_level;  // release to target level [m]
+  const double apex = out.h + (vy > 0 ? vy * vy / (2 * g) : 0);  // highest point of the flight above the base [m]
+  if (!(target_level <= apex))
+    throw Error(ErrorKind::usage,
+                "the target level " + format_significant(target_level, 4) + " m lies above the apex of the flight, " + format_significant(apex, 4) +
+                    " m above the engine's base; give a target level below it");
+  out.R_vacuum = vacuum_range({behind, 0}, {vx, vy}, drop, g);
+  out.capacity.R = out.R_vacuum;
+  // The black box throws from the ground to the ground: the range efficiency's range is to the base's level.
+  const double R_base = target_level == 0 ? out.R_vacuum : vacuum_range({behind, 0}, {vx, vy}, out.h, g);
+  // eq:T at the target level: the height above it is drop/L2, scaled; M g L2 turns tau_e into joules.
+  out.capacity.T = energy_at_target(engine.m / engine.M, r.velocity, drop / L2) * engine.M * g * L2;
+  out.T_vacuum = out.capacity.T;
+  out.capacity.target_level = range_from_release ? out.h : target_level;
+  if (air || range_from_release) add_flight(out, engine, {vx, vy, behind, drop}, target_level, air, range_from_release);
+  out.eps = r.efficiency;
+  out.Q = r.quality;
+  out.force_factor = r.force_factor;
+  out.t_release = r.t * time_unit;
+  out.t_liftoff = shot.t_liftoff * time_unit;
+  if (shot.t_counterweight_free) out.t_counterweight_free = *shot.t_counterweight_free * time_unit;
+  out.FS_perp_mg = r.extremes.max[sling_perpendicular] / (engine.m / engine.M);
+  out.FR_Mg = r.extremes.max[pivot_reaction];
+  out.dFRh_Mg = r.extremes.max[pivot_horizontal] + r.extremes.max[pivot_horizontal_negated];
+  out.energy_drift = shot.energy_drift;
+  const double Mg = engine.M * g;
+  add_energy_budget(out, engine, shot, R_base);
+  out.FS_perp = out.FS_perp_mg * engine.m * g, out.FR = out.FR_Mg * Mg, out.dFRh = out.dFRh_Mg * Mg;
+  add_loads_and_beam(out, engine, shot, time_unit);
+  add_warnings_and_clearance(out, engine, shot, air, time_unit);
   return out;
 }
 
