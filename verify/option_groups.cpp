@@ -46,28 +46,109 @@ void positive_setting(CLI::App* app, const SettingRow& row, std::optional<double
       app, row.flag, [&target, &row](const std::string& text) { target = parse_positive(text, row.dimension, row.flag); }, setting_help(row));
 }
 
+// --format: table or json, and csv where the operation writes rows (shot, fit, compare, sweep).
+void format_option(CLI::App* app, Options& o, const std::string& flag, const std::string& help, Door door) {
+  const bool csv_too = door & (cmd_shot | cmd_fit | cmd_compare | cmd_sweep);
+  parsed_option(
+      app, flag,
+      [&o, csv_too](const std::string& text) {
+        if (text == "table")
+          o.format = Format::table;
+        else if (text == "json")
+          o.format = Format::json;
+        else if (text == "csv" && csv_too)
+          o.format = Format::csv;
+        else
+          throw Error(ErrorKind::usage, "--format: '" + text + "' is not a format; use table" + (csv_too ? ", json or csv" : " or json"));
+      },
+      help);
+}
+
+// --machine: one machine, or contest's "all" (each machine's best).
+void machine_option(CLI::App* app, Options& o, const std::string& flag, const std::string& help) {
+  parsed_option(
+      app, flag,
+      [&o](const std::string& text) {
+        o.all_machines = text == "all";  // contest's: each machine's best
+        if (!o.all_machines) o.design.machine = parse_machine(text, "--machine");
+      },
+      help);
+}
+
+// --measured: a range with its uncertainty (34.4m±1.5m), or a range alone.
+void measured_option(CLI::App* app, Options& o, const std::string& flag, const std::string& help) {
+  parsed_option(
+      app, flag,
+      [&o](const std::string& text) {
+        if (const auto spread = parse_spread(text, UnitDimension::length, "--measured")) {
+          if (spread->kind != Spread::Kind::normal)
+            throw Error(ErrorKind::usage, "--measured: '" + text + "' is a range; give the measured range with its uncertainty, e.g. 34.4m±1.5m");
+          o.measured = MeasuredRange{spread->a, spread->b};
+        } else {
+          o.measured = MeasuredRange{parse_positive(text, UnitDimension::length, "--measured"), 0};
+        }
+      },
+      help);
+}
+
+// --plausible-friction: the coefficients as a range low..high.
+void plausible_friction_option(CLI::App* app, Options& o, const std::string& flag, const std::string& help) {
+  parsed_option(
+      app, flag,
+      [&o, flag](const std::string& text) {
+        const auto spread = parse_spread(text, UnitDimension::dimensionless, flag);
+        if (!spread || spread->kind != Spread::Kind::uniform)
+          throw Error(ErrorKind::usage, flag + ": '" + text + "' is not a range; give the plausible coefficients as low..high, e.g. 0.1..0.5");
+        o.plausible_friction = {spread->a, spread->b};
+      },
+      help);
+}
+
+// --predict-m, --predict-M: every value given, each read and checked (CLI11 hands a std::string
+// option its first only).
+void mass_list_option(CLI::App* app, std::vector<double>& list, const std::string& flag, const std::string& help) {
+  app->add_option_function<std::vector<std::string>>(
+         flag,
+         [list = &list, flag](const std::vector<std::string>& texts) {
+           for (const std::string& text : texts) {
+             if (text.empty()) throw Error(ErrorKind::usage, flag + " was given an empty value; give a value after it, or leave it out");
+             list->push_back(parse_positive(text, UnitDimension::mass, flag));
+           }
+         },
+         help)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+}
+
+// --objective: range or eps.
+void objective_option(CLI::App* app, Options& o, const std::string& flag, const std::string& help) {
+  parsed_option(
+      app, flag,
+      [&o](const std::string& text) {
+        if (text != "range" && text != "eps") throw Error(ErrorKind::usage, "--objective: '" + text + "' is not an objective; use range or eps");
+        o.efficiency = text == "eps";
+      },
+      help);
+}
+
+// --X: from:to:step.
+void X_option(CLI::App* app, Options& o, const std::string& flag, const std::string& help) {
+  parsed_option(
+      app, flag,
+      [&o](const std::string& text) {
+        char c1 = 0, c2 = 0, rest = 0;
+        if (std::sscanf(text.c_str(), "%lf%c%lf%c%lf%c", &o.sweep.X_from, &c1, &o.sweep.X_to, &c2, &o.sweep.X_step, &rest) != 5 || c1 != ':' ||
+            c2 != ':')
+          throw Error(ErrorKind::usage, "--X: '" + text + "' is not from:to:step; e.g. --X -0.55:0.55:0.05");
+      },
+      help);
+}
+
 // The option of a setting that only the programs take (read_by_table is false), read here.
 void program_setting(CLI::App* app, Options& o, const SettingRow& row, Door door) {
   const std::string flag = row.flag, help = setting_help(row);
   const auto whole = [&](auto& target, auto lowest, auto highest) { integer_option(app, flag, target, lowest, highest, row.range, help); };
   switch (row.id) {
-    case Setting::format: {
-      const bool csv_too = door & (cmd_shot | cmd_fit | cmd_compare | cmd_sweep);
-      parsed_option(
-          app, flag,
-          [&o, csv_too](const std::string& text) {
-            if (text == "table")
-              o.format = Format::table;
-            else if (text == "json")
-              o.format = Format::json;
-            else if (text == "csv" && csv_too)
-              o.format = Format::csv;
-            else
-              throw Error(ErrorKind::usage, "--format: '" + text + "' is not a format; use table" + (csv_too ? ", json or csv" : " or json"));
-          },
-          help);
-      return;
-    }
+    case Setting::format: format_option(app, o, flag, help, door); return;
     case Setting::units:
       parsed_option(
           app, flag, [&o](const std::string& text) { o.units = parse_unit_system(text, "--units"); }, help);
@@ -84,54 +165,11 @@ void program_setting(CLI::App* app, Options& o, const SettingRow& row, Door door
       return;
     case Setting::plot: app->add_option(flag, o.plot, help); return;
     case Setting::draws: app->add_option(flag, o.draws, help); return;
-    case Setting::machine:
-      parsed_option(
-          app, flag,
-          [&o](const std::string& text) {
-            o.all_machines = text == "all";  // contest's: each machine's best
-            if (!o.all_machines) o.design.machine = parse_machine(text, "--machine");
-          },
-          help);
-      return;
-    case Setting::measured:
-      parsed_option(
-          app, flag,
-          [&o](const std::string& text) {
-            if (const auto spread = parse_spread(text, UnitDimension::length, "--measured")) {
-              if (spread->kind != Spread::Kind::normal)
-                throw Error(ErrorKind::usage, "--measured: '" + text + "' is a range; give the measured range with its uncertainty, e.g. 34.4m±1.5m");
-              o.measured = MeasuredRange{spread->a, spread->b};
-            } else {
-              o.measured = MeasuredRange{parse_positive(text, UnitDimension::length, "--measured"), 0};
-            }
-          },
-          help);
-      return;
-    case Setting::plausible_friction:
-      parsed_option(
-          app, flag,
-          [&o, flag](const std::string& text) {
-            const auto spread = parse_spread(text, UnitDimension::dimensionless, flag);
-            if (!spread || spread->kind != Spread::Kind::uniform)
-              throw Error(ErrorKind::usage, flag + ": '" + text + "' is not a range; give the plausible coefficients as low..high, e.g. 0.1..0.5");
-            o.plausible_friction = {spread->a, spread->b};
-          },
-          help);
-      return;
-    case Setting::predict_m:
-    case Setting::predict_M:
-      // Every value given, each read and checked (CLI11 hands a std::string option its first only).
-      app->add_option_function<std::vector<std::string>>(
-             flag,
-             [list = row.id == Setting::predict_m ? &o.predict_m : &o.predict_M, flag](const std::vector<std::string>& texts) {
-               for (const std::string& text : texts) {
-                 if (text.empty()) throw Error(ErrorKind::usage, flag + " was given an empty value; give a value after it, or leave it out");
-                 list->push_back(parse_positive(text, UnitDimension::mass, flag));
-               }
-             },
-             help)
-          ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-      return;
+    case Setting::machine: machine_option(app, o, flag, help); return;
+    case Setting::measured: measured_option(app, o, flag, help); return;
+    case Setting::plausible_friction: plausible_friction_option(app, o, flag, help); return;
+    case Setting::predict_m: mass_list_option(app, o.predict_m, flag, help); return;
+    case Setting::predict_M: mass_list_option(app, o.predict_M, flag, help); return;
     case Setting::max_width: positive_setting(app, row, o.limits[0]); return;
     case Setting::max_height: positive_setting(app, row, o.limits[1]); return;
     case Setting::max_M: positive_setting(app, row, o.limits[2]); return;
@@ -142,32 +180,14 @@ void program_setting(CLI::App* app, Options& o, const SettingRow& row, Door door
       parsed_option(
           app, flag, [&o](const std::string& text) { o.min_clearance = parse_value(text, UnitDimension::length, "--min-clearance"); }, help);
       return;
-    case Setting::objective:
-      parsed_option(
-          app, flag,
-          [&o](const std::string& text) {
-            if (text != "range" && text != "eps") throw Error(ErrorKind::usage, "--objective: '" + text + "' is not an objective; use range or eps");
-            o.efficiency = text == "eps";
-          },
-          help);
-      return;
+    case Setting::objective: objective_option(app, o, flag, help); return;
     case Setting::pareto: whole(o.pareto, 2, 200); return;
     case Setting::vary:
       parsed_option(
           app, flag, [&o](const std::string& text) { o.what_if = parse_what_if(text, 21, "--vary"); }, help);
       return;
     case Setting::points: whole(o.what_if_points, 2, max_what_if_points); return;
-    case Setting::X:
-      parsed_option(
-          app, flag,
-          [&o](const std::string& text) {
-            char c1 = 0, c2 = 0, rest = 0;
-            if (std::sscanf(text.c_str(), "%lf%c%lf%c%lf%c", &o.sweep.X_from, &c1, &o.sweep.X_to, &c2, &o.sweep.X_step, &rest) != 5 || c1 != ':' ||
-                c2 != ':')
-              throw Error(ErrorKind::usage, "--X: '" + text + "' is not from:to:step; e.g. --X -0.55:0.55:0.05");
-          },
-          help);
-      return;
+    case Setting::X: X_option(app, o, flag, help); return;
     case Setting::shard:
       parsed_option(
           app, flag, [&o](const std::string& text) { o.shard = parse_shard(text); }, help);

@@ -511,6 +511,112 @@ struct Solution {
   Expr best, ok, segment, lr, lt, amplification;
 };
 
+// One row of the table of segments: its sheet, its row, the segment k it solves in, and the law
+// of a given in that segment.
+struct SegmentRow {
+  Sheet& s;
+  const ConstantsSheet& c;
+  int row;
+  Expr k;
+  // c, p or q (j = 0, 1, 2) of the law in column `column` in this segment: column 3 (column - 1) + j + 1 of the laws.
+  Expr law(const Expr& column, int j) const {
+    const std::size_t q = static_cast<std::size_t>(column.v) - 1;
+    return Expr{"INDEX(" + c.laws + "," + k.f + ",3*(" + column.f + "-1)+" + std::to_string(j + 1) + ")",
+                c.law[q][j].v.at(static_cast<std::size_t>(k.v) - 1)};
+  }
+};
+
+// What a row solved: ln(R/R0) and ln(T/T0), whether it found a solution, and its amplification.
+struct RowSolution {
+  Expr lr, lt, found, amplification;
+};
+
+// Two log-linear givens in one segment (eq:ZiZj_RT): their laws and D_ij in columns 2 to 8.
+RowSolution solve_pair_row(const SegmentRow& at, const std::vector<LawGiven>& givens) {
+  Sheet& s = at.s;
+  const int row = at.row;
+  const auto law = [&](const Expr& column, int j) { return at.law(column, j); };
+  RowSolution out;
+  const Expr c1 = s.formula(row, 2, law(givens[0].column, 0)), p1 = s.formula(row, 3, law(givens[0].column, 1)),
+             q1 = s.formula(row, 4, law(givens[0].column, 2));
+  const Expr c2 = s.formula(row, 5, law(givens[1].column, 0)), p2 = s.formula(row, 6, law(givens[1].column, 1)),
+             q2 = s.formula(row, 7, law(givens[1].column, 2));
+  const Expr det = s.formula(row, 8, p1 * q2 - q1 * p2);  // D_ij of eq:ZiZj_RT
+  const Expr b1 = givens[0].log_value - c1, b2 = givens[1].log_value - c2;
+  const Expr safe_det = choose(below(abs(det), num(1e-12)), num(1), det);
+  out.lr = (b1 * q2 - q1 * b2) / safe_det;
+  out.lt = (p1 * b2 - b1 * p2) / safe_det;
+  out.found = num(1) - below(abs(det), num(1e-12));
+  out.amplification = amplification_of(p1, q1, p2, q2, safe_det);
+  return out;
+}
+
+// Lb and one log-linear given in one segment: the root (1: left of the minimum, 2: right) of the
+// excess of log(L1 + L2) over log Lb along the line where the given holds, by Newton's method
+// from the segment's end on that side (columns 2 to 8 and 18 on).
+RowSolution solve_beam_row(const SegmentRow& segment_row, const LawGiven& given, const Expr& log_Lb, int r, int iterations) {
+  Sheet& s = segment_row.s;
+  const ConstantsSheet& c = segment_row.c;
+  const int row = segment_row.row;
+  const Expr& k = segment_row.k;
+  const auto law = [&](const Expr& column, int j) { return segment_row.law(column, j); };
+  const Expr sqrt26 = sqrt(num(26));
+  RowSolution out;
+  const Expr cA = s.formula(row, 2, law(given.column, 0)), pA = s.formula(row, 3, law(given.column, 1)), qA = s.formula(row, 4, law(given.column, 2));
+  const Expr root = s.number(row, 5, r % 2 + 1);  // 1: left of the minimum, 2: right
+  // The line ln A = c + p lr + q lt: its point nearest the origin and its unit direction.
+  const Expr norm = sqrt(pA * pA + qA * qA), b = (given.log_value - cA) / norm;
+  const Expr lr0 = s.formula(row, 19, pA / norm * b), lt0 = s.formula(row, 20, qA / norm * b);
+  const Expr dr = s.formula(row, 21, qA / norm), dt = s.formula(row, 22, num(0) - pA / norm);
+  // ln L1 = alpha1 + beta1 s and ln L2 = alpha2 + beta2 s along the line (eq:ZRT).
+  const Expr L1_column = num(3), L2_column = num(4);  // L1 and L2 among the quantities
+  auto along = [&](const Expr& column, int col) {
+    const Expr alpha = s.formula(row, col, law(column, 0) + law(column, 1) * lr0 + law(column, 2) * lt0);
+    const Expr beta = s.formula(row, col + 1, law(column, 1) * dr + law(column, 2) * dt);
+    return std::pair{alpha, beta};
+  };
+  // Named, not bound: a lambda below uses them, which structured bindings allow only from C++20 (clang 14 refuses).
+  const std::pair<Expr, Expr> line1 = along(L1_column, 23), line2 = along(L2_column, 25);
+  const Expr &alpha1 = line1.first, &beta1 = line1.second, &alpha2 = line2.first, &beta2 = line2.second;
+  // The part of the line inside the segment's X interval; where X is constant along it (the
+  // beam ratio l) the line is bounded by |ln(R/R0)|, |ln(T/T0)| <= 50, beyond any engine.
+  const Expr dX = (num(5) * dr - dt) / sqrt26, X0 = (num(5) * lr0 - lt0) / sqrt26;
+  const Expr flat = below(abs(dX), num(1e-12));
+  const Expr safe_dX = choose(flat, num(1), dX);
+  const Expr to_min = (element(c.X_min, k) - X0) / safe_dX, to_max = (element(c.X_max, k) - X0) / safe_dX;
+  const Expr lo = s.formula(row, 6, choose(flat, num(-50), min(to_min, to_max)));
+  const Expr hi = s.formula(row, 7, choose(flat, num(50), max(to_min, to_max)));
+  // ln(L1 + L2) - ln Lb and its slope, with the larger exponent taken out, so that no EXP overflows far along the line.
+  auto excess = [&](const Expr& at) {
+    const Expr a1 = alpha1 + beta1 * at, a2 = alpha2 + beta2 * at, top = max(a1, a2);
+    return top + ln(exp(a1 - top) + exp(a2 - top)) - log_Lb;
+  };
+  auto slope = [&](const Expr& at) {
+    const Expr a1 = alpha1 + beta1 * at, a2 = alpha2 + beta2 * at, top = max(a1, a2);
+    const Expr w1 = exp(a1 - top), w2 = exp(a2 - top);
+    return (beta1 * w1 + beta2 * w2) / (w1 + w2);
+  };
+  // The minimum of the convex excess: where the slopes of the two exponentials cancel, or an end.
+  const Expr stationary = (ln(num(0) - beta2 / beta1) - alpha1 + alpha2) / (beta1 - beta2);
+  const Expr s_min = s.formula(
+      row, 8, choose(below(beta1 * beta2, num(0)), min(max(stationary, lo), hi), choose(at_most(num(0), beta1) * at_most(num(0), beta2), lo, hi)));
+  const Expr left = equal(root, num(1));
+  const Expr start = choose(left, lo, hi);
+  out.found = s.formula(row, 18, at_most(excess(s_min), num(0)) * at_most(num(0), excess(start)) * choose(left, below(lo, s_min), below(s_min, hi)));
+  Expr at = s.formula(row, 27, start);
+  for (int n = 1; n <= iterations; ++n) at = s.formula(row, 27 + n, choose(out.found, at - excess(at) / slope(at), at));
+  out.lr = lr0 + at * dr;
+  out.lt = lt0 + at * dt;
+  // The local law of ln Lb, the weighted mean of L1's and L2's, gives the pair's conditioning.
+  const Expr w1 = exp(alpha1 + beta1 * at - max(alpha1 + beta1 * at, alpha2 + beta2 * at)),
+             w2 = exp(alpha2 + beta2 * at - max(alpha1 + beta1 * at, alpha2 + beta2 * at));
+  const Expr pLb = (w1 * law(L1_column, 1) + w2 * law(L2_column, 1)) / (w1 + w2);
+  const Expr qLb = (w1 * law(L1_column, 2) + w2 * law(L2_column, 2)) / (w1 + w2);
+  const Expr det = pA * qLb - qA * pLb;
+  out.amplification = choose(out.found, amplification_of(pA, qA, pLb, qLb, choose(below(abs(det), num(1e-300)), num(1), det)), num(0));
+  return out;
+}
+
 // The table of segments from row `header` down: each row solves the givens in one segment,
 // computes X (eq:Xi), whether X lies inside the segment, and a score that prefers the branch with
 // the higher Q (lower below X_d, upper above; section 6.2), then the depth inside. Two
@@ -546,81 +652,9 @@ Solution solve_in_segments(Sheet& s, int header, const ConstantsSheet& c, const 
     const int row = first + r;
     const Expr k = s.number(row, 0, r / per_segment + 1);
     const Expr block = s.formula(row, 1, equal(theta, element(c.theta, k)) * below(abs(F - element(c.F, k)), num(1e-9)));
-    // c, p or q (j = 0, 1, 2) of the law in column `column` in this segment: column 3 (column - 1) + j + 1 of the laws.
-    auto law = [&](const Expr& column, int j) {
-      const std::size_t q = static_cast<std::size_t>(column.v) - 1;
-      return Expr{"INDEX(" + c.laws + "," + k.f + ",3*(" + column.f + "-1)+" + std::to_string(j + 1) + ")",
-                  c.law[q][j].v.at(static_cast<std::size_t>(k.v) - 1)};
-    };
-    Expr lr, lt, found, amplification;
-    if (!beam) {
-      const Expr c1 = s.formula(row, 2, law(givens[0].column, 0)), p1 = s.formula(row, 3, law(givens[0].column, 1)),
-                 q1 = s.formula(row, 4, law(givens[0].column, 2));
-      const Expr c2 = s.formula(row, 5, law(givens[1].column, 0)), p2 = s.formula(row, 6, law(givens[1].column, 1)),
-                 q2 = s.formula(row, 7, law(givens[1].column, 2));
-      const Expr det = s.formula(row, 8, p1 * q2 - q1 * p2);  // D_ij of eq:ZiZj_RT
-      const Expr b1 = givens[0].log_value - c1, b2 = givens[1].log_value - c2;
-      const Expr safe_det = choose(below(abs(det), num(1e-12)), num(1), det);
-      lr = (b1 * q2 - q1 * b2) / safe_det;
-      lt = (p1 * b2 - b1 * p2) / safe_det;
-      found = num(1) - below(abs(det), num(1e-12));
-      amplification = amplification_of(p1, q1, p2, q2, safe_det);
-    } else {
-      const Expr cA = s.formula(row, 2, law(givens[0].column, 0)), pA = s.formula(row, 3, law(givens[0].column, 1)),
-                 qA = s.formula(row, 4, law(givens[0].column, 2));
-      const Expr root = s.number(row, 5, r % 2 + 1);  // 1: left of the minimum, 2: right
-      // The line ln A = c + p lr + q lt: its point nearest the origin and its unit direction.
-      const Expr norm = sqrt(pA * pA + qA * qA), b = (givens[0].log_value - cA) / norm;
-      const Expr lr0 = s.formula(row, 19, pA / norm * b), lt0 = s.formula(row, 20, qA / norm * b);
-      const Expr dr = s.formula(row, 21, qA / norm), dt = s.formula(row, 22, num(0) - pA / norm);
-      // ln L1 = alpha1 + beta1 s and ln L2 = alpha2 + beta2 s along the line (eq:ZRT).
-      const Expr L1_column = num(3), L2_column = num(4);  // L1 and L2 among the quantities
-      auto along = [&](const Expr& column, int col) {
-        const Expr alpha = s.formula(row, col, law(column, 0) + law(column, 1) * lr0 + law(column, 2) * lt0);
-        const Expr beta = s.formula(row, col + 1, law(column, 1) * dr + law(column, 2) * dt);
-        return std::pair{alpha, beta};
-      };
-      // Named, not bound: a lambda below uses them, which structured bindings allow only from C++20 (clang 14 refuses).
-      const std::pair<Expr, Expr> line1 = along(L1_column, 23), line2 = along(L2_column, 25);
-      const Expr &alpha1 = line1.first, &beta1 = line1.second, &alpha2 = line2.first, &beta2 = line2.second;
-      // The part of the line inside the segment's X interval; where X is constant along it (the
-      // beam ratio l) the line is bounded by |ln(R/R0)|, |ln(T/T0)| <= 50, beyond any engine.
-      const Expr dX = (num(5) * dr - dt) / sqrt26, X0 = (num(5) * lr0 - lt0) / sqrt26;
-      const Expr flat = below(abs(dX), num(1e-12));
-      const Expr safe_dX = choose(flat, num(1), dX);
-      const Expr to_min = (element(c.X_min, k) - X0) / safe_dX, to_max = (element(c.X_max, k) - X0) / safe_dX;
-      const Expr lo = s.formula(row, 6, choose(flat, num(-50), min(to_min, to_max)));
-      const Expr hi = s.formula(row, 7, choose(flat, num(50), max(to_min, to_max)));
-      // ln(L1 + L2) - ln Lb and its slope, with the larger exponent taken out, so that no EXP overflows far along the line.
-      auto excess = [&](const Expr& at) {
-        const Expr a1 = alpha1 + beta1 * at, a2 = alpha2 + beta2 * at, top = max(a1, a2);
-        return top + ln(exp(a1 - top) + exp(a2 - top)) - *log_Lb;
-      };
-      auto slope = [&](const Expr& at) {
-        const Expr a1 = alpha1 + beta1 * at, a2 = alpha2 + beta2 * at, top = max(a1, a2);
-        const Expr w1 = exp(a1 - top), w2 = exp(a2 - top);
-        return (beta1 * w1 + beta2 * w2) / (w1 + w2);
-      };
-      // The minimum of the convex excess: where the slopes of the two exponentials cancel, or an end.
-      const Expr stationary = (ln(num(0) - beta2 / beta1) - alpha1 + alpha2) / (beta1 - beta2);
-      const Expr s_min = s.formula(
-          row, 8,
-          choose(below(beta1 * beta2, num(0)), min(max(stationary, lo), hi), choose(at_most(num(0), beta1) * at_most(num(0), beta2), lo, hi)));
-      const Expr left = equal(root, num(1));
-      const Expr start = choose(left, lo, hi);
-      found = s.formula(row, 18, at_most(excess(s_min), num(0)) * at_most(num(0), excess(start)) * choose(left, below(lo, s_min), below(s_min, hi)));
-      Expr at = s.formula(row, 27, start);
-      for (int n = 1; n <= iterations; ++n) at = s.formula(row, 27 + n, choose(found, at - excess(at) / slope(at), at));
-      lr = lr0 + at * dr;
-      lt = lt0 + at * dt;
-      // The local law of ln Lb, the weighted mean of L1's and L2's, gives the pair's conditioning.
-      const Expr w1 = exp(alpha1 + beta1 * at - max(alpha1 + beta1 * at, alpha2 + beta2 * at)),
-                 w2 = exp(alpha2 + beta2 * at - max(alpha1 + beta1 * at, alpha2 + beta2 * at));
-      const Expr pLb = (w1 * law(L1_column, 1) + w2 * law(L2_column, 1)) / (w1 + w2);
-      const Expr qLb = (w1 * law(L1_column, 2) + w2 * law(L2_column, 2)) / (w1 + w2);
-      const Expr det = pA * qLb - qA * pLb;
-      amplification = choose(found, amplification_of(pA, qA, pLb, qLb, choose(below(abs(det), num(1e-300)), num(1), det)), num(0));
-    }
+    const SegmentRow at{s, c, row, k};
+    const RowSolution solved = beam ? solve_beam_row(at, givens[0], *log_Lb, r, iterations) : solve_pair_row(at, givens);
+    const Expr &lr = solved.lr, &lt = solved.lt, &found = solved.found, &amplification = solved.amplification;
     const Expr lr_cell = s.formula(row, 9, lr), lt_cell = s.formula(row, 10, lt);
     const Expr X = s.formula(row, 11, (num(5) * lr_cell - lt_cell) / sqrt26);  // eq:XY_RT
     const Expr X_min = element(c.X_min, k), X_max = element(c.X_max, k);
