@@ -667,20 +667,11 @@ std::optional<SetRelease> release_of(const DesignValues& v, const std::string& w
   return out;
 }
 
-EngineRecord engine_record(const DesignValues& v, const std::string& where) {
-  EngineRecord in;
-  Engine& e = in.engine;
+namespace {
+
+// theta_i (or the pivot height H that sets it, the tip on the ground) and psi_i; the whipper's frame.
+void read_start(const DesignValues& v, const std::string& where, Engine& e) {
   using V = DesignValues;
-  e.L1 = required(v, &V::L1, where, "the long beam section");
-  e.L2 = required(v, &V::L2, where, "the short beam section");
-  e.L4 = required(v, &V::L4, where, "the sling length");
-  e.M = required(v, &V::M, where, "the counterweight mass");
-  e.m = required(v, &V::m, where, "the projectile mass");
-  // Without mb, a beam diameter gives it from the wood (eq:BeamMass), below.
-  if ((v.mb && !v.D_tip && !v.D_hinge) || (!v.mb && !v.D && !v.D_tip && !v.D_hinge))
-    e.mb = required(v, &V::mb, where, "the beam mass",
-                    where.empty() ? ", or the beam's diameter {{D}}, from which it follows" : ", or \"D\", the beam's diameter");
-  e.machine = v.machine.value_or(MachineKind::hinged);
   const bool whipper = e.machine == MachineKind::whipper;
   e.theta_i_deg = v.theta_i_deg.value_or(whipper ? whipper_theta_i_deg : standard_theta_i_deg);
   e.psi_i_deg = v.psi_i_deg.value_or(0);
@@ -704,13 +695,11 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
           ErrorKind::usage,
           engine_key_name(where, "rope_angle_deg") + " is the whipper's start; leave it out, or give the machine as whipper (docs/machines.md)");
   }
-  e.projectile_diameter = v.projectile_diameter;
-  // D = 0 is how the outputs write "not given" (they read back); below 0 it is a mistake.
-  if (v.D && !(*v.D >= 0))
-    throw Error(ErrorKind::bad_number,
-                engine_key_name(where, "D") + " = " + format_significant(*v.D, 6) +
-                    ": the beam diameter must not be negative; give it, or leave it out (0: not given)");
-  e.D = v.D.value_or(0);
+}
+
+// The counterweight's arm: L3, or the fraction F = (L2 + L3)/H; a given H agrees with L1 cos(theta_i).
+void read_counterweight_arm(const DesignValues& v, const std::string& where, Engine& e) {
+  const bool whipper = e.machine == MachineKind::whipper;
   const std::string named = where.empty() ? std::string("flags") : where;
   // A program's options give one of them; a file may carry both, as the programs write them (below).
   if (where.empty() && v.L3 && v.F)
@@ -743,9 +732,12 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
     throw Error(ErrorKind::usage,
                 engine_key_name(where, "H") + " = " + format_significant(*v.H, 6) + " m, but this machine's pivot height is L1 cos(theta_i) = " +
                     format_significant(pivot_height(e), 6) + " m; give H or theta_i, not both (H alone sets theta_i = acos(H/L1))");
-  e.material = material_of(v, e.material);  // eq:kMkD's where not given
+}
+
+// The beam as given: tapered (D_hinge and D_tip), or round of diameter D (eq:BeamMass), whose mass follows.
+void read_beam(const DesignValues& v, const std::string& where, EngineRecord& in) {
+  Engine& e = in.engine;
   const Material& material = e.material;
-  engine_parts(v, where, in);
   if (e.parts.D_tip && e.parts.D_hinge && *e.parts.D_tip > 0 && *e.parts.D_hinge > 0 && e.L1 > 0 &&
       e.L2 > 0) {  // the tapered beam's mass and its diameter at the pivot
     e.mb = wood_beam_mass(e);
@@ -770,6 +762,12 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
     e.mb = beam_mass(e.D, beam_length(e), material);
     in.mb_from_D = true;
   }
+}
+
+// The engine checked in the words of its record, L3 and F in agreement, the release and the capacity.
+void check_record(const DesignValues& v, const std::string& where, EngineRecord& in) {
+  Engine& e = in.engine;
+  const std::string named = where.empty() ? std::string("flags") : where;
   try {
     check_engine(e);
   } catch (const Error& error) {
@@ -793,6 +791,37 @@ EngineRecord engine_record(const DesignValues& v, const std::string& where) {
                 named + ": R = " + format_significant(*v.R, 6) + " m, T = " + format_significant(*v.T, 6) +
                     " J: R and T must be positive; give the predicted range and energy, e.g. R = 150 m and T = 40 kJ");
   if (v.R) in.capacity = Capacity{*v.R, *v.T, 0};
+}
+
+}  // namespace
+
+EngineRecord engine_record(const DesignValues& v, const std::string& where) {
+  EngineRecord in;
+  Engine& e = in.engine;
+  using V = DesignValues;
+  e.L1 = required(v, &V::L1, where, "the long beam section");
+  e.L2 = required(v, &V::L2, where, "the short beam section");
+  e.L4 = required(v, &V::L4, where, "the sling length");
+  e.M = required(v, &V::M, where, "the counterweight mass");
+  e.m = required(v, &V::m, where, "the projectile mass");
+  // Without mb, a beam diameter gives it from the wood (eq:BeamMass), below.
+  if ((v.mb && !v.D_tip && !v.D_hinge) || (!v.mb && !v.D && !v.D_tip && !v.D_hinge))
+    e.mb = required(v, &V::mb, where, "the beam mass",
+                    where.empty() ? ", or the beam's diameter {{D}}, from which it follows" : ", or \"D\", the beam's diameter");
+  e.machine = v.machine.value_or(MachineKind::hinged);
+  read_start(v, where, e);
+  e.projectile_diameter = v.projectile_diameter;
+  // D = 0 is how the outputs write "not given" (they read back); below 0 it is a mistake.
+  if (v.D && !(*v.D >= 0))
+    throw Error(ErrorKind::bad_number,
+                engine_key_name(where, "D") + " = " + format_significant(*v.D, 6) +
+                    ": the beam diameter must not be negative; give it, or leave it out (0: not given)");
+  e.D = v.D.value_or(0);
+  read_counterweight_arm(v, where, e);
+  e.material = material_of(v, e.material);  // eq:kMkD's where not given
+  engine_parts(v, where, in);
+  read_beam(v, where, in);
+  check_record(v, where, in);
   return in;
 }
 
