@@ -470,15 +470,10 @@ DesignValues overlay_flags(DesignValues values, const DesignValues& flags, const
   return values;
 }
 
-DesignValues read_design_values(const nlohmann::json& given, const std::string& where, nlohmann::json* passed, SettingsValues* settings) {
-  const bool record = is_record(given);
-  const bool by_program = given.is_object() && given.contains(version_key);  // a record the programs wrote (written_by_program)
-  const nlohmann::json unwrapped = record ? design_object(given) : nlohmann::json();
-  const nlohmann::json& object = record ? unwrapped : given;
-  if (!object.is_object())
-    throw Error(ErrorKind::usage,
-                (where.empty() ? std::string("input") : where) + ": expected a JSON object with keys L1, L2, L3 (or F), L4, M, m, mb, theta_i_deg");
-  // A range or a spread is a Monte Carlo run's (take_spreads takes them out first).
+namespace {
+
+// A range or a spread is a Monte Carlo run's (take_spreads takes them out first): here refused.
+void refuse_spreads(const nlohmann::json& object, const std::string& where) {
   std::vector<SpreadInput> spreads;
   take_spreads(object, op_shot, where, spreads);
   if (!spreads.empty()) {
@@ -490,6 +485,10 @@ DesignValues read_design_values(const nlohmann::json& given, const std::string& 
                     "' is a range or a spread; give one value (ranges and spreads are for the Monte Carlo run of one design: "
                     "shot with one design object, or monte_carlo)");
   }
+}
+
+// The engine's inputs a shot takes, each under its key or an alias (not both), and the machine.
+DesignValues read_fields(const nlohmann::json& object, const std::string& where) {
   DesignValues v;
   for (const InputField& field : input_fields()) {
     if (!(field.operations & op_shot)) continue;
@@ -510,8 +509,11 @@ DesignValues read_design_values(const nlohmann::json& given, const std::string& 
     if (!machine.is_string()) throw Error(ErrorKind::usage, name + ": " + brief_json(machine) + " is not a machine's name; use " + machine_names());
     v.machine = parse_machine(machine.get<std::string>(), name);
   }
-  // The other keys: what the programs write (read back, as CSV columns are), a near miss, or
-  // the caller's own (a site's name), passed through.
+  return v;
+}
+
+// The keys an engine object is read for: the inputs a shot takes, the machine, and a shot's settings (read_settings).
+const std::vector<std::string>& known_keys() {
   static const std::vector<std::string> known = [] {
     std::vector<std::string> names = input_names(op_shot);
     names.push_back(machine_key);
@@ -523,8 +525,12 @@ DesignValues read_design_values(const nlohmann::json& given, const std::string& 
       }
     return names;
   }();
-  // The programs' JSON keys: their CSV columns that are an input's key with a unit ("L4_m") are
-  // near misses in JSON, where a value carries its unit in its text.
+  return known;
+}
+
+// The programs' JSON keys: their CSV columns that are an input's key with a unit ("L4_m") are
+// near misses in JSON, where a value carries its unit in its text.
+const std::vector<std::string>& written_keys() {
   static const std::vector<std::string> written = [] {
     std::vector<std::string> names;
     for (const auto& list : {design_output_names(), verification_output_names()})
@@ -579,6 +585,14 @@ DesignValues read_design_values(const nlohmann::json& given, const std::string& 
                   "error"});
     return names;
   }();
+  return written;
+}
+
+// The other keys: what the programs write (read back, as CSV columns are), a near miss, or the
+// caller's own (a site's name), passed through; a Monte Carlo run's settings refused.
+void pass_other_keys(const nlohmann::json& object, const std::string& where, nlohmann::json* passed, bool by_program) {
+  const std::vector<std::string>& known = known_keys();
+  const std::vector<std::string>& written = written_keys();
   for (const auto& [key, value] : object.items()) {
     if (std::find(known.begin(), known.end(), key) != known.end()) continue;
     if (std::find(written.begin(), written.end(), key) != written.end()) continue;  // the records' own outputs, read back silently
@@ -590,6 +604,21 @@ DesignValues read_design_values(const nlohmann::json& given, const std::string& 
                         "(3.5m±0.2m), or drop it");
     pass_through(key, value, known, where, passed, by_program);
   }
+}
+
+}  // namespace
+
+DesignValues read_design_values(const nlohmann::json& given, const std::string& where, nlohmann::json* passed, SettingsValues* settings) {
+  const bool record = is_record(given);
+  const bool by_program = given.is_object() && given.contains(version_key);  // a record the programs wrote (written_by_program)
+  const nlohmann::json unwrapped = record ? design_object(given) : nlohmann::json();
+  const nlohmann::json& object = record ? unwrapped : given;
+  if (!object.is_object())
+    throw Error(ErrorKind::usage,
+                (where.empty() ? std::string("input") : where) + ": expected a JSON object with keys L1, L2, L3 (or F), L4, M, m, mb, theta_i_deg");
+  refuse_spreads(object, where);
+  const DesignValues v = read_fields(object, where);
+  pass_other_keys(object, where, passed, by_program);
   if (settings) *settings = read_settings(object, req_shot, where);
   return v;
 }
