@@ -874,77 +874,82 @@ std::string row_refusal(const DesignRows::Row& row, const SettingsValues& given)
       "record, which reads back in its air";
 }
 
-DesignRows read_design_rows(std::istream& input, const std::string& source) {
+namespace {
+
+// The verifier's own CSV's results (all but its inputs, parts, machine and given release): dropped when read back.
+std::vector<std::string> own_result_columns() {
+  std::vector<std::string> results;
+  std::vector<std::string> inputs = part_columns();
+  inputs.push_back("psi_i_deg");
+  inputs.push_back(machine_key);
+  inputs.push_back(csv_column_of(field_of(&DesignValues::modulus_of_rupture)));
+  for (const InputField& field : input_fields())  // a given release reads back
+    if (field.group == FieldGroup::release) inputs.push_back(csv_column_of(field));
+  for (const Field& field : engine_fields(Engine{})) inputs.push_back(csv_column(field));
+  for (const std::string& column : verification_csv_header())
+    if (std::find(inputs.begin(), inputs.end(), column) == inputs.end()) results.push_back(column);
+  return results;
+}
+
+// What a column of designs' CSV holds: an input of the engine (with its unit), the machine, a
+// setting of the verifier's own CSV, its air described, a result dropped, a cell passed through,
+// or a row's error.
+struct RowsColumn {
+  enum { engine, machine, setting, air, dropped, passed, error } role;
+  ColumnName name;
+};
+
+// The role of the column `header` after `columns` (refused where it names an input in no unit,
+// or an input a column before it gives). The verifier's own CSV (`own_output`) has its results
+// dropped and the settings its shot was made with read back under their keys; its air is
+// described, not given, so a row shot in air is refused rather than shot again in vacuum.
+RowsColumn column_of(const std::string& header, bool own_output, const std::vector<std::string>& results, const std::vector<RowsColumn>& columns,
+                     const std::vector<std::string>& header_cells, const std::string& source) {
   const std::vector<std::string> inputs = input_names(op_shot);
   const std::vector<std::string_view> engine_keys(inputs.begin(), inputs.end());
-  const std::vector<std::string_view> dropped = {"X",      "Y",        "Lb", "H", "l", "l4", "L", "mu", "mu_b", "K", "DeltaU", "amplification",
-                                                 "branch", "warnings", "air"};
-  CsvReader reader(input, source);
-  // The verifier's own CSV (it alone has R_vacuum_m): its results are dropped, and the capacity
-  // it checked, predicted_R_m and predicted_T_J, is the one to check again.
-  const std::vector<std::string>& header_cells = reader.header();
-  const bool own_output = std::find(header_cells.begin(), header_cells.end(), "R_vacuum_m") != header_cells.end();
-  std::vector<std::string> results;
-  if (own_output) {
-    std::vector<std::string> inputs = part_columns();
-    inputs.push_back("psi_i_deg");
-    inputs.push_back(machine_key);
-    inputs.push_back(csv_column_of(field_of(&DesignValues::modulus_of_rupture)));
-    for (const InputField& field : input_fields())  // a given release reads back
-      if (field.group == FieldGroup::release) inputs.push_back(csv_column_of(field));
-    for (const Field& field : engine_fields(Engine{})) inputs.push_back(csv_column(field));
-    for (const std::string& column : verification_csv_header())
-      if (std::find(inputs.begin(), inputs.end(), column) == inputs.end()) results.push_back(column);
-  }
-  // The settings its shot was made with, read back under their keys; its air is described, not
-  // given, so a row shot in air is refused rather than shot again in vacuum.
-  const std::vector<std::pair<std::string, ColumnName>> settings_columns = {
+  static const std::vector<std::string_view> dropped = {"X",      "Y",        "Lb", "H", "l", "l4", "L", "mu", "mu_b", "K", "DeltaU", "amplification",
+                                                        "branch", "warnings", "air"};
+  static const std::vector<std::pair<std::string, ColumnName>> settings_columns = {
       {"release", {"release", ""}}, {"n", {"n", ""}}, {"target_level_m", {"target_level", "m"}}, {"range_from", {"range_from", ""}}};
-  struct Column {
-    enum { engine, machine, setting, air, dropped, passed, error } role;
-    ColumnName name;
-  };
-  std::vector<Column> columns;
-  DesignRows out;
-  for (const std::string& header : reader.header()) {
-    const auto setting = std::find_if(settings_columns.begin(), settings_columns.end(), [&](const auto& c) { return c.first == header; });
-    if (own_output && setting != settings_columns.end()) {
-      columns.push_back({Column::setting, setting->second});
-    } else if (own_output && header == "air") {
-      columns.push_back({Column::air, {header, ""}});
-    } else if (own_output && (header == "predicted_R_m" || header == "predicted_T_J")) {
-      columns.push_back({Column::engine, {header == "predicted_R_m" ? "R" : "T", header == "predicted_R_m" ? "m" : "J"}});
-    } else if (own_output && std::find(results.begin(), results.end(), header) != results.end()) {
-      columns.push_back({Column::dropped, {header, ""}});
-    } else if (const auto name = split_column_name(header, engine_keys)) {
-      const InputField& field = *find_field(name->key);
-      const std::string key = field.key;  // an alias ("theta") read as its key
-      if (!name->unit.empty() && !is_unit_word(name->unit)) {  // "theta_i", "L4_fet": the header's fault, not each row's
-        refuse_near_miss(header, inputs, source);
-        throw Error(ErrorKind::unknown_unit,
-                    source + ": the column '" + header + "' gives " + key + " in '" + name->unit + "', which is no unit of " +
-                        dimension_name(field.dimension) + "; name it " + key + " with one of " + unit_list(field.dimension) + " (e.g. " +
-                        csv_column_of(field) + "), or " + key + " alone");
-      }
-      for (std::size_t k = 0; k < columns.size(); ++k)
-        if (columns[k].role == Column::engine && columns[k].name.key == key)
-          throw Error(ErrorKind::usage, source + ": the columns '" + reader.header()[k] + "' and '" + header + "' both give " + key + "; keep one");
-      columns.push_back({Column::engine, {key, name->unit}});
-    } else if (split_column_name(header, dropped)) {
-      columns.push_back({Column::dropped, {header, ""}});
-    } else if (header == "error") {
-      columns.push_back({Column::error, {header, ""}});
-    } else if (header == machine_key) {
-      columns.push_back({Column::machine, {header, ""}});
-    } else {
-      refuse_near_miss(header, inputs, source);  // "theta_i", "L_4": meant as an input, not passed through
-      columns.push_back({Column::passed, {header, ""}});
-      out.passed_columns.push_back(header);
+  const auto setting = std::find_if(settings_columns.begin(), settings_columns.end(), [&](const auto& c) { return c.first == header; });
+  if (own_output && setting != settings_columns.end()) {
+    return {RowsColumn::setting, setting->second};
+  } else if (own_output && header == "air") {
+    return {RowsColumn::air, {header, ""}};
+  } else if (own_output && (header == "predicted_R_m" || header == "predicted_T_J")) {
+    return {RowsColumn::engine, {header == "predicted_R_m" ? "R" : "T", header == "predicted_R_m" ? "m" : "J"}};
+  } else if (own_output && std::find(results.begin(), results.end(), header) != results.end()) {
+    return {RowsColumn::dropped, {header, ""}};
+  } else if (const auto name = split_column_name(header, engine_keys)) {
+    const InputField& field = *find_field(name->key);
+    const std::string key = field.key;  // an alias ("theta") read as its key
+    if (!name->unit.empty() && !is_unit_word(name->unit)) {  // "theta_i", "L4_fet": the header's fault, not each row's
+      refuse_near_miss(header, inputs, source);
+      throw Error(ErrorKind::unknown_unit,
+                  source + ": the column '" + header + "' gives " + key + " in '" + name->unit + "', which is no unit of " +
+                      dimension_name(field.dimension) + "; name it " + key + " with one of " + unit_list(field.dimension) + " (e.g. " +
+                      csv_column_of(field) + "), or " + key + " alone");
     }
+    for (std::size_t k = 0; k < columns.size(); ++k)
+      if (columns[k].role == RowsColumn::engine && columns[k].name.key == key)
+        throw Error(ErrorKind::usage, source + ": the columns '" + header_cells[k] + "' and '" + header + "' both give " + key + "; keep one");
+    return {RowsColumn::engine, {key, name->unit}};
+  } else if (split_column_name(header, dropped)) {
+    return {RowsColumn::dropped, {header, ""}};
+  } else if (header == "error") {
+    return {RowsColumn::error, {header, ""}};
+  } else if (header == machine_key) {
+    return {RowsColumn::machine, {header, ""}};
+  } else {
+    refuse_near_miss(header, inputs, source);  // "theta_i", "L_4": meant as an input, not passed through
+    return {RowsColumn::passed, {header, ""}};
   }
-  // A column every design needs is a fault of the file, not of each row.
+}
+
+// A column every design needs is a fault of the file, not of each row.
+void require_columns(const std::vector<RowsColumn>& columns, const std::string& source) {
   auto has = [&](const char* key) {
-    return std::any_of(columns.begin(), columns.end(), [&](const Column& c) { return c.role == Column::engine && c.name.key == key; });
+    return std::any_of(columns.begin(), columns.end(), [&](const RowsColumn& c) { return c.role == RowsColumn::engine && c.name.key == key; });
   };
   std::string missing;
   using V = DesignValues;
@@ -956,36 +961,59 @@ DesignRows read_design_rows(std::istream& input, const std::string& source) {
     throw Error(ErrorKind::usage,
                 source + " is neither JSON nor CSV of designs: its header lacks " + missing +
                     "; give a design object, an array of them, or CSV such as trebuchet-calc --batch writes");
-  while (true) {
-    DesignRows::Row row;
-    row.passed.assign(out.passed_columns.size(), "");
-    CsvRow cells;
-    try {
-      if (!reader.next(cells)) break;
-      row.line = cells.line;
-      row.design = nlohmann::json::object();
-      // The pass-through cells first, so that a bad value leaves them in the row.
-      for (std::size_t k = 0, p = 0; k < columns.size(); ++k) {
-        if (columns[k].role == Column::passed) row.passed[p++] = cells.cells[k];
-        if (columns[k].role == Column::error) row.error = cells.cells[k];
-      }
-      for (std::size_t k = 0; k < columns.size(); ++k)
-        if (columns[k].role == Column::engine && !cells.cells[k].empty())
-          row.design[columns[k].name.key] = cell_value(cells.cells[k], columns[k].name.unit, reader.header()[k]);
-        else if (columns[k].role == Column::machine && !cells.cells[k].empty())
-          row.design[machine_key] = cells.cells[k];
-        else if (columns[k].role == Column::setting && !cells.cells[k].empty())
-          row.design[columns[k].name.key] = columns[k].name.unit.empty()
-              ? nlohmann::json(cells.cells[k])
-              : nlohmann::json(cell_value(cells.cells[k], columns[k].name.unit, reader.header()[k]));
-        else if (columns[k].role == Column::air && !cells.cells[k].empty() && cells.cells[k] != "vacuum")
-          row.air_described = cells.cells[k];
-    } catch (const Error& e) {
-      row.line = cells.line;
-      row.error = e.what();
+}
+
+// The next row of designs' CSV, or none at its end: its design object, its passed-through cells
+// (first, so that a bad value leaves them in the row) and its error; a cell that cannot be read
+// is the row's error.
+std::optional<DesignRows::Row> read_row(CsvReader& reader, const std::vector<RowsColumn>& columns, std::size_t passed_count) {
+  DesignRows::Row row;
+  row.passed.assign(passed_count, "");
+  CsvRow cells;
+  try {
+    if (!reader.next(cells)) return std::nullopt;
+    row.line = cells.line;
+    row.design = nlohmann::json::object();
+    // The pass-through cells first, so that a bad value leaves them in the row.
+    for (std::size_t k = 0, p = 0; k < columns.size(); ++k) {
+      if (columns[k].role == RowsColumn::passed) row.passed[p++] = cells.cells[k];
+      if (columns[k].role == RowsColumn::error) row.error = cells.cells[k];
     }
-    out.rows.push_back(std::move(row));
+    for (std::size_t k = 0; k < columns.size(); ++k)
+      if (columns[k].role == RowsColumn::engine && !cells.cells[k].empty())
+        row.design[columns[k].name.key] = cell_value(cells.cells[k], columns[k].name.unit, reader.header()[k]);
+      else if (columns[k].role == RowsColumn::machine && !cells.cells[k].empty())
+        row.design[machine_key] = cells.cells[k];
+      else if (columns[k].role == RowsColumn::setting && !cells.cells[k].empty())
+        row.design[columns[k].name.key] = columns[k].name.unit.empty()
+            ? nlohmann::json(cells.cells[k])
+            : nlohmann::json(cell_value(cells.cells[k], columns[k].name.unit, reader.header()[k]));
+      else if (columns[k].role == RowsColumn::air && !cells.cells[k].empty() && cells.cells[k] != "vacuum")
+        row.air_described = cells.cells[k];
+  } catch (const Error& e) {
+    row.line = cells.line;
+    row.error = e.what();
   }
+  return row;
+}
+
+}  // namespace
+
+DesignRows read_design_rows(std::istream& input, const std::string& source) {
+  CsvReader reader(input, source);
+  // The verifier's own CSV (it alone has R_vacuum_m): its results are dropped, and the capacity
+  // it checked, predicted_R_m and predicted_T_J, is the one to check again.
+  const std::vector<std::string>& header_cells = reader.header();
+  const bool own_output = std::find(header_cells.begin(), header_cells.end(), "R_vacuum_m") != header_cells.end();
+  const std::vector<std::string> results = own_output ? own_result_columns() : std::vector<std::string>();
+  std::vector<RowsColumn> columns;
+  DesignRows out;
+  for (const std::string& header : header_cells) {
+    columns.push_back(column_of(header, own_output, results, columns, header_cells, source));
+    if (columns.back().role == RowsColumn::passed) out.passed_columns.push_back(header);
+  }
+  require_columns(columns, source);
+  while (std::optional<DesignRows::Row> row = read_row(reader, columns, out.passed_columns.size())) out.rows.push_back(std::move(*row));
   return out;
 }
 
