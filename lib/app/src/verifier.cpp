@@ -92,12 +92,12 @@ void check_fixed_beam_ratio(double l, const std::string& name) {
                     ", appendix B's largest is 59); give a smaller " + name);
 }
 
-DesignReport check_design(const EngineRecord& record, const DesignCheck& check) {
-  Engine engine = record.engine;
-  engine.material = material_of(check.material, engine.material);
-  if (record.mb_from_D) engine.mb = wood_beam_mass(engine);  // in the wood of the run
+namespace {
+
+// The run's settings over the design's own (a record's), the release the run gives over the
+// design's; the tolerance of the capacity check, the record's where the caller gives none.
+ShotSettings settings_of_check(const EngineRecord& record, const DesignCheck& check, double& tolerance) {
   ShotSettings settings = check.settings;  // the run's release over the design's own
-  double tolerance = check.tolerance;
   if (check.given) {  // the design's settings (a record's), under the caller's
     ShotSettings own = shot_settings(overlay(record.settings, *check.given));
     own.release_at = settings.release_at;
@@ -106,27 +106,87 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
     if (record.settings.tol && !check.given->tol) tolerance = *record.settings.tol;
   }
   if (!settings.release_at) settings.release_at = record.release_at;
+  return settings;
+}
+
+// fit: the engine sized to the record's capacity, with its shots, and its table.
+struct FittedEngine {
+  Engine engine;
+  int simulations = 0;
+  std::string table;
+};
+
+FittedEngine fit_for_check(const Engine& engine, const EngineRecord& record, const DesignCheck& check, const ShotSettings& settings) {
+  if (settings.release_at)
+    throw Error(ErrorKind::usage,
+                "fit sizes the engine for a release at its optimum; a release the design sets ({{release_time}}, {{release_angle}}, "
+                "{{pin_angle}}) is shot by shot; leave it out to fit");
+  if (engine.parts.any())
+    throw Error(ErrorKind::usage,
+                "fit scales the paper's ideal engine to a capacity; an engine as built (friction, a beam or counterweight "
+                "as built, a rope) is checked by shot, or fitted to a measured range by calibrate");
+  if (!record.capacity) throw Error(ErrorKind::usage, "fit needs a capacity; give {{R}} and {{T}}, or \"R\" and \"T\" in the input");
+  if (engine.projectile_diameter && engine.machine != MachineKind::whipper)
+    throw Error(ErrorKind::usage,
+                "fit sizes the projectile anew (its mass m), and a diameter held fixed would change its density with it; "
+                "give its density ({{projectile}}) instead, or leave {{projectile_diameter}} out");
+  const CapacityFit result = fit_capacity(scaled_design(engine), *record.capacity, engine.material, check.settings);
+  return {result.engine, result.simulations,
+          "fitted engine (" + std::to_string(result.simulations) + " shots):\n" + engine_table(result.engine, check.units)};
+}
+
+// The pin to bend for an optimum, and what a degree or two of error costs (read off the same
+// shot); without friction on the pin, the bend for a greased and a dry one.
+void add_pin_tolerance(DesignReport& out, const PinScan& tolerance_scan, const Verification& v, const Engine& engine, const DesignCheck& check) {
+  nlohmann::ordered_json tolerance = nlohmann::ordered_json::array();
+  std::vector<std::string> lost;
+  for (const PinShot& shot : tolerance_scan.shots()) {
+    const double offset = shot.pin_angle_deg - v.pin_to_bend_deg;
+    const std::string signed_offset = (offset > 0 ? "+" : "") + format_significant(offset, 2) + " deg: ";
+    if (shot.R) {
+      const double change = *shot.R - v.capacity.R;
+      tolerance.push_back({{"pin_angle_deg", shot.pin_angle_deg}, {"R", *shot.R}, {"R_change", change}});
+      lost.push_back(signed_offset + (change > 0 ? "+" : "") + quantity_text(change, UnitDimension::length, check.units, 3));
+    } else {
+      tolerance.push_back({{"pin_angle_deg", shot.pin_angle_deg}, {"R", nullptr}, {"R_change", nullptr}, {"refused", shot.refused}});
+      lost.push_back(signed_offset + "refused");
+    }
+  }
+  out.json["pin_tolerance"] = tolerance;
+  // The loop leaves a pin of friction mu atan(mu) later (release_pin_angle): bend it that much more.
+  const double mu = engine.parts.pin_friction;
+  std::string pin = format_significant(v.pin_to_bend_deg, 4) + " deg";
+  if (mu > 0) {
+    pin += " for its friction " + format_significant(mu, 3) + " (" + format_significant(v.pin_angle_deg, 4) + " deg frictionless)";
+  } else {
+    nlohmann::ordered_json by_friction = nlohmann::ordered_json::array();
+    for (const auto& [coefficient, what] : {std::pair{greased_pin_friction, "greased"}, {dry_pin_friction, "dry"}}) {
+      const double bend = pin_to_bend_deg(v.pin_angle_deg, coefficient);
+      by_friction.push_back({{"pin_friction", coefficient}, {"pin_to_bend_deg", bend}});
+      pin += std::string(what == std::string("greased") ? " frictionless, " : ", ") + format_significant(bend, 4) + " deg " + what + " (mu " +
+          format_significant(coefficient, 2) + ")";
+    }
+    out.json["pin_to_bend_by_friction"] = by_friction;
+  }
+  if (check.table) out.table += "pin to bend for this release: " + pin + "; R changes with the pin off by " + join(lost, ", ") + "\n";
+}
+
+}  // namespace
+
+DesignReport check_design(const EngineRecord& record, const DesignCheck& check) {
+  Engine engine = record.engine;
+  engine.material = material_of(check.material, engine.material);
+  if (record.mb_from_D) engine.mb = wood_beam_mass(engine);  // in the wood of the run
+  double tolerance = check.tolerance;
+  const ShotSettings settings = settings_of_check(record, check, tolerance);
   DesignReport out;
   nlohmann::ordered_json simulated;
   std::string fitted_table;
   if (check.fit) {
-    if (settings.release_at)
-      throw Error(ErrorKind::usage,
-                  "fit sizes the engine for a release at its optimum; a release the design sets ({{release_time}}, {{release_angle}}, "
-                  "{{pin_angle}}) is shot by shot; leave it out to fit");
-    if (engine.parts.any())
-      throw Error(ErrorKind::usage,
-                  "fit scales the paper's ideal engine to a capacity; an engine as built (friction, a beam or counterweight "
-                  "as built, a rope) is checked by shot, or fitted to a measured range by calibrate");
-    if (!record.capacity) throw Error(ErrorKind::usage, "fit needs a capacity; give {{R}} and {{T}}, or \"R\" and \"T\" in the input");
-    if (engine.projectile_diameter && engine.machine != MachineKind::whipper)
-      throw Error(ErrorKind::usage,
-                  "fit sizes the projectile anew (its mass m), and a diameter held fixed would change its density with it; "
-                  "give its density ({{projectile}}) instead, or leave {{projectile_diameter}} out");
-    const CapacityFit result = fit_capacity(scaled_design(engine), *record.capacity, engine.material, check.settings);
-    engine = result.engine;
-    simulated["simulations"] = result.simulations;
-    fitted_table = "fitted engine (" + std::to_string(result.simulations) + " shots):\n" + engine_table(engine, check.units);
+    const FittedEngine fitted = fit_for_check(engine, record, check, settings);
+    engine = fitted.engine;
+    simulated["simulations"] = fitted.simulations;
+    fitted_table = fitted.table;
   }
   std::vector<TracePoint> trace;
   // The pin to bend for an optimum, and what a degree or two of error costs: read off the same shot.
@@ -166,39 +226,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   if (check.fit) engine_json.update(simulated);
   out.json["engine"] = engine_json;
   out.json["assumptions"] = assumptions_json(engine, settings);
-  if (!settings.release_at) {  // the pin to bend for this optimum, and what a degree or two of error costs
-    nlohmann::ordered_json tolerance = nlohmann::ordered_json::array();
-    std::vector<std::string> lost;
-    for (const PinShot& shot : tolerance_scan.shots()) {
-      const double offset = shot.pin_angle_deg - v.pin_to_bend_deg;
-      const std::string signed_offset = (offset > 0 ? "+" : "") + format_significant(offset, 2) + " deg: ";
-      if (shot.R) {
-        const double change = *shot.R - v.capacity.R;
-        tolerance.push_back({{"pin_angle_deg", shot.pin_angle_deg}, {"R", *shot.R}, {"R_change", change}});
-        lost.push_back(signed_offset + (change > 0 ? "+" : "") + quantity_text(change, UnitDimension::length, check.units, 3));
-      } else {
-        tolerance.push_back({{"pin_angle_deg", shot.pin_angle_deg}, {"R", nullptr}, {"R_change", nullptr}, {"refused", shot.refused}});
-        lost.push_back(signed_offset + "refused");
-      }
-    }
-    out.json["pin_tolerance"] = tolerance;
-    // The loop leaves a pin of friction mu atan(mu) later (release_pin_angle): bend it that much more.
-    const double mu = engine.parts.pin_friction;
-    std::string pin = format_significant(v.pin_to_bend_deg, 4) + " deg";
-    if (mu > 0) {
-      pin += " for its friction " + format_significant(mu, 3) + " (" + format_significant(v.pin_angle_deg, 4) + " deg frictionless)";
-    } else {
-      nlohmann::ordered_json by_friction = nlohmann::ordered_json::array();
-      for (const auto& [coefficient, what] : {std::pair{greased_pin_friction, "greased"}, {dry_pin_friction, "dry"}}) {
-        const double bend = pin_to_bend_deg(v.pin_angle_deg, coefficient);
-        by_friction.push_back({{"pin_friction", coefficient}, {"pin_to_bend_deg", bend}});
-        pin += std::string(what == std::string("greased") ? " frictionless, " : ", ") + format_significant(bend, 4) + " deg " + what + " (mu " +
-            format_significant(coefficient, 2) + ")";
-      }
-      out.json["pin_to_bend_by_friction"] = by_friction;
-    }
-    if (check.table) out.table += "pin to bend for this release: " + pin + "; R changes with the pin off by " + join(lost, ", ") + "\n";
-  }
+  if (!settings.release_at) add_pin_tolerance(out, tolerance_scan, v, engine, check);
   if (!record.passed.empty()) {  // the design's keys no reader knows, as given
     out.json["passed"] = record.passed;
     std::vector<std::string> keys;
