@@ -324,6 +324,14 @@ struct MaterialFactors {
   Expr g;  // the user's [m/s^2]
 };
 
+// A given's factor from the table's material to the user's: masses, D and T scale (section 7).
+Expr material_factor(const MaterialFactors& f, Quantity q) {
+  if (q == Quantity::T) return f.energy;
+  if (q == Quantity::D) return f.diameter;
+  if (quantity_dimension(q) == Dimension::mass) return f.mass;
+  return num(1);
+}
+
 // One row per segment of the table: its block, interval, branch, and the log-linear law
 // log Z = c + p log(R/R0) + q log(T/T0) of each quantity (eq:ZRT).
 struct ConstantsSheet {
@@ -682,27 +690,22 @@ Solution solve_in_segments(Sheet& s, int header, const ConstantsSheet& c, const 
   return out;
 }
 
-// A design sheet: the optimal engine for two givens, solved in every segment of the table, the
-// segment whose interval holds the solution's X (eq:Xi) chosen by a lookup. `fixed` says how
-// many of the givens' names are fixed (2 for R and T, 1 for R or Lb and one parameter, 0 for any
-// pair). A first given Lb makes the sheet for Lb and one log-linear parameter.
-struct DesignResult {
-  Expr valid;  // 1 when the request gives an engine, else 0
-  Expr R, T, L1, L2, L3, L4, D, M, m, mb;  // what the model-scaling sheet takes from it
-};
+// The branch a sheet's user picks, in the order of BranchChoice (the list ends in nullptr, as choices takes it).
+const char* branch_choices[] = {"auto", "lower", "upper", nullptr};
 
-DesignResult write_design(lxw_workbook* book, Formats& formats, const std::string& name, const std::string& heading, const ConstantsSheet& c,
-                          const MaterialFactors& f, const DesignRequest& request, int fixed, const std::string& refusal) {
-  const bool beam = request.first.quantity == Quantity::Lb;
-  Sheet s(book, name, formats);
-  s.title(heading,
-          beam ? "Type the yellow cells. The rows below find Lb on the line where the other given holds, in every segment of the table, "
-                 "and keep the one whose interval holds X; the engine follows from eq:ZRT."
-               : "Type the yellow cells. The rows below solve eq:ZiZj_RT in every segment of the table and keep the one whose "
-                 "interval holds X; the engine follows from eq:ZRT.");
-  if (!refusal.empty()) s.note(2, refusal);  // why the givens it opened on give no engine, in the calculator's words
+// What a design sheet's user types: the givens' names and values, theta_i, F and the branch.
+struct DesignInputs {
   std::array<Text, 2> names;
   std::array<Expr, 2> values;
+  Expr theta, F;
+  Text branch;
+};
+
+// The design sheet's yellow cells, opened on `request`; the first `fixed` givens' names fixed.
+DesignInputs write_design_inputs(Sheet& s, const DesignRequest& request, int fixed) {
+  DesignInputs in;
+  std::array<Text, 2>& names = in.names;
+  std::array<Expr, 2>& values = in.values;
   const Given givens[] = {request.first, request.second};
   // The log-linear givens, picked from a list; Lb is a sheet of its own.
   static std::vector<const char*> quantities = [] {
@@ -724,17 +727,23 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
                                "Type a number alone, in the unit shown beside it (m, J or kg): 250 for 250 m, 3110 for 3.11 t.");
   }
   s.describe(7, "theta_i", "deg", "initial beam angle; the table has the blocks on the constants sheet");
-  const Expr theta = s.number_input(7, 1, request.theta_i_deg, "Type the angle in degrees, a number from 0 to 90: 30 for 30 deg.", 0, 90);
+  in.theta = s.number_input(7, 1, request.theta_i_deg, "Type the angle in degrees, a number from 0 to 90: 30 for 30 deg.", 0, 90);
   s.describe(8, "F", "", "(L2 + L3)/H; type =2/3 for two thirds");
-  const Expr F = s.number_input(8, 1, request.F, "Type a positive number, or =2/3 for two thirds.");
+  in.F = s.number_input(8, 1, request.F, "Type a positive number, or =2/3 for two thirds.");
   s.describe(9, "branch", "", "auto, lower or upper: two optima compete where the branches overlap (section 6.2)");
-  static const char* branches[] = {"auto", "lower", "upper", nullptr};  // in the order of BranchChoice
-  const Text branch = s.input_text(9, 1, branches[static_cast<int>(request.branch)]);
-  s.choices(9, 1, branches);
+  in.branch = s.input_text(9, 1, branch_choices[static_cast<int>(request.branch)]);
+  s.choices(9, 1, branch_choices);
+  return in;
+}
 
-  // Which law each log-linear given follows, and its value in the table's material.
+// Which law each log-linear given follows (its column among the quantities, rows 11 and 12),
+// its unit beside it, and its value's log in the table's material (rows 13 and 14); a first
+// given Lb as its log alone (`log_Lb`).
+std::vector<LawGiven> given_laws(Sheet& s, const ConstantsSheet& c, const MaterialFactors& f, const DesignInputs& in, bool beam,
+                                 std::optional<Expr>& log_Lb) {
+  const std::array<Text, 2>& names = in.names;
+  const std::array<Expr, 2>& values = in.values;
   std::vector<LawGiven> laws;
-  std::optional<Expr> log_Lb;
   if (beam) {
     s.text(4, 2, "m");
     log_Lb = s.formula_row(13, "ln of the first given", ln(values[0]), "", "ln Lb: a length, the same in every material");
@@ -747,9 +756,9 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
     const Expr column = s.formula_row(11 + k, std::string(k == 0 ? "first" : "second") + " given's column", position, "",
                                       "its place among the quantities of the constants sheet");
     // Masses, D and T of the table are in its own material: divide by the factors (section 7).
-    const Expr factor{
-        "CHOOSE(" + column.f + ",1," + f.energy.f + ",1,1,1," + f.diameter.f + "," + f.mass.f + "," + f.mass.f + "," + f.mass.f + ",1)",
-        std::array<double, 10>{1, f.energy.v, 1, 1, 1, f.diameter.v, f.mass.v, f.mass.v, f.mass.v, 1}[static_cast<std::size_t>(column.v) - 1]};
+    std::string choose_factor = "CHOOSE(" + column.f;
+    for (Quantity q : log_linear) choose_factor += "," + material_factor(f, q).f;
+    const Expr factor{choose_factor + ")", material_factor(f, log_linear[static_cast<std::size_t>(column.v) - 1]).v};
     // The unit of the given's value, beside it.
     static const char* units[] = {"m", "J", "m", "m", "m", "m", "kg", "kg", "kg", "(pure number)"};
     std::string unit_choice = "CHOOSE(" + column.f;
@@ -760,6 +769,34 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
                                   "in the table's material: masses, D and T divided by the material sheet's factors")});
   }
 
+  return laws;
+}
+
+// A design sheet: the optimal engine for two givens, solved in every segment of the table, the
+// segment whose interval holds the solution's X (eq:Xi) chosen by a lookup. `fixed` says how
+// many of the givens' names are fixed (2 for R and T, 1 for R or Lb and one parameter, 0 for any
+// pair). A first given Lb makes the sheet for Lb and one log-linear parameter.
+struct DesignResult {
+  Expr valid;  // 1 when the request gives an engine, else 0
+  Expr R, T, L1, L2, L3, L4, D, M, m, mb;  // what the model-scaling sheet takes from it
+};
+
+DesignResult write_design(lxw_workbook* book, Formats& formats, const std::string& name, const std::string& heading, const ConstantsSheet& c,
+                          const MaterialFactors& f, const DesignRequest& request, int fixed, const std::string& refusal) {
+  const bool beam = request.first.quantity == Quantity::Lb;
+  Sheet s(book, name, formats);
+  s.title(heading,
+          beam ? "Type the yellow cells. The rows below find Lb on the line where the other given holds, in every segment of the table, "
+                 "and keep the one whose interval holds X; the engine follows from eq:ZRT."
+               : "Type the yellow cells. The rows below solve eq:ZiZj_RT in every segment of the table and keep the one whose "
+                 "interval holds X; the engine follows from eq:ZRT.");
+  if (!refusal.empty()) s.note(2, refusal);  // why the givens it opened on give no engine, in the calculator's words
+  const DesignInputs in = write_design_inputs(s, request, fixed);
+  const Expr &theta = in.theta, &F = in.F;
+  const Text& branch = in.branch;
+
+  std::optional<Expr> log_Lb;
+  const std::vector<LawGiven> laws = given_laws(s, c, f, in, beam, log_Lb);
   const Solution solved = solve_in_segments(s, 40, c, theta, F, branch, laws, log_Lb);
   const Expr best = s.formula_row(16, "best score", solved.best, "", "0: no segment of the table holds the solution");
   s.formula_row(17, "segment", solved.segment, "", "the segment whose interval holds X: the row below with the best score");
@@ -890,6 +927,80 @@ void write_sites(lxw_workbook* book, Formats& formats, const ConstantsSheet& c, 
   worksheet_print_area(s.raw(), 0, 0, static_cast<lxw_row_t>(row + 2), 15);
 }
 
+// Where the sheet of sites puts a row's cells: after the line and the passed-through columns,
+// the two givens, theta_i, F, the branch, the status, valid, then the engine's values.
+struct SitesLayout {
+  explicit SitesLayout(int passed)
+      : passed(passed),
+        given_col(passed + 1),
+        theta_col(passed + 3),
+        F_col(passed + 4),
+        branch_col(passed + 5),
+        status_col(passed + 6),
+        valid_col(passed + 7),
+        out_col(passed + 8) {}
+  int passed, given_col, theta_col, F_col, branch_col, status_col, valid_col, out_col;
+};
+
+// One site's row `row` (its k-th, its table of segments at `tables` below the rows): its givens,
+// theta_i, F and branch as inputs, the engine by the segment table of the pair `a`, `b` (Lb
+// first, `swap` where the file gives it second).
+void write_site_row(Sheet& s, const ConstantsSheet& c, const MaterialFactors& f, const UserSites& sites, std::size_t k, const SitesLayout& layout,
+                    Quantity a, Quantity b, bool swap, int tables) {
+  const int passed = layout.passed, given_col = layout.given_col, theta_col = layout.theta_col, F_col = layout.F_col, branch_col = layout.branch_col,
+            status_col = layout.status_col, valid_col = layout.valid_col, out_col = layout.out_col;
+  const bool beam = a == Quantity::Lb;
+  const int first_row = 6, table_rows = (beam ? 2 : 1) * c.rows + 4;
+  // A given's column among the constants sheet's laws (from 1).
+  const auto law_column = [](Quantity q) {
+    return num(static_cast<double>(std::find(log_linear.begin(), log_linear.end(), q) - log_linear.begin() + 1));
+  };
+  const SiteRow& site = sites.rows[k];
+  const int row = first_row + static_cast<int>(k);
+  s.number(row, 0, site.line);
+  for (int p = 0; p < passed; ++p) s.text(row, 1 + p, site.passed[static_cast<std::size_t>(p)]);
+  s.text(row, out_col + 12, site.refusal.empty() ? "ok" : site.refusal);
+  if (!site.request) {
+    s.text(row, status_col, "refused when read: see the calculator's message; correct the file and write the workbook again");
+    return;
+  }
+  const DesignRequest& r = *site.request;
+  const Expr v1 = s.number_input(row, given_col, r.first.value, "Type a number alone, in the unit under the column's name.");
+  const Expr v2 = s.number_input(row, given_col + 1, r.second.value, "Type a number alone, in the unit under the column's name.");
+  const Expr value_a = swap ? v2 : v1, value_b = swap ? v1 : v2;
+  const Expr theta = s.number_input(row, theta_col, r.theta_i_deg, "Type the angle in degrees, a number from 0 to 90: 30 for 30 deg.", 0, 90);
+  const Expr F = s.number_input(row, F_col, r.F, "Type a positive number, or =2/3 for two thirds.");
+  const Text branch = s.input_text(row, branch_col, branch_choices[static_cast<int>(r.branch)]);
+  s.choices(row, branch_col, branch_choices);
+  const int header = tables + static_cast<int>(k) * table_rows;
+  s.text(header - 2, 0, "Line " + std::to_string(site.line) + " of " + sites.source + ", in every segment:");
+  std::vector<LawGiven> laws;
+  std::optional<Expr> log_Lb;
+  if (beam)
+    log_Lb = ln(value_a);
+  else
+    laws.push_back({law_column(a), ln(value_a / material_factor(f, a))});
+  laws.push_back({law_column(b), ln(value_b / material_factor(f, b))});
+  const Solution solved = solve_in_segments(s, header, c, theta, F, branch, laws, log_Lb);
+  auto fit = [&](Param param) { return fitted(c, f, param, solved.segment, solved.lr, solved.lt); };
+  const Expr L1 = fit(Param::L1), L2 = fit(Param::L2), L3 = counterweight_arm(F, theta, L1, L2);
+  s.formula(row, status_col, design_status(solved.ok, solved.amplification, L3));
+  const Expr valid = s.formula(row, valid_col, design_valid(solved.ok, solved.amplification, L3));
+  const Expr outputs[] = {c.R0 * exp(solved.lr),
+                          target_energy(c, f, solved.lt) / num(1000),
+                          L1,
+                          L2,
+                          L3,
+                          fit(Param::L4),
+                          L1 * cos_deg(theta),
+                          fit(Param::D),
+                          fit(Param::M) / num(1000),
+                          fit(Param::m),
+                          fit(Param::mb),
+                          (num(5) * solved.lr - solved.lt) / sqrt(num(26))};  // eq:Xi
+  for (std::size_t j = 0; j < std::size(outputs); ++j) s.result(row, out_col + static_cast<int>(j), valid, outputs[j]);
+}
+
 // The user's sites (trebuchet-calc --spreadsheet FILE --batch SITES.csv): a row each, its givens,
 // theta_i, F and branch typed in yellow cells, and the optimal engine by the same segment table
 // and eq:ZRT as the design sheets, each row with its own table of segments below. A row whose
@@ -905,13 +1016,12 @@ void write_user_sites(lxw_workbook* book, Formats& formats, const ConstantsSheet
   const Quantity first = example ? example->first.quantity : Quantity::R, second = example ? example->second.quantity : Quantity::m;
   const bool swap = second == Quantity::Lb;
   const Quantity a = swap ? second : first, b = swap ? first : second;
-  const bool beam = a == Quantity::Lb;
   s.title("Your sites, from " + sites.source + ": " + std::to_string(sites.rows.size()) + " row(s), the optimal engine of each",
           "Type a given, theta_i, F or the branch in a yellow cell and the row follows (eq:RT_ZiZj, eq:ZRT, as on the sheet 'from R and one'; "
           "Lb as on 'from Lb and one'). Values in SI base units: 250 for 250 m, 3110 for 3.11 t. The status says why a row has no engine.");
-  const int passed = static_cast<int>(sites.columns.size());
-  const int given_col = passed + 1, theta_col = passed + 3, F_col = passed + 4, branch_col = passed + 5, status_col = passed + 6,
-            valid_col = passed + 7, out_col = passed + 8;
+  const SitesLayout layout(static_cast<int>(sites.columns.size()));
+  const int passed = layout.passed, given_col = layout.given_col, branch_col = layout.branch_col, status_col = layout.status_col,
+            valid_col = layout.valid_col, out_col = layout.out_col;
   const auto unit_of = [](Quantity q) { return sheet_unit(*find_field(quantity_name(q))); };
   std::vector<std::pair<std::string, std::string>> columns = {{"line", ""}};
   for (const std::string& name : sites.columns) columns.push_back({name, ""});
@@ -948,64 +1058,9 @@ void write_user_sites(lxw_workbook* book, Formats& formats, const ConstantsSheet
   worksheet_set_column(s.raw(), static_cast<lxw_col_t>(valid_col), static_cast<lxw_col_t>(out_col + 11), 9, nullptr);
   worksheet_set_column(s.raw(), static_cast<lxw_col_t>(out_col + 12), static_cast<lxw_col_t>(out_col + 12), 90, nullptr);
   worksheet_freeze_panes(s.raw(), static_cast<lxw_row_t>(first_row), 0);
-  static const char* branches[] = {"auto", "lower", "upper", nullptr};  // in the order of BranchChoice
-  // A given's column among the constants sheet's laws (from 1), and its factor from the table's material (section 7).
-  const auto law_column = [](Quantity q) {
-    return num(static_cast<double>(std::find(log_linear.begin(), log_linear.end(), q) - log_linear.begin() + 1));
-  };
-  const auto material = [&f](Quantity q) {
-    if (q == Quantity::T) return f.energy;
-    if (q == Quantity::D) return f.diameter;
-    if (quantity_dimension(q) == Dimension::mass) return f.mass;
-    return num(1);
-  };
-  const int table_rows = (beam ? 2 : 1) * c.rows + 4;
   const int tables = first_row + static_cast<int>(sites.rows.size()) + 6;
   for (std::size_t k = 0; k < sites.rows.size(); ++k) {
-    const SiteRow& site = sites.rows[k];
-    const int row = first_row + static_cast<int>(k);
-    s.number(row, 0, site.line);
-    for (int p = 0; p < passed; ++p) s.text(row, 1 + p, site.passed[static_cast<std::size_t>(p)]);
-    s.text(row, out_col + 12, site.refusal.empty() ? "ok" : site.refusal);
-    if (!site.request) {
-      s.text(row, status_col, "refused when read: see the calculator's message; correct the file and write the workbook again");
-      continue;
-    }
-    const DesignRequest& r = *site.request;
-    const Expr v1 = s.number_input(row, given_col, r.first.value, "Type a number alone, in the unit under the column's name.");
-    const Expr v2 = s.number_input(row, given_col + 1, r.second.value, "Type a number alone, in the unit under the column's name.");
-    const Expr value_a = swap ? v2 : v1, value_b = swap ? v1 : v2;
-    const Expr theta = s.number_input(row, theta_col, r.theta_i_deg, "Type the angle in degrees, a number from 0 to 90: 30 for 30 deg.", 0, 90);
-    const Expr F = s.number_input(row, F_col, r.F, "Type a positive number, or =2/3 for two thirds.");
-    const Text branch = s.input_text(row, branch_col, branches[static_cast<int>(r.branch)]);
-    s.choices(row, branch_col, branches);
-    const int header = tables + static_cast<int>(k) * table_rows;
-    s.text(header - 2, 0, "Line " + std::to_string(site.line) + " of " + sites.source + ", in every segment:");
-    std::vector<LawGiven> laws;
-    std::optional<Expr> log_Lb;
-    if (beam)
-      log_Lb = ln(value_a);
-    else
-      laws.push_back({law_column(a), ln(value_a / material(a))});
-    laws.push_back({law_column(b), ln(value_b / material(b))});
-    const Solution solved = solve_in_segments(s, header, c, theta, F, branch, laws, log_Lb);
-    auto fit = [&](Param param) { return fitted(c, f, param, solved.segment, solved.lr, solved.lt); };
-    const Expr L1 = fit(Param::L1), L2 = fit(Param::L2), L3 = counterweight_arm(F, theta, L1, L2);
-    s.formula(row, status_col, design_status(solved.ok, solved.amplification, L3));
-    const Expr valid = s.formula(row, valid_col, design_valid(solved.ok, solved.amplification, L3));
-    const Expr outputs[] = {c.R0 * exp(solved.lr),
-                            target_energy(c, f, solved.lt) / num(1000),
-                            L1,
-                            L2,
-                            L3,
-                            fit(Param::L4),
-                            L1 * cos_deg(theta),
-                            fit(Param::D),
-                            fit(Param::M) / num(1000),
-                            fit(Param::m),
-                            fit(Param::mb),
-                            (num(5) * solved.lr - solved.lt) / sqrt(num(26))};  // eq:Xi
-    for (std::size_t j = 0; j < std::size(outputs); ++j) s.result(row, out_col + static_cast<int>(j), valid, outputs[j]);
+    write_site_row(s, c, f, sites, k, layout, a, b, swap, tables);
   }
   const int notes = first_row + static_cast<int>(sites.rows.size()) + 1;
   s.text(notes, 0, "The status is what the calculator would say of the row as it stands; the last column, what it said of the file's row.");
