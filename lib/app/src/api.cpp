@@ -277,13 +277,16 @@ ordered_json complete(const json& request) {
   return answer;
 }
 
-ordered_json monte_carlo(const json& request) {
-  require_keys(request, keys_of(req_monte_carlo, op_shot | op_complete), "monte_carlo");
+namespace {
+
+// The run a monte_carlo request asks for: a design's shots or an attested engine's completions,
+// the request's settings over the design's own (each may be a range or a spread too, the wind
+// say; a setting the request gives is no longer drawn from the design's).
+MonteCarloRequest monte_carlo_run_of(const json& request, json& passed) {
   const bool completes = request.contains("attested");
   if (completes == request.contains("design"))
     throw Error(ErrorKind::usage, "give {{design}} (a shot of each sample) or {{attested}} (a completion of each sample), one of them");
   const std::string where = completes ? "attested" : "design";
-  json passed = json::object();
   const unsigned operation = completes ? op_complete : op_shot;
   MonteCarloRequest run;
   if (completes) {
@@ -306,6 +309,69 @@ ordered_json monte_carlo(const json& request) {
     throw Error(ErrorKind::usage,
                 "monte_carlo samples the values of {{" + where +
                     "}} given as a range (\"2.5t..3.5t\") or a spread (\"3.5m±0.2m\"); give one, or call shot for one value each");
+  return run;
+}
+
+// One worker's part of a run: the outcomes of the samples from `first`, `count` of them, each
+// [R, T, eps, v, then the drawn inputs] or its failure.
+template <class Sample>
+ordered_json monte_carlo_part(const json& request, int samples, std::uint64_t seed, const Sample& sample) {
+  const auto first = read_value(request, "first", UnitDimension::dimensionless, "").value_or(0);
+  const auto count = read_value(request, "count", UnitDimension::dimensionless, "").value_or(samples - first);
+  if (!(first >= 0 && count >= 0 && first + count <= samples) || first != std::floor(first) || count != std::floor(count))
+    throw Error(ErrorKind::bad_number, "{{first}} and {{count}} must pick samples from 0 to {{samples}} - 1");
+  ordered_json part = ordered_json::array();
+  for (auto i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(first + count); ++i) {
+    const SampleOutcome o = run_sample(seed, i, sample);
+    if (o.failure.empty()) {  // R, T, eps, v, then the drawn inputs
+      ordered_json values(o.values);
+      for (double x : o.drawn) values.push_back(x);
+      part.push_back(values);
+    } else {
+      part.push_back({{"failure", o.failure}, {"kind", kind_name(o.failure_kind)}, {"drawn", o.drawn}});
+    }
+  }
+  return {{"samples", samples}, {"outcomes", part}};
+}
+
+// The parts put together: one outcome for each sample, in order, as monte_carlo_part gives them.
+std::vector<SampleOutcome> read_outcomes(const json& given, int samples, std::size_t drawn_count) {
+  std::vector<SampleOutcome> outcomes;
+  if (!given.is_array() || given.size() != static_cast<std::size_t>(samples))
+    throw Error(ErrorKind::usage, "{{outcomes}} must hold one outcome for each of the " + std::to_string(samples) + " samples, in order");
+  for (const json& o : given) {
+    SampleOutcome outcome;
+    const auto numbers = [&](const json& a) {
+      return a.is_array() && a.size() == 4 + drawn_count && std::all_of(a.begin(), a.end(), [](const json& x) { return x.is_number(); });
+    };
+    const auto drawn_ok = [&](const json& a) {
+      return a.is_array() && a.size() == drawn_count && std::all_of(a.begin(), a.end(), [](const json& x) { return x.is_number(); });
+    };
+    if (numbers(o)) {
+      for (std::size_t k = 0; k < 4; ++k) outcome.values[k] = o[k].get<double>();
+      for (std::size_t k = 4; k < o.size(); ++k) outcome.drawn.push_back(o[k].get<double>());
+    } else if (o.is_object() && o.contains("failure") && o["failure"].is_string() && (!o.contains("kind") || o["kind"].is_string()) &&
+               o.contains("drawn") && drawn_ok(o["drawn"])) {
+      outcome.failure = o["failure"].get<std::string>();
+      outcome.failure_kind = kind_of(o.value("kind", "numerical"));
+      outcome.drawn = o["drawn"].get<std::vector<double>>();
+    } else {
+      throw Error(ErrorKind::usage,
+                  "{{outcomes}}: " + brief_json(o) + " is no outcome; give [R, T, eps, v, then the " + std::to_string(drawn_count) +
+                      " drawn inputs] or {\"failure\": ..., \"drawn\": [...]}, as a part of the run gives them");
+    }
+    outcomes.push_back(outcome);
+  }
+  return outcomes;
+}
+
+}  // namespace
+
+ordered_json monte_carlo(const json& request) {
+  require_keys(request, keys_of(req_monte_carlo, op_shot | op_complete), "monte_carlo");
+  const bool completes = request.contains("attested");
+  json passed = json::object();
+  const MonteCarloRequest run = monte_carlo_run_of(request, passed);
   const ShotSettings settings = shot_settings(run.settings);
   // As the program does: the design at each spread's first number must be an engine.
   const std::int64_t shots = shots_per_sample(run);
@@ -314,57 +380,12 @@ ordered_json monte_carlo(const json& request) {
   const std::uint64_t seed = run.settings.seed.value_or(1);
   const auto sample = [&](std::mt19937_64& random) { return sample_outcome(run, random, key_word); };
   const std::optional<double> claim = run.settings.claim;
-
+  if (request.contains("first") || request.contains("count")) return monte_carlo_part(request, samples, seed, sample);
   std::vector<SampleOutcome> outcomes;
-  if (request.contains("first") || request.contains("count")) {  // one worker's part
-    const auto first = read_value(request, "first", UnitDimension::dimensionless, "").value_or(0);
-    const auto count = read_value(request, "count", UnitDimension::dimensionless, "").value_or(samples - first);
-    if (!(first >= 0 && count >= 0 && first + count <= samples) || first != std::floor(first) || count != std::floor(count))
-      throw Error(ErrorKind::bad_number, "{{first}} and {{count}} must pick samples from 0 to {{samples}} - 1");
-    ordered_json part = ordered_json::array();
-    for (auto i = static_cast<std::size_t>(first); i < static_cast<std::size_t>(first + count); ++i) {
-      const SampleOutcome o = run_sample(seed, i, sample);
-      if (o.failure.empty()) {  // R, T, eps, v, then the drawn inputs
-        ordered_json values(o.values);
-        for (double x : o.drawn) values.push_back(x);
-        part.push_back(values);
-      } else {
-        part.push_back({{"failure", o.failure}, {"kind", kind_name(o.failure_kind)}, {"drawn", o.drawn}});
-      }
-    }
-    return {{"samples", samples}, {"outcomes", part}};
-  }
-  if (request.contains("outcomes")) {  // the parts put together
-    const json& given = request["outcomes"];
-    if (!given.is_array() || given.size() != static_cast<std::size_t>(samples))
-      throw Error(ErrorKind::usage, "{{outcomes}} must hold one outcome for each of the " + std::to_string(samples) + " samples, in order");
-    const std::size_t drawn_count = run.spreads.size();
-    for (const json& o : given) {
-      SampleOutcome outcome;
-      const auto numbers = [&](const json& a) {
-        return a.is_array() && a.size() == 4 + drawn_count && std::all_of(a.begin(), a.end(), [](const json& x) { return x.is_number(); });
-      };
-      const auto drawn_ok = [&](const json& a) {
-        return a.is_array() && a.size() == drawn_count && std::all_of(a.begin(), a.end(), [](const json& x) { return x.is_number(); });
-      };
-      if (numbers(o)) {
-        for (std::size_t k = 0; k < 4; ++k) outcome.values[k] = o[k].get<double>();
-        for (std::size_t k = 4; k < o.size(); ++k) outcome.drawn.push_back(o[k].get<double>());
-      } else if (o.is_object() && o.contains("failure") && o["failure"].is_string() && (!o.contains("kind") || o["kind"].is_string()) &&
-                 o.contains("drawn") && drawn_ok(o["drawn"])) {
-        outcome.failure = o["failure"].get<std::string>();
-        outcome.failure_kind = kind_of(o.value("kind", "numerical"));
-        outcome.drawn = o["drawn"].get<std::vector<double>>();
-      } else {
-        throw Error(ErrorKind::usage,
-                    "{{outcomes}}: " + brief_json(o) + " is no outcome; give [R, T, eps, v, then the " + std::to_string(drawn_count) +
-                        " drawn inputs] or {\"failure\": ..., \"drawn\": [...]}, as a part of the run gives them");
-      }
-      outcomes.push_back(outcome);
-    }
-  } else {
+  if (request.contains("outcomes"))  // the parts put together
+    outcomes = read_outcomes(request["outcomes"], samples, run.spreads.size());
+  else
     for (std::size_t i = 0; i < static_cast<std::size_t>(samples); ++i) outcomes.push_back(run_sample(seed, i, sample));
-  }
   const MonteCarloSummary summary = summarize_samples(outcomes);
   refuse_when_no_sample_worked(summary);
   const std::vector<UncertainInput> inputs = uncertain_inputs(run);
