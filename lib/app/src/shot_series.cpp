@@ -96,12 +96,16 @@ SitePoint ShotSeries::stone_at(double after) const {
   return SitePoint{flight[i].x + f * (flight[i + 1].x - flight[i].x), flight[i].y + f * (flight[i + 1].y - flight[i].y)};
 }
 
-nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& engine) {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+// The motion as columns of SI values, a row per sample; after the release the sling and
+// projectile are gone: their values are null.
+json frames_json(const ShotSeries& series, const Engine& engine) {
   const double Mg = engine.M * engine.material.g;  // [N]: the scaled forces' unit
   const double energy_unit = Mg * engine.L2;  // [J], and the beam moment's [N m]
-  using json = nlohmann::ordered_json;
   json frames = json::object();
-  // After the release the sling and projectile are gone: their values are null.
   const char* columns[] = {"t",
                            "theta_deg",
                            "psi_deg",
@@ -166,9 +170,11 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
     for (std::size_t k = 0; k < std::size(columns); ++k) frames[columns[k]].push_back(values[k] ? json(*values[k]) : json(nullptr));
     frames["phase"].push_back(phase_numeral(p.phase));
   }
-  json flight = {{"x", json::array()}, {"y", json::array()}, {"time", series.flight_time}};
-  for (const SitePoint& p : series.flight) flight["x"].push_back(p.x), flight["y"].push_back(p.y);
-  // Phase II as releases, each over its value at the release (as release.svg draws them).
+  return frames;
+}
+
+// Phase II as releases, each over its value at the release (as release.svg draws them).
+json phase_two_json(const ShotSeries& series) {
   const ShotSeries::Moment& at = series.phase_two[series.release_row];
   json phase_two = json::object();
   for (const char* column : {"t", "Q", "eps", "R", "FS_perp", "FR", "FRh_max", "FRh_min"}) phase_two[column] = json::array();
@@ -180,8 +186,12 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
     const char* extremes[] = {"FS_perp", "FR", "FRh_max", "FRh_min"};
     for (int k = 0; k < force_count; ++k) phase_two[extremes[k]].push_back(row.running_max[k] / series.final_extremes[k]);
   }
-  // R [m] and Q against the pin angle [deg]; null where a pin gives no release.
-  // With why each pin without them is refused (null where it has them).
+  return phase_two;
+}
+
+// R [m] and Q against the pin angle [deg]; null where a pin gives no release, with why each pin
+// without them is refused (null where it has them).
+json pins_json(const ShotSeries& series) {
   json pins = {{"pin_angle_deg", json::array()}, {"R", json::array()}, {"Q", json::array()}, {"refused", json::array()}};
   for (const PinShot& shot : series.pins) {
     pins["pin_angle_deg"].push_back(shot.pin_angle_deg);
@@ -189,6 +199,14 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
     pins["Q"].push_back(shot.Q ? json(*shot.Q) : json(nullptr));
     pins["refused"].push_back(shot.refused.empty() ? json(nullptr) : json(shot.refused));
   }
+  return pins;
+}
+
+}  // namespace
+
+nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& engine) {
+  json flight = {{"x", json::array()}, {"y", json::array()}, {"time", series.flight_time}};
+  for (const SitePoint& p : series.flight) flight["x"].push_back(p.x), flight["y"].push_back(p.y);
   return {{"pivot_height", pivot_height(engine)},
           {"energy_drop", potential_energy_drop(engine)},
           {"moments",
@@ -197,11 +215,11 @@ nlohmann::ordered_json shot_series_json(const ShotSeries& series, const Engine& 
             {"tm", series.peak_reaction},
             {"t2", series.second_extreme},
             {"release", series.release}}},
-          {"frames", frames},
+          {"frames", frames_json(series, engine)},
           {"flight", flight},
-          {"phase_two", phase_two},
+          {"phase_two", phase_two_json(series)},
           {"release_row", series.release_row},
-          {"pins", pins}};
+          {"pins", pins_json(series)}};
 }
 
 }  // namespace trebuchet
