@@ -122,12 +122,7 @@ void mass_list_option(CLI::App* app, std::vector<double>& list, const std::strin
 // --objective: range or eps.
 void objective_option(CLI::App* app, Options& o, const std::string& flag, const std::string& help) {
   parsed_option(
-      app, flag,
-      [&o](const std::string& text) {
-        if (text != "range" && text != "eps") throw Error(ErrorKind::usage, "--objective: '" + text + "' is not an objective; use range or eps");
-        o.efficiency = text == "eps";
-      },
-      help);
+      app, flag, [&o](const std::string& text) { o.efficiency = parse_efficiency_objective(text, "--objective"); }, help);
 }
 
 // --X: from:to:step.

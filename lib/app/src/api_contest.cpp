@@ -36,10 +36,7 @@ ordered_json contest(const json& request) {
   if (request.contains(machine_key)) v.machine = parse_machine(text_of(request[machine_key], machine_key), "{{machine}}");
   bool efficiency = false;
   if (request.contains("objective")) {
-    const std::string objective = text_of(request["objective"], "objective");
-    if (objective != "range" && objective != "eps")
-      throw Error(ErrorKind::usage, "{{objective}}: '" + objective + "' is not an objective; use range or eps");
-    efficiency = objective == "eps";
+    efficiency = parse_efficiency_objective(text_of(request["objective"], "objective"), "{{objective}}");
   }
   ContestRequest r = contest_request(v, settings_of(request, req_contest), positive_value(request, "mb_per_m", UnitDimension::dimensionless),
                                      efficiency);

@@ -72,6 +72,12 @@ MachineKind parse_machine(std::string_view name, std::string_view option) {
   throw Error(ErrorKind::usage, std::string(option) + ": '" + std::string(name) + "' is not a machine; use " + machine_names());
 }
 
+bool parse_efficiency_objective(std::string_view name, std::string_view option) {
+  if (name != "range" && name != "eps")
+    throw Error(ErrorKind::usage, std::string(option) + ": '" + std::string(name) + "' is not an objective; use range or eps");
+  return name == "eps";
+}
+
 UnitSystem parse_unit_system(std::string_view name, std::string_view option) {
   if (name == "si" || name == "SI") return UnitSystem::si;
   if (name == "imperial") return UnitSystem::imperial;

@@ -449,15 +449,11 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   out.projectile = {e.l * (st - e.l4 * cf), e.l * (-ct - e.l4 * sf)};
   out.projectile_velocity = {e.l * (ct * td + e.l4 * sf * fd), e.l * (st * td - e.l4 * cf * fd)};
   out.normal_force = f.normal_force;
-  out.sling_on_tip = f.rope.on_tip;
   // The sling runs from the projectile to the tip along (cos phi, sin phi): its tension is the
   // pull on the projectile along it (the rope's drag adds a share across it); a sling can pull
   // but not push.
   out.sling_tension = f.sling_on_projectile.x * cf + f.sling_on_projectile.y * sf;
-  if (design_.parts.sling.any())
-    out.rope_tension_at_tip = f.rope.tension_at_tip, out.rope_shear_at_tip = f.rope.shear_at_tip, out.rope_shear_at_end = f.rope.shear_at_end;
-  else
-    out.rope_tension_at_tip = out.sling_tension;  // one tension along a rope of no mass
+  sling_at_tip(out, f.rope, design_.parts.sling.any(), ct, st);
   // Positions of the hinge, the counterweight and the tip (dynamics.hpp), and heights above the
   // engine's base, which lies l cos(theta_i) below the pivot (H = L1 cos theta_i).
   out.hinge = {-st, ct};
@@ -466,8 +462,6 @@ Snapshot Dynamics::snapshot(Phase phase, const State& s) const {
   const double base = -design_.pivot_height();
   out.counterweight_height = out.counterweight.y - base;
   out.tip_height = out.tip.y - base;
-  // The tip moves along (cos th, sin th) as theta grows; the sling pulls against that.
-  out.sling_perpendicular = -(out.sling_on_tip.x * ct + out.sling_on_tip.y * st);
   out.pivot_reaction = f.pivot_reaction;
 
   // The short section (pivot to hinge) turns about the pivot: I_s th'' = moment of the arm's pull

@@ -206,13 +206,7 @@ Snapshot RigidBeamMachine::snapshot_with(Phase phase, const State& s, const std:
       on_end = {out.sling_tension * cp + shear * sp, out.sling_tension * sp - shear * cp};
     }
     const RopeEnds rope = rope_ends(sling_parts, {cp, sp}, on_end, tip_acceleration, p_dd, {});
-    out.sling_on_tip = rope.on_tip;
-    if (sling_parts.any())
-      out.rope_tension_at_tip = rope.tension_at_tip, out.rope_shear_at_tip = rope.shear_at_tip, out.rope_shear_at_end = rope.shear_at_end;
-    else
-      out.rope_tension_at_tip = out.sling_tension;  // one tension along a rope of no mass
-    // The tip moves along (cos th, sin th) as theta grows; the sling pulls against that.
-    out.sling_perpendicular = -(out.sling_on_tip.x * ct + out.sling_on_tip.y * st);
+    sling_at_tip(out, rope, sling_parts.any(), ct, st);
     if (phase != Phase::released) {
       const Vec2& v = out.projectile_velocity;
       out.energies.projectile_kinetic = mu * (v.x * v.x + v.y * v.y) / 2;

@@ -31,4 +31,13 @@ double sling_energy(const BuiltParts::Sling& sling, double s, Vec2 tip, Vec2 tip
       sling.rope * (square(centre_velocity) / 2 + s * s * phi_dot * phi_dot / 24 + (tip.y + end.y) / 2);
 }
 
+void sling_at_tip(Snapshot& out, const RopeEnds& rope, bool rope_has_mass, double cos_theta, double sin_theta) {
+  out.sling_on_tip = rope.on_tip;
+  if (rope_has_mass)
+    out.rope_tension_at_tip = rope.tension_at_tip, out.rope_shear_at_tip = rope.shear_at_tip, out.rope_shear_at_end = rope.shear_at_end;
+  else
+    out.rope_tension_at_tip = out.sling_tension;  // one tension along a rope of no mass
+  out.sling_perpendicular = -(out.sling_on_tip.x * cos_theta + out.sling_on_tip.y * sin_theta);
+}
+
 }  // namespace trebuchet

@@ -5,6 +5,7 @@
 #include "trebuchet/angles.hpp"
 #include "trebuchet/dynamics.hpp"
 #include "trebuchet/error.hpp"
+#include "trebuchet/sling.hpp"
 
 namespace trebuchet {
 namespace {
@@ -127,9 +128,7 @@ Snapshot Whipper::snapshot_with(Phase phase, const State& s, const Motion& m, Ve
       const auto [pull, push] = split(rest, u, upper);
       out.sling_tension = pull, out.normal_force = push;
     }
-    out.sling_on_tip = {-out.sling_tension * cf, -out.sling_tension * sf};
-    out.rope_tension_at_tip = out.sling_tension;  // its sling has no mass
-    out.sling_perpendicular = -(out.sling_on_tip.x * ct + out.sling_on_tip.y * st);
+    sling_at_tip(out, RopeEnds{{-out.sling_tension * cf, -out.sling_tension * sf}}, false, ct, st);  // its sling has no mass
     const Vec2& v = out.projectile_velocity;
     out.energies.projectile_kinetic = mu * dot(v, v) / 2;
     out.energies.projectile_potential = mu * out.projectile.y;

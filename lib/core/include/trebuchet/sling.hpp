@@ -30,6 +30,12 @@ struct RopeEnds {
 /// own mass needs besides (m_r times its centre's acceleration, against its weight).
 RopeEnds rope_ends(const BuiltParts::Sling& sling, Vec2 u, Vec2 on_end, Vec2 tip_acceleration, Vec2 end_acceleration, Vec2 air_on_rope);
 
+/// The sling at the beam's tip in a snapshot whose sling_tension is set: its pull on the tip
+/// (rope.on_tip), the rope's tension and shear at both ends where the rope has mass, else one
+/// tension along it, the sling's; and the pull across the beam F_S_perp (eq:F), the tip moving
+/// along (cos theta, sin theta) as theta grows.
+void sling_at_tip(Snapshot& out, const RopeEnds& rope, bool rope_has_mass, double cos_theta, double sin_theta);
+
 /// The sling's kinetic and potential energy (M g L2, potential from the pivot's level): the pouch
 /// at its end, the rope's centre halfway and its turn about it, m_r s^2/12 phi'^2/2.
 double sling_energy(const BuiltParts::Sling& sling, double s, Vec2 tip, Vec2 tip_velocity, Vec2 end, Vec2 end_velocity, double phi_dot);

@@ -40,6 +40,10 @@ std::string machine_names();
 /// choices, and says so of the whipper, which is not built yet.
 MachineKind parse_machine(std::string_view name, std::string_view option);
 
+/// A contest's objective: true for "eps" (the efficiency), false for "range"; Error(usage)
+/// names `option`, the text and the choices.
+bool parse_efficiency_objective(std::string_view name, std::string_view option);
+
 /// "si" or "imperial"; Error(usage) names `option` and the choices.
 UnitSystem parse_unit_system(std::string_view name, std::string_view option);
 
