@@ -9,7 +9,7 @@
 #include <type_traits>
 
 #include "trebuchet/error.hpp"
-#include "trebuchet/app/units.hpp"
+#include "trebuchet/app/input/units.hpp"
 
 namespace trebuchet {
 

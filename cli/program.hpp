@@ -19,8 +19,8 @@
 #include <string>
 
 #include "exit_codes.hpp"
-#include "trebuchet/app/fields.hpp"
-#include "trebuchet/app/units.hpp"
+#include "trebuchet/app/input/fields.hpp"
+#include "trebuchet/app/input/units.hpp"
 #include "version.hpp"
 #include "trebuchet/error.hpp"
 

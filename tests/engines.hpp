@@ -6,7 +6,7 @@
 #include "trebuchet/design.hpp"
 #include "trebuchet/engine.hpp"
 #include "trebuchet/verification.hpp"
-#include "trebuchet/app/units.hpp"
+#include "trebuchet/app/input/units.hpp"
 
 namespace trebuchet::testing {
 

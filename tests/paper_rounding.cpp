@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "trebuchet/app/table_json.hpp"
+#include "trebuchet/app/records/table_json.hpp"
 
 namespace trebuchet::testing {
 namespace {

@@ -7,7 +7,7 @@
 #include <tuple>
 
 #include "paper_rounding.hpp"
-#include "trebuchet/app/table_json.hpp"
+#include "trebuchet/app/records/table_json.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/verification.hpp"
 #include "trebuchet/error.hpp"

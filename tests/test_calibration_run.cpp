@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include "engines.hpp"
-#include "trebuchet/app/calibration_run.hpp"
+#include "trebuchet/app/run/calibration_run.hpp"
 #include "trebuchet/error.hpp"
 
 using namespace trebuchet;

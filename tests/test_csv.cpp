@@ -3,9 +3,9 @@
 #include <catch2/catch.hpp>
 #include <sstream>
 
-#include "trebuchet/app/csv.hpp"
+#include "trebuchet/app/input/csv.hpp"
 #include "trebuchet/error.hpp"
-#include "trebuchet/app/units.hpp"
+#include "trebuchet/app/input/units.hpp"
 
 using namespace trebuchet;
 

@@ -10,12 +10,12 @@
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/verification.hpp"
-#include "trebuchet/app/fields.hpp"
-#include "trebuchet/app/schema.hpp"
-#include "trebuchet/app/design_input.hpp"
-#include "trebuchet/app/design_record.hpp"
-#include "trebuchet/app/search_records.hpp"
-#include "trebuchet/app/shot_record.hpp"
+#include "trebuchet/app/input/fields.hpp"
+#include "trebuchet/app/records/schema.hpp"
+#include "trebuchet/app/records/design_input.hpp"
+#include "trebuchet/app/records/design_record.hpp"
+#include "trebuchet/app/records/search_records.hpp"
+#include "trebuchet/app/records/shot_record.hpp"
 
 using namespace trebuchet;
 

@@ -16,10 +16,10 @@
 #include "trebuchet/error.hpp"
 #include "trebuchet/integrator.hpp"
 #include "trebuchet/verification.hpp"
-#include "trebuchet/app/csv.hpp"
-#include "trebuchet/app/output_files.hpp"
-#include "trebuchet/app/text_input.hpp"
-#include "trebuchet/app/units.hpp"
+#include "trebuchet/app/input/csv.hpp"
+#include "trebuchet/app/output/output_files.hpp"
+#include "trebuchet/app/input/text_input.hpp"
+#include "trebuchet/app/input/units.hpp"
 
 using namespace trebuchet;
 namespace fs = std::filesystem;

@@ -14,7 +14,7 @@
 #include "engines.hpp"
 #include "reference/reference_shot.hpp"
 #include "trebuchet/angles.hpp"
-#include "trebuchet/app/shot_series.hpp"
+#include "trebuchet/app/output/shot_series.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/verification.hpp"
 

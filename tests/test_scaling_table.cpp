@@ -6,7 +6,7 @@
 #include "paper_rounding.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/scaling_table.hpp"
-#include "trebuchet/app/table_json.hpp"
+#include "trebuchet/app/records/table_json.hpp"
 
 using namespace trebuchet;
 using namespace trebuchet::testing;

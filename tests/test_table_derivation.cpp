@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <functional>
 
-#include "trebuchet/app/table_json.hpp"
+#include "trebuchet/app/records/table_json.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/sweep.hpp"

@@ -9,7 +9,7 @@
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/uncertainty.hpp"
-#include "trebuchet/app/units.hpp"
+#include "trebuchet/app/input/units.hpp"
 
 using namespace trebuchet;
 

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "trebuchet/error.hpp"
-#include "trebuchet/app/units.hpp"
+#include "trebuchet/app/input/units.hpp"
 
 using namespace trebuchet;
 

@@ -10,9 +10,9 @@
 #include "paper_rounding.hpp"
 #include "trebuchet/capacity_fit.hpp"
 #include "trebuchet/error.hpp"
-#include "trebuchet/app/names.hpp"
+#include "trebuchet/app/input/names.hpp"
 #include "trebuchet/optimizer.hpp"
-#include "trebuchet/app/units.hpp"
+#include "trebuchet/app/input/units.hpp"
 #include "trebuchet/verification.hpp"
 
 using namespace trebuchet;

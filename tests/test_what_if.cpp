@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "trebuchet/app/api.hpp"
-#include "trebuchet/app/what_if.hpp"
+#include "trebuchet/app/api/api.hpp"
+#include "trebuchet/app/run/what_if.hpp"
 #include "trebuchet/sweep.hpp"
 
 using namespace trebuchet;

@@ -6,13 +6,13 @@
 
 #include "program.hpp"
 #include "run.hpp"
-#include "trebuchet/app/output_files.hpp"
-#include "trebuchet/app/report.hpp"
-#include "trebuchet/app/text_input.hpp"
-#include "trebuchet/app/calibration_run.hpp"
-#include "trebuchet/app/fields.hpp"
-#include "trebuchet/app/pictures.hpp"
-#include "trebuchet/app/verifier.hpp"
+#include "trebuchet/app/output/output_files.hpp"
+#include "trebuchet/app/output/report.hpp"
+#include "trebuchet/app/input/text_input.hpp"
+#include "trebuchet/app/run/calibration_run.hpp"
+#include "trebuchet/app/input/fields.hpp"
+#include "trebuchet/app/output/pictures.hpp"
+#include "trebuchet/app/run/verifier.hpp"
 #include "trebuchet/format.hpp"
 
 namespace trebuchet::verify {

@@ -4,10 +4,10 @@
 
 #include "program.hpp"
 #include "run.hpp"
-#include "trebuchet/app/contest_record.hpp"
-#include "trebuchet/app/names.hpp"
-#include "trebuchet/app/text_input.hpp"
-#include "trebuchet/app/verifier.hpp"
+#include "trebuchet/app/output/contest_record.hpp"
+#include "trebuchet/app/input/names.hpp"
+#include "trebuchet/app/input/text_input.hpp"
+#include "trebuchet/app/run/verifier.hpp"
 
 namespace trebuchet::verify {
 

@@ -6,9 +6,9 @@
 
 #include "program.hpp"
 #include "run.hpp"
-#include "trebuchet/app/text_input.hpp"
+#include "trebuchet/app/input/text_input.hpp"
 #include "trebuchet/format.hpp"
-#include "trebuchet/app/report.hpp"
+#include "trebuchet/app/output/report.hpp"
 
 namespace trebuchet::verify {
 

@@ -6,9 +6,9 @@
 #include "program.hpp"
 #include "run.hpp"
 #include "trebuchet/format.hpp"
-#include "trebuchet/app/contest_record.hpp"
-#include "trebuchet/app/names.hpp"
-#include "trebuchet/app/text_input.hpp"
+#include "trebuchet/app/output/contest_record.hpp"
+#include "trebuchet/app/input/names.hpp"
+#include "trebuchet/app/input/text_input.hpp"
 
 namespace trebuchet::verify {
 

@@ -11,8 +11,8 @@
 
 #include "program.hpp"
 #include "run.hpp"
-#include "trebuchet/app/names.hpp"
-#include "trebuchet/app/output_files.hpp"
+#include "trebuchet/app/input/names.hpp"
+#include "trebuchet/app/output/output_files.hpp"
 
 namespace {
 

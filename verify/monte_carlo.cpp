@@ -8,13 +8,13 @@
 
 #include "program.hpp"
 #include "run.hpp"
-#include "trebuchet/app/fields.hpp"
-#include "trebuchet/app/output_files.hpp"
-#include "trebuchet/app/text_input.hpp"
+#include "trebuchet/app/input/fields.hpp"
+#include "trebuchet/app/output/output_files.hpp"
+#include "trebuchet/app/input/text_input.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/parallel.hpp"
-#include "trebuchet/app/pictures.hpp"
-#include "trebuchet/app/report.hpp"
+#include "trebuchet/app/output/pictures.hpp"
+#include "trebuchet/app/output/report.hpp"
 
 namespace trebuchet::verify {
 

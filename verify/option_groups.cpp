@@ -5,9 +5,9 @@
 
 #include "flags.hpp"
 #include "program.hpp"
-#include "trebuchet/app/names.hpp"
-#include "trebuchet/app/table_json.hpp"
-#include "trebuchet/app/units.hpp"
+#include "trebuchet/app/input/names.hpp"
+#include "trebuchet/app/records/table_json.hpp"
+#include "trebuchet/app/input/units.hpp"
 
 namespace trebuchet::verify {
 namespace {

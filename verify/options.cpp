@@ -6,7 +6,7 @@
 #include "flags.hpp"
 #include "option_groups.hpp"
 #include "program.hpp"
-#include "trebuchet/app/request.hpp"
+#include "trebuchet/app/input/request.hpp"
 
 namespace trebuchet::verify {
 

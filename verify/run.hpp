@@ -3,7 +3,7 @@
 #pragma once
 
 #include "options.hpp"
-#include "trebuchet/app/calibration_run.hpp"
+#include "trebuchet/app/run/calibration_run.hpp"
 
 namespace trebuchet::verify {
 

@@ -8,9 +8,9 @@
 #include "run.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/parallel.hpp"
-#include "trebuchet/app/names.hpp"
-#include "trebuchet/app/output_files.hpp"
-#include "trebuchet/app/text_input.hpp"
+#include "trebuchet/app/input/names.hpp"
+#include "trebuchet/app/output/output_files.hpp"
+#include "trebuchet/app/input/text_input.hpp"
 
 namespace trebuchet::verify {
 DesignCheck design_check(const Options& o) {

@@ -4,8 +4,8 @@
 
 #include "program.hpp"
 #include "run.hpp"
-#include "trebuchet/app/text_input.hpp"
-#include "trebuchet/app/what_if.hpp"
+#include "trebuchet/app/input/text_input.hpp"
+#include "trebuchet/app/run/what_if.hpp"
 
 namespace trebuchet::verify {
 

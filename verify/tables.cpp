@@ -8,9 +8,9 @@
 #include "trebuchet/format.hpp"
 #include "trebuchet/optimizer.hpp"
 #include "trebuchet/parallel.hpp"
-#include "trebuchet/app/report.hpp"
-#include "trebuchet/app/table_json.hpp"
-#include "trebuchet/app/text_input.hpp"
+#include "trebuchet/app/output/report.hpp"
+#include "trebuchet/app/records/table_json.hpp"
+#include "trebuchet/app/input/text_input.hpp"
 
 namespace trebuchet::verify {
 namespace {

@@ -7,11 +7,11 @@
 
 #include <string>
 
-#include "trebuchet/app/api.hpp"
+#include "trebuchet/app/api/api.hpp"
 #include "version.hpp"
 
 PYBIND11_MODULE(_trebuchet, module) {
-  module.doc() = "trebuchet's library as JSON requests (trebuchet/app/api.hpp); use the package trebuchet";
+  module.doc() = "trebuchet's library as JSON requests (trebuchet/app/api/api.hpp); use the package trebuchet";
   module.attr("version") = trebuchet::build_version();  // the project's, PEP 440 (0.1.0)
   module.attr("commit") = trebuchet::build_commit();  // git describe of the source it is built from
   namespace py = pybind11;

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "trebuchet/app/api.hpp"
+#include "trebuchet/app/api/api.hpp"
 #include "bench/timing.hpp"
 
 using namespace trebuchet::bench;

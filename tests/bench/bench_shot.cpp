@@ -15,7 +15,7 @@
 #include "trebuchet/capacity_fit.hpp"
 #include "engines.hpp"
 #include "trebuchet/error.hpp"
-#include "trebuchet/app/names.hpp"
+#include "trebuchet/app/input/names.hpp"
 #include "trebuchet/optimizer.hpp"
 #include "trebuchet/verification.hpp"
 #include "timing.hpp"

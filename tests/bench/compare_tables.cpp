@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "trebuchet/app/table_json.hpp"
+#include "trebuchet/app/records/table_json.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/capacity_fit.hpp"
 #include "trebuchet/error.hpp"

@@ -13,7 +13,7 @@
 #include <string>
 
 #include "trebuchet/scaling_table.hpp"
-#include "trebuchet/app/table_json.hpp"
+#include "trebuchet/app/records/table_json.hpp"
 
 using namespace trebuchet;
 

@@ -7,14 +7,14 @@
 #include <string>
 
 #include "oracle.hpp"
-#include "trebuchet/app/batch.hpp"
+#include "trebuchet/app/run/batch.hpp"
 #include "trebuchet/error.hpp"
-#include "trebuchet/app/schema.hpp"
-#include "trebuchet/app/design_input.hpp"
-#include "trebuchet/app/design_record.hpp"
-#include "trebuchet/app/search_records.hpp"
-#include "trebuchet/app/shot_record.hpp"
-#include "trebuchet/app/text_input.hpp"
+#include "trebuchet/app/records/schema.hpp"
+#include "trebuchet/app/records/design_input.hpp"
+#include "trebuchet/app/records/design_record.hpp"
+#include "trebuchet/app/records/search_records.hpp"
+#include "trebuchet/app/records/shot_record.hpp"
+#include "trebuchet/app/input/text_input.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
   std::istringstream input(std::string(reinterpret_cast<const char*>(data), size));

@@ -9,13 +9,13 @@
 #include <string>
 
 #include "trebuchet/error.hpp"
-#include "trebuchet/app/schema.hpp"
-#include "trebuchet/app/design_input.hpp"
-#include "trebuchet/app/design_record.hpp"
-#include "trebuchet/app/search_records.hpp"
-#include "trebuchet/app/shot_record.hpp"
-#include "trebuchet/app/text_input.hpp"
-#include "trebuchet/app/verifier.hpp"
+#include "trebuchet/app/records/schema.hpp"
+#include "trebuchet/app/records/design_input.hpp"
+#include "trebuchet/app/records/design_record.hpp"
+#include "trebuchet/app/records/search_records.hpp"
+#include "trebuchet/app/records/shot_record.hpp"
+#include "trebuchet/app/input/text_input.hpp"
+#include "trebuchet/app/run/verifier.hpp"
 
 namespace {
 

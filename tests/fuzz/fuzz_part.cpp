@@ -6,8 +6,8 @@
 #include "oracle.hpp"
 #include "trebuchet/error.hpp"
 #include "trebuchet/table_derivation.hpp"
-#include "trebuchet/app/table_json.hpp"
-#include "trebuchet/app/text_input.hpp"
+#include "trebuchet/app/records/table_json.hpp"
+#include "trebuchet/app/input/text_input.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

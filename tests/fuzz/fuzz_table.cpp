@@ -5,14 +5,14 @@
 #include <string>
 
 #include "oracle.hpp"
-#include "trebuchet/app/table_json.hpp"
+#include "trebuchet/app/records/table_json.hpp"
 #include "trebuchet/calculator.hpp"
 #include "trebuchet/error.hpp"
-#include "trebuchet/app/schema.hpp"
-#include "trebuchet/app/design_input.hpp"
-#include "trebuchet/app/design_record.hpp"
-#include "trebuchet/app/search_records.hpp"
-#include "trebuchet/app/shot_record.hpp"
+#include "trebuchet/app/records/schema.hpp"
+#include "trebuchet/app/records/design_input.hpp"
+#include "trebuchet/app/records/design_record.hpp"
+#include "trebuchet/app/records/search_records.hpp"
+#include "trebuchet/app/records/shot_record.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
   try {

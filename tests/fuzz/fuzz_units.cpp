@@ -7,7 +7,7 @@
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/uncertainty.hpp"
-#include "trebuchet/app/units.hpp"
+#include "trebuchet/app/input/units.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -38,7 +38,7 @@
 #include <sys/wait.h>
 
 #include "trebuchet/app.hpp"
-#include "trebuchet/app/spreadsheet.hpp"
+#include "trebuchet/app/output/spreadsheet.hpp"
 #include "../paper_rounding.hpp"
 
 namespace {

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "trebuchet/app/api.hpp"
+#include "trebuchet/app/api/api.hpp"
 
 namespace {
 

@@ -1,0 +1,32 @@
+// How the API's requests (api.hpp) read their keys: shared by api.cpp and api_contest.cpp (the
+// contest's own room, which the page's build leaves out).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "trebuchet/app/records/design_input.hpp"
+#include "trebuchet/app/input/settings.hpp"
+
+namespace trebuchet::api {
+
+/// An optional value that must be positive (as the programs' options are), or 0 or more.
+std::optional<double> positive_value(const nlohmann::json& request, const std::string& key, UnitDimension dimension, bool zero_allowed = false);
+/// A request must be an object of known keys; a key it does not know is named with the keys it does.
+void require_keys(const nlohmann::json& request, const std::vector<std::string>& known, const std::string& what);
+/// The keys a request of `door` takes: its own, the settings of that door (settings.def) and,
+/// where it shoots a design, the material's rows of `material_operation`.
+std::vector<std::string> keys_of(unsigned door, unsigned material_operation = 0);
+/// The string under `key`, or a refusal naming it.
+std::string text_of(const nlohmann::json& value, const std::string& key);
+/// The settings of a request of `door` (settings.def), each read as its flag is.
+SettingsValues settings_values_of(const nlohmann::json& request, unsigned door);
+/// The shot's settings from a request's keys, checked as the programs check their options.
+ShotSettings settings_of(const nlohmann::json& request, unsigned door);
+/// The material's rows a request gives over its design's own, each positive.
+DesignValues material_of_request(const nlohmann::json& request, unsigned operation);
+
+}  // namespace trebuchet::api
