@@ -1,4 +1,4 @@
-// The what-if sweep (app/what_if.hpp, trebuchet-verify sweep, api::sweep): its values, its
+// The what-if sweep (app/run/what_if.hpp, trebuchet-verify sweep, api::sweep): its values, its
 // refusals, and that each point is the shot of its engine alone, bit for bit.
 #include <catch2/catch.hpp>
 

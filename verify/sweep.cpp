@@ -1,5 +1,5 @@
 // sweep: what if one value of an engine changes? Its shot at each point of a range, the rest
-// held (app/what_if.hpp, docs/verifier.md).
+// held (app/run/what_if.hpp, docs/verifier.md).
 #include <iostream>
 
 #include "program.hpp"

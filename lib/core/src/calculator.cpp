@@ -459,14 +459,14 @@ Solutions solve_pair(const ScalingTable& table, const TableBlock& block, const G
 
 // No segment holds the pair (and no extrapolation is asked for, or none solves it): the refusal
 // says where the pair lies, and in the user's terms what would bring it in.
-[[noreturn]] void refuse_uncovered(const ScalingTable& table, const TableBlock* block, const DesignRequest& request, const Solutions& solutions,
+[[noreturn]] void refuse_uncovered(const ScalingTable& table, const TableBlock& block, const DesignRequest& request, const Solutions& solutions,
                                    const SizeFactors& scaling) {
   const Given& gi = request.first;
   const Given& gj = request.second;
   const std::vector<Candidate>& candidates = solutions.candidates;
   const std::string& beam_length_spans = solutions.beam_length_spans;
   auto pair = [&] { return describe_given(gi) + ", " + describe_given(gj); };
-  auto covered = [&] { return describe_interval(block->X_covered_min(), block->X_covered_max()); };
+  auto covered = [&] { return describe_interval(block.X_covered_min(), block.X_covered_max()); };
   std::string tried;
   for (const Candidate& c : candidates)
     tried += (tried.empty() ? "" : ", ") + std::string("X = ") + format_significant(c.X(), 3) + " in segment " +
@@ -474,27 +474,27 @@ Solutions solve_pair(const ScalingTable& table, const TableBlock& block, const G
   const bool both_capacity = (gi.quantity == Quantity::R || gi.quantity == Quantity::T) && (gj.quantity == Quantity::R || gj.quantity == Quantity::T);
   std::string message = both_capacity
       ? "capacity " + pair() + " has X = " + format_significant(candidates.front().X(), 3) + ", outside the interval " + covered() + " covered by " +
-          table_words(table) + " for " + describe_block(*block) + "; raise T or lower R to lower X (X = (5 ln(R/R0) - ln(T/T0))/sqrt(26))"
-      : "no meaningful capacity for the pair " + pair() + " at " + describe_block(*block) + ": " +
+          table_words(table) + " for " + describe_block(block) + "; raise T or lower R to lower X (X = (5 ln(R/R0) - ln(T/T0))/sqrt(26))"
+      : "no meaningful capacity for the pair " + pair() + " at " + describe_block(block) + ": " +
           (!beam_length_spans.empty() && candidates.empty()
                ? "optimal engines with " + describe_given(first_is_beam_length(gi, gj) ? gj : gi) + " have Lb from " + beam_length_spans
                : (tried.empty() ? std::string("no segment gives a solution") : "the inversion gives " + tried) + ", outside the covered interval " +
                    covered());
   const bool l_given = gi.quantity == Quantity::l || gj.quantity == Quantity::l;
-  const auto l_range = l_given ? l_range_for(table, *block) : std::nullopt;
+  const auto l_range = l_given ? l_range_for(table, block) : std::nullopt;
   const double l_value = gi.quantity == Quantity::l ? gi.value : gj.value;
   // In the user's terms: the ranges that work with the other given held.
   if (l_range && (l_value < l_range->first || l_value > l_range->second)) {
     // l fixes X whatever the size: no other given can bring it in; another block may.
-    message = "no optimal engine at " + describe_block(*block) + " has " + describe_given(gi.quantity == Quantity::l ? gi : gj) +
+    message = "no optimal engine at " + describe_block(block) + " has " + describe_given(gi.quantity == Quantity::l ? gi : gj) +
         ": there l = L1/L2 runs from " + format_significant(l_range->first, 3) + " to " + format_significant(l_range->second, 3) +
         " whatever the engine's size; give l in that span";
     for (const TableBlock& other : table.blocks)
-      if (&other != block)
+      if (&other != &block)
         if (const auto span = l_range_for(table, other); span && l_value >= span->first && l_value <= span->second)
           message += ", or the block " + describe_block(other) + " (l from " + format_significant(span->first, 3) + " to " +
               format_significant(span->second, 3) + ")";
-  } else if (const auto range = R_range_for(table, *block, gi, gj, scaling)) {
+  } else if (const auto range = R_range_for(table, block, gi, gj, scaling)) {
     const Given& other = gi.quantity == Quantity::R ? gj : gi;
     message += "; with " + describe_given(other) + " the table covers R from " + format_significant(range->first, 3) + " m to " +
         format_significant(range->second, 3) + " m: change {{R}} to lie there, or change {{" + std::string(quantity_name(other.quantity)) + "}}";
@@ -567,7 +567,7 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
   if (!inside.empty()) {
     chosen = choose(inside, *block, request.branch, result.warnings);
   } else {
-    if (candidates.empty() || !request.extrapolate) refuse_uncovered(table, block, request, solutions, scaling);
+    if (candidates.empty() || !request.extrapolate) refuse_uncovered(table, *block, request, solutions, scaling);
     std::vector<Candidate> allowed;
     for (const Candidate& c : candidates)
       if (branch_allowed(c, request.branch)) allowed.push_back(c);

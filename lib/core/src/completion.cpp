@@ -188,7 +188,7 @@ BeamLength beam_length_of(const Attested& a, const Material& material, Completio
 // The arms and theta_i from what is attested: L1 from itself, or from Lb - L2, before H (with H
 // it fixes theta_i, or H fixes L1); L2 from itself, the drop, l or Lb - L1; F its standard
 // unless attested. What is implied, and from what, is listed in out.implied.
-void find_arms(const Attested& a, const BeamLength& beam, Plan& p, Completion& out) {
+void find_arms_and_angle(const Attested& a, const BeamLength& beam, Plan& p, Completion& out) {
   const std::optional<double>& beam_length = beam.value;
   const std::string& beam_source = beam.source;
   Known L1, L2;
@@ -397,7 +397,7 @@ Completion complete_engine(const CompletionRequest& request) {
                 "by a shot of the whole engine instead");
   const BeamLength beam = beam_length_of(a, p.material, out);
   p.L4 = a.L4, p.M = a.M, p.m = a.m, p.mb = a.mb, p.D = a.D, p.Lb = beam.value;
-  find_arms(a, beam, p, out);
+  find_arms_and_angle(a, beam, p, out);
   check_beam_and_size(a, beam.value, p, request.settings.criterion, out);
   search_engine(p, request, out);
   add_calculator(p, request, out);

@@ -491,12 +491,13 @@ class ShotRun {
   void start();
   [[noreturn]] void refuse_backward_start() const;
   double carry(PhaseIntegrator& integrator, PhaseRecord& record);
-  void check_carried_step(Phase phase, bool axle_holds) const;
+  void check_carried_step(bool axle_holds) const;
+  void check_held_step() const;
   ReleasePoint point_from(double time, const OdeVector& state) const;
   ReleasePoint point_at(double time) const { return point_from(time, phase2_->y_at(time)); }
   void keep_for_others(const Snapshot& at, bool thrown);
   bool step_ends_shot();
-  bool past_release() const;
+  bool objective_fallen() const;
   [[noreturn]] void refuse_given(const std::string& what);
   [[noreturn]] void fail_no_forward_release() const;
   Candidate optimal_release() const;
@@ -591,10 +592,10 @@ void ShotRun::refuse_backward_start() const {
        ") outweighs the counterweight {{M}} about the pivot; lighten it, or give a heavier {{M}}");
 }
 
-// What ends a carrying phase's step in failure: friction that stops the beam holds it (Coulomb's
-// law at rest: the engine jams), the sling standing vertical in the trough, or the whipper's
-// projectile leaving the arm before its counterweight.
-void ShotRun::check_carried_step(Phase phase, bool axle_holds) const {
+// What ends a carrying phase's step in failure, before its snapshot is taken (whose friction is
+// unsettled near a sling upright in the trough): friction that stops the beam holds it
+// (Coulomb's law at rest: the engine jams), or the sling stands vertical in the trough.
+void ShotRun::check_carried_step(bool axle_holds) const {
   if (axle_holds || (dynamics_.dissipates() && !(y_[2] > 0)))
     fail(std::string("friction stops the beam before the projectile ") + (whips_ ? "leaves the arm" : "lifts off") +
          ": the engine jams; give smaller friction coefficients or pin radii ({{axle_friction}}, {{hinge_friction}}, {{trough_friction}})");
@@ -603,7 +604,11 @@ void ShotRun::check_carried_step(Phase phase, bool axle_holds) const {
         "the sling stands vertical in the trough (phi -> 90 deg) before lift-off; lengthen the sling {{L4}} or lighten what it carries, the "
         "projectile {{m}}" +
         std::string(e_.parts.sling.pouch > 0 ? " and the pouch {{pouch_mass}}" : ""));
-  if (phase == Phase::held && !(snap_.normal_force > 0))
+}
+
+// The whipper's projectile leaving the arm before its counterweight, in its phase held.
+void ShotRun::check_held_step() const {
+  if (!(snap_.normal_force > 0))
     fail(
         "the whipper's projectile would leave the arm before its counterweight, which the model (pytrebuchet's order) leaves out; "
         "lengthen the sling {{L4}} or the counterweight's rope {{L3}}, or turn the rope further off the arm (a larger {{rope_angle_deg}})");
@@ -622,8 +627,9 @@ double ShotRun::carry(PhaseIntegrator& integrator, PhaseRecord& record) {
     if (!integrator.step(t_, y_.data(), settings_.max_time, h_))
       fail(integrator.friction_unsettled() ? unsettled_friction : "integrator failure in phase I; tighten {{rtol}} or choose another {{stepper}}");
     const bool axle_holds = count_step("phase I", integrator.state(y_), phase != Phase::held);
+    check_carried_step(axle_holds);
     snap_ = dynamics_.snapshot(phase, integrator.state(y_));
-    check_carried_step(phase, axle_holds);
+    if (phase == Phase::held) check_held_step();
     if (!(contact(snap_) > 0)) {
       const StepEnd& before = record.samples().back();
       const StepEnd after = integrator.step_end(t_, y_, snap_);
@@ -743,16 +749,10 @@ bool ShotRun::step_ends_shot() {
   return !window_end_.empty() || (given_ && given_->spent());
 }
 
-// Past the release: the objective has fallen to half its maximum, or two steps past a given
-// release, so that the running extremes of eq:F before it are refined as an optimum's are.
-// The whipper's projectile first drops off the arm forward, with an objective that peaks near
-// zero, before the beam whips it round: its optimum is sought over the whole forward swing.
-// With `unreleased` asked for, phase II goes on as an optimum's window would (to half the
-// objective's best), so that the pictures show what the given release gave up.
-bool ShotRun::past_release() const {
-  const bool fallen = !whips_ && best_quality_ > 0 && sampled_.back() < 0.5 * best_quality_;
-  return fallen;
-}
+// Whether the objective has fallen to half its maximum, past an optimum's release. The whipper's
+// projectile first drops off the arm forward, with an objective that peaks near zero, before the
+// beam whips it round: its optimum is sought over the whole forward swing.
+bool ShotRun::objective_fallen() const { return !whips_ && best_quality_ > 0 && sampled_.back() < 0.5 * best_quality_; }
 
 // A given release that cannot be made is refused with the values the whole swing runs through:
 // where the search stopped past it, the swing is followed on to its end.
@@ -777,9 +777,13 @@ void ShotRun::fail_no_forward_release() const {
 // released refused: a given release in the trough or never reached, no forward release, or an
 // energy drift above the limit.
 void ShotRun::search_window(bool unreleased) {
+  // Past the release: the objective has fallen to half its maximum, or two steps past a given
+  // release, so that the running extremes of eq:F before it are refined as an optimum's are.
+  // With `unreleased` asked for, phase II goes on past a given release as an optimum's window
+  // would (to half the objective's best), so that the pictures show what it gave up.
   const auto past = [&] {
-    if (given_) return given_->done(phase2_->samples().size()) && (!unreleased || past_release());
-    return past_release();
+    if (given_) return given_->done(phase2_->samples().size()) && (!unreleased || objective_fallen());
+    return objective_fallen();
   };
   while (!(ended_ = step_ends_shot()) && !past()) {
   }

@@ -22,8 +22,6 @@ struct ReleaseInSi {
 void add_flight(Verification& out, const Engine& engine, const ReleaseInSi& at, double target_level, const std::optional<Air>& air,
                 bool range_from_release) {
   const double g = engine.material.g, vx = at.vx, vy = at.vy, behind = at.behind, drop = at.drop;
-  // The flight's end: the target level, or back at the release height for Denny's range,
-  // which is measured from the release point (x behind the pivot) rather than the pivot.
   const double end_drop = range_from_release ? 0 : drop;
   double range = 0;
   Vec2 end_velocity{vx, vy};

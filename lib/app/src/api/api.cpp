@@ -298,8 +298,6 @@ MonteCarloRequest monte_carlo_run_of(const json& request, json& passed) {
   }
   run.values = with_material(run.values, material_of_request(request, operation));
   run.completes = completes;
-  // The request's settings over the design's own, each may be a range or a spread too (the wind,
-  // say); a setting the request gives is no longer drawn from the design's.
   std::vector<SpreadInput> spread_settings;
   const SettingsValues given = settings_values_of(take_spreads(request, op_shot, "", spread_settings), req_monte_carlo);
   run.settings = overlay(run.settings, given);
@@ -369,9 +367,9 @@ std::vector<SampleOutcome> read_outcomes(const json& given, int samples, std::si
 
 ordered_json monte_carlo(const json& request) {
   require_keys(request, keys_of(req_monte_carlo, op_shot | op_complete), "monte_carlo");
-  const bool completes = request.contains("attested");
   json passed = json::object();
   const MonteCarloRequest run = monte_carlo_run_of(request, passed);
+  const bool completes = run.completes;
   const ShotSettings settings = shot_settings(run.settings);
   // As the program does: the design at each spread's first number must be an engine.
   const std::int64_t shots = shots_per_sample(run);

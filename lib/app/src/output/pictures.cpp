@@ -146,11 +146,11 @@ struct PictureShot {
         mg_kN(engine.m * engine.material.g / 1000),
         Mg_kN(engine.M * engine.material.g / 1000),
         energy_kJ(engine.M * engine.material.g * engine.L2 / 1000),
-        d(scaled_design(engine)),
+        scaled(scaled_design(engine)),
         scene(scene_of(settings)),
         warnings(warning_labels(series.verification)) {
-    m.liftoff = series.liftoff, m.peak_reaction = series.peak_reaction, m.first_extreme = series.first_extreme,
-    m.second_extreme = series.second_extreme, m.release = series.release;
+    moments.liftoff = series.liftoff, moments.peak_reaction = series.peak_reaction, moments.first_extreme = series.first_extreme,
+    moments.second_extreme = series.second_extreme, moments.release = series.release;
   }
   double seconds(std::size_t i) const { return series.trace[i].t * series.time_unit; }
   const Engine& engine;
@@ -158,9 +158,9 @@ struct PictureShot {
   const ShotSeries series;
   const double H;  // the pivot's height [m]
   const double mg_kN, Mg_kN, energy_kJ;  // the projectile's and the counterweight's weights [kN], M g L2 [kJ]
-  const ScaledDesign d;
+  const ScaledDesign scaled;  // the engine in the paper's scaled units
   const std::string scene, warnings;  // the shot in words for the titles, and its warnings as labels
-  Moments m;
+  Moments moments;  // the samples the pictures mark
 };
 
 // The data the scripts plot: every sample (shot.csv), the flight (flight.csv), and Q(t), eps(t), R(t)
@@ -196,7 +196,7 @@ PictureFile engine_script(const PictureShot& c) {
   const ShotSeries& series = c.series;
   const Verification& v = series.verification;
   const std::vector<TracePoint>& trace = series.trace;
-  const Moments& m = c.m;
+  const Moments& m = c.moments;
   const double H = c.H;
   const std::string& scene = c.scene;
   const auto seconds = [&](std::size_t i) { return c.seconds(i); };
@@ -281,7 +281,7 @@ PictureFile paths_script(const PictureShot& c) {
 // stand above the frame, in two rows, clear of the curves and of each other.
 PictureFile forces_script(const PictureShot& c) {
   const Engine& engine = c.engine;
-  const Moments& m = c.m;
+  const Moments& m = c.moments;
   const std::string& scene = c.scene;
   const std::string& warnings = c.warnings;
   const auto seconds = [&](std::size_t i) { return c.seconds(i); };
@@ -327,11 +327,11 @@ PictureFile energy_script(const PictureShot& c) {
   const ShotSeries& series = c.series;
   const Verification& v = series.verification;
   const std::vector<TracePoint>& trace = series.trace;
-  const Moments& m = c.m;
+  const Moments& m = c.moments;
   const std::string& scene = c.scene;
   const std::string& warnings = c.warnings;
   const auto seconds = [&](std::size_t i) { return c.seconds(i); };
-  const ScaledDesign& d = c.d;
+  const ScaledDesign& d = c.scaled;
   const double energy_kJ = c.energy_kJ;
   std::ostringstream energy;
   const Snapshot& at_release = trace[m.release].snapshot;
@@ -376,7 +376,7 @@ PictureFile energy_script(const PictureShot& c) {
 // 5. Why the release is where it is.
 PictureFile release_script(const PictureShot& c) {
   const ShotSettings& settings = c.settings;
-  const Moments& m = c.m;
+  const Moments& m = c.moments;
   const std::string& scene = c.scene;
   const std::string& warnings = c.warnings;
   const auto seconds = [&](std::size_t i) { return c.seconds(i); };
@@ -444,7 +444,7 @@ PictureFile animation_script(const PictureShot& c) {
   const Verification& v = series.verification;
   const std::vector<TracePoint>& trace = series.trace;
   const std::vector<SitePoint>& flight = series.flight;
-  const Moments& m = c.m;
+  const Moments& m = c.moments;
   const double H = c.H;
   const auto seconds = [&](std::size_t i) { return c.seconds(i); };
   const auto stone_at = [&](double after) { return series.stone_at(after); };

@@ -694,7 +694,7 @@ Solution solve_in_segments(Sheet& s, int header, const ConstantsSheet& c, const 
 const char* branch_choices[] = {"auto", "lower", "upper", nullptr};
 
 // What a design sheet's user types: the givens' names and values, theta_i, F and the branch.
-struct DesignInputs {
+struct DesignSheetInputs {
   std::array<Text, 2> names;
   std::array<Expr, 2> values;
   Expr theta, F;
@@ -702,8 +702,8 @@ struct DesignInputs {
 };
 
 // The design sheet's yellow cells, opened on `request`; the first `fixed` givens' names fixed.
-DesignInputs write_design_inputs(Sheet& s, const DesignRequest& request, int fixed) {
-  DesignInputs in;
+DesignSheetInputs write_design_inputs(Sheet& s, const DesignRequest& request, int fixed) {
+  DesignSheetInputs in;
   std::array<Text, 2>& names = in.names;
   std::array<Expr, 2>& values = in.values;
   const Given givens[] = {request.first, request.second};
@@ -739,7 +739,7 @@ DesignInputs write_design_inputs(Sheet& s, const DesignRequest& request, int fix
 // Which law each log-linear given follows (its column among the quantities, rows 11 and 12),
 // its unit beside it, and its value's log in the table's material (rows 13 and 14); a first
 // given Lb as its log alone (`log_Lb`).
-std::vector<LawGiven> given_laws(Sheet& s, const ConstantsSheet& c, const MaterialFactors& f, const DesignInputs& in, bool beam,
+std::vector<LawGiven> given_laws(Sheet& s, const ConstantsSheet& c, const MaterialFactors& f, const DesignSheetInputs& in, bool beam,
                                  std::optional<Expr>& log_Lb) {
   const std::array<Text, 2>& names = in.names;
   const std::array<Expr, 2>& values = in.values;
@@ -791,7 +791,7 @@ DesignResult write_design(lxw_workbook* book, Formats& formats, const std::strin
                : "Type the yellow cells. The rows below solve eq:ZiZj_RT in every segment of the table and keep the one whose "
                  "interval holds X; the engine follows from eq:ZRT.");
   if (!refusal.empty()) s.note(2, refusal);  // why the givens it opened on give no engine, in the calculator's words
-  const DesignInputs in = write_design_inputs(s, request, fixed);
+  const DesignSheetInputs in = write_design_inputs(s, request, fixed);
   const Expr &theta = in.theta, &F = in.F;
   const Text& branch = in.branch;
 
@@ -927,9 +927,11 @@ void write_sites(lxw_workbook* book, Formats& formats, const ConstantsSheet& c, 
   worksheet_print_area(s.raw(), 0, 0, static_cast<lxw_row_t>(row + 2), 15);
 }
 
-// Where the sheet of sites puts a row's cells: after the line and the passed-through columns,
-// the two givens, theta_i, F, the branch, the status, valid, then the engine's values.
+// Where the sheet of sites puts a row's cells: the sites from row first_row down, and in each,
+// after the line and the passed-through columns, the two givens, theta_i, F, the branch, the
+// status, valid, then the engine's values.
 struct SitesLayout {
+  static constexpr int first_row = 6;
   explicit SitesLayout(int passed)
       : passed(passed),
         given_col(passed + 1),
@@ -950,7 +952,7 @@ void write_site_row(Sheet& s, const ConstantsSheet& c, const MaterialFactors& f,
   const int passed = layout.passed, given_col = layout.given_col, theta_col = layout.theta_col, F_col = layout.F_col, branch_col = layout.branch_col,
             status_col = layout.status_col, valid_col = layout.valid_col, out_col = layout.out_col;
   const bool beam = a == Quantity::Lb;
-  const int first_row = 6, table_rows = (beam ? 2 : 1) * c.rows + 4;
+  const int first_row = SitesLayout::first_row, table_rows = (beam ? 2 : 1) * c.rows + 4;
   // A given's column among the constants sheet's laws (from 1).
   const auto law_column = [](Quantity q) {
     return num(static_cast<double>(std::find(log_linear.begin(), log_linear.end(), q) - log_linear.begin() + 1));
@@ -1046,7 +1048,7 @@ void write_user_sites(lxw_workbook* book, Formats& formats, const ConstantsSheet
                   {"mb", "kg"},
                   {"X", ""},
                   {"the calculator, when this file was written", ""}});
-  const int header_row = 4, first_row = 6;
+  const int header_row = 4, first_row = SitesLayout::first_row;
   for (std::size_t k = 0; k < columns.size(); ++k) {
     s.heading(header_row, static_cast<int>(k), columns[k].first);
     s.text(header_row + 1, static_cast<int>(k), columns[k].second);

@@ -358,14 +358,46 @@ SettingsValues read_settings(const nlohmann::json& object, unsigned doors, const
   return v;
 }
 
+namespace {
+
+// Every setting a caller's value replaces one for one, by its row (its key and dimension in
+// settings.def) and the member that holds it, in the order the notes name them: overlay lays
+// each over, settings_notes says so. The air's switch follows its own rule (overlay), and a drag
+// coefficient given replaces Cd(Re) too.
+template <class Base, class Visit>
+void each_setting(Base& base, const SettingsValues& over, Visit visit) {
+  visit(Setting::quality, base.quality, over.quality);
+  visit(Setting::n, base.n, over.n);
+  visit(Setting::tol, base.tol, over.tol);
+  visit(Setting::stepper, base.stepper, over.stepper);
+  visit(Setting::rtol, base.rtol, over.rtol);
+  visit(Setting::atol, base.atol, over.atol);
+  visit(Setting::target_level, base.target_level, over.target_level);
+  visit(Setting::range_from, base.range_from_release, over.range_from_release);
+  visit(Setting::drag_in_sling, base.drag_in_sling, over.drag_in_sling);
+  visit(Setting::air_density, base.air_density, over.air_density);
+  visit(Setting::cd, base.cd, over.cd);
+  visit(Setting::projectile, base.projectile, over.projectile);
+  visit(Setting::wind, base.wind, over.wind);
+  visit(Setting::samples, base.samples, over.samples);
+  visit(Setting::seed, base.seed, over.seed);
+  visit(Setting::claim, base.claim, over.claim);
+}
+
+// A setting's value as a note writes it: a number with its row's unit, a word, or a count.
+std::string setting_text(Setting id, double value) { return quantity_text(value, setting_row(id).dimension, UnitSystem::si, 6); }
+std::string setting_text(Setting, Release value) { return release_name(value); }
+std::string setting_text(Setting, Stepper value) { return stepper_name(value); }
+std::string setting_text(Setting id, bool value) {
+  if (id == Setting::range_from) return value ? "release" : "pivot";
+  return value ? "true" : "false";
+}
+std::string setting_text(Setting, int value) { return std::to_string(value); }
+std::string setting_text(Setting, std::uint64_t value) { return std::to_string(value); }
+
+}  // namespace
+
 SettingsValues overlay(SettingsValues base, const SettingsValues& over) {
-  const auto take = [](auto& mine, const auto& theirs) {
-    if (theirs) mine = theirs;
-  };
-  take(base.quality, over.quality), take(base.n, over.n), take(base.tol, over.tol), take(base.stepper, over.stepper);
-  take(base.rtol, over.rtol), take(base.atol, over.atol), take(base.target_level, over.target_level);
-  take(base.range_from_release, over.range_from_release);
-  take(base.samples, over.samples), take(base.seed, over.seed), take(base.claim, over.claim);
   // The air: off replaces the base's air with its details; otherwise each detail given replaces
   // the base's own, and the air is on if either turns it on.
   if (over.vacuum) {
@@ -375,38 +407,24 @@ SettingsValues overlay(SettingsValues base, const SettingsValues& over) {
   }
   base.air = over.air || (base.air && !over.vacuum);
   base.vacuum = over.vacuum || (base.vacuum && !over.air);
-  if (over.cd || over.cd_of_reynolds) base.cd = over.cd, base.cd_of_reynolds = over.cd_of_reynolds;  // a drag coefficient, or Cd(Re)
-  take(base.drag_in_sling, over.drag_in_sling), take(base.air_density, over.air_density), take(base.projectile, over.projectile);
-  take(base.wind, over.wind);
+  // A drag coefficient given replaces Cd(Re), and Cd(Re) given replaces a drag coefficient.
+  if (over.cd || over.cd_of_reynolds) base.cd_of_reynolds = over.cd_of_reynolds;
+  each_setting(base, over, [&](Setting id, auto& mine, const auto& theirs) {
+    if (theirs || (id == Setting::cd && over.cd_of_reynolds)) mine = theirs;
+  });
   return base;
 }
 
 std::vector<std::string> settings_notes(const SettingsValues& own, const SettingsValues& over, const std::string& where) {
   std::vector<std::string> notes;
-  const auto say = [&](const char* key, const std::string& given, const std::string& replaced) {
-    if (given != replaced) notes.push_back("{{" + std::string(key) + "}} " + given + " replaces " + engine_key_name(where, key) + " = " + replaced);
-  };
-  const auto number = [&](const char* key, const std::optional<double>& mine, const std::optional<double>& theirs, UnitDimension dimension) {
-    if (mine && theirs) say(key, quantity_text(*theirs, dimension, UnitSystem::si, 6), quantity_text(*mine, dimension, UnitSystem::si, 6));
-  };
-  using D = UnitDimension;
-  if (own.quality && over.quality) say("quality", release_name(*over.quality), release_name(*own.quality));
-  number("n", own.n, over.n, D::dimensionless);
-  number("tol", own.tol, over.tol, D::dimensionless);
-  number("rtol", own.rtol, over.rtol, D::dimensionless);
-  number("atol", own.atol, over.atol, D::dimensionless);
-  number("target_level", own.target_level, over.target_level, D::length);
-  if (own.range_from_release && over.range_from_release)
-    say("range_from", *over.range_from_release ? "release" : "pivot", *own.range_from_release ? "release" : "pivot");
   if (own.air && over.vacuum)
     notes.push_back("{{air}}=false replaces the air " + (where.empty() ? "the design" : where) + " gives: it flies in vacuum");
-  number("air_density", own.air_density, over.air_density, D::density);
-  number("cd", own.cd, over.cd, D::dimensionless);
-  number("projectile", own.projectile, over.projectile, D::density);
-  number("wind", own.wind, over.wind, D::speed);
-  if (own.samples && over.samples) say("samples", std::to_string(*over.samples), std::to_string(*own.samples));
-  if (own.seed && over.seed) say("seed", std::to_string(*over.seed), std::to_string(*own.seed));
-  number("claim", own.claim, over.claim, D::length);
+  each_setting(own, over, [&](Setting id, const auto& mine, const auto& theirs) {
+    if (!mine || !theirs) return;
+    const std::string given = setting_text(id, *theirs), replaced = setting_text(id, *mine);
+    const char* key = setting_row(id).key;
+    if (given != replaced) notes.push_back("{{" + std::string(key) + "}} " + given + " replaces " + engine_key_name(where, key) + " = " + replaced);
+  });
   return notes;
 }
 

@@ -1,5 +1,5 @@
 // Two sweeps. The what-if sweep's values: one engine's value from one end to the other, whose
-// shots the application makes (app/what_if.hpp). And a sweep along the X axis (Y = 0) of eq:XY_RT for one (theta_i, F) block: the ab-initio
+// shots the application makes (app/run/what_if.hpp). And a sweep along the X axis (Y = 0) of eq:XY_RT for one (theta_i, F) block: the ab-initio
 // optimum (optimizer.hpp) at each X point, the data from which tab:CPNC is fitted
 // (section 6.1, fig:fZ_vs_X). Points can be spread over threads and split into shards; the
 // result depends on neither. A shard's points travel as a sweep part (JSON).

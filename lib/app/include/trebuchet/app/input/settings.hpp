@@ -86,7 +86,7 @@ std::vector<std::string> setting_names(unsigned doors);
 
 /// The work one run may do, decided before it starts: a Monte Carlo run's samples times the
 /// shots of one sample (1 for a shot, those of a trial completion for complete), or
-/// derive-table's X points times about shots_per_sweep_point, at most this: about 30 s on two
+/// derive-table's X points times about shots_per_sweep_point (run/verifier.hpp), at most this: about 30 s on two
 /// cores of the reference machine (docs/stability.md). It bounds {{samples}} too.
 inline constexpr std::int64_t max_run_shots = 500000;
 
