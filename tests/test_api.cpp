@@ -148,6 +148,20 @@ TEST_CASE("api::monte_carlo split into parts is the whole run", "[api]") {
   }
 }
 
+// Issue 65: a request's settings are laid over the design's as the programs' flags are
+// (lay_over_run), and each one that replaces the design's own is noted in the request's keys.
+TEST_CASE("api::monte_carlo notes a request's setting that replaces the design's own", "[api]") {
+  const json design = {{"L1", "4.13m"}, {"L2", "0.88m"},   {"F", "2/3"},  {"L4", "3.55m"}, {"m", "50kg"},
+                       {"mb", "174kg"}, {"M", "3t..3.2t"}, {"air", true}, {"wind", "2m/s"}};
+  const auto answer = api::monte_carlo({{"design", design}, {"wind", "0m/s"}, {"samples", 5}});
+  REQUIRE(answer.contains("notes"));
+  CHECK(answer["notes"] == json::array({"wind 0 m/s replaces design.wind = 2 m/s"}));
+  // A spread given over the design's one value replaces it, drawn, and is noted with its spread.
+  const auto spread = api::monte_carlo({{"design", design}, {"wind", "-1m/s..1m/s"}, {"samples", 5}});
+  CHECK(spread["notes"] == json::array({"wind -1m/s..1m/s replaces design.wind = 2 m/s"}));
+  CHECK(spread["draws"].contains("wind"));
+}
+
 TEST_CASE("api::monte_carlo with a claim: its odds agree with the samples' own ranges", "[api]") {
   const json request = {{"attested", {{"Lb", "9.5m"}, {"M", "2t..4t"}, {"m", "50kg"}}}, {"samples", 40}, {"claim", "170m"}, {"release", "range"}};
   const auto answer = api::monte_carlo(request);

@@ -42,43 +42,8 @@ namespace {
 MonteCarloRequest file_run(const Options& o, const nlohmann::json& design, const std::string& where) {
   nlohmann::json passed;
   MonteCarloRequest run = read_monte_carlo_design(design, where, passed);
-  std::vector<std::string> notes = run.notes;
-  // What the flags give for a value or setting, as a note writes it: its spread, Cd(Re), or its value.
-  const auto flag_text = [&](const SpreadInput& s) -> std::string {
-    for (const SpreadInput& flag : o.spreads)
-      if (flag.value == s.value && flag.setting == s.setting) return spread_text(flag.input.spread, flag.input.dimension);
-    if (s.setting == &SettingsValues::cd && o.settings.cd_of_reynolds) return "Cd(Re)";
-    return quantity_text(*(s.value ? o.design.*s.value : o.settings.*s.setting), s.input.dimension, UnitSystem::si, 6);
-  };
-  const auto note = [&](const SpreadInput& s, const std::string& replaced) {
-    const std::string key = spread_key(s);  // the file's spread is named by its key, a flag's by its flag
-    notes.push_back("{{" + key + "}} " + flag_text(s) + " replaces " + where + "." + key + " = " + replaced);
-  };
-  // A file's spread that the flags give (one value, a spread, Cd(Re), or vacuum for the air's) is no longer drawn.
-  std::erase_if(run.spreads, [&](const SpreadInput& s) {
-    const bool flagged = s.value ? (o.design.*s.value).has_value() : replaces_spread(o.settings, s);
-    if (!flagged) return false;
-    if (s.value || !o.settings.vacuum) note(s, spread_text(s.input.spread, s.input.dimension));  // vacuum has its own note
-    if (s.value)
-      run.values.*s.value = std::nullopt;
-    else
-      run.settings.*s.setting = std::nullopt;
-    return true;
-  });
-  // A flag's spread over the file's one value: noted with its spread, not its first number.
-  for (const SpreadInput& s : o.spreads) {
-    std::optional<double>& own = s.value ? run.values.*s.value : run.settings.*s.setting;
-    if (!own) continue;
-    note(s, quantity_text(*own, s.input.dimension, UnitSystem::si, 6));
-    own = std::nullopt;
-  }
-  run.values = overlay_flags(run.values, o.design, where, notes);
-  // A spread whose value the flags fix another way goes with it (--F over the file's spread L3).
-  std::erase_if(run.spreads, [&](const SpreadInput& s) { return s.value && !(run.values.*s.value); });
-  for (std::string& note_text : settings_notes(run.settings, o.settings, where)) notes.push_back(std::move(note_text));
-  print_notes(notes);
-  run.settings = overlay(run.settings, o.settings);
-  for (const SpreadInput& spread : o.spreads) add_spread(run.spreads, spread);
+  lay_over_run(run, o.design, o.settings, o.spreads, where);
+  print_notes(run.notes);
   if (run.spreads.empty())
     throw Error(ErrorKind::usage,
                 "the flags give one value to each of " + where +

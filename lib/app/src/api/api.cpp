@@ -300,9 +300,7 @@ MonteCarloRequest monte_carlo_run_of(const json& request, json& passed) {
   run.completes = completes;
   std::vector<SpreadInput> spread_settings;
   const SettingsValues given = settings_values_of(take_spreads(request, op_shot, "", spread_settings), req_monte_carlo);
-  run.settings = overlay(run.settings, given);
-  std::erase_if(run.spreads, [&](const SpreadInput& s) { return replaces_spread(given, s); });
-  for (const SpreadInput& spread : spread_settings) add_spread(run.spreads, spread);
+  lay_over_run(run, DesignValues{}, given, spread_settings, where);
   if (run.spreads.empty())  // as the programs refuse a run of identical samples
     throw Error(ErrorKind::usage,
                 "monte_carlo samples the values of {{" + where +
@@ -405,7 +403,13 @@ ordered_json monte_carlo(const json& request) {
   answer.erase("wall_time_s");  // a time is the caller's to measure; the report is the same on any machine
   // Every sample's drawn inputs and outcomes as the programs' --draws writes them, to 17 digits: the run's own numbers.
   if (flag_of(request, "draws_csv")) answer["draws_csv"] = monte_carlo_draws_csv(report);
-  if (!run.notes.empty()) answer["notes"] = run.notes;  // what reading the design left out, as the programs' notes say
+  // What reading the design left out and what the request's settings replaced, as the programs'
+  // notes say, in the request's keys.
+  if (!run.notes.empty()) {
+    std::vector<std::string> notes;
+    for (const std::string& note : run.notes) notes.push_back(with_words(note, key_word));
+    answer["notes"] = notes;
+  }
   if (!passed.empty()) answer["passed"] = passed;
   return answer;
 }

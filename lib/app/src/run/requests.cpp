@@ -109,6 +109,46 @@ MonteCarloRequest read_monte_carlo_design(const nlohmann::json& design, const st
   return run;
 }
 
+void lay_over_run(MonteCarloRequest& run, const DesignValues& values, const SettingsValues& settings, const std::vector<SpreadInput>& spreads,
+                  const std::string& where) {
+  std::vector<std::string>& notes = run.notes;
+  // What the caller gives for a value or setting, as a note writes it: its spread, Cd(Re), or its value.
+  const auto flag_text = [&](const SpreadInput& s) -> std::string {
+    for (const SpreadInput& flag : spreads)
+      if (flag.value == s.value && flag.setting == s.setting) return spread_text(flag.input.spread, flag.input.dimension);
+    if (s.setting == &SettingsValues::cd && settings.cd_of_reynolds) return "Cd(Re)";
+    return quantity_text(*(s.value ? values.*s.value : settings.*s.setting), s.input.dimension, UnitSystem::si, 6);
+  };
+  const auto note = [&](const SpreadInput& s, const std::string& replaced) {
+    const std::string key = spread_key(s);  // named by its key: a flag's is its flag, a request's its key
+    notes.push_back("{{" + key + "}} " + flag_text(s) + " replaces " + where + "." + key + " = " + replaced);
+  };
+  // A run's spread that the caller gives (one value, a spread, Cd(Re), or vacuum for the air's) is no longer drawn.
+  std::erase_if(run.spreads, [&](const SpreadInput& s) {
+    const bool flagged = s.value ? (values.*s.value).has_value() : replaces_spread(settings, s);
+    if (!flagged) return false;
+    if (s.value || !settings.vacuum) note(s, spread_text(s.input.spread, s.input.dimension));  // vacuum has its own note
+    if (s.value)
+      run.values.*s.value = std::nullopt;
+    else
+      run.settings.*s.setting = std::nullopt;
+    return true;
+  });
+  // A caller's spread over the run's one value: noted with its spread, not its first number.
+  for (const SpreadInput& s : spreads) {
+    std::optional<double>& own = s.value ? run.values.*s.value : run.settings.*s.setting;
+    if (!own) continue;
+    note(s, quantity_text(*own, s.input.dimension, UnitSystem::si, 6));
+    own = std::nullopt;
+  }
+  run.values = overlay_flags(run.values, values, where, notes);
+  // A spread whose value the caller fixes another way goes with it (--F over the file's spread L3).
+  std::erase_if(run.spreads, [&](const SpreadInput& s) { return s.value && !(run.values.*s.value); });
+  for (std::string& note_text : settings_notes(run.settings, settings, where)) notes.push_back(std::move(note_text));
+  run.settings = overlay(run.settings, settings);
+  for (const SpreadInput& spread : spreads) add_spread(run.spreads, spread);
+}
+
 nlohmann::ordered_json monte_carlo_request_json(const MonteCarloRequest& request, int samples, std::uint64_t seed) {
   const MonteCarloRequest first = with_draws(request, [](const Spread& s) { return s.a; });
   nlohmann::ordered_json design = nlohmann::ordered_json::object();

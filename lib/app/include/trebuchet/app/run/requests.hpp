@@ -52,6 +52,14 @@ struct MonteCarloRequest {
 /// tolerance) is left out, with a note. Throws Error as read_design_values.
 MonteCarloRequest read_monte_carlo_design(const nlohmann::json& design, const std::string& where, nlohmann::json& passed);
 
+/// A caller's values, settings and spreads (flags, or a request's keys) laid over a run read from
+/// a design or a run's report (read_monte_carlo_design), each change noted in run.notes as the
+/// caller gave it ({{key}}): a spread of the run's that the caller fixes (one value, a spread,
+/// Cd(Re), or vacuum for the air's) is no longer drawn, and a caller's spread replaces the run's
+/// one value; then the caller's values, settings and spreads are the run's.
+void lay_over_run(MonteCarloRequest& run, const DesignValues& values, const SettingsValues& settings, const std::vector<SpreadInput>& spreads,
+                  const std::string& where);
+
 /// The run as a request gives it, for its report: {"design": ...} (or "attested" for
 /// completions) with each value under its key (SI, degrees for angles), each range or spread as
 /// its text (spread_text), the machine, the settings as a shot's record writes them with the air
