@@ -923,8 +923,8 @@ struct RowsColumn {
 // described, not given, so a row shot in air is refused rather than shot again in vacuum.
 RowsColumn column_of(const std::string& header, bool own_output, const std::vector<std::string>& results, const std::vector<RowsColumn>& columns,
                      const std::vector<std::string>& header_cells, const std::string& source) {
-  const std::vector<std::string> inputs = input_names(op_shot);
-  const std::vector<std::string_view> engine_keys(inputs.begin(), inputs.end());
+  static const std::vector<std::string> inputs = input_names(op_shot);
+  static const std::vector<std::string_view> engine_keys(inputs.begin(), inputs.end());
   static const std::vector<std::string_view> dropped = {"X",      "Y",        "Lb", "H", "l", "l4", "L", "mu", "mu_b", "K", "DeltaU", "amplification",
                                                         "branch", "warnings", "air"};
   static const std::vector<std::pair<std::string, ColumnName>> settings_columns = {
