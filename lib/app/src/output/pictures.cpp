@@ -160,16 +160,28 @@ struct PictureShot {
   const double mg_kN, Mg_kN, energy_kJ;  // the projectile's and the counterweight's weights [kN], M g L2 [kJ]
   const ScaledDesign scaled;  // the engine in the paper's scaled units
   const std::string scene, warnings;  // the shot in words for the titles, and its warnings as labels
+  const Verification& v = series.verification;
+  const std::vector<TracePoint>& trace = series.trace;
+  const std::vector<SitePoint>& flight = series.flight;
+  const bool whipper = engine.machine == MachineKind::whipper;
   Moments moments;  // the samples the pictures mark
+
+  // Each picture's files: the data, then a gnuplot script each, the pin's data and script, the
+  // animation, and the page with the viewer.
+  std::vector<PictureFile> data_files() const;
+  PictureFile engine_script() const;
+  PictureFile paths_script() const;
+  PictureFile forces_script() const;
+  PictureFile energy_script() const;
+  PictureFile release_script() const;
+  std::vector<PictureFile> pin_files() const;
+  PictureFile animation_script() const;
+  PictureFile page_html(const nlohmann::ordered_json& report, UnitSystem units) const;
 };
 
 // The data the scripts plot: every sample (shot.csv), the flight (flight.csv), and Q(t), eps(t), R(t)
 // and the running extremes of eq:F, each over its value at the release (release.csv).
-std::vector<PictureFile> data_files(const PictureShot& c) {
-  const Engine& engine = c.engine;
-  const ShotSeries& series = c.series;
-  const std::vector<TracePoint>& trace = series.trace;
-  const std::vector<SitePoint>& flight = series.flight;
+std::vector<PictureFile> PictureShot::data_files() const {
   std::vector<PictureFile> files;
   files.push_back({"shot.csv", trace_csv(trace, engine)});
   std::ostringstream flight_csv;
@@ -191,21 +203,12 @@ std::vector<PictureFile> data_files(const PictureShot& c) {
 
 // 1. The engine at four moments, to scale, in one frame that holds all four with a margin. The
 // whipper's projectile leaves its arm where the others' lift off their trough.
-PictureFile engine_script(const PictureShot& c) {
-  const Engine& engine = c.engine;
-  const ShotSeries& series = c.series;
-  const Verification& v = series.verification;
-  const std::vector<TracePoint>& trace = series.trace;
-  const Moments& m = c.moments;
-  const double H = c.H;
-  const std::string& scene = c.scene;
-  const auto seconds = [&](std::size_t i) { return c.seconds(i); };
-  const bool whipper = engine.machine == MachineKind::whipper;
+PictureFile PictureShot::engine_script() const {
   const std::pair<std::size_t, std::string> panels[] = {
-      {m.start, "at rest: θ_i = " + format_significant(engine.theta_i_deg, 3) + "°"},
-      {m.liftoff, (whipper ? "off the arm, t = " : "lift-off, t = ") + format_significant(seconds(m.liftoff), 3) + " s"},
-      {m.peak_reaction, "largest pivot force, t_m = " + format_significant(seconds(m.peak_reaction), 3) + " s"},
-      {m.release, "release, t_r = " + format_significant(seconds(m.release), 3) + " s"}};
+      {moments.start, "at rest: θ_i = " + format_significant(engine.theta_i_deg, 3) + "°"},
+      {moments.liftoff, (whipper ? "off the arm, t = " : "lift-off, t = ") + format_significant(seconds(moments.liftoff), 3) + " s"},
+      {moments.peak_reaction, "largest pivot force, t_m = " + format_significant(seconds(moments.peak_reaction), 3) + " s"},
+      {moments.release, "release, t_r = " + format_significant(seconds(moments.release), 3) + " s"}};
   double x_lo = -0.3 * H, x_hi = 0.3 * H, y_lo = 0, y_hi = H;
   for (const auto& [i, title] : panels) {
     const Snapshot& s = trace[i].snapshot;
@@ -239,15 +242,7 @@ PictureFile engine_script(const PictureShot& c) {
 }
 
 // 2. The paths, then the flight to its end; on the right the engine's part enlarged.
-PictureFile paths_script(const PictureShot& c) {
-  const Engine& engine = c.engine;
-  const ShotSettings& settings = c.settings;
-  const ShotSeries& series = c.series;
-  const Verification& v = series.verification;
-  const std::vector<SitePoint>& flight = series.flight;
-  const double H = c.H;
-  const std::string& scene = c.scene;
-  const std::string& warnings = c.warnings;
+PictureFile PictureShot::paths_script() const {
   std::ostringstream paths;
   const SitePoint impact = flight.back();
   const double from_x = settings.range_from_release ? v.x : 0;  // R runs from the pivot, or from the release point (Denny's)
@@ -279,21 +274,13 @@ PictureFile paths_script(const PictureShot& c) {
 
 // 3. The forces against time, in kN, with multiples of M g on the right; the marks' names
 // stand above the frame, in two rows, clear of the curves and of each other.
-PictureFile forces_script(const PictureShot& c) {
-  const Engine& engine = c.engine;
-  const Moments& m = c.moments;
-  const std::string& scene = c.scene;
-  const std::string& warnings = c.warnings;
-  const auto seconds = [&](std::size_t i) { return c.seconds(i); };
-  const double mg_kN = c.mg_kN;
-  const double Mg_kN = c.Mg_kN;
-  const bool whipper = c.engine.machine == MachineKind::whipper;
+PictureFile PictureShot::forces_script() const {
   auto marks = [&](std::ostringstream& gp) {
-    const std::pair<std::size_t, const char*> at[] = {{m.liftoff, whipper ? "off the arm" : "lift-off"},
-                                                      {m.first_extreme, "t_1"},
-                                                      {m.peak_reaction, "t_m"},
-                                                      {m.second_extreme, "t_2"},
-                                                      {m.release, "release"}};
+    const std::pair<std::size_t, const char*> at[] = {{moments.liftoff, whipper ? "off the arm" : "lift-off"},
+                                                      {moments.first_extreme, "t_1"},
+                                                      {moments.peak_reaction, "t_m"},
+                                                      {moments.second_extreme, "t_2"},
+                                                      {moments.release, "release"}};
     int row = 0;
     for (const auto& [i, name] : at)
       gp << "set arrow from " << num(seconds(i)) << ", graph 0 to " << num(seconds(i)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
@@ -305,7 +292,7 @@ PictureFile forces_script(const PictureShot& c) {
          << "set xlabel 'time [s]'\nset ylabel 'force [kN]'\nset y2label \"force as a multiple of M·g (M = "
          << gnuplot_quoted(quantity_text(engine.M, UnitDimension::mass, UnitSystem::si, 3))
          << ", the counterweight)\" noenhanced\nset y2tics\nset link y2 via y/" << num(Mg_kN) << " inverse y*" << num(Mg_kN)
-         << "\nset format y2 '%.1f'\nset key below\nset tmargin 6\nset xrange [0:" << num(seconds(m.release) * 1.02) << "]\n"
+         << "\nset format y2 '%.1f'\nset key below\nset tmargin 6\nset xrange [0:" << num(seconds(moments.release) * 1.02) << "]\n"
          << "set title \"Forces up to the release: t_1 and t_2 the extremes of F_Rh, t_m the largest pivot force\\n"
          << gnuplot_quoted(scene) << "\" noenhanced\n"
          << warnings;
@@ -323,26 +310,17 @@ PictureFile forces_script(const PictureShot& c) {
 
 // 4. Where the energy goes: each body's energy over its value at rest, against Delta U; the
 // projectile keeps what it took at the release.
-PictureFile energy_script(const PictureShot& c) {
-  const ShotSeries& series = c.series;
-  const Verification& v = series.verification;
-  const std::vector<TracePoint>& trace = series.trace;
-  const Moments& m = c.moments;
-  const std::string& scene = c.scene;
-  const std::string& warnings = c.warnings;
-  const auto seconds = [&](std::size_t i) { return c.seconds(i); };
-  const ScaledDesign& d = c.scaled;
-  const double energy_kJ = c.energy_kJ;
+PictureFile PictureShot::energy_script() const {
   std::ostringstream energy;
-  const Snapshot& at_release = trace[m.release].snapshot;
-  const double drop_kJ = d.energy_drop() * energy_kJ;
+  const Snapshot& at_release = trace[moments.release].snapshot;
+  const double drop_kJ = scaled.energy_drop() * energy_kJ;
   const Snapshot& rest = trace.front().snapshot;
   const double cw0 = rest.energies.counterweight * energy_kJ, beam0 = rest.energies.beam * energy_kJ,
                pr0 = rest.energies.projectile_potential * energy_kJ;
   const double taken_kJ = (at_release.energies.projectile_kinetic + at_release.energies.projectile_potential) * energy_kJ - pr0;
   // An engine as built loses energy to friction and drag: the work they took (the series' last
   // five columns, 29 to 33) is drawn, and the total includes it.
-  const bool losses = d.parts.dissipates();
+  const bool losses = scaled.parts.dissipates();
   const std::string lost_kJ = "(($29+$30+$31+$32+$33)/1000)";
   energy << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'energy.svg'")
          << "set xlabel 'time [s]'\nset ylabel 'energy gained since rest [kJ]'\nset key below\n"
@@ -355,10 +333,11 @@ PictureFile energy_script(const PictureShot& c) {
                  ? "after the release the wind gives " + format_significant(-v.energy.flight_drag / 1000, 3) + " kJ more in flight\\n"
                  : "")
          << gnuplot_quoted(scene) << "\" noenhanced\n"
-         << "set arrow from " << num(seconds(m.release)) << ", graph 0 to " << num(seconds(m.release)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
-         << "set arrow from " << num(seconds(m.release)) << "," << num(taken_kJ) << " to " << num(seconds(m.release)) << "," << num(drop_kJ)
-         << " heads lw 2 lc rgb 'red' front\nset label '1 − ε' at " << num(seconds(m.release)) << "," << num((taken_kJ + drop_kJ) / 2)
-         << " offset 0.5,0 tc rgb 'red' noenhanced\nset label 'release' at " << num(seconds(m.release))
+         << "set arrow from " << num(seconds(moments.release)) << ", graph 0 to " << num(seconds(moments.release))
+         << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
+         << "set arrow from " << num(seconds(moments.release)) << "," << num(taken_kJ) << " to " << num(seconds(moments.release)) << ","
+         << num(drop_kJ) << " heads lw 2 lc rgb 'red' front\nset label '1 − ε' at " << num(seconds(moments.release)) << ","
+         << num((taken_kJ + drop_kJ) / 2) << " offset 0.5,0 tc rgb 'red' noenhanced\nset label 'release' at " << num(seconds(moments.release))
          << ", graph 0.5 rotate by 90 center offset -0.8,0\n"
          << "plot 'shot.csv' every ::1 using 2:($23/1000-(" << num(cw0) << ")) with lines lw 2 title 'counterweight', \\\n"
          << "     '' every ::1 using 2:($24/1000-(" << num(beam0) << ")) with lines lw 2 title 'beam', \\\n"
@@ -374,22 +353,18 @@ PictureFile energy_script(const PictureShot& c) {
 }
 
 // 5. Why the release is where it is.
-PictureFile release_script(const PictureShot& c) {
-  const ShotSettings& settings = c.settings;
-  const Moments& m = c.moments;
-  const std::string& scene = c.scene;
-  const std::string& warnings = c.warnings;
-  const auto seconds = [&](std::size_t i) { return c.seconds(i); };
+PictureFile PictureShot::release_script() const {
   const std::string objective = settings.criterion.release == Release::quality ? "Q" : settings.criterion.release == Release::efficiency ? "ε" : "R";
   std::ostringstream release;
   release << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'release.svg'")
           << "set xlabel 'time [s]'\nset ylabel 'value over its value at the release'\nset key below\nset yrange [0:1.3]\n"
-          << warnings << "set label 'release' at " << num(seconds(m.release)) << ", graph 0.95 offset 0.3,0\n"
+          << warnings << "set label 'release' at " << num(seconds(moments.release)) << ", graph 0.95 offset 0.3,0\n"
           << "set title \"Phase II, and on as if the projectile were kept: "
           << (settings.release_at ? "this shot is released as given" : objective + " peaks at the release")
           << "; the running extremes of eq:F switch on as they grow\\n"
           << gnuplot_quoted(scene) << "; Q, ε and R here at level 0 in vacuum\" noenhanced\n"
-          << "set arrow from " << num(seconds(m.release)) << ", graph 0 to " << num(seconds(m.release)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
+          << "set arrow from " << num(seconds(moments.release)) << ", graph 0 to " << num(seconds(moments.release))
+          << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
           << "plot 'release.csv' every ::1 using 1:2 with lines lw 3 lc rgb 'black' title 'Q', \\\n"
           << "     '' every ::1 using 1:3 with lines lw 2 title 'ε', '' every ::1 using 1:4 with lines lw 2 title 'R', \\\n"
           << "     '' every ::1 using 1:5 with lines lw 2 dt 2 title 'max F_S⊥ so far', '' every ::1 using 1:6 with lines lw 2 dt 2 title 'max |F_R| "
@@ -401,11 +376,7 @@ PictureFile release_script(const PictureShot& c) {
 
 // 6. The pin: R and Q of the releases at pin angles 20 deg either side of this shot's (the
 // series' pin scan), each over its value here; a builder reads how exactly the pin must be bent.
-std::vector<PictureFile> pin_files(const PictureShot& c) {
-  const ShotSeries& series = c.series;
-  const Verification& v = series.verification;
-  const std::string& scene = c.scene;
-  const std::string& warnings = c.warnings;
+std::vector<PictureFile> PictureShot::pin_files() const {
   std::vector<PictureFile> files;
   std::ostringstream pin_csv;
   pin_csv << "pin_angle_deg,R_m,Q\n";
@@ -437,23 +408,13 @@ std::vector<PictureFile> pin_files(const PictureShot& c) {
 // 7. The animation: one frame every second sample of the engine, played at 4 % of real speed
 // or slower, the stone flying on after the release; then the whole flight to its end, zoomed
 // out, at about real speed.
-PictureFile animation_script(const PictureShot& c) {
-  const Engine& engine = c.engine;
-  const ShotSettings& settings = c.settings;
-  const ShotSeries& series = c.series;
-  const Verification& v = series.verification;
-  const std::vector<TracePoint>& trace = series.trace;
-  const std::vector<SitePoint>& flight = series.flight;
-  const Moments& m = c.moments;
-  const double H = c.H;
-  const auto seconds = [&](std::size_t i) { return c.seconds(i); };
-  const auto stone_at = [&](double after) { return series.stone_at(after); };
-  const SitePoint impact = c.series.flight.back();
+PictureFile PictureShot::animation_script() const {
+  const SitePoint impact = flight.back();
   const std::size_t stride = 2;
   const double frame_s = stride * (trace.size() > 1 ? seconds(1) - seconds(0) : 0.01);
   const int delay = 8;  // [1/100 s] per frame
   const double slowed = delay / 100.0 / frame_s;
-  const double t_release = seconds(m.release);
+  const double t_release = seconds(moments.release);
   std::ostringstream anim;
   anim << "# Made by trebuchet-verify shot --plot; run with gnuplot in this folder.\n"
        << "set encoding utf8\nset datafile separator ','\nset terminal gif animate delay " << delay
@@ -467,7 +428,7 @@ PictureFile animation_script(const PictureShot& c) {
   for (std::size_t i = 0; i < trace.size(); i += stride) {
     const bool on = trace[i].phase != Phase::released;
     anim << "unset arrow\nunset label\nunset object\n" << engine_commands(engine, trace[i], on, false, false) << warning_labels(v, true);
-    if (!on) stone(stone_at(seconds(i) - t_release), 0.03 * H);
+    if (!on) stone(series.stone_at(seconds(i) - t_release), 0.03 * H);
     anim << "set title 't = " << format_significant(seconds(i), 3) << " s  ("
          << (on ? std::string("phase ") + phase_numeral(trace[i].phase) : std::string("released")) << ", slowed " << format_significant(slowed, 2)
          << " times)' noenhanced\nplot 0 lc rgb '#6b8e23' lw 2 notitle\n";
@@ -482,7 +443,7 @@ PictureFile animation_script(const PictureShot& c) {
   for (int k = 0; k <= flight_frames; ++k) {
     const double after = k * flight_step;
     anim << "unset object\nunset label\n" << warning_labels(v, true);
-    stone(stone_at(after), 0.008 * (flight_hi - flight_lo));
+    stone(series.stone_at(after), 0.008 * (flight_hi - flight_lo));
     anim << "set title 'the flight: " << format_significant(after, 3) << " s after the release (" << (settings.air ? "air" : "vacuum") << ", "
          << format_significant(delay / 100.0 / flight_step, 2) << " × real speed)' noenhanced\n"
          << "plot 'flight.csv' every ::1 using 1:2 with lines lc rgb '#bbbbbb' dt 2 notitle, 0 lc rgb '#6b8e23' lw 2 notitle, " << num(impact.y)
@@ -493,10 +454,7 @@ PictureFile animation_script(const PictureShot& c) {
 
 // 7. The page: the browser page's viewer (web/viewer.js) with this shot inside, and the
 // pictures above for print.
-PictureFile page_html(const PictureShot& c, const nlohmann::ordered_json& report, UnitSystem units) {
-  const Engine& engine = c.engine;
-  const ShotSettings& settings = c.settings;
-  const ShotSeries& series = c.series;
+PictureFile PictureShot::page_html(const nlohmann::ordered_json& report, UnitSystem units) const {
   nlohmann::ordered_json shot = report;
   shot["series"] = shot_series_json(series, engine);
   std::string data = shot.dump();
@@ -541,11 +499,13 @@ std::vector<std::string> picture_scripts() { return {"engine.gp", "paths.gp", "f
 std::vector<PictureFile> shot_pictures(const Engine& engine, const ShotSettings& settings, const Verification& verification,
                                        const nlohmann::ordered_json& report, UnitSystem units) {
   const PictureShot shot(engine, settings, verification);
-  std::vector<PictureFile> files = data_files(shot);
-  for (const auto& script : {engine_script, paths_script, forces_script, energy_script, release_script}) files.push_back(script(shot));
-  for (PictureFile& file : pin_files(shot)) files.push_back(std::move(file));
-  files.push_back(animation_script(shot));
-  files.push_back(page_html(shot, report, units));
+  std::vector<PictureFile> files = shot.data_files();
+  for (const auto script : {&PictureShot::engine_script, &PictureShot::paths_script, &PictureShot::forces_script, &PictureShot::energy_script,
+                            &PictureShot::release_script})
+    files.push_back((shot.*script)());
+  for (PictureFile& file : shot.pin_files()) files.push_back(std::move(file));
+  files.push_back(shot.animation_script());
+  files.push_back(shot.page_html(report, units));
   return files;
 }
 
