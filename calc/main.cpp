@@ -7,27 +7,26 @@
 #include <map>
 #include <optional>
 
-#include "trebuchet/app/run/batch.hpp"
-#include "trebuchet/calculator.hpp"
-#include "trebuchet/app/input/csv.hpp"
-#include "trebuchet/app/output/output_files.hpp"
-#include "trebuchet/format.hpp"
 #include "flags.hpp"
 #include "program.hpp"
-#include "trebuchet/error.hpp"
-#include "trebuchet/app/output/report.hpp"
-#include "trebuchet/app/records/schema.hpp"
-#include "trebuchet/app/records/design_record.hpp"
-#include "trebuchet/app/output/spreadsheet.hpp"
+#include "trebuchet/app/input/csv.hpp"
 #include "trebuchet/app/input/fields.hpp"
 #include "trebuchet/app/input/names.hpp"
 #include "trebuchet/app/input/request.hpp"
 #include "trebuchet/app/input/settings.hpp"
-#include "trebuchet/scaling_table.hpp"
-#include "trebuchet/app/records/table_json.hpp"
 #include "trebuchet/app/input/text_input.hpp"
-#include "trebuchet/app/input/names.hpp"
 #include "trebuchet/app/input/units.hpp"
+#include "trebuchet/app/output/output_files.hpp"
+#include "trebuchet/app/output/report.hpp"
+#include "trebuchet/app/records/design_record.hpp"
+#include "trebuchet/app/records/schema.hpp"
+#include "trebuchet/app/records/table_json.hpp"
+#include "trebuchet/app/run/batch.hpp"
+#include "trebuchet/calculator.hpp"
+#include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
+#include "trebuchet/scaling_table.hpp"
+#include "workbook.hpp"
 
 namespace {
 
@@ -63,95 +62,6 @@ const InputField& given_field(Quantity quantity) { return *find_field(quantity_n
 OptimalEngine in_option_words(OptimalEngine design) {
   for (std::string& warning : design.warnings) warning = with_words(warning, option_word);
   return design;
-}
-
-// The workbook opens on the paper's examples, or on two givens: R and T on the capacity sheet, R
-// and another on the sheet for R and one parameter, Lb and another on the sheet for Lb and one
-// (Lb first), any other pair on the last. Each sheet keeps its example's block (the sheet for Lb
-// and one opens on F = 1) unless --theta or --F is given; the sheet the givens open on takes the
-// block as the calculator would. Givens the calculator refuses still open their sheet, which
-// says why: the refusal is returned, for the run to exit as the calculator does.
-std::optional<Error> open_sheets(const ScalingTable& table, const DesignRequest& request, std::vector<Given> givens, bool block_given,
-                                 SpreadsheetInputs& inputs) {
-  const auto set_block = [&](DesignRequest& sheet) { sheet.theta_i_deg = request.theta_i_deg, sheet.F = request.F; };
-  for (DesignRequest* sheet : {&inputs.capacity, &inputs.range_and_one, &inputs.any_pair, &inputs.beam_length}) {
-    if (block_given) set_block(*sheet);
-    sheet->branch = request.branch, sheet->material = request.material;
-  }
-  if (givens.empty()) return std::nullopt;
-  if (givens.size() != 2)
-    throw Error(ErrorKind::given_count,
-                "--spreadsheet opens on the paper's examples, or on exactly two givens; found " + std::to_string(givens.size()));
-  std::sort(givens.begin(), givens.end(), [](const Given& a, const Given& b) { return a.quantity < b.quantity; });
-  const bool has_R = givens[0].quantity == Quantity::R;
-  if (givens[1].quantity == Quantity::Lb) std::swap(givens[0], givens[1]);
-  const bool has_Lb = givens[0].quantity == Quantity::Lb;
-  DesignRequest& sheet = has_Lb                    ? inputs.beam_length
-      : has_R && givens[1].quantity == Quantity::T ? inputs.capacity
-      : has_R                                      ? inputs.range_and_one
-                                                   : inputs.any_pair;
-  sheet.first = givens[0], sheet.second = givens[1];
-  set_block(sheet);
-  try {
-    design_optimal_engine(table, sheet);
-  } catch (const Error& e) {
-    // The workbook has no extrapolation: the calculator's advice to add it is cut.
-    std::string why = e.named_message();
-    if (const std::size_t cut = why.find("; or add {{extrapolate}}"); cut != std::string::npos) why.resize(cut);
-    const Error refusal(e.kind(), why);
-    inputs.refusal = {&sheet,
-                      "The calculator refuses the givens this sheet opened on (trebuchet-calc: exit " +
-                          std::to_string(exit_code(Program::calc, e.kind())) + "): " + refusal.message(option_word)};
-    return refusal;
-  }
-  return std::nullopt;
-}
-
-// The user's sites: a row each on the sheet "your sites", a refused row with its reason (a name
-// longer than a cell holds too, the good rows kept); how many were refused. --scale sets the
-// sheet "model scaling": the sites are designed full size, as the sheet designs them.
-int read_sites(std::istream& input, const std::string& batch, const ScalingTable& table, const DesignRequest& request, SpreadsheetInputs& inputs) {
-  UserSites sites{batch == "-" ? std::string("stdin") : std::filesystem::path(batch).filename().string(), {}, {}};
-  DesignRequest full_size = request;
-  full_size.scale = 1;
-  int overlong_rows = 0;
-  const int failures = run_batch(
-      input, table, full_size, [&](const std::vector<std::string>& passed) { sites.columns = passed; },
-      [&](const BatchRow& row) {
-        const std::string overlong = overlong_cell(sites.columns, row.passed);
-        const std::string refusal = row.error ? row.error->message(option_word) : overlong;
-        if (!refusal.empty()) std::cerr << message_start() + ("trebuchet-calc: line " + std::to_string(row.line) + ": " + refusal + "\n");
-        if (!row.error && !overlong.empty()) ++overlong_rows;
-        sites.rows.push_back(
-            {row.line, row.passed, row.request && overlong.empty() ? std::optional<DesignRequest>(*row.request) : std::nullopt, refusal});
-      });
-  inputs.sites = std::move(sites);
-  return failures + overlong_rows;
-}
-
-// --spreadsheet: the calculator as a workbook, opening on the givens or on the batch's sites.
-int write_workbook(const ScalingTable& table, const DesignRequest& request, const std::vector<Given>& givens, bool block_given, bool scale_given,
-                   std::istream& input, const std::string& batch, const std::string& spreadsheet) {
-  SpreadsheetInputs inputs;
-  inputs.material = request.material;
-  if (scale_given) inputs.model_scale = request.scale;  // the sheet "model scaling" opens on it
-  const std::optional<Error> refusal = open_sheets(table, request, givens, block_given, inputs);
-  const int failures = batch.empty() ? 0 : read_sites(input, batch, table, request, inputs);
-  write_spreadsheet(table, inputs, spreadsheet);
-  std::cout << "wrote " << spreadsheet << ": the calculator as a workbook with live formulas (docs/spreadsheet.md)";
-  if (inputs.sites)
-    std::cout << ", opening on your " << inputs.sites->rows.size() << " site(s) on the sheet 'your sites'"
-              << (failures > 0 ? ", " + std::to_string(failures) + " of them refused, each with its reason in its row" : std::string());
-  std::cout << "\n";
-  if (refusal) {
-    std::cerr << "trebuchet-calc: " << refusal->message(option_word) << "\n";
-    return exit_code(Program::calc, refusal->kind());
-  }
-  if (failures > 0) {
-    std::cerr << "trebuchet-calc: " << failures << " row(s) refused; the workbook holds every row, the refused ones with their reasons\n";
-    return exit_code(Program::calc, ErrorKind::batch_rows);
-  }
-  return 0;
 }
 
 // --batch: a design a row, as CSV or JSON. A row is printed only once it is whole, so that a

@@ -29,6 +29,7 @@ packages=(
   units             # GNU units: tests/test_units.cpp checks every conversion factor against it
   clang-14 libclang-rt-14-dev  # libFuzzer for the fuzz targets of tests/fuzz
   clang-format-14              # the C++ layout CI checks (scripts/lint.sh, .clang-format)
+  universal-ctags              # scripts/lint.sh: each function's extent, none over 100 lines
   parallel slurm-wlm munge     # tab:CPNC derived in shards under GNU parallel and Slurm (tests/scale)
 )
 if [ "$scope" != native ]; then

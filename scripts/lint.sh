@@ -2,12 +2,23 @@
 # The formatters' check, in CI before the build: every C++ file as .clang-format lays it out
 # (clang-format 14; fix with `clang-format-14 -i FILE`), and the page's JavaScript and its tests
 # through ESLint with eslint.config.mjs (ESLint from tests/web's npm packages). Fails naming
-# each file that differs or each problem found.
+# each file that differs or each problem found. The house's sizes (docs/architecture.md): no
+# program file (calc/, verify/, cli/) over 250 lines, no function in lib/, calc/, verify/ or cli/
+# over 100 (Universal Ctags' extents of functions and members, lambdas included).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mapfile -t cpp < <(git ls-files 'lib/*.cpp' 'lib/*.hpp' 'calc/*.cpp' 'verify/*.cpp' 'verify/*.hpp' 'cli/*.cpp' 'cli/*.hpp' 'python/src/*.cpp' \
   'web/src/*.cpp' 'tests/*.cpp' 'tests/*.hpp' 'tests/**/*.cpp' 'tests/**/*.hpp')
 clang-format-14 --dry-run --Werror "${cpp[@]}"
 echo "lint.sh: ${#cpp[@]} C++ files as .clang-format lays them out"
+long_files=$(git ls-files 'calc/*.[ch]pp' 'verify/*.[ch]pp' 'cli/*.[ch]pp' | xargs wc -l | awk '$2 != "total" && $1 > 250 {print "  " $2 ": " $1 " lines"}')
+long_functions=$(ctags -R --fields=+ne --kinds-c++=fm -x --_xformat="%{line} %{end} %N %F" lib calc verify cli |
+  awk '$2 - $1 + 1 > 100 {print "  " $4 ":" $1 ": " $3 ", " $2 - $1 + 1 " lines"}')
+if [ -n "$long_files" ] || [ -n "$long_functions" ]; then
+  [ -z "$long_files" ] || printf 'lint.sh: program files over 250 lines; split them along their parts:\n%s\n' "$long_files"
+  [ -z "$long_functions" ] || printf 'lint.sh: functions over 100 lines; split them where their parts have names:\n%s\n' "$long_functions"
+  exit 1
+fi
+echo "lint.sh: no program file over 250 lines, no function over 100"
 tests/web/node_modules/.bin/eslint web/app.js web/viewer.js web/bundle.mjs tests/web/*.mjs
 echo "lint.sh: web/ and tests/web/ pass ESLint"

@@ -1181,6 +1181,26 @@ DesignRequest SpreadsheetInputs::example(Quantity first, double first_value, Qua
   return request;
 }
 
+DesignRequest* SpreadsheetInputs::open_on(const DesignRequest& request, std::vector<Given> givens, bool block_given) {
+  const auto set_block = [&](DesignRequest& sheet) { sheet.theta_i_deg = request.theta_i_deg, sheet.F = request.F; };
+  for (DesignRequest* sheet : {&capacity, &range_and_one, &any_pair, &beam_length}) {
+    if (block_given) set_block(*sheet);
+    sheet->branch = request.branch, sheet->material = request.material;
+  }
+  if (givens.empty()) return nullptr;
+  if (givens.size() != 2)
+    throw Error(ErrorKind::given_count,
+                "{{spreadsheet}} opens on the paper's examples, or on exactly two givens; found " + std::to_string(givens.size()));
+  std::sort(givens.begin(), givens.end(), [](const Given& a, const Given& b) { return a.quantity < b.quantity; });
+  const bool has_R = givens[0].quantity == Quantity::R;
+  if (givens[1].quantity == Quantity::Lb) std::swap(givens[0], givens[1]);
+  const bool has_Lb = givens[0].quantity == Quantity::Lb;
+  DesignRequest& sheet = has_Lb ? beam_length : has_R && givens[1].quantity == Quantity::T ? capacity : has_R ? range_and_one : any_pair;
+  sheet.first = givens[0], sheet.second = givens[1];
+  set_block(sheet);
+  return &sheet;
+}
+
 DesignRequest SpreadsheetInputs::villard() {
   DesignRequest request = example(Quantity::Lb, 9, Quantity::l, 4.5);
   request.F = 1;

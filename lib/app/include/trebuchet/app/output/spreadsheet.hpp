@@ -51,6 +51,14 @@ struct SpreadsheetInputs {
   /// The calculator's refusal of the givens a design sheet opens on (one of the four above), written under that sheet's title.
   std::pair<const DesignRequest*, std::string> refusal{nullptr, ""};
 
+  /// Opens the workbook on two givens and returns the design sheet they go to: R and T the
+  /// capacity sheet, R and another the sheet for R and one parameter, Lb and another the sheet
+  /// for Lb and one (Lb first), any other pair the last. Every sheet takes `request`'s branch and
+  /// material, and its block (theta_i, F) when `block_given`; the sheet opened on takes the block
+  /// as the calculator would. No givens: the paper's examples, and nullptr. Throws
+  /// Error(given_count) for any other count than none or two.
+  DesignRequest* open_on(const DesignRequest& request, std::vector<Given> givens, bool block_given);
+
   static DesignRequest example(Quantity first, double first_value, Quantity second, double second_value);
   static DesignRequest villard();  ///< Lb = 9 m, l = 4.5, theta_i = 30 deg, F = 1
   static Engine alcala_ca();
