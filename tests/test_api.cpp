@@ -280,3 +280,15 @@ TEST_CASE("every key of every request has its row, and a setting has one name at
   CHECK(api::shot({{"design", design}, {"air", true}, {"wind", "5m/s"}, {"cd", 0.5}}) ==
         api::shot({{"design", design}, {"air", {{"wind", "5m/s"}, {"drag_coefficient", 0.5}}}}));
 }
+
+// machine "all" is the programs' --machine all: a refusal every machine gives alike (here a
+// clearance no engine in a 3 m box can keep) is raised once, as the request's own, not answered
+// three times; pareto, a front of one machine, is refused beside it. Each machine's best side by
+// side is tests/python's (contest(machine="all")) and cli.verify.contest_all's, three searches.
+TEST_CASE("api::contest with machine all raises a refusal every machine gives alike", "[api][contest]") {
+  const nlohmann::json request = {{"m", "0.5kg"},       {"D", "5cm"},       {"machine", "all"},      {"max_width", "3m"},
+                                  {"max_height", "3m"}, {"max_M", "300kg"}, {"min_clearance", "1km"}};
+  CHECK_THROWS_WITH(api::contest(request), Catch::Contains("no engine found keeps its counterweight min_clearance = 1000 m"));
+  CHECK_THROWS_WITH(api::contest({{"m", "0.5kg"}, {"D", "5cm"}, {"machine", "all"}, {"pareto", 5}}),
+                    Catch::Contains("\"all\" sets the machines' best side by side"));
+}

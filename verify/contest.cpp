@@ -22,26 +22,26 @@ int run_contest(const Options& o) {
       throw Error(ErrorKind::usage, "--machine all sets the machines' best side by side; drop --pareto and --plot, or name one machine");
     nlohmann::ordered_json all = nlohmann::ordered_json::array();
     int refused = 0, code = exit_success;
-    for (const MachineKind machine : {MachineKind::hinged, MachineKind::fixed, MachineKind::floating_arm}) {
-      request.machine = machine;
-      try {
-        const ContestEngine best = contest_optimum(request);
+    for (const MachineBest& each : contest_each_machine(request)) {
+      request.machine = each.machine;
+      const std::string heading = "== " + machine_name(each.machine) + "\n";
+      if (each.best) {
         if (o.format == Format::json)
-          all.push_back(contest_json(best, request, {}));
+          all.push_back(contest_json(*each.best, request, {}));
         else
-          std::cout << "== " << machine_name(machine) << "\n" << contest_table(best, request, {}, o.units) << "\n";
-      } catch (const Error& e) {
-        ++refused, code = std::max(code, exit_code(Program::verify, e.kind()));
-        const std::string message = e.message(option_word);
-        std::cerr << "trebuchet-verify: " << machine_name(machine) << ": " << message << "\n";
-        if (o.format == Format::json)
-          all.push_back({{machine_key, machine_name(machine)}, {"error", message}});
-        else
-          std::cout << "== " << machine_name(machine) << "\n" << message << "\n\n";
+          std::cout << heading << contest_table(*each.best, request, {}, o.units) << "\n";
+        continue;
       }
+      ++refused, code = std::max(code, exit_code(Program::verify, each.refusal->kind()));
+      const std::string message = each.refusal->message(option_word);
+      std::cerr << "trebuchet-verify: " << machine_name(each.machine) << ": " << message << "\n";
+      if (o.format == Format::json)
+        all.push_back({{machine_key, machine_name(each.machine)}, {"error", message}});
+      else
+        std::cout << heading << message << "\n\n";
     }
     if (o.format == Format::json) std::cout << pretty_json(all);
-    return refused == 3 ? code : exit_success;
+    return refused == static_cast<int>(std::size(searched_machines)) ? code : exit_success;
   }
   const ContestEngine best = contest_optimum(request);
   const std::vector<ContestEngine> front = o.pareto > 0 ? pareto_front(request, o.pareto) : std::vector<ContestEngine>{};

@@ -242,21 +242,16 @@ def contest(m, *, machine="hinged", **options):
     theta_i_deg, box_width, box_height, the material and the air's settings. machine="all" gives
     a dict of each machine's best (or the TrebuchetError that machine refused with) by name; the
     whipper is not designed by search. A refusal every machine gives alike (bad input) is raised."""
-    if machine == "all":
-        if options.get("pareto"):
-            raise TrebuchetError("machine=\"all\" sets the machines' best side by side; leave out pareto, or name one machine",
-                                 "usage", ["pareto", "machine"])
-        best = {}
-        for name in ("hinged", "fixed", "floating-arm"):
-            try:
-                best[name] = contest(m, machine=name, **options)
-            except TrebuchetError as e:
-                best[name] = e
-        refusals = [answer for answer in best.values() if isinstance(answer, TrebuchetError)]
-        if len(refusals) == len(best) and len({str(e) for e in refusals}) == 1:
-            raise refusals[0]
-        return best
-    return _call(_trebuchet.contest, dict(options, m=m, machine=machine))
+    answer = _call(_trebuchet.contest, dict(options, m=m, machine=machine))
+    if machine != "all":
+        return answer
+    best = {}  # each machine's best, or the TrebuchetError of the error object it was refused with
+    for name, record in answer.items():
+        refused = set(record) == {"error", "kind", "names"}
+        best[name] = TrebuchetError(record["error"], record["kind"], record["names"]) if refused else record
+        if not refused:
+            _warn(record)
+    return best
 
 
 def complete(attested, **settings):

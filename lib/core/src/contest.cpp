@@ -451,6 +451,19 @@ ContestEngine contest_optimum(const ContestRequest& request) {
   return best;
 }
 
+std::vector<MachineBest> contest_each_machine(ContestRequest request) {
+  std::vector<MachineBest> each;
+  for (const MachineKind machine : searched_machines) {
+    request.machine = machine;
+    try {
+      each.push_back({machine, contest_optimum(request), std::nullopt});
+    } catch (const Error& e) {
+      each.push_back({machine, std::nullopt, e});
+    }
+  }
+  return each;
+}
+
 std::vector<ContestLimit> conflicting_limits(const ContestRequest& request) {
   Shots shots(request);
   return fewest_conflicting(request, shots, false);

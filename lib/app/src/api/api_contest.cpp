@@ -1,5 +1,6 @@
 // The contest's request (api.hpp): its own room, which the page's build leaves out with the
 // contest and NLopt (lib/CMakeLists.txt).
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -14,6 +15,26 @@ namespace trebuchet::api {
 
 using json = nlohmann::json;
 using ordered_json = nlohmann::ordered_json;
+
+namespace {
+
+// machine "all": each machine's best by its name, or the error object of its refusal
+// (error_json); a refusal that every machine gives alike (bad input) is thrown.
+ordered_json each_machine_json(ContestRequest request) {
+  const std::vector<MachineBest> each = contest_each_machine(request);
+  const bool alike = std::all_of(each.begin(), each.end(), [&](const MachineBest& b) {
+    return b.refusal && each.front().refusal->named_message() == b.refusal->named_message();
+  });
+  if (alike) throw *each.front().refusal;
+  ordered_json answer = ordered_json::object();
+  for (const MachineBest& b : each) {
+    request.machine = b.machine;
+    answer[machine_name(b.machine)] = b.best ? contest_json(*b.best, request, {}) : error_json(*b.refusal);
+  }
+  return answer;
+}
+
+}  // namespace
 
 ordered_json contest(const json& request) {
   std::vector<std::string> known = keys_of(req_contest, op_optimize);
@@ -33,7 +54,8 @@ ordered_json contest(const json& request) {
                                                {&DesignValues::pin_friction, "pin_friction", UnitDimension::dimensionless}})
     v.*member = positive_value(request, key, dimension, true);
   v.theta_i_deg = read_value(request, request.contains("theta") ? "theta" : "theta_i_deg", UnitDimension::angle, "");
-  if (request.contains(machine_key)) v.machine = parse_machine(text_of(request[machine_key], machine_key), "{{machine}}");
+  const bool all_machines = request.contains(machine_key) && text_of(request[machine_key], machine_key) == "all";
+  if (request.contains(machine_key) && !all_machines) v.machine = parse_machine(text_of(request[machine_key], machine_key), "{{machine}}");
   bool efficiency = false;
   if (request.contains("objective")) {
     efficiency = parse_efficiency_objective(text_of(request["objective"], "objective"), "{{objective}}");
@@ -48,6 +70,11 @@ ordered_json contest(const json& request) {
   const double pareto = read_value(request, "pareto", UnitDimension::dimensionless, "").value_or(0);
   if (pareto != 0 && (!(pareto >= 2 && pareto <= 200) || pareto != std::floor(pareto)))
     throw Error(ErrorKind::bad_number, "{{pareto}} = " + format_significant(pareto, 6) + " must be a whole number from 2 to 200");
+  if (all_machines) {
+    if (pareto != 0)
+      throw Error(ErrorKind::usage, "{{machine}} \"all\" sets the machines' best side by side; leave out {{pareto}}, or name one machine");
+    return each_machine_json(r);
+  }
   const ContestEngine best = contest_optimum(r);
   return contest_json(best, r, pareto > 0 ? pareto_front(r, static_cast<int>(pareto)) : std::vector<ContestEngine>{});
 }

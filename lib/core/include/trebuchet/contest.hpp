@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "trebuchet/engine.hpp"
+#include "trebuchet/error.hpp"
 #include "trebuchet/verification.hpp"
 
 namespace trebuchet {
@@ -106,6 +107,20 @@ std::array<double, contest_limit_count> contest_measures(const Engine& engine, c
 /// Error(bad_number) for a request no engine could meet (no projectile, no beam), Error(out_of_range)
 /// when no engine meets the limits, naming the fewest limits that cannot be met together.
 ContestEngine contest_optimum(const ContestRequest& request);
+
+/// The machines a contest designs by search; the whipper is not (docs/machines.md).
+inline constexpr MachineKind searched_machines[] = {MachineKind::hinged, MachineKind::fixed, MachineKind::floating_arm};
+
+/// One machine's best engine within a contest's limits, or why that machine has none.
+struct MachineBest {
+  MachineKind machine;
+  std::optional<ContestEngine> best;  ///< none when the machine is refused
+  std::optional<Error> refusal;  ///< contest_optimum's refusal of this machine
+};
+
+/// Each of searched_machines' best (contest_optimum) for `request` with its machine replaced,
+/// side by side: one machine's refusal does not stop the others.
+std::vector<MachineBest> contest_each_machine(ContestRequest request);
 
 /// The limits an engine is held to outside a contest (compare under a contest's limits): the
 /// five, each optional, and the least clearance of the counterweight above the ground [m].

@@ -41,7 +41,9 @@ nlohmann::ordered_json compare(const nlohmann::json& request);
 /// The best engine of a machine within a contest's limits (trebuchet-verify contest --format
 /// json): "m", the beam by "D" or "mb_per_m", "machine", "theta_i_deg", the material, the box,
 /// the limits ("max_width", ..., "min_clearance"), "objective" (range or eps), "pareto" and the
-/// air and the target's settings.
+/// air and the target's settings. "machine": "all" answers each machine's best by its name (or
+/// the error object that machine was refused with) side by side, as --machine all; a refusal
+/// every machine gives alike is the answer's own.
 nlohmann::ordered_json contest(const nlohmann::json& request);
 
 /// The ab-initio optimum (trebuchet-verify optimize --format json, an array of the optima found):
