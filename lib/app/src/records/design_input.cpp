@@ -237,40 +237,46 @@ void take_beside_engine(const nlohmann::json& record, nlohmann::json& design) {
   }
 }
 
+// A Monte Carlo run's attested values as a front end gives them, each name in double braces
+// for the front end's own word (error.hpp: a program's flag, a request's key): "{{Lb}} 9.5m {{M}}
+// '2t..3t' {{air}} {{cd}} 0.3". A value that a shell would split is quoted.
+std::string attested_words(const nlohmann::json& attested) {
+  std::vector<std::string> words;
+  const auto word = [&](const std::string& name, const nlohmann::json& value) {
+    if (value.is_boolean()) {
+      if (value.get<bool>()) words.push_back("{{" + name + "}}");
+    } else if (value.is_string() || value.is_number()) {
+      const std::string text = value.is_string() ? value.get<std::string>()
+          : value.is_number_integer()            ? value.dump()  // a seed to 2^64, whole
+                                                 : format_number(value.get<double>());
+      const bool plain = text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789.+-/%\xC2\xB1") == std::string::npos;
+      words.push_back("{{" + name + "}}" + (plain ? " " + text : " '" + text + "'"));
+    }
+  };
+  for (const auto& [key, value] : attested.items()) {
+    if (const InputField* field = find_field(key)) {
+      word(field->key, value);
+    } else if (key == "air" && value.is_object()) {
+      words.emplace_back("{{air}}");
+      for (const auto& [detail, detail_value] : value.items())
+        if (const SettingRow* row = find_setting("air." + detail, cmd_complete)) word(row->key, detail_value);
+    } else if (const SettingRow* row = find_setting(key, cmd_complete)) {
+      if (!(key == "air" && value == "vacuum")) word(row->key, value);
+    }
+  }
+  return join(words, " ");
+}
+
 }  // namespace
 
 nlohmann::json design_object(const nlohmann::json& given) {
   if (!is_record(given)) return given;
   if (given.contains("uncertain")) {  // a Monte Carlo run's report: the run as a request gives it
     if (given.contains("design") && given["design"].is_object()) return given["design"];
-    std::vector<std::string> flags;
-    const auto flag = [&](const char* name, const nlohmann::json& value) {
-      if (value.is_boolean()) {
-        if (value.get<bool>()) flags.emplace_back(name);
-      } else if (value.is_string() || value.is_number()) {
-        const std::string text = value.is_string() ? value.get<std::string>()
-            : value.is_number_integer()            ? value.dump()  // a seed to 2^64, whole
-                                                   : format_number(value.get<double>());
-        const bool plain = text.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789.+-/%\xC2\xB1") == std::string::npos;
-        flags.push_back(std::string(name) + (plain ? " " + text : " '" + text + "'"));  // quoted for a shell where it must be
-      }
-    };
-    for (const auto& [key, value] : given["attested"].items()) {
-      const InputField* field = find_field(key);
-      if (field) {
-        flag(field->flag, value);
-      } else if (key == "air" && value.is_object()) {
-        flags.emplace_back("--air");
-        for (const auto& [detail, detail_value] : value.items())
-          if (const SettingRow* row = find_setting("air." + detail, cmd_complete)) flag(row->flag, detail_value);
-      } else if (const SettingRow* row = find_setting(key, cmd_complete)) {
-        if (*row->flag && !(key == "air" && value == "vacuum")) flag(row->flag, value);
-      }
-    }
     throw Error(ErrorKind::usage,
-                "this is the report of complete's Monte Carlo run, which runs again from its attested values (a request's or "
-                "Python's attested=report), or as flags: run it again with trebuchet-verify complete " +
-                    join(flags, " "));
+                "this is the report of complete's Monte Carlo run, which runs again from its attested values: give it to complete as "
+                "its attested values (a request's or Python's attested=report), or run complete with " +
+                    attested_words(given["attested"]));
   }
   // The engine: its own object, or (a completion's record) the record's keys, less the shot's
   // range and energy, which are no claim.
