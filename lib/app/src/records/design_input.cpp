@@ -275,7 +275,7 @@ nlohmann::json design_object(const nlohmann::json& given) {
     if (given.contains("design") && given["design"].is_object()) return given["design"];
     throw Error(ErrorKind::usage,
                 "this is the report of complete's Monte Carlo run, which runs again from its attested values: give it to complete as "
-                "its attested values (a request's or Python's attested=report), or run complete with " +
+                "its attested values (a request's or Python's attested=report), or run it again with complete " +
                     attested_words(given["attested"]));
   }
   // The engine: its own object, or (a completion's record) the record's keys, less the shot's
