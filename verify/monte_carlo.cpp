@@ -29,12 +29,6 @@ void refuse_monte_carlo_settings(const Options& o) {
                 "(3.5m±0.2m), or drop them");
 }
 
-bool holds_spreads(const nlohmann::json& design) {
-  std::vector<SpreadInput> spreads;
-  take_spreads(design_object(design), op_shot, "design", spreads);
-  return !spreads.empty();
-}
-
 namespace {
 
 // The run of a design file's (its values, spreads and settings, or a run's report read back)

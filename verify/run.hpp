@@ -13,9 +13,6 @@ int run_shot(const Options& options, bool fit);  // shot.cpp: shot and fit
 /// the flags' over it.
 int run_monte_carlo(const Options& options, bool complete, const nlohmann::json* design = nullptr, const std::string& where = "");
 
-/// Whether a design object (a run's report too, design_object) gives a value as a range or a spread.
-bool holds_spreads(const nlohmann::json& design);
-
 /// Refuses --samples, --seed, --claim and --draws for a run with no range or spread (Error(usage)).
 void refuse_monte_carlo_settings(const Options& options);
 int run_complete(const Options& options);  // complete.cpp

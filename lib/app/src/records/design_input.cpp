@@ -111,32 +111,58 @@ bool replaces_spread(const SettingsValues& over, const SpreadInput& spread) {
       (over.vacuum && spread_setting_path(spread.setting).rfind("air.", 0) == 0);
 }
 
+namespace {
+
+// Each place in `object` where a Monte Carlo run's range or spread may stand, visited as
+// visit(slot, key, dimension, value, setting): the inputs of `operation` but the capacity and
+// the material under their keys, and the settings a run may spread, under their key or in "air"
+// (spread_setting_path). `object` may be const (to look) or not (to replace).
+template <class Json, class Visit>
+void each_spread_slot(Json& object, unsigned operation, const Visit& visit) {
+  for (auto& [key, value] : object.items()) {
+    const InputField* field = find_field(key);
+    if (field && (field->operations & operation) && field->group != FieldGroup::capacity && field->group != FieldGroup::material)
+      visit(value, key, field->dimension, field->member, nullptr);
+  }
+  for (const SettingRow* row : spread_setting_rows()) {
+    const std::string path = spread_setting_path(number_slot(row->id));
+    if (object.contains(row->key)) visit(object[row->key], row->key, row->dimension, nullptr, number_slot(row->id));
+    if (path.rfind("air.", 0) == 0 && object.contains("air") && object["air"].is_object() && object["air"].contains(path.substr(4)))
+      visit(object["air"][path.substr(4)], row->key, row->dimension, nullptr, number_slot(row->id));
+  }
+}
+
+using Value = std::optional<double> DesignValues::*;
+using SettingValue = std::optional<double> SettingsValues::*;
+
+// The spread a slot holds as text, named `key` in messages; none for one value.
+std::optional<Spread> spread_in(const nlohmann::json& slot, const std::string& key, UnitDimension dimension, const std::string& where) {
+  return slot.is_string() ? parse_spread(slot.get<std::string>(), dimension, engine_key_name(where, key)) : std::nullopt;
+}
+
+}  // namespace
+
 nlohmann::json take_spreads(const nlohmann::json& object, unsigned operation, const std::string& where, std::vector<SpreadInput>& spreads,
                             const std::function<double(const Spread&)>& at) {
   if (!object.is_object()) return object;
   nlohmann::json plain = object;
-  // The spread in `slot`, named `key` in messages, replaced by at(spread) and kept.
-  using Value = std::optional<double> DesignValues::*;
-  using SettingValue = std::optional<double> SettingsValues::*;
-  const auto take = [&](nlohmann::json& slot, const std::string& key, UnitDimension dimension, Value value, SettingValue setting) {
-    if (!slot.is_string()) return;
-    const auto given = parse_spread(slot.get<std::string>(), dimension, engine_key_name(where, key));
+  each_spread_slot(plain, operation, [&](nlohmann::json& slot, const std::string& key, UnitDimension dimension, Value value, SettingValue setting) {
+    const auto given = spread_in(slot, key, dimension, where);
     if (!given) return;
     slot = at ? at(*given) : given->a;
     add_spread(spreads, SpreadInput{UncertainInput{key, dimension, *given}, value, setting});
-  };
-  for (auto& [key, value] : plain.items()) {
-    const InputField* field = find_field(key);
-    if (field && (field->operations & operation) && field->group != FieldGroup::capacity && field->group != FieldGroup::material)
-      take(value, key, field->dimension, field->member, nullptr);
-  }
-  for (const SettingRow* row : spread_setting_rows()) {
-    const std::string path = spread_setting_path(number_slot(row->id));
-    if (plain.contains(row->key)) take(plain[row->key], row->key, row->dimension, nullptr, number_slot(row->id));
-    if (path.rfind("air.", 0) == 0 && plain.contains("air") && plain["air"].is_object() && plain["air"].contains(path.substr(4)))
-      take(plain["air"][path.substr(4)], row->key, row->dimension, nullptr, number_slot(row->id));
-  }
+  });
   return plain;
+}
+
+std::optional<UncertainInput> first_spread(const nlohmann::json& object, unsigned operation, const std::string& where) {
+  std::optional<UncertainInput> first;
+  if (!object.is_object()) return first;
+  each_spread_slot(object, operation, [&](const nlohmann::json& slot, const std::string& key, UnitDimension dimension, Value, SettingValue) {
+    if (first) return;
+    if (const auto given = spread_in(slot, key, dimension, where)) first = UncertainInput{key, dimension, *given};
+  });
+  return first;
 }
 
 void refuse_near_miss(const std::string& key, const std::vector<std::string>& known, const std::string& where) {
@@ -312,6 +338,8 @@ nlohmann::json design_object(const nlohmann::json& given) {
       if (!design.contains(key)) design[key] = value;
   return design;
 }
+
+bool holds_spreads(const nlohmann::json& design) { return first_spread(design_object(design), op_shot, "design").has_value(); }
 
 SettingsValues read_settings(const nlohmann::json& object, unsigned doors, const std::string& where) {
   SettingsValues v;
@@ -498,14 +526,11 @@ namespace {
 
 // A range or a spread is a Monte Carlo run's (take_spreads takes them out first): here refused.
 void refuse_spreads(const nlohmann::json& object, const std::string& where) {
-  std::vector<SpreadInput> spreads;
-  take_spreads(object, op_shot, where, spreads);
-  if (!spreads.empty()) {
-    const UncertainInput& first = spreads.front().input;
-    const std::string text = object.contains(first.name) && object[first.name].is_string() ? object[first.name].get<std::string>()
-                                                                                           : spread_text(first.spread, first.dimension);
+  if (const std::optional<UncertainInput> first = first_spread(object, op_shot, where)) {
+    const std::string text = object.contains(first->name) && object[first->name].is_string() ? object[first->name].get<std::string>()
+                                                                                             : spread_text(first->spread, first->dimension);
     throw Error(ErrorKind::usage,
-                engine_key_name(where, first.name) + ": '" + text +
+                engine_key_name(where, first->name) + ": '" + text +
                     "' is a range or a spread; give one value (ranges and spreads are for the Monte Carlo run of one design: "
                     "shot with one design object, or monte_carlo)");
   }

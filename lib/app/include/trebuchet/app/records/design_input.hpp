@@ -75,6 +75,14 @@ bool replaces_spread(const SettingsValues& over, const SpreadInput& spread);
 nlohmann::json take_spreads(const nlohmann::json& object, unsigned operation, const std::string& where, std::vector<SpreadInput>& spreads,
                             const std::function<double(const Spread&)>& at = nullptr);
 
+/// The first value of `object` given as a range or a spread, where take_spreads would find one,
+/// read without copying `object`; none when each is one value. Throws as take_spreads does.
+std::optional<UncertainInput> first_spread(const nlohmann::json& object, unsigned operation, const std::string& where);
+
+/// Whether a design (design_object: a record reads as its design) holds a range or a spread of
+/// a shot's value, which makes it a Monte Carlo run's.
+bool holds_spreads(const nlohmann::json& design);
+
 /// Whether a JSON object is a record the programs wrote of a shot: one with an "engine" object
 /// (a shot's, fit's, optimum's, contest's, calibration's or a sweep's point), one with its
 /// "assumptions" beside a shot's keys (a completion's), or a Monte Carlo run's report (its
