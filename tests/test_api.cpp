@@ -292,3 +292,23 @@ TEST_CASE("api::contest with machine all raises a refusal every machine gives al
   CHECK_THROWS_WITH(api::contest({{"m", "0.5kg"}, {"D", "5cm"}, {"machine", "all"}, {"pareto", 5}}),
                     Catch::Contains("\"all\" sets the machines' best side by side"));
 }
+
+// "over" is the programs' flags over a file's values (overlay_flags), for the front ends that
+// have no flags (Python's keyword arguments): the same shot as the value written in the design,
+// a release in one form replacing another, and a key that is no input refused by name. A wrong
+// overlay would give another range, bit for bit compared.
+TEST_CASE("api: a request's over lays the engine's inputs over its design, as the flags do", "[api]") {
+  const json design = {{"L1", "6.13m"}, {"L2", "1.08m"}, {"L3", "1.2m"}, {"L4", "5.8m"}, {"M", "14.3t"}, {"m", "100kg"}, {"mb", "660kg"}};
+  json shorter = design;
+  shorter["L4"] = "5m";
+  CHECK(api::shot({{"design", design}, {"over", {{"L4", "5m"}}}})["R"] == api::shot({{"design", shorter}})["R"]);
+  json timed = design;
+  timed["release_time"] = "0.9s";
+  json pinned = design;
+  pinned["pin_angle_deg"] = 40;
+  CHECK(api::shot({{"design", timed}, {"over", {{"pin_angle_deg", 40}}}})["R"] == api::shot({{"design", pinned}})["R"]);
+  CHECK(api::sweep({{"design", design}, {"over", {{"L4", "5m"}}}, {"vary", "M=14t..15t"}, {"points", 2}}) ==
+        api::sweep({{"design", shorter}, {"vary", "M=14t..15t"}, {"points", 2}}));
+  CHECK_THAT(refusal(api::shot, {{"design", design}, {"over", {{"tol", 1}}}}).what(), Catch::Contains("over.tol is no input of the engine"));
+  CHECK_THAT(refusal(api::shot, {{"design", design}, {"over", "L4=5m"}}).what(), Catch::Contains("over: \"L4=5m\" must be an object"));
+}

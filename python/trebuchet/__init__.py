@@ -122,48 +122,16 @@ def _input_names(operation):
 
 _SHOT_INPUTS = _input_names("shot")
 _COMPLETE_INPUTS = _input_names("complete")
-_RELEASE_KEYS = ("release_time", "release_angle_deg", "release_angle", "pin_angle_deg", "pin_angle")
 
 
-def _over_engine(design, keys):
-    """The design with `keys` over its engine's own: a record's "engine", or the design itself. A
-    completion's record, whose engine's keys sit beside its shot's R and T, is given its
-    "engine" first, so that a capacity given for fit is not read as that shot's."""
-    if not keys:
-        return design
-    if not isinstance(design, dict):
-        raise TypeError("design: give the engine as a dict of its keys")
-    if "engine" not in design and isinstance(design.get("assumptions"), dict) and "R_vacuum" in design:
-        engine = {k: v for k, v in design.items() if k not in ("R", "T", "assumptions", "passed")}
-        design = {"engine": engine, "assumptions": design["assumptions"], "passed": design.get("passed", {}),
-                  **({"version": design["version"]} if "version" in design else {})}  # still the programs' record: its outputs read back
-
-    if isinstance(design.get("engine"), dict):
-        record = dict(design, engine=_over_values(design["engine"], keys))
-        if "R" in keys or "T" in keys:
-            record.pop("predicted", None)  # the capacity it was checked against; fit's replaces it
-        return record
-    return _over_values(design, keys)
-
-
-def _over_values(values, keys):
-    """`values` with `keys` over them: a value given replaces the one given under any of its
-    names, a release the one given in any form, as the programs' flags do."""
-    replaced = {name for names in _SHOT_INPUTS + _COMPLETE_INPUTS if set(names) & set(keys) for name in names}
-    if set(keys) & set(_RELEASE_KEYS):
-        replaced |= set(_RELEASE_KEYS)
-    return dict({k: v for k, v in values.items() if k not in replaced}, **keys)
-
-
-def _taken(settings, inputs):
-    """The keyword arguments that give one of `inputs`, taken out of `settings`."""
-    return {name: settings.pop(name) for names in inputs for name in names if name in settings}
-
-
-def _with_engine_keys(design, settings):
-    """The design with each of its inputs given as a keyword argument (L4=, rope_mass=, the
-    release, the machine) over its own."""
-    return _over_engine(design, _taken(settings, _SHOT_INPUTS))
+def _over(settings, inputs, **more):
+    """The request's "over": each keyword argument that gives one of `inputs` (and `more`), taken
+    out of `settings`. The library lays it over the design's own as the programs' flags go over
+    a file's (a value replaces the one given under any of its names, a release the one given in
+    any form, L3 the F); empty when none is given."""
+    over = {name: settings.pop(name) for names in inputs for name in names if name in settings}
+    over.update(more)
+    return {"over": over} if over else {}
 
 
 def shot(design, *, series=False, **settings):
@@ -185,8 +153,7 @@ def shot(design, *, series=False, **settings):
     (air_density, cd, projectile, wind, drag_in_sling), and the material (g, youngs_modulus,
     wood_density, modulus_of_rupture) over the design's own.
     With series=True the answer's "series" holds the motion, its frames as arrays."""
-    design = _with_engine_keys(design, settings)
-    request = dict(settings, design=design)
+    request = dict(settings, design=design, **_over(settings, _SHOT_INPUTS))
     if series:
         request["series"] = True
     answer = _call(_trebuchet.shot, request)
@@ -200,7 +167,7 @@ def shot(design, *, series=False, **settings):
 def fit(design, R, T, **settings):
     """The design's shape (l, l4, mu_b, theta_i, F) fitted in mu and size to the capacity R, T.
     Settings: those of shot."""
-    return _call(_trebuchet.shot, dict(settings, design=_over_engine(_with_engine_keys(design, settings), {"R": R, "T": T}), fit=True))
+    return _call(_trebuchet.shot, dict(settings, design=design, fit=True, **_over(settings, _SHOT_INPUTS, R=R, T=T)))
 
 
 def optimize(R, T=None, *, m=None, **options):
@@ -220,7 +187,7 @@ def sweep(design, vary, *, points=21, **settings):
     ("L4=2m..5m": a value of the engine, its parts or its release, and its range), the rest held.
     The answer's "points" are shot records, the same as shot() of each engine, or {key, "error"}.
     The design and the settings: those of shot (a record too, with its own settings)."""
-    return _call(_trebuchet.sweep, dict(settings, design=_with_engine_keys(design, settings), vary=vary, points=points))
+    return _call(_trebuchet.sweep, dict(settings, design=design, vary=vary, points=points, **_over(settings, _SHOT_INPUTS)))
 
 
 def compare(design, **settings):
@@ -231,7 +198,7 @@ def compare(design, **settings):
     the machine, which compare chooses."""
     if "machine" in settings:  # as the programs refuse compare --machine
         raise TrebuchetError("compare builds the engine as each machine in turn; leave out machine", "usage", ["machine"])
-    return _call(_trebuchet.compare, dict(settings, design=_with_engine_keys(design, settings)))
+    return _call(_trebuchet.compare, dict(settings, design=design, **_over(settings, _SHOT_INPUTS)))
 
 
 def contest(m, *, machine="hinged", **options):
@@ -257,12 +224,7 @@ def contest(m, *, machine="hinged", **options):
 def complete(attested, **settings):
     """The best engine that keeps the attested values (Lb, L1, L2, H, L4, M, m, mb, D, l,
     theta_i_deg, F, ...); each may also be given as a keyword argument, over attested's own."""
-    given = _taken(settings, _COMPLETE_INPUTS)
-    if given:
-        if not isinstance(attested, dict):
-            raise TypeError("attested: give the attested values as a dict of their keys")
-        attested = _over_values(attested, given)
-    return _call(_trebuchet.complete, dict(settings, attested=attested))
+    return _call(_trebuchet.complete, dict(settings, attested=attested, **_over(settings, _COMPLETE_INPUTS)))
 
 
 def monte_carlo(design=None, *, attested=None, samples=None, seed=None, threads=None, progress=False, **settings):
@@ -291,18 +253,14 @@ def monte_carlo(design=None, *, attested=None, samples=None, seed=None, threads=
         raise TypeError(f"threads: {threads!r} is not a number of threads; give a whole number from 1 up, or None for the cores")
     if threads is not None and threads > _MAX_THREADS:  # the programs' --threads has the same bound
         raise TrebuchetError(f"threads: {threads} must be 1 or more (at most {_MAX_THREADS})", "usage", ["threads"])
-    inputs = _taken(settings, _SHOT_INPUTS if design is not None else _COMPLETE_INPUTS)  # a value, range or spread over the design's own
-    request = dict(settings)
+    over = _over(settings, _SHOT_INPUTS if design is not None else _COMPLETE_INPUTS)  # a value, range or spread over the design's own
+    request = dict(settings, **over)
     request.update({key: value for key, value in (("samples", samples), ("seed", seed)) if value is not None})
     key, given = ("design", design) if design is not None else ("attested", attested)
     # A run's report given back is sent as its run, the part a request gives (its draws are
     # arrays); the library reads it, and names the key to give it under if it is the other's.
     if isinstance(given, dict) and "uncertain" in given:
         given = {part: given[part] for part in ("uncertain", "design", "attested") if part in given}
-        if inputs and isinstance(given.get(key), dict):
-            given[key] = _over_values(given[key], inputs)
-    elif inputs:
-        given = _over_engine(given, inputs) if design is not None else _over_values(given, inputs)
     request[key] = given
     # The request checked once, before any thread starts; it answers with the run's samples.
     samples = _call(_trebuchet.monte_carlo, dict(request, first=0, count=0))["samples"]

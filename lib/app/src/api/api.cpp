@@ -211,7 +211,8 @@ ordered_json shot(const json& request) {
   check.material = material_of_request(request, op_shot);
   check.tolerance = settings.tol.value_or(check.tolerance);
   check.fit = flag_of(request, "fit");
-  const DesignReport report = check_design(read_engine(request["design"], "design"), check);
+  const DesignValues over = over_of(request, op_shot);
+  const DesignReport report = check_design(read_engine(request["design"], "design", &over), check);
   ordered_json answer = report.json;
   // The series is of the engine the answer reports (fitted first with "fit"), from its shot.
   if (flag_of(request, "series"))
@@ -231,7 +232,9 @@ ordered_json sweep(const json& request) {
   const WhatIf what_if = parse_what_if(text_of(request["vary"], "vary"), static_cast<int>(points), "vary");
   json passed = json::object();
   SettingsValues own;
-  const DesignValues values = read_design_values(request["design"], "design", &passed, &own);
+  std::vector<std::string> notes;  // the programs print them; a request's "over" is its caller's own
+  const DesignValues values = overlay_flags(read_design_values(request["design"], "design", &passed, &own), over_of(request, op_shot), "design",
+                                            notes);
   DesignCheck check;
   check.settings = shot_settings(overlay(own, settings_values_of(request, req_sweep)));  // the request's over the design's own
   check.material = material_of_request(request, op_shot);
@@ -247,7 +250,9 @@ ordered_json compare(const json& request) {
     throw Error(ErrorKind::usage, "{{design}} is missing; give the engine, e.g. {\"design\": {\"L1\": \"6.13m\", ...}}");
   json passed = json::object();
   SettingsValues own;
-  const DesignValues values = read_design_values(request["design"], "design", &passed, &own);
+  std::vector<std::string> notes;  // the programs print them; a request's "over" is its caller's own
+  const DesignValues values = overlay_flags(read_design_values(request["design"], "design", &passed, &own), over_of(request, op_shot), "design",
+                                            notes);
   DesignCheck check;
   check.material = material_of_request(request, op_shot);
   // A contest's limits, each column measured against them (contest.hpp).
@@ -270,8 +275,10 @@ ordered_json complete(const json& request) {
                 "{{attested}} is missing; give what the source attests, e.g. {\"attested\": {\"Lb\": \"9.5m\", \"M\": \"3t\", \"m\": \"50kg\"}}");
   json passed = json::object();
   SettingsValues own;
-  const DesignValues attested = with_material(attested_of(request["attested"], "attested", middle, passed, own),
-                                              material_of_request(request, op_complete));
+  std::vector<std::string> notes;  // the programs print them; a request's "over" is its caller's own
+  const DesignValues attested = with_material(
+      overlay_flags(attested_of(request["attested"], "attested", middle, passed, own), over_of(request, op_complete), "attested", notes),
+      material_of_request(request, op_complete));
   ordered_json answer = completion_answer(completion_request(attested, shot_settings(overlay(own, settings_values_of(request, req_complete)))));
   if (!passed.empty()) answer["passed"] = passed;  // the attested keys no reader knows, as given
   return answer;
@@ -298,9 +305,10 @@ MonteCarloRequest monte_carlo_run_of(const json& request, json& passed) {
   }
   run.values = with_material(run.values, material_of_request(request, operation));
   run.completes = completes;
-  std::vector<SpreadInput> spread_settings;
-  const SettingsValues given = settings_values_of(take_spreads(request, op_shot, "", spread_settings), req_monte_carlo);
-  lay_over_run(run, DesignValues{}, given, spread_settings, where);
+  std::vector<SpreadInput> spreads_over;  // the request's settings' and its "over"'s
+  const SettingsValues given = settings_values_of(take_spreads(request, op_shot, "", spreads_over), req_monte_carlo);
+  const DesignValues over = over_of(request, operation, &spreads_over);
+  lay_over_run(run, over, given, spreads_over, where);
   if (run.spreads.empty())  // as the programs refuse a run of identical samples
     throw Error(ErrorKind::usage,
                 "monte_carlo samples the values of {{" + where +

@@ -4,6 +4,7 @@
 
 #include "trebuchet/format.hpp"
 #include "trebuchet/app/input/fields.hpp"
+#include "trebuchet/app/input/names.hpp"
 #include "trebuchet/app/input/text_input.hpp"
 
 namespace trebuchet::api {
@@ -36,6 +37,22 @@ std::vector<std::string> keys_of(unsigned door, unsigned material_operation) {
     if (field.group == FieldGroup::material && (field.operations & material_operation))
       for (const char* name : names_of(field)) keys.emplace_back(name);
   return keys;
+}
+
+DesignValues over_of(const json& request, unsigned operation, std::vector<SpreadInput>* spreads) {
+  if (!request.contains("over")) return {};
+  const json& over = request["over"];
+  if (!over.is_object())
+    throw Error(ErrorKind::usage, "{{over}}: " + brief_json(over) + " must be an object of the engine's inputs, e.g. {\"L4\": \"4.5m\"}");
+  for (const auto& [key, value] : over.items()) {
+    const InputField* field = find_field(key);
+    if ((!field || !(field->operations & operation)) && key != machine_key)
+      throw Error(ErrorKind::usage,
+                  "over." + key + " is no input of the engine that this request takes (fields()); give a setting beside " +
+                      "the design, an input of the engine in over");
+  }
+  const json plain = spreads ? take_spreads(over, operation, "over", *spreads) : over;
+  return read_design_values(plain, "over");
 }
 
 std::string text_of(const json& value, const std::string& key) {
