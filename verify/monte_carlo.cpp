@@ -72,21 +72,9 @@ int run_monte_carlo(const Options& o, bool complete, const nlohmann::json* desig
       samples, seed, o.threads, [&](std::mt19937_64& random) { return sample_outcome(request, random, option_word); },
       progress_bar(complete ? "completions" : "shots"));
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::vector<UncertainInput> inputs = uncertain_inputs(request);
-  const std::vector<FixedInput> fixed = fixed_inputs(request);
-  const MonteCarloReport report{summary,
-                                inputs,
-                                fixed,
-                                describe_monte_carlo_release(request),
-                                seed,
-                                complete ? "the completed engine" : "the shot",
-                                describe_monte_carlo_air(request),
-                                settings.air.has_value(),
-                                seconds,
-                                thread_count(o.threads, static_cast<std::size_t>(summary.samples)),
-                                request.settings.claim,
-                                monte_carlo_request_json(request, samples, seed),
-                                request.settings.claim ? std::optional(claim_context(request, *request.settings.claim, option_word)) : std::nullopt};
+  MonteCarloReport report = monte_carlo_report(request, summary, samples, seed, option_word);
+  report.seconds = seconds;
+  report.threads = thread_count(o.threads, static_cast<std::size_t>(summary.samples));
   if (o.format == Format::json) {
     std::cout << pretty_json(monte_carlo_json(report));
   } else if (o.format == Format::csv) {
@@ -100,7 +88,7 @@ int run_monte_carlo(const Options& o, bool complete, const nlohmann::json* desig
   refuse_when_no_sample_worked(summary);  // after the report of the failures; no histogram
   if (!o.plot.empty()) {
     std::vector<std::string> described;
-    for (const UncertainInput& u : inputs) described.push_back(describe_uncertain(u));
+    for (const UncertainInput& u : report.inputs) described.push_back(describe_uncertain(u));
     // The title says what was sampled and how each shot flew and was released; a backslash and n break its line in gnuplot.
     const std::string scene = (settings.air ? describe_air(*settings.air, 0) : std::string("in vacuum")) + ", " +
         describe_monte_carlo_release(request);

@@ -376,14 +376,12 @@ ordered_json monte_carlo(const json& request) {
   json passed = json::object();
   const MonteCarloRequest run = monte_carlo_run_of(request, passed);
   const bool completes = run.completes;
-  const ShotSettings settings = shot_settings(run.settings);
   // As the program does: the design at each spread's first number must be an engine.
   const std::int64_t shots = shots_per_sample(run);
   const int samples = run.settings.samples.value_or(completes ? default_completion_samples : default_shot_samples);
   check_monte_carlo_work(samples, shots, completes ? "completions" : "shots");
   const std::uint64_t seed = run.settings.seed.value_or(1);
   const auto sample = [&](std::mt19937_64& random) { return sample_outcome(run, random, key_word); };
-  const std::optional<double> claim = run.settings.claim;
   if (request.contains("first") || request.contains("count")) return monte_carlo_part(request, samples, seed, sample);
   std::vector<SampleOutcome> outcomes;
   if (request.contains("outcomes"))  // the parts put together
@@ -392,21 +390,7 @@ ordered_json monte_carlo(const json& request) {
     for (std::size_t i = 0; i < static_cast<std::size_t>(samples); ++i) outcomes.push_back(run_sample(seed, i, sample));
   const MonteCarloSummary summary = summarize_samples(outcomes);
   refuse_when_no_sample_worked(summary);
-  const std::vector<UncertainInput> inputs = uncertain_inputs(run);
-  const std::vector<FixedInput> fixed = fixed_inputs(run);
-  const MonteCarloReport report{summary,
-                                inputs,
-                                fixed,
-                                describe_monte_carlo_release(run),
-                                seed,
-                                completes ? "the completed engine" : "the shot",
-                                describe_monte_carlo_air(run),
-                                settings.air.has_value(),
-                                0,
-                                1,
-                                claim,
-                                monte_carlo_request_json(run, samples, seed),
-                                claim ? std::optional(claim_context(run, *claim, key_word)) : std::nullopt};
+  const MonteCarloReport report = monte_carlo_report(run, summary, samples, seed, key_word);
   ordered_json answer = monte_carlo_json(report);
   answer.erase("wall_time_s");  // a time is the caller's to measure; the report is the same on any machine
   // Every sample's drawn inputs and outcomes as the programs' --draws writes them, to 17 digits: the run's own numbers.

@@ -367,4 +367,24 @@ ClaimContext claim_context(const MonteCarloRequest& request, double claim, const
   }
 }
 
+MonteCarloReport monte_carlo_report(const MonteCarloRequest& run, const MonteCarloSummary& summary, int samples, std::uint64_t seed,
+                                    const std::function<std::string(std::string_view)>& word) {
+  const std::optional<double> claim = run.settings.claim;
+  // The air as the run's first sample flies it: each spread at its first number.
+  const bool in_air = shot_settings(with_draws(run, [](const Spread& s) { return s.a; }).settings).air.has_value();
+  return MonteCarloReport{summary,
+                          uncertain_inputs(run),
+                          fixed_inputs(run),
+                          describe_monte_carlo_release(run),
+                          seed,
+                          run.completes ? "the completed engine" : "the shot",
+                          describe_monte_carlo_air(run),
+                          in_air,
+                          0,
+                          1,
+                          claim,
+                          monte_carlo_request_json(run, samples, seed),
+                          claim ? std::optional(claim_context(run, *claim, word)) : std::nullopt};
+}
+
 }  // namespace trebuchet

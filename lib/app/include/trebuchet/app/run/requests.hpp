@@ -102,6 +102,13 @@ std::vector<UncertainInput> uncertain_inputs(const MonteCarloRequest& request);
 /// material), none of them spread.
 std::vector<FixedInput> fixed_inputs(const MonteCarloRequest& request);
 
+/// The report of a run of `samples` from `seed` whose outcomes `summary` holds: what it drew and
+/// held fixed, its release, subject and air, the run as a request gives it, and with a claim what
+/// decides it (claim_context, its names by `word`). Its wall time and threads are the caller's
+/// (0 and 1 until set).
+MonteCarloReport monte_carlo_report(const MonteCarloRequest& run, const MonteCarloSummary& summary, int samples, std::uint64_t seed,
+                                    const std::function<std::string(std::string_view)>& word);
+
 /// The outcome of one sample drawn with `random`; a failure is recorded, its message's names
 /// written by `word` (error.hpp).
 SampleOutcome sample_outcome(const MonteCarloRequest& request, std::mt19937_64& random, const std::function<std::string(std::string_view)>& word);

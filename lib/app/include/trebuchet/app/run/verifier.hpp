@@ -177,15 +177,15 @@ struct ClaimContext {
 /// `assumptions` the release and the target level, `subject` what was sampled ("the shot").
 struct MonteCarloReport {
   const MonteCarloSummary& summary;
-  const std::vector<UncertainInput>& inputs;
-  const std::vector<FixedInput>& fixed;
+  std::vector<UncertainInput> inputs;
+  std::vector<FixedInput> fixed;
   std::string assumptions;
   std::uint64_t seed;
   std::string subject;
   std::string air;
   bool in_air;
-  double seconds;
-  int threads;
+  double seconds = 0;  ///< the run's wall time [s]; 0 where the caller measures it
+  int threads = 1;
   std::optional<double> claim;  ///< a claimed range [m] whose odds the run reports (assess_claim)
   nlohmann::ordered_json request;  ///< the run as a request gives it (monte_carlo_request_json): it reads back as the same run
   std::optional<ClaimContext> claim_context;  ///< with a claim: what decides its verdict
