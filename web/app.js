@@ -152,10 +152,20 @@
     for (const [key, value] of Object.entries(state.edit)) if (value !== editBase[key]) changed[key] = value;
     return Object.keys(changed).length ? changed : null;
   }
+  // The settings the shot does not read as the page stands, which a link leaves out: the air's
+  // values in vacuum, a typed density beside a named material, a release's value at the optimum.
+  function unreadKeys(s) {
+    const keys = [];
+    if (!s.air) keys.push('cd', 'wind', 'projectile', 'projectile_density');
+    else if (s.projectile !== 'density') keys.push('projectile_density');
+    if (s.release_by === 'optimum') keys.push('release_value');
+    return keys;
+  }
   function saveState() {
     const params = new URLSearchParams();
     const defaults = JSON.parse(DEFAULTS);
     const shared = Object.assign({}, state, state.view === 'edit' ? { edit: editChanges() } : { edit: null, edit_from: defaults.edit_from });
+    for (const k of unreadKeys(shared)) delete shared[k];
     for (const [k, v] of Object.entries(shared))
       if (v !== null && !LAYOUT.includes(k) && JSON.stringify(v) !== JSON.stringify(defaults[k])) params.set(k, typeof v === 'object' ? JSON.stringify(v) : String(v));
     history.replaceState(null, '', '#' + params.toString());
@@ -302,12 +312,11 @@
       `The ${MACHINE_NAMES[state.machine]} needs an arm: choose that machine again, or design the ${MACHINE_NAMES[state.machine]}'s engine in view 1.`, 'usage', ['L3'])
       : call('shot', Object.assign({ design: asBuilt(engine), series: true }, settings()));
     if (answer.error) {
-      shown = null;
-      $('viewer').innerHTML = `<div class="message refused">${escapeHtml(answer.error)}</div>`;
-      document.querySelector('.downloads').hidden = true;  // no shot: nothing to download, not the last one's
-      showProjectile(null);
+      refuseShot(answer.error);
       return null;
     }
+    $('shot-message').hidden = true;
+    $('viewer').classList.remove('stale');
     document.querySelector('.downloads').hidden = false;
     shown = { engine, shot: answer };
     $('shot-title').textContent = title;
@@ -327,6 +336,16 @@
     $('download-csv').href = 'data:text/csv;charset=utf-8,' + encodeURIComponent(V.seriesCsv(answer));
     showProjectile(answer);
     return answer;
+  }
+  // No shot for the input as it stands (a box half typed: "180m" passes "1" and "18"): the refusal
+  // goes above the scene, and the last shot stays drawn, greyed, until the input reads again.
+  function refuseShot(text) {
+    shown = null;
+    $('shot-message').textContent = text;
+    $('shot-message').hidden = false;
+    $('viewer').classList.toggle('stale', $('viewer').childElementCount > 0);
+    document.querySelector('.downloads').hidden = true;  // no shot: nothing to download, not the last one's
+    showProjectile(null);
   }
   const escapeHtml = V.escapeHtml;
   // The ball the shot flew: its material and the diameter that gives it its mass (in air, its drag).
@@ -401,9 +420,57 @@
       });
       box.appendChild(row);
     }
+    buildParts();
     const from = { design: 'the optimal engine of view 1, Design', reconstruct: 'the completed engine of view 3, Reconstruct', whipper: 'a whipper that throws (pytrebuchet\'s masses and long arm; L2 1.5 m, L3 3 m, L4 5 m on a 6 m frame)' }[editFrom];
     $('edit-source').textContent = 'Editing ' + (from || (editBase ? 'the engine of the link' : 'the optimal engine of view 1, Design')) + '.';
     fillSweepKeys();
+  }
+
+  // ---- the engine as built: a box for each part row of the table of inputs ------------------------
+  // Every part a shot takes has its box, so that a new part row gets one with no new code, but
+  // those the page sets another way or does not model (docs/web.md says why).
+  const PARTS_LEFT_OUT = {
+    projectile_diameter: 'the projectile select sets the ball\'s size from its material',
+    rope_diameter: 'the rope\'s drag acts only with the air in the sling, which the page does not model',
+    rope_cd: 'the rope\'s drag acts only with the air in the sling, which the page does not model',
+    rope_angle_deg: 'the whipper\'s start, which the page sets as pytrebuchet\'s',
+  };
+  function buildParts() {
+    const rows = $('part-rows');
+    rows.innerHTML = '';
+    for (const f of INPUTS.filter((x) => x.group === 'part' && x.operations.includes('shot') && !PARTS_LEFT_OUT[x.key])) {
+      const row = document.createElement('label');
+      row.className = 'row';
+      row.innerHTML = '<span></span><input autocomplete="off">';
+      row.querySelector('span').textContent = f.label;
+      const box = row.querySelector('input');
+      box.dataset.key = f.key;
+      box.placeholder = f.default ? f.default : 'not given';
+      box.title = f.help + (f.units.length ? ' (' + f.units.join(', ') + ')' : '');
+      box.value = state.edit && state.edit[f.key] !== undefined ? typedText(state.edit[f.key], f.dimension) : '';
+      box.addEventListener('change', () => setPart(f, box));
+      rows.appendChild(row);
+    }
+    $('parts-left-out').textContent = 'No box: ' + Object.entries(PARTS_LEFT_OUT).map(([key, why]) => `${key} (${why})`).join('; ') + '.';
+    $('parts').open = INPUTS.some((f) => f.group === 'part' && state.edit && state.edit[f.key] !== undefined);
+  }
+  // A part's typed value, read by the library as the programs read its flag; an empty box takes
+  // the part away. A value the library refuses is said in place, the engine keeping its own.
+  function setPart(f, box) {
+    const message = $('edit-message');
+    const text = box.value.trim();
+    const answer = text ? call('value', { key: f.key, text }) : { value: undefined };
+    if (answer.error) {
+      box.setAttribute('aria-invalid', 'true');
+      message.className = 'message refused';
+      message.textContent = answer.error;
+      return;
+    }
+    box.removeAttribute('aria-invalid');
+    message.className = 'message'; message.textContent = '';
+    if (answer.value === undefined) delete state.edit[f.key];
+    else state.edit[f.key] = answer.value;
+    update();
   }
 
   // ---- what if: one value of the edited engine over a range (api sweep) -------------------------
@@ -518,7 +585,7 @@
     const message = $('reconstruct-message');
     if (answer.error) {
       message.className = 'message refused'; message.textContent = answer.error; $('reconstruct-result').innerHTML = '';
-      $('viewer').innerHTML = ''; shown = null; $('shot-title').textContent = 'No engine to shoot: the request was refused (see the message)';
+      refuseShot('No engine to shoot: the attested values are refused (the message under them says why).');
       return null;
     }
     message.className = 'message';
@@ -655,6 +722,7 @@
     $('qr-file').hidden = !onlyHere();
     $('qr-text').textContent = link.length > 160 ? link.slice(0, 160) + '…' : link;
     $('qr-dialog').showModal();
+    $('qr-dialog').scrollTop = 0;  // showModal focuses the Close button at the bottom; the dialog opens at its warning
   }
 
   // ---- the symbols, in plain words ------------------------------------------------------------
@@ -687,7 +755,7 @@
     saveState();
     if (state.view === 'design') {
       if (runDesign()) runShot(engineOf(designed), "The optimal engine's shot");
-      else { $('viewer').innerHTML = ''; shown = null; $('shot-title').textContent = 'No engine to shoot: the request was refused (see the message)'; }
+      else refuseShot('No engine to shoot: the givens are refused (the message under them says why).');
     } else if (state.view === 'edit') {
       if (!state.edit && designed) state.edit = engineOf(designed);
       const answer = state.edit ? runShot(state.edit, "The edited engine's shot") : null;
@@ -824,7 +892,13 @@
     $('monte-carlo').addEventListener('click', () => runBand());
     $('share').addEventListener('click', () => {
       saveState();
-      const said = (text) => { $('share').textContent = text; setTimeout(() => { $('share').textContent = 'Copy link'; }, 2500); };
+      const said = (text) => {  // a toast over the page: the header keeps its height
+        const toast = $('toast');
+        toast.textContent = text;
+        toast.hidden = false;
+        clearTimeout(toast.timer);
+        toast.timer = setTimeout(() => { toast.hidden = true; }, 4000);
+      };
       const local = onlyHere() ? ': it opens only on this computer (see the QR code)' : '';
       if (!navigator.clipboard) { said('Copy the address bar: it holds the link' + local); return; }
       navigator.clipboard.writeText(location.href).then(() => said('Link copied' + local), () => said('Copy the address bar: it holds the link' + local));

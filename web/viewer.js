@@ -478,9 +478,16 @@
       ${builtRows}
       </table>`;
 
-    // The animation: phases I and II to scale, then the whole flight.
+    // The animation: phases I and II to scale, then the whole flight; over it, the shot's answer
+    // in the page's text size (a projector's class reads it beside the throw: issue 67).
     const stage = document.createElement('div');
     stage.className = 'tv-stage';
+    const verdict = margin === undefined ? '' : margin < 1 ? ' · <b class="tv-bad">the beam breaks</b>'
+      : modelWarnings.length ? ' · not physical' : ' · the beam holds (margin ' + significant(margin, 3) + ')';
+    const headline = document.createElement('p');
+    headline.className = 'tv-headline';
+    headline.innerHTML = `<b>R = ${q(shot.R, 'length')}</b> · ε = ${significant(100 * shot.eps, 3)} % · Q = ${significant(100 * shot.Q, 3)} %${verdict}`;
+    stage.appendChild(headline);
     // The scene's units are chosen so that its smallest words (11 units) are drawn at least 11 CSS
     // px on a screen and 18 on a projector (html.projector), at the size it is drawn: the
     // container's width, or less where the stage's height (52 % of the window) bounds it.

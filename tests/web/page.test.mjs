@@ -181,7 +181,7 @@ try {
       slider.value = String(Number(slider.value) * 1.05);
       slider.dispatchEvent(new Event('input'));
     }
-    return { shot: window.trebuchet.current(), text: document.getElementById('viewer').textContent.slice(0, 160) };
+    return { shot: window.trebuchet.current(), text: document.getElementById('shot-message').textContent.slice(0, 160) };
   });
   check(dragged.shot !== null && dragged.shot.R > 0, `a drag of L1 and θi shoots the edited engine: R ${dragged.shot && dragged.shot.R} m ${dragged.shot ? '' : dragged.text}`);
   const shared = await page.evaluate(() => ({ url: location.href, state: window.trebuchet.state(), R: document.querySelector('#viewer .tv-figures td').textContent }));
@@ -217,7 +217,7 @@ try {
     pinCloseness < 1e-9, `a release at a pin of 30 deg is the program's: R ${pinnedNative.R} m natively, ${pinned.R} m in the page, relative ${pinCloseness.toExponential(2)}`);
   // A pin the sling passes in the trough is refused in the page with the program's words.
   await page.fill('#release-value', '175deg');
-  const trough = await page.textContent('#viewer');
+  const trough = await page.textContent('#shot-message');
   check(/before lift-off/.test(trough), `a pin passed in the trough is refused: "${trough.slice(0, 120)}"`);
   await page.selectOption('#release-by', 'optimum');
 
