@@ -493,9 +493,12 @@
     // container's width, or less where the stage's height (52 % of the window) bounds it.
     const projector = document.documentElement.classList.contains('projector');
     container.appendChild(stage);  // to measure the width it is drawn at
-    const drawn = Math.min(stage.clientWidth || 760, 2 * 0.52 * (window.innerHeight || 760));
+    // The scene and the answer over it share the 52 % of the window's height the scene had alone.
+    const room = 0.52 * (window.innerHeight || 760) - headline.offsetHeight;
+    const drawn = Math.min(stage.clientWidth || 760, 2 * room);
     const width = Math.floor(Math.min(760, Math.max(280, drawn * 11 / (projector ? 18 : 11)))), height = width / 2, foot = 8;
     const scene = svg('svg', { xmlns: SVGNS, viewBox: `0 0 ${width} ${height}`, width: '100%', class: 'tv-scene-svg', role: 'img' });
+    scene.style.maxHeight = Math.max(room, 140) + 'px';
     stage.appendChild(scene);
     const controls = document.createElement('div');
     controls.className = 'tv-controls';
