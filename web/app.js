@@ -304,7 +304,15 @@
   }
 
   // ---- the shot -------------------------------------------------------------------------------
-  function runShot(engine, title) {
+  let downloads = null;  // the shot's record and series as data: addresses, written on demand
+  for (const [id, kind] of [['download-json', 'json'], ['download-csv', 'csv']])
+    for (const event of ['pointerdown', 'focus', 'click']) document.getElementById(id).addEventListener(event, () => { if (downloads) $(id).href = downloads[kind](); });
+  // The shot drawn where the animation stood, so that a drag shows the same moment; with
+  // `sliding`, the charts drawn before stay, greyed, until flushFollow draws them anew.
+  function drawShot(answer, sliding) {
+    viewer = V.render($('viewer'), answer, { units: state.units, time: viewer ? viewer.time() : 0, playing: viewer ? viewer.playing() : false, keepCharts: sliding });
+  }
+  function runShot(engine, title, sliding) {
     // The fixed and floating-arm tables' engines hang the counterweight at the short arm's end (L3 = 0);
     // the hinged machine and the whipper need an arm for it.
     const armless = engine.L3 === 0 && ['hinged', 'whipper'].includes(state.machine);
@@ -320,20 +328,23 @@
     document.querySelector('.downloads').hidden = false;
     shown = { engine, shot: answer };
     $('shot-title').textContent = title;
-    // A change keeps the animation where it stood, so that a drag shows the same moment.
-    viewer = V.render($('viewer'), answer, { units: state.units, time: viewer ? viewer.time() : 0, playing: viewer ? viewer.playing() : false });
+    drawShot(answer, sliding);
     // The shot's record, as the programs write it (its engine and the settings it was shot with),
     // less its series: trebuchet-verify and trebuchet.shot() read it back as the same shot
     // (docs/schema.md); "command" is that shot, with the page's settings as flags too.
     const name = { design: 'optimal-engine', edit: 'edited-engine', reconstruct: 'completed-engine' }[state.view] || 'engine';
     const command = ['trebuchet-verify', 'shot', name + '.json'].concat(verifyFlags()).join(' ');
-    const record = Object.assign({}, answer, { command });
-    delete record.series;
-    const json = JSON.stringify(record, null, 2) + '\n';
-    $('download-json').href = 'data:application/json;charset=utf-8,' + encodeURIComponent(json);
+    // Written when a link is about to be followed, not at each shot: a slider shoots at every move.
+    downloads = {
+      json: () => {
+        const record = Object.assign({}, answer, { command });
+        delete record.series;
+        return 'data:application/json;charset=utf-8,' + encodeURIComponent(JSON.stringify(record, null, 2) + '\n');
+      },
+      csv: () => 'data:text/csv;charset=utf-8,' + encodeURIComponent(V.seriesCsv(answer)),
+    };
     $('download-json').download = name + '.json';
     $('download-csv').download = name + '-shot.csv';
-    $('download-csv').href = 'data:text/csv;charset=utf-8,' + encodeURIComponent(V.seriesCsv(answer));
     showProjectile(answer);
     return answer;
   }
@@ -390,7 +401,8 @@
       const show = () => { typed.value = typedText(state.edit[key], dimension); typed.removeAttribute('aria-invalid'); };
       show();
       // A drag writes the value to the 4 digits the box shows, which a link then carries as they are.
-      input.addEventListener('input', () => { state.edit[key] = Number(V.significant(Number(input.value), 4)); show(); update(); });
+      input.addEventListener('input', () => { state.edit[key] = Number(V.significant(Number(input.value), 4)); show(); update({ sliding: true }); });
+      input.addEventListener('change', flushFollow);  // the hand lets go: the comparison and the what-if now
       // A typed value is read by the library, as the programs read it; the slider follows, widened to reach it.
       typed.addEventListener('change', () => {
         const answer = call('value', { key, text: typed.value });
@@ -750,7 +762,28 @@
   }
 
   // ---- the whole page -------------------------------------------------------------------------
-  function update() {
+  // A slider in the hand: each move draws the shot at once, and the comparison with the optimum
+  // and the what-if (a design and 22 shots) follow once the hand rests or lets go, greyed until
+  // then (issue 67: the page follows the hand). Anything that reads them (whatIf()) has them now.
+  let following = null;
+  function follow(answer) {
+    clearTimeout(following && following.timer);
+    following = { answer, timer: setTimeout(flushFollow, 150) };
+    $('compare').classList.add('stale');
+    $('sweep-chart').classList.add('stale');
+  }
+  function flushFollow() {
+    if (!following) return;
+    const { answer, timer } = following;
+    clearTimeout(timer);
+    following = null;
+    $('compare').classList.remove('stale');
+    $('sweep-chart').classList.remove('stale');
+    if (shown && shown.shot === answer) drawShot(answer, false);  // its charts
+    compareWithOptimum(answer);
+    runSweep(answer);
+  }
+  function update(how) {
     showMachineNote();
     saveState();
     if (state.view === 'design') {
@@ -758,9 +791,17 @@
       else refuseShot('No engine to shoot: the givens are refused (the message under them says why).');
     } else if (state.view === 'edit') {
       if (!state.edit && designed) state.edit = engineOf(designed);
-      const answer = state.edit ? runShot(state.edit, "The edited engine's shot") : null;
-      compareWithOptimum(answer);
-      runSweep(answer);
+      const sliding = Boolean(how && how.sliding);
+      const answer = state.edit ? runShot(state.edit, "The edited engine's shot", sliding) : null;
+      if (sliding) {
+        follow(answer);
+      } else {
+        if (following) { clearTimeout(following.timer); following = null; }
+        $('compare').classList.remove('stale');
+        $('sweep-chart').classList.remove('stale');
+        compareWithOptimum(answer);
+        runSweep(answer);
+      }
     } else if (state.view === 'reconstruct') {
       runComplete();
     }
@@ -928,7 +969,7 @@
     state: () => JSON.parse(JSON.stringify(state)),
     current: () => (shown ? shown.shot : null),  // the shot the page shows, as shot() answered it
     viewer: () => viewer,
-    whatIf: () => lastSweep,  // the what-if sweep drawn in the edit view: its request and answer
+    whatIf: () => { flushFollow(); return lastSweep; },  // the what-if sweep drawn in the edit view: its request and answer
   };
   window.trebuchet = api;
 })();

@@ -406,6 +406,9 @@
     options = options || {};
     const system = options.units || 'si';
     const q = (v, dim, digits) => quantity(v, dim, system, digits);
+    // options.keepCharts: the charts drawn before stay, greyed, for the caller to draw anew once
+    // the hand rests (a slider's move draws the scene and the figures only).
+    const keptCharts = options.keepCharts ? container.querySelector('.tv-charts') : null;
     container.innerHTML = '';
     const e = shot.engine, s = shot.series;
     const head = document.createElement('div');
@@ -605,15 +608,27 @@
     draw();
     if (options.playing) play.click();  // a change while it played plays on
 
+    const handle = { redraw: draw, setTime: (t) => { time = Math.max(0, Math.min(tEnd, t)); draw(); }, time: () => time, playing: () => playing, duration: tEnd };
+    if (keptCharts) {
+      keptCharts.classList.add('stale');
+      container.appendChild(keptCharts);
+      return handle;
+    }
     // Each chart's units are chosen as the scene's (chartUnits), at the width a chart's box has in
     // the grid (style.css, .tv-charts: one a row on a projector), measured on an empty box.
     const grid = document.createElement('div');
     grid.className = 'tv-charts';
     container.appendChild(grid);
-    const probes = [0, 1, 2, 3, 4].map(() => grid.appendChild(Object.assign(document.createElement('figure'), { className: 'tv-chart' })));
-    const padding = parseFloat(getComputedStyle(probes[0]).paddingLeft) + parseFloat(getComputedStyle(probes[0]).paddingRight);
-    const figureWidth = probes[0].clientWidth ? probes[0].clientWidth - padding : 420;
-    probes.forEach((probe) => grid.removeChild(probe));
+    // Measured once for a width of the stage and a layout (a projector's is another): a slider
+    // redraws at every move, and each measure lays the whole page out again.
+    const layout = stage.clientWidth + (projector ? 'p' : '');
+    if (!container.chartWidth || container.chartWidth.layout !== layout) {
+      const probes = [0, 1, 2, 3, 4].map(() => grid.appendChild(Object.assign(document.createElement('figure'), { className: 'tv-chart' })));
+      const padding = parseFloat(getComputedStyle(probes[0]).paddingLeft) + parseFloat(getComputedStyle(probes[0]).paddingRight);
+      container.chartWidth = { layout, width: probes[0].clientWidth ? probes[0].clientWidth - padding : 420 };
+      probes.forEach((probe) => grid.removeChild(probe));
+    }
+    const figureWidth = container.chartWidth.width;
     const figures = charts(shot, system, chartUnits(figureWidth));
     const captions = {
       forces: 'F_S⊥ is the sling\'s pull across the beam; |F_R| and F_Rh the pivot\'s force on the beam and its horizontal part; |F_H| the hinge\'s force; N the trough\'s push in phase I. Size ropes, pins and beams from these.',
@@ -634,14 +649,18 @@
         const link = document.createElement('a');
         link.textContent = ' Download SVG';
         link.download = name + '.svg';
-        link.href = 'data:image/svg+xml;charset=utf-8,' + encodeURIComponent(new XMLSerializer().serializeToString(figure));
+        // Written when it is about to be followed, not at each drawing: a chart's text is long, and a
+        // slider redraws every chart (issue 67: the page follows the hand).
+        link.href = '#';
+        const write = () => { link.href = 'data:image/svg+xml;charset=utf-8,' + encodeURIComponent(new XMLSerializer().serializeToString(figure)); };
+        for (const event of ['pointerdown', 'focus', 'click']) link.addEventListener(event, write);
         caption.appendChild(link);
       }
       box.appendChild(caption);
       grid.appendChild(box);
     }
     container.appendChild(grid);
-    return { redraw: draw, setTime: (t) => { time = Math.max(0, Math.min(tEnd, t)); draw(); }, time: () => time, playing: () => playing, duration: tEnd };
+    return handle;
   }
 
   // The series as CSV: one row per frame, SI units.

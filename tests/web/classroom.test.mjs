@@ -362,6 +362,20 @@ try {
     await context.close();
   }
   {
+    // A slider in the hand draws the shot at each move; the charts, the comparison with the
+    // optimum and the what-if follow when the hand lets go (or rests), greyed until then.
+    const { page, context } = await open(browser, link({ view: 'edit' }));
+    await drag(page, 'L4', 1.1);
+    const moving = await page.evaluate(() => ({ charts: Boolean(document.querySelector('.tv-charts.stale')), compare: document.getElementById('compare').classList.contains('stale'),
+      R: window.trebuchet.current().R, headline: document.querySelector('.tv-headline').textContent }));
+    await page.evaluate(() => document.querySelector('#sliders input[data-key="L4"]').dispatchEvent(new Event('change')));
+    const resting = await page.evaluate(() => ({ charts: document.querySelectorAll('.tv-charts').length, stale: document.querySelectorAll('.stale').length,
+      swept: window.trebuchet.whatIf().request.design.L4, L4: window.trebuchet.state().edit.L4 }));
+    check(moving.charts && moving.compare && moving.headline.includes(moving.R.toFixed(1)) && resting.charts === 1 && resting.stale === 0 && resting.swept === resting.L4,
+      `while L4 moves the shot is drawn (${moving.headline.slice(0, 24)}…) and the charts and the comparison wait, greyed; let go, they are drawn for L4 ${resting.swept} m`);
+    await context.close();
+  }
+  {
     // A link after iron was chosen over a typed density carries the material, not the density it no longer reads.
     const { page, context } = await open(browser, link({ view: 'edit', air: true, projectile: 'density', projectile_density: '1000kg/m3', release_value: '40' }));
     await page.selectOption('#projectile', 'iron');
