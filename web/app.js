@@ -783,7 +783,11 @@
     compareWithOptimum(answer);
     runSweep(answer);
   }
+  // The phone's edit view keeps the animation in view while the sliders are (style.css).
+  if (window.IntersectionObserver)
+    new window.IntersectionObserver(([entry]) => document.documentElement.classList.toggle('sliders-in-view', entry.isIntersecting)).observe($('sliders'));
   function update(how) {
+    document.documentElement.dataset.view = state.view;  // the phone's edit view puts the animation first (style.css)
     showMachineNote();
     saveState();
     if (state.view === 'design') {

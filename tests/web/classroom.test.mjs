@@ -376,6 +376,23 @@ try {
     await context.close();
   }
   {
+    // A phone (390x844): the edit view opens on the animation and the answer over it, and keeps
+    // them in view while the sliders move; scrolled past the sliders, they go with the page.
+    const { page, context } = await open(browser, link({ view: 'edit' }), { width: 390, height: 844 });
+    const box = (selector) => page.evaluate((s) => { const r = document.querySelector(s).getBoundingClientRect(); return { top: r.top, bottom: r.bottom }; }, selector);
+    const opened = { headline: await box('.tv-headline'), scene: await box('.tv-scene-svg') };
+    await page.evaluate(() => document.querySelector('#sliders input[data-key="D"]').scrollIntoView({ block: 'end' }));
+    await page.waitForTimeout(200);
+    const sliding = { scene: await box('.tv-scene-svg'), slider: await box('#sliders input[data-key="D"]') };
+    await page.evaluate(() => document.querySelector('.tv-charts').scrollIntoView());
+    await page.waitForTimeout(200);
+    const past = await box('.tv-scene-svg');
+    check(opened.headline.bottom <= 844 && opened.scene.bottom <= 844 && sliding.scene.top >= -1 && sliding.scene.bottom <= sliding.slider.top && past.bottom < 0,
+      `at 390x844 the edit view opens with the answer (foot at ${opened.headline.bottom.toFixed(0)} px) and the scene (to ${opened.scene.bottom.toFixed(0)} px) on its first screen; ` +
+      `with the last slider in view (at ${sliding.slider.top.toFixed(0)} px) the scene stands at ${sliding.scene.top.toFixed(0)}-${sliding.scene.bottom.toFixed(0)} px; at the charts it has gone (${past.bottom.toFixed(0)} px)`);
+    await context.close();
+  }
+  {
     // A link after iron was chosen over a typed density carries the material, not the density it no longer reads.
     const { page, context } = await open(browser, link({ view: 'edit', air: true, projectile: 'density', projectile_density: '1000kg/m3', release_value: '40' }));
     await page.selectOption('#projectile', 'iron');
