@@ -312,3 +312,19 @@ TEST_CASE("api: a request's over lays the engine's inputs over its design, as th
   CHECK_THAT(refusal(api::shot, {{"design", design}, {"over", {{"tol", 1}}}}).what(), Catch::Contains("over.tol is no input of the engine"));
   CHECK_THAT(refusal(api::shot, {{"design", design}, {"over", "L4=5m"}}).what(), Catch::Contains("over: \"L4=5m\" must be an object"));
 }
+
+// complete's "over" takes complete's own inputs (Lb, l, drop), and a range there is completed at
+// its middle, as one in the attested values is (Python's complete(attested, Lb=..., M="2.5t..3.5t")).
+TEST_CASE("api::complete lays its over on the attested values, complete's own inputs and ranges too", "[api]") {
+  const json attested = {{"Lb", "9.5m"}, {"M", "3t"}, {"m", "50kg"}};
+  const auto direct = api::complete({{"attested", attested}});
+  const auto over_Lb = api::complete({{"attested", {{"Lb", "5m"}, {"M", "3t"}, {"m", "50kg"}}}, {"over", {{"Lb", "9.5m"}}}});
+  const auto over_range = api::complete({{"attested", attested}, {"over", {{"M", "2.5t..3.5t"}}}});
+  CHECK(over_Lb["R"] == direct["R"]);
+  CHECK(over_range["R"] == direct["R"]);  // 2.5 t to 3.5 t completed at its middle, 3 t
+  CHECK_THAT(refusal(api::shot,
+                     {{"design", {{"L1", "6.13m"}, {"L2", "1.08m"}, {"L3", "1.2m"}, {"L4", "5.8m"}, {"M", "14.3t"}, {"m", "100kg"}, {"mb", "660kg"}}},
+                      {"over", {{"M", "13t..15t"}}}})
+                 .what(),
+             Catch::Contains("over.M: '13t..15t' is a range or a spread"));
+}

@@ -309,7 +309,9 @@
     for (const event of ['pointerdown', 'focus', 'click']) document.getElementById(id).addEventListener(event, () => { if (downloads) $(id).href = downloads[kind](); });
   // The shot drawn where the animation stood, so that a drag shows the same moment; with
   // `sliding`, the charts drawn before stay, greyed, until flushFollow draws them anew.
+  let drawnView = null;  // the view whose shot the viewer holds
   function drawShot(answer, sliding) {
+    drawnView = state.view;
     viewer = V.render($('viewer'), answer, { units: state.units, time: viewer ? viewer.time() : 0, playing: viewer ? viewer.playing() : false, keepCharts: sliding });
   }
   function runShot(engine, title, sliding) {
@@ -354,6 +356,8 @@
     shown = null;
     $('shot-message').textContent = text;
     $('shot-message').hidden = false;
+    // Another view's last shot is not this one's: it goes, with its title.
+    if (drawnView !== state.view) { $('viewer').innerHTML = ''; viewer = null; $('shot-title').textContent = 'No engine to shoot'; }
     $('viewer').classList.toggle('stale', $('viewer').childElementCount > 0);
     document.querySelector('.downloads').hidden = true;  // no shot: nothing to download, not the last one's
     showProjectile(null);

@@ -485,8 +485,8 @@
     // in the page's text size (a projector's class reads it beside the throw: issue 67).
     const stage = document.createElement('div');
     stage.className = 'tv-stage';
-    const verdict = margin === undefined ? '' : margin < 1 ? ' · <b class="tv-bad">the beam breaks</b>'
-      : modelWarnings.length ? ' · not physical' : ' · the beam holds (margin ' + significant(margin, 3) + ')';
+    const verdict = margin !== undefined && margin < 1 ? ' · <b class="tv-bad">the beam breaks</b>'
+      : modelWarnings.length ? ' · <b class="tv-bad">not physical</b>' : margin === undefined ? '' : ' · the beam holds (margin ' + significant(margin, 3) + ')';
     const headline = document.createElement('p');
     headline.className = 'tv-headline';
     headline.innerHTML = `<b>R = ${q(shot.R, 'length')}</b> · ε = ${significant(100 * shot.eps, 3)} % · Q = ${significant(100 * shot.Q, 3)} %${verdict}`;

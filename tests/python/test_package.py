@@ -363,6 +363,12 @@ def test_every_input_is_a_keyword_with_the_result_of_its_key_in_the_design():
     assert trebuchet.compare(E, M=3000) == trebuchet.compare(dict(E, M=3000))
     attested = dict(Lb="5m", M="3t", m="50kg")
     assert trebuchet.complete(attested, L4="3.5m") == trebuchet.complete(dict(attested, L4="3.5m"))
+    # complete's own inputs (Lb, l, drop) and a range, completed at its middle, as keywords too.
+    assert trebuchet.complete(attested, Lb="9.5m") == trebuchet.complete(dict(attested, Lb="9.5m"))
+    assert trebuchet.complete(attested, M="2.5t..3.5t") == trebuchet.complete(dict(attested, M="2.5t..3.5t"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # a keyword over a run's value is the caller's own: no note
+        trebuchet.monte_carlo(attested=dict(attested, M="2.5t..3.5t"), Lb="6m", samples=2)
     run = trebuchet.monte_carlo(E, M="2.9t..3.3t", samples=20)
     assert run["percentiles"] == trebuchet.monte_carlo(dict(E, M="2.9t..3.3t"), samples=20)["percentiles"]
 

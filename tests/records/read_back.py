@@ -205,7 +205,7 @@ completion, _ = run(["complete", "--Lb", "9.5m", "--M", "2.5t..3.5t", "--m", "50
 with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
     json.dump(completion, f)
 said = subprocess.run([VERIFY, f.name], capture_output=True, text=True)
-command = said.stderr.split("run it again with ", 1)[-1].strip()
+command = said.stderr.split("run it again with trebuchet-verify ", 1)[-1].strip()
 print("complete's Monte Carlo report:", said.returncode, command)
 if said.returncode != 2 or not command.startswith("complete "):
     failures.append("complete's Monte Carlo report: not refused with the flags that run it again")

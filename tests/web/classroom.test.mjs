@@ -324,6 +324,13 @@ try {
       await page.fill('#first', text);
       steps.push([text, await seen()]);
     }
+    // Another view's refusal does not grey this view's shot under its own: reconstruct, refused,
+    // shows no engine, not the design's.
+    const refusing = await open(browser, link({ attested: { Lb: '9.5m', M: '-3t', m: '50kg' } }), { width: 1280, height: 720 });
+    await refusing.page.click('nav button[data-view="reconstruct"]');
+    const other = await refusing.page.evaluate(() => ({ drawn: document.querySelectorAll('#viewer svg').length, title: document.getElementById('shot-title').textContent }));
+    check(other.drawn === 0 && /No engine to shoot/.test(other.title), `a refused reconstruction after the design's shot: ${other.drawn} picture(s) of another view's engine, titled "${other.title}"`);
+    await refusing.context.close();
     const [one, eighteen, whole] = steps.map(([, s]) => s);
     check(one.drawn > 0 && one.stale && one.above && /R/.test(one.box) && eighteen.stale && whole.drawn > 0 && !whole.stale && whole.above === null && whole.R > 0,
       'typing 180m: ' + steps.map(([t, s]) => `"${t}" ${s.drawn} picture(s) drawn${s.stale ? ', greyed' : ''}${s.above ? ', the refusal above the scene' : ''}`).join('; ') +
@@ -364,13 +371,19 @@ try {
   {
     // A slider in the hand draws the shot at each move; the charts, the comparison with the
     // optimum and the what-if follow when the hand lets go (or rests), greyed until then.
+    // The move, what it shows and the hand letting go in one task: no timer can fire between
+    // them; the state read before whatIf(), which would draw the waiting what-if itself.
     const { page, context } = await open(browser, link({ view: 'edit' }));
-    await drag(page, 'L4', 1.1);
-    const moving = await page.evaluate(() => ({ charts: Boolean(document.querySelector('.tv-charts.stale')), compare: document.getElementById('compare').classList.contains('stale'),
-      R: window.trebuchet.current().R, headline: document.querySelector('.tv-headline').textContent }));
-    await page.evaluate(() => document.querySelector('#sliders input[data-key="L4"]').dispatchEvent(new Event('change')));
-    const resting = await page.evaluate(() => ({ charts: document.querySelectorAll('.tv-charts').length, stale: document.querySelectorAll('.stale').length,
-      swept: window.trebuchet.whatIf().request.design.L4, L4: window.trebuchet.state().edit.L4 }));
+    const { moving, resting } = await page.evaluate(() => {
+      const slider = document.querySelector('#sliders input[data-key="L4"]');
+      slider.value = String(Number(slider.value) * 1.1);
+      slider.dispatchEvent(new Event('input'));
+      const seen = { charts: Boolean(document.querySelector('.tv-charts.stale')), compare: document.getElementById('compare').classList.contains('stale'),
+        R: window.trebuchet.current().R, headline: document.querySelector('.tv-headline').textContent };
+      slider.dispatchEvent(new Event('change'));
+      return { moving: seen, resting: { charts: document.querySelectorAll('.tv-charts').length, stale: document.querySelectorAll('.stale').length,
+        L4: window.trebuchet.state().edit.L4, swept: window.trebuchet.whatIf().request.design.L4 } };
+    });
     check(moving.charts && moving.compare && moving.headline.includes(moving.R.toFixed(1)) && resting.charts === 1 && resting.stale === 0 && resting.swept === resting.L4,
       `while L4 moves the shot is drawn (${moving.headline.slice(0, 24)}…) and the charts and the comparison wait, greyed; let go, they are drawn for L4 ${resting.swept} m`);
     await context.close();

@@ -90,18 +90,7 @@ DesignValues attested_of(const json& given, const std::string& where, const std:
                         "give it to shot with the completed engine");
       pass_through(key, value, known, where, &passed);
     }
-  DesignValues v;
-  for (const InputField& field : input_fields()) {
-    if (!(field.operations & op_complete)) continue;
-    v.*field.member = read_value(plain, field.key, field.dimension, where);
-    for (const char* alias : field.aliases)
-      if (const auto value = read_value(plain, alias, field.dimension, where)) {
-        if (v.*field.member)
-          throw Error(ErrorKind::usage, where + "." + field.key + " and " + where + "." + alias + " are one value given twice; keep one");
-        v.*field.member = value;
-      }
-  }
-  return v;
+  return read_input_values(plain, where, op_complete);
 }
 
 // A value given as a range or a spread, completed at its middle (a range's midpoint, a spread's mean).
@@ -276,9 +265,9 @@ ordered_json complete(const json& request) {
   json passed = json::object();
   SettingsValues own;
   std::vector<std::string> notes;  // the programs print them; a request's "over" is its caller's own
-  const DesignValues attested = with_material(
-      overlay_flags(attested_of(request["attested"], "attested", middle, passed, own), over_of(request, op_complete), "attested", notes),
-      material_of_request(request, op_complete));
+  const DesignValues attested = with_material(overlay_flags(attested_of(request["attested"], "attested", middle, passed, own),
+                                                            over_of(request, op_complete, nullptr, middle), "attested", notes),
+                                              material_of_request(request, op_complete));
   ordered_json answer = completion_answer(completion_request(attested, shot_settings(overlay(own, settings_values_of(request, req_complete)))));
   if (!passed.empty()) answer["passed"] = passed;  // the attested keys no reader knows, as given
   return answer;
@@ -305,10 +294,15 @@ MonteCarloRequest monte_carlo_run_of(const json& request, json& passed) {
   }
   run.values = with_material(run.values, material_of_request(request, operation));
   run.completes = completes;
-  std::vector<SpreadInput> spreads_over;  // the request's settings' and its "over"'s
-  const SettingsValues given = settings_values_of(take_spreads(request, op_shot, "", spreads_over), req_monte_carlo);
-  const DesignValues over = over_of(request, operation, &spreads_over);
-  lay_over_run(run, over, given, spreads_over, where);
+  // The caller's own values ("over", Python's keywords) replace the run's without a note, as in
+  // shot and complete; the request's settings over a design's own are noted, as the programs note them.
+  std::vector<SpreadInput> over_spreads, setting_spreads;
+  const DesignValues over = over_of(request, operation, &over_spreads);
+  const std::size_t notes = run.notes.size();
+  lay_over_run(run, over, SettingsValues{}, over_spreads, where);
+  run.notes.resize(notes);
+  const SettingsValues given = settings_values_of(take_spreads(request, op_shot, "", setting_spreads), req_monte_carlo);
+  lay_over_run(run, DesignValues{}, given, setting_spreads, where);
   if (run.spreads.empty())  // as the programs refuse a run of identical samples
     throw Error(ErrorKind::usage,
                 "monte_carlo samples the values of {{" + where +

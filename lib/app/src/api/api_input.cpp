@@ -39,7 +39,7 @@ std::vector<std::string> keys_of(unsigned door, unsigned material_operation) {
   return keys;
 }
 
-DesignValues over_of(const json& request, unsigned operation, std::vector<SpreadInput>* spreads) {
+DesignValues over_of(const json& request, unsigned operation, std::vector<SpreadInput>* spreads, const std::function<double(const Spread&)>& at) {
   if (!request.contains("over")) return {};
   const json& over = request["over"];
   if (!over.is_object())
@@ -51,8 +51,13 @@ DesignValues over_of(const json& request, unsigned operation, std::vector<Spread
                   "over." + key + " is no input of the engine that this request takes (fields()); give a setting beside " +
                       "the design, an input of the engine in over");
   }
-  const json plain = spreads ? take_spreads(over, operation, "over", *spreads) : over;
-  return read_design_values(plain, "over");
+  std::vector<SpreadInput> taken;
+  const json plain = take_spreads(over, operation, "over", spreads ? *spreads : taken, at);
+  if (!taken.empty() && !at)  // a range for one shot: the design's own would be refused alike (read_design_values)
+    throw Error(ErrorKind::usage,
+                "over." + taken.front().input.name + ": '" + over[taken.front().input.name].get<std::string>() +
+                    "' is a range or a spread; give one value (ranges and spreads are for monte_carlo)");
+  return read_input_values(plain, "over", operation);
 }
 
 std::string text_of(const json& value, const std::string& key) {

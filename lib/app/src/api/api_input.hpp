@@ -29,8 +29,10 @@ ShotSettings settings_of(const nlohmann::json& request, unsigned door);
 /// The request's "over": the engine's inputs that `operation` takes (fields(), the machine too)
 /// laid over its design's own, as the programs' flags go over a file's (overlay_flags). With
 /// `spreads`, each range or spread is taken there (a Monte Carlo run's, take_spreads); without,
-/// refused. A key of no input is refused by name; the settings go beside the design instead.
-DesignValues over_of(const nlohmann::json& request, unsigned operation, std::vector<SpreadInput>* spreads = nullptr);
+/// refused unless `at` gives the value it stands for (complete's: a range's middle). A key of no
+/// input is refused by name; the settings go beside the design instead.
+DesignValues over_of(const nlohmann::json& request, unsigned operation, std::vector<SpreadInput>* spreads = nullptr,
+                     const std::function<double(const Spread&)>& at = nullptr);
 /// The material's rows a request gives over its design's own, each positive.
 DesignValues material_of_request(const nlohmann::json& request, unsigned operation);
 

@@ -301,7 +301,7 @@ nlohmann::json design_object(const nlohmann::json& given) {
     if (given.contains("design") && given["design"].is_object()) return given["design"];
     throw Error(ErrorKind::usage,
                 "this is the report of complete's Monte Carlo run, which runs again from its attested values: give it to complete as "
-                "its attested values (a request's or Python's attested=report), or run it again with complete " +
+                "its attested values (a request's or Python's attested=report), or run it again with trebuchet-verify complete " +
                     attested_words(given["attested"]));
   }
   // The engine: its own object, or (a completion's record) the record's keys, less the shot's
@@ -536,11 +536,12 @@ void refuse_spreads(const nlohmann::json& object, const std::string& where) {
   }
 }
 
-// The engine's inputs a shot takes, each under its key or an alias (not both), and the machine.
-DesignValues read_fields(const nlohmann::json& object, const std::string& where) {
+}  // namespace
+
+DesignValues read_input_values(const nlohmann::json& object, const std::string& where, unsigned operation) {
   DesignValues v;
   for (const InputField& field : input_fields()) {
-    if (!(field.operations & op_shot)) continue;
+    if (!(field.operations & operation)) continue;
     v.*field.member = read_value(object, field.key, field.dimension, where);
     // An alias is read too; a value given under two names is refused.
     for (const char* alias : field.aliases) {
@@ -552,7 +553,7 @@ DesignValues read_fields(const nlohmann::json& object, const std::string& where)
       v.*field.member = aliased;
     }
   }
-  if (object.contains(machine_key) && !object[machine_key].is_null()) {
+  if ((operation & op_shot) && object.contains(machine_key) && !object[machine_key].is_null()) {
     const nlohmann::json& machine = object[machine_key];
     const std::string name = engine_key_name(where, machine_key);
     if (!machine.is_string()) throw Error(ErrorKind::usage, name + ": " + brief_json(machine) + " is not a machine's name; use " + machine_names());
@@ -560,6 +561,8 @@ DesignValues read_fields(const nlohmann::json& object, const std::string& where)
   }
   return v;
 }
+
+namespace {
 
 // The keys an engine object is read for: the inputs a shot takes, the machine, and a shot's settings (read_settings).
 const std::vector<std::string>& known_keys() {
@@ -666,7 +669,7 @@ DesignValues read_design_values(const nlohmann::json& given, const std::string& 
     throw Error(ErrorKind::usage,
                 (where.empty() ? std::string("input") : where) + ": expected a JSON object with keys L1, L2, L3 (or F), L4, M, m, mb, theta_i_deg");
   refuse_spreads(object, where);
-  const DesignValues v = read_fields(object, where);
+  const DesignValues v = read_input_values(object, where, op_shot);
   pass_other_keys(object, where, passed, by_program);
   if (settings) *settings = read_settings(object, req_shot, where);
   return v;

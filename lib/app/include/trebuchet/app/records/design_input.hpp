@@ -143,6 +143,11 @@ std::optional<double> read_value(const nlohmann::json& object, const std::string
 DesignValues read_design_values(const nlohmann::json& object, const std::string& where, nlohmann::json* passed = nullptr,
                                 SettingsValues* settings = nullptr);
 
+/// The values of the inputs `operation` takes (input_fields), each under its key or an alias
+/// (not both: Error(usage)), and with a shot the machine; other keys are passed over. Each an SI
+/// number or a string with a unit, named "where.key" in messages.
+DesignValues read_input_values(const nlohmann::json& object, const std::string& where, unsigned operation);
+
 /// Refuses `key`, which no reader of `known` takes, when it is near one of them:
 /// 'where: unknown key "theta_i"; did you mean "theta_i_deg"?' (Error(usage)).
 void refuse_near_miss(const std::string& key, const std::vector<std::string>& known, const std::string& where);
