@@ -305,8 +305,7 @@
 
   // ---- the shot -------------------------------------------------------------------------------
   let downloads = null;  // the shot's record and series as data: addresses, written on demand
-  for (const [id, kind] of [['download-json', 'json'], ['download-csv', 'csv']])
-    for (const event of ['pointerdown', 'focus', 'click']) document.getElementById(id).addEventListener(event, () => { if (downloads) $(id).href = downloads[kind](); });
+  for (const [id, kind] of [['download-json', 'json'], ['download-csv', 'csv']]) V.hrefOnDemand($(id), () => (downloads ? downloads[kind]() : '#'));
   // The shot drawn where the animation stood, so that a drag shows the same moment; with
   // `sliding`, the charts drawn before stay, greyed, until flushFollow draws them anew.
   let drawnView = null;  // the view whose shot the viewer holds
@@ -776,13 +775,17 @@
     $('compare').classList.add('stale');
     $('sweep-chart').classList.add('stale');
   }
-  function flushFollow() {
-    if (!following) return;
-    const { answer, timer } = following;
-    clearTimeout(timer);
+  // Nothing waits any more: the timer stopped, the comparison and the what-if no longer greyed.
+  function settle() {
+    if (following) clearTimeout(following.timer);
     following = null;
     $('compare').classList.remove('stale');
     $('sweep-chart').classList.remove('stale');
+  }
+  function flushFollow() {
+    if (!following) return;
+    const { answer } = following;
+    settle();
     if (shown && shown.shot === answer) drawShot(answer, false);  // its charts
     compareWithOptimum(answer);
     runSweep(answer);
@@ -804,9 +807,7 @@
       if (sliding) {
         follow(answer);
       } else {
-        if (following) { clearTimeout(following.timer); following = null; }
-        $('compare').classList.remove('stale');
-        $('sweep-chart').classList.remove('stale');
+        settle();
         compareWithOptimum(answer);
         runSweep(answer);
       }

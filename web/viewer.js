@@ -651,9 +651,7 @@
         link.download = name + '.svg';
         // Written when it is about to be followed, not at each drawing: a chart's text is long, and a
         // slider redraws every chart (issue 67: the page follows the hand).
-        link.href = '#';
-        const write = () => { link.href = 'data:image/svg+xml;charset=utf-8,' + encodeURIComponent(new XMLSerializer().serializeToString(figure)); };
-        for (const event of ['pointerdown', 'focus', 'click']) link.addEventListener(event, write);
+        hrefOnDemand(link, () => 'data:image/svg+xml;charset=utf-8,' + encodeURIComponent(new XMLSerializer().serializeToString(figure)));
         caption.appendChild(link);
       }
       box.appendChild(caption);
@@ -661,6 +659,13 @@
     }
     container.appendChild(grid);
     return handle;
+  }
+
+  // A link whose address (a data: address, long to write) is written when it is about to be
+  // followed: pressed, focused or clicked, before the browser follows it.
+  function hrefOnDemand(link, address) {
+    link.href = '#';
+    for (const event of ['pointerdown', 'focus', 'click']) link.addEventListener(event, () => { link.href = address(); });
   }
 
   // The series as CSV: one row per frame, SI units.
@@ -674,5 +679,5 @@
     return lines.join('\n') + '\n';
   }
 
-  global.TrebuchetViewer = { render, quantity, unitOf, significant, describeAssumptions, seriesCsv, chart, chartUnits, escapeHtml };
+  global.TrebuchetViewer = { render, quantity, unitOf, significant, describeAssumptions, seriesCsv, chart, chartUnits, escapeHtml, hrefOnDemand };
 })(typeof window !== 'undefined' ? window : globalThis);

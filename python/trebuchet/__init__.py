@@ -88,12 +88,20 @@ def _warn(record):
                           "the engine goes under its input's key (fields())", TrebuchetWarning, stacklevel=3)
 
 
+def _refusal(answer):
+    """The TrebuchetError of the library's error object ({"error", "kind", "names"}); None for any other answer."""
+    if isinstance(answer, dict) and set(answer) == {"error", "kind", "names"}:
+        return TrebuchetError(answer["error"], answer["kind"], answer["names"])
+    return None
+
+
 def _call(function, request):
     request = _plain(request, "")
     text = json.dumps(request, allow_nan=False)
     answer = json.loads(function(text))
-    if isinstance(answer, dict) and set(answer) == {"error", "kind", "names"}:
-        raise TrebuchetError(answer["error"], answer["kind"], answer["names"])
+    refused = _refusal(answer)
+    if refused:
+        raise refused
     for record in answer if isinstance(answer, list) else [answer]:
         _warn(record)
     return answer
@@ -214,9 +222,8 @@ def contest(m, *, machine="hinged", **options):
         return answer
     best = {}  # each machine's best, or the TrebuchetError of the error object it was refused with
     for name, record in answer.items():
-        refused = set(record) == {"error", "kind", "names"}
-        best[name] = TrebuchetError(record["error"], record["kind"], record["names"]) if refused else record
-        if not refused:
+        best[name] = _refusal(record) or record
+        if best[name] is record:
             _warn(record)
     return best
 

@@ -93,6 +93,14 @@ DesignValues attested_of(const json& given, const std::string& where, const std:
   return read_input_values(plain, where, op_complete);
 }
 
+// The values of a request's "design" with its "over" laid on them, its keys no reader knows in
+// `passed` and its own settings in `own`. The notes of what "over" replaced are the programs';
+// a request's "over" is its caller's own.
+DesignValues design_values_of(const json& request, json& passed, SettingsValues& own) {
+  std::vector<std::string> notes;
+  return overlay_flags(read_design_values(request["design"], "design", &passed, &own), over_of(request, op_shot), "design", notes);
+}
+
 // A value given as a range or a spread, completed at its middle (a range's midpoint, a spread's mean).
 double middle(const Spread& spread) { return spread.kind == Spread::Kind::uniform ? (spread.a + spread.b) / 2 : spread.a; }
 
@@ -221,9 +229,7 @@ ordered_json sweep(const json& request) {
   const WhatIf what_if = parse_what_if(text_of(request["vary"], "vary"), static_cast<int>(points), "vary");
   json passed = json::object();
   SettingsValues own;
-  std::vector<std::string> notes;  // the programs print them; a request's "over" is its caller's own
-  const DesignValues values = overlay_flags(read_design_values(request["design"], "design", &passed, &own), over_of(request, op_shot), "design",
-                                            notes);
+  const DesignValues values = design_values_of(request, passed, own);
   DesignCheck check;
   check.settings = shot_settings(overlay(own, settings_values_of(request, req_sweep)));  // the request's over the design's own
   check.material = material_of_request(request, op_shot);
@@ -239,9 +245,7 @@ ordered_json compare(const json& request) {
     throw Error(ErrorKind::usage, "{{design}} is missing; give the engine, e.g. {\"design\": {\"L1\": \"6.13m\", ...}}");
   json passed = json::object();
   SettingsValues own;
-  std::vector<std::string> notes;  // the programs print them; a request's "over" is its caller's own
-  const DesignValues values = overlay_flags(read_design_values(request["design"], "design", &passed, &own), over_of(request, op_shot), "design",
-                                            notes);
+  const DesignValues values = design_values_of(request, passed, own);
   DesignCheck check;
   check.material = material_of_request(request, op_shot);
   // A contest's limits, each column measured against them (contest.hpp).

@@ -51,13 +51,12 @@ DesignValues over_of(const json& request, unsigned operation, std::vector<Spread
                   "over." + key + " is no input of the engine that this request takes (fields()); give a setting beside " +
                       "the design, an input of the engine in over");
   }
-  std::vector<SpreadInput> taken;
-  const json plain = take_spreads(over, operation, "over", spreads ? *spreads : taken, at);
-  if (!taken.empty() && !at)  // a range for one shot: the design's own would be refused alike (read_design_values)
-    throw Error(ErrorKind::usage,
-                "over." + taken.front().input.name + ": '" + over[taken.front().input.name].get<std::string>() +
-                    "' is a range or a spread; give one value (ranges and spreads are for monte_carlo)");
-  return read_input_values(plain, "over", operation);
+  if (!spreads && !at) {  // one shot's values: a range is refused, as in the design itself
+    refuse_spreads(over, "over");
+    return read_input_values(over, "over", operation);
+  }
+  std::vector<SpreadInput> completed_at;  // complete's: each range at `at`, not kept
+  return read_input_values(take_spreads(over, operation, "over", spreads ? *spreads : completed_at, at), "over", operation);
 }
 
 std::string text_of(const json& value, const std::string& key) {

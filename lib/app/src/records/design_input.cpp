@@ -522,9 +522,6 @@ DesignValues overlay_flags(DesignValues values, const DesignValues& flags, const
   return values;
 }
 
-namespace {
-
-// A range or a spread is a Monte Carlo run's (take_spreads takes them out first): here refused.
 void refuse_spreads(const nlohmann::json& object, const std::string& where) {
   if (const std::optional<UncertainInput> first = first_spread(object, op_shot, where)) {
     const std::string text = object.contains(first->name) && object[first->name].is_string() ? object[first->name].get<std::string>()
@@ -535,8 +532,6 @@ void refuse_spreads(const nlohmann::json& object, const std::string& where) {
                     "shot with one design object, or monte_carlo)");
   }
 }
-
-}  // namespace
 
 DesignValues read_input_values(const nlohmann::json& object, const std::string& where, unsigned operation) {
   DesignValues v;

@@ -79,6 +79,11 @@ nlohmann::json take_spreads(const nlohmann::json& object, unsigned operation, co
 /// read without copying `object`; none when each is one value. Throws as take_spreads does.
 std::optional<UncertainInput> first_spread(const nlohmann::json& object, unsigned operation, const std::string& where);
 
+/// Refuses a shot's value given as a range or a spread (a Monte Carlo run's: take_spreads takes
+/// them out first), naming the first: "where.M: '2t..3t' is a range or a spread; give one value"
+/// (Error(usage)).
+void refuse_spreads(const nlohmann::json& object, const std::string& where);
+
 /// Whether a design (design_object: a record reads as its design) holds a range or a spread of
 /// a shot's value, which makes it a Monte Carlo run's.
 bool holds_spreads(const nlohmann::json& design);
