@@ -786,6 +786,7 @@
     if (!following) return;
     const { answer } = following;
     settle();
+    saveState();  // the link, written once the hand rests (it lays the address bar out again)
     if (shown && shown.shot === answer) drawShot(answer, false);  // its charts
     compareWithOptimum(answer);
     runSweep(answer);
@@ -796,7 +797,7 @@
   function update(how) {
     document.documentElement.dataset.view = state.view;  // the phone's edit view puts the animation first (style.css)
     showMachineNote();
-    saveState();
+    if (!(how && how.sliding)) saveState();  // a slide's link follows at rest (flushFollow)
     if (state.view === 'design') {
       if (runDesign()) runShot(engineOf(designed), "The optimal engine's shot");
       else refuseShot('No engine to shoot: the givens are refused (the message under them says why).');
@@ -975,7 +976,7 @@
     monteCarlo: (request) => call('monteCarlo', request),
     fields: () => call('fields', {}),
     monteCarloParallel,
-    state: () => JSON.parse(JSON.stringify(state)),
+    state: () => { flushFollow(); return JSON.parse(JSON.stringify(state)); },
     current: () => (shown ? shown.shot : null),  // the shot the page shows, as shot() answered it
     viewer: () => viewer,
     whatIf: () => { flushFollow(); return lastSweep; },  // the what-if sweep drawn in the edit view: its request and answer

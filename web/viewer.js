@@ -408,8 +408,11 @@
     const q = (v, dim, digits) => quantity(v, dim, system, digits);
     // options.keepCharts: the charts drawn before stay, greyed, for the caller to draw anew once
     // the hand rests (a slider's move draws the scene and the figures only).
+    // They stay in the page, not taken out and put back: laid out and painted again, they would
+    // cost a move more than the rest of its drawing.
     const keptCharts = options.keepCharts ? container.querySelector('.tv-charts') : null;
-    container.innerHTML = '';
+    for (const child of [...container.children]) if (child !== keptCharts) child.remove();
+    const put = (node) => container.insertBefore(node, keptCharts);
     const e = shot.engine, s = shot.series;
     const head = document.createElement('div');
     head.className = 'tv-head';
@@ -450,7 +453,7 @@
     const lossRows = losses.map(([k, v]) => row(lossNames[k] || k, q(v, 'energy') + ' (' + significant(100 * v / shot.energy.delta_U, 3) + ' % of ΔU)',
       'work taken from the bodies up to the release (docs/verifier.md, "Real engines")')).join('');
     head.innerHTML = `<p class="tv-scene">This shot: <b>${escapeHtml(describeAssumptions(shot, system))}</b>.</p>${warnings}${strength}${notes}`;
-    container.appendChild(head);
+    put(head);
     const tables = document.createElement('div');
     tables.className = 'tv-tables';
     tables.innerHTML = `<table class="tv-figures"><caption>the shot</caption>
@@ -495,7 +498,7 @@
     // px on a screen and 18 on a projector (html.projector), at the size it is drawn: the
     // container's width, or less where the stage's height (52 % of the window) bounds it.
     const projector = document.documentElement.classList.contains('projector');
-    container.appendChild(stage);  // to measure the width it is drawn at
+    put(stage);  // to measure the width it is drawn at
     // The scene and the answer over it share the 52 % of the window's height the scene had alone.
     const room = 0.52 * (window.innerHeight || 760) - headline.offsetHeight;
     const drawn = Math.min(stage.clientWidth || 760, 2 * room);
@@ -515,8 +518,7 @@
     phaseLine.className = 'tv-phase';
     phaseLine.setAttribute('aria-live', 'off');
     stage.insertBefore(phaseLine, controls);
-    container.appendChild(stage);
-    container.appendChild(tables);
+    put(tables);
     const f = s.frames, r = s.moments.release, tRelease = f.t[r], tEnd = tRelease + s.flight.time;
     // The engine's view holds every point of phases I and II; the flight's view the whole path.
     const xs = [-0.3 * e.H, 0.3 * e.H], ys = [0, e.H];
@@ -611,7 +613,6 @@
     const handle = { redraw: draw, setTime: (t) => { time = Math.max(0, Math.min(tEnd, t)); draw(); }, time: () => time, playing: () => playing, duration: tEnd };
     if (keptCharts) {
       keptCharts.classList.add('stale');
-      container.appendChild(keptCharts);
       return handle;
     }
     // Each chart's units are chosen as the scene's (chartUnits), at the width a chart's box has in

@@ -32,11 +32,12 @@ const url = pathToFileURL(resolve(pagePath)).href;
 const link = (state) => url + '#' + new URLSearchParams(Object.fromEntries(Object.entries(state).map(([k, v]) => [k, typeof v === 'string' ? v : JSON.stringify(v)]))).toString();
 // tab:Alcala_la_Vieja's Ca engine.
 const ca = { L1: 4.13, L2: 0.88, L3: 1.5044566117531541, L4: 3.55, M: 3110, m: 50, mb: 174 };
-// Moves the slider of `key` by `factor`, as a hand drags it.
+// Moves the slider of `key` by `factor` and lets go, as a hand drags it.
 const drag = (page, key, factor) => page.evaluate(([k, f]) => {
   const slider = document.querySelector(`#sliders input[data-key="${k}"]`);
   slider.value = String(Number(slider.value) * f);
   slider.dispatchEvent(new Event('input'));
+  slider.dispatchEvent(new Event('change'));
 }, [key, factor]);
 // Every visible text of the SVGs inside `selector`: its box and its size as drawn [CSS px].
 const svgTexts = (page, selector) => page.evaluate((s) => [...document.querySelectorAll(`${s} svg text`)]
@@ -379,13 +380,14 @@ try {
       slider.value = String(Number(slider.value) * 1.1);
       slider.dispatchEvent(new Event('input'));
       const seen = { charts: Boolean(document.querySelector('.tv-charts.stale')), compare: document.getElementById('compare').classList.contains('stale'),
-        R: window.trebuchet.current().R, headline: document.querySelector('.tv-headline').textContent };
+        R: window.trebuchet.current().R, headline: document.querySelector('.tv-headline').textContent, linked: location.hash.includes('L4') };
       slider.dispatchEvent(new Event('change'));
       return { moving: seen, resting: { charts: document.querySelectorAll('.tv-charts').length, stale: document.querySelectorAll('.stale').length,
-        L4: window.trebuchet.state().edit.L4, swept: window.trebuchet.whatIf().request.design.L4 } };
+        linked: location.hash.includes('L4'), L4: window.trebuchet.state().edit.L4, swept: window.trebuchet.whatIf().request.design.L4 } };
     });
     check(moving.charts && moving.compare && moving.headline.includes(moving.R.toFixed(1)) && resting.charts === 1 && resting.stale === 0 && resting.swept === resting.L4,
       `while L4 moves the shot is drawn (${moving.headline.slice(0, 24)}…) and the charts and the comparison wait, greyed; let go, they are drawn for L4 ${resting.swept} m`);
+    check(!moving.linked && resting.linked, `the link is written when the hand lets go, not at each move: while moving it carries L4? ${moving.linked}; let go? ${resting.linked}`);
     await context.close();
   }
   {
