@@ -194,11 +194,35 @@
   const COLOURS = { frame: '#8b5a2b', beam: '#a0522d', sling: '#1f5fbf', stone: '#d62728', weight: '#555', ground: '#6b8e23',
                     theta: '#b22222', psi: '#1f7a1f', phi: '#1f5fbf' };
 
+  // Whether the segment a-b ([x, y] each) meets the box [left, top, right, bottom] (Liang and
+  // Barsky's clipping: the part of the segment inside each of the box's four sides).
+  function crosses(a, b, box) {
+    let t0 = 0, t1 = 1;
+    const dx = b[0] - a[0], dy = b[1] - a[1];
+    for (const [p, q] of [[-dx, a[0] - box[0]], [dx, box[2] - a[0]], [-dy, a[1] - box[1]], [dy, box[3] - a[1]]]) {
+      if (p === 0) { if (q < 0) return false; continue; }
+      const t = q / p;
+      if (p < 0) { if (t > t1) return false; t0 = Math.max(t0, t); } else { if (t < t0) return false; t1 = Math.min(t1, t); }
+    }
+    return true;
+  }
+
   // Draws the engine of frame i into `g`, with view transform `to` ([x, y] in metres -> px).
   function drawEngine(g, shot, i, to, scale, options) {
     const f = shot.series.frames, H = shot.series.pivot_height, e = shot.engine;
     const P = (x, y) => to(x, y);
-    const line = (a, b, colour, w, dash) => svg('line', { x1: a[0], y1: a[1], x2: b[0], y2: b[1], stroke: colour, 'stroke-width': w, 'stroke-linecap': 'round', 'stroke-dasharray': dash || '' }, g);
+    // The engine's parts as drawn (lines 2 px wide or more, and the round bodies): the angles'
+    // labels keep clear of them. Each a segment a-b and its half width; a body, a point and its radius.
+    const parts = [];
+    const line = (a, b, colour, w, dash) => {
+      if (w >= 2) parts.push({ a, b, pad: w / 2 });
+      const attributes = { x1: a[0], y1: a[1], x2: b[0], y2: b[1], stroke: colour, 'stroke-width': w, 'stroke-linecap': 'round', 'stroke-dasharray': dash || '' };
+      return svg('line', w >= 2 ? Object.assign(attributes, { class: 'tv-part' }) : attributes, g);
+    };
+    const body = (c, r, colour) => {
+      parts.push({ a: c, b: c, pad: r });
+      return svg('circle', { cx: c[0], cy: c[1], r, fill: colour, class: 'tv-part' }, g);
+    };
     const machine = e.machine || 'hinged';
     const pivot = P(f.pivot_x[i], H), hinge = P(f.hinge_x[i], f.hinge_y[i]), cw = P(f.counterweight_x[i], f.counterweight_y[i]), tip = P(f.tip_x[i], f.tip_y[i]);
     if (machine === 'floating-arm') {
@@ -214,29 +238,38 @@
     }
     line(hinge, tip, COLOURS.beam, 6);
     if (machine === 'fixed') line(hinge, cw, COLOURS.beam, 6); else line(hinge, cw, '#222', 2);
-    svg('circle', { cx: cw[0], cy: cw[1], r: Math.max(4, (0.12 * e.L2 + 0.04 * H) * scale), fill: COLOURS.weight }, g);
-    svg('circle', { cx: pivot[0], cy: pivot[1], r: 3.5, fill: 'black' }, g);
+    body(cw, Math.max(4, (0.12 * e.L2 + 0.04 * H) * scale), COLOURS.weight);
+    body(pivot, 3.5, 'black');
     const released = f.phase[i] === 'III';
     if (!released) {
       const stone = P(f.projectile_x[i], f.projectile_y[i]);
       line(tip, stone, COLOURS.sling, 2);
-      svg('circle', { cx: stone[0], cy: stone[1], r: Math.max(3.5, 0.03 * H * scale), fill: COLOURS.stone }, g);
+      body(stone, Math.max(3.5, 0.03 * H * scale), COLOURS.stone);
     }
     if (options.angles) {
-      // Each label is moved down or up, a line at a time, off the labels already placed and the
-      // boxes the scene keeps clear (its caption): ψ and θ meet where the hinge nears the pivot.
+      // Each label goes beyond its arc's middle, or the nearest place to it (farther out, round
+      // the arc, or a line up or down) that is inside the scene and clear of the engine's parts,
+      // of the labels already placed and of the boxes the scene keeps clear (its caption).
       const placed = (options.keepClear || []).slice();
       const inside = (x, y, w, h) => !options.bounds || (y - h >= 0 && y + 4 <= options.bounds.height && x - w / 2 >= 0 && x + w / 2 <= options.bounds.width);  // 4: below the baseline
-      const clear = (x, y, w, h) => inside(x, y, w, h) && !placed.some((b) => x - w / 2 < b.x + b.w / 2 && b.x - b.w / 2 < x + w / 2 && y - h < b.y && b.y - b.h < y);
-      // Returns where the label goes, [x, y]: x kept inside the scene, y moved off the others.
-      const place = (x0, y, label) => {
+      const overLabel = (x, y, w, h) => placed.some((b) => x - w / 2 < b.x + b.w / 2 && b.x - b.w / 2 < x + w / 2 && y - h < b.y && b.y - b.h < y);
+      const overPart = (x, y, w, h) => parts.some((part) => crosses(part.a, part.b, [x - w / 2 - part.pad, y - h - part.pad, x + w / 2 + part.pad, y + 4 + part.pad]));
+      // Returns where the label goes, [x, y] (its middle, its baseline), about `centre` at `radius`, `mid` radians.
+      const place = (centre, radius, mid, label) => {
         const w = textWidth(label, 12), h = 14;
-        const x = options.bounds ? Math.min(Math.max(x0, w / 2 + 2), options.bounds.width - w / 2 - 2) : x0;
-        for (const step of [0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6]) {
-          if (clear(x, y + step * h, w, h)) { placed.push({ x, y: y + step * h, w, h }); return [x, y + step * h]; }
-        }
-        placed.push({ x, y, w, h });
-        return [x, y];
+        const at = (k, turn, lines) => [centre[0] + k * radius * Math.cos(mid + turn), centre[1] - k * radius * Math.sin(mid + turn) + 4 + lines * h];
+        // Round the arc at 1.7 times its radius and farther out, or a line up or down from its
+        // middle: the nearest its angle's vertex first, and of those as near, the least turned.
+        const ideal = at(1.7, 0, 0), candidates = [], turns = [0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7, 8, -8];
+        for (const k of [1.7, 2.2, 2.8, 3.6, 4.6]) for (const turn of turns) candidates.push(at(k, 0.39 * turn, 0));
+        for (const lines of turns.slice(1, 13)) candidates.push(at(1.7, 0, lines));
+        const fromVertex = (p) => Math.round(Math.hypot(p[0] - centre[0], p[1] - 4 - centre[1]));
+        candidates.sort((p, q) => fromVertex(p) - fromVertex(q));  // stable: the order above among those as near
+        const kept = ([x0, y]) => [options.bounds ? Math.min(Math.max(x0, w / 2 + 2), options.bounds.width - w / 2 - 2) : x0, y];
+        const spot = candidates.map(kept).find(([x, y]) => inside(x, y, w, h) && !overLabel(x, y, w, h) && !overPart(x, y, w, h)) ||
+          candidates.map(kept).find(([x, y]) => inside(x, y, w, h) && !overLabel(x, y, w, h)) || kept(ideal);
+        placed.push({ x: spot[0], y: spot[1], w, h });
+        return spot;
       };
       const arc = (centre, radius, from, to, colour, label) => {
         // Site angles in degrees from +x, counterclockwise; the view flips y.
@@ -246,7 +279,7 @@
         svg('path', { d: `M${p0[0]} ${p0[1]} A${radius} ${radius} 0 ${large} ${sweep} ${p1[0]} ${p1[1]}`, fill: 'none', stroke: colour, 'stroke-width': 2 }, g);
         // The label beyond the arc's middle; for a small angle, beside its reference line.
         const mid = Math.abs(to - from) < 12 ? Math.min(a0, a1) - 0.35 : (a0 + a1) / 2;
-        const [x, y] = place(centre[0] + 1.7 * radius * Math.cos(mid), centre[1] - 1.7 * radius * Math.sin(mid) + 4, label);
+        const [x, y] = place(centre, radius, mid, label);
         text(g, x, y, label, { fill: colour, 'text-anchor': 'middle', 'font-weight': 'bold', 'font-size': 12, stroke: 'white', 'stroke-width': 3, 'paint-order': 'stroke' });
       };
       const theta = f.theta_deg[i], psi = f.psi_deg[i], phi = f.phi_deg[i];
@@ -500,9 +533,11 @@
     const projector = document.documentElement.classList.contains('projector');
     put(stage);  // to measure the width it is drawn at
     // The scene and the answer over it share the 52 % of the window's height the scene had alone.
-    const room = 0.52 * (window.innerHeight || 760) - headline.offsetHeight;
-    const drawn = Math.min(stage.clientWidth || 760, 2 * room);
-    const width = Math.floor(Math.min(760, Math.max(280, drawn * 11 / (projector ? 18 : 11)))), height = width / 2, foot = 8;
+    // Its shape is the room's, from 0.35 to 0.6 as high as wide, so that the engine is drawn as
+    // large as the room allows: the full width of a projector's stage, taller on a phone.
+    const room = 0.52 * (window.innerHeight || 760) - headline.offsetHeight, across = stage.clientWidth || 760;
+    const aspect = Math.min(0.6, Math.max(0.35, room / across)), drawn = Math.min(across, room / aspect);
+    const width = Math.floor(Math.min(760, Math.max(280, drawn * 11 / (projector ? 18 : 11)))), height = width * aspect, foot = 8;
     const scene = svg('svg', { xmlns: SVGNS, viewBox: `0 0 ${width} ${height}`, width: '100%', class: 'tv-scene-svg', role: 'img' });
     scene.style.maxHeight = Math.max(room, 140) + 'px';
     stage.appendChild(scene);
@@ -569,7 +604,7 @@
         const at = v.to(stone[0], stone[1]);
         svg('circle', { cx: at[0], cy: at[1], r: flying ? 4 : Math.max(3.5, 0.03 * e.H * v.scale), fill: COLOURS.stone }, g);
       }
-      const banner = modelWarnings.length ? [{ x: width / 2, y: 42, w: 0.8 * 30 * 'NOT PHYSICAL'.length, h: 34 }] : [];  // bold capitals: 0.8 em each
+      const banner = modelWarnings.length ? [{ x: width / 2, y: 48, w: 0.8 * 30 * 'NOT PHYSICAL'.length, h: 40 }] : [];  // bold capitals: 0.8 em each; the font's ascent and descent
       drawEngine(g, shot, i, v.to, v.scale, { angles: angles.checked && !flying, keepClear: banner, bounds: { width, height } });
       const held = shot.t_counterweight_free;  // the whipper's: its counterweight leaves the arm first
       const first = held === undefined ? 'phase I: the projectile slides in the trough'

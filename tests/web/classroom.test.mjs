@@ -132,23 +132,37 @@ try {
       `at 1280x720 on a projector the first screen holds the animation (${first.scene}), its play button (${first.play}) and ${first.sliders} of the ${first.of} sliders`);
     await context.close();
   }
-  // Issue 67: the shot's answer (R, eps, Q and the beam's verdict) on the projector's first screen,
-  // over the scene in the projector's type, in the edit and the design views, at both sizes.
-  for (const [width, height] of [[1280, 720], [1920, 1080]]) {
-    const { page, context } = await open(browser, link({ view: 'edit' }), { width, height });
-    await page.click('#projector');
-    for (const view of ['edit', 'design']) {
-      await page.click(`nav button[data-view="${view}"]`);
-      const seen = await page.evaluate(() => {
-        const line = document.querySelector('.tv-headline'), scene = document.querySelector('.tv-scene-svg');
-        const r = line.getBoundingClientRect(), s = scene.getBoundingClientRect();
-        return { text: line.textContent, bottom: r.bottom, px: parseFloat(getComputedStyle(line).fontSize), sceneTop: s.top, sceneBottom: s.bottom, R: window.trebuchet.current().R };
-      });
-      check(seen.bottom <= height && seen.sceneTop >= seen.bottom - 0.5 && seen.sceneBottom <= height && seen.px >= 18 &&
-        /^R = [\d.,]+ m · ε = [\d.]+ % · Q = [\d.]+ % · the beam (holds|breaks)/.test(seen.text),
-        `at ${width}x${height} on a projector, ${view} view: "${seen.text}" in ${seen.px} px, its foot at ${seen.bottom.toFixed(0)} px, the scene under it to ${seen.sceneBottom.toFixed(0)} px (of ${height})`);
+  // Issue 67: the shot's answer (R, eps, Q and the beam's verdict) on the first screen, over the
+  // scene, in the projector's type on a projector; the scene under it begins on the first screen
+  // and spans its stage's width (the engine as large as the room allows); Copy link leaves the
+  // header's height as it was. At the three sizes, the projector on and off; the edit and the
+  // design views on a wide screen, the edit view on a phone (its design view opens on the givens).
+  for (const [width, height] of [[1280, 720], [1920, 1080], [390, 844]]) {
+    for (const projector of [false, true]) {
+      const { page, context } = await open(browser, link({ view: 'edit' }), { width, height });
+      if (projector) await page.click('#projector');
+      for (const view of width > 400 ? ['edit', 'design'] : ['edit']) {
+        await page.click(`nav button[data-view="${view}"]`);
+        await page.evaluate(() => window.scrollTo(0, 0));
+        const seen = await page.evaluate(() => {
+          const line = document.querySelector('.tv-headline'), scene = document.querySelector('.tv-scene-svg'), stage = document.querySelector('.tv-stage');
+          const r = line.getBoundingClientRect(), s = scene.getBoundingClientRect();
+          return { text: line.textContent, bottom: r.bottom, px: parseFloat(getComputedStyle(line).fontSize), sceneTop: s.top, sceneBottom: s.bottom, sceneWidth: s.width, stageWidth: stage.clientWidth };
+        });
+        const where = `at ${width}x${height}${projector ? ' on a projector' : ''}, ${view} view`;
+        check(seen.bottom <= height && seen.sceneTop >= seen.bottom - 0.5 && seen.sceneTop < height && (!projector || seen.px >= 18) &&
+          /^R = [\d.,]+ m · ε = [\d.]+ % · Q = [\d.]+ % · the beam (holds|breaks)/.test(seen.text),
+          `${where}: "${seen.text}" in ${seen.px} px, its foot at ${seen.bottom.toFixed(0)} px, the scene under it from ${seen.sceneTop.toFixed(0)} to ${seen.sceneBottom.toFixed(0)} px (of ${height})`);
+        check(seen.sceneWidth >= seen.stageWidth - 1, `${where}: the scene spans its stage, ${seen.sceneWidth.toFixed(0)} px of ${seen.stageWidth} px`);
+      }
+      const header = () => page.evaluate(() => document.querySelector('header').getBoundingClientRect().height);
+      const before = await header();
+      await page.click('#share');
+      await page.waitForTimeout(100);
+      const after = await header();
+      check(after === before, `${width}x${height}${projector ? ' on a projector' : ''}: Copy link leaves the header ${before} px tall (${after} px after)`);
+      await context.close();
     }
-    await context.close();
   }
 
   // ---- 3. no words over one another -----------------------------------------------------------------
@@ -190,13 +204,30 @@ try {
       `${selects.length - cut.length} of ${selects.length} selects show their words whole${cut.length ? ' (cut: ' + cut.map((s) => s.id).join(', ') + ')' : ''}; the animation's caption ${caption} px`);
     await context.close();
   }
-  // The angles' labels, every twentieth of the swing on the hinged and the fixed machine: none over
-  // another, all inside the scene.
+  // The angles' labels, every twentieth of the swing on the hinged machine at the three sizes with
+  // the projector on and off, and on the fixed machine: none over another or over a part of the
+  // engine (a line of the beam, the frame, the arm or the sling, a body), all inside the scene.
   // And pytrebuchet's default whipper, NOT PHYSICAL: its labels clear of that word too.
   const pytrebuchet = { view: 'edit', machine: 'whipper', edit: { L1: 4, L2: 2, L3: 4, L4: 4, M: 100, m: 3, mb: 10, theta_i_deg: 30, H: 5 } };
-  for (const [machine, state, size] of [['hinged', { machine: 'hinged' }, [1280, 800]], ['fixed', { machine: 'fixed' }, [1280, 800]],
-    ['whipper', pytrebuchet, [390, 844]], ['whipper', pytrebuchet, [1920, 1080]]]) {
+  const screens = [[1920, 1080], [1280, 720], [390, 844]].flatMap((size) => [false, true].map((projector) => ['hinged', { machine: 'hinged' }, size, projector]));
+  // The parts a label's box meets: each part's outline sampled every half pixel on the screen (not
+  // the page's own clipping), less a pixel of the label's white halo.
+  const partsUnder = (page, box) => page.evaluate((b) => [...document.querySelectorAll('.tv-stage .tv-part')].filter((part) => {
+    const m = part.getScreenCTM(), at = (x, y) => [m.a * x + m.c * y + m.e, m.b * x + m.d * y + m.f];
+    const line = part.tagName === 'line', n = (name) => Number(part.getAttribute(name));
+    const [a, c] = line ? [at(n('x1'), n('y1')), at(n('x2'), n('y2'))] : [at(n('cx'), n('cy')), at(n('cx'), n('cy'))];
+    const pad = (line ? n('stroke-width') / 2 : n('r')) * m.a - 1;
+    const steps = Math.ceil(2 * Math.hypot(c[0] - a[0], c[1] - a[1])) + 1;
+    for (let k = 0; k <= steps; k++) {
+      const x = a[0] + (c[0] - a[0]) * k / steps, y = a[1] + (c[1] - a[1]) * k / steps;
+      if (x > b.left - pad && x < b.right + pad && y > b.top - pad && y < b.bottom + pad) return true;
+    }
+    return false;
+  }).map((part) => part.tagName), box);
+  for (const [machine, state, size, projector] of [...screens, ['fixed', { machine: 'fixed' }, [1280, 800], false],
+    ['whipper', pytrebuchet, [390, 844], false], ['whipper', pytrebuchet, [1920, 1080], false]]) {
     const { page, context } = await open(browser, link(state), { width: size[0], height: size[1] });
+    if (projector) await page.click('#projector');
     const release = await page.evaluate(() => window.trebuchet.current().t_release);
     let worst = null, times = 0;
     for (let k = 0; k <= 20; k++) {
@@ -208,10 +239,11 @@ try {
       for (const a of labels.filter((x) => x.text !== 'NOT PHYSICAL')) {
         const out = a.box.top < a.scene.top - 0.5 || a.box.bottom > a.scene.bottom + 0.5 || a.box.left < a.scene.left - 0.5 || a.box.right > a.scene.right + 0.5;
         const over = labels.find((b) => b !== a && overlap(a.box, b.box));
-        if ((out || over) && !worst) worst = `at ${t.toFixed(3)} s "${a.text}" ${out ? 'leaves the scene' : 'lies over "' + over.text + '"'}`;
+        const under = await partsUnder(page, a.box);
+        if ((out || over || under.length) && !worst) worst = `at ${t.toFixed(3)} s "${a.text}" ${out ? 'leaves the scene' : over ? 'lies over "' + over.text + '"' : 'lies over the engine (' + under.join(', ') + ')'}`;
       }
     }
-    check(!worst, `the ${machine} machine's angle labels at ${times} moments of the swing (${size.join('x')}): ${worst || 'none over another, all inside the scene'}`);
+    check(!worst, `the ${machine} machine's angle labels at ${times} moments of the swing (${size.join('x')}${projector ? ', projector' : ''}): ${worst || 'none over another or over the engine, all inside the scene'}`);
     await context.close();
   }
 

@@ -172,6 +172,7 @@ try {
     const slider = document.querySelector('#sliders input[data-key="L4"]');
     slider.value = String(Number(slider.value) * 0.9);
     slider.dispatchEvent(new Event('input'));
+    slider.dispatchEvent(new Event('change'));  // let go
   });
   // A drag of L1 and θi, which set the pivot's height: the edited engine still shoots (a stale H
   // in the edited engine would be refused by the program).
@@ -180,6 +181,7 @@ try {
       const slider = document.querySelector(`#sliders input[data-key="${key}"]`);
       slider.value = String(Number(slider.value) * 1.05);
       slider.dispatchEvent(new Event('input'));
+      slider.dispatchEvent(new Event('change'));
     }
     return { shot: window.trebuchet.current(), text: document.getElementById('shot-message').textContent.slice(0, 160) };
   });
