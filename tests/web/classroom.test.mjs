@@ -4,17 +4,21 @@
 //    a link leaves the layout out, carries the edited values to the digits shown, and fits a code
 //    of version <= 10 once hosted; it opens the same engine again;
 // 2. a projector: every word of the charts and the animation at least 18 CSS px at 1920x1080,
-//    the charts full width; at 1280x720 the animation and every slider on the first screen;
+//    the charts full width; at 1280x720 the animation and every slider on the first screen; at
+//    1920x1080, 1280x720 and 390x844, on and off the projector, the shot's answer and the scene's
+//    top on the first screen, the scene spanning its stage; the phone's edit view;
 // 3. no words over one another: a slider's words and its slider, the angles' labels through the
-//    swing (and inside the scene), the phone's caption, a select's words within its box;
+//    swing (inside the scene, over no part of the engine, at the three sizes on and off the
+//    projector), the phone's caption, a select's words within its box;
 // 4. another machine is explained, and its own optimum is the program's; the whipper opens one that throws;
 // 5. a pin without a release says why, in its row and on its chart;
 // 6. a download is shot again by its own command, with the page's settings, as the page shot it,
 //    and, given to trebuchet-verify itself, as a record that reads back;
 // 7. a link's value the page cannot take is named on the page, the rest kept;
-// 8. issue 67's small ones: Copy link's word a toast that moves nothing, the QR dialog opened at
-//    its top, a hosted page that asks its server for no icon, a link without the values the shot
-//    does not read.
+// 8. issue 67's small ones: at the three sizes on and off the projector, Copy link's word a toast
+//    that moves nothing, the QR dialog opened at its top, a typed refusal that keeps the last shot
+//    greyed; a hosted page that asks its server for no icon, a link without the values the shot
+//    does not read; a slider that draws the shot at each move, the rest and the link at rest.
 // Each check prints how close it came. Exit 1 on any failure.
 import { execFileSync } from 'node:child_process';
 import { createServer } from 'node:http';
@@ -155,12 +159,6 @@ try {
           `${where}: "${seen.text}" in ${seen.px} px, its foot at ${seen.bottom.toFixed(0)} px, the scene under it from ${seen.sceneTop.toFixed(0)} to ${seen.sceneBottom.toFixed(0)} px (of ${height})`);
         check(seen.sceneWidth >= seen.stageWidth - 1, `${where}: the scene spans its stage, ${seen.sceneWidth.toFixed(0)} px of ${seen.stageWidth} px`);
       }
-      const header = () => page.evaluate(() => document.querySelector('header').getBoundingClientRect().height);
-      const before = await header();
-      await page.click('#share');
-      await page.waitForTimeout(100);
-      const after = await header();
-      check(after === before, `${width}x${height}${projector ? ' on a projector' : ''}: Copy link leaves the header ${before} px tall (${after} px after)`);
       await context.close();
     }
   }
@@ -326,37 +324,47 @@ try {
     await context.close();
   }
   // ---- 8. issue 67's small ones ---------------------------------------------------------------------
-  {
-    const { page, context } = await open(browser, link({ view: 'edit' }), { width: 1280, height: 720 });
-    await page.click('#projector');
-    const header = async () => page.evaluate(() => document.querySelector('header').getBoundingClientRect().height);
-    const before = await header();
-    await page.click('#share');
-    await page.waitForTimeout(100);
-    const toast = await page.evaluate(() => { const t = document.getElementById('toast'); return t.hidden ? '' : t.textContent; });
-    const after = await header();
-    check(after === before && /Link copied|Copy the address bar/.test(toast),
-      `Copy link says "${toast.slice(0, 60)}…" in a toast; the header ${before} px tall before, ${after} px after`);
-    await page.click('#qr');
-    const scrolled = await page.evaluate(() => document.getElementById('qr-dialog').scrollTop);
-    const warning = await page.evaluate(() => document.getElementById('qr-file').getBoundingClientRect().top - document.getElementById('qr-dialog').getBoundingClientRect().top);
-    check(scrolled === 0 && warning >= 0, `the QR dialog opens at its top: scrolled ${scrolled} px, its warning ${warning.toFixed(0)} px below the dialog's top`);
-    await context.close();
+  // At the three sizes, the projector on and off: Copy link's word in a toast, the header's height
+  // as it was; the QR dialog opened at its top; typing 180m into the design's R box passes "1" and
+  // "18", which the calculator refuses: the last good shot stays drawn, greyed, the refusal under
+  // the box and above the scene, not over it.
+  for (const [width, height] of [[1920, 1080], [1280, 720], [390, 844]]) {
+    for (const projector of [false, true]) {
+      const where = `${width}x${height}${projector ? ' on a projector' : ''}`;
+      const { page, context } = await open(browser, link({ view: 'edit' }), { width, height });
+      if (projector) await page.click('#projector');
+      const header = async () => page.evaluate(() => document.querySelector('header').getBoundingClientRect().height);
+      const before = await header();
+      await page.click('#share');
+      await page.waitForTimeout(100);
+      const toast = await page.evaluate(() => { const t = document.getElementById('toast'); return t.hidden ? '' : t.textContent; });
+      const after = await header();
+      check(after === before && /Link copied|Copy the address bar/.test(toast),
+        `${where}: Copy link says "${toast.slice(0, 40)}…" in a toast; the header ${before} px tall before, ${after} px after`);
+      await page.click('#qr');
+      const scrolled = await page.evaluate(() => document.getElementById('qr-dialog').scrollTop);
+      const warning = await page.evaluate(() => document.getElementById('qr-file').getBoundingClientRect().top - document.getElementById('qr-dialog').getBoundingClientRect().top);
+      check(scrolled === 0 && warning >= 0, `${where}: the QR dialog opens at its top: scrolled ${scrolled} px, its warning ${warning.toFixed(0)} px below the dialog's top`);
+      await page.click('#qr-dialog button');
+      await page.click('nav button[data-view="design"]');
+      const seen = () => page.evaluate(() => {
+        const viewer = document.getElementById('viewer'), message = document.getElementById('shot-message');
+        return { drawn: viewer.querySelectorAll('svg').length, stale: viewer.classList.contains('stale'), above: message.hidden ? null : message.getBoundingClientRect().bottom <= viewer.getBoundingClientRect().top + 0.5,
+          box: document.getElementById('design-message').textContent, R: window.trebuchet.current() && window.trebuchet.current().R };
+      });
+      const steps = [];
+      for (const text of ['1', '18', '180m']) {
+        await page.fill('#first', text);
+        steps.push([text, await seen()]);
+      }
+      const [one, eighteen, whole] = steps.map(([, step]) => step);
+      check(one.drawn > 0 && one.stale && one.above && /R/.test(one.box) && eighteen.stale && whole.drawn > 0 && !whole.stale && whole.above === null && whole.R > 0,
+        `${where}: typing 180m: ` + steps.map(([t, step]) => `"${t}" ${step.drawn} picture(s) drawn${step.stale ? ', greyed' : ''}${step.above ? ', the refusal above the scene' : ''}`).join('; ') +
+        `; the box's line says "${one.box.slice(0, 40)}…"`);
+      await context.close();
+    }
   }
   {
-    // Typing 180m into the design's R box passes "1" and "18", which the calculator refuses: the
-    // last good shot stays drawn, greyed, the refusal under the box and above the scene, not over it.
-    const { page, context } = await open(browser, url, { width: 1280, height: 720 });
-    const seen = () => page.evaluate(() => {
-      const viewer = document.getElementById('viewer'), message = document.getElementById('shot-message');
-      return { drawn: viewer.querySelectorAll('svg').length, stale: viewer.classList.contains('stale'), above: message.hidden ? null : message.getBoundingClientRect().bottom <= viewer.getBoundingClientRect().top + 0.5,
-        box: document.getElementById('design-message').textContent, R: window.trebuchet.current() && window.trebuchet.current().R };
-    });
-    const steps = [];
-    for (const text of ['1', '18', '180m']) {
-      await page.fill('#first', text);
-      steps.push([text, await seen()]);
-    }
     // Another view's refusal does not grey this view's shot under its own: reconstruct, refused,
     // shows no engine, not the design's.
     const refusing = await open(browser, link({ attested: { Lb: '9.5m', M: '-3t', m: '50kg' } }), { width: 1280, height: 720 });
@@ -364,11 +372,6 @@ try {
     const other = await refusing.page.evaluate(() => ({ drawn: document.querySelectorAll('#viewer svg').length, title: document.getElementById('shot-title').textContent }));
     check(other.drawn === 0 && /No engine to shoot/.test(other.title), `a refused reconstruction after the design's shot: ${other.drawn} picture(s) of another view's engine, titled "${other.title}"`);
     await refusing.context.close();
-    const [one, eighteen, whole] = steps.map(([, s]) => s);
-    check(one.drawn > 0 && one.stale && one.above && /R/.test(one.box) && eighteen.stale && whole.drawn > 0 && !whole.stale && whole.above === null && whole.R > 0,
-      'typing 180m: ' + steps.map(([t, s]) => `"${t}" ${s.drawn} picture(s) drawn${s.stale ? ', greyed' : ''}${s.above ? ', the refusal above the scene' : ''}`).join('; ') +
-      `; the box's line says "${one.box.slice(0, 60)}…"`);
-    await context.close();
   }
   {
     // The parts as built, a box for each part row of the table of inputs (but those docs/web.md
