@@ -248,10 +248,14 @@
     }
     if (options.angles) {
       // Each label goes beyond its arc's middle, or the nearest place to it (farther out, round
-      // the arc, or a line up or down) that is inside the scene and clear of the engine's parts,
-      // of the labels already placed and of the boxes the scene keeps clear (its caption).
+      // the arc, or a line up or down) that is inside the scene above the ground and clear of the
+      // engine's parts, of the labels already placed and of the boxes the scene keeps clear (its
+      // caption). Where it stood at the frame before, beside its vertex, it stays while that place
+      // is clear (options.remember): a label that moves with its vertex, not one that jumps
+      // between two places from frame to frame.
       const placed = (options.keepClear || []).slice();
-      const inside = (x, y, w, h) => !options.bounds || (y - h >= 0 && y + 4 <= options.bounds.height && x - w / 2 >= 0 && x + w / 2 <= options.bounds.width);  // 4: below the baseline
+      const inside = (x, y, w, h) => !options.bounds ||
+        (y - h >= 0 && y + 4 <= Math.min(options.bounds.height, options.floor === undefined ? Infinity : options.floor) && x - w / 2 >= 0 && x + w / 2 <= options.bounds.width);  // 4: below the baseline
       const overLabel = (x, y, w, h) => placed.some((b) => x - w / 2 < b.x + b.w / 2 && b.x - b.w / 2 < x + w / 2 && y - h < b.y && b.y - b.h < y);
       const overPart = (x, y, w, h) => parts.some((part) => crosses(part.a, part.b, [x - w / 2 - part.pad, y - h - part.pad, x + w / 2 + part.pad, y + 4 + part.pad]));
       // Returns where the label goes, [x, y] (its middle, its baseline), about `centre` at `radius`, `mid` radians.
@@ -266,8 +270,11 @@
         const fromVertex = (p) => Math.round(Math.hypot(p[0] - centre[0], p[1] - 4 - centre[1]));
         candidates.sort((p, q) => fromVertex(p) - fromVertex(q));  // stable: the order above among those as near
         const kept = ([x0, y]) => [options.bounds ? Math.min(Math.max(x0, w / 2 + 2), options.bounds.width - w / 2 - 2) : x0, y];
-        const spot = candidates.map(kept).find(([x, y]) => inside(x, y, w, h) && !overLabel(x, y, w, h) && !overPart(x, y, w, h)) ||
+        const clear = ([x, y]) => inside(x, y, w, h) && !overLabel(x, y, w, h) && !overPart(x, y, w, h);
+        const memory = options.remember || {}, before = memory[label[0]], stay = before && kept([centre[0] + before[0], centre[1] + before[1]]);
+        const spot = (stay && clear(stay) ? stay : null) || candidates.map(kept).find(clear) ||
           candidates.map(kept).find(([x, y]) => inside(x, y, w, h) && !overLabel(x, y, w, h)) || kept(ideal);
+        memory[label[0]] = [spot[0] - centre[0], spot[1] - centre[1]];
         placed.push({ x: spot[0], y: spot[1], w, h });
         return spot;
       };
@@ -577,6 +584,7 @@
     let time = Math.min(options.time || 0, tEnd), playing = false, last = null;
     const scrub = controls.querySelector('.tv-scrub'), timeText = controls.querySelector('.tv-time'), play = controls.querySelector('.tv-play');
     const speed = controls.querySelector('.tv-speed'), angles = controls.querySelector('.tv-angles');
+    const labelSpots = {};  // where each angle's label stood beside its vertex at the frame drawn last
     function draw() {
       scene.innerHTML = '';
       svg('rect', { x: 0, y: 0, width, height, fill: '#f7fbff' }, scene);
@@ -605,7 +613,7 @@
         svg('circle', { cx: at[0], cy: at[1], r: flying ? 4 : Math.max(3.5, 0.03 * e.H * v.scale), fill: COLOURS.stone }, g);
       }
       const banner = modelWarnings.length ? [{ x: width / 2, y: 48, w: 0.8 * 30 * 'NOT PHYSICAL'.length, h: 40 }] : [];  // bold capitals: 0.8 em each; the font's ascent and descent
-      drawEngine(g, shot, i, v.to, v.scale, { angles: angles.checked && !flying, keepClear: banner, bounds: { width, height } });
+      drawEngine(g, shot, i, v.to, v.scale, { angles: angles.checked && !flying, keepClear: banner, bounds: { width, height }, floor: ground[1], remember: labelSpots });
       const held = shot.t_counterweight_free;  // the whipper's: its counterweight leaves the arm first
       const first = held === undefined ? 'phase I: the projectile slides in the trough'
         : time <= held ? 'phase I: the counterweight and the projectile ride on the arm' : 'phase I: the counterweight swings, the projectile rides on the arm';

@@ -244,6 +244,43 @@ try {
     check(!worst, `the ${machine} machine's angle labels at ${times} moments of the swing (${size.join('x')}${projector ? ', projector' : ''}): ${worst || 'none over another or over the engine, all inside the scene'}`);
     await context.close();
   }
+  // Played or scrubbed, a label moves with its vertex: through phases I and II in 250 steps of
+  // the time bar, a label leaves its place beside its vertex (by more than 25 px) only where that
+  // place is taken, a few times a swing, and never jumps back to where it stood within 5 steps
+  // (a flicker between two places).
+  for (const [width, height, projector] of [[1280, 720, true], [390, 844, false]]) {
+    const { page, context } = await open(browser, link({ view: 'edit' }), { width, height });
+    if (projector) await page.click('#projector');
+    const offsets = [];
+    for (let at = 0; at <= 500; at += 2) {
+      offsets.push(await page.evaluate((value) => {
+        const scrub = document.querySelector('.tv-scrub');
+        scrub.value = String(value);
+        scrub.dispatchEvent(new Event('input'));
+        const svg = document.querySelector('.tv-scene-svg'), px = svg.getBoundingClientRect().width / svg.viewBox.baseVal.width, seen = {};
+        for (const label of svg.querySelectorAll('text')) {
+          if (!/^[θψφ] /.test(label.textContent)) continue;
+          const vertex = label.previousElementSibling.previousElementSibling, box = label.getBBox();  // its dashed reference line, then its arc
+          seen[label.textContent[0]] = [(box.x + box.width / 2 - Number(vertex.getAttribute('x1'))) * px, (box.y + box.height / 2 - Number(vertex.getAttribute('y1'))) * px];
+        }
+        return seen;
+      }, at));
+    }
+    const apart = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1]);
+    const jumps = [], flickers = [];
+    offsets.forEach((now, k) => {
+      for (const [name, offset] of Object.entries(now)) {
+        const before = k > 0 && offsets[k - 1][name];
+        if (!before || apart(offset, before) <= 25) continue;
+        jumps.push(name);
+        const back = offsets.slice(k + 1, k + 6).findIndex((later) => later[name] && apart(later[name], before) <= 5);
+        if (back >= 0) flickers.push(`${name} at step ${k}`);
+      }
+    });
+    check(jumps.length <= 10 && flickers.length === 0, `${width}x${height}${projector ? ' on a projector' : ''}: through the swing in 250 steps the angles' labels leave their place ${jumps.length} times (${jumps.join(' ')}), ` +
+      `flicker back ${flickers.length ? 'at ' + flickers.join(', ') : 'never'}`);
+    await context.close();
+  }
 
   // ---- 4. another machine ----------------------------------------------------------------------------
   {

@@ -193,10 +193,13 @@ try {
 
   // ---- 9. a phone and a projector -------------------------------------------------------------------
   for (const view of ['design', 'edit', 'reconstruct']) {
-    const phone = await open(browser, link({ view }), { width: 390, height: 844 });
-    const wide = await phone.page.evaluate(() => document.documentElement.scrollWidth);
-    check(wide <= 390, `on a 390 px phone the ${view} view is ${wide} px wide: nothing scrolls sideways`);
-    await phone.context.close();
+    for (const projector of [false, true]) {
+      const phone = await open(browser, link({ view }), { width: 390, height: 844 });
+      if (projector) await phone.page.click('#projector');
+      const wide = await phone.page.evaluate(() => document.documentElement.scrollWidth);
+      check(wide <= 390, `on a 390 px phone${projector ? ' with the projector\'s type' : ''} the ${view} view is ${wide} px wide: nothing scrolls sideways`);
+      await phone.context.close();
+    }
   }
   const projector = await open(browser, link({ view: 'edit' }), { width: 1920, height: 1080 });
   await projector.page.click('#projector');  // the layout of this screen: no link carries it
