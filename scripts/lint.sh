@@ -4,7 +4,8 @@
 # through ESLint with eslint.config.mjs (ESLint from tests/web's npm packages). Fails naming
 # each file that differs or each problem found. The house's sizes (docs/architecture.md): no
 # program file (calc/, verify/, cli/) over 250 lines, no function in lib/, calc/, verify/ or cli/
-# over 100 (Universal Ctags' extents of functions and members).
+# over 100 (Universal Ctags' extents of functions and members); no file-local name twice in one
+# library (pip's unity build).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mapfile -t cpp < <(git ls-files 'lib/*.cpp' 'lib/*.hpp' 'calc/*.cpp' 'verify/*.cpp' 'verify/*.hpp' 'cli/*.cpp' 'cli/*.hpp' 'python/src/*.cpp' \
@@ -20,5 +21,16 @@ if [ -n "$long_files" ] || [ -n "$long_functions" ]; then
   exit 1
 fi
 echo "lint.sh: no program file over 250 lines, no function over 100"
+# pip builds the library as a unity build (setup.py): a name in the anonymous namespaces of two
+# source files of one library would then be defined twice.
+twice=$(for folder in lib/core/src lib/app/src; do
+  ctags -R --kinds-c++=+p -x --_xformat="%N %{scope} %F" "$folder" | awk '$2 ~ /__anon[0-9a-f]+$/ {sub(/__anon[0-9a-f]+$/, "", $2); print $2 $1, $3}' | sort -u |
+    awk '{files[$1] = files[$1] " " $2; count[$1]++} END {for (name in count) if (count[name] > 1) print "  " name ":" files[name]}'
+done)
+if [ -n "$twice" ]; then
+  printf 'lint.sh: names in the anonymous namespaces of two files of one library (pip'"'"'s unity build would define them twice); rename one, or share one:\n%s\n' "$twice"
+  exit 1
+fi
+echo "lint.sh: no name in the anonymous namespaces of two files of one library"
 tests/web/node_modules/.bin/eslint web/app.js web/viewer.js web/bundle.mjs tests/web/*.mjs
 echo "lint.sh: web/ and tests/web/ pass ESLint"

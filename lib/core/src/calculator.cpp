@@ -64,7 +64,7 @@ double material_factor(Quantity quantity, const SizeFactors& factors) {
 
 constexpr double warn_amplification = 10, max_amplification = 50;
 
-struct Candidate {
+struct Inversion {
   const Segment* segment;
   double lr, lt;  // log(R/R0), log(T/T0)
   double amplification;
@@ -86,11 +86,11 @@ Eigen::Matrix2d pair_matrix(const LogLaw& i, const LogLaw& j) {
 double amplification_of(const Eigen::Matrix2d& A) { return A.inverse().cwiseAbs().rowwise().sum().maxCoeff(); }
 
 // eq:ZiZj_RT: (lr, lt) from two log-linear givens; nullopt when D_ij = 0.
-std::optional<Candidate> invert_pair(const Segment& segment, const LogLaw& i, double log_i, const LogLaw& j, double log_j) {
+std::optional<Inversion> invert_pair(const Segment& segment, const LogLaw& i, double log_i, const LogLaw& j, double log_j) {
   const Eigen::Matrix2d A = pair_matrix(i, j);
   if (std::abs(A.determinant()) < 1e-12) return std::nullopt;  // D_ij
   const Eigen::Vector2d capacity = A.inverse() * Eigen::Vector2d(log_i - i.c, log_j - j.c);
-  return Candidate{&segment, capacity(0), capacity(1), amplification_of(A)};
+  return Inversion{&segment, capacity(0), capacity(1), amplification_of(A)};
 }
 
 // Lb = L1 + L2 together with a log-linear given A: on the line log A = const in the
@@ -116,7 +116,7 @@ double brent_root(const BeamLengthLine& line, double lo, double hi) {
 
 // Solutions, and the span of Lb over the part of the line inside the segment (for messages).
 struct BeamLengthSolutions {
-  std::vector<Candidate> found;
+  std::vector<Inversion> found;
   double Lb_min = 0, Lb_max = 0;  // [m]
 };
 
@@ -233,15 +233,15 @@ bool same_family(Branch a, Branch b) { return a == b || a == Branch::none || b =
 
 constexpr double printed_rounding = 5e-3;  // half a unit of the constants' third significant digit, in ln Z
 
-std::optional<Candidate> seam_candidate(const std::vector<Candidate>& candidates) {
-  std::optional<Candidate> best;
-  for (const Candidate& left : candidates)
-    for (const Candidate& right : candidates) {
+std::optional<Inversion> seam_candidate(const std::vector<Inversion>& candidates) {
+  std::optional<Inversion> best;
+  for (const Inversion& left : candidates)
+    for (const Inversion& right : candidates) {
       const Segment &a = *left.segment, &b = *right.segment;
       if (&a == &b || a.X_max != b.X_min || !same_family(a.branch, b.branch)) continue;
       if (!(left.X() > a.X_max && right.X() < b.X_min)) continue;
       if (left.outside_by() > printed_rounding * left.amplification || right.outside_by() > printed_rounding * right.amplification) continue;
-      const Candidate& nearer = left.outside_by() <= right.outside_by() ? left : right;
+      const Inversion& nearer = left.outside_by() <= right.outside_by() ? left : right;
       if (!best || nearer.outside_by() < best->outside_by()) best = nearer;
     }
   return best;
@@ -297,20 +297,20 @@ std::string describe_block(const TableBlock& block) {
       (block.F > 0 ? ", F = " + format_fraction(block.F) : std::string(", the counterweight at the short arm's end"));  // another machine's: F = 0
 }
 
-bool branch_allowed(const Candidate& candidate, BranchChoice choice) {
+bool branch_allowed(const Inversion& candidate, BranchChoice choice) {
   const Branch branch = candidate.segment->branch;
   if (branch == Branch::none || choice == BranchChoice::automatic) return true;
   return (choice == BranchChoice::lower) == (branch == Branch::lower);
 }
 
 // Picks one candidate; fills warnings about branches and ambiguities.
-Candidate choose(const std::vector<Candidate>& inside, const TableBlock& block, BranchChoice choice, std::vector<std::string>& warnings) {
-  std::vector<Candidate> allowed;
-  for (const Candidate& c : inside)
+Inversion choose(const std::vector<Inversion>& inside, const TableBlock& block, BranchChoice choice, std::vector<std::string>& warnings) {
+  std::vector<Inversion> allowed;
+  for (const Inversion& c : inside)
     if (branch_allowed(c, choice)) allowed.push_back(c);
   if (allowed.empty()) {
     // Only possible when the forced branch does not reach this X.
-    const Candidate& other = inside.front();
+    const Inversion& other = inside.front();
     throw Error(ErrorKind::out_of_range,
                 "the " + std::string(choice == BranchChoice::lower ? "lower" : "upper") +
                     " branch has no optimum for these givens (the solution lies at X = " + format_significant(other.X(), 3) + " on the " +
@@ -323,21 +323,21 @@ Candidate choose(const std::vector<Candidate>& inside, const TableBlock& block, 
 
   // In the overlap, auto takes the branch with the higher Q: lower below X_d, upper above (section 6.2).
   const double X_d = block.branch_switch_X.value_or(std::numeric_limits<double>::quiet_NaN());
-  auto preferred = [&](const Candidate& c) {
+  auto preferred = [&](const Inversion& c) {
     if (c.segment->branch == Branch::lower) return c.X() < X_d;
     if (c.segment->branch == Branch::upper) return c.X() >= X_d;
     return true;
   };
-  std::vector<Candidate> best;
-  for (const Candidate& c : allowed)
+  std::vector<Inversion> best;
+  for (const Inversion& c : allowed)
     if (choice != BranchChoice::automatic || preferred(c)) best.push_back(c);
   if (best.empty()) best = allowed;  // each branch prefers the other: take the one deepest inside
-  std::stable_sort(best.begin(), best.end(), [](const Candidate& a, const Candidate& b) { return a.depth() > b.depth(); });
+  std::stable_sort(best.begin(), best.end(), [](const Inversion& a, const Inversion& b) { return a.depth() > b.depth(); });
 
   // Two different capacities can match one pair of givens (Lb with another given, or two
   // branches each consistent at its own X): say so rather than hide the second.
   for (std::size_t k = 1; k < best.size(); ++k) {
-    const Candidate& c = best[k];
+    const Inversion& c = best[k];
     if (std::abs(c.X() - best.front().X()) < 1e-6 && std::abs(c.lt - best.front().lt) < 1e-6) continue;
     warnings.push_back("another optimal engine also matches these givens: X = " + format_significant(c.X(), 3) +
                        (c.segment->branch == Branch::none ? "" : " on the " + std::string(branch_name(c.segment->branch)) + " branch") +
@@ -430,13 +430,13 @@ SizeFactors checked_size_factors(const ScalingTable& table, const Material& m) {
 // The solutions of the pair in every segment of the block, and, where Lb is given, the Lb that
 // optimal engines reach per segment (for the message when none holds).
 struct Solutions {
-  std::vector<Candidate> candidates;
+  std::vector<Inversion> candidates;
   std::string beam_length_spans;
 };
 
 Solutions solve_pair(const ScalingTable& table, const TableBlock& block, const Given& gi, double log_i, const Given& gj, double log_j) {
   Solutions out;
-  std::vector<Candidate>& candidates = out.candidates;
+  std::vector<Inversion>& candidates = out.candidates;
   std::string& beam_length_spans = out.beam_length_spans;
   for (const Segment& segment : block.segments) {
     auto law_i = log_law(table, block, segment, gi.quantity);
@@ -463,12 +463,12 @@ Solutions solve_pair(const ScalingTable& table, const TableBlock& block, const G
                                    const SizeFactors& scaling) {
   const Given& gi = request.first;
   const Given& gj = request.second;
-  const std::vector<Candidate>& candidates = solutions.candidates;
+  const std::vector<Inversion>& candidates = solutions.candidates;
   const std::string& beam_length_spans = solutions.beam_length_spans;
   auto pair = [&] { return describe_given(gi) + ", " + describe_given(gj); };
   auto covered = [&] { return describe_interval(block.X_covered_min(), block.X_covered_max()); };
   std::string tried;
-  for (const Candidate& c : candidates)
+  for (const Inversion& c : candidates)
     tried += (tried.empty() ? "" : ", ") + std::string("X = ") + format_significant(c.X(), 3) + " in segment " +
         describe_interval(c.segment->X_min, c.segment->X_max);
   const bool both_capacity = (gi.quantity == Quantity::R || gi.quantity == Quantity::T) && (gj.quantity == Quantity::R || gj.quantity == Quantity::T);
@@ -552,9 +552,9 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
   const double log_j = std::log(gj.value / material_factor(gj.quantity, scaling));
 
   const Solutions solutions = solve_pair(table, *block, gi, log_i, gj, log_j);
-  const std::vector<Candidate>& candidates = solutions.candidates;
-  std::vector<Candidate> inside;
-  for (const Candidate& c : candidates)
+  const std::vector<Inversion>& candidates = solutions.candidates;
+  std::vector<Inversion> inside;
+  for (const Inversion& c : candidates)
     if (c.inside()) inside.push_back(c);
   if (inside.empty())
     if (auto seam = seam_candidate(candidates)) inside.push_back(*seam);
@@ -563,17 +563,17 @@ OptimalEngine design_optimal_engine(const ScalingTable& table, const DesignReque
   // Message parts, formatted only when a message needs them.
   auto pair = [&] { return describe_given(gi) + ", " + describe_given(gj); };
   auto covered = [&] { return describe_interval(block->X_covered_min(), block->X_covered_max()); };
-  Candidate chosen{};
+  Inversion chosen{};
   if (!inside.empty()) {
     chosen = choose(inside, *block, request.branch, result.warnings);
   } else {
     if (candidates.empty() || !request.extrapolate) refuse_uncovered(table, *block, request, solutions, scaling);
-    std::vector<Candidate> allowed;
-    for (const Candidate& c : candidates)
+    std::vector<Inversion> allowed;
+    for (const Inversion& c : candidates)
       if (branch_allowed(c, request.branch)) allowed.push_back(c);
     if (allowed.empty()) allowed = candidates;
     chosen = *std::min_element(allowed.begin(), allowed.end(),
-                               [](const Candidate& a, const Candidate& b) { return a.outside_by() < b.outside_by(); });
+                               [](const Inversion& a, const Inversion& b) { return a.outside_by() < b.outside_by(); });
     result.warnings.push_back("extrapolated: X = " + format_significant(chosen.X(), 3) + " lies outside the interval " + covered() + " covered by " +
                               table_words(table) + "; constants of segment " + describe_interval(chosen.segment->X_min, chosen.segment->X_max) +
                               " used beyond it");

@@ -154,7 +154,6 @@ Vec2 operator*(Vec2 v, double k) { return {v.x * k, v.y * k}; }
 double norm(Vec2 v) { return std::sqrt(v.x * v.x + v.y * v.y); }
 Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
 Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
-double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 
 // How the beam's tip and the projectile move with the angles: d(position)/d(angle), scaled.
 // In the trough the projectile's height is fixed and its x follows theta (eq:EOM_I_3):

@@ -82,7 +82,7 @@ std::vector<Start> starts_for(const OptimizeRequest& r) {
   return starts;
 }
 
-struct Search {
+struct OptimumSearch {
   const OptimizeRequest* request = nullptr;
   int simulations = 0;
   double best = -1;
@@ -127,7 +127,7 @@ struct Search {
 };
 
 Optimum search_from(const OptimizeRequest& request, const Start& start) {
-  Search search;
+  OptimumSearch search;
   search.request = &request;
   const ScaledDesign fixed = start.shape;
   Optimum out;

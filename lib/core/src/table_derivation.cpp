@@ -41,7 +41,7 @@ struct Block {
   std::map<double, std::string> origin_of;  // the part each point came from, for messages
 };
 
-[[noreturn]] void fail(const std::string& where, const std::string& problem) { throw Error(ErrorKind::data_file, where + ": " + problem); }
+[[noreturn]] void refuse_sweep(const std::string& where, const std::string& problem) { throw Error(ErrorKind::data_file, where + ": " + problem); }
 
 std::string block_name(const SweepSpec& spec) {
   return "block theta " + format_number(spec.theta_i_deg) + " deg" +
@@ -98,7 +98,7 @@ void derive_block(const Block& block, double R0, DerivedTable& out) {
   const std::string name = block_name(block.spec);
   const auto zero = block.points.find(0.0);
   if (zero == block.points.end() || !zero->second.error.empty())
-    fail(name, "no optimum at X = 0, which sets Z0 (tab:CPNC); give an X interval that holds 0");
+    refuse_sweep(name, "no optimum at X = 0, which sets Z0 (tab:CPNC); give an X interval that holds 0");
   TableBlock table_block{};
   table_block.theta_i_deg = block.spec.theta_i_deg;
   table_block.F = block.spec.machine == MachineKind::hinged ? block.spec.F : 0;  // the others' counterweight at the arm's end
@@ -112,7 +112,7 @@ void derive_block(const Block& block, double R0, DerivedTable& out) {
       if (X >= lo && X <= hi && point.error.empty()) side.push_back(&point);
     if (side.size() >= min_segment_points) fit_segments(side, table_block.Z0, R0, fits);
   }
-  if (fits.empty()) fail(name, "fewer than three optima on each side of X = 0; use a finer X step");
+  if (fits.empty()) refuse_sweep(name, "fewer than three optima on each side of X = 0; use a finer X step");
   std::vector<SegmentFitQuality> qualities;
   for (const SegmentFit& fit : fits) {
     Segment segment{fit.points.front()->X, fit.points.back()->X, Branch::none, {}, {}};
@@ -152,7 +152,8 @@ DerivedTable derive_table(const std::vector<SweepPart>& parts) {
   const SweepPart& first = parts.front();
   for (const SweepPart& part : parts) {
     if (!same_reference(part.spec, first.spec))
-      fail(part.origin, "its R0, T0, reference_material or machine differs from that of " + first.origin + "; merge sweeps of one reference only");
+      refuse_sweep(part.origin,
+                   "its R0, T0, reference_material or machine differs from that of " + first.origin + "; merge sweeps of one reference only");
     // Another machine's counterweight sits at the short arm's end: its blocks differ in theta_i alone.
     Block& block = blocks[{part.spec.theta_i_deg, part.spec.machine == MachineKind::hinged ? part.spec.F : 0}];
     if (block.first_origin.empty()) {
@@ -160,13 +161,14 @@ DerivedTable derive_table(const std::vector<SweepPart>& parts) {
       block.first_origin = part.origin;
     }
     if (!same_grid_and_criterion(part.spec, block.spec))
-      fail(part.origin,
-           "its X grid or quality differs from that of " + block.first_origin + " for the same " + block_name(part.spec) +
-               "; run every shard with the same {{X}} and {{quality}}");
+      refuse_sweep(part.origin,
+                   "its X grid or quality differs from that of " + block.first_origin + " for the same " + block_name(part.spec) +
+                       "; run every shard with the same {{X}} and {{quality}}");
     for (const SweepPoint& point : part.points) {
       if (!block.points.emplace(point.X, point).second)
-        fail(part.origin,
-             block_name(part.spec) + ": X = " + format_number(point.X) + " is also in " + block.origin_of[point.X] + "; give each shard once");
+        refuse_sweep(
+            part.origin,
+            block_name(part.spec) + ": X = " + format_number(point.X) + " is also in " + block.origin_of[point.X] + "; give each shard once");
       block.origin_of[point.X] = part.origin;
     }
   }
@@ -189,8 +191,8 @@ DerivedTable derive_table(const std::vector<SweepPart>& parts) {
     const std::string name = block_name(block.spec);
     const std::vector<double> grid = sweep_grid(block.spec);
     for (double X : grid)
-      if (!block.points.count(X)) fail(name, "X = " + format_number(X) + " is missing; merge every shard k/N of the sweep");
-    if (block.points.size() != grid.size()) fail(name, "points off the X grid; merge parts of one sweep only");
+      if (!block.points.count(X)) refuse_sweep(name, "X = " + format_number(X) + " is missing; merge every shard k/N of the sweep");
+    if (block.points.size() != grid.size()) refuse_sweep(name, "points off the X grid; merge parts of one sweep only");
     derive_block(block, table.R0, out);
   }
   return out;

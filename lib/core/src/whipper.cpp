@@ -10,8 +10,6 @@
 namespace trebuchet {
 namespace {
 
-double dot(Vec2 u, Vec2 v) { return u.x * v.x + u.y * v.y; }
-
 // The force f split along two directions: f = p u + q n.
 std::array<double, 2> split(Vec2 f, Vec2 u, Vec2 n) {
   const double det = u.x * n.y - u.y * n.x;

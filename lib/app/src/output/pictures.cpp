@@ -16,7 +16,7 @@
 namespace trebuchet {
 namespace {
 
-std::string num(double x) { return format_significant(x, 6); }
+std::string gnuplot_number(double x) { return format_significant(x, 6); }
 
 // The engine at one moment as gnuplot commands: frame, beam, counterweight arm and weight,
 // sling and projectile, to scale in metres on the site (x toward the target, y above the base).
@@ -28,10 +28,11 @@ std::string engine_commands(const Engine& engine, const TracePoint& p, bool proj
                   tip = site_point(s.tip, engine), pr = site_point(s.projectile, engine);
   std::ostringstream g;
   auto segment = [&](SitePoint a, SitePoint b, const char* style) {
-    g << "set arrow from " << num(a.x) << "," << num(a.y) << " to " << num(b.x) << "," << num(b.y) << " nohead " << style << "\n";
+    g << "set arrow from " << gnuplot_number(a.x) << "," << gnuplot_number(a.y) << " to " << gnuplot_number(b.x) << "," << gnuplot_number(b.y)
+      << " nohead " << style << "\n";
   };
   auto label = [&](const std::string& text, SitePoint at, const char* where) {
-    g << "set label \"" << text << "\" at " << num(at.x) << "," << num(at.y) << " " << where << " font \",12\" front\n";
+    g << "set label \"" << text << "\" at " << gnuplot_number(at.x) << "," << gnuplot_number(at.y) << " " << where << " font \",12\" front\n";
   };
   const double foot = 0.3 * H;
   if (engine.machine == MachineKind::floating_arm) {
@@ -48,12 +49,14 @@ std::string engine_commands(const Engine& engine, const TracePoint& p, bool proj
   }
   segment(hinge, tip, "lw 5 lc rgb '#a0522d'");
   segment(hinge, cw, engine.machine == MachineKind::fixed ? "lw 5 lc rgb '#a0522d'" : "lw 2 lc rgb 'black'");  // bolted on, or hung
-  g << "set object circle at " << num(cw.x) << "," << num(cw.y) << " size " << num(0.12 * engine.L2 + 0.04 * H)
+  g << "set object circle at " << gnuplot_number(cw.x) << "," << gnuplot_number(cw.y) << " size " << gnuplot_number(0.12 * engine.L2 + 0.04 * H)
     << " fc rgb '#555555' fs solid front\n";
-  g << "set object circle at " << num(pivot.x) << "," << num(H) << " size " << num(0.015 * H) << " fc rgb 'black' fs solid front\n";
+  g << "set object circle at " << gnuplot_number(pivot.x) << "," << gnuplot_number(H) << " size " << gnuplot_number(0.015 * H)
+    << " fc rgb 'black' fs solid front\n";
   if (projectile_on) {
     segment(tip, pr, "lw 2 lc rgb '#1f5fbf' front");
-    g << "set object circle at " << num(pr.x) << "," << num(pr.y) << " size " << num(0.03 * H) << " fc rgb '#d62728' fs solid front\n";
+    g << "set object circle at " << gnuplot_number(pr.x) << "," << gnuplot_number(pr.y) << " size " << gnuplot_number(0.03 * H)
+      << " fc rgb '#d62728' fs solid front\n";
   }
   if (labels) {
     auto mid = [](SitePoint a, SitePoint b) { return SitePoint{(a.x + b.x) / 2, (a.y + b.y) / 2}; };
@@ -76,8 +79,9 @@ std::string engine_commands(const Engine& engine, const TracePoint& p, bool proj
     const double theta = degrees(p.state.theta), psi = degrees(p.state.psi), phi = degrees(p.state.phi);
     auto arc = [&](SitePoint at, double radius, double from, double to, SitePoint reference_end, const std::string& text, const char* colour) {
       segment(at, reference_end, (std::string("lw 1 dt 2 lc rgb '") + colour + "' front").c_str());
-      g << "set object circle at " << num(at.x) << "," << num(at.y) << " size " << num(radius) << " arc [" << num(std::min(from, to)) << ":"
-        << num(std::max(from, to)) << "] nowedge fs empty border lc rgb '" << colour << "' lw 2 front\n";
+      g << "set object circle at " << gnuplot_number(at.x) << "," << gnuplot_number(at.y) << " size " << gnuplot_number(radius) << " arc ["
+        << gnuplot_number(std::min(from, to)) << ":" << gnuplot_number(std::max(from, to)) << "] nowedge fs empty border lc rgb '" << colour
+        << "' lw 2 front\n";
       const double middle = radians((from + to) / 2);
       label(text, {at.x + 1.35 * radius * std::cos(middle), at.y + 1.35 * radius * std::sin(middle)},
             (std::string("center tc rgb '") + colour + "'").c_str());
@@ -120,7 +124,7 @@ std::string warning_labels(const Verification& v, bool at_foot = false) {
       "' front\n";
   for (std::size_t k = 0; k < v.warnings.size(); ++k)
     g += "set label " + std::to_string(90 + k) + " \"" + gnuplot_quoted(v.warnings[k]) + "\" at " +
-        (at_foot ? "screen 0.01, screen " + num(0.012 + 0.03 * k) : "graph 0.01, graph " + num(0.96 - 0.06 * k)) +
+        (at_foot ? "screen 0.01, screen " + gnuplot_number(0.012 + 0.03 * k) : "graph 0.01, graph " + gnuplot_number(0.96 - 0.06 * k)) +
         " left tc rgb '#cc0000' font ',10' noenhanced boxed front\n";
   return g;
 }
@@ -186,15 +190,15 @@ std::vector<PictureFile> PictureShot::data_files() const {
   files.push_back({"shot.csv", trace_csv(trace, engine)});
   std::ostringstream flight_csv;
   flight_csv << "x_m,y_m\n";
-  for (const SitePoint& p : flight) flight_csv << num(p.x) << "," << num(p.y) << "\n";
+  for (const SitePoint& p : flight) flight_csv << gnuplot_number(p.x) << "," << gnuplot_number(p.y) << "\n";
   files.push_back({"flight.csv", flight_csv.str()});
   std::ostringstream release_csv;
   release_csv << "t_s,Q_over_Q_release,eps_over_eps_release,R_over_R_release,FS_perp,FR,FRh_max,FRh_min\n";
   const ShotSeries::Moment& at = series.phase_two[series.release_row];
   for (const ShotSeries::Moment& row : series.phase_two) {
-    release_csv << num(row.t) << "," << num(row.quality / at.quality) << "," << num(row.efficiency / at.efficiency) << ","
-                << num(row.range / at.range);
-    for (int k = 0; k < force_count; ++k) release_csv << "," << num(row.running_max[k] / series.final_extremes[k]);
+    release_csv << gnuplot_number(row.t) << "," << gnuplot_number(row.quality / at.quality) << "," << gnuplot_number(row.efficiency / at.efficiency)
+                << "," << gnuplot_number(row.range / at.range);
+    for (int k = 0; k < force_count; ++k) release_csv << "," << gnuplot_number(row.running_max[k] / series.final_extremes[k]);
     release_csv << "\n";
   }
   files.push_back({"release.csv", release_csv.str()});
@@ -220,8 +224,8 @@ PictureFile PictureShot::engine_script() const {
   const double margin = 0.08 * std::max(x_hi - x_lo, y_hi - y_lo);
   std::ostringstream engine_gp;
   engine_gp << header("set terminal svg size 1100,950 dynamic font 'sans,12'\nset output 'engine.svg'") << "set size ratio -1\nset xrange ["
-            << num(x_lo - margin) << ":" << num(x_hi + margin) << "]\nset yrange [" << num(y_lo - margin) << ":" << num(y_hi + margin)
-            << "]\nset xlabel 'x toward the target [m]'\nset ylabel 'height above the base [m]'\n"
+            << gnuplot_number(x_lo - margin) << ":" << gnuplot_number(x_hi + margin) << "]\nset yrange [" << gnuplot_number(y_lo - margin) << ":"
+            << gnuplot_number(y_hi + margin) << "]\nset xlabel 'x toward the target [m]'\nset ylabel 'height above the base [m]'\n"
             << "set multiplot layout 2,2 title \"The " << machine_words(engine.machine) << " to scale: L1 = " << format_significant(engine.L1, 3)
             << " m, L2 = " << format_significant(engine.L2, 3) << " m, L3 = " << format_significant(engine.L3, 3)
             << " m, L4 = " << format_significant(engine.L4, 3) << " m, H = " << format_significant(H, 3) << " m; " << gnuplot_quoted(scene)
@@ -256,19 +260,20 @@ PictureFile PictureShot::paths_script() const {
       flight_title +
       "', \\\n"
       "     " +
-      num(impact.y) + " with lines lc rgb 'gray40' title '" + (settings.range_from_release ? "release height" : "target level") + "'\n";
+      gnuplot_number(impact.y) + " with lines lc rgb 'gray40' title '" + (settings.range_from_release ? "release height" : "target level") + "'\n";
   paths << header("set terminal svg size 1200,540 dynamic font 'sans,12'\nset output 'paths.svg'")
         << "set xlabel 'x toward the target [m]'\nset ylabel 'height above the base [m]'\nset key below\n"
         << warnings << "set multiplot title \"" << gnuplot_quoted(scene)
         << "\" noenhanced\nset size 0.62,0.95\nset origin 0,0\nset title 'The whole shot' noenhanced\n"
-        << "set arrow 1 from " << num(from_x) << "," << num(arrow_y) << " to " << num(impact.x) << "," << num(arrow_y) << " heads lc rgb 'black'\n"
+        << "set arrow 1 from " << gnuplot_number(from_x) << "," << gnuplot_number(arrow_y) << " to " << gnuplot_number(impact.x) << ","
+        << gnuplot_number(arrow_y) << " heads lc rgb 'black'\n"
         << "set label 1 'R = " << format_significant(v.capacity.R, 4) << " m" << (settings.range_from_release ? " (from the release point)" : "")
-        << "' at " << num((from_x + impact.x) / 2) << "," << num(arrow_y) << " offset 0,-1 center\n"
-        << "set yrange [" << num(std::min(0.0, impact.y) - 0.06 * v.capacity.R) << ":*]\nplot " << curves
+        << "' at " << gnuplot_number((from_x + impact.x) / 2) << "," << gnuplot_number(arrow_y) << " offset 0,-1 center\n"
+        << "set yrange [" << gnuplot_number(std::min(0.0, impact.y) - 0.06 * v.capacity.R) << ":*]\nplot " << curves
         << "unset arrow 1\nunset label 1\nset size 0.38,0.95\nset origin 0.62,0\nset size ratio -1\nset key off\n"
-        << "set title 'Phases I and II, enlarged' noenhanced\nset xrange [" << num(-engine.L1 - engine.L4 - 0.5) << ":"
-        << num(std::max(engine.L1 + engine.L4, engine.L2 + engine.L3) + 0.5) << "]\nset yrange [-0.5:" << num(H + engine.L1 + engine.L4 + 0.5)
-        << "]\nplot " << curves << "unset multiplot\n";
+        << "set title 'Phases I and II, enlarged' noenhanced\nset xrange [" << gnuplot_number(-engine.L1 - engine.L4 - 0.5) << ":"
+        << gnuplot_number(std::max(engine.L1 + engine.L4, engine.L2 + engine.L3) + 0.5)
+        << "]\nset yrange [-0.5:" << gnuplot_number(H + engine.L1 + engine.L4 + 0.5) << "]\nplot " << curves << "unset multiplot\n";
   return {"paths.gp", paths.str()};
 }
 
@@ -283,28 +288,33 @@ PictureFile PictureShot::forces_script() const {
                                                       {moments.release, "release"}};
     int row = 0;
     for (const auto& [i, name] : at)
-      gp << "set arrow from " << num(seconds(i)) << ", graph 0 to " << num(seconds(i)) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
-         << "set label '" << name << "' at " << num(seconds(i)) << ", graph " << (row++ % 2 ? "1.08" : "1.03")
+      gp << "set arrow from " << gnuplot_number(seconds(i)) << ", graph 0 to " << gnuplot_number(seconds(i))
+         << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
+         << "set label '" << name << "' at " << gnuplot_number(seconds(i)) << ", graph " << (row++ % 2 ? "1.08" : "1.03")
          << " center tc rgb 'gray30' noenhanced\n";
   };
   std::ostringstream forces;
   forces << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'forces.svg'")
          << "set xlabel 'time [s]'\nset ylabel 'force [kN]'\nset y2label \"force as a multiple of M·g (M = "
          << gnuplot_quoted(quantity_text(engine.M, UnitDimension::mass, UnitSystem::si, 3))
-         << ", the counterweight)\" noenhanced\nset y2tics\nset link y2 via y/" << num(Mg_kN) << " inverse y*" << num(Mg_kN)
-         << "\nset format y2 '%.1f'\nset key below\nset tmargin 6\nset xrange [0:" << num(seconds(moments.release) * 1.02) << "]\n"
+         << ", the counterweight)\" noenhanced\nset y2tics\nset link y2 via y/" << gnuplot_number(Mg_kN) << " inverse y*" << gnuplot_number(Mg_kN)
+         << "\nset format y2 '%.1f'\nset key below\nset tmargin 6\nset xrange [0:" << gnuplot_number(seconds(moments.release) * 1.02) << "]\n"
          << "set title \"Forces up to the release: t_1 and t_2 the extremes of F_Rh, t_m the largest pivot force\\n"
          << gnuplot_quoted(scene) << "\" noenhanced\n"
          << warnings;
   marks(forces);
-  forces << "plot 'shot.csv' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($9*" << num(mg_kN)
+  forces << "plot 'shot.csv' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($9*" << gnuplot_number(mg_kN)
          << ") with lines lw 2 title 'F_S⊥ (sling, across the beam)', \\\n"
-         << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($27*" << num(mg_kN) << ") with lines lw 2 dt 4 title 'sling tension', \\\n"
-         << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($10*" << num(Mg_kN) << ") with lines lw 2 title '|F_R| (pivot)', \\\n"
-         << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($11*" << num(Mg_kN)
+         << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($27*" << gnuplot_number(mg_kN)
+         << ") with lines lw 2 dt 4 title 'sling tension', \\\n"
+         << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($10*" << gnuplot_number(Mg_kN)
+         << ") with lines lw 2 title '|F_R| (pivot)', \\\n"
+         << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($11*" << gnuplot_number(Mg_kN)
          << ") with lines lw 2 title 'F_Rh (pivot, horizontal)', \\\n"
-         << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($13*" << num(Mg_kN) << ") with lines lw 2 title '|F_H| (hinge)', \\\n"
-         << "     '' every ::1 using (strcol(1) eq 'I' ? $2 : NaN):($14*" << num(mg_kN) << ") with lines lw 2 title 'N (trough on the projectile)'\n";
+         << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($13*" << gnuplot_number(Mg_kN)
+         << ") with lines lw 2 title '|F_H| (hinge)', \\\n"
+         << "     '' every ::1 using (strcol(1) eq 'I' ? $2 : NaN):($14*" << gnuplot_number(mg_kN)
+         << ") with lines lw 2 title 'N (trough on the projectile)'\n";
   return {"forces.gp", forces.str()};
 }
 
@@ -333,22 +343,23 @@ PictureFile PictureShot::energy_script() const {
                  ? "after the release the wind gives " + format_significant(-v.energy.flight_drag / 1000, 3) + " kJ more in flight\\n"
                  : "")
          << gnuplot_quoted(scene) << "\" noenhanced\n"
-         << "set arrow from " << num(seconds(moments.release)) << ", graph 0 to " << num(seconds(moments.release))
+         << "set arrow from " << gnuplot_number(seconds(moments.release)) << ", graph 0 to " << gnuplot_number(seconds(moments.release))
          << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
-         << "set arrow from " << num(seconds(moments.release)) << "," << num(taken_kJ) << " to " << num(seconds(moments.release)) << ","
-         << num(drop_kJ) << " heads lw 2 lc rgb 'red' front\nset label '1 − ε' at " << num(seconds(moments.release)) << ","
-         << num((taken_kJ + drop_kJ) / 2) << " offset 0.5,0 tc rgb 'red' noenhanced\nset label 'release' at " << num(seconds(moments.release))
+         << "set arrow from " << gnuplot_number(seconds(moments.release)) << "," << gnuplot_number(taken_kJ) << " to "
+         << gnuplot_number(seconds(moments.release)) << "," << gnuplot_number(drop_kJ) << " heads lw 2 lc rgb 'red' front\nset label '1 − ε' at "
+         << gnuplot_number(seconds(moments.release)) << "," << gnuplot_number((taken_kJ + drop_kJ) / 2)
+         << " offset 0.5,0 tc rgb 'red' noenhanced\nset label 'release' at " << gnuplot_number(seconds(moments.release))
          << ", graph 0.5 rotate by 90 center offset -0.8,0\n"
-         << "plot 'shot.csv' every ::1 using 2:($23/1000-(" << num(cw0) << ")) with lines lw 2 title 'counterweight', \\\n"
-         << "     '' every ::1 using 2:($24/1000-(" << num(beam0) << ")) with lines lw 2 title 'beam', \\\n"
-         << "     '' every ::1 using 2:(strcol(1) ne 'III' ? ($25+$26)/1000-(" << num(pr0) << ") : " << num(taken_kJ)
+         << "plot 'shot.csv' every ::1 using 2:($23/1000-(" << gnuplot_number(cw0) << ")) with lines lw 2 title 'counterweight', \\\n"
+         << "     '' every ::1 using 2:($24/1000-(" << gnuplot_number(beam0) << ")) with lines lw 2 title 'beam', \\\n"
+         << "     '' every ::1 using 2:(strcol(1) ne 'III' ? ($25+$26)/1000-(" << gnuplot_number(pr0) << ") : " << gnuplot_number(taken_kJ)
          << ") with lines lw 2 title 'projectile (after the release: what it took)', \\\n"
          << "     '' every ::1 using (strcol(1) ne 'III' ? $2 : NaN):($25/1000) with lines lw 1 dt 2 title 'of which kinetic', \\\n"
          << (losses ? "     '' every ::1 using 2:" + lost_kJ + " with lines lw 2 lc rgb '#e377c2' title 'taken by friction and drag', \\\n" : "")
-         << "     '' every ::1 using 2:(($23+$24)/1000-(" << num(cw0 + beam0) << ")+(strcol(1) ne 'III' ? ($25+$26)/1000-(" << num(pr0)
-         << ") : " << num(taken_kJ) << ")" << (losses ? "+" + lost_kJ : "") << ") with lines lw 2 lc rgb 'black' title '"
-         << (losses ? "total with what the losses took (conserved)" : "total (conserved)") << "', \\\n"
-         << "     " << num(drop_kJ) << " with lines dt 2 lc rgb 'gray30' title 'ΔU (eq:DU)'\n";
+         << "     '' every ::1 using 2:(($23+$24)/1000-(" << gnuplot_number(cw0 + beam0) << ")+(strcol(1) ne 'III' ? ($25+$26)/1000-("
+         << gnuplot_number(pr0) << ") : " << gnuplot_number(taken_kJ) << ")" << (losses ? "+" + lost_kJ : "")
+         << ") with lines lw 2 lc rgb 'black' title '" << (losses ? "total with what the losses took (conserved)" : "total (conserved)") << "', \\\n"
+         << "     " << gnuplot_number(drop_kJ) << " with lines dt 2 lc rgb 'gray30' title 'ΔU (eq:DU)'\n";
   return {"energy.gp", energy.str()};
 }
 
@@ -358,12 +369,12 @@ PictureFile PictureShot::release_script() const {
   std::ostringstream release;
   release << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'release.svg'")
           << "set xlabel 'time [s]'\nset ylabel 'value over its value at the release'\nset key below\nset yrange [0:1.3]\n"
-          << warnings << "set label 'release' at " << num(seconds(moments.release)) << ", graph 0.95 offset 0.3,0\n"
+          << warnings << "set label 'release' at " << gnuplot_number(seconds(moments.release)) << ", graph 0.95 offset 0.3,0\n"
           << "set title \"Phase II, and on as if the projectile were kept: "
           << (settings.release_at ? "this shot is released as given" : objective + " peaks at the release")
           << "; the running extremes of eq:F switch on as they grow\\n"
           << gnuplot_quoted(scene) << "; Q, ε and R here at level 0 in vacuum\" noenhanced\n"
-          << "set arrow from " << num(seconds(moments.release)) << ", graph 0 to " << num(seconds(moments.release))
+          << "set arrow from " << gnuplot_number(seconds(moments.release)) << ", graph 0 to " << gnuplot_number(seconds(moments.release))
           << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
           << "plot 'release.csv' every ::1 using 1:2 with lines lw 3 lc rgb 'black' title 'Q', \\\n"
           << "     '' every ::1 using 1:3 with lines lw 2 title 'ε', '' every ::1 using 1:4 with lines lw 2 title 'R', \\\n"
@@ -381,7 +392,8 @@ std::vector<PictureFile> PictureShot::pin_files() const {
   std::ostringstream pin_csv;
   pin_csv << "pin_angle_deg,R_m,Q\n";
   for (const PinShot& shot : series.pins)
-    pin_csv << num(shot.pin_angle_deg) << "," << (shot.R ? num(*shot.R) : "NaN") << "," << (shot.Q ? num(*shot.Q) : "NaN") << "\n";
+    pin_csv << gnuplot_number(shot.pin_angle_deg) << "," << (shot.R ? gnuplot_number(*shot.R) : "NaN") << ","
+            << (shot.Q ? gnuplot_number(*shot.Q) : "NaN") << "\n";
   files.push_back({"pin.csv", pin_csv.str()});
   std::ostringstream pin;
   pin << header("set terminal svg size 1100,540 dynamic font 'sans,12'\nset output 'pin.svg'")
@@ -390,14 +402,15 @@ std::vector<PictureFile> PictureShot::pin_files() const {
       << warnings << "set title \"The pin: a release at each pin angle; this shot's, " << format_significant(v.pin_to_bend_deg, 4)
       << "°, is marked\\n"
       << gnuplot_quoted(scene) << "\" noenhanced\n"
-      << "set arrow from " << num(v.pin_to_bend_deg) << ", graph 0 to " << num(v.pin_to_bend_deg) << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
-      << "set label 'this shot' at " << num(v.pin_to_bend_deg) << ", graph 0.05 offset 0.3,0\n";
+      << "set arrow from " << gnuplot_number(v.pin_to_bend_deg) << ", graph 0 to " << gnuplot_number(v.pin_to_bend_deg)
+      << ", graph 1 nohead dt 3 lc rgb 'gray50'\n"
+      << "set label 'this shot' at " << gnuplot_number(v.pin_to_bend_deg) << ", graph 0.05 offset 0.3,0\n";
   // Where no other pin releases this engine forward (every one passes in the trough, or throws
   // back), the chart says so: gnuplot refuses a plot of no points.
   const auto released = std::count_if(series.pins.begin(), series.pins.end(), [](const PinShot& s) { return s.R.has_value(); });
   if (released < 2)
     pin << "set label 'no pin angle near this one releases the projectile forward within the beam''s forward swing' at graph 0.5, graph 0.5 center\n"
-        << "plot [" << num(v.pin_to_bend_deg - 20) << ":" << num(v.pin_to_bend_deg + 20) << "] [0:1] 2 notitle\n";
+        << "plot [" << gnuplot_number(v.pin_to_bend_deg - 20) << ":" << gnuplot_number(v.pin_to_bend_deg + 20) << "] [0:1] 2 notitle\n";
   else
     pin << "plot 'pin.csv' every ::1 using 1:2 with linespoints lw 2 pt 7 ps 0.5 title 'R' axes x1y1, \\\n"
         << "     '' every ::1 using 1:($3*100) with linespoints lw 2 pt 7 ps 0.5 title 'Q' axes x1y2\n";
@@ -419,11 +432,13 @@ PictureFile PictureShot::animation_script() const {
   anim << "# Made by trebuchet-verify shot --plot; run with gnuplot in this folder.\n"
        << "set encoding utf8\nset datafile separator ','\nset terminal gif animate delay " << delay
        << " size 800,600 font 'sans,11'\nset output 'shot.gif'\nset size ratio -1\n"
-       << "set xrange [" << num(-engine.L1 - engine.L4 - 1) << ":" << num(std::max(engine.L1 + engine.L4, engine.L2 + engine.L3) + 1) << "]\n"
-       << "set yrange [" << num(std::min(-0.5, H - engine.L2 - engine.L3 - 0.5)) << ":" << num(H + engine.L1 + engine.L4 + 0.5)
+       << "set xrange [" << gnuplot_number(-engine.L1 - engine.L4 - 1) << ":"
+       << gnuplot_number(std::max(engine.L1 + engine.L4, engine.L2 + engine.L3) + 1) << "]\n"
+       << "set yrange [" << gnuplot_number(std::min(-0.5, H - engine.L2 - engine.L3 - 0.5)) << ":" << gnuplot_number(H + engine.L1 + engine.L4 + 0.5)
        << "]\nset xlabel 'x toward the target [m]'\nset ylabel 'height [m]'\nset bmargin 5\n";
   auto stone = [&](SitePoint at, double size) {
-    anim << "set object circle at " << num(at.x) << "," << num(at.y) << " size " << num(size) << " fc rgb '#d62728' fs solid front\n";
+    anim << "set object circle at " << gnuplot_number(at.x) << "," << gnuplot_number(at.y) << " size " << gnuplot_number(size)
+         << " fc rgb '#d62728' fs solid front\n";
   };
   for (std::size_t i = 0; i < trace.size(); i += stride) {
     const bool on = trace[i].phase != Phase::released;
@@ -436,8 +451,8 @@ PictureFile PictureShot::animation_script() const {
   const double flight_lo = std::min(-engine.L1 - engine.L4, impact.x) - 2, flight_hi = std::max(impact.x, engine.L1) + 2;
   double top = H + engine.L1;
   for (const SitePoint& p : flight) top = std::max(top, p.y);
-  anim << "unset arrow\nunset label\nunset object\nset xrange [" << num(flight_lo) << ":" << num(flight_hi) << "]\nset yrange ["
-       << num(std::min(0.0, impact.y) - 2) << ":" << num(top + 2) << "]\nset size noratio\n";
+  anim << "unset arrow\nunset label\nunset object\nset xrange [" << gnuplot_number(flight_lo) << ":" << gnuplot_number(flight_hi) << "]\nset yrange ["
+       << gnuplot_number(std::min(0.0, impact.y) - 2) << ":" << gnuplot_number(top + 2) << "]\nset size noratio\n";
   const int flight_frames = 60;
   const double flight_step = series.flight_time / flight_frames;
   for (int k = 0; k <= flight_frames; ++k) {
@@ -446,8 +461,8 @@ PictureFile PictureShot::animation_script() const {
     stone(series.stone_at(after), 0.008 * (flight_hi - flight_lo));
     anim << "set title 'the flight: " << format_significant(after, 3) << " s after the release (" << (settings.air ? "air" : "vacuum") << ", "
          << format_significant(delay / 100.0 / flight_step, 2) << " × real speed)' noenhanced\n"
-         << "plot 'flight.csv' every ::1 using 1:2 with lines lc rgb '#bbbbbb' dt 2 notitle, 0 lc rgb '#6b8e23' lw 2 notitle, " << num(impact.y)
-         << " lc rgb 'gray40' notitle\n";
+         << "plot 'flight.csv' every ::1 using 1:2 with lines lc rgb '#bbbbbb' dt 2 notitle, 0 lc rgb '#6b8e23' lw 2 notitle, "
+         << gnuplot_number(impact.y) << " lc rgb 'gray40' notitle\n";
   }
   return {"animation.gp", anim.str()};
 }

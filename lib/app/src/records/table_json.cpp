@@ -89,9 +89,9 @@ double last_digit_unit(const std::map<std::string, std::string>& texts, const st
 }
 
 // Walks a JSON document and reports the first problem with the path of the offending key.
-class Reader {
+class TableReader {
  public:
-  explicit Reader(const std::string& origin) : origin_(origin) {}
+  explicit TableReader(const std::string& origin) : origin_(origin) {}
 
   [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
     throw Error(ErrorKind::data_file, origin_ + ": " + (path.empty() ? "top level" : path) + ": " + problem);
@@ -157,7 +157,7 @@ class Reader {
   std::string origin_;
 };
 
-Branch parse_branch(const Reader& reader, const json& segment, const std::string& path) {
+Branch parse_branch(const TableReader& reader, const json& segment, const std::string& path) {
   const json& value = reader.member(segment, path, "branch");
   if (!value.is_string()) reader.fail(path + ".branch", "expected \"none\", \"lower\" or \"upper\"");
   const std::string text = value.get<std::string>();
@@ -171,7 +171,7 @@ Branch parse_branch(const Reader& reader, const json& segment, const std::string
 // A printed constant may be off by one unit of its last digit (a rounding of a rounded value:
 // the paper's (30 deg, 2/3) D pair misses by 0.0004 with four decimals), so the sum may miss
 // n_Z by unit(p) + 5 unit(q), plus round-off; integers count as exact.
-void check_exponents(const Reader& reader, const Segment& segment, const ParamVector& n, const std::string& path,
+void check_exponents(const TableReader& reader, const Segment& segment, const ParamVector& n, const std::string& path,
                      const std::map<std::string, std::string>& texts) {
   for (Param param : all_params) {
     const std::string name(param_name(param));
@@ -187,7 +187,7 @@ void check_exponents(const Reader& reader, const Segment& segment, const ParamVe
   }
 }
 
-Segment parse_segment(const Reader& reader, const json& object, const std::string& path) {
+Segment parse_segment(const TableReader& reader, const json& object, const std::string& path) {
   Segment segment{};
   segment.X_min = reader.number(object, path, "X_min");
   segment.X_max = reader.number(object, path, "X_max");
@@ -198,7 +198,7 @@ Segment parse_segment(const Reader& reader, const json& object, const std::strin
   return segment;
 }
 
-void check_overlaps(const Reader& reader, const TableBlock& block, const std::string& path) {
+void check_overlaps(const TableReader& reader, const TableBlock& block, const std::string& path) {
   for (std::size_t i = 0; i < block.segments.size(); ++i)
     for (std::size_t j = i + 1; j < block.segments.size(); ++j) {
       const Segment& s = block.segments[i];
@@ -212,7 +212,7 @@ void check_overlaps(const Reader& reader, const TableBlock& block, const std::st
     }
 }
 
-TableBlock parse_block(const Reader& reader, const json& object, const std::string& path, const ParamVector& n,
+TableBlock parse_block(const TableReader& reader, const json& object, const std::string& path, const ParamVector& n,
                        const std::map<std::string, std::string>& texts, MachineKind machine) {
   TableBlock block{};
   block.theta_i_deg = reader.positive(object, path, "theta_i_deg");
@@ -251,7 +251,7 @@ ScalingTable parse_scaling_table(std::string_view json_text, const std::string& 
   }
   NumberTexts numbers;
   json::sax_parse(json_text, &numbers);
-  const Reader reader(origin);
+  const TableReader reader(origin);
   ScalingTable table{};
   table.origin = origin;
   if (document.is_object()) {
@@ -379,13 +379,13 @@ nlohmann::ordered_json sweep_point_json(const SweepPoint& p) {
 
 namespace {
 
-SweepPoint read_point(const Reader& reader, const nlohmann::json& j, const std::string& where) {
+SweepPoint read_point(const TableReader& reader, const nlohmann::json& j, const std::string& where) {
   SweepPoint p;
   p.X = reader.number(j, where, "X");
   p.capacity = {reader.positive(j, where, "R"), reader.positive(j, where, "T"), 0};
   if (j.is_object() && j.contains("error")) {
     p.error = reader.text(j, where, "error");
-    if (p.error.empty()) reader.fail(Reader::join(where, "error"), "empty; a failed point says why it failed");
+    if (p.error.empty()) reader.fail(TableReader::join(where, "error"), "empty; a failed point says why it failed");
     return p;
   }
   p.engine = read_engine(j, where).engine;
@@ -422,7 +422,7 @@ nlohmann::ordered_json sweep_part_json(const SweepPart& part) {
 SweepPart read_sweep_part(const nlohmann::json& j, const std::string& origin) {
   // "kind" may be any JSON at all: compared only when it is a string.
   if (!j.is_object() || !j.contains("kind") || !j["kind"].is_string() || j["kind"].get<std::string>() != part_kind) fail(origin, "not a sweep part");
-  const Reader reader(origin);
+  const TableReader reader(origin);
   SweepPart part;
   part.origin = origin;
   try {

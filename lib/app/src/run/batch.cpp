@@ -18,26 +18,26 @@ namespace {
 
 enum class ColumnRole { given, theta, F, branch, passed };
 
-struct Column {
+struct BatchColumn {
   ColumnRole role;
   std::string key;  // the given's quantity name, or the option's; the whole name when passed
   std::string unit;  // of bare numbers in the column, from the header ("R_m"); "" for SI
   std::optional<Quantity> quantity;  // a given's
 };
 
-std::vector<Column> parse_header(const std::vector<std::string>& names) {
+std::vector<BatchColumn> parse_header(const std::vector<std::string>& names) {
   std::vector<std::string_view> keys = {"theta", "theta_i_deg", "F", "branch"};
   for (Quantity quantity : all_quantities) keys.push_back(quantity_name(quantity));
   // What a batch reads, for the near misses of a column meant as one of them ("Theta", "theta_i").
   std::vector<std::string> read = input_names(op_given);
   for (const char* name : names_of(field_of(&DesignValues::theta_i_deg))) read.emplace_back(name);
   read.insert(read.end(), {key_of(&DesignValues::F), "branch"});
-  std::vector<Column> columns;
+  std::vector<BatchColumn> columns;
   int givens = 0;
   for (const std::string& name : names) {
     const auto split = split_column_name(name, keys);
     if (split && !split->unit.empty() && !is_unit_word(split->unit)) refuse_near_miss(name, read, "batch header");
-    Column column{ColumnRole::passed, name, "", std::nullopt};
+    BatchColumn column{ColumnRole::passed, name, "", std::nullopt};
     if (split && (split->unit.empty() || (split->key != "F" && split->key != "branch" && split->key != "theta_i_deg"))) {
       column.key = split->key, column.unit = split->unit;
       if (const auto quantity = quantity_from_name(split->key)) {
@@ -53,17 +53,17 @@ std::vector<Column> parse_header(const std::vector<std::string>& names) {
         if (!column.unit.empty()) parse_value("1" + column.unit, UnitDimension::angle, "column '" + name + "'");
       }
     }
-    for (const Column& seen : columns)
+    for (const BatchColumn& seen : columns)
       if (seen.role != ColumnRole::passed && seen.role == column.role && (seen.key == column.key || column.role != ColumnRole::given))
         throw Error(ErrorKind::usage, "batch header: column '" + name + "' names " + column.key + " a second time; keep one");
     givens += column.role == ColumnRole::given;
     columns.push_back(column);
   }
-  for (const Column& column : columns)
+  for (const BatchColumn& column : columns)
     if (column.role == ColumnRole::passed) refuse_near_miss(column.key, read, "batch header");
   if (givens != 2) {
     std::string given_names, passed_names;
-    for (const Column& column : columns) {
+    for (const BatchColumn& column : columns) {
       std::string& names = column.role == ColumnRole::passed ? passed_names : given_names;
       if (column.role == ColumnRole::given || column.role == ColumnRole::passed) names += (names.empty() ? "'" : ", '") + column.key + "'";
     }
@@ -74,7 +74,7 @@ std::vector<Column> parse_header(const std::vector<std::string>& names) {
   }
   // A column passed through must not take the name of one the calculator writes (in CSV or JSON).
   const std::vector<std::string> written = design_output_names();
-  for (const Column& column : columns)
+  for (const BatchColumn& column : columns)
     if (column.role == ColumnRole::passed && std::find(written.begin(), written.end(), column.key) != written.end())
       throw Error(ErrorKind::usage,
                   "batch header: the column '" + column.key + "' would pass through, but the output has a column '" + column.key +
@@ -82,11 +82,11 @@ std::vector<Column> parse_header(const std::vector<std::string>& names) {
   return columns;
 }
 
-DesignRequest parse_row(const std::vector<Column>& columns, const std::vector<std::string>& cells, const DesignRequest& defaults) {
+DesignRequest parse_row(const std::vector<BatchColumn>& columns, const std::vector<std::string>& cells, const DesignRequest& defaults) {
   DesignRequest request = defaults;
   std::vector<Given> givens;
   for (std::size_t k = 0; k < cells.size(); ++k) {
-    const Column& column = columns[k];
+    const BatchColumn& column = columns[k];
     const std::string value = column.role == ColumnRole::passed ? "" : cell_value(cells[k], column.unit, column.key);
     switch (column.role) {
       case ColumnRole::given:
@@ -109,7 +109,7 @@ int run_batch(std::istream& input, const ScalingTable& table, const DesignReques
               const std::function<void(const std::vector<std::string>& passed_columns)>& on_header,
               const std::function<void(const BatchRow&)>& on_row) {
   CsvReader reader(input, "batch input");
-  const std::vector<Column> columns = parse_header(reader.header());
+  const std::vector<BatchColumn> columns = parse_header(reader.header());
   std::vector<std::string> passed_names;
   for (std::size_t k = 0; k < columns.size(); ++k)
     if (columns[k].role == ColumnRole::passed) passed_names.push_back(reader.header()[k]);

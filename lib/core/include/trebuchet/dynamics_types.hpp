@@ -25,6 +25,7 @@ struct State {
 struct Vec2 {
   double x = 0, y = 0;
 };
+inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 
 /// Kinetic plus potential energy of each body, scaled (M g L2), potential from the pivot's level;
 /// the sling's, its rope's and pouch's (sling.hpp), 0 for a sling of no mass.
