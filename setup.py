@@ -4,8 +4,7 @@ The version is the project's, from CMakeLists.txt. TREBUCHET_BUILD_DIR names a b
 configured with -DTREBUCHET_PYTHON=ON to reuse (CI's install test), so that the library is not
 compiled twice; without it the build goes to setuptools' own temporary folder, as a unity build
 (CMake's CMAKE_UNITY_BUILD: the sources of a library compiled a few at a time in one unit, which
-halves a first install's compile on two cores, docs/benchmarks.md), through ccache where it is
-installed (a reinstall from another clone compiles again only what changed).
+halves a first install's compile on two cores, docs/benchmarks.md).
 """
 import os
 import pathlib
@@ -34,9 +33,8 @@ class CMakeBuild(build_ext):
         reused = os.environ.get("TREBUCHET_BUILD_DIR")
         build = pathlib.Path(reused).resolve() if reused else pathlib.Path(self.build_temp).resolve() / "cmake"
         if not (build / "CMakeCache.txt").exists():
-            cache = ["-DCMAKE_CXX_COMPILER_LAUNCHER=ccache", "-DCMAKE_C_COMPILER_LAUNCHER=ccache"] if shutil.which("ccache") else []
             subprocess.run(["cmake", "-S", str(SOURCE), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release", "-DTREBUCHET_PYTHON=ON", "-DCMAKE_UNITY_BUILD=ON",
-                            "-DTREBUCHET_BUILD_TESTS=OFF", "-DTREBUCHET_BUILD_PROGRAMS=OFF", f"-DPython3_EXECUTABLE={sys.executable}"] + cache, check=True)
+                            "-DTREBUCHET_BUILD_TESTS=OFF", "-DTREBUCHET_BUILD_PROGRAMS=OFF", f"-DPython3_EXECUTABLE={sys.executable}"], check=True)
         subprocess.run(["cmake", "--build", str(build), "--target", "_trebuchet", "-j", str(os.cpu_count() or 2)], check=True)
         built = sorted((build / "python" / "trebuchet").glob("_trebuchet*.so"))
         if not built:

@@ -22,10 +22,11 @@ if [ -n "$long_files" ] || [ -n "$long_functions" ]; then
 fi
 echo "lint.sh: no program file over 250 lines, no function over 100"
 # pip builds the library as a unity build (setup.py): a name in the anonymous namespaces of two
-# source files of one library would then be defined twice.
+# source files of one library would then be defined twice. Checked a source folder at a time
+# (a folder may hold two libraries' files, and overloads count as one name: the check errs safe).
 twice=$(for folder in lib/core/src lib/app/src; do
-  ctags -R --kinds-c++=+p -x --_xformat="%N %{scope} %F" "$folder" | awk '$2 ~ /__anon[0-9a-f]+$/ {sub(/__anon[0-9a-f]+$/, "", $2); print $2 $1, $3}' | sort -u |
-    awk '{files[$1] = files[$1] " " $2; count[$1]++} END {for (name in count) if (count[name] > 1) print "  " name ":" files[name]}'
+  ctags -R --kinds-c++=+p -x --_xformat="%N	%{scope}	%F" "$folder" | awk -F'\t' '$2 ~ /__anon[0-9a-f]+$/ {sub(/__anon[0-9a-f]+$/, "", $2); print $2 $1 "\t" $3}' | sort -u |
+    awk -F'\t' '{files[$1] = files[$1] " " $2; count[$1]++} END {for (name in count) if (count[name] > 1) print "  " name ":" files[name]}'
 done)
 if [ -n "$twice" ]; then
   printf 'lint.sh: names in the anonymous namespaces of two files of one library (pip'"'"'s unity build would define them twice); rename one, or share one:\n%s\n' "$twice"

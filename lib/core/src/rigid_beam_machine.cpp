@@ -79,7 +79,6 @@ std::array<double, 3> RigidBeamMachine::accelerations_of(Phase phase, const Stat
   // p's acceleration without th'' and phi'', plus the weight's unit: p_thth th'^2 + p_phiphi phi'^2 + y
   const Vec2 rest{(a.curve - l * std::sin(th)) * w2 + sling * cp * s.phi_dot * s.phi_dot,
                   l * std::cos(th) * w2 + sling * sp * s.phi_dot * s.phi_dot + 1};
-  const auto dot = [](Vec2 u, Vec2 v) { return u.x * v.x + u.y * v.y; };
   const double a11 = J.inertia + mu * dot(p_th, p_th), a12 = mu * dot(p_th, p_phi), a22 = mu * dot(p_phi, p_phi) + rope_inertia;
   const double b1 = G * std::sin(th) + extra.theta - J.slope * w2 / 2 - mu * dot(p_th, rest), b2 = extra.phi - mu * dot(p_phi, rest);
   const double det = a11 * a22 - a12 * a12;
