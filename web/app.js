@@ -797,18 +797,20 @@
   function update(how) {
     document.documentElement.dataset.view = state.view;  // the phone's edit view puts the animation first (style.css)
     showMachineNote();
-    if (!(how && how.sliding)) saveState();  // a slide's link follows at rest (flushFollow)
+    const sliding = Boolean(how && how.sliding);
+    if (!sliding) {
+      settle();  // a slide's comparison and what-if, still waiting, belong to the shot this replaces
+      saveState();  // a slide's link follows at rest (flushFollow)
+    }
     if (state.view === 'design') {
       if (runDesign()) runShot(engineOf(designed), "The optimal engine's shot");
       else refuseShot('No engine to shoot: the givens are refused (the message under them says why).');
     } else if (state.view === 'edit') {
       if (!state.edit && designed) state.edit = engineOf(designed);
-      const sliding = Boolean(how && how.sliding);
       const answer = state.edit ? runShot(state.edit, "The edited engine's shot", sliding) : null;
       if (sliding) {
         follow(answer);
       } else {
-        settle();
         compareWithOptimum(answer);
         runSweep(answer);
       }

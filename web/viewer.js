@@ -251,8 +251,8 @@
       // the arc, or a line up or down) that is inside the scene above the ground and clear of the
       // engine's parts, of the labels already placed and of the boxes the scene keeps clear (its
       // caption). Where it stood at the frame before, beside its vertex, it stays while that place
-      // is clear (options.remember): a label that moves with its vertex, not one that jumps
-      // between two places from frame to frame.
+      // is clear and nearly as good (options.remember): a label that moves with its vertex, not
+      // one that jumps between two places from frame to frame. Distances in the scene's units.
       const placed = (options.keepClear || []).slice();
       const inside = (x, y, w, h) => !options.bounds ||
         (y - h >= 0 && y + 4 <= Math.min(options.bounds.height, options.floor === undefined ? Infinity : options.floor) && x - w / 2 >= 0 && x + w / 2 <= options.bounds.width);  // 4: below the baseline
@@ -262,18 +262,23 @@
       const place = (centre, radius, mid, label) => {
         const w = textWidth(label, 12), h = 14;
         const at = (k, turn, lines) => [centre[0] + k * radius * Math.cos(mid + turn), centre[1] - k * radius * Math.sin(mid + turn) + 4 + lines * h];
-        // Round the arc at 1.7 times its radius and farther out, or a line up or down from its
-        // middle: the nearest its angle's vertex first, and of those as near, the least turned.
-        const ideal = at(1.7, 0, 0), candidates = [], turns = [0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6, -6, 7, -7, 8, -8];
-        for (const k of [1.7, 2.2, 2.8, 3.6, 4.6]) for (const turn of turns) candidates.push(at(k, 0.39 * turn, 0));
-        for (const lines of turns.slice(1, 13)) candidates.push(at(1.7, 0, lines));
-        const fromVertex = (p) => Math.round(Math.hypot(p[0] - centre[0], p[1] - 4 - centre[1]));
-        candidates.sort((p, q) => fromVertex(p) - fromVertex(q));  // stable: the order above among those as near
+        // Round the arc at 1.7 times its radius and farther out (turned by steps of 0.39 rad from
+        // its middle), or a line up or down from there; the cheapest first: the distance from the
+        // angle's vertex and half that from the arc's middle (a label a little farther out on its
+        // arc's side before one as near on the other side).
+        const ideal = at(1.7, 0, 0), candidates = [];
+        for (const k of [1.7, 2.2, 2.8, 3.6, 4.6]) for (let turn = -8; turn <= 8; turn++) candidates.push(at(k, 0.39 * turn, 0));
+        for (let lines = -6; lines <= 6; lines++) if (lines) candidates.push(at(1.7, 0, lines));
+        const cost = (p) => Math.hypot(p[0] - centre[0], p[1] - 4 - centre[1]) + 0.5 * Math.hypot(p[0] - ideal[0], p[1] - ideal[1]);
         const kept = ([x0, y]) => [options.bounds ? Math.min(Math.max(x0, w / 2 + 2), options.bounds.width - w / 2 - 2) : x0, y];
+        const ranked = candidates.sort((p, q) => cost(p) - cost(q)).map(kept);
         const clear = ([x, y]) => inside(x, y, w, h) && !overLabel(x, y, w, h) && !overPart(x, y, w, h);
+        // Where it stood at the frame before stays while clear and within its arc's radius of the
+        // cheapest clear place: it moves with its vertex, and comes back to its arc once it can.
         const memory = options.remember || {}, before = memory[label[0]], stay = before && kept([centre[0] + before[0], centre[1] + before[1]]);
-        const spot = (stay && clear(stay) ? stay : null) || candidates.map(kept).find(clear) ||
-          candidates.map(kept).find(([x, y]) => inside(x, y, w, h) && !overLabel(x, y, w, h)) || kept(ideal);
+        const best = ranked.find(clear);
+        const spot = (stay && clear(stay) && (!best || cost(stay) <= cost(best) + radius) ? stay : best) ||
+          ranked.find(([x, y]) => inside(x, y, w, h) && !overLabel(x, y, w, h)) || kept(ideal);
         memory[label[0]] = [spot[0] - centre[0], spot[1] - centre[1]];
         placed.push({ x: spot[0], y: spot[1], w, h });
         return spot;
