@@ -2,9 +2,9 @@
 
 The version is the project's, from CMakeLists.txt. TREBUCHET_BUILD_DIR names a build folder
 configured with -DTREBUCHET_PYTHON=ON to reuse (CI's install test), so that the library is not
-compiled twice; without it the build goes to setuptools' own temporary folder, as a unity build
-(CMake's CMAKE_UNITY_BUILD: the sources of a library compiled a few at a time in one unit, which
-halves a first install's compile on two cores, docs/benchmarks.md).
+compiled twice; without it the build goes to setuptools' own temporary folder, a unity build as
+every build of the project is by default (CMakeLists.txt: the sources of a target compiled a few
+at a time in one unit, which halves a first install's compile on two cores, docs/benchmarks.md).
 """
 import os
 import pathlib
@@ -33,7 +33,7 @@ class CMakeBuild(build_ext):
         reused = os.environ.get("TREBUCHET_BUILD_DIR")
         build = pathlib.Path(reused).resolve() if reused else pathlib.Path(self.build_temp).resolve() / "cmake"
         if not (build / "CMakeCache.txt").exists():
-            subprocess.run(["cmake", "-S", str(SOURCE), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release", "-DTREBUCHET_PYTHON=ON", "-DCMAKE_UNITY_BUILD=ON",
+            subprocess.run(["cmake", "-S", str(SOURCE), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release", "-DTREBUCHET_PYTHON=ON",
                             "-DTREBUCHET_BUILD_TESTS=OFF", "-DTREBUCHET_BUILD_PROGRAMS=OFF", f"-DPython3_EXECUTABLE={sys.executable}"], check=True)
         subprocess.run(["cmake", "--build", str(build), "--target", "_trebuchet", "-j", str(os.cpu_count() or 2)], check=True)
         built = sorted((build / "python" / "trebuchet").glob("_trebuchet*.so"))

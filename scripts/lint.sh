@@ -5,7 +5,7 @@
 # each file that differs or each problem found. The house's sizes (docs/architecture.md): no
 # program file (calc/, verify/, cli/) over 250 lines, no function in lib/, calc/, verify/ or cli/
 # over 100 (Universal Ctags' extents of functions and members); no file-local name twice in one
-# library (pip's unity build).
+# target (the unity builds of scripts/test.sh and pip).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mapfile -t cpp < <(git ls-files 'lib/*.cpp' 'lib/*.hpp' 'calc/*.cpp' 'verify/*.cpp' 'verify/*.hpp' 'cli/*.cpp' 'cli/*.hpp' 'python/src/*.cpp' \
@@ -21,17 +21,19 @@ if [ -n "$long_files" ] || [ -n "$long_functions" ]; then
   exit 1
 fi
 echo "lint.sh: no program file over 250 lines, no function over 100"
-# pip builds the library as a unity build (setup.py): a name in the anonymous namespaces of two
-# source files of one library would then be defined twice. Checked a source folder at a time
-# (a folder may hold two libraries' files, and overloads count as one name: the check errs safe).
-twice=$(for folder in lib/core/src lib/app/src; do
-  ctags -R --kinds-c++=+p -x --_xformat="%N	%{scope}	%F" "$folder" | awk -F'\t' '$2 ~ /__anon[0-9a-f]+$/ {sub(/__anon[0-9a-f]+$/, "", $2); print $2 $1 "\t" $3}' | sort -u |
+# The builds of scripts/test.sh and pip's (setup.py) are unity builds: a name in the anonymous
+# namespaces of two source files of one target would then be defined twice. Checked a target's
+# sources at a time, by their folder where a folder holds one target's (a folder may hold two
+# libraries' files, and overloads count as one name: the check errs safe).
+twice=$(for sources in lib/core/src lib/app/src "tests/*.cpp tests/reference/*.cpp" "verify/*.cpp" "calc/*.cpp"; do
+  # shellcheck disable=SC2086  # each group's globs, expanded here
+  ctags -R --kinds-c++=+p -x --_xformat="%N	%{scope}	%F" $sources | awk -F'\t' '$2 ~ /__anon[0-9a-f]+$/ {sub(/__anon[0-9a-f]+$/, "", $2); print $2 $1 "\t" $3}' | sort -u |
     awk -F'\t' '{files[$1] = files[$1] " " $2; count[$1]++} END {for (name in count) if (count[name] > 1) print "  " name ":" files[name]}'
 done)
 if [ -n "$twice" ]; then
-  printf 'lint.sh: names in the anonymous namespaces of two files of one library (pip'"'"'s unity build would define them twice); rename one, or share one:\n%s\n' "$twice"
+  printf 'lint.sh: names in the anonymous namespaces of two source files of one target (a unity build would define them twice); rename one, or share one:\n%s\n' "$twice"
   exit 1
 fi
-echo "lint.sh: no name in the anonymous namespaces of two files of one library"
+echo "lint.sh: no name in the anonymous namespaces of two source files of one target"
 tests/web/node_modules/.bin/eslint web/app.js web/viewer.js web/bundle.mjs tests/web/*.mjs
 echo "lint.sh: web/ and tests/web/ pass ESLint"

@@ -10,6 +10,9 @@
 
 namespace trebuchet::testing {
 
+/// How far `a` lies from `b`, relative to b: |a/b - 1|.
+inline double relative(double a, double b) { return std::abs(a / b - 1); }
+
 /// A row of tab:Alcala_la_Vieja as printed: theta_i = 30 deg, F = 2/3, m = 50 kg stones;
 /// lengths [m], M [t], mb [kg].
 inline Engine alcala_row(double L1, double L2, double L4, double M_t, double mb) {

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <tuple>
 
+#include "engines.hpp"
 #include "paper_rounding.hpp"
 #include "trebuchet/app/records/table_json.hpp"
 #include "trebuchet/calculator.hpp"
@@ -32,8 +33,6 @@ DesignRequest at_XY(double X, double Y, double theta_i_deg = 30, double F = 2.0 
   const Capacity c = capacity_at({X, Y}, 240, 26000);
   return capacity(c.R, c.T, theta_i_deg, F);
 }
-
-double relative(double a, double b) { return std::abs(a / b - 1); }
 
 }  // namespace
 

@@ -25,14 +25,14 @@ DesignRequest request(Given first, Given second, double theta_i_deg, double F) {
   return r;
 }
 
-struct Expected {
+struct CalculatorColumn {
   const char* name;  // quantity, as in the paper's column
   const char* text;  // printed value
   double scale;  // our SI value times scale = the paper's unit
   double known_deviation = 0;  // > 0: the printed value is off by more than rounding; bound on |ours/paper - 1|
 };
 
-double pick(const OptimalEngine& d, const std::string& name) {
+double design_figure(const OptimalEngine& d, const std::string& name) {
   const Engine& e = d.engine;
   if (name == "T") return d.capacity.T;
   if (name == "L1") return e.L1;
@@ -47,21 +47,21 @@ double pick(const OptimalEngine& d, const std::string& name) {
   throw std::logic_error("no column " + name);
 }
 
-void check_row(const std::string& row, const DesignRequest& r, std::initializer_list<Expected> expected) {
+void check_design_row(const std::string& row, const DesignRequest& r, std::initializer_list<CalculatorColumn> expected) {
   std::printf("%s\n", row.c_str());
   const OptimalEngine design = design_optimal_engine(builtin_scaling_table(), r);
-  for (const Expected& column : expected) {
+  for (const CalculatorColumn& column : expected) {
     if (column.known_deviation > 0) {
       const double paper = printed(column.text).value;
-      const double ours = pick(design, column.name) * column.scale;
+      const double ours = design_figure(design, column.name) * column.scale;
       std::printf("  %-34s ours %-11.5g paper %-7s diff %+6.2f%%  known deviation beyond rounding, bound %.1f%%\n", (row + " " + column.name).c_str(),
                   ours, column.text, 100 * (ours / paper - 1), 100 * column.known_deviation);
       CHECK(std::abs(ours / paper - 1) <= column.known_deviation);
       continue;
     }
-    const double rounding = table_rounding_effect(r.theta_i_deg, r.F,
-                                                  [&](const ScalingTable& table) { return pick(design_optimal_engine(table, r), column.name); });
-    check_printed(row + " " + column.name, pick(design, column.name), column.text, rounding, column.scale);
+    const double rounding = table_rounding_effect(
+        r.theta_i_deg, r.F, [&](const ScalingTable& table) { return design_figure(design_optimal_engine(table, r), column.name); });
+    check_printed(row + " " + column.name, design_figure(design, column.name), column.text, rounding, column.scale);
   }
 }
 
@@ -73,35 +73,40 @@ void check_row(const std::string& row, const DesignRequest& r, std::initializer_
 // its tolerance). The same constants reproduce the Ma 480 m row to 2%, so the printed M of
 // this row, not the table, is off; the test pins the deviation at 2%.
 TEST_CASE("tab:Alcala_la_Vieja row Ca: R = 150 m, m = 50 kg", "[calculator][paper]") {
-  check_row("Alcala Ca", request({Quantity::R, 150}, {Quantity::m, 50}, 30, 2.0 / 3),
-            {{"T", "40.3", 1e-3}, {"L1", "4.13", 1}, {"L2", "0.88", 1}, {"L4", "3.55", 1}, {"D", "0.25", 1}, {"M", "3.11", 1e-3}, {"mb", "174", 1}});
+  check_design_row(
+      "Alcala Ca", request({Quantity::R, 150}, {Quantity::m, 50}, 30, 2.0 / 3),
+      {{"T", "40.3", 1e-3}, {"L1", "4.13", 1}, {"L2", "0.88", 1}, {"L4", "3.55", 1}, {"D", "0.25", 1}, {"M", "3.11", 1e-3}, {"mb", "174", 1}});
 }
 
 TEST_CASE("tab:Alcala_la_Vieja row Ma: R = 480 m, m = 50 kg", "[calculator][paper]") {
-  check_row("Alcala Ma 480", request({Quantity::R, 480}, {Quantity::m, 50}, 30, 2.0 / 3),
-            {{"T", "124", 1e-3}, {"L1", "5.50", 1}, {"L2", "0.71", 1}, {"L4", "5.15", 1}, {"D", "0.31", 1}, {"M", "11.5", 1e-3}, {"mb", "334", 1}});
+  check_design_row(
+      "Alcala Ma 480", request({Quantity::R, 480}, {Quantity::m, 50}, 30, 2.0 / 3),
+      {{"T", "124", 1e-3}, {"L1", "5.50", 1}, {"L2", "0.71", 1}, {"L4", "5.15", 1}, {"D", "0.31", 1}, {"M", "11.5", 1e-3}, {"mb", "334", 1}});
 }
 
 TEST_CASE("tab:Alcala_la_Vieja row Ma: R = 426 m (aim shortened for the -54 m target)", "[calculator][paper]") {
-  check_row(
+  check_design_row(
       "Alcala Ma 426", request({Quantity::R, 426}, {Quantity::m, 50}, 30, 2.0 / 3),
       {{"T", "111", 1e-3}, {"L1", "5.36", 1}, {"L2", "0.75", 1}, {"L4", "4.96", 1}, {"D", "0.31", 1}, {"M", "9.70", 1e-3, 0.02}, {"mb", "320", 1}});
 }
 
 TEST_CASE("tab:Alcala_la_Vieja row Sa: R = 250 m, m = 50 kg", "[calculator][paper]") {
-  check_row("Alcala Sa", request({Quantity::R, 250}, {Quantity::m, 50}, 30, 2.0 / 3),
-            {{"T", "66.0", 1e-3}, {"L1", "4.72", 1}, {"L2", "0.85", 1}, {"L4", "4.19", 1}, {"D", "0.28", 1}, {"M", "5.16", 1e-3}, {"mb", "242", 1}});
+  check_design_row(
+      "Alcala Sa", request({Quantity::R, 250}, {Quantity::m, 50}, 30, 2.0 / 3),
+      {{"T", "66.0", 1e-3}, {"L1", "4.72", 1}, {"L2", "0.85", 1}, {"L4", "4.19", 1}, {"D", "0.28", 1}, {"M", "5.16", 1e-3}, {"mb", "242", 1}});
 }
 
 // tab:SketchBook-I, rows with n = 1 (found algebraically in the paper): R = 450 m, m = 100 kg.
 TEST_CASE("tab:SketchBook-I n = 1, F = 1, theta_i = 30 deg", "[calculator][paper]") {
-  check_row("SketchBook-I F=1 30deg", request({Quantity::R, 450}, {Quantity::m, 100}, 30, 1),
-            {{"T", "235", 1e-3}, {"L1", "6.13", 1}, {"L4", "5.80", 1}, {"M", "14.3", 1e-3}, {"mb", "660", 1}, {"Lb", "7.21", 1}, {"l", "5.68", 1}});
+  check_design_row(
+      "SketchBook-I F=1 30deg", request({Quantity::R, 450}, {Quantity::m, 100}, 30, 1),
+      {{"T", "235", 1e-3}, {"L1", "6.13", 1}, {"L4", "5.80", 1}, {"M", "14.3", 1e-3}, {"mb", "660", 1}, {"Lb", "7.21", 1}, {"l", "5.68", 1}});
 }
 
 TEST_CASE("tab:SketchBook-I n = 1, F = 2/3, theta_i = 30 deg", "[calculator][paper]") {
-  check_row("SketchBook-I F=2/3 30deg", request({Quantity::R, 450}, {Quantity::m, 100}, 30, 2.0 / 3),
-            {{"T", "234", 1e-3}, {"L1", "6.20", 1}, {"L4", "5.69", 1}, {"M", "16.9", 1e-3}, {"mb", "601", 1}, {"Lb", "7.12", 1}, {"l", "6.77", 1}});
+  check_design_row(
+      "SketchBook-I F=2/3 30deg", request({Quantity::R, 450}, {Quantity::m, 100}, 30, 2.0 / 3),
+      {{"T", "234", 1e-3}, {"L1", "6.20", 1}, {"L4", "5.69", 1}, {"M", "16.9", 1e-3}, {"mb", "601", 1}, {"Lb", "7.12", 1}, {"l", "6.77", 1}});
 }
 
 // The theta_i = 40 deg row differs from tab:CPNC by more than rounding in L4 (printed 5.55 m,
@@ -109,14 +114,14 @@ TEST_CASE("tab:SketchBook-I n = 1, F = 2/3, theta_i = 30 deg", "[calculator][pap
 // mb agree. The block's constants satisfy p + 5q = n_Z (eq:ZRT) to their last digit, so they
 // are self-consistent; the printed row does not follow from them.
 TEST_CASE("tab:SketchBook-I n = 1, F = 2/3, theta_i = 40 deg", "[calculator][paper]") {
-  check_row("SketchBook-I F=2/3 40deg", request({Quantity::R, 450}, {Quantity::m, 100}, 40, 2.0 / 3),
-            {{"T", "234", 1e-3},
-             {"L1", "6.48", 1},
-             {"L4", "5.55", 1, 0.02},
-             {"M", "19.1", 1e-3, 0.015},
-             {"mb", "622", 1},
-             {"Lb", "7.35", 1},
-             {"l", "7.51", 1}});
+  check_design_row("SketchBook-I F=2/3 40deg", request({Quantity::R, 450}, {Quantity::m, 100}, 40, 2.0 / 3),
+                   {{"T", "234", 1e-3},
+                    {"L1", "6.48", 1},
+                    {"L4", "5.55", 1, 0.02},
+                    {"M", "19.1", 1e-3, 0.015},
+                    {"mb", "622", 1},
+                    {"Lb", "7.35", 1},
+                    {"l", "7.51", 1}});
 }
 
 // Section 6.3: Denny's standard parameters Lb = 12 m, M = 10 t, m = 100 kg, mb = 2 t with

@@ -7,36 +7,22 @@
 #include <cmath>
 #include <cstdio>
 
+#include "contests.hpp"
 #include "heavy.hpp"
 #include "trebuchet/contest.hpp"
 #include "trebuchet/error.hpp"
 
 using namespace trebuchet;
+using trebuchet::testing::school_contest;
 
-namespace {
-
-// A school contest: a 0.5 kg ball, a beam of 1.5 kg/m, within a box 3 m high and 4 m wide, a
-// counterweight of at most 60 kg.
-ContestRequest school(MachineKind machine) {
-  ContestRequest r;
-  r.machine = machine;
-  r.projectile_mass = 0.5;
-  r.beam_mass_per_length = 1.5;
-  r.limits[width_limit] = 4;
-  r.limits[height_limit] = 3;
-  r.limits[mass_limit] = 60;
-  r.settings.criterion.release = Release::range;  // released where the range peaks, as trebuchet-verify contest does
-  return r;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 // The search against a grid of the same variables (L1/L2, L4/L1, M and L2 for the fixed
 // machine, the counterweight at the short arm's end) under the same loose limits: no grid
 // point that meets them throws farther than the search's optimum. The grid's steps (0.5 in l,
 // 0.1 in l4, 10 kg in M, 5 cm in L2) leave it some percent short of the optimum.
 TEST_CASE("the contest's optimum throws at least as far as a grid of the same engines", "[contest][heavy]") {
-  const ContestRequest r = school(MachineKind::fixed);
+  const ContestRequest r = school_contest(MachineKind::fixed);
   const ContestEngine best = contest_optimum(r);
   double grid_best = 0;
   int shots = 0;
@@ -70,7 +56,7 @@ TEST_CASE("the contest's optimum throws at least as far as a grid of the same en
 // acceleration of 5 m/s2 can be met alone (a feeble engine throws a little, slowly) but not in
 // a box 4 m wide: the pair is named, and each of its limits alone is met.
 TEST_CASE("the contest names the fewest limits that cannot be met together", "[contest][heavy]") {
-  ContestRequest r = school(MachineKind::fixed);
+  ContestRequest r = school_contest(MachineKind::fixed);
   r.limits[axle_limit] = 2;  // N
   CHECK(conflicting_limits(r) == std::vector<ContestLimit>{axle_limit});
   r.limits[axle_limit].reset();

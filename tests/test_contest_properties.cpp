@@ -18,10 +18,12 @@
 #include <string>
 #include <vector>
 
+#include "contests.hpp"
 #include "heavy.hpp"
 #include "trebuchet/contest.hpp"
 
 using namespace trebuchet;
+using trebuchet::testing::school_contest;
 
 namespace {
 
@@ -50,9 +52,6 @@ ContestRequest builder_floating_arm(double width) {
   return r;
 }
 
-// A school contest: a 0.5 kg ball, a beam of 1.5 kg/m, in a box 4 m wide and 3 m high, at most 60 kg.
-ContestRequest school(MachineKind machine) { return contest(machine, 0.5, 1.5, {{width_limit, 4}, {height_limit, 3}, {mass_limit, 60}}); }
-
 ContestRequest through_air(ContestRequest r) {
   r.settings.air = Air{};
   return r;
@@ -69,8 +68,8 @@ std::vector<ContestCase> vacuum_cases() {
   return {{"hinged builder", builder},
           {"floating-arm builder, 3 m wide", builder_floating_arm(3)},
           {"floating-arm builder, 3.2 m wide", builder_floating_arm(3.2)},
-          {"fixed school", school(fixed)},
-          {"floating-arm school", school(floating)},
+          {"fixed school", school_contest(fixed)},
+          {"floating-arm school", school_contest(floating)},
           {"hinged builder, 10 cm clear", clear},
           {"fixed, acceleration 300 m/s2", contest(fixed, 0.5, 1.5, {{width_limit, 4}, {mass_limit, 60}, {acceleration_limit, 300}})}};
 }
@@ -189,7 +188,7 @@ TEST_CASE("the contest is monotone in its limits and its gains are true through 
 }
 
 TEST_CASE("the contest gives the same engine on every run", "[contest][heavy]") {
-  ContestRequest r = school(MachineKind::fixed);
+  ContestRequest r = school_contest(MachineKind::fixed);
   r.gains = false;
   const ContestEngine first = contest_optimum(r), second = contest_optimum(r);
   CHECK(first.objective == second.objective);

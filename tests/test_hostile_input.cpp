@@ -25,7 +25,7 @@ using namespace trebuchet;
 namespace fs = std::filesystem;
 
 namespace {
-ErrorKind kind_of(const std::function<void()>& work) {
+ErrorKind error_kind_of(const std::function<void()>& work) {
   try {
     work();
   } catch (const Error& e) {
@@ -67,7 +67,7 @@ TEST_CASE("nesting is counted outside strings and refused past 32 levels before 
   CHECK(json_depth("{\"a\\\"[[\": 1}") == 1);  // an escaped quote does not end the string
   CHECK(json_depth(std::string(100000, '[')) == max_json_depth + 1);  // counting stops once past the bound
   const std::string deep = std::string(33, '[') + std::string(33, ']');
-  CHECK(kind_of([&] { parse_json(deep, "test", "a design"); }) == ErrorKind::usage);
+  CHECK(error_kind_of([&] { parse_json(deep, "test", "a design"); }) == ErrorKind::usage);
   CHECK_NOTHROW(parse_json(std::string(32, '[') + std::string(32, ']'), "test", "a design"));
 }
 
@@ -86,14 +86,14 @@ TEST_CASE("a unit at one end of a range or spread is the unit of both", "[hostil
   const auto fraction = parse_spread("1/2..2/3", UnitDimension::dimensionless, "--F");
   REQUIRE(fraction);
   CHECK(fraction->b == Approx(2.0 / 3).epsilon(1e-15));
-  CHECK(kind_of([] { parse_spread("4m..5kg", UnitDimension::length, "--L4"); }) == ErrorKind::unknown_unit);
+  CHECK(error_kind_of([] { parse_spread("4m..5kg", UnitDimension::length, "--L4"); }) == ErrorKind::unknown_unit);
 }
 
 TEST_CASE("a value is one value: a range, a spread or an overflow in SI units is refused", "[hostile]") {
   CHECK_THROWS_WITH(parse_value("100..200m", UnitDimension::length, "R"), Catch::Contains("is a range or a spread, and R takes one value"));
   CHECK_THROWS_WITH(parse_value("150m±10m", UnitDimension::length, "R"), Catch::Contains("is a range or a spread"));
   CHECK_THROWS_WITH(parse_value("1e308t", UnitDimension::mass, "--M"), Catch::Contains("beyond the range of numbers in SI units"));
-  CHECK(kind_of([] { parse_value("1e-322mm", UnitDimension::length, "--L1"); }) == ErrorKind::bad_number);  // 1e-325 m rounds to 0
+  CHECK(error_kind_of([] { parse_value("1e-322mm", UnitDimension::length, "--L1"); }) == ErrorKind::bad_number);  // 1e-325 m rounds to 0
 }
 
 TEST_CASE("engines, materials, air and tolerances of ordinary size, and not beyond", "[hostile]") {
@@ -133,7 +133,7 @@ TEST_CASE("engines, materials, air and tolerances of ordinary size, and not beyo
   // A search checks its settings first, so they are named as bad input, not as "no engine works".
   ShotSettings bad;
   bad.integrator.atol = 1e-300;
-  CHECK(kind_of([&] { verify_engine(alcala, bad); }) == ErrorKind::bad_number);
+  CHECK(error_kind_of([&] { verify_engine(alcala, bad); }) == ErrorKind::bad_number);
 }
 
 TEST_CASE("a series sampled too finely is refused before it is drawn, one too coarsely gives its ends", "[hostile]") {

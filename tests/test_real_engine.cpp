@@ -18,8 +18,6 @@ using namespace trebuchet::testing;
 
 namespace {
 
-double relative(double a, double b) { return std::abs(a / b - 1); }
-
 ShotResult shot_of(const ScaledDesign& d, std::vector<TracePoint>* trace = nullptr, double dt = 0) {
   return simulate_shot(d, ReleaseCriterion{}, IntegratorSettings{}, trace, dt);
 }

@@ -23,6 +23,7 @@ using trebuchet::testing::alcala_ca;
 using trebuchet::testing::denny_standard;
 using trebuchet::testing::laboratory_engine;
 using trebuchet::testing::range_optimum;
+using trebuchet::testing::relative;
 
 namespace {
 
@@ -31,10 +32,8 @@ ShotSettings released(ShotSettings settings, ReleaseBy by, double value) {
   return settings;
 }
 
-double relative(double a, double b) { return std::abs(a / b - 1); }
-
 // The message of the Error a shot throws, or "" when it does not throw one.
-std::string refusal(const Engine& engine, const ShotSettings& settings) {
+std::string refusal_of_release(const Engine& engine, const ShotSettings& settings) {
   try {
     verify_engine(engine, settings);
   } catch (const Error& e) {
@@ -107,26 +106,26 @@ TEST_CASE("a release that cannot be made is refused with the values that occur",
   const Engine lab = laboratory_engine();
   const ShotSettings plain;
   // The pin angle starts obtuse and closes: 170 deg is passed in the trough, before lift-off.
-  const std::string trough = refusal(lab, released(plain, ReleaseBy::pin_angle, 170));
+  const std::string trough = refusal_of_release(lab, released(plain, ReleaseBy::pin_angle, 170));
   INFO(trough);
   CHECK(trough.find("before lift-off") != std::string::npos);
   CHECK(trough.find("pin angle runs from") != std::string::npos);
-  const std::string early = refusal(lab, released(plain, ReleaseBy::time, 0.1));
+  const std::string early = refusal_of_release(lab, released(plain, ReleaseBy::time, 0.1));
   INFO(early);
   CHECK(early.find("before lift-off") != std::string::npos);
   // A time after the beam's forward swing never comes.
-  const std::string never = refusal(lab, released(plain, ReleaseBy::time, 5));
+  const std::string never = refusal_of_release(lab, released(plain, ReleaseBy::time, 5));
   INFO(never);
   CHECK(never.find("never comes") != std::string::npos);
   // A 5 kg projectile slows the sling's whip: its pin angle closes only to about 4.5 deg before
   // the projectile's velocity turns backward, where the window ends, and -20 deg is never reached.
-  const std::string pin_never = refusal(laboratory_engine(5), released(plain, ReleaseBy::pin_angle, -20));
+  const std::string pin_never = refusal_of_release(laboratory_engine(5), released(plain, ReleaseBy::pin_angle, -20));
   INFO(pin_never);
   CHECK(pin_never.find("never comes: the release window ends, the projectile's velocity turns backward first") != std::string::npos);
   // Falling to -85 deg, the projectile still flies forward (past the arm's line, which an ideal
   // release may pass); at 100 deg it flies backward.
-  CHECK(refusal(lab, released(plain, ReleaseBy::velocity_angle, 100)).find("does not fly forward") != std::string::npos);
-  CHECK(refusal(lab, released(plain, ReleaseBy::velocity_angle, -85)).empty());
+  CHECK(refusal_of_release(lab, released(plain, ReleaseBy::velocity_angle, 100)).find("does not fly forward") != std::string::npos);
+  CHECK(refusal_of_release(lab, released(plain, ReleaseBy::velocity_angle, -85)).empty());
 }
 
 TEST_CASE("the range optimum at a target level beats a fine scan of release times at that level", "[release]") {
@@ -227,7 +226,7 @@ TEST_CASE("a range optimum past the beam's forward swing is given back by each f
     const ReleaseBy kinds[] = {ReleaseBy::time, ReleaseBy::velocity_angle, ReleaseBy::pin_angle};
     for (int k = 0; k < 3; ++k) {
       INFO(c.name << ", release form " << k);
-      const std::string refused = refusal(c.engine, released(range, kinds[k], values[k]));
+      const std::string refused = refusal_of_release(c.engine, released(range, kinds[k], values[k]));
       INFO(refused);
       REQUIRE(refused.empty());
       const Verification given = verify_engine(c.engine, released(range, kinds[k], values[k]));

@@ -11,7 +11,7 @@
 using namespace trebuchet;
 
 namespace {
-ErrorKind kind_of(std::string_view text, UnitDimension dimension) {
+ErrorKind unit_error_kind(std::string_view text, UnitDimension dimension) {
   try {
     parse_positive(text, dimension, "--x");
   } catch (const Error& e) {
@@ -41,13 +41,13 @@ TEST_CASE("unit suffixes convert to SI base units", "[units]") {
 
 TEST_CASE("malformed, non-finite and non-positive numbers are bad_number", "[units]") {
   for (const char* text : {"abc", "", "m", "1/0", "inf", "nan", "1e999", "-5", "0", "-2kg"})
-    CHECK(kind_of(text, UnitDimension::mass) == ErrorKind::bad_number);
+    CHECK(unit_error_kind(text, UnitDimension::mass) == ErrorKind::bad_number);
 }
 
 TEST_CASE("unknown suffixes and suffixes of another dimension are unknown_unit", "[units]") {
-  CHECK(kind_of("150x", UnitDimension::length) == ErrorKind::unknown_unit);
-  CHECK(kind_of("150kg", UnitDimension::length) == ErrorKind::unknown_unit);
-  CHECK(kind_of("40kW", UnitDimension::energy) == ErrorKind::unknown_unit);
+  CHECK(unit_error_kind("150x", UnitDimension::length) == ErrorKind::unknown_unit);
+  CHECK(unit_error_kind("150kg", UnitDimension::length) == ErrorKind::unknown_unit);
+  CHECK(unit_error_kind("40kW", UnitDimension::energy) == ErrorKind::unknown_unit);
   try {
     parse_value("150kg", UnitDimension::length, "--R");
     FAIL("a mass was accepted as a length");
@@ -100,7 +100,7 @@ TEST_CASE("imperial values are read in every dimension a design has", "[units]")
   CHECK(parse_value("220lb", UnitDimension::mass, "--m") == Approx(99.7903214).epsilon(1e-12));
   CHECK(parse_value("3.11 tonnes", UnitDimension::mass, "--M") == Approx(3110).epsilon(1e-15));
   CHECK(parse_value("100ft*lbf", UnitDimension::energy, "--T") == Approx(135.58179483314004).epsilon(1e-15));
-  CHECK(kind_of("12 feet", UnitDimension::length) == ErrorKind::unknown_unit);
+  CHECK(unit_error_kind("12 feet", UnitDimension::length) == ErrorKind::unknown_unit);
 }
 
 // A report reads in units that suit the size: the issue's classroom model (22.4 J, 30.6 N, a

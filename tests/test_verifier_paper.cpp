@@ -40,13 +40,13 @@ Engine sketchbook_engine(double F, double theta_i_deg, const std::vector<double>
   return e;
 }
 
-struct Expected {
+struct VerifierColumn {
   const char* key;
   const char* text;
   double known = 1;  // > 1: a documented difference, allowed this multiple of the rounding tolerance
 };
 
-double pick(const Verification& v, const std::string& key) {
+double shot_figure(const Verification& v, const std::string& key) {
   if (key == "R") return v.capacity.R;
   if (key == "T") return v.capacity.T / 1e3;
   if (key == "eps") return 100 * v.eps;
@@ -59,17 +59,18 @@ double pick(const Verification& v, const std::string& key) {
 
 // Simulates the printed engine and checks each expected column to the rounding of inputs and
 // outputs. Inputs marked exact in the paper (bold) are passed as e.g. "12" with extra digits.
-void check_row(const std::string& row, const std::vector<std::string>& inputs, const std::function<Engine(const std::vector<double>&)>& build,
-               const ShotSettings& settings, const std::vector<Expected>& expected) {
+void check_shot_row(const std::string& row, const std::vector<std::string>& inputs, const std::function<Engine(const std::vector<double>&)>& build,
+                    const ShotSettings& settings, const std::vector<VerifierColumn>& expected) {
   std::vector<double> values;
   for (const auto& text : inputs) values.push_back(printed(text).value);
   const Verification v = verify_engine(build(values), settings);
   std::printf("%s (simulated from the printed engine)\n", row.c_str());
-  for (const Expected& e : expected) {
+  for (const VerifierColumn& e : expected) {
     const std::string key = e.key;
-    const double rounding = input_rounding_effect(inputs, build, [&](const Engine& engine) { return pick(verify_engine(engine, settings), key); });
+    const double rounding = input_rounding_effect(inputs, build,
+                                                  [&](const Engine& engine) { return shot_figure(verify_engine(engine, settings), key); });
     const double tolerance = e.known * (printed(e.text).half_unit + rounding);
-    check_printed(row + " " + key + (e.known > 1 ? " (known)" : ""), pick(v, key), e.text, tolerance - printed(e.text).half_unit);
+    check_printed(row + " " + key + (e.known > 1 ? " (known)" : ""), shot_figure(v, key), e.text, tolerance - printed(e.text).half_unit);
   }
 }
 
@@ -85,9 +86,9 @@ TEST_CASE("tab:Denny Present row: Denny's standard engine released at maximum ra
   const std::vector<std::string> inputs = {"0.93", "12.0000", "6.15", "7.9", "10.0000", "100.000", "2000.00"};
   ShotSettings at_max_range;
   at_max_range.criterion.release = Release::range;
-  check_row("tab:Denny Present, max range", inputs, build, at_max_range,
-            {{"R", "425"}, {"T", "224"}, {"eps", "48.4"}, {"Q", "1.7"}, {"v", "64"}, {"h", "20.2"}, {"x", "6.0"}});
-  check_row("tab:Denny Present, max Q", inputs, build, ShotSettings{}, {{"R", "425"}, {"Q", "1.7"}, {"v", "64"}});
+  check_shot_row("tab:Denny Present, max range", inputs, build, at_max_range,
+                 {{"R", "425"}, {"T", "224"}, {"eps", "48.4"}, {"Q", "1.7"}, {"v", "64"}, {"h", "20.2"}, {"x", "6.0"}});
+  check_shot_row("tab:Denny Present, max Q", inputs, build, ShotSettings{}, {{"R", "425"}, {"Q", "1.7"}, {"v", "64"}});
 }
 
 namespace {
@@ -140,7 +141,7 @@ ReleaseAngles fitted_release(const std::vector<double>& x) {
 // falls only ~9 cm" and "the 71 ton counterweight now falls about 1/2 m" up to the release,
 // read as 9 +- 1 cm and 0.5 +- 0.1 m.
 TEST_CASE("tab:Large_Eff with Q_eps: efficiencies near 99.5 % and the angles at release", "[verify][paper][stiff]") {
-  const std::vector<std::pair<std::vector<std::string>, std::vector<Expected>>> rows = {
+  const std::vector<std::pair<std::vector<std::string>, std::vector<VerifierColumn>>> rows = {
       {{"17", "0.800", "0.673", "270", "14.7"},
        {{"eps", "99.53"},
         {"theta", "-1.95"},
@@ -208,7 +209,7 @@ TEST_CASE("tab:Large_Eff with Q_eps: efficiencies near 99.5 % and the angles at 
       CHECK(ours.v.FR_Mg < 1.5);
       CHECK(sling_tension_mg < 20);
     }
-    for (const Expected& e : expected) {
+    for (const VerifierColumn& e : expected) {
       // Rounding of the printed shape, first order, each input in turn.
       double rounding = 0;
       for (std::size_t k = 0; k < x.size(); ++k) {
@@ -240,7 +241,7 @@ struct QRow {
   std::vector<std::string> inputs;
   std::function<Engine(const std::vector<double>&)> build;
   double n;
-  std::vector<Expected> expected;  // R, T, eps
+  std::vector<VerifierColumn> expected;  // R, T, eps
   const char* Q;  // the paper's
   const char* Q_ours;  // ours at 4 digits, as docs/verifier.md lists it: pinned, so that a change of eq:F shows
 };
@@ -344,7 +345,7 @@ TEST_CASE("optimised engines of the paper: R, T and eps to rounding, and Q as do
   for (const QRow& row : optimised_rows()) {
     ShotSettings settings;
     settings.criterion.n = row.n;
-    check_row(row.name, row.inputs, row.build, settings, row.expected);
+    check_shot_row(row.name, row.inputs, row.build, settings, row.expected);
     std::vector<double> x;
     for (const auto& text : row.inputs) x.push_back(printed(text).value);
     const double Q = 100 * verify_engine(row.build(x), settings).Q;

@@ -14,7 +14,7 @@ using json = nlohmann::json;
 namespace {
 
 // The engine of the paper's tab:SketchBook-I row that docs/verifier.md shoots (R 451 m).
-json engine() { return {{"L1", "6.13m"}, {"L2", "1.08m"}, {"F", 1}, {"L4", "5.8m"}, {"M", "14.3t"}, {"m", "100kg"}, {"mb", "660kg"}}; }
+json sample_engine() { return {{"L1", "6.13m"}, {"L2", "1.08m"}, {"F", 1}, {"L4", "5.8m"}, {"M", "14.3t"}, {"m", "100kg"}, {"mb", "660kg"}}; }
 
 }  // namespace
 
@@ -69,14 +69,14 @@ TEST_CASE("each point of a sweep is the shot of its engine alone, bit for bit", 
   for (const auto& sweep : sweeps) {
     const std::vector<double> values = what_if_values(sweep.from, sweep.to, 7);
     for (const bool air : {false, true}) {
-      const json answer = api::sweep({{"design", engine()}, {"vary", sweep.vary}, {"points", 7}, {"air", air}, {"release", "range"}});
+      const json answer = api::sweep({{"design", sample_engine()}, {"vary", sweep.vary}, {"points", 7}, {"air", air}, {"release", "range"}});
       CHECK(answer["vary"] == sweep.key);
       REQUIRE(answer["points"].size() == values.size());
       for (std::size_t i = 0; i < values.size(); ++i) {
         const json& point = answer["points"][i];
         INFO(sweep.vary << " at " << values[i] << (air ? " in air" : " in vacuum"));
         REQUIRE_FALSE(point.contains("error"));
-        json design = engine();
+        json design = sample_engine();
         design[sweep.key] = values[i];
         const json single = api::shot({{"design", design}, {"air", air}, {"release", "range"}});
         CHECK(point.dump() == single.dump());
@@ -90,9 +90,9 @@ TEST_CASE("a sweep over the pin angle never beats the optimum, and brackets it",
   // release, so no pin angle of the sweep may reach farther than the shot at the optimum, and the
   // best point lies next to the optimum's pin angle. The 1e-12 is the optimum's own convergence
   // (a parabola's vertex in solve_1d, far below the digits a range is quoted to).
-  const json best = api::shot({{"design", engine()}, {"release", "range"}});
+  const json best = api::shot({{"design", sample_engine()}, {"release", "range"}});
   const double optimum_R = best["R"], optimum_pin = best["pin_angle_at_release_deg"];
-  const json answer = api::sweep({{"design", engine()}, {"vary", "pin_angle=20..60"}, {"points", 41}, {"release", "range"}});
+  const json answer = api::sweep({{"design", sample_engine()}, {"vary", "pin_angle=20..60"}, {"points", 41}, {"release", "range"}});
   double best_R = 0, best_pin = 0;
   for (const json& point : answer["points"]) {
     REQUIRE_FALSE(point.contains("error"));
@@ -105,13 +105,13 @@ TEST_CASE("a sweep over the pin angle never beats the optimum, and brackets it",
 
 TEST_CASE("a sweep keeps the points that fail in their place", "[what_if]") {
   // M = 1 t cannot lift this beam (mu_b (l - 1)/2 > 1, eq:DU): that point fails, the others shoot.
-  const json answer = api::sweep({{"design", engine()}, {"vary", "M=1t..20t"}, {"points", 3}});
+  const json answer = api::sweep({{"design", sample_engine()}, {"vary", "M=1t..20t"}, {"points", 3}});
   REQUIRE(answer["points"].size() == 3);
   CHECK(answer["points"][0]["M"] == 1000.0);
   CHECK_THAT(answer["points"][0]["error"].get<std::string>(), Catch::Contains("cannot turn"));
   CHECK(answer["points"][1].contains("R"));
   CHECK(answer["points"][2].contains("R"));
-  CHECK_THROWS_AS(api::sweep({{"design", engine()}, {"vary", "M=1t..20t"}, {"points", 1}}), Error);
-  CHECK_THROWS_AS(api::sweep({{"design", engine()}, {"vary", "M=1t..20t"}, {"points", 2.5}}), Error);
-  CHECK_THROWS_AS(api::sweep({{"design", engine()}}), Error);
+  CHECK_THROWS_AS(api::sweep({{"design", sample_engine()}, {"vary", "M=1t..20t"}, {"points", 1}}), Error);
+  CHECK_THROWS_AS(api::sweep({{"design", sample_engine()}, {"vary", "M=1t..20t"}, {"points", 2.5}}), Error);
+  CHECK_THROWS_AS(api::sweep({{"design", sample_engine()}}), Error);
 }
