@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "engines.hpp"
@@ -112,6 +114,88 @@ TEST_CASE("Cd(Re) of a sphere is Morrison's correlation, and follows the standar
   // which more than halves Cd between Re = 1e5 and 3e5.
   CHECK(drag_coefficient_of(0.1) == Approx(240).epsilon(1e-3));
   CHECK(drag_coefficient_of(3e5) < 0.5 * drag_coefficient_of(1e5));
+}
+
+// dCd/dRe (issue 66: the flight's sensitivities need it) against the central difference of Cd
+// with a step of 1e-6 Re: truncation (1e-6)^2 of Cd''' and round-off 1e-16/1e-6 of Cd leave
+// the difference within 1e-8 of the slope's scale; 1e-7 of |slope| + 1e-7 of Cd/Re, through
+// the drag crisis (Re 1e5 to 3e5) where the slope is steepest.
+TEST_CASE("the slope of Cd(Re) is its derivative", "[air]") {
+  for (double re : {0.1, 1.0, 30.0, 1e3, 1e4, 1e5, 2e5, 2.63e5, 3e5, 1e6, 3e6}) {
+    const double step = 1e-6 * re;
+    const double difference = (drag_coefficient_of(re + step) - drag_coefficient_of(re - step)) / (2 * step);
+    std::printf("Re %g: dCd/dRe %.10g, central difference %.10g\n", re, drag_coefficient_slope_of(re), difference);
+    CHECK(std::abs(drag_coefficient_slope_of(re) - difference) <= 1e-7 * (std::abs(difference) + drag_coefficient_of(re) / re));
+  }
+}
+
+// The rate of a flight's range along a change of its start (range_rate: its variational
+// equations) against the central difference of fly's range with the start moved by +-1e-5 of
+// the tangent. The tangent moves the velocity 14 times as fast as it is (900 against 64 m/s), so
+// the truncation is about (1e-5 * 14)^2 = 2e-8 of the rate, and fly's own error (1e-13 a step,
+// some 1e-11 m of range) over 1e-5 of a rate of thousands another 1e-9: 1e-7 of the rate covers
+// both. At a step of 1e-4 the truncation alone is 3e-7, as seen. A wrong term of the Jacobian
+// (the drag's, Cd's slope, the wind) or a wrong end time moves the rate by percents. Denny's
+// shot with Cd 0.47, Cd(Re), a head wind, a drop, and back to its own height.
+TEST_CASE("a flight's range rate is its range's derivative along the start's change", "[air]") {
+  const FlightTangent tangent{{-50, 30}, {-200, -900}, 30};  // a release's velocity, acceleration and height's rate
+  Air reynolds;
+  reynolds.drag_coefficient.reset();
+  Air head_wind;
+  head_wind.wind = -15;
+  for (const auto& [name, air, drop] : {std::tuple{"Cd 0.47", Air{}, 20.0}, std::tuple{"Cd(Re)", reynolds, 20.0},
+                                        std::tuple{"a head wind", head_wind, 20.0}, std::tuple{"back to its height", Air{}, 0.0}}) {
+    const Drag drag = drag_of(air, 100);
+    const double ddrop = drop > 0 ? tangent.drop : 0;
+    const auto range_at = [&](double e) {
+      const Vec2 p{release_position.x + e * tangent.position.x, release_position.y + e * tangent.position.y};
+      const Vec2 v{release_velocity.x + e * tangent.velocity.x, release_velocity.y + e * tangent.velocity.y};
+      return fly(p, v, drop + e * ddrop, drag, g)->range;
+    };
+    const auto exact = range_rate(release_position, release_velocity, drop, FlightTangent{tangent.position, tangent.velocity, ddrop}, drag, g);
+    REQUIRE(exact);
+    const double step = 1e-5, difference = (range_at(step) - range_at(-step)) / (2 * step);
+    std::printf("%s: range %.12g m (fly %.12g m), rate %.10g, central difference %.10g\n", name, exact->range, range_at(0), exact->rate, difference);
+    CHECK(exact->range == Approx(range_at(0)).epsilon(1e-12));
+    CHECK(std::abs(exact->rate - difference) <= 1e-7 * std::abs(difference));
+  }
+}
+
+// The release through air where the range peaks: the slope's root from the flight's
+// sensitivities. A golden-section search over given release times, shot by shot (no slope), finds
+// the same range: a release 1e-6 s off the peak would fall short of it by about R''' (1e-6)^2/2,
+// 1e-13 of R here, so 1e-12 of R is the search's resolution, not the physics' tolerance. At
+// rtol = atol = 1e-13 the range moves by less than 1e-9 of it (the shot's integration error).
+TEST_CASE("the release through air is where its range peaks", "[air]") {
+  Air windy;
+  windy.wind = 10;
+  for (const auto& [name, air] : {std::pair{"still air", Air{}}, std::pair{"a following wind", windy}}) {
+    ShotSettings settings;
+    settings.criterion.release = Release::range;
+    settings.air = air;
+    settings.loads = false;
+    const Engine ca = testing::alcala_ca();
+    const Verification best = verify_engine(ca, settings);
+    const auto range_at = [&](double t) {
+      ShotSettings given = settings;
+      given.release_at = SetRelease{ReleaseBy::time, t};
+      return verify_engine(ca, given).capacity.R;
+    };
+    double lo = best.t_release - 0.02, hi = best.t_release + 0.02;
+    const double golden = (std::sqrt(5.0) - 1) / 2;
+    for (int k = 0; k < 60; ++k) {
+      const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
+      (range_at(a) > range_at(b) ? hi : lo) = range_at(a) > range_at(b) ? b : a;
+    }
+    const double peak = range_at((lo + hi) / 2);
+    ShotSettings tight = settings;
+    tight.integrator.rtol = tight.integrator.atol = 1e-13;
+    const double tighter = verify_engine(ca, tight).capacity.R;
+    std::printf("%s: R %.15g m at %.12g s; golden section %.15g m at %.12g s; at rtol 1e-13 %.15g m\n", name, best.capacity.R, best.t_release, peak,
+                (lo + hi) / 2, tighter);
+    CHECK(std::abs(best.capacity.R - peak) <= 1e-12 * peak);
+    CHECK(std::abs(best.capacity.R - tighter) <= 1e-9 * tighter);
+  }
 }
 
 TEST_CASE("Denny's engine in air: the paper's 380 m and Denny's own range", "[air][paper]") {

@@ -76,8 +76,9 @@ std::vector<ContestCase> vacuum_cases() {
 
 // Not here: issue 63's hinged engine in air (a 4 kg ball, a box of 20 m by 20 m, at most 10 t
 // and 2000 m/s2), where the search's local searches end far apart (591 to 975 m) on a flat
-// ridge: 974.63 m at 10 t, 976.37 m at 11 t (M does not bind), and a gain for 10 % more
-// acceleration of 31.54 m where the contest there finds 37.10 m (issue 63, open).
+// ridge: 971.89 m at 10 t, 977.59 m at 11 t (M does not bind), and an acceleration 1.25e-3
+// below its limit, not named binding, where the contest at 10 % more finds 39.2 m more (issue
+// 63, open).
 std::vector<ContestCase> air_cases() {
   return {{"fixed school in air, 1.5 kN on the axle",
            through_air(contest(MachineKind::fixed, 0.5, 1.5, {{width_limit, 4}, {height_limit, 3}, {mass_limit, 60}, {axle_limit, 1500}}))},

@@ -82,6 +82,16 @@ double drag_coefficient_of(double re) {
   return 24 / re + 2.6 * a / (1 + std::pow(a, 1.52)) + 0.411 * std::pow(b, -7.94) / (1 + std::pow(b, -8)) + 0.25 * c / (1 + c);
 }
 
+double drag_coefficient_slope_of(double re) {
+  if (!(re > 0)) return 0;
+  // Term by term: d/dx [x/(1 + x^p)] = (1 + (1 - p) x^p)/(1 + x^p)^2, and
+  // d/dx [x^q/(1 + x^r)] = x^(q-1) (q + (q - r) x^r)/(1 + x^r)^2; each x is Re over its scale.
+  const double a = re / 5, b = re / 263000, c = re / 1e6;
+  const double ap = std::pow(a, 1.52), br = std::pow(b, -8);
+  return -24 / (re * re) + 2.6 / 5 * (1 - 0.52 * ap) / ((1 + ap) * (1 + ap)) +
+      0.411 / 263000 * std::pow(b, -8.94) * (-7.94 + 0.06 * br) / ((1 + br) * (1 + br)) + 0.25 / 1e6 / ((1 + c) * (1 + c));
+}
+
 void check_air(const Air& air) {
   // From thin air to far denser than water, from cork to beyond osmium, winds far past any
   // storm's: beyond them the flight is no longer a flight.
@@ -110,69 +120,130 @@ Drag scaled(const Drag& drag, double L2, double g) {
   return out;
 }
 
+namespace {
+
+// A flight's integrator over its equations (and their tangent, FlightTangent), and where it comes
+// down: adaptive steps until the height (y[1]) falls through -drop on the way down, within 128
+// times the flight in vacuum, then the root within that step.
+class Flight {
+ public:
+  Flight(gsl_odeiv2_system& system, double scale)
+      : system_(system), scale_(scale), driver_(gsl_odeiv2_driver_alloc_y_new(&system, gsl_odeiv2_step_rk8pd, scale / 256, 1e-13, 1e-13)) {}
+
+  // The state at time t integrated afresh from (t0, y0), so that a root search sees one smooth
+  // function, as a shot's events do (shot.cpp).
+  bool integrate(double t0, const double* y0, double t, double* y) {
+    for (std::size_t k = 0; k < system_.dimension; ++k) y[k] = y0[k];
+    gsl_odeiv2_driver_reset(driver_.get());
+    double time = t0;
+    return t <= t0 || gsl_odeiv2_driver_apply(driver_.get(), &time, t, y) == GSL_SUCCESS;
+  }
+
+  // The time the flight from y0 comes down through -drop, with the state there in `end`.
+  std::optional<double> land(const double* y0, double drop, double* end) {
+    const std::size_t n = system_.dimension;
+    double a[8], b[8];
+    for (std::size_t k = 0; k < n; ++k) b[k] = y0[k];
+    double t_b = 0, h = scale_ / 256;
+    while (t_b < 128 * scale_) {
+      double t_a = t_b;
+      for (std::size_t k = 0; k < n; ++k) a[k] = b[k];
+      if (gsl_odeiv2_evolve_apply(driver_->e, driver_->c, driver_->s, &system_, &t_b, 128 * scale_, &h, b) != GSL_SUCCESS) return std::nullopt;
+      // Down through the level within this step; a flight that never rose to it (a target above
+      // its apex in air) never comes down there. A step may pass over the apex, rising below the
+      // level and falling below it again: the flight then reaches the level if its apex, the root
+      // of the vertical speed within the step, lies above it, and comes down through it after.
+      if (b[1] <= -drop && b[3] < 0) {
+        if (!(a[1] > -drop)) {
+          if (!(a[3] > 0)) return std::nullopt;
+          double top[8];
+          const double t_top = find_root(
+              [&](double t) {
+                integrate(t_a, a, t, top);
+                return top[3];
+              },
+              t_a, t_b, 0, 1e-15);
+          integrate(t_a, a, t_top, top);
+          if (!(top[1] > -drop)) return std::nullopt;
+          t_a = t_top;
+          for (std::size_t k = 0; k < n; ++k) a[k] = top[k];
+        }
+        const double t_end = find_root(
+            [&](double t) {
+              integrate(t_a, a, t, end);
+              return end[1] + drop;
+            },
+            t_a, t_b, 0, 1e-15);
+        integrate(t_a, a, t_end, end);
+        return t_end;
+      }
+    }
+    return std::nullopt;
+  }
+
+ private:
+  gsl_odeiv2_system& system_;
+  double scale_;
+  std::unique_ptr<gsl_odeiv2_driver, DriverDeleter> driver_;
+};
+
+// The flight in vacuum sets the scale of time; drag only shortens it.
+double flight_scale(Vec2 velocity, double drop, double g) {
+  const double vacuum_time = (velocity.y + std::sqrt(velocity.y * velocity.y + 2 * g * std::max(drop, 0.0))) / g;
+  return std::max(vacuum_time, 1e-6);
+}
+
+// The flight's equations (flight_rhs) and their tangent w = (dx, dy, dvx, dvy) along a change of
+// the start: dw/dt = J w, J the equations' Jacobian. The drag's acceleration -k(s) u, s = |u|,
+// k = Cd(s) per_length s, has the Jacobian -(k I + k'(s) u u^T / s) in the velocity.
+int flight_tangent_rhs(double t, const double y[], double dydt[], void* params) {
+  const int status = flight_rhs(t, y, dydt, params);
+  if (status != GSL_SUCCESS) return status;
+  const auto& p = *static_cast<FlightParameters*>(params);
+  const double ux = y[2] + p.drag.wind, uy = y[3];
+  const double speed = std::sqrt(ux * ux + uy * uy);
+  const double k = p.drag.coefficient_at(speed) * p.drag.per_length * speed;
+  const double k_slope = p.drag.per_length * (p.drag.coefficient_at(speed) + speed * p.drag.coefficient_slope_at(speed));
+  const double along = speed > 0 ? k_slope * (ux * y[6] + uy * y[7]) / speed : 0;
+  dydt[4] = y[6];
+  dydt[5] = y[7];
+  dydt[6] = -k * y[6] - along * ux;
+  dydt[7] = -k * y[7] - along * uy;
+  return GSL_SUCCESS;
+}
+
+}  // namespace
+
 std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Drag& drag, double g, std::vector<Vec2>* path, int path_points) {
   use_gsl_return_codes();
   FlightParameters parameters{drag, g};
   gsl_odeiv2_system system{flight_rhs, nullptr, 4, &parameters};
-  // The flight in vacuum sets the scale of time; drag only shortens it.
-  const double vacuum_time = (velocity.y + std::sqrt(velocity.y * velocity.y + 2 * g * std::max(drop, 0.0))) / g;
-  const double scale = std::max(vacuum_time, 1e-6);
-  std::unique_ptr<gsl_odeiv2_driver, DriverDeleter> driver(gsl_odeiv2_driver_alloc_y_new(&system, gsl_odeiv2_step_rk8pd, scale / 256, 1e-13, 1e-13));
-  // The state at time t integrated afresh from (t0, y0), so that a root search sees one smooth
-  // function, as a shot's events do (shot.cpp).
-  auto integrate = [&](double t0, const double* y0, double t, double* y) {
-    for (int k = 0; k < 4; ++k) y[k] = y0[k];
-    gsl_odeiv2_driver_reset(driver.get());
-    double time = t0;
-    return t <= t0 || gsl_odeiv2_driver_apply(driver.get(), &time, t, y) == GSL_SUCCESS;
-  };
+  Flight flight(system, flight_scale(velocity, drop, g));
   const double y0[4] = {position.x, 0, velocity.x, velocity.y};
-  double a[4], b[4];
-  for (int k = 0; k < 4; ++k) b[k] = y0[k];
-  // Adaptive steps until the height falls through -drop on the way down, within 128 times the
-  // flight in vacuum; then the root within that step.
-  double t_b = 0, h = scale / 256;
-  while (t_b < 128 * scale) {
-    double t_a = t_b;
-    for (int k = 0; k < 4; ++k) a[k] = b[k];
-    if (gsl_odeiv2_evolve_apply(driver->e, driver->c, driver->s, &system, &t_b, 128 * scale, &h, b) != GSL_SUCCESS) return std::nullopt;
-    // Down through the level within this step; a flight that never rose to it (a target above
-    // its apex in air) never comes down there. A step may pass over the apex, rising below the
-    // level and falling below it again: the flight then reaches the level if its apex, the root
-    // of the vertical speed within the step, lies above it, and comes down through it after.
-    if (b[1] <= -drop && b[3] < 0) {
-      if (!(a[1] > -drop)) {
-        if (!(a[3] > 0)) return std::nullopt;
-        double top[4];
-        const double t_top = find_root(
-            [&](double t) {
-              integrate(t_a, a, t, top);
-              return top[3];
-            },
-            t_a, t_b, 0, 1e-15);
-        integrate(t_a, a, t_top, top);
-        if (!(top[1] > -drop)) return std::nullopt;
-        t_a = t_top;
-        for (int k = 0; k < 4; ++k) a[k] = top[k];
-      }
-      double end[4];
-      const double t_end = find_root(
-          [&](double t) {
-            integrate(t_a, a, t, end);
-            return end[1] + drop;
-          },
-          t_a, t_b, 0, 1e-15);
-      integrate(t_a, a, t_end, end);
-      for (int k = 0; path && k < path_points; ++k) {
-        parameters.evaluations = 0;  // each point of the picture's path is a flight of its own
-        double at[4];
-        integrate(0, y0, t_end * k / (path_points - 1), at);
-        path->push_back({at[0], at[1]});
-      }
-      return FlightEnd{-end[0], t_end, {end[2], end[3]}};
-    }
+  double end[4];
+  const auto t_end = flight.land(y0, drop, end);
+  if (!t_end) return std::nullopt;
+  for (int k = 0; path && k < path_points; ++k) {
+    parameters.evaluations = 0;  // each point of the picture's path is a flight of its own
+    double at[4];
+    flight.integrate(0, y0, *t_end * k / (path_points - 1), at);
+    path->push_back({at[0], at[1]});
   }
-  return std::nullopt;
+  return FlightEnd{-end[0], *t_end, {end[2], end[3]}};
+}
+
+std::optional<RangeRate> range_rate(Vec2 position, Vec2 velocity, double drop, const FlightTangent& tangent, const Drag& drag, double g) {
+  use_gsl_return_codes();
+  FlightParameters parameters{drag, g};
+  gsl_odeiv2_system system{flight_tangent_rhs, nullptr, 8, &parameters};
+  Flight flight(system, flight_scale(velocity, drop, g));
+  // The start's height is the flight's origin: its change is the level's, -tangent.drop.
+  const double y0[8] = {position.x, 0, velocity.x, velocity.y, tangent.position.x, 0, tangent.velocity.x, tangent.velocity.y};
+  double end[8];
+  if (!flight.land(y0, drop, end)) return std::nullopt;
+  // The end's time moves so that y + w_y dt stays on the level: dt = (-drop' - w_y)/v_y.
+  const double dt = (-tangent.drop - end[5]) / end[3];
+  return RangeRate{-end[0], -(end[4] + end[2] * dt)};
 }
 
 std::string describe_air(const Air& air, double mass, AirDrawn drawn) {

@@ -220,17 +220,18 @@ class PhaseRecord {
 // jumps. On each smooth piece of [lo, hi] the slope is scanned at `scan` (sorted times) and the
 // piece's ends; wherever it falls through zero between two scan points, a maximum lies between
 // them, at the root. The best of these and of the ends (onsets included) is the release. The
-// slope is the four-point central difference with step 1e-5 (scaled time): truncation
-// O(step^4) moves the root by ~1e-20, round-off by ~1e-11, relative; a maximum within two steps
-// of an onset is taken at the onset, at most Q'' (2e-5)^2/2 below it. Checked against the
-// independent reference (tests/test_reference.cpp).
+// slope is `rate` where it gives one (the range through air: its flight's sensitivities,
+// ShotRun::range_rate), else the four-point central difference with step 1e-5 (scaled time):
+// truncation O(step^4) moves the root by ~1e-20, round-off by ~1e-11, relative; a maximum within
+// two steps of an onset is taken at the onset, at most Q'' (2e-5)^2/2 below it. Checked against
+// the independent reference (tests/test_reference.cpp).
 struct Candidate {
   double t;
   double value;
   std::optional<ForceIndex> at_onset;
 };
-template <class Objective>
-Candidate release_time(const Objective& objective, double lo, double hi, const std::vector<double>& scan,
+template <class Objective, class Rate>
+Candidate release_time(const Objective& objective, const Rate& rate, double lo, double hi, const std::vector<double>& scan,
                        const std::vector<PhaseRecord::Onset>& onsets) {
   constexpr double slope_step = 1e-5;
   std::vector<double> ends{lo};
@@ -247,8 +248,10 @@ Candidate release_time(const Objective& objective, double lo, double hi, const s
   const auto slope = [&](double t) {
     for (const Point& known : slopes)
       if (known.x == t) return known.f;
-    const double value = 8 * (objective(t + slope_step) - objective(t - slope_step)) -
-        (objective(t + 2 * slope_step) - objective(t - 2 * slope_step));
+    const std::optional<double> exact = rate(t);
+    const double value = exact
+        ? 12 * slope_step * *exact  // in the four-point difference's scale
+        : 8 * (objective(t + slope_step) - objective(t - slope_step)) - (objective(t + 2 * slope_step) - objective(t - 2 * slope_step));
     slopes.push_back({t, value});
     return value;
   };
@@ -495,6 +498,7 @@ class ShotRun {
   void check_held_step() const;
   ReleasePoint point_from(double time, const OdeVector& state) const;
   ReleasePoint point_at(double time) const { return point_from(time, phase2_->y_at(time)); }
+  std::optional<double> range_rate_at(double time) const;
   void keep_for_others(const Snapshot& at, bool thrown);
   bool step_ends_shot();
   bool objective_fallen() const;
@@ -810,6 +814,7 @@ void ShotRun::search_window(bool unreleased) {
 Candidate ShotRun::optimal_release() const {
   const auto& samples = phase2_->samples();
   const auto objective = [&](double time) { return point_at(time).objective; };
+  const auto rate = [&](double time) { return range_rate_at(time); };
   const std::size_t last = samples.size() - 1;
   // The onsets of phase II; none is sought in a step whose ends both have the objective at 0,
   // where the projectile would not fly forward.
@@ -821,7 +826,7 @@ Candidate ShotRun::optimal_release() const {
   auto search = [&](std::size_t first, std::size_t end) {
     std::vector<double> scan;
     for (std::size_t i = first + 1; i < end; ++i) scan.push_back(samples[i].t);
-    const Candidate c = release_time(objective, samples[first].t, samples[end].t, scan, onsets_ii);
+    const Candidate c = release_time(objective, rate, samples[first].t, samples[end].t, scan, onsets_ii);
     if (c.value > found.value) found = c;
   };
   for (std::size_t i = 0; i <= last; ++i) {
@@ -836,6 +841,34 @@ Candidate ShotRun::optimal_release() const {
   // Sampled values within round-off of 0 can leave no candidate with the objective above it.
   if (!(found.value > 0)) fail_no_forward_release();
   return found;
+}
+
+// The slope of the range through air in the release's time, where the release maximises it and
+// throws: the flight's own sensitivities (range_rate) along the release's motion, its position's
+// rate the projectile's velocity and its velocity's the four-point central difference of that
+// velocity on the continuous solution (step 1e-5, as the objective's slope; no flight). nullopt
+// elsewhere, and where the flight does not come down ahead of the release (objective_range's 0).
+std::optional<double> ShotRun::range_rate_at(double time) const {
+  if (criterion_.release != Release::range || !criterion_.drag) return std::nullopt;
+  const auto snapshot_at = [&](double t) { return dynamics_.snapshot(Phase::lifted, lifted_->state(phase2_->y_at(t))); };
+  const Snapshot s = snapshot_at(time);
+  ReleasePoint r;
+  r.position = s.projectile;
+  r.velocity = s.projectile_velocity;
+  r.height = e_.pivot_height() + r.position.y;
+  if (r.velocity.x < 0 && r.height >= 0) r.range = vacuum_range(r.position, r.velocity, r.height, 1);
+  r.velocity_angle = velocity_angle(s);
+  if (!throws(e_, r)) return std::nullopt;
+  constexpr double h = 1e-5;
+  const auto velocity_at = [&](double t) { return snapshot_at(t).projectile_velocity; };
+  const Vec2 v1 = velocity_at(time + h), v_1 = velocity_at(time - h), v2 = velocity_at(time + 2 * h), v_2 = velocity_at(time - 2 * h);
+  const Vec2 acceleration{(8 * (v1.x - v_1.x) - (v2.x - v_2.x)) / (12 * h), (8 * (v1.y - v_1.y) - (v2.y - v_2.y)) / (12 * h)};
+  const bool from_release = criterion_.range_from_release;
+  const double drop = from_release ? 0 : r.height - criterion_.target_level;
+  const auto flown = range_rate(r.position, r.velocity, drop, FlightTangent{r.velocity, acceleration, from_release ? 0 : r.velocity.y},
+                                *criterion_.drag, 1);
+  if (!flown || !(flown->range + (from_release ? r.position.x : 0) > 0)) return std::nullopt;
+  return flown->rate + (from_release ? r.velocity.x : 0);
 }
 
 // A given release is the root of its watched value on the continuous solution, within the step

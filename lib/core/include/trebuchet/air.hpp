@@ -70,6 +70,22 @@ struct FlightEnd {
 std::optional<FlightEnd> fly(Vec2 position, Vec2 velocity, double drop, const Drag& drag, double g, std::vector<Vec2>* path = nullptr,
                              int path_points = 101);
 
+/// How a flight's start moves with a parameter (a release's time): the derivatives of its
+/// position, its velocity and its drop, in the flight's units.
+struct FlightTangent {
+  Vec2 position, velocity;
+  double drop = 0;
+};
+
+/// Where the flight of fly(position, velocity, drop, drag, g) ends, its range (-x, as
+/// FlightEnd's), and the rate at which that changes as the start moves along `tangent`: the
+/// flight's sensitivities (its variational equations) integrated beside it, the end's time moved
+/// with the level. nullopt where fly's is.
+struct RangeRate {
+  double range = 0, rate = 0;
+};
+std::optional<RangeRate> range_rate(Vec2 position, Vec2 velocity, double drop, const FlightTangent& tangent, const Drag& drag, double g);
+
 /// "air (Cd 0.47, air 1.2 kg/m3, a sphere of 2500 kg/m3, d = 0.43 m, no wind)" for outputs; the
 /// diameter only for a mass > 0.
 /// Which of an air's values a Monte Carlo run draws from a spread: described as drawn, not as the
