@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -143,8 +142,16 @@ TEST_CASE("a flight's range rate is its range's derivative along the start's cha
   reynolds.drag_coefficient.reset();
   Air head_wind;
   head_wind.wind = -15;
-  for (const auto& [name, air, drop] : {std::tuple{"Cd 0.47", Air{}, 20.0}, std::tuple{"Cd(Re)", reynolds, 20.0},
-                                        std::tuple{"a head wind", head_wind, 20.0}, std::tuple{"back to its height", Air{}, 0.0}}) {
+  struct Flight {
+    const char* name;
+    Air air;
+    double drop;  // [m]
+  };
+  for (const Flight& flight :
+       {Flight{"Cd 0.47", Air{}, 20}, Flight{"Cd(Re)", reynolds, 20}, Flight{"a head wind", head_wind, 20}, Flight{"back to its height", Air{}, 0}}) {
+    const char* name = flight.name;
+    const double drop = flight.drop;
+    const Air& air = flight.air;
     const Drag drag = drag_of(air, 100);
     const double ddrop = drop > 0 ? tangent.drop : 0;
     const auto range_at = [&](double e) {
@@ -163,16 +170,29 @@ TEST_CASE("a flight's range rate is its range's derivative along the start's cha
 
 // The release through air where the range peaks: the slope's root from the flight's
 // sensitivities. A golden-section search over given release times, shot by shot (no slope), finds
-// the same range: a release 1e-6 s off the peak would fall short of it by about R''' (1e-6)^2/2,
-// 1e-13 of R here, so 1e-12 of R is the search's resolution, not the physics' tolerance. At
-// rtol = atol = 1e-13 the range moves by less than 1e-9 of it (the shot's integration error).
+// the same range: R'' is about -3e4 m/s^2 here, so a release 1e-6 s off the peak falls short by
+// 1.4e-8 m, 1e-10 of R; 1e-12 of R takes the root to within about 1e-7 s, and the search's 60
+// sections end within 1.5e-10 s of it. In still air and a following wind, to the pivot's level,
+// to a target 20 m below, and Denny's range (back to the release's height, from the release),
+// whose slope adds the release's own speed. At rtol = atol = 1e-13 the range moves by less
+// than 1e-9 of it (the shot's integration error).
 TEST_CASE("the release through air is where its range peaks", "[air]") {
   Air windy;
   windy.wind = 10;
-  for (const auto& [name, air] : {std::pair{"still air", Air{}}, std::pair{"a following wind", windy}}) {
+  struct Case {
+    const char* name;
+    Air air;
+    double target_level;  // [m]
+    bool range_from_release;
+  };
+  for (const Case& c : {Case{"still air", Air{}, 0, false}, Case{"a following wind", windy, 0, false}, Case{"a target 20 m below", Air{}, -20, false},
+                        Case{"Denny's range", Air{}, 0, true}}) {
+    const char* name = c.name;
     ShotSettings settings;
     settings.criterion.release = Release::range;
-    settings.air = air;
+    settings.air = c.air;
+    settings.target_level = c.target_level;
+    settings.range_from_release = c.range_from_release;
     settings.loads = false;
     const Engine ca = testing::alcala_ca();
     const Verification best = verify_engine(ca, settings);
@@ -185,7 +205,10 @@ TEST_CASE("the release through air is where its range peaks", "[air]") {
     const double golden = (std::sqrt(5.0) - 1) / 2;
     for (int k = 0; k < 60; ++k) {
       const double a = hi - golden * (hi - lo), b = lo + golden * (hi - lo);
-      (range_at(a) > range_at(b) ? hi : lo) = range_at(a) > range_at(b) ? b : a;
+      if (range_at(a) > range_at(b))
+        hi = b;
+      else
+        lo = a;
     }
     const double peak = range_at((lo + hi) / 2);
     ShotSettings tight = settings;

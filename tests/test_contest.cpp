@@ -15,8 +15,6 @@
 using namespace trebuchet;
 using trebuchet::testing::school_contest;
 
-namespace {}  // namespace
-
 // The search against a grid of the same variables (L1/L2, L4/L1, M and L2 for the fixed
 // machine, the counterweight at the short arm's end) under the same loose limits: no grid
 // point that meets them throws farther than the search's optimum. The grid's steps (0.5 in l,

@@ -16,7 +16,8 @@ for header in nlohmann/json.hpp CLI/CLI.hpp xlsxwriter.h; do
 done
 without=(-DCMAKE_DISABLE_FIND_PACKAGE_nlohmann_json=ON -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON
          "-DCMAKE_CXX_FLAGS=-I$work/poison")
-cmake -S "$source_dir" -B "$work/core" -DTREBUCHET_APP=OFF -DCMAKE_BUILD_TYPE=Release "${without[@]}" > "$work/core-configure.log"
+# Each source of the core compiled alone (no unity build): one that lacks an include fails here.
+cmake -S "$source_dir" -B "$work/core" -DTREBUCHET_APP=OFF -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=OFF "${without[@]}" > "$work/core-configure.log"
 cmake --build "$work/core" -j"$(nproc)" > "$work/core-build.log"
 cmake --install "$work/core" --prefix "$work/prefix" > "$work/install.log"
 cmake -S "$here" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release "${without[@]}" > "$work/configure.log"

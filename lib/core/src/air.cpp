@@ -84,12 +84,20 @@ double drag_coefficient_of(double re) {
 
 double drag_coefficient_slope_of(double re) {
   if (!(re > 0)) return 0;
-  // Term by term: d/dx [x/(1 + x^p)] = (1 + (1 - p) x^p)/(1 + x^p)^2, and
-  // d/dx [x^q/(1 + x^r)] = x^(q-1) (q + (q - r) x^r)/(1 + x^r)^2; each x is Re over its scale.
+  // Term by term: d/dx [x/(1 + x^p)] = (1 + (1 - p) x^p)/(1 + x^p)^2; the third term,
+  // x^-7.94/(1 + x^-8) = x^0.06/(1 + x^8), has the slope x^-0.94 (0.06 - 7.94 x^8)/(1 + x^8)^2,
+  // written in x^-8 above x = 1 so that neither power overflows; each x is Re over its scale.
   const double a = re / 5, b = re / 263000, c = re / 1e6;
-  const double ap = std::pow(a, 1.52), br = std::pow(b, -8);
-  return -24 / (re * re) + 2.6 / 5 * (1 - 0.52 * ap) / ((1 + ap) * (1 + ap)) +
-      0.411 / 263000 * std::pow(b, -8.94) * (-7.94 + 0.06 * br) / ((1 + br) * (1 + br)) + 0.25 / 1e6 / ((1 + c) * (1 + c));
+  const double ap = std::pow(a, 1.52);
+  double third = 0;
+  if (b < 1) {
+    const double b8 = std::pow(b, 8);
+    third = std::pow(b, -0.94) * (0.06 - 7.94 * b8) / ((1 + b8) * (1 + b8));
+  } else {
+    const double br = std::pow(b, -8);
+    third = std::pow(b, -8.94) * (0.06 * br - 7.94) / ((1 + br) * (1 + br));
+  }
+  return -24 / (re * re) + 2.6 / 5 * (1 - 0.52 * ap) / ((1 + ap) * (1 + ap)) + 0.411 / 263000 * third + 0.25 / 1e6 / ((1 + c) * (1 + c));
 }
 
 void check_air(const Air& air) {

@@ -80,7 +80,10 @@ struct FlightTangent {
 /// Where the flight of fly(position, velocity, drop, drag, g) ends, its range (-x, as
 /// FlightEnd's), and the rate at which that changes as the start moves along `tangent`: the
 /// flight's sensitivities (its variational equations) integrated beside it, the end's time moved
-/// with the level. nullopt where fly's is.
+/// with the level. The range is its own integration's (of eight equations, whose steps differ
+/// from fly's by round-off), and the tangent's position.y is not read: the flight's heights are
+/// taken from its start, so a change of the start's height is a change of `drop`. nullopt where
+/// fly's is.
 struct RangeRate {
   double range = 0, rate = 0;
 };
