@@ -255,6 +255,20 @@ Candidate release_time(const Objective& objective, const Rate& rate, double lo, 
     slopes.push_back({t, value});
     return value;
   };
+  // The edge of the throws: between `off`, on the flat where no release throws forward (the
+  // objective 0), and `on`, past which the objective falls, it jumps above 0. Its maximum there
+  // lies at the edge (found by bisection to 1e-12 of the time) or at the slope's root after it.
+  const auto after_edge = [&](double off, double on) {
+    const double fallen = on;
+    for (int k = 0; k < 80 && on - off > 1e-12 * on; ++k) {
+      const double middle = (off + on) / 2;
+      (objective(middle) > 0 ? on : off) = middle;
+    }
+    consider(on);
+    const double start = on + 2 * slope_step;
+    if (start < fallen && slope(start) > 0)
+      if (const auto root = root_between(slope, start, fallen, 1e-11, 0)) consider(*root);
+  };
   for (std::size_t i = 0; i + 1 < ends.size(); ++i) {
     const double a = ends[i] + 2 * slope_step, b = ends[i + 1] - 2 * slope_step;
     consider(ends[i + 1]);
@@ -266,8 +280,11 @@ Candidate release_time(const Objective& objective, const Rate& rate, double lo, 
     double previous = slope(a);
     for (std::size_t j = 1; j < points.size(); ++j) {
       const double here = slope(points[j]);
-      if (previous > 0 && !(here > 0))
+      if (previous > 0 && !(here > 0)) {
         if (const auto root = root_between(slope, points[j - 1], points[j], 1e-11, 0)) consider(*root);
+      } else if (previous == 0 && here < 0 && objective(points[j]) > 0) {
+        after_edge(points[j - 1], points[j]);  // the throws begin between them, past their best
+      }
       previous = here;
     }
   }
