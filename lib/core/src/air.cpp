@@ -25,17 +25,30 @@ struct FlightParameters {
 // and would take minutes in an explicit stepper: it is given up as one that never lands.
 constexpr long max_flight_evaluations = 20000;
 
-// dx/dt = v, dv/dt = -g y^ - Cd (rho A / 2m) |u| u with u = v - wind (the target lies toward -x).
+// The projectile's velocity through the air u = v - wind (the target lies toward -x), its speed
+// and Cd there.
+struct Airflow {
+  double ux, uy, speed, cd;
+};
+Airflow airflow(const FlightParameters& p, const double y[]) {
+  const double ux = y[2] + p.drag.wind, uy = y[3];
+  const double speed = std::sqrt(ux * ux + uy * uy);
+  return {ux, uy, speed, p.drag.coefficient_at(speed)};
+}
+
+// dx/dt = v, dv/dt = -g y^ - Cd (rho A / 2m) |u| u.
+void flight_equations(const FlightParameters& p, const double y[], const Airflow& a, double dydt[]) {
+  const double k = a.cd * p.drag.per_length * a.speed;
+  dydt[0] = y[2];
+  dydt[1] = y[3];
+  dydt[2] = -k * a.ux;
+  dydt[3] = -p.g - k * a.uy;
+}
+
 int flight_rhs(double, const double y[], double dydt[], void* params) {
   auto& p = *static_cast<FlightParameters*>(params);
   if (++p.evaluations > max_flight_evaluations) return GSL_EBADFUNC;
-  const double ux = y[2] + p.drag.wind, uy = y[3];
-  const double speed = std::sqrt(ux * ux + uy * uy);
-  const double k = p.drag.coefficient_at(speed) * p.drag.per_length * speed;
-  dydt[0] = y[2];
-  dydt[1] = y[3];
-  dydt[2] = -k * ux;
-  dydt[3] = -p.g - k * uy;
+  flight_equations(p, y, airflow(p, y), dydt);
   return GSL_SUCCESS;
 }
 
@@ -204,19 +217,18 @@ double flight_scale(Vec2 velocity, double drop, double g) {
 // The flight's equations (flight_rhs) and their tangent w = (dx, dy, dvx, dvy) along a change of
 // the start: dw/dt = J w, J the equations' Jacobian. The drag's acceleration -k(s) u, s = |u|,
 // k = Cd(s) per_length s, has the Jacobian -(k I + k'(s) u u^T / s) in the velocity.
-int flight_tangent_rhs(double t, const double y[], double dydt[], void* params) {
-  const int status = flight_rhs(t, y, dydt, params);
-  if (status != GSL_SUCCESS) return status;
-  const auto& p = *static_cast<FlightParameters*>(params);
-  const double ux = y[2] + p.drag.wind, uy = y[3];
-  const double speed = std::sqrt(ux * ux + uy * uy);
-  const double k = p.drag.coefficient_at(speed) * p.drag.per_length * speed;
-  const double k_slope = p.drag.per_length * (p.drag.coefficient_at(speed) + speed * p.drag.coefficient_slope_at(speed));
-  const double along = speed > 0 ? k_slope * (ux * y[6] + uy * y[7]) / speed : 0;
+int flight_tangent_rhs(double, const double y[], double dydt[], void* params) {
+  auto& p = *static_cast<FlightParameters*>(params);
+  if (++p.evaluations > max_flight_evaluations) return GSL_EBADFUNC;
+  const Airflow a = airflow(p, y);
+  flight_equations(p, y, a, dydt);
+  const double k = a.cd * p.drag.per_length * a.speed;
+  const double k_slope = p.drag.per_length * (a.cd + a.speed * p.drag.coefficient_slope_at(a.speed));
+  const double along = a.speed > 0 ? k_slope * (a.ux * y[6] + a.uy * y[7]) / a.speed : 0;
   dydt[4] = y[6];
   dydt[5] = y[7];
-  dydt[6] = -k * y[6] - along * ux;
-  dydt[7] = -k * y[7] - along * uy;
+  dydt[6] = -k * y[6] - along * a.ux;
+  dydt[7] = -k * y[7] - along * a.uy;
   return GSL_SUCCESS;
 }
 

@@ -418,9 +418,29 @@ void trace_released(const Machine& dynamics, const ScaledDesign& e, const Integr
 // criterion's target level (level 0 is the paper's), else through the criterion's drag, or
 // Denny's, from the release point to where the flight dips below the release height (section
 // 6.3); 0 where the flight never comes down to its end.
+// How far below the release the flight ends (0 for Denny's range, back at the release height),
+// and the range measured from where the criterion measures it (the release point for Denny's).
+double flight_drop(const ReleasePoint& r, const ReleaseCriterion& criterion) {
+  return criterion.range_from_release ? 0 : r.height - criterion.target_level;
+}
+double measured_range(double flown, const ReleasePoint& r, const ReleaseCriterion& criterion) {
+  return criterion.range_from_release ? flown + r.position.x : flown;
+}
+
+// The projectile's motion at a release (position, velocity, height, the vacuum range to level 0
+// where it flies toward the target from above the base, its velocity angle): what decides
+// whether it throws.
+void set_motion(ReleasePoint& r, const ScaledDesign& e, const Snapshot& snap) {
+  r.position = snap.projectile;
+  r.velocity = snap.projectile_velocity;
+  r.height = e.pivot_height() + r.position.y;
+  if (r.velocity.x < 0 && r.height >= 0) r.range = vacuum_range(r.position, r.velocity, r.height, 1);
+  r.velocity_angle = velocity_angle(snap);
+}
+
 double objective_range(const ReleasePoint& r, const ReleaseCriterion& criterion) {
   if (!criterion.drag && !criterion.range_from_release && criterion.target_level == 0) return r.range;
-  const double drop = criterion.range_from_release ? 0 : r.height - criterion.target_level;
+  const double drop = flight_drop(r, criterion);
   double range = 0;
   if (criterion.drag) {
     const auto end = fly(r.position, r.velocity, drop, *criterion.drag, 1);
@@ -430,8 +450,7 @@ double objective_range(const ReleasePoint& r, const ReleaseCriterion& criterion)
     if (!(r.velocity.y * r.velocity.y + 2 * drop > 0)) return 0;  // the target level lies above the apex
     range = vacuum_range(r.position, r.velocity, drop, 1);
   }
-  range = criterion.range_from_release ? range + r.position.x : range;
-  return std::max(range, 0.0);
+  return std::max(measured_range(range, r, criterion), 0.0);
 }
 
 }  // namespace
@@ -450,15 +469,11 @@ ReleasePoint release_point(const ScaledDesign& e, const ReleaseCriterion& criter
   ReleasePoint r;
   r.t = t;
   r.state = s;
-  r.position = snap.projectile;
-  r.velocity = snap.projectile_velocity;
-  r.height = e.pivot_height() + r.position.y;
-  if (r.velocity.x < 0 && r.height >= 0) r.range = vacuum_range(r.position, r.velocity, r.height, 1);  // toward the target, level 0
+  set_motion(r, e, snap);
   r.energy_at_target = energy_at_target(e.mu, r.velocity, r.height);
   r.efficiency = efficiency(r.energy_at_target, e.energy_drop());
   r.extremes = extremes;
   r.force_factor = force_factor(extremes, e.mu);
-  r.velocity_angle = velocity_angle(snap);
   r.pin_angle = pin_angle(snap);
   if (r.range > 0) {
     r.quality = quality(r.range, e.l, e.mu, r.efficiency, r.force_factor, criterion.n);
@@ -868,24 +883,18 @@ Candidate ShotRun::optimal_release() const {
 std::optional<double> ShotRun::range_rate_at(double time) const {
   if (criterion_.release != Release::range || !criterion_.drag) return std::nullopt;
   const auto snapshot_at = [&](double t) { return dynamics_.snapshot(Phase::lifted, lifted_->state(phase2_->y_at(t))); };
-  const Snapshot s = snapshot_at(time);
   ReleasePoint r;
-  r.position = s.projectile;
-  r.velocity = s.projectile_velocity;
-  r.height = e_.pivot_height() + r.position.y;
-  if (r.velocity.x < 0 && r.height >= 0) r.range = vacuum_range(r.position, r.velocity, r.height, 1);
-  r.velocity_angle = velocity_angle(s);
+  set_motion(r, e_, snapshot_at(time));
   if (!throws(e_, r)) return std::nullopt;
   constexpr double h = 1e-5;
   const auto velocity_at = [&](double t) { return snapshot_at(t).projectile_velocity; };
   const Vec2 v1 = velocity_at(time + h), v_1 = velocity_at(time - h), v2 = velocity_at(time + 2 * h), v_2 = velocity_at(time - 2 * h);
   const Vec2 acceleration{(8 * (v1.x - v_1.x) - (v2.x - v_2.x)) / (12 * h), (8 * (v1.y - v_1.y) - (v2.y - v_2.y)) / (12 * h)};
   const bool from_release = criterion_.range_from_release;
-  const double drop = from_release ? 0 : r.height - criterion_.target_level;
-  const auto flown = range_rate(r.position, r.velocity, drop, FlightTangent{r.velocity, acceleration, from_release ? 0 : r.velocity.y},
-                                *criterion_.drag, 1);
-  if (!flown || !(flown->range + (from_release ? r.position.x : 0) > 0)) return std::nullopt;
-  return flown->rate + (from_release ? r.velocity.x : 0);
+  const auto flown = range_rate(r.position, r.velocity, flight_drop(r, criterion_),
+                                FlightTangent{r.velocity, acceleration, from_release ? 0 : r.velocity.y}, *criterion_.drag, 1);
+  if (!flown || !(measured_range(flown->range, r, criterion_) > 0)) return std::nullopt;
+  return flown->rate + (from_release ? r.velocity.x : 0);  // measured_range's rate
 }
 
 // A given release is the root of its watched value on the continuous solution, within the step
