@@ -1,4 +1,4 @@
-// The contest's promises (issue 63, docs/machines.md), held on nine contests: every machine, in
+// The contest's promises (issue 63, docs/machines.md), held on ten contests: every machine, in
 // vacuum and through air, limits on the box, the counterweight, the axle and the acceleration,
 // a clearance and a counterweight's box. For each:
 // - the engine meets every limit, and each binding one to 1e-5 of it (COBYLA stops where a step
@@ -57,9 +57,10 @@ ContestRequest through_air(ContestRequest r) {
   return r;
 }
 
-// Not here: the hinged machine at school. Its landscape has many peaks (one local search in six
-// reaches the best), and the search is not yet monotone there: 146.49 m at 60 kg, 142.71 m at
-// 66 kg (issue 63, open).
+// The hinged machine at school releases where its sling goes slack, the range's peak (test_shot's
+// "the range peaks where the sling stops pulling"); until that release was no longer warned as a
+// slack sling, its engines came and went between neighbouring L3, and the contest gave 146.49 m
+// at 60 kg but 142.71 m at 66 kg.
 std::vector<ContestCase> vacuum_cases() {
   const MachineKind hinged = MachineKind::hinged, fixed = MachineKind::fixed, floating = MachineKind::floating_arm;
   ContestRequest builder = contest(hinged, 4, 6, {{width_limit, 3}, {height_limit, 4}, {mass_limit, 400}, {axle_limit, 12e3}});
@@ -69,20 +70,21 @@ std::vector<ContestCase> vacuum_cases() {
           {"floating-arm builder, 3 m wide", builder_floating_arm(3)},
           {"floating-arm builder, 3.2 m wide", builder_floating_arm(3.2)},
           {"fixed school", school_contest(fixed)},
+          {"hinged school", school_contest(hinged)},
           {"floating-arm school", school_contest(floating)},
           {"hinged builder, 10 cm clear", clear},
           {"fixed, acceleration 300 m/s2", contest(fixed, 0.5, 1.5, {{width_limit, 4}, {mass_limit, 60}, {acceleration_limit, 300}})}};
 }
 
 // Not here: issue 63's hinged engine in air (a 4 kg ball, a box of 20 m by 20 m, at most 10 t
-// and 2000 m/s2), where the search's local searches end far apart (593 to 972 m) on a flat
-// ridge: 971.89 m at 10 t, 977.59 m at 11 t (M does not bind), and an acceleration 1.25e-3
-// below its limit, not named binding, where the contest at 10 % more finds 39.2 m more (issue
-// 63, open). Nor the efficiency's contest (--objective eps): without a limit on the
-// acceleration it reaches eps = 1 on the fixed machine and the floating arm at school, where no
-// limit binds. With one (the fixed machine at school, 4 m wide, 60 kg, 10 m/s2) its acceleration
-// binds and its gain is true (0.7320 to 0.8494 at 11 m/s2), but 10 % more width gives 0.7307 and
-// 10 % more counterweight 0.7741, though its 4.3 kg does not bind (issue 63, open).
+// and 2000 m/s2), where the search's local searches end far apart (669 to 978 m): 978.07 m at
+// 10 t but 969.51 m at 11 t (M does not bind), and its acceleration's claimed gain 38.0 m where
+// the contest at 10 % more finds 22.7 m (issue 63, open). Nor the efficiency's contest
+// (--objective eps): without a limit on the acceleration it reaches eps = 1 on the fixed machine
+// and the floating arm at school, where no limit binds. With one (the fixed machine at school, 4 m
+// wide, 60 kg, 10 m/s2) its acceleration binds and its gain is true (0.7320 to 0.8494 at 11 m/s2),
+// but 10 % more width gives 0.7307 and 10 % more counterweight 0.7741, though its 4.3 kg does not
+// bind (issue 63, open).
 std::vector<ContestCase> air_cases() {
   return {{"fixed school in air, 1.5 kN on the axle",
            through_air(contest(MachineKind::fixed, 0.5, 1.5, {{width_limit, 4}, {height_limit, 3}, {mass_limit, 60}, {axle_limit, 1500}}))},
@@ -179,8 +181,8 @@ TEST_CASE("the contest is monotone in its limits and its gains are true for the 
 
 TEST_CASE("the contest is monotone in its limits and its gains are true at school", "[contest][heavy]") { check_cases(vacuum_cases(), 3, 6, 1); }
 
-TEST_CASE("the contest is monotone in its limits and its gains are true under an acceleration", "[contest][heavy]") {
-  check_cases(vacuum_cases(), 6, 7, 1);
+TEST_CASE("the contest is monotone in its limits and its gains are true under a clearance and an acceleration", "[contest][heavy]") {
+  check_cases(vacuum_cases(), 6, 8, 1);
 }
 
 // Through air, one contest per test case: they are the suite's longest (about 50 s each).

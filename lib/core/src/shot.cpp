@@ -1,6 +1,7 @@
 #include "trebuchet/shot.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <memory>
 #include <iterator>
@@ -537,6 +538,7 @@ class ShotRun {
   [[noreturn]] void refuse_given(const std::string& what);
   [[noreturn]] void fail_no_forward_release() const;
   Candidate optimal_release() const;
+  double latest_release() const;
   double given_release(const GivenWatch& g) const;
 
   const Machine& dynamics_;
@@ -843,6 +845,17 @@ void ShotRun::search_window(bool unreleased) {
 // steps beside each such step end are searched, each on its own (the slope is scanned at the
 // step end between them). An onset higher than every candidate so far is searched too, within
 // its step.
+// The latest release the range may take: where the sling goes slack in phase II (docs/verifier.md,
+// "the sling going slack"). In vacuum, or with the air on the ball in the sling too, the range
+// peaks there or before it (mark_onsets). With the air on the flight alone, the range still grows
+// past it: the ball would leave the sling's circle there and meet the drag, where the model keeps
+// it on the circle, pushed, out of the air. Other objectives, and the range of a sling slack
+// before the lift-off, search the whole window and warn.
+double ShotRun::latest_release() const {
+  const bool range = criterion_.release == Release::range;
+  return range && onsets_[0] && *onsets_[0] > phase2_->samples().front().t ? *onsets_[0] : std::numeric_limits<double>::infinity();
+}
+
 Candidate ShotRun::optimal_release() const {
   const auto& samples = phase2_->samples();
   const auto objective = [&](double time) { return point_at(time).objective; };
@@ -855,10 +868,12 @@ Candidate ShotRun::optimal_release() const {
     if (sampled_[j] > 0 || sampled_[j + 1] > 0)
       for (const auto& onset : phase2_->growth_onsets(samples[j].t, samples[j + 1].t)) onsets_ii.push_back(onset);
   Candidate found{samples.front().t, 0, std::nullopt};
+  const double latest = latest_release();
   auto search = [&](std::size_t first, std::size_t end) {
+    if (!(samples[first].t < latest)) return;
     std::vector<double> scan;
     for (std::size_t i = first + 1; i < end; ++i) scan.push_back(samples[i].t);
-    const Candidate c = release_time(objective, rate, samples[first].t, samples[end].t, scan, onsets_ii);
+    const Candidate c = release_time(objective, rate, samples[first].t, std::min(samples[end].t, latest), scan, onsets_ii);
     if (c.value > found.value) found = c;
   };
   for (std::size_t i = 0; i <= last; ++i) {
@@ -866,10 +881,11 @@ Candidate ShotRun::optimal_release() const {
     if (peak && sampled_[i] > 0) search(i > 0 ? i - 1 : 0, std::min(i + 1, last));
   }
   for (const auto& onset : onsets_ii) {
-    if (!(objective(onset.t) > found.value)) continue;
+    if (!(onset.t < latest) || !(objective(onset.t) > found.value)) continue;
     const std::size_t step_start = phase2_->base_of(onset.t);
     search(step_start, std::min(step_start + 1, last));
   }
+  if (latest < samples.back().t && objective(latest) > found.value) found = {latest, objective(latest), std::nullopt};
   // Sampled values within round-off of 0 can leave no candidate with the objective above it.
   if (!(found.value > 0)) fail_no_forward_release();
   return found;
@@ -918,6 +934,7 @@ void ShotRun::find_release() {
     const Candidate found = optimal_release();
     t_release_ = found.t;
     result_.release_at_growth_of = found.at_onset;
+    if (found.t == latest_release() && criterion_.drag && !e_.parts.drag) result_.release_held_at_slack = found.t;
   }
   const OdeVector y_release = phase2_->y_exact_at(t_release_);
   result_.release = point_from(t_release_, y_release);
@@ -971,10 +988,16 @@ void ShotRun::follow_others(const OtherReleases& others) {
   result_.energy_drift = drift, result_.steps = steps;
 }
 
-// Only what happens before the release invalidates the shot.
+// Only what happens before the release invalidates the shot. A free ball keeps its landing
+// point wherever along its flight it is let go, so the range's slope in the release time is the
+// sling's pull times the range's gradient in the ball's velocity along the sling: the range
+// peaks where the tension falls through 0, and its best release is the sling's going slack. Both
+// roots are found to 1e-11 or better (scaled time): a slack onset within 1e-9 of the release is
+// the release itself, not a failure before it.
 void ShotRun::mark_onsets() {
   auto before_release = [&](const std::optional<double>& t) { return t && *t <= t_release_ ? t : std::nullopt; };
-  result_.slack_sling = before_release(onsets_[0]);
+  constexpr double same_time = 1e-9;  // scaled
+  result_.slack_sling = onsets_[0] && *onsets_[0] < t_release_ - same_time ? onsets_[0] : std::nullopt;
   result_.counterweight_below_base = before_release(onsets_[1]);
   result_.tip_below_base = before_release(onsets_[2]);
   result_.counterweight_pulled = before_release(onsets_[3]);
