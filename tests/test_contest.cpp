@@ -54,8 +54,8 @@ TEST_CASE("the contest's optimum throws at least as far as a grid of the same en
 // acceleration of 6 m/s2 can be met alone (a feeble engine throws a little, slowly) but not in
 // a box 4 m wide: the pair is named, and each of its limits alone is met. (At 5 m/s2 an engine
 // exists, a 12.5 m sling throwing 11.6 m, but the search's path to it is a needle's: it found
-// it from one start of six, and no longer does since engines released where their sling goes
-// slack count as engines.)
+// it from one start of six, and no longer does since engines whose sling goes slack at their
+// best release, or for good before it, count as engines.)
 TEST_CASE("the contest names the fewest limits that cannot be met together", "[contest][heavy]") {
   ContestRequest r = school_contest(MachineKind::fixed);
   r.limits[axle_limit] = 2;  // N

@@ -78,7 +78,7 @@ std::vector<ContestCase> vacuum_cases() {
 
 // Not here: issue 63's hinged engine in air (a 4 kg ball, a box of 20 m by 20 m, at most 10 t
 // and 2000 m/s2), where the search's local searches end far apart (669 to 978 m): 978.07 m at
-// 10 t but 969.51 m at 11 t (M does not bind), and its acceleration's claimed gain 38.0 m where
+// 10 t but 976.71 m at 11 t (M does not bind), and its acceleration's claimed gain 38.0 m where
 // the contest at 10 % more finds 22.7 m (issue 63, open). Nor the efficiency's contest
 // (--objective eps): without a limit on the acceleration it reaches eps = 1 on the fixed machine
 // and the floating arm at school, where no limit binds. With one (the fixed machine at school, 4 m

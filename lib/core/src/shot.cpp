@@ -35,6 +35,8 @@ using Conditions = std::array<double, condition_count>;
 // cannot raise it where it holds with equality: an F = 1 counterweight hanging straight down
 // touches the base's level.
 constexpr double condition_slack = 1e-9;
+// Two instants found as roots to 1e-11 or better, within this of each other, are one (scaled time).
+constexpr double same_time = 1e-9;
 // A rope of mass modelled as a straight rod (sling.hpp) holds while it pulls at both ends and
 // the shear the rod carries there, which a rope cannot, stays below tan 10 deg of its tension:
 // a rope would bend by that angle at its end to carry it, and its ends' angles, the sling's
@@ -230,6 +232,7 @@ struct Candidate {
   double t;
   double value;
   std::optional<ForceIndex> at_onset;
+  std::optional<double> before_slack;  // the onset of a slack for good it was sought before (optimal_release)
 };
 template <class Objective, class Rate>
 Candidate release_time(const Objective& objective, const Rate& rate, double lo, double hi, const std::vector<double>& scan,
@@ -239,10 +242,10 @@ Candidate release_time(const Objective& objective, const Rate& rate, double lo, 
   for (const auto& onset : onsets)
     if (onset.t > lo && onset.t < hi) ends.push_back(onset.t);
   ends.push_back(hi);
-  Candidate best{lo, objective(lo), std::nullopt};
+  Candidate best{lo, objective(lo), std::nullopt, std::nullopt};
   auto consider = [&](double t) {
     const double value = objective(t);
-    if (value > best.value) best = {t, value, std::nullopt};
+    if (value > best.value) best = {t, value, std::nullopt, std::nullopt};
   };
   // The slope, remembered at the scan points, where the root search evaluates it again.
   std::vector<Point> slopes;
@@ -538,7 +541,8 @@ class ShotRun {
   [[noreturn]] void refuse_given(const std::string& what);
   [[noreturn]] void fail_no_forward_release() const;
   Candidate optimal_release() const;
-  double latest_release() const;
+  Candidate best_release_before(double latest) const;
+  std::optional<double> slack_for_good_before(double t) const;
   double given_release(const GivenWatch& g) const;
 
   const Machine& dynamics_;
@@ -837,6 +841,35 @@ void ShotRun::search_window(bool unreleased) {
          "; tighten {{rtol}} or choose another {{stepper}}");
 }
 
+// Where the sling goes slack for good before the range's release `t` (scaled time): its tension
+// below 0 from the onset at every step end of phase II up to `t`, the ball never caught again.
+// From there the model keeps the ball on the sling's circle, pushed, where a free ball would fly
+// off: in vacuum its range may still grow if the push turns the ball toward the target, and through
+// air on the flight alone it grows as the ball is kept out of the drag. The range's release is then
+// the best before the onset (docs/verifier.md, "the sling going slack"). A slack that ends before
+// the release, one in phase I, and the other objectives keep the whole window, and are warned.
+std::optional<double> ShotRun::slack_for_good_before(double t) const {
+  const auto& samples = phase2_->samples();
+  const std::optional<double>& onset = onsets_[0];
+  if (criterion_.release != Release::range || !onset || !(*onset > samples.front().t) || !(*onset < t - same_time)) return std::nullopt;
+  for (const auto& sample : samples) {
+    if (sample.t <= *onset || sample.t > t) continue;
+    if (!(dynamics_.snapshot(Phase::lifted, lifted_->state(phase2_->y_at(sample.t))).sling_tension + condition_slack < 0)) return std::nullopt;
+  }
+  return onset;
+}
+
+Candidate ShotRun::optimal_release() const {
+  Candidate found = best_release_before(std::numeric_limits<double>::infinity());
+  // Sampled values within round-off of 0 can leave no candidate with the objective above it.
+  if (!(found.value > 0)) fail_no_forward_release();
+  if (const auto slack = slack_for_good_before(found.t)) {
+    const Candidate before = best_release_before(*slack);
+    if (before.value > 0) found = before, found.before_slack = slack;
+  }
+  return found;
+}
+
 // The release search (docs/verifier.md, "Release"). The objective is smooth between the onsets
 // of growth of the running extremes, so its maximum over phase II lies at an onset or at the
 // maximum of a smooth piece. Every onset of phase II is located on the continuous solution. A
@@ -844,19 +877,9 @@ void ShotRun::search_window(bool unreleased) {
 // neighbours, as long as no step holds both a minimum and a maximum of one smooth piece: the two
 // steps beside each such step end are searched, each on its own (the slope is scanned at the
 // step end between them). An onset higher than every candidate so far is searched too, within
-// its step.
-// The latest release the range may take: where the sling goes slack in phase II (docs/verifier.md,
-// "the sling going slack"). In vacuum, or with the air on the ball in the sling too, the range
-// peaks there or before it (mark_onsets). With the air on the flight alone, the range still grows
-// past it: the ball would leave the sling's circle there and meet the drag, where the model keeps
-// it on the circle, pushed, out of the air. Other objectives, and the range of a sling slack
-// before the lift-off, search the whole window and warn.
-double ShotRun::latest_release() const {
-  const bool range = criterion_.release == Release::range;
-  return range && onsets_[0] && *onsets_[0] > phase2_->samples().front().t ? *onsets_[0] : std::numeric_limits<double>::infinity();
-}
-
-Candidate ShotRun::optimal_release() const {
+// its step. This is the best release of phase II up to `latest` (scaled time; infinity: the
+// whole window).
+Candidate ShotRun::best_release_before(double latest) const {
   const auto& samples = phase2_->samples();
   const auto objective = [&](double time) { return point_at(time).objective; };
   const auto rate = [&](double time) { return range_rate_at(time); };
@@ -867,8 +890,7 @@ Candidate ShotRun::optimal_release() const {
   for (std::size_t j = 0; j < last; ++j)
     if (sampled_[j] > 0 || sampled_[j + 1] > 0)
       for (const auto& onset : phase2_->growth_onsets(samples[j].t, samples[j + 1].t)) onsets_ii.push_back(onset);
-  Candidate found{samples.front().t, 0, std::nullopt};
-  const double latest = latest_release();
+  Candidate found{samples.front().t, 0, std::nullopt, std::nullopt};
   auto search = [&](std::size_t first, std::size_t end) {
     if (!(samples[first].t < latest)) return;
     std::vector<double> scan;
@@ -885,9 +907,7 @@ Candidate ShotRun::optimal_release() const {
     const std::size_t step_start = phase2_->base_of(onset.t);
     search(step_start, std::min(step_start + 1, last));
   }
-  if (latest < samples.back().t && objective(latest) > found.value) found = {latest, objective(latest), std::nullopt};
-  // Sampled values within round-off of 0 can leave no candidate with the objective above it.
-  if (!(found.value > 0)) fail_no_forward_release();
+  if (latest < samples.back().t && objective(latest) > found.value) found = {latest, objective(latest), std::nullopt, std::nullopt};
   return found;
 }
 
@@ -934,7 +954,7 @@ void ShotRun::find_release() {
     const Candidate found = optimal_release();
     t_release_ = found.t;
     result_.release_at_growth_of = found.at_onset;
-    if (found.t == latest_release() && criterion_.drag && !e_.parts.drag) result_.release_held_at_slack = found.t;
+    result_.release_before_slack = found.before_slack;
   }
   const OdeVector y_release = phase2_->y_exact_at(t_release_);
   result_.release = point_from(t_release_, y_release);
@@ -996,7 +1016,6 @@ void ShotRun::follow_others(const OtherReleases& others) {
 // the release itself, not a failure before it.
 void ShotRun::mark_onsets() {
   auto before_release = [&](const std::optional<double>& t) { return t && *t <= t_release_ ? t : std::nullopt; };
-  constexpr double same_time = 1e-9;  // scaled
   result_.slack_sling = onsets_[0] && *onsets_[0] < t_release_ - same_time ? onsets_[0] : std::nullopt;
   result_.counterweight_below_base = before_release(onsets_[1]);
   result_.tip_below_base = before_release(onsets_[2]);

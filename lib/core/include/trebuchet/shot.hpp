@@ -96,9 +96,9 @@ struct ShotResult {
   /// The release sits at the instant this running extreme of eq:F starts to grow (a kink of
   /// the objective); none when it sits at a smooth maximum.
   std::optional<ForceIndex> release_at_growth_of;
-  /// The range's release held where the sling goes slack, though the range of a flight through
-  /// air would grow past it on a sling that pushes (ShotRun::latest_release); scaled time.
-  std::optional<double> release_held_at_slack;
+  /// Where the sling goes slack for good before the range's peak (scaled time): the release is
+  /// then the best before it (shot.cpp, slack_for_good_before).
+  std::optional<double> release_before_slack;
   // Where the model stops holding before the release, the scaled time it starts; none when it holds.
   std::optional<double> slack_sling;  ///< the sling would push the projectile (tension < 0)
   std::optional<double> counterweight_below_base;  ///< the counterweight passes below the engine's base
