@@ -35,8 +35,11 @@ using Conditions = std::array<double, condition_count>;
 // cannot raise it where it holds with equality: an F = 1 counterweight hanging straight down
 // touches the base's level.
 constexpr double condition_slack = 1e-9;
-// Two instants found as roots to 1e-11 or better, within this of each other, are one (scaled time).
-constexpr double same_time = 1e-9;
+// Two instants found as roots, within this of each other, are one (scaled time): the slack's
+// onset is found to 1e-12 and the range's peak to 1e-11, but the four-point slope's round-off
+// moves that root by up to 1e-8 (measured: 8e-9 on random engines). Over 1e-7 the model's push
+// moves the ball by about |T'| 1e-14 L2 / (2 mu): nothing a figure shows.
+constexpr double same_time = 1e-7;
 // A rope of mass modelled as a straight rod (sling.hpp) holds while it pulls at both ends and
 // the shear the rod carries there, which a rope cannot, stays below tan 10 deg of its tension:
 // a rope would bend by that angle at its end to carry it, and its ends' angles, the sling's
@@ -232,7 +235,7 @@ struct Candidate {
   double t;
   double value;
   std::optional<ForceIndex> at_onset;
-  std::optional<double> before_slack;  // the onset of a slack for good it was sought before (optimal_release)
+  std::optional<double> before_slack;  // the onset of a slack up to the peak it was sought before (optimal_release)
 };
 template <class Objective, class Rate>
 Candidate release_time(const Objective& objective, const Rate& rate, double lo, double hi, const std::vector<double>& scan,
@@ -542,7 +545,7 @@ class ShotRun {
   [[noreturn]] void fail_no_forward_release() const;
   Candidate optimal_release() const;
   Candidate best_release_before(double latest) const;
-  std::optional<double> slack_for_good_before(double t) const;
+  std::optional<double> slack_up_to_peak(double t) const;
   double given_release(const GivenWatch& g) const;
 
   const Machine& dynamics_;
@@ -841,21 +844,24 @@ void ShotRun::search_window(bool unreleased) {
          "; tighten {{rtol}} or choose another {{stepper}}");
 }
 
-// Where the sling goes slack for good before the range's release `t` (scaled time): its tension
-// below 0 from the onset at every step end of phase II up to `t`, the ball never caught again.
-// From there the model keeps the ball on the sling's circle, pushed, where a free ball would fly
-// off: in vacuum its range may still grow if the push turns the ball toward the target, and through
-// air on the flight alone it grows as the ball is kept out of the drag. The range's release is then
-// the best before the onset (docs/verifier.md, "the sling going slack"). A slack that ends before
-// the release, one in phase I, and the other objectives keep the whole window, and are warned.
-std::optional<double> ShotRun::slack_for_good_before(double t) const {
+// Where the sling goes slack before the range's release `t` and stays slack up to it (scaled
+// time): its tension below 0 from the onset at every step end of phase II up to `t`, and not
+// pulling at `t` itself (below 1e-6 of the ball's weight: in vacuum such a peak lies where the
+// model's push falls back to 0, to 1e-7 of it; a sling that pulls again before the peak pulled by
+// 1e-3 of it or more on a review's random engines). From the onset the model keeps the ball on
+// the sling's circle, pushed, where a free ball would fly off: in vacuum its range may still grow
+// if the push turns the ball toward the target, and through air on the flight alone it grows as
+// the ball is kept out of the drag. The range's release is then the best before the onset
+// (docs/verifier.md, "the sling going slack"). A slack that ends before the peak, one in phase I,
+// and the other objectives keep the whole window, and are warned.
+std::optional<double> ShotRun::slack_up_to_peak(double t) const {
   const auto& samples = phase2_->samples();
   const std::optional<double>& onset = onsets_[0];
   if (criterion_.release != Release::range || !onset || !(*onset > samples.front().t) || !(*onset < t - same_time)) return std::nullopt;
-  for (const auto& sample : samples) {
-    if (sample.t <= *onset || sample.t > t) continue;
-    if (!(dynamics_.snapshot(Phase::lifted, lifted_->state(phase2_->y_at(sample.t))).sling_tension + condition_slack < 0)) return std::nullopt;
-  }
+  const auto tension_of = [&](const OdeVector& y) { return dynamics_.snapshot(Phase::lifted, lifted_->state(y)).sling_tension; };
+  for (const auto& sample : samples)
+    if (sample.t > *onset && sample.t <= t && !(tension_of(phase2_->y_at(sample.t)) + condition_slack < 0)) return std::nullopt;
+  if (!(tension_of(phase2_->y_exact_at(t)) < 1e-6 * e_.mu)) return std::nullopt;
   return onset;
 }
 
@@ -863,7 +869,7 @@ Candidate ShotRun::optimal_release() const {
   Candidate found = best_release_before(std::numeric_limits<double>::infinity());
   // Sampled values within round-off of 0 can leave no candidate with the objective above it.
   if (!(found.value > 0)) fail_no_forward_release();
-  if (const auto slack = slack_for_good_before(found.t)) {
+  if (const auto slack = slack_up_to_peak(found.t)) {
     const Candidate before = best_release_before(*slack);
     if (before.value > 0) found = before, found.before_slack = slack;
   }

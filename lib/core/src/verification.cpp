@@ -127,9 +127,9 @@ void add_warnings_and_clearance(Verification& out, const Engine& engine, const S
   out.clearance.geometric = clear(pivot_height(engine) - engine.L2 - engine.L3 - half_box);
   if (shot.lowest_counterweight) out.clearance.in_shot = clear(*shot.lowest_counterweight * L2 - half_box);
   if (shot.release_before_slack)
-    out.notes.push_back(
-        "the sling goes slack for good at t = " + format_significant(*shot.release_before_slack * time_unit, 4) +
-        " s, before the range's peak: released at the best before it (the range would grow later only on a sling that pushes the ball)");
+    out.notes.push_back("the sling goes slack at t = " + format_significant(*shot.release_before_slack * time_unit, 4) +
+                        " s and stays slack up to the range's peak: released at the best before it (the range would grow later only on a sling that "
+                        "pushes the ball)");
   if (shot.phase_iii_cut)
     out.notes.push_back("after the release the counterweight was followed only to t = " + format_significant(shot.phase_iii_cut->t * time_unit, 4) +
                         " s of " + format_significant(2 * out.t_release, 4) + " s (" + shot.phase_iii_cut->why +

@@ -96,8 +96,8 @@ struct ShotResult {
   /// The release sits at the instant this running extreme of eq:F starts to grow (a kink of
   /// the objective); none when it sits at a smooth maximum.
   std::optional<ForceIndex> release_at_growth_of;
-  /// Where the sling goes slack for good before the range's peak (scaled time): the release is
-  /// then the best before it (shot.cpp, slack_for_good_before).
+  /// Where the sling goes slack and stays slack up to the range's peak (scaled time): the release is
+  /// then the best before it (shot.cpp, slack_up_to_peak).
   std::optional<double> release_before_slack;
   // Where the model stops holding before the release, the scaled time it starts; none when it holds.
   std::optional<double> slack_sling;  ///< the sling would push the projectile (tension < 0)
