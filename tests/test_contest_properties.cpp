@@ -78,9 +78,9 @@ std::vector<ContestCase> vacuum_cases() {
 
 // Not here: issue 63's hinged engine in air (a 4 kg ball, a box of 20 m by 20 m, at most 10 t
 // and 2000 m/s2), where the search's local searches end far apart (593 to 972 m), each on an
-// optimum of its own: 971.89 m at 10 t, 977.59 m at 11 t (M does not bind), and an acceleration
-// 1.25e-3 below its limit, not named binding, where the contest at 10 % more finds 39.2 m more
-// (issue 63, open). Nor the efficiency's contest
+// optimum of its own: 971.89 m at 10 t, 977.59 m at 11 t though M claims no gain, and its
+// acceleration's claimed gain 33.8 m where the contest at 10 % more finds 39.2 m (issue 63,
+// open). Nor the efficiency's contest
 // (--objective eps): without a limit on the acceleration it reaches eps = 1 on the fixed machine
 // and the floating arm at school, where no limit binds. With one (the fixed machine at school, 4 m
 // wide, 60 kg, 10 m/s2) its acceleration binds and its gain is true (0.7320 to 0.8494 at 11 m/s2),

@@ -426,26 +426,25 @@ ContestEngine contest_optimum(const ContestRequest& request) {
   std::vector<SearchPoint> ends;
   ContestEngine best = best_engine(request, shots, &ends);
   if (!request.gains) return best;
-  // Each limit the engine stands at (to 1e-3 of it): what it costs, found by searching again with
-  // it 10 % looser. It binds where that gains (more than 1e-5 of the objective, above the search's
-  // resolution); a limit the engine only touches gains nothing.
+  // Each limit given: what it costs, found by searching again with it 10 % looser. It binds where
+  // that gains (more than 1e-5 of the objective, above the search's resolution): a limit the
+  // engine only touches gains nothing, and one it stands short of may still gain, where the looser
+  // limit lets another engine past this one.
   const auto binds = [&](double gain) { return gain > binding_gain * best.objective; };
   for (int k = 0; k < contest_limit_count; ++k) {
-    if (!request.limits[k] || std::abs(best.measured[k] / *request.limits[k] - 1) > at_limit_tolerance) continue;
+    if (!request.limits[k]) continue;
     ContestRequest relaxed = request;
     relaxed.limits[k] = *request.limits[k] * 1.1;
-    best.at_limit[k] = true;
+    best.at_limit[k] = std::abs(best.measured[k] / *request.limits[k] - 1) <= at_limit_tolerance;
     best.gain_if_relaxed[k] = gain_over(best, relaxed, shots, ends);
     best.binds[k] = binds(*best.gain_if_relaxed[k]);
   }
   const double height = pivot_height(best.engine);
-  if (best.clearance - request.min_clearance <= at_limit_tolerance * height) {
-    best.clearance_at_limit = true;
-    if (request.min_clearance > 0) {  // the ground itself is no limit to relax
-      ContestRequest relaxed = request;
-      relaxed.min_clearance = request.min_clearance * 0.9;
-      best.gain_if_clearance_relaxed = gain_over(best, relaxed, shots, ends);
-    }
+  best.clearance_at_limit = best.clearance - request.min_clearance <= at_limit_tolerance * height;
+  if (request.min_clearance > 0) {  // the ground itself is no limit to relax
+    ContestRequest relaxed = request;
+    relaxed.min_clearance = request.min_clearance * 0.9;
+    best.gain_if_clearance_relaxed = gain_over(best, relaxed, shots, ends);
   }
   best.shots = shots.count();
   return best;

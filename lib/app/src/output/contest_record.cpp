@@ -27,12 +27,15 @@ bool clearance_binds(const ContestEngine& best) {
   return best.gain_if_clearance_relaxed && *best.gain_if_clearance_relaxed > binding_gain * best.objective;
 }
 
-// What a limit the engine stands at costs, in words: "binds; 10 % more gains 3.08 m", or that it does not bind.
-std::string gain_words(const std::optional<double>& gain, bool binds, const ContestRequest& request, UnitSystem units, const char* looser) {
-  if (!gain) return "";
+// What a limit costs, in words: "binds; 10 % more gains 3.08 m"; that the engine stands at it
+// without its binding; or, short of it, that the looser limit lets another engine past this one.
+std::string gain_words(const std::optional<double>& gain, bool at_limit, bool binds, const ContestRequest& request, UnitSystem units,
+                       const char* looser) {
+  if (!gain || (!binds && !at_limit)) return "";
   if (!binds) return std::string(": stands at it, but ") + looser + " gains nothing: does not bind";
-  return std::string(": binds; ") + looser + " gains " +
-      (request.efficiency ? format_significant(100 * *gain, 3) + " % in eps" : quantity_text(*gain, UnitDimension::length, units, 4));
+  return std::string(at_limit ? ": binds; " : ": binds, though this engine stands short of it; ") + looser + " gains " +
+      (request.efficiency ? format_significant(100 * *gain, 3) + " % in eps" : quantity_text(*gain, UnitDimension::length, units, 4)) +
+      (at_limit ? "" : ", with another engine");
 }
 
 }  // namespace
@@ -111,7 +114,7 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
     if (request.limits[k])
       out << std::string(std::max<std::size_t>(1, 16 - measured.size()), ' ') << "limit "
           << quantity_text(*request.limits[k], limit_dimensions[k], units, 5)
-          << gain_words(best.gain_if_relaxed[k], best.binds[k], request, units, "10 % more");
+          << gain_words(best.gain_if_relaxed[k], best.at_limit[k], best.binds[k], request, units, "10 % more");
     out << "\n";
     any = any || best.binds[k];
   }
@@ -119,7 +122,7 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
   out << "  counterweight clear " << clearance << std::string(std::max<std::size_t>(1, 16 - clearance.size()), ' ') << "least "
       << quantity_text(request.min_clearance, UnitDimension::length, units, 5) << " above the ground"
       << (best.clearance_at_limit && !best.gain_if_clearance_relaxed ? ": touches the ground" : "")
-      << gain_words(best.gain_if_clearance_relaxed, clearance_binds(best), request, units, "10 % less") << "\n";
+      << gain_words(best.gain_if_clearance_relaxed, best.clearance_at_limit, clearance_binds(best), request, units, "10 % less") << "\n";
   any = any || clearance_binds(best) || best.clearance_at_limit;
   if (!any)
     out << "  no limit binds: the engine stops short of them where the model stops holding (a larger one would put its counterweight or tip below "

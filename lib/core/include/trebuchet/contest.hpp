@@ -47,13 +47,13 @@ struct ContestRequest {
   double rope_mass = 0, pouch_mass = 0, pin_friction = 0;
   /// The ball's diameter [m], where given: with its mass, its density in air (Engine::projectile_diameter).
   std::optional<double> projectile_diameter;
-  /// Whether to find what relaxing each limit the engine stands at gains: a search each, most of
-  /// a contest's cost. Without, the same engine, its gains and binds left empty.
+  /// Whether to find what relaxing each limit given gains: a search each, most of a contest's
+  /// cost. Without, the same engine, its gains and binds left empty.
   bool gains = true;
 };
 
 /// A limit the engine stands at: within this fraction of it (the clearance: of the engine's
-/// height above its least). Only there can relaxing it gain.
+/// height above its least).
 inline constexpr double at_limit_tolerance = 1e-3;
 /// A limit binds where relaxing it by 10 % gains more than this fraction of the objective: above
 /// the resolution of the search, which meets a limit to about 1e-6 of it.
@@ -72,14 +72,15 @@ struct ContestEngine {
   Verification verification;
   std::array<double, contest_limit_count> measured{};
   double clearance = 0;  ///< the smaller of Verification::Clearance's two [m]
-  /// The limits the engine stands at (at_limit_tolerance), and of them those that bind: relaxing
-  /// them by 10 % gains (binding_gain). None for the engines of a Pareto front.
+  /// The limits the engine stands at (at_limit_tolerance), and those that bind: relaxing them by
+  /// 10 % gains (binding_gain), whether the engine stands at them or not. None for the engines of a
+  /// Pareto front.
   std::array<bool, contest_limit_count> at_limit{}, binds{};
-  /// For each limit the engine stands at, the objective (R [m] or eps) that the contest gains
+  /// For each limit given, the objective (R [m] or eps) that the contest gains
   /// with it 10 % looser, the others held: what that limit costs (0 where it does not bind).
   std::array<std::optional<double>, contest_limit_count> gain_if_relaxed{};
   /// The same for the least clearance the request asks for: whether the counterweight stands at
-  /// it (or at the ground), and what asking 10 % less gains (none at the ground).
+  /// it (or at the ground), and what asking 10 % less gains (none at the ground, 0 asked for).
   bool clearance_at_limit = false;
   std::optional<double> gain_if_clearance_relaxed;
   double objective = 0;  ///< R [m] or eps
@@ -101,7 +102,7 @@ std::array<double, contest_limit_count> contest_measures(const Engine& engine, c
 /// at the short arm's end), each limit a constraint and M bounded by its limit, from the paper's
 /// proportions and the best five of 64 points of a Sobol sequence; those within 1 % of the best
 /// refined; the best engine that meets the limits over them all. Every candidate is shot once.
-/// Then, with request.gains, for each limit the engine stands at, a search with that limit 10 %
+/// Then, with request.gains, for each limit given, a search with that limit 10 %
 /// looser, from the contest's own ends and from starts of its own: what it gains, and whether
 /// it binds. No engine returned strikes the ground: each meets the request's clearance. Throws
 /// Error(bad_number) for a request no engine could meet (no projectile, no beam), Error(out_of_range)
