@@ -80,12 +80,11 @@ std::vector<ContestCase> vacuum_cases() {
 // and 2000 m/s2), where the search's local searches end far apart (593 to 972 m), each on an
 // optimum of its own: 971.89 m at 10 t, 977.59 m at 11 t though M claims no gain, and its
 // acceleration's claimed gain 33.8 m where the contest at 10 % more finds 39.2 m (issue 63,
-// open). Nor the efficiency's contest
-// (--objective eps): without a limit on the acceleration it reaches eps = 1 on the fixed machine
-// and the floating arm at school, where no limit binds. With one (the fixed machine at school, 4 m
-// wide, 60 kg, 10 m/s2) its acceleration binds and its gain is true (0.7320 to 0.8494 at 11 m/s2),
-// but 10 % more width gives 0.7307 and 10 % more counterweight 0.7741, though its 4.3 kg does not
-// bind (issue 63, open).
+// open). Nor the efficiency's contest (--objective eps): without a limit on the acceleration it
+// reaches eps = 1 on the fixed machine and the floating arm at school, where no limit binds. With
+// one (the fixed machine at school, 4 m wide, 60 kg, 10 m/s2) it is monotone (0.7741; 0.7805,
+// 0.7741 and 0.8524 with each limit 10 % looser) and its acceleration's gain is true, but its
+// width gains nothing in its own search (issue 63, open).
 std::vector<ContestCase> air_cases() {
   return {{"fixed school in air, 1.5 kN on the axle",
            through_air(contest(MachineKind::fixed, 0.5, 1.5, {{width_limit, 4}, {height_limit, 3}, {mass_limit, 60}, {axle_limit, 1500}}))},
@@ -126,12 +125,13 @@ void check_limits_met(const ContestRequest& r, const ContestEngine& best) {
   for (int k = 0; k < contest_limit_count; ++k) {
     if (!r.limits[k]) continue;
     CHECK(best.measured[k] <= *r.limits[k] * (1 + 1e-12));  // M = m/(m/M) may round a part in 1e16 above
-    if (best.binds[k]) CHECK(best.measured[k] >= *r.limits[k] * (1 - 1e-5));
+    if (best.binds[k] && best.at_limit[k]) CHECK(best.measured[k] >= *r.limits[k] * (1 - 1e-5));
   }
   CHECK(best.clearance >= r.min_clearance);
   CHECK(best.verification.warnings.empty());
-  // How sure: six local searches, at least one at the best; none above it.
-  REQUIRE(best.start_objectives.size() == contest_local_searches);
+  // How sure: six local searches (and one for each better engine a gain's search found), at least
+  // one at the best; none above it.
+  REQUIRE(best.start_objectives.size() >= contest_local_searches);
   int at_best = 0;
   for (const auto& reached : best.start_objectives)
     if (reached) {

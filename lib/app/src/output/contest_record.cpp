@@ -1,5 +1,6 @@
 #include "trebuchet/app/output/contest_record.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -127,8 +128,10 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
   if (!any)
     out << "  no limit binds: the engine stops short of them where the model stops holding (a larger one would put its counterweight or tip below "
            "the base)\n";
+  const std::size_t from_gains = best.start_objectives.size() - std::min<std::size_t>(best.start_objectives.size(), contest_local_searches);
   out << "search: " << starts_at_best(best) << " of " << best.start_objectives.size()
-      << " local searches reached this best to 1e-4 (from the paper's proportions and the best of " << contest_sample_size << " Sobol points)\n";
+      << " local searches reached this best to 1e-4 (from the paper's proportions and the best of " << contest_sample_size << " Sobol points"
+      << (from_gains ? ", and " + std::to_string(from_gains) + " from a better engine a gain's search found" : std::string()) << ")\n";
   if (!front.empty()) {
     out << "Pareto front of " << (request.efficiency ? "eps" : "the range") << " against the peak axle load (" << front.size() << " optima):\n"
         << "  axle load       R               eps       M               pin to bend\n";
