@@ -29,12 +29,13 @@ bool clearance_binds(const ContestEngine& best) {
 }
 
 // What a limit costs, in words: "binds; 10 % more gains 3.08 m"; that the engine stands at it
-// without its binding; or, short of it, that the looser limit lets another engine past this one.
+// without its binding; or, clear of it (`clear`: "stands short of it", "keeps more than it"),
+// that the looser limit lets another engine past this one.
 std::string gain_words(const std::optional<double>& gain, bool at_limit, bool binds, const ContestRequest& request, UnitSystem units,
-                       const char* looser) {
+                       const char* looser, const char* clear) {
   if (!gain || (!binds && !at_limit)) return "";
   if (!binds) return std::string(": stands at it, but ") + looser + " gains nothing: does not bind";
-  return std::string(at_limit ? ": binds; " : ": binds, though this engine stands short of it; ") + looser + " gains " +
+  return (at_limit ? std::string(": binds; ") : std::string(": binds, though this engine ") + clear + "; ") + looser + " gains " +
       (request.efficiency ? format_significant(100 * *gain, 3) + " % in eps" : quantity_text(*gain, UnitDimension::length, units, 4)) +
       (at_limit ? "" : ", with another engine");
 }
@@ -115,7 +116,7 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
     if (request.limits[k])
       out << std::string(std::max<std::size_t>(1, 16 - measured.size()), ' ') << "limit "
           << quantity_text(*request.limits[k], limit_dimensions[k], units, 5)
-          << gain_words(best.gain_if_relaxed[k], best.at_limit[k], best.binds[k], request, units, "10 % more");
+          << gain_words(best.gain_if_relaxed[k], best.at_limit[k], best.binds[k], request, units, "10 % more", "stands short of it");
     out << "\n";
     any = any || best.binds[k];
   }
@@ -123,7 +124,8 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
   out << "  counterweight clear " << clearance << std::string(std::max<std::size_t>(1, 16 - clearance.size()), ' ') << "least "
       << quantity_text(request.min_clearance, UnitDimension::length, units, 5) << " above the ground"
       << (best.clearance_at_limit && !best.gain_if_clearance_relaxed ? ": touches the ground" : "")
-      << gain_words(best.gain_if_clearance_relaxed, best.clearance_at_limit, clearance_binds(best), request, units, "10 % less") << "\n";
+      << gain_words(best.gain_if_clearance_relaxed, best.clearance_at_limit, clearance_binds(best), request, units, "10 % less", "keeps more than it")
+      << "\n";
   any = any || clearance_binds(best) || best.clearance_at_limit;
   if (!any)
     out << "  no limit binds: the engine stops short of them where the model stops holding (a larger one would put its counterweight or tip below "

@@ -13,8 +13,8 @@
 
 namespace trebuchet {
 
-/// The best engine's shot record (shot_record.hpp), with "limits": {key: {measured, limit, binds,
-/// and for a binding one gain_if_relaxed_10_percent}}, "min_clearance"
+/// The best engine's shot record (shot_record.hpp), with "limits": {key: {measured, limit,
+/// at_limit, binds, and for a limit given gain_if_relaxed_10_percent}}, "min_clearance"
 /// and, when a front is given, "pareto": [{axle_load, R, eps, M, L1, L2, L3, L4, pin_angle_deg}].
 /// The limits a contest's record (contest_json) was searched under: each "limits" entry's "limit"
 /// and "min_clearance"'s "least". None from anything else.
