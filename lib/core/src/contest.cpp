@@ -461,9 +461,10 @@ ContestEngine contest_optimum(const ContestRequest& request) {
   // A gain's search may shoot an engine that meets every limit as given and throws farther than
   // the best (the contest's own searches missed it; its limit then only seemed to bind): that
   // engine, refined under the limits as given, is the best, a local search of its own, and the
-  // gains are searched again from it; at most three times.
-  for (int round = 0; round < 3; ++round) {
+  // gains are searched again from it; at most twice.
+  for (int round = 0;; ++round) {
     add_gains(best, request, shots, ends);
+    if (round == 2) break;
     const std::optional<ContestEngine> missed = best_shot(shots, request);
     if (!missed || !(missed->objective > best.objective * (1 + binding_gain))) break;
     Search s{request, shots};

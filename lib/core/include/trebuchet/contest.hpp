@@ -48,7 +48,8 @@ struct ContestRequest {
   /// The ball's diameter [m], where given: with its mass, its density in air (Engine::projectile_diameter).
   std::optional<double> projectile_diameter;
   /// Whether to find what relaxing each limit given gains: a search each, most of a contest's
-  /// cost. Without, the same engine, its gains and binds left empty.
+  /// cost. Without, the engine of the contest's own searches (which a gain's search may better),
+  /// its gains and binds left empty.
   bool gains = true;
 };
 
