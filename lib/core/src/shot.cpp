@@ -421,10 +421,6 @@ void trace_released(const Machine& dynamics, const ScaledDesign& e, const Integr
   });
 }
 
-// The range the release maximises under Release::range: in vacuum from the pivot to the
-// criterion's target level (level 0 is the paper's), else through the criterion's drag, or
-// Denny's, from the release point to where the flight dips below the release height (section
-// 6.3); 0 where the flight never comes down to its end.
 // How far below the release the flight ends (0 for Denny's range, back at the release height),
 // and the range measured from where the criterion measures it (the release point for Denny's).
 double flight_drop(const ReleasePoint& r, const ReleaseCriterion& criterion) {
@@ -445,6 +441,10 @@ void set_motion(ReleasePoint& r, const ScaledDesign& e, const Snapshot& snap) {
   r.velocity_angle = velocity_angle(snap);
 }
 
+// The range the release maximises under Release::range: in vacuum from the pivot to the
+// criterion's target level (level 0 is the paper's), else through the criterion's drag, or
+// Denny's, from the release point to where the flight dips below the release height (section
+// 6.3); 0 where the flight never comes down to its end.
 double objective_range(const ReleasePoint& r, const ReleaseCriterion& criterion) {
   if (!criterion.drag && !criterion.range_from_release && criterion.target_level == 0) return r.range;
   const double drop = flight_drop(r, criterion);
@@ -858,10 +858,10 @@ std::optional<double> ShotRun::slack_up_to_peak(double t) const {
   const auto& samples = phase2_->samples();
   const std::optional<double>& onset = onsets_[0];
   if (criterion_.release != Release::range || !onset || !(*onset > samples.front().t) || !(*onset < t - same_time)) return std::nullopt;
-  const auto tension_of = [&](const OdeVector& y) { return dynamics_.snapshot(Phase::lifted, lifted_->state(y)).sling_tension; };
+  const auto snapshot_of = [&](const OdeVector& y) { return dynamics_.snapshot(Phase::lifted, lifted_->state(y)); };
   for (const auto& sample : samples)
-    if (sample.t > *onset && sample.t <= t && !(tension_of(phase2_->y_at(sample.t)) + condition_slack < 0)) return std::nullopt;
-  if (!(tension_of(phase2_->y_exact_at(t)) < 1e-6 * e_.mu)) return std::nullopt;
+    if (sample.t > *onset && sample.t <= t && !(conditions_of(Phase::lifted, snapshot_of(phase2_->y_at(sample.t)))[0] < 0)) return std::nullopt;
+  if (!(snapshot_of(phase2_->y_exact_at(t)).sling_tension < 1e-6 * e_.mu)) return std::nullopt;
   return onset;
 }
 
@@ -913,7 +913,8 @@ Candidate ShotRun::best_release_before(double latest) const {
     const std::size_t step_start = phase2_->base_of(onset.t);
     search(step_start, std::min(step_start + 1, last));
   }
-  if (latest < samples.back().t && objective(latest) > found.value) found = {latest, objective(latest), std::nullopt, std::nullopt};
+  if (latest < samples.back().t)
+    if (const double at_latest = objective(latest); at_latest > found.value) found = {latest, at_latest, std::nullopt, std::nullopt};
   return found;
 }
 
@@ -1017,9 +1018,8 @@ void ShotRun::follow_others(const OtherReleases& others) {
 // Only what happens before the release invalidates the shot. A free ball keeps its landing
 // point wherever along its flight it is let go, so the range's slope in the release time is the
 // sling's pull times the range's gradient in the ball's velocity along the sling: the range
-// peaks where the tension falls through 0, and its best release is the sling's going slack. Both
-// roots are found to 1e-11 or better (scaled time): a slack onset within 1e-9 of the release is
-// the release itself, not a failure before it.
+// peaks where the tension falls through 0, and its best release is the sling's going slack: a
+// slack onset within same_time of the release is the release itself, not a failure before it.
 void ShotRun::mark_onsets() {
   auto before_release = [&](const std::optional<double>& t) { return t && *t <= t_release_ ? t : std::nullopt; };
   result_.slack_sling = onsets_[0] && *onsets_[0] < t_release_ - same_time ? onsets_[0] : std::nullopt;
