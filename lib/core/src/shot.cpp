@@ -504,20 +504,23 @@ namespace {
 // One shot of appendix A, in the order a reader follows it: phase I from rest (with the
 // whipper's phase held before it), phase II to the end of the release window, the release
 // search, and from the release the loads and the counterweight's lowest point through phase
-// III. Its members are what one phase hands on to the next.
+// III. Its members are what one phase hands on to the next. Phase II is one trajectory for every
+// release: a shot given a release (begin_given) reads its samples, stepped on as it needs them,
+// so that the shots given several releases share the steps (simulate_given_shots).
 class ShotRun {
  public:
-  ShotRun(const Machine& dynamics, const ReleaseCriterion& criterion, const IntegratorSettings& settings, bool keep_for_others)
+  ShotRun(const Machine& dynamics, const ReleaseCriterion& criterion, const IntegratorSettings& settings, bool replays)
       : dynamics_(dynamics),
         e_(dynamics.design()),
         criterion_(criterion),
         settings_(settings),
         whips_(dynamics.first_phase() == Phase::held),
-        keep_for_others_(keep_for_others),
+        replays_(replays),
         energy_scale_(e_.energy_drop()) {}
 
   void phase_one(std::vector<TracePoint>* trace, double trace_dt);
   void phase_two();
+  void begin_given(const GivenRelease& asked);
   void search_window(bool unreleased);
   void find_release();
   void follow_others(const OtherReleases& others);
@@ -538,8 +541,11 @@ class ShotRun {
   ReleasePoint point_from(double time, const OdeVector& state) const;
   ReleasePoint point_at(double time) const { return point_from(time, phase2_->y_at(time)); }
   std::optional<double> range_rate_at(double time) const;
-  void keep_for_others(const Snapshot& at, bool thrown);
+  void keep_sample(const Snapshot& at, bool thrown);
+  void step_phase_two();
+  void take_step();
   bool step_ends_shot();
+  std::string window_end_seen() const;
   bool objective_fallen() const;
   [[noreturn]] void refuse_given(const std::string& what);
   [[noreturn]] void fail_no_forward_release() const;
@@ -553,10 +559,13 @@ class ShotRun {
   const ReleaseCriterion& criterion_;
   const IntegratorSettings& settings_;
   const bool whips_;  // the whipper, whose counterweight rests on the arm in a phase held first
-  const bool keep_for_others_;  // whether further releases may be asked for (OtherReleases)
+  const bool replays_;  // whether releases replay the samples (a given release, OtherReleases)
   const double energy_scale_;
   ShotResult result_;
   double energy0_ = 0;
+  // The steps taken and the energy's drift so far (track_energy), over every phase stepped.
+  long steps_ = 0;
+  double drift_ = 0;
   // The hinge pin's friction turns with the counterweight's swing relative to the beam, which
   // reverses a few times in a shot. A pin whose friction can hold that swing makes it stick and
   // slip, which Coulomb's law as modelled here (sliding only) leaves out: the turn then reverses
@@ -576,15 +585,19 @@ class ShotRun {
   // The highest apex, in vacuum, of the flights that a release at a step end sends forward
   // (scaled, above the base): what a target level above every flight is told.
   double highest_apex_ = 0;
-  // What a given release watches at each sample (the snapshot, whether a release there throws),
-  // and the energy drift up to it: what a further release replays (OtherReleases), kept only
-  // when further releases may be asked for.
+  // What a given release watches at each sample of phase II (the snapshot, whether a release
+  // there throws), kept only where releases replay them; the steps and the energy drift up to it.
   std::vector<Snapshot> snapshots_;
   std::vector<char> throwing_;
   std::vector<double> drift_up_to_;
+  std::vector<long> steps_up_to_;
+  std::optional<GivenRelease> asked_;  // the release given, as given
   std::optional<GivenWatch> given_;
   std::optional<BackwardWatch> backward_;
   std::string window_end_;  // why the window ended, for a given release that never comes
+  std::optional<std::size_t> window_end_at_;  // the sample it ended on
+  std::optional<Error> failure_;  // a step of phase II that failed: every release past it fails so
+  std::size_t seen_ = 0;  // the samples of phase II the release sought has read
   bool ended_ = false;  // the shot ended (not merely past the release)
   double search_end_ = 0;  // the last sample's time when the release was sought
   double t_release_ = 0;
@@ -594,13 +607,13 @@ class ShotRun {
 void ShotRun::track_energy(const Snapshot& s, const Losses& work) {
   double lost = 0;
   for (double w : work) lost += w;
-  result_.energy_drift = std::max(result_.energy_drift, std::abs(s.energy + lost - energy0_) / energy_scale_);
+  drift_ = std::max(drift_, std::abs(s.energy + lost - energy0_) / energy_scale_);
 }
 
 // Counts an accepted step against the budget; whether the axle's friction now holds the beam.
 // In the whipper's phase held the counterweight does not turn on its pin: nothing to watch.
 bool ShotRun::count_step(const char* phase, const State& s, bool hinge_turns) {
-  if (++result_.steps > settings_.max_steps)
+  if (++steps_ > settings_.max_steps)
     fail("step budget of " + std::to_string(settings_.max_steps) + " steps exceeded in " + phase +
          "; loosen {{rtol}} or choose a higher-order {{stepper}}");
   if (hinge_turns && pins_.hinge_holds(e_, s))
@@ -719,8 +732,9 @@ ReleasePoint ShotRun::point_from(double time, const OdeVector& state) const {
   return release_point(e_, criterion_, time, s, dynamics_.snapshot(Phase::lifted, s), phase2_->extremes_before(time));
 }
 
-void ShotRun::keep_for_others(const Snapshot& at, bool thrown) {
-  if (keep_for_others_) snapshots_.push_back(at), throwing_.push_back(thrown), drift_up_to_.push_back(result_.energy_drift);
+void ShotRun::keep_sample(const Snapshot& at, bool thrown) {
+  if (replays_) snapshots_.push_back(at), throwing_.push_back(thrown);
+  drift_up_to_.push_back(drift_), steps_up_to_.push_back(steps_);
 }
 
 // Phase II from the located lift-off state, its first sample taken.
@@ -737,12 +751,8 @@ void ShotRun::phase_two() {
   sampled_ = {at_liftoff.objective};
   best_quality_ = sampled_.front();
   const bool thrown_at_liftoff = throws(e_, at_liftoff);
-  keep_for_others(lift_snapshot, thrown_at_liftoff);
-  // A given release watches its value from lift-off on; one already past there would release in the trough.
-  // The whipper's projectile leaves the arm falling forward, and its velocity and pin angles turn
-  // through a whole turn before the release: a given angle is the first one below their value
-  // there, whole turns apart (docs/machines.md, "The whipper").
-  if (criterion_.given) given_.emplace(*criterion_.given, t_, lift_snapshot, thrown_at_liftoff, whips_);
+  keep_sample(lift_snapshot, thrown_at_liftoff);
+  seen_ = 1;
   h_ = 1e-3;
   // The release window (docs/verifier.md, "Window"): one for every shot, every form of release
   // and every machine, lossless or not. It ends where the projectile's velocity turns backward
@@ -752,8 +762,33 @@ void ShotRun::phase_two() {
   backward_.emplace(thrown_at_liftoff);
 }
 
-// One step of phase II; whether the shot ends there.
-bool ShotRun::step_ends_shot() {
+// A shot given `asked` on this trajectory, from lift-off: a given release watches its value from
+// lift-off on; one already past there would release in the trough. The whipper's projectile
+// leaves the arm falling forward, and its velocity and pin angles turn through a whole turn
+// before the release: a given angle is the first one below their value there, whole turns apart
+// (docs/machines.md, "The whipper"). What phases I and II found before it stays.
+void ShotRun::begin_given(const GivenRelease& asked) {
+  const ShotResult before = result_;
+  result_ = ShotResult{};
+  result_.t_liftoff = before.t_liftoff, result_.t_counterweight_free = before.t_counterweight_free;
+  asked_ = asked;
+  given_.emplace(asked, phase2_->samples().front().t, snapshots_.front(), throwing_.front(), whips_);
+  seen_ = 1, ended_ = false, t_release_ = 0;
+}
+
+// A step of phase II that fails fails every release that needs it, with the same error.
+void ShotRun::step_phase_two() {
+  if (failure_) throw *failure_;
+  try {
+    take_step();
+  } catch (const Error& e) {
+    failure_ = e;
+    throw;
+  }
+}
+
+// One step of phase II, its sample kept for every release that reads it.
+void ShotRun::take_step() {
   const StepEnd step_start = phase2_->samples().back();
   if (!lifted_->step(t_, y_.data(), settings_.max_time, h_))
     fail(lifted_->friction_unsettled() ? unsettled_friction : "integrator failure in phase II; tighten {{rtol}} or choose another {{stepper}}");
@@ -778,10 +813,9 @@ bool ShotRun::step_ends_shot() {
   phase2_->add(lifted_->step_end(t_, y_, snap_), snap_);
   sampled_.push_back(here.objective);
   const bool thrown = throws(e_, here);
-  keep_for_others(snap_, thrown);
+  keep_sample(snap_, thrown);
   best_quality_ = std::max(best_quality_, here.objective);
   if (here.range > 0) highest_apex_ = std::max(highest_apex_, here.height + std::pow(std::max(here.velocity.y, 0.0), 2) / 2);  // scaled, g = 1
-  if (given_) given_->add(phase2_->samples().size() - 1, t_, snap_, thrown);
   backward_->add(thrown);
   if (window_end_.empty()) {
     if (s.theta > dynamics_.turn_limit(Phase::lifted))
@@ -791,8 +825,20 @@ bool ShotRun::step_ends_shot() {
     else if (axle_holds)
       window_end_ = "the axle's friction stops the beam first";
   }
-  return !window_end_.empty() || (given_ && given_->spent());
+  if (!window_end_.empty() && !window_end_at_) window_end_at_ = phase2_->samples().size() - 1;
 }
+
+// The next sample of phase II for the release sought: stepped, or read where another release's
+// shot stepped it already; whether the shot ends there (the window, or a given release spent).
+bool ShotRun::step_ends_shot() {
+  if (seen_ == phase2_->samples().size()) step_phase_two();
+  const std::size_t i = seen_++;
+  if (given_) given_->add(i, phase2_->samples()[i].t, snapshots_[i], throwing_[i]);
+  return window_end_at_ == i || (given_ && given_->spent());
+}
+
+// Why the window ended, where it ended within the samples read; empty where it did not.
+std::string ShotRun::window_end_seen() const { return window_end_at_ && *window_end_at_ < seen_ ? window_end_ : std::string(); }
 
 // Whether the objective has fallen to half its maximum, past an optimum's release. The whipper's
 // projectile first drops off the arm forward, with an objective that peaks near zero, before the
@@ -803,7 +849,7 @@ bool ShotRun::objective_fallen() const { return !whips_ && best_quality_ > 0 && 
 // where the search stopped past it, the swing is followed on to its end.
 void ShotRun::refuse_given(const std::string& what) {
   while (!ended_) ended_ = step_ends_shot();
-  refuse_given_release(*criterion_.given, given_->watch, what, whips_);  // the value as given, not moved by whole turns
+  refuse_given_release(*asked_, given_->watch, what, whips_);  // the value as given, not moved by whole turns
 }
 
 // No release with a positive objective: under Release::range with a target level above the
@@ -827,7 +873,7 @@ void ShotRun::search_window(bool unreleased) {
   // With `unreleased` asked for, phase II goes on past a given release as an optimum's window
   // would (to half the objective's best), so that the pictures show what it gave up.
   const auto past = [&] {
-    if (given_) return given_->done(phase2_->samples().size()) && (!unreleased || objective_fallen());
+    if (given_) return given_->done(seen_) && (!unreleased || objective_fallen());
     return objective_fallen();
   };
   while (!(ended_ = step_ends_shot()) && !past()) {
@@ -837,8 +883,9 @@ void ShotRun::search_window(bool unreleased) {
                         : "the release would come before lift-off, with the projectile still in the trough");
   if (given_ && !given_->watch.crossed)
     refuse_given("the release never comes: " +
-                 (window_end_.empty() ? std::string("the watched value never reaches it") : "the release window ends, " + window_end_));
+                 (window_end_seen().empty() ? std::string("the watched value never reaches it") : "the release window ends, " + window_end_seen()));
   if (!given_ && !(best_quality_ > 0)) fail_no_forward_release();
+  result_.energy_drift = drift_up_to_[seen_ - 1], result_.steps = steps_up_to_[seen_ - 1];
   if (result_.energy_drift > settings_.max_energy_drift)
     fail("energy drift " + format_significant(result_.energy_drift, 3) + " of Delta U exceeds " + format_significant(settings_.max_energy_drift, 3) +
          "; tighten {{rtol}} or choose another {{stepper}}");
@@ -971,7 +1018,7 @@ void ShotRun::find_release() {
                  (given_->given.by == ReleaseBy::velocity_angle
                       ? std::string()
                       : " (its velocity angle is " + format_significant(degrees(result_.release.velocity_angle), 4) + " deg)"));
-  search_end_ = phase2_->samples().back().t;
+  search_end_ = phase2_->samples()[seen_ - 1].t;
 }
 
 // The further releases (OtherReleases), each replayed over the samples as its own shot would
@@ -979,8 +1026,6 @@ void ShotRun::find_release() {
 // or cannot come. The shot's own figures stay as found: its search's end, its drift and steps.
 void ShotRun::follow_others(const OtherReleases& others) {
   const auto& samples = phase2_->samples();
-  const double drift = result_.energy_drift;
-  const long steps = result_.steps;
   std::vector<GivenWatch> watches;
   std::vector<std::size_t> seen;  // the samples each watch has replayed
   for (const GivenRelease& asked : others(result_.release))
@@ -995,7 +1040,7 @@ void ShotRun::follow_others(const OtherReleases& others) {
   };
   // A step that fails here fails a further release's own shot as well, if it needed the step.
   try {
-    while (catch_up() && window_end_.empty()) step_ends_shot();
+    while (catch_up() && window_end_.empty()) step_phase_two();
   } catch (const Error&) {
   }
   catch_up();
@@ -1012,7 +1057,6 @@ void ShotRun::follow_others(const OtherReleases& others) {
     }
     result_.others.push_back(other);
   }
-  result_.energy_drift = drift, result_.steps = steps;
 }
 
 // Only what happens before the release invalidates the shot. A free ball keeps its landing
@@ -1123,9 +1167,10 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
                          std::vector<TracePoint>* trace, double trace_dt, std::vector<TracePoint>* unreleased, bool find_loads,
                          const OtherReleases& others, TraceSpan span) {
   use_gsl_return_codes();
-  ShotRun shot(dynamics, criterion, settings, static_cast<bool>(others));
+  ShotRun shot(dynamics, criterion, settings, others || criterion.given);
   shot.phase_one(trace, trace_dt);
   shot.phase_two();
+  if (criterion.given) shot.begin_given(*criterion.given);
   shot.search_window(unreleased != nullptr);
   shot.find_release();
   if (others) shot.follow_others(others);
@@ -1133,6 +1178,33 @@ ShotResult simulate_shot(const Machine& dynamics, const ReleaseCriterion& criter
   if (find_loads) shot.find_loads(), shot.find_lowest_counterweight();
   shot.write_trace(trace, trace_dt, span, unreleased);
   return shot.result();
+}
+
+std::vector<GivenShot> simulate_given_shots(const Machine& dynamics, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
+                                            const std::vector<GivenRelease>& releases, bool find_loads) {
+  use_gsl_return_codes();
+  ShotRun shot(dynamics, criterion, settings, true);
+  std::vector<GivenShot> out(releases.size());
+  try {
+    shot.phase_one(nullptr, 0);
+    shot.phase_two();
+  } catch (const Error& e) {
+    for (GivenShot& given : out) given.error = e;
+    return out;
+  }
+  for (std::size_t i = 0; i < releases.size(); ++i) {
+    try {
+      shot.begin_given(releases[i]);
+      shot.search_window(false);
+      shot.find_release();
+      shot.mark_onsets();
+      if (find_loads) shot.find_loads(), shot.find_lowest_counterweight();
+      out[i].shot = shot.result();
+    } catch (const Error& e) {
+      out[i].error = e;
+    }
+  }
+  return out;
 }
 
 }  // namespace trebuchet

@@ -253,7 +253,15 @@ ShotSettings settings_for(const Engine& engine, const ShotSettings& settings) {
   return out;
 }
 
-Verification verify_engine(const Engine& engine, const ShotSettings& given, std::vector<TracePoint>* trace, double trace_dt_s, PinScan* pins) {
+namespace {
+
+// What verify_engine checks before its shot, in this order, and the settings and criterion it
+// shoots by.
+struct ShotPlan {
+  ShotSettings settings;
+  ReleaseCriterion criterion;
+};
+ShotPlan plan_shot(const Engine& engine, const ShotSettings& given) {
   check_engine(engine);  // as given, its material too: a caller may have changed either since it was read
   check_shot_settings(given);
   const ShotSettings settings = settings_for(engine, given);
@@ -261,8 +269,14 @@ Verification verify_engine(const Engine& engine, const ShotSettings& given, std:
     throw Error(ErrorKind::usage,
                 "{{rope_diameter}} gives the drag on the sling's rope, which acts only when the air acts before the release; "
                 "add {{drag_in_sling}} (with {{air}}), or leave the rope's diameter out");
+  return {settings, release_criterion(engine, settings)};
+}
+
+}  // namespace
+
+Verification verify_engine(const Engine& engine, const ShotSettings& given, std::vector<TracePoint>* trace, double trace_dt_s, PinScan* pins) {
+  const auto [settings, criterion] = plan_shot(engine, given);
   const double time_unit = std::sqrt(engine.L2 / engine.material.g);  // section 3 [s]
-  const ReleaseCriterion criterion = release_criterion(engine, settings);
   if (trace && trace_dt_s > 0) {
     // The series runs to twice the release (shot.hpp); its size is known before it is written.
     const double duration_s = 2 * simulate_shot(shot_design(engine, settings), criterion, settings.integrator).release.t * time_unit;
@@ -276,6 +290,44 @@ Verification verify_engine(const Engine& engine, const ShotSettings& given, std:
                                         settings.loads, pins ? pins->releases() : OtherReleases{});
   if (pins) pins->read(shot);
   return verification_of(engine, shot, settings.target_level, settings.air, settings.range_from_release);
+}
+
+std::vector<VerifiedRelease> verify_releases(const Engine& engine, const ShotSettings& settings, const std::vector<SetRelease>& releases) {
+  std::vector<VerifiedRelease> out(releases.size());
+  std::vector<ShotPlan> plans;
+  std::vector<GivenRelease> asked;
+  std::vector<std::size_t> place;  // each asked release's place in `releases`
+  for (std::size_t i = 0; i < releases.size(); ++i) {
+    ShotSettings at = settings;
+    at.release_at = releases[i];
+    try {
+      plans.push_back(plan_shot(engine, at));
+      asked.push_back(*plans.back().criterion.given);
+      place.push_back(i);
+    } catch (const Error& e) {
+      out[i].error = e;
+    }
+  }
+  if (plans.empty()) return out;
+  const ShotPlan& plan = plans.front();  // the others differ from it in their release alone
+  std::vector<GivenShot> shots;
+  try {
+    const ScaledDesign design = shot_design(engine, plan.settings);
+    shots = simulate_given_shots(*machine_of(design), plan.criterion, plan.settings.integrator, asked, plan.settings.loads);
+  } catch (const Error& e) {
+    for (std::size_t i : place) out[i].error = e;
+    return out;
+  }
+  for (std::size_t k = 0; k < shots.size(); ++k) {
+    VerifiedRelease& one = out[place[k]];
+    one.error = shots[k].error;
+    if (shots[k].shot) try {
+        one.verification = verification_of(engine, *shots[k].shot, plan.settings.target_level, plan.settings.air, plan.settings.range_from_release);
+      } catch (const Error& e) {
+        one.error = e;
+      }
+  }
+  return out;
 }
 
 PinScan::PinScan(const Engine& engine, const ShotSettings& settings, Pins pins_deg)

@@ -173,73 +173,135 @@ void add_pin_tolerance(DesignReport& out, const PinScan& tolerance_scan, const V
 
 }  // namespace
 
-DesignReport check_design(const EngineRecord& record, const DesignCheck& check) {
-  Engine engine = record.engine;
-  engine.material = material_of(check.material, engine.material);
-  if (record.mb_from_D) engine.mb = wood_beam_mass(engine);  // in the wood of the run
-  double tolerance = check.tolerance;
-  const ShotSettings settings = settings_of_check(record, check, tolerance);
-  DesignReport out;
+namespace {
+
+// A design as checked: its engine in the run's material (for fit, the fitted one, with its
+// shots and table), the settings it is shot under, and the tolerance of its capacity check.
+struct CheckedDesign {
+  Engine engine;
+  ShotSettings settings;
+  double tolerance = 0;
   nlohmann::ordered_json simulated;
   std::string fitted_table;
+};
+
+CheckedDesign design_to_check(const EngineRecord& record, const DesignCheck& check) {
+  CheckedDesign d;
+  d.engine = record.engine;
+  d.engine.material = material_of(check.material, d.engine.material);
+  if (record.mb_from_D) d.engine.mb = wood_beam_mass(d.engine);  // in the wood of the run
+  d.tolerance = check.tolerance;
+  d.settings = settings_of_check(record, check, d.tolerance);
   if (check.fit) {
-    const FittedEngine fitted = fit_for_check(engine, record, check, settings);
-    engine = fitted.engine;
-    simulated["simulations"] = fitted.simulations;
-    fitted_table = fitted.table;
+    FittedEngine fitted = fit_for_check(d.engine, record, check, d.settings);
+    d.engine = fitted.engine;
+    d.simulated["simulations"] = fitted.simulations;
+    d.fitted_table = std::move(fitted.table);
   }
-  std::vector<TracePoint> trace;
-  // The pin to bend for an optimum, and what a degree or two of error costs: read off the same shot.
-  PinScan tolerance_scan(engine, settings, [](double own_deg) {
-    std::vector<double> pins;
-    for (double offset : pin_tolerance_offsets) pins.push_back(own_deg + offset);
-    return pins;
-  });
-  const auto shoot = [&] {
-    try {
-      return verify_engine(engine, settings, check.series_path.empty() ? nullptr : &trace, check.series_dt_s,
-                           settings.release_at ? nullptr : &tolerance_scan);
-    } catch (const Error& e) {
-      // A release the design itself sets is named by its key, as the design gives it ("pin_angle_deg").
-      if (!record.release_at || check.settings.release_at) throw;
-      throw Error(e.kind(), e.message([](std::string_view key) {
-        const InputField* field = find_field(key);
-        return field && field->group == FieldGroup::release ? std::string(field->key) : "{{" + std::string(key) + "}}";
-      }));
-    }
-  };
-  const Verification v = shoot();
+  return d;
+}
+
+// An error of the design's shot; a release the design itself sets named by its key, as the
+// design gives it ("pin_angle_deg").
+Error shot_error(const Error& e, const EngineRecord& record, const DesignCheck& check) {
+  if (!record.release_at || check.settings.release_at) return e;
+  return Error(e.kind(), e.message([](std::string_view key) {
+    const InputField* field = find_field(key);
+    return field && field->group == FieldGroup::release ? std::string(field->key) : "{{" + std::string(key) + "}}";
+  }));
+}
+
+// The report of the design's shot `v`: its record, table and CSV cells, the capacity checked,
+// the pin's tolerance where the shot read it (`tolerance_scan`).
+DesignReport design_report(const EngineRecord& record, const DesignCheck& check, const CheckedDesign& d, const Verification& v,
+                           const PinScan* tolerance_scan) {
+  const Engine& engine = d.engine;
+  const ShotSettings& settings = d.settings;
+  DesignReport out;
   std::optional<CapacityCheck> capacity;
   // fit designs for the capacity as the shot measures it (through its air, to its level, from where
   // it measures); a capacity to check is the calculator's, in vacuum. In vacuum to level 0 from
   // the pivot the two are the same.
   const bool measured = check.fit && (settings.air || settings.range_from_release || settings.target_level != 0);
-  if (record.capacity) capacity = check_capacity(v, *record.capacity, tolerance, measured);
+  if (record.capacity) capacity = check_capacity(v, *record.capacity, d.tolerance, measured);
   out.json = verification_json(v, capacity);
-  if (check.table) out.table = fitted_table + verification_table(engine, settings, v, capacity, check.units);
+  if (check.table) out.table = d.fitted_table + verification_table(engine, settings, v, capacity, check.units);
   if (check.csv) out.csv = verification_csv_row(engine, settings, v, capacity, check.csv_digits);
   // The engine simulated (for fit, the fitted one, with its shots) and what the shot assumed.
   nlohmann::ordered_json engine_json;
   write_engine(engine_json, engine);
   if (const auto& at = settings.release_at)  // the release its builder set, so that the record reads back
     engine_json[release_field(at->by).key] = at->value;
-  if (check.fit) engine_json.update(simulated);
+  if (check.fit) engine_json.update(d.simulated);
   out.json["engine"] = engine_json;
   out.json["assumptions"] = assumptions_json(engine, settings);
-  if (!settings.release_at) add_pin_tolerance(out, tolerance_scan, v, engine, check);
+  if (tolerance_scan) add_pin_tolerance(out, *tolerance_scan, v, engine, check);
   if (!record.passed.empty()) {  // the design's keys no reader knows, as given
     out.json["passed"] = record.passed;
     std::vector<std::string> keys;
     for (const auto& [key, value] : record.passed.items()) keys.push_back(key);
     if (check.table) out.table += "passed through, not read: " + join(keys, ", ") + "\n";
   }
-  if (!check.plot_dir.empty())
-    write_picture_folder(check.plot_dir, shot_pictures(engine, settings, v, out.json, check.units), picture_scripts(), check.inputs);
-  if (!check.series_path.empty()) write_output_file(check.series_path, trace_csv(trace, engine), "series");
   out.outside_tolerance = capacity && !capacity->pass;
   out.engine = engine;
   out.settings = settings;
   out.verification = v;
+  return out;
+}
+
+}  // namespace
+
+DesignReport check_design(const EngineRecord& record, const DesignCheck& check) {
+  const CheckedDesign d = design_to_check(record, check);
+  std::vector<TracePoint> trace;
+  // The pin to bend for an optimum, and what a degree or two of error costs: read off the same shot.
+  PinScan tolerance_scan(d.engine, d.settings, [](double own_deg) {
+    std::vector<double> pins;
+    for (double offset : pin_tolerance_offsets) pins.push_back(own_deg + offset);
+    return pins;
+  });
+  PinScan* pins = d.settings.release_at ? nullptr : &tolerance_scan;
+  const Verification v = [&] {
+    try {
+      return verify_engine(d.engine, d.settings, check.series_path.empty() ? nullptr : &trace, check.series_dt_s, pins);
+    } catch (const Error& e) {
+      throw shot_error(e, record, check);
+    }
+  }();
+  DesignReport out = design_report(record, check, d, v, pins);
+  if (!check.plot_dir.empty())
+    write_picture_folder(check.plot_dir, shot_pictures(d.engine, d.settings, v, out.json, check.units), picture_scripts(), check.inputs);
+  if (!check.series_path.empty()) write_output_file(check.series_path, trace_csv(trace, d.engine), "series");
+  return out;
+}
+
+std::vector<ReleasedDesign> check_released_designs(const std::vector<EngineRecord>& records, const DesignCheck& check) {
+  if (check.fit || !check.series_path.empty() || !check.plot_dir.empty())
+    throw Error(ErrorKind::usage, "designs checked at several releases are neither fitted nor drawn");
+  std::vector<ReleasedDesign> out(records.size());
+  std::vector<CheckedDesign> designs;
+  std::vector<SetRelease> releases;
+  std::vector<std::size_t> place;  // each design's place in `records`
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    try {
+      designs.push_back(design_to_check(records[i], check));
+    } catch (const Error& e) {
+      out[i].error = e;
+      continue;
+    }
+    if (!designs.back().settings.release_at) throw Error(ErrorKind::usage, "a design checked at several releases needs its release given");
+    releases.push_back(*designs.back().settings.release_at);
+    place.push_back(i);
+  }
+  if (designs.empty()) return out;
+  const std::vector<VerifiedRelease> shots = verify_releases(designs.front().engine, designs.front().settings, releases);
+  for (std::size_t k = 0; k < shots.size(); ++k) {
+    const EngineRecord& record = records[place[k]];
+    if (shots[k].error)
+      out[place[k]].error = shot_error(*shots[k].error, record, check);
+    else
+      out[place[k]].report = design_report(record, check, designs[k], *shots[k].verification, nullptr);
+  }
   return out;
 }
 

@@ -57,22 +57,47 @@ std::vector<WhatIfPoint> run_what_if(const DesignValues& values, const std::stri
   }
   const std::vector<double> grid = what_if_values(what_if.from, what_if.to, what_if.points);
   std::vector<WhatIfPoint> points(grid.size());
+  // The value laid over the design as its flag would be (overlay_flags): what it fixes another
+  // way goes with it (a record's F beside its L3, an H beside L1 and theta_i).
+  const auto record_at = [&](std::size_t i) {
+    points[i].value = grid[i];
+    DesignValues value;
+    value.*field.member = grid[i];
+    std::vector<std::string> unsaid;  // the sweep's own change, said by its table
+    DesignValues at = overlay_flags(values, value, where, unsaid);
+    at.R.reset(), at.T.reset();  // a capacity the design carries (the calculator's) is one engine's; each point is another
+    return engine_record(at, where);
+  };
+  if (field.group != FieldGroup::release) {
+    for_each_index(
+        grid.size(), threads,
+        [&](std::size_t i) {
+          try {
+            points[i].report = check_design(record_at(i), check);
+          } catch (const Error& e) {
+            points[i].error = e;
+          }
+        },
+        progress);
+    return points;
+  }
+  // A release changes nothing before it: the points share one trajectory up to the latest release
+  // (check_released_designs), in as many runs of neighbouring points as there are threads.
+  const auto runs = static_cast<std::size_t>(thread_count(threads, grid.size()));
   for_each_index(
-      grid.size(), threads,
-      [&](std::size_t i) {
-        points[i].value = grid[i];
-        // The value laid over the design as its flag would be (overlay_flags): what it fixes
-        // another way goes with it (a record's F beside its L3, an H beside L1 and theta_i).
-        DesignValues value;
-        value.*field.member = grid[i];
-        std::vector<std::string> unsaid;  // the sweep's own change, said by its table
-        DesignValues at = overlay_flags(values, value, where, unsaid);
-        at.R.reset(), at.T.reset();  // a capacity the design carries (the calculator's) is one engine's; each point is another
-        try {
-          points[i].report = check_design(engine_record(at, where), check);
-        } catch (const Error& e) {
-          points[i].error = e;
-        }
+      runs, threads,
+      [&](std::size_t run) {
+        std::vector<EngineRecord> records;
+        std::vector<std::size_t> place;
+        for (std::size_t i = run * grid.size() / runs; i < (run + 1) * grid.size() / runs; ++i) try {
+            records.push_back(record_at(i));
+            place.push_back(i);
+          } catch (const Error& e) {
+            points[i].error = e;
+          }
+        std::vector<ReleasedDesign> checked = check_released_designs(records, check);
+        for (std::size_t k = 0; k < checked.size(); ++k)
+          points[place[k]].report = std::move(checked[k].report), points[place[k]].error = checked[k].error;
       },
       progress);
   return points;

@@ -11,6 +11,7 @@
 
 #include "trebuchet/design.hpp"
 #include "trebuchet/dynamics.hpp"
+#include "trebuchet/error.hpp"
 #include "trebuchet/integrator.hpp"
 #include "trebuchet/machine.hpp"
 #include "trebuchet/quality.hpp"
@@ -154,5 +155,18 @@ ShotResult simulate_shot(const ScaledDesign& design, const ReleaseCriterion& cri
 ShotResult simulate_shot(const Machine& machine, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
                          std::vector<TracePoint>* trace = nullptr, double trace_dt = 0, std::vector<TracePoint>* unreleased = nullptr,
                          bool find_loads = false, const OtherReleases& others = {}, TraceSpan span = TraceSpan::with_phase_iii);
+
+/// One shot of simulate_given_shots: what it found, or why it failed.
+struct GivenShot {
+  std::optional<ShotResult> shot;
+  std::optional<Error> error;
+};
+
+/// The shots of `machine` given each of `releases` in turn: each what simulate_shot given that
+/// release (criterion.given) with `find_loads` finds, bit for bit, or the Error it throws. Phases I and II are stepped once for all of them, as far as the latest
+/// release needs (a release changes nothing before it: docs/verifier.md, "One trajectory, every
+/// release"); each follows its own phase III. criterion.given is not read.
+std::vector<GivenShot> simulate_given_shots(const Machine& machine, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
+                                            const std::vector<GivenRelease>& releases, bool find_loads);
 
 }  // namespace trebuchet

@@ -196,6 +196,17 @@ class PinScan {
 Verification verify_engine(const Engine& engine, const ShotSettings& settings, std::vector<TracePoint>* trace = nullptr, double trace_dt_s = 0,
                            PinScan* pins = nullptr);
 
+/// One shot of verify_releases: what verify_engine returns for it, or the Error it throws.
+struct VerifiedRelease {
+  std::optional<Verification> verification;
+  std::optional<Error> error;
+};
+
+/// verify_engine of `engine` under `settings` given each of `releases` in turn (its release_at,
+/// settings.release_at not read), bit for bit, the shots read off one trajectory
+/// (simulate_given_shots): a sweep of a release at the cost of one phase II.
+std::vector<VerifiedRelease> verify_releases(const Engine& engine, const ShotSettings& settings, const std::vector<SetRelease>& releases);
+
 /// The pin angles either side of an optimum's whose range loss a shot reports [deg].
 inline constexpr double pin_tolerance_offsets[] = {-2, -1, 1, 2};
 /// The friction of a greased and of a dry release pin the pin report bends for when none is given:

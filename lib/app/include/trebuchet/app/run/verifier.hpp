@@ -78,6 +78,18 @@ struct DesignReport {
 /// writes the series and the pictures it asks for.
 DesignReport check_design(const EngineRecord& record, const DesignCheck& check);
 
+/// One design of check_released_designs: its report, or why it has none.
+struct ReleasedDesign {
+  std::optional<DesignReport> report;
+  std::optional<Error> error;
+};
+
+/// check_design of each of `records`, which give one engine and differ in their release alone
+/// (a sweep of it: run_what_if), each report the same bit for bit, the shots read off one
+/// trajectory (verify_releases). Neither fitted nor drawn: a check with fit, a series or
+/// pictures is refused, as is a record without its release.
+std::vector<ReleasedDesign> check_released_designs(const std::vector<EngineRecord>& records, const DesignCheck& check);
+
 /// The same engine, its parts, masses and lengths, built as each machine (compare, docs/machines.md):
 /// its report, or why it cannot be built or shot so.
 struct MachineComparison {
