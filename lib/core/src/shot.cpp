@@ -768,9 +768,10 @@ void ShotRun::phase_two() {
 // before the release: a given angle is the first one below their value there, whole turns apart
 // (docs/machines.md, "The whipper"). What phases I and II found before it stays.
 void ShotRun::begin_given(const GivenRelease& asked) {
-  const ShotResult before = result_;
+  const double t_liftoff = result_.t_liftoff;
+  const std::optional<double> t_counterweight_free = result_.t_counterweight_free;
   result_ = ShotResult{};
-  result_.t_liftoff = before.t_liftoff, result_.t_counterweight_free = before.t_counterweight_free;
+  result_.t_liftoff = t_liftoff, result_.t_counterweight_free = t_counterweight_free;
   asked_ = asked;
   given_.emplace(asked, phase2_->samples().front().t, snapshots_.front(), throwing_.front(), whips_);
   seen_ = 1, ended_ = false, t_release_ = 0;
@@ -1192,6 +1193,8 @@ std::vector<GivenShot> simulate_given_shots(const Machine& dynamics, const Relea
     for (GivenShot& given : out) given.error = e;
     return out;
   }
+  // Given releases only: the optimum's search (and `unreleased`) reads the samples' objective over
+  // the whole trajectory stepped, which is one release's own only where it is the only one.
   for (std::size_t i = 0; i < releases.size(); ++i) {
     try {
       shot.begin_given(releases[i]);

@@ -297,10 +297,15 @@ std::vector<ReleasedDesign> check_released_designs(const std::vector<EngineRecor
   const std::vector<VerifiedRelease> shots = verify_releases(designs.front().engine, designs.front().settings, releases);
   for (std::size_t k = 0; k < shots.size(); ++k) {
     const EngineRecord& record = records[place[k]];
-    if (shots[k].error)
+    if (shots[k].error) {
       out[place[k]].error = shot_error(*shots[k].error, record, check);
-    else
+      continue;
+    }
+    try {
       out[place[k]].report = design_report(record, check, designs[k], *shots[k].verification, nullptr);
+    } catch (const Error& e) {
+      out[place[k]].error = e;  // a figure its record cannot hold, as check_design throws it
+    }
   }
   return out;
 }

@@ -39,6 +39,13 @@ WhatIf parse_what_if(std::string_view text, int points, std::string_view name) {
   return {field, range->a, range->b, points};
 }
 
+namespace {
+
+// The points of a sweep of a release that share one trajectory (run_what_if).
+constexpr std::size_t released_run = 20;
+
+}  // namespace
+
 std::vector<WhatIfPoint> run_what_if(const DesignValues& values, const std::string& where, const WhatIf& what_if, const DesignCheck& check,
                                      int threads, const Progress& progress) {
   const InputField& field = *what_if.field;
@@ -82,14 +89,15 @@ std::vector<WhatIfPoint> run_what_if(const DesignValues& values, const std::stri
     return points;
   }
   // A release changes nothing before it: the points share one trajectory up to the latest release
-  // (check_released_designs), in as many runs of neighbouring points as there are threads.
-  const auto runs = static_cast<std::size_t>(thread_count(threads, grid.size()));
+  // (check_released_designs), a run of neighbouring points at a time, each run claimed by the next
+  // free thread; what a run saves grows little past a few points, and `progress` hears of each.
+  const std::size_t runs = (grid.size() + released_run - 1) / released_run;
   for_each_index(
       runs, threads,
       [&](std::size_t run) {
         std::vector<EngineRecord> records;
         std::vector<std::size_t> place;
-        for (std::size_t i = run * grid.size() / runs; i < (run + 1) * grid.size() / runs; ++i) try {
+        for (std::size_t i = run * released_run; i < std::min(grid.size(), (run + 1) * released_run); ++i) try {
             records.push_back(record_at(i));
             place.push_back(i);
           } catch (const Error& e) {
@@ -99,7 +107,7 @@ std::vector<WhatIfPoint> run_what_if(const DesignValues& values, const std::stri
         for (std::size_t k = 0; k < checked.size(); ++k)
           points[place[k]].report = std::move(checked[k].report), points[place[k]].error = checked[k].error;
       },
-      progress);
+      progress ? Progress([&](std::size_t done, std::size_t) { progress(std::min(done * released_run, grid.size()), grid.size()); }) : Progress());
   return points;
 }
 

@@ -163,9 +163,10 @@ struct GivenShot {
 };
 
 /// The shots of `machine` given each of `releases` in turn: each what simulate_shot given that
-/// release (criterion.given) with `find_loads` finds, bit for bit, or the Error it throws. Phases I and II are stepped once for all of them, as far as the latest
-/// release needs (a release changes nothing before it: docs/verifier.md, "One trajectory, every
-/// release"); each follows its own phase III. criterion.given is not read.
+/// release (criterion.given) with `find_loads` finds, bit for bit, or the Error it throws. Phases
+/// I and II are stepped once for all of them, as far as the latest release needs (a release
+/// changes nothing before it: docs/verifier.md, "One trajectory, every release"); each follows
+/// its own phase III. criterion.given is not read.
 std::vector<GivenShot> simulate_given_shots(const Machine& machine, const ReleaseCriterion& criterion, const IntegratorSettings& settings,
                                             const std::vector<GivenRelease>& releases, bool find_loads);
 

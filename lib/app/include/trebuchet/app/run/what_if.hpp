@@ -42,8 +42,8 @@ struct WhatIfPoint {
 /// on thread_count(threads, points) threads, checked and reported as `check` says (no series or
 /// pictures). A point that fails keeps its error in its place. The varied value replaces the
 /// values' own; a capacity they carry is not checked (each point is another engine). A release's
-/// points are read off one trajectory a thread (check_released_designs), each the same shot;
-/// `progress` then hears of each thread's run of points.
+/// points are read off one trajectory for each run of twenty (check_released_designs), each the
+/// same shot; `progress` then hears of the points as each run ends.
 std::vector<WhatIfPoint> run_what_if(const DesignValues& values, const std::string& where, const WhatIf& what_if, const DesignCheck& check,
                                      int threads, const Progress& progress = {});
 
