@@ -81,3 +81,47 @@ TEST_CASE("the contest names the fewest limits that cannot be met together", "[c
   r.limits[acceleration_limit].reset();
   CHECK(conflicting_limits(r).empty());
 }
+
+TEST_CASE("the sling's least pull falls through 0 where its slack sets in, and a slack engine misses it", "[contest]") {
+  // tests/test_shot.cpp's hinged engine whose sling goes slack for 12 ms and pulls again before the
+  // range's peak (warned). Its sling length moves the slack: at 1.2627 m it is slack, at 1.5 m it
+  // pulls throughout. The least pull (contest_measures) must fall through 0 continuously between,
+  // where the shot's warning sets in: the search meets that edge as a limit, not as a cliff.
+  Engine e;
+  e.theta_i_deg = 59.0128, e.L1 = 3.2258, e.L2 = 1.3506, e.L4 = 1.2627, e.M = 1000, e.mb = 119.467, e.m = 34.5986;
+  e.L3 = counterweight_arm(e.L1, e.L2, e.theta_i_deg, 0.9301);
+  ShotSettings settings;
+  settings.criterion.release = Release::range;
+  const auto pull_at = [&](double L4, bool& warned) {
+    Engine at = e;
+    at.L4 = L4;
+    Verification v;
+    double pull = 0;
+    contest_measures(at, settings, &v, &pull);
+    warned = v.t_slack_sling.has_value();
+    return pull;
+  };
+  bool warned = false;
+  CHECK(pull_at(1.2627, warned) < 0);
+  CHECK(warned);
+  CHECK(pull_at(1.5, warned) > 0.5);
+  CHECK_FALSE(warned);
+  // The root of the least pull in L4, to 1e-6 m by bisection.
+  double slack = 1.2627, pulling = 1.5;
+  for (int i = 0; i < 20; ++i) {
+    const double mid = (slack + pulling) / 2;
+    (pull_at(mid, warned) < 0 ? slack : pulling) = mid;
+  }
+  // 2 mm either side: the pull changes by about 8 m g per metre of sling here, so by some 0.03 m g
+  // over the 4 mm (a jump, as a refused engine made, would show as more than 0.1); the shot's own
+  // warning, from its step ends, agrees in sign on both sides.
+  bool warned_short = false, warned_long = false;
+  const double shorter = pull_at(slack - 2e-3, warned_short), longer = pull_at(pulling + 2e-3, warned_long);
+  std::printf("least pull through 0 at L4 = %.6f m: %.4g m g 2 mm shorter (warned %d), %.4g m g 2 mm longer (warned %d)\n", slack, shorter,
+              warned_short, longer, warned_long);
+  CHECK(shorter < 0);
+  CHECK(warned_short);
+  CHECK(longer > 0);
+  CHECK_FALSE(warned_long);
+  CHECK(longer - shorter < 0.1);
+}
