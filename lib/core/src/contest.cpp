@@ -80,22 +80,15 @@ class Shots {
     try {
       ContestEngine c;
       c.engine = engine_at(request_, x);
-      c.measured = contest_measures(c.engine, request_.settings, &c.verification, &c.least_pull);
+      c.measured = contest_measures(c.engine, request_.settings, &c.verification);
       c.objective = request_.efficiency ? c.verification.eps : c.verification.capacity.R;
       c.clearance = lowest_clearance(c.verification);
       // The model stops holding before the release: no engine. A counterweight that strikes the
-      // ground (a warning, two where it passes below the base before the release) is an engine
-      // that misses the clearance, and a sling that goes slack and pulls again one that misses its
-      // pull (by its least pull, below 0 by 1e-9 at least): edges the search meets as limits.
-      const Verification& v = c.verification;
-      const bool slack = v.t_slack_sling.has_value();
-      const std::size_t struck = v.clearance.buildable() ? 0 : 1 + v.t_counterweight_below_base.has_value();
-      if (v.warnings.size() > struck + slack) {
+      // ground (one warning more) is an engine that misses the clearance.
+      if (c.verification.warnings.size() > (c.verification.clearance.buildable() ? 0u : 1u))
         out.failure = c.verification.warnings.front();
-      } else {
-        if (slack) c.least_pull = std::min(c.least_pull, -1e-9);
+      else
         out.engine = c;
-      }
     } catch (const Error& e) {
       out.failure = e.named_message();
     }
@@ -112,12 +105,11 @@ std::vector<double> misses(const ContestEngine& c, const ContestRequest& r) {
   for (int k = 0; k < contest_limit_count; ++k)
     if (r.limits[k] && k != mass_limit) out.push_back(c.measured[k] / *r.limits[k] - 1);
   out.push_back((r.min_clearance - c.clearance) / pivot_height(c.engine));
-  out.push_back(-c.least_pull);
   return out;
 }
 
 std::size_t miss_count(const ContestRequest& r) {
-  std::size_t count = 2;
+  std::size_t count = 1;
   for (int k = 0; k < contest_limit_count; ++k) count += r.limits[k] && k != mass_limit;
   return count;
 }

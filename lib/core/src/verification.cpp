@@ -114,8 +114,6 @@ void add_warnings_and_clearance(Verification& out, const Engine& engine, const S
                              format_significant(out.t_release, 4) + " s: the model no longer holds there, and the figures are not physical");
   };
   warn(shot.slack_sling, "the sling goes slack (it would push the projectile)");
-  if (shot.slack_sling) out.t_slack_sling = *shot.slack_sling * time_unit;
-  if (shot.counterweight_below_base) out.t_counterweight_below_base = *shot.counterweight_below_base * time_unit;
   warn(shot.counterweight_below_base, "the counterweight passes below the engine's base");
   warn(shot.counterweight_pulled,
        "the whipper's arm would pull the counterweight it holds (the push between them changes sign before pytrebuchet's rule lets it go)");

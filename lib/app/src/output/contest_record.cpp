@@ -41,10 +41,6 @@ std::string gain_words(const std::optional<double>& gain, bool at_limit, bool bi
       (at_limit ? "" : ", with another engine");
 }
 
-// A sling whose least pull before the release is below a hundredth of the ball's weight stands
-// at the edge where the model stops holding (ContestEngine::least_pull).
-constexpr double sling_edge = 0.01;
-
 }  // namespace
 
 LimitsToMeet contest_record_limits(const nlohmann::json& record) {
@@ -86,7 +82,6 @@ nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequ
       {"measured", best.clearance}, {"least", request.min_clearance}, {"at_limit", best.clearance_at_limit}, {"binds", clearance_binds(best)}};
   if (best.gain_if_clearance_relaxed) clearance["gain_if_relaxed_10_percent"] = *best.gain_if_clearance_relaxed;
   out["min_clearance"] = clearance;
-  out["least_sling_pull"] = best.least_pull;  // in the ball's weights m g (contest_measures), at most 1
   nlohmann::ordered_json reached = nlohmann::ordered_json::array();
   for (const auto& objective : best.start_objectives)
     reached.push_back(objective ? nlohmann::ordered_json(*objective) : nlohmann::ordered_json(nullptr));
@@ -135,13 +130,9 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
       << gain_words(best.gain_if_clearance_relaxed, best.clearance_at_limit, clearance_binds(best), request, units, "10 % less", "keeps more than it")
       << "\n";
   any = any || clearance_binds(best) || best.clearance_at_limit;
-  // The edge of the model the search meets as a limit: the sling going slack before the release.
-  if (best.least_pull < sling_edge)
-    out << "  sling's least pull " << format_significant(best.least_pull, 3) << " m·g before the release: at the model's edge, where larger "
-        << "engines' slings go slack and pull again\n";
   if (!any)
     out << "  no limit binds: the engine stops short of them where the model stops holding (a larger one would put its counterweight or tip below "
-           "the base, or slacken its sling)\n";
+           "the base)\n";
   // The contest's own searches, then those that refined a better engine a gain's search shot.
   const std::size_t own = std::min<std::size_t>(best.start_objectives.size(), contest_local_searches);
   const std::size_t from_gains = best.start_objectives.size() - own;

@@ -73,10 +73,6 @@ struct ContestEngine {
   Verification verification;
   std::array<double, contest_limit_count> measured{};
   double clearance = 0;  ///< the smaller of Verification::Clearance's two [m]
-  /// The sling's least pull before the release (contest_measures), in the ball's weights: below 0
-  /// (a shot warned of its slack sling) the engine is none the contest may choose, and the search
-  /// meets that edge of the model as it meets a limit.
-  double least_pull = 1;
   /// The limits the engine stands at (at_limit_tolerance), and those that bind: relaxing them by
   /// 10 % gains (binding_gain), whether the engine stands at them or not. None for the engines of a
   /// Pareto front.
@@ -99,13 +95,8 @@ struct ContestEngine {
 /// beam, the counterweight (its box, upright, where its sides are given), the sling and the
 /// projectile from rest through the release (the
 /// base at the bottom, sampled every 0.02 (L2/g)^(1/2) and at the release), its counterweight
-/// mass, its peak axle load, and the projectile's peak acceleration up to the release. With
-/// `least_pull`, the sling's least pull before the release: the lowest local minimum of its
-/// tension from rest to the release (sampled as the rest, refined alike), in the ball's weights
-/// m g, at most 1 (1 where none lies lower). Below 0 the sling goes slack before the release and
-/// pulls again, where the model stops holding; it falls through 0 continuously as the slack sets in.
-std::array<double, contest_limit_count> contest_measures(const Engine& engine, const ShotSettings& settings, Verification* verification = nullptr,
-                                                         double* least_pull = nullptr);
+/// mass, its peak axle load, and the projectile's peak acceleration up to the release.
+std::array<double, contest_limit_count> contest_measures(const Engine& engine, const ShotSettings& settings, Verification* verification = nullptr);
 
 /// The best engine (docs/machines.md): coarse local searches by COBYLA (NLopt) in the logs of
 /// L1/L2, L4/L1, m/M, L2 (and L3/L2 for the hinged machine; the others hold their counterweight

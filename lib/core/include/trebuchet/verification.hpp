@@ -124,9 +124,6 @@ struct Verification {
     bool buildable() const;
   };
   Clearance clearance;
-  /// Where the sling goes slack, and where the counterweight passes below the base, before the
-  /// release (each a warning) [s].
-  std::optional<double> t_slack_sling, t_counterweight_below_base;
   /// Where the model stops holding before the release (a slack sling, the counterweight or the
   /// beam's tip below the base), each with its time: the figures are then not physical; and a
   /// counterweight that would strike the ground (clearance): the engine cannot be built as given.
