@@ -157,6 +157,20 @@ TEST_CASE("a release that cannot be made is refused with the values that occur",
   const std::string pin_never = refusal_of_release(laboratory_engine(5), released(plain, ReleaseBy::pin_angle, -20));
   INFO(pin_never);
   CHECK(pin_never.find("never comes: the release window ends, the projectile's velocity turns backward first") != std::string::npos);
+  // A pin with friction 0.2 lets the loop go atan 0.2 = 11.31 deg later (release_pin_angle): the
+  // refusal names the pin as the user bent it, -20 deg, and the pins the swing runs through as
+  // bent too, each 11.31 deg above the frictionless one's (it once named -31.31 deg, not given).
+  Engine greased = laboratory_engine(5);
+  greased.parts.pin_friction = 0.2;
+  const std::string pin_bent = refusal_of_release(greased, released(plain, ReleaseBy::pin_angle, -20));
+  INFO(pin_bent);
+  CHECK(pin_bent.find("pin_angle = -20 deg: the release never comes") != std::string::npos);
+  CHECK(pin_bent.find("(as bent for the pin's friction)") != std::string::npos);
+  const auto lowest_pin = [](const std::string& message) {  // the last value of "runs from A deg to B deg"
+    const std::size_t to = message.find(" deg to ") + 8;
+    return std::stod(message.substr(to));
+  };
+  CHECK(std::abs(lowest_pin(pin_bent) - lowest_pin(pin_never) - degrees(std::atan(0.2))) < 1e-3);  // the values print to 5 digits
   // Falling to -85 deg, the projectile still flies forward (past the arm's line, which an ideal
   // release may pass); at 100 deg it flies backward.
   CHECK(refusal_of_release(lab, released(plain, ReleaseBy::velocity_angle, 100)).find("does not fly forward") != std::string::npos);

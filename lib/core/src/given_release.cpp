@@ -14,9 +14,10 @@ namespace {
 // The angle a moved by whole turns to within half a turn of `near` [rad].
 double unwrapped_near(double a, double near) { return near + std::remainder(a - near, 2 * M_PI); }
 
-// A watched value as the user gives it: seconds or degrees.
+// A watched value as the user gives it: seconds, or degrees (a pin as bent for its friction).
 std::string shown(const GivenRelease& given, double watched) {
-  return given.by == ReleaseBy::time ? format_significant(watched * given.time_unit, 5) + " s" : format_significant(degrees(watched), 5) + " deg";
+  return given.by == ReleaseBy::time ? format_significant(watched * given.time_unit, 5) + " s"
+                                     : format_significant(degrees(watched + given.shown_offset), 5) + " deg";
 }
 
 }  // namespace
@@ -57,12 +58,13 @@ void refuse_given_release(const GivenRelease& given, const ReleaseWatch& watch, 
   static const char* names[] = {"{{release_time}}", "{{release_angle}}", "{{pin_angle}}"};
   static const char* quantities[] = {"the time", "the projectile's velocity angle", "the pin angle"};
   const int k = static_cast<int>(given.by);
+  const std::string as_bent = given.shown_offset != 0 ? " (as bent for the pin's friction)" : "";
   const bool rises = given.by == ReleaseBy::time;
   // The whipper's angles turn on past -180 deg: their sweep, and its values as angles again.
   const bool turning = whole_turns && !rises;
   const auto wrapped = [&](double a) { return turning ? std::remainder(a, 2 * M_PI) : a; };
   std::string message = std::string(names[k]) + " = " + shown(given, given.value) + ": " + what + "; after " +
-      (whole_turns ? "the projectile leaves the arm " : "lift-off ") + quantities[k] + " runs from " + shown(given, watch.at_liftoff) +
+      (whole_turns ? "the projectile leaves the arm " : "lift-off ") + quantities[k] + as_bent + " runs from " + shown(given, watch.at_liftoff) +
       (turning ? " down through a further " + shown(given, watch.at_liftoff - watch.lowest)
                : " to " + shown(given, rises ? watch.highest : std::max(watch.lowest, -M_PI)));
   if (watch.forward_lo <= watch.forward_hi)

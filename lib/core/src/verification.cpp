@@ -225,7 +225,8 @@ ReleaseCriterion release_criterion(const Engine& engine, const ShotSettings& set
     const double value = at->by == ReleaseBy::time ? at->value / time_unit
         : at->by == ReleaseBy::pin_angle           ? release_pin_angle(radians(at->value), engine.parts.pin_friction)
                                                    : radians(at->value);
-    criterion.given = GivenRelease{at->by, value, time_unit};
+    const double friction_delay = at->by == ReleaseBy::pin_angle ? std::atan(engine.parts.pin_friction) : 0;
+    criterion.given = GivenRelease{at->by, value, time_unit, friction_delay};
   }
   return criterion;
 }

@@ -30,6 +30,9 @@ struct GivenRelease {
   ReleaseBy by = ReleaseBy::time;
   double value = 0;  ///< scaled time, or [rad]
   double time_unit = 1;  ///< [s] per scaled time: the messages give seconds
+  /// What the messages add to an angle watched to give it as the user does [rad]: a pin's
+  /// friction's delay (release_pin_angle), so that a pin is named as it is bent.
+  double shown_offset = 0;
 };
 
 struct ReleaseCriterion {
