@@ -68,6 +68,7 @@ class PhaseRecord {
     ForceExtremes extremes;  // over [0, t], refined peaks included
     std::array<double, load_count> loads;
     double counterweight_height;  // of its centre above the base, scaled
+    Conditions conditions;  // where the model holds (conditions_of)
   };
   struct Peak {
     double t;
@@ -82,9 +83,10 @@ class PhaseRecord {
     const ForceValues forces = force_values(snap);
     ForceExtremes extremes = samples_.empty() ? before_ : samples_.back().extremes;
     extremes.add(forces);
-    samples_.push_back({end, forces, extremes, load_values(snap), snap.counterweight_height});
-    if (samples_.size() >= 3) refine_peaks();
-    record_onsets(conditions_of(integrator_.phase(), snap));
+    const Conditions now = conditions_of(integrator_.phase(), snap);
+    samples_.push_back({end, forces, extremes, load_values(snap), snap.counterweight_height, now});
+    if (samples_.size() >= 3) refine_peaks(), record_dips();
+    record_onsets(now);
   }
 
   const std::vector<Sample>& samples() const { return samples_; }
@@ -189,6 +191,23 @@ class PhaseRecord {
       }
     }
     previous_ = now;
+  }
+
+  // A condition that holds at the last three samples, lowest at the middle one, may fail between
+  // them: its minimum there, found on the interpolant as a force's peak is (refine_peaks), below 0
+  // is an onset, at the root before it. Without it a slack that sets in and ends within two steps
+  // would pass unwarned, and the warning would flicker with the step ends around it.
+  void record_dips() {
+    const std::size_t mid = samples_.size() - 2;
+    const Sample &a = samples_[mid - 1], &b = samples_[mid], &c = samples_[mid + 1];
+    for (int k = 0; k < condition_count; ++k) {
+      const double fa = a.conditions[k], fb = b.conditions[k], fc = c.conditions[k];
+      if (onsets_[k] || !(fa >= 0 && fb >= 0 && fc >= 0) || !(fb <= fa && fb < fc)) continue;
+      const auto condition_at = [&](double time) { return conditions_of(integrator_.phase(), snapshot_at(time))[k]; };
+      const Point estimate = parabola_vertex({a.t, -fa}, {b.t, -fb}, {c.t, -fc});
+      const double t_low = peak_between([&](double time) { return -condition_at(time); }, a.t, estimate.x, c.t, 1e-6, 1e-8);
+      if (condition_at(t_low) < 0) onsets_[k] = find_root(condition_at, t_low < b.t ? a.t : b.t, t_low, 1e-12, 0);
+    }
   }
 
   // A force peaking at the middle one of the last three samples peaks between the outer two.
