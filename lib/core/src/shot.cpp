@@ -203,8 +203,12 @@ class PhaseRecord {
     for (int k = 0; k < condition_count; ++k) {
       const double fa = a.conditions[k], fb = b.conditions[k], fc = c.conditions[k];
       if (onsets_[k] || !(fa >= 0 && fb >= 0 && fc >= 0) || !(fb <= fa && fb < fc)) continue;
-      const auto condition_at = [&](double time) { return conditions_of(integrator_.phase(), snapshot_at(time))[k]; };
+      // The parabola through the three estimates the minimum; one above 0 by more than the dip's
+      // whole depth in the samples would need the parabola to err by more than that depth, which
+      // the steps of an integration to its tolerance do not leave room for: not sought.
       const Point estimate = parabola_vertex({a.t, -fa}, {b.t, -fb}, {c.t, -fc});
+      if (-estimate.f > std::max(fa, fc) - fb) continue;
+      const auto condition_at = [&](double time) { return conditions_of(integrator_.phase(), snapshot_at(time))[k]; };
       const double t_low = peak_between([&](double time) { return -condition_at(time); }, a.t, estimate.x, c.t, 1e-6, 1e-8);
       if (condition_at(t_low) < 0) onsets_[k] = find_root(condition_at, t_low < b.t ? a.t : b.t, t_low, 1e-12, 0);
     }
