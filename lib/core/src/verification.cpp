@@ -225,8 +225,8 @@ ReleaseCriterion release_criterion(const Engine& engine, const ShotSettings& set
     const double value = at->by == ReleaseBy::time ? at->value / time_unit
         : at->by == ReleaseBy::pin_angle           ? release_pin_angle(radians(at->value), engine.parts.pin_friction)
                                                    : radians(at->value);
-    const double friction_delay = at->by == ReleaseBy::pin_angle ? std::atan(engine.parts.pin_friction) : 0;
-    criterion.given = GivenRelease{at->by, value, time_unit, friction_delay};
+    // A pin's messages name it as bent: the release's angle moved back by the friction's delay.
+    criterion.given = GivenRelease{at->by, value, time_unit, at->by == ReleaseBy::pin_angle ? radians(at->value) - value : 0};
   }
   return criterion;
 }
@@ -295,26 +295,27 @@ Verification verify_engine(const Engine& engine, const ShotSettings& given, std:
 
 std::vector<VerifiedRelease> verify_releases(const Engine& engine, const ShotSettings& settings, const std::vector<SetRelease>& releases) {
   std::vector<VerifiedRelease> out(releases.size());
-  std::vector<ShotPlan> plans;
+  std::optional<ShotPlan> plan;  // the first release's; the others differ from it in their release alone
   std::vector<GivenRelease> asked;
   std::vector<std::size_t> place;  // each asked release's place in `releases`
   for (std::size_t i = 0; i < releases.size(); ++i) {
     ShotSettings at = settings;
     at.release_at = releases[i];
     try {
-      plans.push_back(plan_shot(engine, at));
-      asked.push_back(*plans.back().criterion.given);
+      const ShotPlan planned = plan_shot(engine, at);
+      asked.push_back(*planned.criterion.given);
       place.push_back(i);
+      if (!plan) plan = planned;
     } catch (const Error& e) {
       out[i].error = e;
     }
   }
-  if (plans.empty()) return out;
-  const ShotPlan& plan = plans.front();  // the others differ from it in their release alone
+  if (!plan) return out;
+  const ShotSettings& settings_at = plan->settings;
   std::vector<GivenShot> shots;
   try {
-    const ScaledDesign design = shot_design(engine, plan.settings);
-    shots = simulate_given_shots(*machine_of(design), plan.criterion, plan.settings.integrator, asked, plan.settings.loads);
+    const ScaledDesign design = shot_design(engine, settings_at);
+    shots = simulate_given_shots(*machine_of(design), plan->criterion, settings_at.integrator, asked, settings_at.loads);
   } catch (const Error& e) {
     for (std::size_t i : place) out[i].error = e;
     return out;
@@ -323,7 +324,7 @@ std::vector<VerifiedRelease> verify_releases(const Engine& engine, const ShotSet
     VerifiedRelease& one = out[place[k]];
     one.error = shots[k].error;
     if (shots[k].shot) try {
-        one.verification = verification_of(engine, *shots[k].shot, plan.settings.target_level, plan.settings.air, plan.settings.range_from_release);
+        one.verification = verification_of(engine, *shots[k].shot, settings_at.target_level, settings_at.air, settings_at.range_from_release);
       } catch (const Error& e) {
         one.error = e;
       }
