@@ -401,6 +401,7 @@ detail::Coefficients Dynamics::coefficients() const {
 bool Dynamics::accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power) const {
   const Coefficients e = coefficients();
   const Trig trig(e, phase, state);
+  if (phase == Phase::trough && !(trig.cf > refuse_trough_cos_phi)) return false;  // near the singularity of eq:EOM_I_1
   if (!dissipates_ && !loss_power) {  // appendix A: one solve
     const Accel a = solve<false>(e, phase, state, trig, Generalized{});
     out = {a.theta, a.psi, a.phi};

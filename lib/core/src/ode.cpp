@@ -34,8 +34,6 @@ State state_of(const Context& c, const double y[]) {
 int equations(double, const double y[], double dydt[], void* params) {
   auto* c = static_cast<Context*>(params);
   State s;
-  // A trial state near the singularity fails, and GSL retries with a shorter step.
-  if (c->phase == Phase::trough && !(c->machine->trough_cos_phi(y[0]) > refuse_trough_cos_phi)) return GSL_FAILURE;
   const std::size_t angles = angles_of(*c);
   if (angles == 2) {  // (th, psi, th', psi'); the accelerations need no phi in the trough
     s.theta = y[0], s.psi = y[1], s.theta_dot = y[2], s.psi_dot = y[3];
@@ -46,7 +44,10 @@ int equations(double, const double y[], double dydt[], void* params) {
   Losses power;
   const bool losses = c->machine->dissipates();
   if (!c->machine->accelerations(c->phase, s, a, losses ? &power : nullptr)) {
-    c->friction_unsettled = true;
+    // A trial state near the trough's singularity fails, and GSL retries with a shorter step;
+    // any other failure is friction that does not settle.
+    const bool near_singularity = c->phase == Phase::trough && !(c->machine->trough_cos_phi(y[0]) > refuse_trough_cos_phi);
+    if (!near_singularity) c->friction_unsettled = true;
     return GSL_FAILURE;
   }
   if (angles == 2) {

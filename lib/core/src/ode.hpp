@@ -33,11 +33,6 @@ struct StepEnd {
 // pictures, and what is reported is integrated anew (PhaseRecord::y_exact_at).
 OdeVector hermite(const StepEnd& a, const StepEnd& b, double time, std::size_t angles, std::size_t dimension);
 
-// Phase I is singular where the sling stands vertical (cos phi = 0 in eq:EOM_I_1). Trial
-// states with cos phi below this are refused, so GSL shortens the step rather than evaluate
-// the equations near the singularity; the shot abandons phase I at twice this.
-inline constexpr double refuse_trough_cos_phi = 0.01;
-
 // One phase of a machine: a driver for stepping and a second one for evaluating the solution between steps.
 class PhaseIntegrator {
  public:

@@ -101,7 +101,8 @@ double RigidBeamMachine::complete_trough_state(State& s) const {
 
 bool RigidBeamMachine::accelerations(Phase phase, const State& given, std::array<double, 3>& out, Losses* loss_power) const {
   State state = given;
-  if (phase == Phase::trough && !(complete_trough_state(state) > 0)) return false;  // the seam's contract: phi follows from theta there
+  if (phase == Phase::trough && !(complete_trough_state(state) > refuse_trough_cos_phi))
+    return false;  // the seam's contract: phi follows from theta there
   if (!dissipates()) {
     out = accelerations_of(phase, state, {});
   } else {

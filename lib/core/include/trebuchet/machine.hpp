@@ -16,6 +16,11 @@
 
 namespace trebuchet {
 
+/// Phase I is singular where the sling stands vertical (cos phi = 0 in eq:EOM_I_1). A machine's
+/// accelerations refuse trial states with cos phi at or below this, so GSL shortens the step
+/// rather than evaluate the equations near the singularity; the shot abandons phase I at twice it.
+inline constexpr double refuse_trough_cos_phi = 0.01;
+
 class Machine {
  public:
   virtual ~Machine() = default;
@@ -29,7 +34,7 @@ class Machine {
   virtual double theta_i() const = 0;
 
   /// cos phi of the sling in the trough at beam angle theta (0 where it would stand vertical or
-  /// beyond): phase I's states are refused as it nears 0 (ode.hpp).
+  /// beyond): phase I's states are refused as it nears 0 (refuse_trough_cos_phi).
   virtual double trough_cos_phi(double theta) const = 0;
 
   /// Fills phi and phi_dot of a phase-I state from the trough's constraint; returns cos phi.
@@ -39,9 +44,11 @@ class Machine {
   virtual Snapshot snapshot(Phase phase, const State& state) const = 0;
 
   /// The accelerations (theta, psi, phi) alone, the right-hand side of the ODE; with losses,
-  /// their powers. False where they cannot be found (then `out` is not set). In the trough,
-  /// phi and phi_dot of `state` are not set (the integrator carries theta and psi): they follow
-  /// from theta by the trough's constraint, as in snapshot.
+  /// their powers. False where they cannot be found (then `out` is not set): friction that does
+  /// not settle, or a trough state whose cos phi is not above refuse_trough_cos_phi (found from
+  /// the equations' own sines and cosines). In the trough, phi and phi_dot of `state` are not set
+  /// (the integrator carries theta and psi): they follow from theta by the trough's constraint,
+  /// as in snapshot.
   virtual bool accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power = nullptr) const = 0;
 
   /// Whether the machine loses energy other than to its bodies: the shot then integrates the
