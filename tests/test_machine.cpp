@@ -85,7 +85,7 @@ double euler_lagrange_residual(const Machine& machine, Lagrangian lagrangian) {
     State s;
     s.theta = angle(random), s.phi = angle(random), s.theta_dot = speed(random), s.phi_dot = speed(random);
     std::array<double, 3> a;
-    REQUIRE(machine.accelerations(Phase::lifted, s, a));
+    REQUIRE(machine.accelerations(Phase::lifted, s, a) == Evaluated::found);
     const double h = 1e-4;
     const double q[4] = {s.theta, s.phi, s.theta_dot, s.phi_dot};
     const auto L = [&](const double* x) { return lagrangian(machine.design(), x[0], x[1], x[2], x[3]); };

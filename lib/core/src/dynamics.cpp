@@ -398,22 +398,22 @@ detail::Coefficients Dynamics::coefficients() const {
           sling.inertia_beyond(design_.l * design_.l4)};
 }
 
-bool Dynamics::accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power) const {
+Evaluated Dynamics::accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power) const {
   const Coefficients e = coefficients();
-  const Trig trig(e, phase, state);
-  if (phase == Phase::trough && !(trig.cf > refuse_trough_cos_phi)) return false;  // near the singularity of eq:EOM_I_1
+  const Trig trig(e, phase, state);  // in the trough, cos phi from theta's own cosine (eq:EOM_I_3)
+  if (phase == Phase::trough && !(trig.cf > refuse_trough_cos_phi)) return Evaluated::near_trough_singularity;
   if (!dissipates_ && !loss_power) {  // appendix A: one solve
     const Accel a = solve<false>(e, phase, state, trig, Generalized{});
     out = {a.theta, a.psi, a.phi};
-    return true;
+    return Evaluated::found;
   }
   // The forces that friction depends on need phi' in the trough (eq:EOM_I_3).
   State full = state;
   if (phase == Phase::trough) complete_trough_state(full);
   Evaluation ev;
-  if (!evaluate(e, phase, full, trig, ev, loss_power)) return false;
+  if (!evaluate(e, phase, full, trig, ev, loss_power)) return Evaluated::failed;
   out = {ev.a.theta, ev.a.psi, ev.a.phi};
-  return true;
+  return Evaluated::found;
 }
 
 Vec2 air_force(const Drag& drag, double mass, Vec2 velocity) {

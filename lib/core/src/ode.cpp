@@ -43,11 +43,11 @@ int equations(double, const double y[], double dydt[], void* params) {
   std::array<double, 3> a;
   Losses power;
   const bool losses = c->machine->dissipates();
-  if (!c->machine->accelerations(c->phase, s, a, losses ? &power : nullptr)) {
+  const Evaluated found = c->machine->accelerations(c->phase, s, a, losses ? &power : nullptr);
+  if (found != Evaluated::found) {
     // A trial state near the trough's singularity fails, and GSL retries with a shorter step;
-    // any other failure is friction that does not settle.
-    const bool near_singularity = c->phase == Phase::trough && !(c->machine->trough_cos_phi(y[0]) > refuse_trough_cos_phi);
-    if (!near_singularity) c->friction_unsettled = true;
+    // any other failure is taken for friction that does not settle.
+    if (found == Evaluated::failed) c->friction_unsettled = true;
     return GSL_FAILURE;
   }
   if (angles == 2) {

@@ -99,19 +99,18 @@ double RigidBeamMachine::complete_trough_state(State& s) const {
   return cos_phi;
 }
 
-bool RigidBeamMachine::accelerations(Phase phase, const State& given, std::array<double, 3>& out, Losses* loss_power) const {
-  State state = given;
-  if (phase == Phase::trough && !(complete_trough_state(state) > refuse_trough_cos_phi))
-    return false;  // the seam's contract: phi follows from theta there
+Evaluated RigidBeamMachine::accelerations(Phase phase, const State& given, std::array<double, 3>& out, Losses* loss_power) const {
+  State state = given;  // in the trough phi follows from theta (the seam's contract)
+  if (phase == Phase::trough && !(complete_trough_state(state) > refuse_trough_cos_phi)) return Evaluated::near_trough_singularity;
   if (!dissipates()) {
     out = accelerations_of(phase, state, {});
   } else {
     const std::optional<Snapshot> snapshot = resisted(phase, state);
-    if (!snapshot) return false;
+    if (!snapshot) return Evaluated::failed;
     out = {snapshot->theta_ddot, snapshot->psi_ddot, snapshot->phi_ddot};
     if (loss_power) *loss_power = snapshot->loss_power;
   }
-  return std::isfinite(out[0]) && std::isfinite(out[2]);
+  return std::isfinite(out[0]) && std::isfinite(out[2]) ? Evaluated::found : Evaluated::failed;
 }
 
 Snapshot RigidBeamMachine::snapshot(Phase phase, const State& given) const {

@@ -143,18 +143,18 @@ Snapshot Whipper::snapshot_with(Phase phase, const State& s, const Motion& m, Ve
   return out;
 }
 
-bool Whipper::accelerations(Phase phase, const State& given, std::array<double, 3>& out, Losses* loss_power) const {
+Evaluated Whipper::accelerations(Phase phase, const State& given, std::array<double, 3>& out, Losses* loss_power) const {
   State s = given;
   if (phase == Phase::held || phase == Phase::trough) complete_trough_state(s);
   if (!dissipates()) {
     out = motion(phase, s, {}).a;
   } else {
     const std::optional<Snapshot> snap = resisted(phase, s);
-    if (!snap) return false;
+    if (!snap) return Evaluated::failed;
     out = {snap->theta_ddot, snap->psi_ddot, snap->phi_ddot};
     if (loss_power) *loss_power = snap->loss_power;
   }
-  return std::isfinite(out[0]) && std::isfinite(out[1]) && std::isfinite(out[2]);
+  return std::isfinite(out[0]) && std::isfinite(out[1]) && std::isfinite(out[2]) ? Evaluated::found : Evaluated::failed;
 }
 
 Snapshot Whipper::snapshot(Phase phase, const State& given) const {

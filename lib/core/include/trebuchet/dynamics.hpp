@@ -64,7 +64,7 @@ class Dynamics final : public Machine {
   /// phi and phi_dot of `state` are not read: they follow from theta. With friction, the
   /// accelerations are found by Newton's method on the forces' affine model (dynamics.cpp); false where they do not
   /// settle (a friction too strong for the model), and then `out` is not set.
-  bool accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power = nullptr) const override;
+  Evaluated accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power = nullptr) const override;
 
   /// Whether the shot loses energy other than to the bodies (BuiltParts::dissipates).
   bool dissipates() const override { return dissipates_; }

@@ -18,8 +18,14 @@ namespace trebuchet {
 
 /// Phase I is singular where the sling stands vertical (cos phi = 0 in eq:EOM_I_1). A machine's
 /// accelerations refuse trial states with cos phi at or below this, so GSL shortens the step
-/// rather than evaluate the equations near the singularity; the shot abandons phase I at twice it.
+/// rather than evaluate the equations near the singularity; the shot abandons phase I at twice
+/// this value.
 inline constexpr double refuse_trough_cos_phi = 0.01;
+
+/// What Machine::accelerations found: the accelerations; a trial state of the trough too near its
+/// singularity (refuse_trough_cos_phi), which a shorter step avoids; or none (friction that does
+/// not settle, or accelerations that are not finite).
+enum class Evaluated { found, near_trough_singularity, failed };
 
 class Machine {
  public:
@@ -34,7 +40,7 @@ class Machine {
   virtual double theta_i() const = 0;
 
   /// cos phi of the sling in the trough at beam angle theta (0 where it would stand vertical or
-  /// beyond): phase I's states are refused as it nears 0 (refuse_trough_cos_phi).
+  /// beyond): the shot abandons phase I as it nears 0.
   virtual double trough_cos_phi(double theta) const = 0;
 
   /// Fills phi and phi_dot of a phase-I state from the trough's constraint; returns cos phi.
@@ -44,12 +50,11 @@ class Machine {
   virtual Snapshot snapshot(Phase phase, const State& state) const = 0;
 
   /// The accelerations (theta, psi, phi) alone, the right-hand side of the ODE; with losses,
-  /// their powers. False where they cannot be found (then `out` is not set): friction that does
-  /// not settle, or a trough state whose cos phi is not above refuse_trough_cos_phi (found from
-  /// the equations' own sines and cosines). In the trough, phi and phi_dot of `state` are not set
-  /// (the integrator carries theta and psi): they follow from theta by the trough's constraint,
-  /// as in snapshot.
-  virtual bool accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power = nullptr) const = 0;
+  /// their powers. Where they are not found, `out` is not set: a trough state whose cos phi is
+  /// not above refuse_trough_cos_phi is refused as such, whatever fails else is `failed`. In the
+  /// trough, phi and phi_dot of `state` are not set (the integrator carries theta and psi): they
+  /// follow from theta by the trough's constraint, as in snapshot.
+  virtual Evaluated accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power = nullptr) const = 0;
 
   /// Whether the machine loses energy other than to its bodies: the shot then integrates the
   /// work of each loss (Losses).

@@ -26,7 +26,7 @@ class RigidBeamMachine : public Machine {
   double trough_cos_phi(double theta) const override;
   double complete_trough_state(State& state) const override;
   Snapshot snapshot(Phase phase, const State& state) const override;
-  bool accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power = nullptr) const override;
+  Evaluated accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power = nullptr) const override;
   bool dissipates() const override { return design_.parts.dissipates(); }
 
  protected:

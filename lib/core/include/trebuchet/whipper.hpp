@@ -51,7 +51,7 @@ class Whipper final : public Machine {
   /// phi = theta + (phi_i - theta_i), phi_dot = theta_dot: the projectile moves with the arm.
   double complete_trough_state(State& state) const override;
   Snapshot snapshot(Phase phase, const State& state) const override;
-  bool accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power = nullptr) const override;
+  Evaluated accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power = nullptr) const override;
   bool dissipates() const override { return design_.parts.dissipates(); }
   Phase first_phase() const override { return Phase::held; }
   /// Two whole turns from the start in every phase: the whip takes about one.
