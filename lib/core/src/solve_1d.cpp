@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <tuple>
 
 #include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
@@ -44,6 +45,27 @@ std::optional<double> root_between(const std::function<double(double)>& f, doubl
     if (gsl_root_test_interval(gsl_root_fsolver_x_lower(solver.get()), gsl_root_fsolver_x_upper(solver.get()), epsabs, epsrel) != GSL_CONTINUE) break;
   }
   return root;
+}
+
+double newton_root(const std::function<std::pair<double, double>(double)>& fdf, double lo, double guess, double hi, double epsrel) {
+  using Fdf = std::function<std::pair<double, double>(double)>;
+  gsl_function_fdf g;
+  g.f = [](double x, void* p) { return (*static_cast<const Fdf*>(p))(x).first; };
+  g.df = [](double x, void* p) { return (*static_cast<const Fdf*>(p))(x).second; };
+  g.fdf = [](double x, void* p, double* f, double* df) { std::tie(*f, *df) = (*static_cast<const Fdf*>(p))(x); };
+  g.params = const_cast<Fdf*>(&fdf);
+  const std::unique_ptr<gsl_root_fdfsolver, decltype(&gsl_root_fdfsolver_free)> solver(gsl_root_fdfsolver_alloc(gsl_root_fdfsolver_newton),
+                                                                                       gsl_root_fdfsolver_free);
+  double x = std::clamp(guess, lo, hi);
+  if (gsl_root_fdfsolver_set(solver.get(), &g, x) == GSL_SUCCESS)
+    for (int k = 0; k < 20; ++k) {
+      const double before = x;
+      if (gsl_root_fdfsolver_iterate(solver.get()) != GSL_SUCCESS) break;
+      x = gsl_root_fdfsolver_root(solver.get());
+      if (!(x >= lo && x <= hi)) break;
+      if (gsl_root_test_delta(x, before, 0, epsrel) == GSL_SUCCESS) return x;
+    }
+  return find_root([&](double t) { return fdf(t).first; }, lo, hi, 0, epsrel);
 }
 
 double find_root(const std::function<double(double)>& f, double lo, double hi, double epsabs, double epsrel) {

@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <optional>
+#include <utility>
 
 namespace trebuchet {
 
@@ -18,6 +19,12 @@ Point parabola_vertex(Point a, Point b, Point c);
 /// A root of f in [lo, hi], by Brent's method, when f(lo) and f(hi) differ in sign; stops when
 /// the bracket is narrower than epsabs + epsrel |x| (gsl_root_test_interval).
 std::optional<double> root_between(const std::function<double(double)>& f, double lo, double hi, double epsabs, double epsrel);
+
+/// A root of f in [lo, hi] by Newton's method (GSL's fdfsolver) from `guess`, where `fdf` gives f
+/// and its derivative at once and f changes sign over the bracket: stops when a step is below
+/// epsrel |x|. Where a step leaves the bracket, or the iteration does not settle, Brent's method
+/// on f over the bracket (root_between) finds it instead.
+double newton_root(const std::function<std::pair<double, double>(double)>& fdf, double lo, double guess, double hi, double epsrel);
 
 /// As root_between, where a change of sign is certain: Error(numerical) if there is none.
 double find_root(const std::function<double(double)>& f, double lo, double hi, double epsabs, double epsrel);
