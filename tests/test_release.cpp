@@ -14,8 +14,11 @@
 #include "engines.hpp"
 #include "reference/reference_shot.hpp"
 #include "trebuchet/angles.hpp"
+#include "trebuchet/contest.hpp"
+#include "trebuchet/app/output/contest_record.hpp"
 #include "trebuchet/app/output/shot_series.hpp"
 #include "trebuchet/error.hpp"
+#include "trebuchet/format.hpp"
 #include "trebuchet/verification.hpp"
 
 using namespace trebuchet;
@@ -385,6 +388,39 @@ TEST_CASE("a release pin's friction delays the loop by atan(mu), and the pin to 
   CHECK_THROWS_AS(check_engine(wrong), Error);
   wrong.parts.pin_friction = 3;
   CHECK_THROWS_AS(check_engine(wrong), Error);
+}
+
+// A contest's record and table give the pin to bend with the pin's friction, as a shot's do: it
+// is the pin a builder bends. They gave the frictionless pin angle, and a pin bent so threw a
+// contest's hinged engine 80 m instead of 100 m (a fresh user's test, 2026-11-30).
+TEST_CASE("a contest's engine comes with the pin to bend for its pin's friction", "[release][pin][contest]") {
+  Engine greased = laboratory_engine();
+  greased.parts.pin_friction = 0.3;
+  ContestRequest request;
+  request.machine = greased.machine;
+  request.projectile_mass = greased.m;
+  request.pin_friction = 0.3;
+  request.settings = range_optimum();
+  ContestEngine best;
+  best.engine = greased;
+  best.measured = contest_measures(greased, request.settings, &best.verification);
+  best.clearance = best.verification.clearance.in_shot.value_or(best.verification.clearance.geometric);
+  best.objective = best.verification.capacity.R;
+  const nlohmann::ordered_json record = contest_json(best, request, {best});
+  const double bend = record["pin_to_bend_deg"].get<double>();
+  CHECK(bend == best.verification.pin_to_bend_deg);
+  CHECK(std::abs(bend - (best.verification.pin_angle_deg + degrees(std::atan(0.3)))) < 1e-12);
+  CHECK(record["pareto"][0]["pin_to_bend_deg"].get<double>() == bend);
+  const std::string table = contest_table(best, request, {best}, UnitSystem::si);
+  CHECK_THAT(table, Catch::Contains("pin to bend for this release: " + format_significant(bend, 4) + " deg for its friction 0.3"));
+  // The pin bent so releases the engine where the contest shot it (to the roots' 1e-9, above).
+  const Verification back = verify_engine(greased, released(request.settings, ReleaseBy::pin_angle, bend));
+  std::printf("contest's pin to bend %.10g deg (released at %.10g deg): R %.10g m, its shot %.10g m\n", bend, best.verification.pin_angle_deg,
+              back.capacity.R, best.verification.capacity.R);
+  CHECK(relative(back.capacity.R, best.verification.capacity.R) < 1e-9);
+  // In imperial units each figure has SI beside it, wider than the SI columns: the table still
+  // lays out (a column's padding wrapped below zero and aborted the program).
+  CHECK_THAT(contest_table(best, request, {best}, UnitSystem::imperial), Catch::Contains("counterweight clear"));
 }
 
 TEST_CASE("Siano's range efficiency is the range over the black box's, by eps and by the counterweight's fall", "[release][efficiency]") {

@@ -24,6 +24,9 @@ int starts_at_best(const ContestEngine& best, std::size_t count) {
   return at_best;
 }
 
+// `text` and the spaces that take it to `width` columns: at least one, where it is as wide or wider.
+std::string padded(const std::string& text, std::size_t width) { return text + std::string(text.size() < width ? width - text.size() : 1, ' '); }
+
 // The clearance binds where asking for 10 % less gains; at the ground (none asked for) it only touches.
 bool clearance_binds(const ContestEngine& best) {
   return best.gain_if_clearance_relaxed && *best.gain_if_clearance_relaxed > binding_gain * best.objective;
@@ -60,7 +63,7 @@ LimitsToMeet contest_record_limits(const nlohmann::json& record) {
 
 nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequest& request, const std::vector<ContestEngine>& front) {
   nlohmann::ordered_json out = verification_json(best.verification);
-  out["pin_to_bend_deg"] = best.verification.pin_angle_deg;
+  out["pin_to_bend_deg"] = best.verification.pin_to_bend_deg;  // with the pin's friction
   nlohmann::ordered_json engine;
   write_engine(engine, best.engine);
   out["engine"] = engine;
@@ -99,7 +102,8 @@ nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequ
                         {"L2", p.engine.L2},
                         {"L3", p.engine.L3},
                         {"L4", p.engine.L4},
-                        {"pin_angle_deg", p.verification.pin_angle_deg}});
+                        {"pin_angle_deg", p.verification.pin_angle_deg},
+                        {"pin_to_bend_deg", p.verification.pin_to_bend_deg}});
     out["pareto"] = points;
   }
   out[version_key] = project_version();
@@ -111,22 +115,23 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
   out << "the best " << machine_words(request.machine) << " for " << (request.efficiency ? "eps" : "the range") << " within the limits ("
       << best.shots << " shots; docs/machines.md):\n"
       << verification_table(best.engine, request.settings, best.verification, std::nullopt, units)
-      << "pin to bend for this release: " << format_significant(best.verification.pin_angle_deg, 4) << " deg\nlimits:\n";
+      << "pin to bend for this release: " << pin_to_bend_text(best.verification, best.engine.parts.pin_friction) << "\nlimits:\n";
+  const std::size_t width = units == UnitSystem::si ? 16 : 26;  // imperial gives SI beside
   bool any = false;
   for (int k = 0; k < contest_limit_count; ++k) {
     const std::string measured = quantity_text(best.measured[k], limit_dimensions[k], units, 5);
-    out << "  " << limit_words[k] << std::string(20 - std::string(limit_words[k]).size(), ' ') << measured;
+    out << "  " << padded(limit_words[k], 20);
     if (request.limits[k])
-      out << std::string(std::max<std::size_t>(1, 16 - measured.size()), ' ') << "limit "
-          << quantity_text(*request.limits[k], limit_dimensions[k], units, 5)
+      out << padded(measured, width) << "limit " << quantity_text(*request.limits[k], limit_dimensions[k], units, 5)
           << gain_words(best.gain_if_relaxed[k], best.at_limit[k], best.binds[k], request, units, "10 % more", "stands short of it");
+    else
+      out << measured;
     out << "\n";
     any = any || best.binds[k];
   }
   const std::string clearance = quantity_text(best.clearance, UnitDimension::length, units, 5);
-  out << "  counterweight clear " << clearance << std::string(std::max<std::size_t>(1, 16 - clearance.size()), ' ') << "least "
-      << quantity_text(request.min_clearance, UnitDimension::length, units, 5) << " above the ground"
-      << (best.clearance_at_limit && !best.gain_if_clearance_relaxed ? ": touches the ground" : "")
+  out << "  counterweight clear " << padded(clearance, width) << "least " << quantity_text(request.min_clearance, UnitDimension::length, units, 5)
+      << " above the ground" << (best.clearance_at_limit && !best.gain_if_clearance_relaxed ? ": touches the ground" : "")
       << gain_words(best.gain_if_clearance_relaxed, best.clearance_at_limit, clearance_binds(best), request, units, "10 % less", "keeps more than it")
       << "\n";
   any = any || clearance_binds(best) || best.clearance_at_limit;
@@ -142,15 +147,14 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
       << "\n";
   if (!front.empty()) {
     out << "Pareto front of " << (request.efficiency ? "eps" : "the range") << " against the peak axle load (" << front.size() << " optima):\n"
-        << "  axle load       R               eps       M               pin to bend\n";
+        << "  " << padded("axle load", width) << padded("R", width) << padded("eps", 10) << padded("M", width) << "pin to bend\n";
     for (const ContestEngine& p : front) {
       const std::string load = quantity_text(p.measured[axle_limit], UnitDimension::force, units, 4);
       const std::string range = quantity_text(p.verification.capacity.R, UnitDimension::length, units, 5);
       const std::string eps = format_significant(100 * p.verification.eps, 4) + " %";
       const std::string mass = quantity_text(p.engine.M, UnitDimension::mass, units, 4);
-      out << "  " << load << std::string(std::max<std::size_t>(1, 16 - load.size()), ' ') << range
-          << std::string(std::max<std::size_t>(1, 16 - range.size()), ' ') << eps << std::string(std::max<std::size_t>(1, 10 - eps.size()), ' ')
-          << mass << std::string(std::max<std::size_t>(1, 16 - mass.size()), ' ') << format_significant(p.verification.pin_angle_deg, 4) << " deg\n";
+      out << "  " << padded(load, width) << padded(range, width) << padded(eps, 10) << padded(mass, width)
+          << format_significant(p.verification.pin_to_bend_deg, 4) << " deg\n";
     }
   }
   return out.str();

@@ -29,6 +29,12 @@ std::string cell(const std::string& label, const std::string& value) {
 
 }  // namespace
 
+std::string pin_to_bend_text(const Verification& v, double pin_friction) {
+  const std::string bend = format_significant(v.pin_to_bend_deg, 4) + " deg";
+  if (!(pin_friction > 0)) return bend;
+  return bend + " for its friction " + format_significant(pin_friction, 3) + " (" + format_significant(v.pin_angle_deg, 4) + " deg frictionless)";
+}
+
 std::string describe_given_release(const SetRelease& release) {
   switch (release.by) {
     case ReleaseBy::time: return "the time " + format_significant(release.value, 6) + " s";

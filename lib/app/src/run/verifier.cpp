@@ -155,10 +155,8 @@ void add_pin_tolerance(DesignReport& out, const PinScan& tolerance_scan, const V
   out.json["pin_tolerance"] = tolerance;
   // The loop leaves a pin of friction mu atan(mu) later (release_pin_angle): bend it that much more.
   const double mu = engine.parts.pin_friction;
-  std::string pin = format_significant(v.pin_to_bend_deg, 4) + " deg";
-  if (mu > 0) {
-    pin += " for its friction " + format_significant(mu, 3) + " (" + format_significant(v.pin_angle_deg, 4) + " deg frictionless)";
-  } else {
+  std::string pin = pin_to_bend_text(v, mu);
+  if (!(mu > 0)) {
     nlohmann::ordered_json by_friction = nlohmann::ordered_json::array();
     for (const auto& [coefficient, what] : {std::pair{greased_pin_friction, "greased"}, {dry_pin_friction, "dry"}}) {
       const double bend = pin_to_bend_deg(v.pin_angle_deg, coefficient);
@@ -388,7 +386,7 @@ std::string comparison_table(const std::vector<MachineComparison>& comparison, U
       {"quality Q", [&](const DesignReport& r) { return sig(100 * r.verification.Q) + " %"; }},
       {"release time", [&](const DesignReport& r) { return sig(r.verification.t_release) + " s"; }},
       {"release angle A", [&](const DesignReport& r) { return sig(r.verification.A_deg) + " deg"; }},
-      {"pin angle to bend", [&](const DesignReport& r) { return sig(r.verification.pin_angle_deg) + " deg"; }},
+      {"pin angle to bend", [&](const DesignReport& r) { return sig(r.verification.pin_to_bend_deg) + " deg"; }},
       {"peak axle load", [&](const DesignReport& r) { return q(r.verification.loads[pivot_load].value, UnitDimension::force); }},
       {"peak sling tension", [&](const DesignReport& r) { return q(r.verification.loads[sling_tension_load].value, UnitDimension::force); }},
       {"peak counterweight pin", [&](const DesignReport& r) { return q(r.verification.loads[hinge_load].value, UnitDimension::force); }},
