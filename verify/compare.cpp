@@ -8,20 +8,29 @@
 #include "trebuchet/app/input/names.hpp"
 #include "trebuchet/app/input/text_input.hpp"
 #include "trebuchet/app/run/verifier.hpp"
+#include "trebuchet/format.hpp"
 
 namespace trebuchet::verify {
 
 namespace {
 
-// The contest's limits compare measures each column against: the flags', or else those of the
-// contest's record it reads (`design`: its "limits" and "min_clearance"), with a note.
+// The contest's limits compare measures each column against: those of the contest's record it
+// reads (`design`: its "limits" and "min_clearance"), each flag given laid over them as a flag
+// beside a file replaces its value, and said in a note; or the flags' alone.
 LimitsToMeet comparison_limits(const Options& flags, const nlohmann::json& design, const std::string& where) {
-  const LimitsToMeet given{flags.limits, flags.min_clearance};
-  if (given.any()) return given;
-  const LimitsToMeet recorded = contest_record_limits(design);
-  if (recorded.any())
-    print_notes({"measured against the limits of the contest " + where + " records; give --max-width ... to measure against others"});
-  return recorded;
+  LimitsToMeet out = contest_record_limits(design);
+  const bool recorded = out.any();
+  std::vector<std::string> given;
+  for (int k = 0; k < contest_limit_count; ++k)
+    if (flags.limits[k]) {
+      out.limits[k] = flags.limits[k];
+      given.push_back(std::string("{{") + contest_limit_key(static_cast<ContestLimit>(k)) + "}}");
+    }
+  if (flags.min_clearance > 0) out.min_clearance = flags.min_clearance, given.push_back("{{min_clearance}}");
+  if (recorded)
+    print_notes({"measured against the limits of the contest " + where + " records" +
+                 (given.empty() ? std::string("; a flag such as {{max_width}} gives one anew") : ", with " + join(given, ", ") + " as given")});
+  return out;
 }
 
 }  // namespace

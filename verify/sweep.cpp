@@ -18,6 +18,10 @@ int run_sweep(const Options& flags) {
   DesignCheck check = design_check(o);
   WhatIf what_if = *o.what_if;
   what_if.points = o.what_if_points;
+  // A value the design gives and the sweep varies is the sweep's at every point: said, not dropped.
+  if (const std::optional<double> given = values.*what_if.field->member)
+    print_notes({engine_key_name(where, what_if.field->key) + " = " + quantity_text(*given, what_if.field->dimension, o.units) +
+                 " gives way to the sweep's values at every point"});
   // The release is set per point where the sweep varies it (--vary pin_angle=30..40), else once.
   if (what_if.field->group != FieldGroup::release) check.settings.release_at = release_of(values, where);
   const std::vector<WhatIfPoint> points = run_what_if(values, where, what_if, check, o.threads, progress_bar("shots"));
