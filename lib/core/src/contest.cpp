@@ -450,6 +450,24 @@ std::optional<ContestEngine> best_shot(const Shots& shots, const ContestRequest&
   return best;
 }
 
+// A pin bent to the best engine's pin to bend lets go where the pin angle first reaches it, a shot
+// given that pin: where that is not the engine's release, a note says no pin makes it.
+void note_pin(ContestEngine& best, const ContestRequest& request) {
+  ShotSettings at = request.settings;
+  at.loads = false;
+  at.release_at = SetRelease{ReleaseBy::pin_angle, best.verification.pin_to_bend_deg};
+  PinShot pin{best.verification.pin_to_bend_deg, std::nullopt, std::nullopt, ""};
+  try {
+    pin.R = verify_engine(best.engine, at).capacity.R;
+  } catch (const Error& e) {
+    pin.refused = e.what();
+  }
+  if (const std::optional<std::string> note = pin_release_note(best.verification, pin)) {
+    best.verification.notes.push_back(*note);
+    best.pin_releases = false;
+  }
+}
+
 }  // namespace
 
 ContestEngine contest_optimum(const ContestRequest& request) {
@@ -457,7 +475,10 @@ ContestEngine contest_optimum(const ContestRequest& request) {
   Shots shots(request);
   std::vector<SearchPoint> ends;
   ContestEngine best = best_engine(request, shots, &ends);
-  if (!request.gains) return best;
+  if (!request.gains) {
+    note_pin(best, request);
+    return best;
+  }
   // A gain's search may shoot an engine that meets every limit as given and throws farther than
   // the best (the contest's own searches missed it; its limit then only seemed to bind): that
   // engine, refined under the limits as given, is the best, a local search of its own, and the
@@ -477,6 +498,7 @@ ContestEngine contest_optimum(const ContestRequest& request) {
     ends.insert(ends.begin(), point_of(best.engine));
   }
   best.shots = shots.count();
+  note_pin(best, request);
   return best;
 }
 

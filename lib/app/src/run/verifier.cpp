@@ -140,7 +140,9 @@ FittedEngine fit_for_check(const Engine& engine, const EngineRecord& record, con
 void add_pin_tolerance(DesignReport& out, const PinScan& tolerance_scan, const Verification& v, const Engine& engine, const DesignCheck& check) {
   nlohmann::ordered_json tolerance = nlohmann::ordered_json::array();
   std::vector<std::string> lost;
-  for (const PinShot& shot : tolerance_scan.shots()) {
+  const std::vector<PinShot>& shots = tolerance_scan.shots();
+  for (std::size_t k = 1; k < shots.size(); ++k) {  // the first is the own pin (check_design)
+    const PinShot& shot = shots[k];
     const double offset = shot.pin_angle_deg - v.pin_to_bend_deg;
     const std::string signed_offset = (offset > 0 ? "+" : "") + format_significant(offset, 2) + " deg: ";
     if (shot.R) {
@@ -166,7 +168,10 @@ void add_pin_tolerance(DesignReport& out, const PinScan& tolerance_scan, const V
     }
     out.json["pin_to_bend_by_friction"] = by_friction;
   }
-  if (check.table) out.table += "pin to bend for this release: " + pin + "; R changes with the pin off by " + join(lost, ", ") + "\n";
+  if (check.table && shots.size() > 0 && pin_release_note(v, shots.front()))  // its note says why
+    out.table += "pin to bend for this release: none makes it (a pin bent to " + format_significant(v.pin_to_bend_deg, 4) + " deg lets go earlier)\n";
+  else if (check.table)
+    out.table += "pin to bend for this release: " + pin + "; R changes with the pin off by " + join(lost, ", ") + "\n";
 }
 
 }  // namespace
@@ -252,20 +257,23 @@ DesignReport design_report(const EngineRecord& record, const DesignCheck& check,
 DesignReport check_design(const EngineRecord& record, const DesignCheck& check) {
   const CheckedDesign d = design_to_check(record, check);
   std::vector<TracePoint> trace;
-  // The pin to bend for an optimum, and what a degree or two of error costs: read off the same shot.
+  // The pin to bend for an optimum, whether a pin bent so makes its release, and what a degree or
+  // two of error costs: read off the same shot, the own pin first.
   PinScan tolerance_scan(d.engine, d.settings, [](double own_deg) {
-    std::vector<double> pins;
+    std::vector<double> pins{own_deg};
     for (double offset : pin_tolerance_offsets) pins.push_back(own_deg + offset);
     return pins;
   });
   PinScan* pins = d.settings.release_at ? nullptr : &tolerance_scan;
-  const Verification v = [&] {
+  Verification v = [&] {
     try {
       return verify_engine(d.engine, d.settings, check.series_path.empty() ? nullptr : &trace, check.series_dt_s, pins);
     } catch (const Error& e) {
       throw shot_error(e, record, check);
     }
   }();
+  if (pins && !pins->shots().empty())
+    if (const std::optional<std::string> note = pin_release_note(v, pins->shots().front())) v.notes.push_back(*note);
   DesignReport out = design_report(record, check, d, v, pins);
   if (!check.plot_dir.empty())
     write_picture_folder(check.plot_dir, shot_pictures(d.engine, d.settings, v, out.json, check.units), picture_scripts(), check.inputs);

@@ -89,6 +89,9 @@ struct ContestEngine {
   /// the limits): how sure the search is of its best.
   std::vector<std::optional<double>> start_objectives;
   int shots = 0;  ///< of the search that found it
+  /// Whether a pin bent to the verification's pin_to_bend_deg makes its release (where not, a note
+  /// says why: pin_release_note); the Pareto front's engines are not asked.
+  bool pin_releases = true;
 };
 
 /// The measures of the limits on `engine` under `settings`: the bounding box of the pivot, the
