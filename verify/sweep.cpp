@@ -39,7 +39,7 @@ int run_sweep(const Options& flags) {
   if (failed != static_cast<int>(points.size())) return exit_success;
   for (const WhatIfPoint& p : points)
     if (exit_code(Program::verify, p.error->kind()) == code) {
-      std::cerr << "trebuchet-verify: every point of the sweep failed; the first: " << p.error->message(option_word) << "\n";
+      std::cerr << "trebuchet-verify: every point of the sweep failed; the first that failed worst: " << p.error->message(option_word) << "\n";
       break;
     }
   return code;

@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "trebuchet/error.hpp"
 #include "trebuchet/format.hpp"
 #include "trebuchet/sweep.hpp"
 #include "trebuchet/app/records/design_input.hpp"
@@ -131,7 +132,8 @@ std::string what_if_table(const WhatIf& what_if, const std::vector<WhatIfPoint>&
   const auto sig = [](double x) { return format_significant(x, 4); };
   using Column = std::pair<const char*, std::function<std::string(const Verification&)>>;
   const std::vector<Column> columns = {
-      {"R", [&](const Verification& v) { return q(v.capacity.R, UnitDimension::length); }},
+      // A shot that warns (the model stops holding) is marked where its range is read, its warnings below.
+      {"R", [&](const Verification& v) { return q(v.capacity.R, UnitDimension::length) + (v.warnings.empty() ? "" : " !"); }},
       {"eps", [&](const Verification& v) { return sig(100 * v.eps) + " %"; }},
       {"Q", [&](const Verification& v) { return sig(100 * v.Q) + " %"; }},
       {"A", [&](const Verification& v) { return sig(v.A_deg) + " deg"; }},
@@ -148,14 +150,14 @@ std::string what_if_table(const WhatIf& what_if, const std::vector<WhatIfPoint>&
   std::ostringstream out;
   const auto cell = [&](const std::string& text) { out << text << std::string(text.size() < width ? width - text.size() : 1, ' '); };
   out << "what if " << field.key << " (" << field.label << ") runs from " << q(what_if.from, field.dimension) << " to "
-      << q(what_if.to, field.dimension) << ", the rest held: " << points.size() << " shots, each ";
+      << q(what_if.to, field.dimension) << ", the rest held: " << points.size() << " shots";
   const WhatIfPoint* shot = nullptr;
   for (const WhatIfPoint& p : points)
     if (p.report && !shot) shot = &p;
   if (field.group == FieldGroup::release)
-    out << "released at that " << std::string(field.label).substr(0, std::string(field.label).find(" ["));  // "pin angle [deg]": its words
+    out << ", each released at that " << std::string(field.label).substr(0, std::string(field.label).find(" ["));  // "pin angle [deg]": its words
   else if (shot)
-    out << describe_release(shot->report->settings);
+    out << ", each " << describe_release(shot->report->settings);
   out << "\n";
   cell(field.key);
   for (const auto& [name, value] : columns) cell(name);
@@ -168,7 +170,12 @@ std::string what_if_table(const WhatIf& what_if, const std::vector<WhatIfPoint>&
       out << p.error->message(word);
     out << "\n";
   }
-  out << "R: range; eps: efficiency T/Delta U; Q: quality (eq:Q); A: the projectile's climb at the release; pin angle: the pin to bend for it;\n"
+  for (const WhatIfPoint& p : points)
+    if (p.report)
+      for (const std::string& warning : p.report->verification.warnings)
+        out << "warning at " << field.key << " = " << q(p.value, field.dimension) << ": " << with_words(warning, word) << "\n";
+  out << "R: range (!: the model stops holding in that shot, its warning above); eps: efficiency T/Delta U; Q: quality (eq:Q); A: the "
+         "projectile's climb at the release; pin angle: the pin to bend for it;\n"
          "axle load, sling: their largest up to the release; beam: the modulus of rupture over the beam's larger stress (below 1 it breaks)\n";
   return out.str();
 }
