@@ -43,8 +43,7 @@ int run_contest(const Options& o) {
     if (o.format == Format::json) std::cout << pretty_json(all);
     return refused == static_cast<int>(std::size(searched_machines)) ? code : exit_success;
   }
-  const ContestEngine best = contest_optimum(request);
-  const std::vector<ContestEngine> front = o.pareto > 0 ? pareto_front(request, o.pareto) : std::vector<ContestEngine>{};
+  const auto [best, front] = contest_with_front(request, o.pareto);
   if (!o.plot.empty()) write_picture_folder(o.plot, pareto_pictures(front, request), {"pareto.gp"});
   if (o.format == Format::json)
     std::cout << pretty_json(contest_json(best, request, front));

@@ -468,11 +468,9 @@ void note_pin(ContestEngine& best, const ContestRequest& request) {
   }
 }
 
-}  // namespace
-
-ContestEngine contest_optimum(const ContestRequest& request) {
-  check_request(request);
-  Shots shots(request);
+// The contest's best over `shots`, which may hold other searches' (the Pareto front's): a shot
+// among them that meets every limit and throws farther is adopted as a gain's is.
+ContestEngine optimum_from(const ContestRequest& request, Shots& shots) {
   std::vector<SearchPoint> ends;
   ContestEngine best = best_engine(request, shots, &ends);
   if (!request.gains) {
@@ -502,6 +500,67 @@ ContestEngine contest_optimum(const ContestRequest& request) {
   return best;
 }
 
+// The Pareto front's searches over `shots`: every engine found, from the largest load down, each
+// search warm from the last optimum; `loads` the axle's limits searched, from the largest down.
+std::vector<ContestEngine> front_searches(const ContestRequest& request, int points, Shots& shots, std::vector<double>& loads) {
+  ContestRequest free = request;
+  free.limits[axle_limit].reset();
+  const ContestEngine top = best_engine(free, shots);
+  const double most = request.limits[axle_limit] ? std::min(*request.limits[axle_limit], top.measured[axle_limit]) : top.measured[axle_limit];
+  std::vector<ContestEngine> found{top};
+  SearchPoint warm = point_of(top.engine);
+  for (int k = points - 1; k >= 0; --k) {
+    ContestRequest limited = request;
+    limited.limits[axle_limit] = most * (0.2 + 0.8 * k / (points - 1));
+    loads.push_back(*limited.limits[axle_limit]);
+    Found search_found = search(limited, shots, {warm}, Reach::warm_only);
+    if (!search_found.best) search_found = search(limited, shots, {});  // the warm start could not reach this load
+    if (!search_found.best) continue;
+    search_found.best->shots = shots.count();
+    found.push_back(*search_found.best);
+    warm = point_of(search_found.best->engine);
+  }
+  return found;
+}
+
+// The front's point at each load: the best of every engine found within it (a search that
+// stopped short is bettered by one that went farther at a smaller load), by rising load.
+std::vector<ContestEngine> front_of(const std::vector<ContestEngine>& found, const std::vector<double>& loads) {
+  std::vector<ContestEngine> front;
+  for (auto load = loads.rbegin(); load != loads.rend(); ++load) {
+    const ContestEngine* best = nullptr;
+    for (const ContestEngine& c : found)
+      if (c.measured[axle_limit] <= *load && (!best || c.objective > best->objective)) best = &c;
+    if (best && (front.empty() || best->objective > front.back().objective)) front.push_back(*best);
+  }
+  return front;
+}
+
+void check_points(int points) {
+  if (!(points >= 2 && points <= 200)) throw Error(ErrorKind::bad_number, "{{points}} = " + std::to_string(points) + ": give 2 to 200 points");
+}
+
+}  // namespace
+
+ContestEngine contest_optimum(const ContestRequest& request) {
+  check_request(request);
+  Shots shots(request);
+  return optimum_from(request, shots);
+}
+
+ContestResult contest_with_front(const ContestRequest& request, int points) {
+  check_request(request);
+  if (points == 0) return {contest_optimum(request), {}};
+  check_points(points);
+  Shots shots(request);
+  std::vector<double> loads;
+  std::vector<ContestEngine> found = front_searches(request, points, shots, loads);
+  ContestResult out{optimum_from(request, shots), {}};
+  found.push_back(out.best);
+  out.front = front_of(found, loads);
+  return out;
+}
+
 std::vector<MachineBest> contest_each_machine(ContestRequest request) {
   std::vector<MachineBest> each;
   for (const MachineKind machine : searched_machines) {
@@ -522,37 +581,10 @@ std::vector<ContestLimit> conflicting_limits(const ContestRequest& request) {
 
 std::vector<ContestEngine> pareto_front(const ContestRequest& request, int points) {
   check_request(request);
-  if (!(points >= 2 && points <= 200)) throw Error(ErrorKind::bad_number, "{{points}} = " + std::to_string(points) + ": give 2 to 200 points");
+  check_points(points);
   Shots shots(request);
-  ContestRequest free = request;
-  free.limits[axle_limit].reset();
-  const ContestEngine top = best_engine(free, shots);
-  const double most = request.limits[axle_limit] ? std::min(*request.limits[axle_limit], top.measured[axle_limit]) : top.measured[axle_limit];
-  // Every engine found, from the largest load down, each search warm from the last optimum: the
-  // front's point at a load is the best of them all within it (a search that stopped short is
-  // bettered by one that went farther at a smaller load).
-  std::vector<ContestEngine> found{top};
-  SearchPoint warm = point_of(top.engine);
   std::vector<double> loads;
-  for (int k = points - 1; k >= 0; --k) {
-    ContestRequest limited = request;
-    limited.limits[axle_limit] = most * (0.2 + 0.8 * k / (points - 1));
-    loads.push_back(*limited.limits[axle_limit]);
-    Found search_found = search(limited, shots, {warm}, Reach::warm_only);
-    if (!search_found.best) search_found = search(limited, shots, {});  // the warm start could not reach this load
-    if (!search_found.best) continue;
-    search_found.best->shots = shots.count();
-    found.push_back(*search_found.best);
-    warm = point_of(search_found.best->engine);
-  }
-  std::vector<ContestEngine> front;
-  for (auto load = loads.rbegin(); load != loads.rend(); ++load) {
-    const ContestEngine* best = nullptr;
-    for (const ContestEngine& c : found)
-      if (c.measured[axle_limit] <= *load && (!best || c.objective > best->objective)) best = &c;
-    if (best && (front.empty() || best->objective > front.back().objective)) front.push_back(*best);
-  }
-  return front;
+  return front_of(front_searches(request, points, shots, loads), loads);
 }
 
 }  // namespace trebuchet

@@ -75,8 +75,8 @@ ordered_json contest(const json& request) {
       throw Error(ErrorKind::usage, "{{machine}} \"all\" sets the machines' best side by side; leave out {{pareto}}, or name one machine");
     return each_machine_json(r);
   }
-  const ContestEngine best = contest_optimum(r);
-  return contest_json(best, r, pareto > 0 ? pareto_front(r, static_cast<int>(pareto)) : std::vector<ContestEngine>{});
+  const auto [best, front] = contest_with_front(r, static_cast<int>(pareto));
+  return contest_json(best, r, front);
 }
 
 }  // namespace trebuchet::api

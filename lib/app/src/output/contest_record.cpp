@@ -145,10 +145,13 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
   const std::size_t from_gains = best.start_objectives.size() - own;
   out << "search: " << starts_at_best(best, own) << " of " << own
       << " local searches reached this best to 1e-4 (from the paper's proportions and the best of " << contest_sample_size << " Sobol points)"
-      << (from_gains ? "; a gain's search shot a better engine within the limits, refined by " + std::to_string(from_gains) + " more" : std::string())
+      << (from_gains ? "; another search (a gain's or the Pareto front's) shot a better engine within the limits, refined by " +
+                  std::to_string(from_gains) + " more"
+                     : std::string())
       << "\n";
   if (!front.empty()) {
-    out << "Pareto front of " << (request.efficiency ? "eps" : "the range") << " against the peak axle load (" << front.size() << " optima):\n"
+    out << "Pareto front of " << (request.efficiency ? "eps" : "the range") << " against the peak axle load (" << front.size()
+        << (front.size() == 1 ? " optimum" : " optima") << "):\n"
         << "  " << padded("axle load", width) << padded("R", width) << padded("eps", 10) << padded("M", width) << "pin to bend\n";
     for (const ContestEngine& p : front) {
       const std::string load = quantity_text(p.measured[axle_limit], UnitDimension::force, units, 4);

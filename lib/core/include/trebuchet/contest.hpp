@@ -155,4 +155,14 @@ std::vector<ContestLimit> conflicting_limits(const ContestRequest& request);
 /// other limits; those that meet their limits, by rising axle load.
 std::vector<ContestEngine> pareto_front(const ContestRequest& request, int points);
 
+/// The contest's best and its Pareto front of `points` optima (none for 0), from one set of
+/// shots: the front is searched first, so that the best adopts an engine the front's searches
+/// shot that meets every limit and throws farther (as it adopts a gain's, contest_optimum), and
+/// the front holds the best at its load. Refuses `points` outside 2 to 200 as pareto_front does.
+struct ContestResult {
+  ContestEngine best;
+  std::vector<ContestEngine> front;
+};
+ContestResult contest_with_front(const ContestRequest& request, int points);
+
 }  // namespace trebuchet
