@@ -99,3 +99,22 @@ TEST_CASE("the contest's best throws at least as far as every engine of its Pare
   }
   CHECK(result.front.back().objective == result.best.objective);  // the best is the front's top
 }
+
+// A contest that limits only the box's width is bounded by the search alone: its counterweight
+// stops at 1e5 times the ball and its L1/L2 at 60, and the report says so rather than show 50 t as
+// an optimum (a fresh user's test: --max-M 1e9kg then threw farther than no limit at all). The
+// school contest stands at its limits, and says nothing of bounds.
+TEST_CASE("a contest's best at the search's own bound is noted as such", "[contest][heavy]") {
+  ContestRequest open = school_contest(MachineKind::fixed);
+  open.limits[height_limit].reset(), open.limits[mass_limit].reset();
+  const auto bound_note = [](const ContestEngine& best) {
+    for (const std::string& note : best.verification.notes)
+      if (note.find("the search stopped at its own bound") != std::string::npos) return note;
+    return std::string();
+  };
+  const ContestEngine unbounded = contest_optimum(open);
+  std::printf("width alone: M %.6g kg, R %.6g m; %s\n", unbounded.engine.M, unbounded.objective, bound_note(unbounded).c_str());
+  CHECK(unbounded.engine.M == Approx(1e5 * open.projectile_mass).epsilon(1e-9));
+  CHECK_THAT(bound_note(unbounded), Catch::Contains("1e5 times the ball's mass"));
+  CHECK(bound_note(contest_optimum(school_contest(MachineKind::fixed))).empty());
+}

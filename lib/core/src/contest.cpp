@@ -468,6 +468,28 @@ void note_pin(ContestEngine& best, const ContestRequest& request) {
   }
 }
 
+// Where the best stands at a bound of the search rather than at a limit (the counterweight at 1e5
+// times the ball without a --max-M, the arms' ratios, L2's 1 mm to 1 km), a note says so: a
+// heavier or longer engine beyond it may throw farther, and only a limit given bounds it.
+void note_bounds(ContestEngine& best, const ContestRequest& request, Shots& shots) {
+  const auto [low, high] = Search{request, shots}.bounds();
+  const SearchPoint x = point_of(best.engine);
+  const char* names[] = {"L1/L2", "L4/L1", "m/M", "L2 [m]", "L3/L2"};
+  std::vector<std::string> at;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (i == 2 && x[i] <= low[i] + 1e-6 && !request.limits[mass_limit])  // M at its limit is the limit's, not the search's
+      at.push_back(
+          "M = " + (best.engine.M >= 1000 ? format_significant(best.engine.M / 1000, 3) + " t" : format_significant(best.engine.M, 3) + " kg") +
+          ", 1e5 times the ball's mass, with no limit on the counterweight given");
+    else if (i != 2 && x[i] <= low[i] + 1e-6)
+      at.push_back(std::string(names[i]) + " = " + format_significant(std::exp(low[i]), 3));
+    if (x[i] >= high[i] - 1e-6) at.push_back(std::string(names[i]) + " = " + format_significant(std::exp(high[i]), 3));
+  }
+  if (!at.empty())
+    best.verification.notes.push_back("the search stopped at its own bound (" + join(at, "; ") +
+                                      "), not at a limit: an engine beyond it may throw farther");
+}
+
 // The contest's best over `shots`, which may hold other searches' (the Pareto front's): a shot
 // among them that meets every limit and throws farther is adopted as a gain's is.
 ContestEngine optimum_from(const ContestRequest& request, Shots& shots) {
@@ -475,6 +497,7 @@ ContestEngine optimum_from(const ContestRequest& request, Shots& shots) {
   ContestEngine best = best_engine(request, shots, &ends);
   if (!request.gains) {
     note_pin(best, request);
+    note_bounds(best, request, shots);
     return best;
   }
   // A gain's search may shoot an engine that meets every limit as given and throws farther than
@@ -497,6 +520,7 @@ ContestEngine optimum_from(const ContestRequest& request, Shots& shots) {
   }
   best.shots = shots.count();
   note_pin(best, request);
+  note_bounds(best, request, shots);
   return best;
 }
 
