@@ -118,3 +118,29 @@ TEST_CASE("a contest's best at the search's own bound is noted as such", "[conte
   CHECK_THAT(bound_note(unbounded), Catch::Contains("1e5 times the ball's mass"));
   CHECK(bound_note(contest_optimum(school_contest(MachineKind::fixed))).empty());
 }
+
+// A counterweight that is light beside the beam (10 kg against 6 kg per metre), or a box far
+// larger than the counterweight can swing a beam across (1000 m against 60 kg), has engines: small
+// ones. The sample started none of them (its lengths followed the box alone), and the contest
+// said the counterweight's or the width's limit could not be met (a fresh user's test).
+TEST_CASE("a light counterweight or a heavy beam starts small engines rather than none", "[contest][heavy]") {
+  ContestRequest light;
+  light.machine = MachineKind::fixed;
+  light.projectile_mass = 0.5, light.beam_mass_per_length = 1.5;
+  light.limits[width_limit] = 1000, light.limits[mass_limit] = 60;
+  light.settings.criterion.release = Release::range;
+  light.gains = false;
+  const ContestEngine wide = contest_optimum(light);
+  std::printf("a 1000 m box, 60 kg: R %.6g m, beam %.4g kg\n", wide.objective, wide.engine.mb);
+  CHECK(wide.engine.M <= 60 * (1 + 1e-12));
+  CHECK(wide.measured[width_limit] <= 1000);
+  ContestRequest heavy_beam = light;
+  heavy_beam.machine = MachineKind::hinged;
+  heavy_beam.projectile_mass = 4, heavy_beam.beam_mass_per_length = 6;
+  heavy_beam.limits = {};
+  heavy_beam.limits[mass_limit] = 10;
+  const ContestEngine small = contest_optimum(heavy_beam);
+  std::printf("a 10 kg counterweight, a beam of 6 kg/m: R %.6g m, L1 + L2 %.4g m\n", small.objective, small.engine.L1 + small.engine.L2);
+  CHECK(small.engine.M <= 10 * (1 + 1e-12));
+  CHECK(small.objective > 0);
+}

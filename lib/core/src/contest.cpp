@@ -222,7 +222,9 @@ SearchPoint paper_start(const ContestRequest& r, double box) {
 // The points of a Sobol sequence (GSL's gsl_qrng) over the shapes a contest's engine takes,
 // log-uniform: L1/L2 from 1.5 to 8, L4/L1 from 0.4 to 1.6, M from its limit to a twentieth of it
 // (or 10 to 200 m), L2 about 0.3 of the box over L1/L2 + 1 (within a factor 3), or 0.2 to 5 m
-// without a box, L3/L2 from 0.3 to 1.5.
+// without a box, L3/L2 from 0.3 to 1.5. L2 is then shortened where the beam would outweigh half
+// the counterweight, which could hardly turn it: a small counterweight or a heavy beam starts
+// small engines, not none.
 std::vector<SearchPoint> sobol_sample(const ContestRequest& r, double box, int count) {
   const std::size_t n = point_size(r);
   std::unique_ptr<gsl_qrng, decltype(&gsl_qrng_free)> sequence(gsl_qrng_alloc(gsl_qrng_sobol, static_cast<unsigned>(n)), gsl_qrng_free);
@@ -235,6 +237,8 @@ std::vector<SearchPoint> sobol_sample(const ContestRequest& r, double box, int c
     SearchPoint x{between(1.5, 8, u[0]), between(0.4, 1.6, u[1]), between(mu_least, std::min(20 * mu_least, 0.999), u[2])};
     const double l = std::exp(x[0]);
     x.push_back(box < 1e300 ? between(0.3 * box / (l + 1) / std::sqrt(3.0), 0.3 * box / (l + 1) * std::sqrt(3.0), u[3]) : between(0.2, 5, u[3]));
+    if (r.beam_mass_per_length > 0)  // the beam's mass (l + 1) L2 per metre at most half the counterweight's, m/(m/M)
+      x[3] = std::min(x[3], std::log(r.projectile_mass / std::exp(x[2]) / (2 * r.beam_mass_per_length * (l + 1))));
     if (n == 5) x.push_back(between(0.3, 1.5, u[4]));
     sample.push_back(x);
   }
@@ -335,6 +339,7 @@ std::vector<ContestLimit> fewest_conflicting(const ContestRequest& request, Shot
       if (static_cast<std::size_t>(__builtin_popcount(mask)) != size) continue;
       ContestRequest some = request;
       some.limits = {};
+      some.min_clearance = 0;  // a clearance no engine meets within the limits is named by best_engine
       std::vector<ContestLimit> chosen;
       for (std::size_t i = 0; i < given.size(); ++i)
         if (mask & (1u << i)) some.limits[given[i]] = request.limits[given[i]], chosen.push_back(given[i]);
