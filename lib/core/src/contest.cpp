@@ -133,10 +133,12 @@ struct Search {
   std::optional<ContestEngine> best;  // the best that meets the limits
   std::optional<ContestEngine> best_of_start;  // the same, of the local search under way
   std::string last_failure;  // why the last candidate that could not be shot failed
+  bool any_engine = false;  // whether any candidate was shot, within the limits or not
   nlopt_opt optimizer = nullptr;
 
   const Outcome& shoot(const SearchPoint& x) {
     const Outcome& out = shots.at(x);
+    any_engine = any_engine || out.engine.has_value();
     if (!out.engine) {
       last_failure = out.failure;
     } else if (meets_limits(*out.engine, request)) {
@@ -284,6 +286,7 @@ struct Found {
   std::vector<std::optional<double>> start_objectives;
   std::vector<SearchPoint> ends;  // where the local searches that found such an engine ended, the best first
   std::string last_failure;
+  bool any_engine = false;  // whether any candidate could be shot
 };
 
 // How far a search reaches beyond its warm starts: not at all (the Pareto front's next point);
@@ -323,6 +326,7 @@ Found search(const ContestRequest& r, Shots& shots, const std::vector<SearchPoin
   }
   found.best = s.best;
   found.last_failure = s.last_failure;
+  found.any_engine = s.any_engine;
   return found;
 }
 
@@ -343,7 +347,9 @@ std::vector<ContestLimit> fewest_conflicting(const ContestRequest& request, Shot
       std::vector<ContestLimit> chosen;
       for (std::size_t i = 0; i < given.size(); ++i)
         if (mask & (1u << i)) some.limits[given[i]] = request.limits[given[i]], chosen.push_back(given[i]);
-      if (!search(some, shots, {}, Reach::whole, true).best) return chosen;
+      const Found some_found = search(some, shots, {}, Reach::whole, true);
+      // No engine shot at all is no conflict of limits: the engines themselves fail (best_engine says why).
+      if (!some_found.best) return some_found.any_engine ? chosen : std::vector<ContestLimit>{};
     }
   }
   return {};
