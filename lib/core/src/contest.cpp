@@ -20,6 +20,10 @@
 namespace trebuchet {
 namespace {
 
+// m/M at the search's bound where the request gives no limit on M: a counterweight of at most
+// 1e5 times the ball.
+constexpr double unlimited_least_mu = 1e-5;
+
 // m over the largest counterweight allowed (at most 0.5), where the request limits it.
 std::optional<double> least_mu(const ContestRequest& r) {
   if (!r.limits[mass_limit]) return std::nullopt;
@@ -164,7 +168,7 @@ struct Search {
   // The bounds of the point: L1/L2 from 1.05 to 60, L4/L1 from 0.05 to 20, M up to its limit
   // (m/M from m over it, or 1e-5, to 0.999), L2 from 1 mm to 1 km, L3/L2 from 0.01 to 20.
   std::pair<SearchPoint, SearchPoint> bounds() const {
-    SearchPoint low{std::log(1.05), std::log(0.05), std::log(least_mu(request).value_or(1e-5)), std::log(1e-3), std::log(0.01)};
+    SearchPoint low{std::log(1.05), std::log(0.05), std::log(least_mu(request).value_or(unlimited_least_mu)), std::log(1e-3), std::log(0.01)};
     SearchPoint high{std::log(60.0), std::log(20.0), std::log(0.999), std::log(1e3), std::log(20.0)};
     low.resize(point_size(request)), high.resize(point_size(request));
     return {low, high};
@@ -377,10 +381,11 @@ void check_request(const ContestRequest& r) {
     if (side && !(*side > 0 && *side < 1e6)) throw Error(ErrorKind::bad_number, "a side of the counterweight's box must be positive");
   check_shot_settings(r.settings);
   // The sling's parts and the ball's size, where given, as the shot checks them: on the paper's
-  // proportions with the heaviest counterweight allowed (a pouch may not outweigh it).
+  // proportions with the heaviest counterweight the search may choose, its limit or its bound
+  // (a pouch may not outweigh it).
   if (r.rope_mass != 0 || r.pouch_mass != 0 || r.pin_friction != 0 || r.projectile_diameter) {
     Engine probe = engine_at(r, paper_start(r, 1e300));
-    if (r.limits[mass_limit]) probe.M = *r.limits[mass_limit];
+    probe.M = r.projectile_mass / least_mu(r).value_or(unlimited_least_mu);  // the search's bound
     check_engine(probe);
     settings_for(probe, r.settings);  // a size beside a density, or with no air to act in
   }
