@@ -27,6 +27,7 @@ LimitsToMeet comparison_limits(const Options& flags, const nlohmann::json& desig
       given.push_back(std::string("{{") + contest_limit_key(static_cast<ContestLimit>(k)) + "}}");
     }
   if (flags.min_clearance > 0) out.min_clearance = flags.min_clearance, given.push_back("{{min_clearance}}");
+  check_limits_to_meet(out);  // a record's, by hand or not, as the flags'
   if (recorded)
     print_notes({"measured against the limits of the contest " + where + " records" +
                  (given.empty() ? std::string("; a flag such as {{max_width}} gives one anew") : ", with " + join(given, ", ") + " as given")});

@@ -367,14 +367,7 @@ void check_request(const ContestRequest& r) {
     throw Error(
         ErrorKind::bad_number,
         "the beam's mass per metre, " + format_significant(r.beam_mass_per_length, 6) + " kg/m, must be 0 or more; give {{mb_per_m}} or {{D}}");
-  for (int k = 0; k < contest_limit_count; ++k)
-    if (r.limits[k] && !(*r.limits[k] > 0 && std::isfinite(*r.limits[k])))
-      throw Error(ErrorKind::bad_number,
-                  "{{" + std::string(contest_limit_key(static_cast<ContestLimit>(k))) + "}} = " + format_significant(*r.limits[k], 6) +
-                      ": a limit must be positive");
-  if (!(r.min_clearance >= 0 && r.min_clearance < 1e6))
-    throw Error(ErrorKind::bad_number,
-                "{{min_clearance}} = " + format_significant(r.min_clearance, 6) + " m: give a clearance from 0 to 1e6 m (e.g. 10cm)");
+  check_limits_to_meet({r.limits, r.min_clearance});
   if (r.box_width.has_value() != r.box_height.has_value())
     throw Error(ErrorKind::usage, "a box counterweight needs both {{box_width}} and {{box_height}}");
   for (const auto& side : {r.box_width, r.box_height})
@@ -612,6 +605,17 @@ std::vector<MachineBest> contest_each_machine(ContestRequest request) {
     }
   }
   return each;
+}
+
+void check_limits_to_meet(const LimitsToMeet& to_meet) {
+  for (int k = 0; k < contest_limit_count; ++k)
+    if (const auto& limit = to_meet.limits[k]; limit && !(*limit > 0 && std::isfinite(*limit)))
+      throw Error(ErrorKind::bad_number,
+                  "{{" + std::string(contest_limit_key(static_cast<ContestLimit>(k))) + "}} = " + format_significant(*limit, 6) +
+                      ": a limit must be positive");
+  if (!(to_meet.min_clearance >= 0 && to_meet.min_clearance < 1e6))
+    throw Error(ErrorKind::bad_number,
+                "{{min_clearance}} = " + format_significant(to_meet.min_clearance, 6) + " m: give a clearance from 0 to 1e6 m (e.g. 10cm)");
 }
 
 std::vector<ContestLimit> conflicting_limits(const ContestRequest& request) {

@@ -135,6 +135,10 @@ struct LimitsToMeet {
   bool any() const;  ///< whether any is given
 };
 
+/// Refuses (Error(bad_number), naming the flag) a limit that is not positive and finite, and a
+/// clearance outside 0 to 1e6 m: contest's and compare's one rule.
+void check_limits_to_meet(const LimitsToMeet& to_meet);
+
 /// One limit an engine breaks: its key ("max_axle_load", ..., "min_clearance"), what the engine
 /// measures and the limit, in the limit's units (contest_measures; the clearance [m]).
 struct BrokenLimit {
