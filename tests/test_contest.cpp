@@ -92,7 +92,7 @@ TEST_CASE("the contest's best throws at least as far as every engine of its Pare
   r.limits[width_limit] = 3, r.limits[height_limit] = 4, r.limits[mass_limit] = 400;
   r.settings.criterion.release = Release::range;
   const ContestResult result = contest_with_front(r, 4);
-  REQUIRE(!result.front.empty());
+  REQUIRE(result.front.size() >= 2);  // searched again from the best, below its load
   for (const ContestEngine& point : result.front) {
     std::printf("front: %.6g N, R %.8g m; the best %.8g m\n", point.measured[axle_limit], point.objective, result.best.objective);
     CHECK(point.objective <= result.best.objective);  // the same shots: no round-off between them

@@ -448,7 +448,7 @@ TEST_CASE("a release that no pin makes is said so", "[release][pin]") {
   CHECK(!(pin.R && relative(*pin.R, v.capacity.R) < 1e-6));
   const std::optional<std::string> note = pin_release_note(v, pin);
   REQUIRE(note);
-  CHECK_THAT(*note, Catch::Contains("no pin makes it"));
+  CHECK_THAT(*note, Catch::Contains("no pin makes this release"));
   // The laboratory engine's pin makes its release (to the roots' 1e-9): no note.
   const Engine lab = laboratory_engine();
   const Verification at_lab = verify_engine(lab, range);

@@ -26,7 +26,7 @@ LimitsToMeet comparison_limits(const Options& flags, const nlohmann::json& desig
       out.limits[k] = flags.limits[k];
       given.push_back(std::string("{{") + contest_limit_key(static_cast<ContestLimit>(k)) + "}}");
     }
-  if (flags.min_clearance > 0) out.min_clearance = flags.min_clearance, given.push_back("{{min_clearance}}");
+  if (flags.min_clearance) out.min_clearance = *flags.min_clearance, given.push_back("{{min_clearance}}");
   check_limits_to_meet(out);  // a record's, by hand or not, as the flags'
   if (recorded)
     print_notes({"measured against the limits of the contest " + where + " records" +

@@ -15,7 +15,7 @@ namespace trebuchet::verify {
 int run_contest(const Options& o) {
   ContestRequest request = contest_request(o.design, settings_of(o), o.beam_per_m, o.efficiency);
   request.limits = o.limits;
-  request.min_clearance = o.min_clearance;
+  request.min_clearance = o.min_clearance.value_or(0);
   if (!o.plot.empty() && o.pareto == 0) throw Error(ErrorKind::usage, "--plot draws the Pareto front; give --pareto 20 (its points) too");
   if (o.all_machines) {  // each machine's best, side by side: the whipper is not designed by search (docs/machines.md)
     if (!o.plot.empty() || o.pareto > 0)

@@ -51,7 +51,7 @@ struct Options {
   bool efficiency = false;  ///< contest: --objective eps
   bool all_machines = false;  ///< contest: --machine all, each machine's best side by side
   int pareto = 0;  ///< contest: points of the Pareto front; 0: none
-  double min_clearance = 0;  ///< contest: of the counterweight above the ground [m]
+  std::optional<double> min_clearance;  ///< contest: of the counterweight above the ground [m]; none given: 0 (or a record's, for compare)
   std::optional<WhatIf> what_if;  ///< sweep: the value varied and its range (--vary)
   int what_if_points = 21;  ///< sweep: --points
 };

@@ -60,6 +60,16 @@ SearchPoint point_of(const Engine& e) {
   return x;
 }
 
+// The bounds of a candidate's point: L1/L2 from 1.05 to 60, L4/L1 from 0.05 to 20, M up to its
+// limit (m/M from m over it, or unlimited_least_mu, to 0.999), L2 from 1 mm to 1 km, L3/L2 from
+// 0.01 to 20.
+std::pair<SearchPoint, SearchPoint> bounds_of(const ContestRequest& r) {
+  SearchPoint low{std::log(1.05), std::log(0.05), std::log(least_mu(r).value_or(unlimited_least_mu)), std::log(1e-3), std::log(0.01)};
+  SearchPoint high{std::log(60.0), std::log(20.0), std::log(0.999), std::log(1e3), std::log(20.0)};
+  low.resize(point_size(r)), high.resize(point_size(r));
+  return {low, high};
+}
+
 // What one candidate's shot gave: the engine with its measures, or why it could not be shot.
 struct Outcome {
   std::optional<ContestEngine> engine;
@@ -165,19 +175,10 @@ struct Search {
     std::copy(missed.begin(), missed.end(), result);
   }
 
-  // The bounds of the point: L1/L2 from 1.05 to 60, L4/L1 from 0.05 to 20, M up to its limit
-  // (m/M from m over it, or 1e-5, to 0.999), L2 from 1 mm to 1 km, L3/L2 from 0.01 to 20.
-  std::pair<SearchPoint, SearchPoint> bounds() const {
-    SearchPoint low{std::log(1.05), std::log(0.05), std::log(least_mu(request).value_or(unlimited_least_mu)), std::log(1e-3), std::log(0.01)};
-    SearchPoint high{std::log(60.0), std::log(20.0), std::log(0.999), std::log(1e3), std::log(20.0)};
-    low.resize(point_size(request)), high.resize(point_size(request));
-    return {low, high};
-  }
-
   // One run of COBYLA from `x`, its first steps `step` in the logs, stopped where a step of
   // `resolution` changes nothing (the limits then met to about that of them), or after 1500 shots.
   void cobyla(SearchPoint x, double step, double resolution) {
-    auto [low, high] = bounds();
+    auto [low, high] = bounds_of(request);
     for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::clamp(x[i], low[i], high[i]);
     optimizer = nlopt_create(NLOPT_LN_COBYLA, static_cast<unsigned>(x.size()));
     nlopt_set_lower_bounds(optimizer, low.data());
@@ -228,10 +229,10 @@ SearchPoint paper_start(const ContestRequest& r, double box) {
 // The points of a Sobol sequence (GSL's gsl_qrng) over the shapes a contest's engine takes,
 // log-uniform: L1/L2 from 1.5 to 8, L4/L1 from 0.4 to 1.6, M from its limit to a twentieth of it
 // (or 10 to 200 m), L2 about 0.3 of the box over L1/L2 + 1 (within a factor 3), or 0.2 to 5 m
-// without a box, L3/L2 from 0.3 to 1.5. L2 is then shortened where the beam would outweigh half
-// the counterweight, which could hardly turn it: a small counterweight or a heavy beam starts
-// small engines, not none.
-std::vector<SearchPoint> sobol_sample(const ContestRequest& r, double box, int count) {
+// without a box, L3/L2 from 0.3 to 1.5. With `shrink`, L2 is then shortened where the beam would
+// outweigh half the counterweight, which could hardly turn it: a small counterweight or a heavy
+// beam, where no engine of the sample as drawn meets the limits, starts small engines too.
+std::vector<SearchPoint> sobol_sample(const ContestRequest& r, double box, int count, bool shrink) {
   const std::size_t n = point_size(r);
   std::unique_ptr<gsl_qrng, decltype(&gsl_qrng_free)> sequence(gsl_qrng_alloc(gsl_qrng_sobol, static_cast<unsigned>(n)), gsl_qrng_free);
   const auto between = [](double low, double high, double u) { return std::log(low) + u * (std::log(high) - std::log(low)); };
@@ -243,8 +244,8 @@ std::vector<SearchPoint> sobol_sample(const ContestRequest& r, double box, int c
     SearchPoint x{between(1.5, 8, u[0]), between(0.4, 1.6, u[1]), between(mu_least, std::min(20 * mu_least, 0.999), u[2])};
     const double l = std::exp(x[0]);
     x.push_back(box < 1e300 ? between(0.3 * box / (l + 1) / std::sqrt(3.0), 0.3 * box / (l + 1) * std::sqrt(3.0), u[3]) : between(0.2, 5, u[3]));
-    if (r.beam_mass_per_length > 0)  // the beam's mass (l + 1) L2 per metre at most half the counterweight's, m/(m/M)
-      x[3] = std::min(x[3], std::log(r.projectile_mass / std::exp(x[2]) / (2 * r.beam_mass_per_length * (l + 1))));
+    if (shrink && r.beam_mass_per_length > 0)  // the beam's mass (l + 1) L2 per metre at most half the counterweight's, m/(m/M)
+      x[3] = std::max(std::min(x[3], std::log(r.projectile_mass / std::exp(x[2]) / (2 * r.beam_mass_per_length * (l + 1)))), bounds_of(r).first[3]);
     if (n == 5) x.push_back(between(0.3, 1.5, u[4]));
     sample.push_back(x);
   }
@@ -259,13 +260,16 @@ std::vector<SearchPoint> starts_of(Search& search, const std::vector<SearchPoint
   std::vector<SearchPoint> starts = warm;
   starts.push_back(paper_start(r, box));
   std::vector<std::pair<double, SearchPoint>> ranked;
-  for (const SearchPoint& x : sobol_sample(r, box, contest_sample_size)) {
-    const Outcome& out = search.shoot(x);
-    if (search.until_feasible && search.best) return {};
-    if (!out.engine) continue;
-    double missed = 0;
-    for (double miss : misses(*out.engine, r)) missed += std::max(0.0, miss);
-    ranked.emplace_back(missed > 0 ? missed : -out.engine->objective, x);
+  for (const bool shrink : {false, true}) {  // shrunk only where the sample as drawn met the limits nowhere
+    if (std::any_of(ranked.begin(), ranked.end(), [](const auto& one) { return one.first <= 0; })) break;
+    for (const SearchPoint& x : sobol_sample(r, box, contest_sample_size, shrink)) {
+      const Outcome& out = search.shoot(x);
+      if (search.until_feasible && search.best) return {};
+      if (!out.engine) continue;
+      double missed = 0;
+      for (double miss : misses(*out.engine, r)) missed += std::max(0.0, miss);
+      ranked.emplace_back(missed > 0 ? missed : -out.engine->objective, x);
+    }
   }
   std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   // The best first, each at least 0.3 from every start before it in some log: starts in distinct
@@ -480,10 +484,10 @@ void note_pin(ContestEngine& best, const ContestRequest& request) {
 // Where the best stands at a bound of the search rather than at a limit (the counterweight at 1e5
 // times the ball without a --max-M, the arms' ratios, L2's 1 mm to 1 km), a note says so: a
 // heavier or longer engine beyond it may throw farther, and only a limit given bounds it.
-void note_bounds(ContestEngine& best, const ContestRequest& request, Shots& shots) {
-  const auto [low, high] = Search{request, shots}.bounds();
+void note_bounds(ContestEngine& best, const ContestRequest& request) {
+  const auto [low, high] = bounds_of(request);
   const SearchPoint x = point_of(best.engine);
-  const char* names[] = {"L1/L2", "L4/L1", "m/M", "L2 [m]", "L3/L2"};
+  const char* names[] = {"L1/L2", "L4/L1", "m/M", "L2", "L3/L2"};
   std::vector<std::string> at;
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (i == 2 && x[i] <= low[i] + 1e-6 && !request.limits[mass_limit])  // M at its limit is the limit's, not the search's
@@ -491,8 +495,8 @@ void note_bounds(ContestEngine& best, const ContestRequest& request, Shots& shot
           "M = " + (best.engine.M >= 1000 ? format_significant(best.engine.M / 1000, 3) + " t" : format_significant(best.engine.M, 3) + " kg") +
           ", 1e5 times the ball's mass, with no limit on the counterweight given");
     else if (i != 2 && x[i] <= low[i] + 1e-6)
-      at.push_back(std::string(names[i]) + " = " + format_significant(std::exp(low[i]), 3));
-    if (x[i] >= high[i] - 1e-6) at.push_back(std::string(names[i]) + " = " + format_significant(std::exp(high[i]), 3));
+      at.push_back(std::string(names[i]) + " = " + format_significant(std::exp(low[i]), 3) + (i == 3 ? " m" : ""));
+    if (x[i] >= high[i] - 1e-6) at.push_back(std::string(names[i]) + " = " + format_significant(std::exp(high[i]), 3) + (i == 3 ? " m" : ""));
   }
   if (!at.empty())
     best.verification.notes.push_back("the search stopped at its own bound (" + join(at, "; ") +
@@ -506,7 +510,7 @@ ContestEngine optimum_from(const ContestRequest& request, Shots& shots) {
   ContestEngine best = best_engine(request, shots, &ends);
   if (!request.gains) {
     note_pin(best, request);
-    note_bounds(best, request, shots);
+    note_bounds(best, request);
     return best;
   }
   // A gain's search may shoot an engine that meets every limit as given and throws farther than
@@ -529,16 +533,18 @@ ContestEngine optimum_from(const ContestRequest& request, Shots& shots) {
   }
   best.shots = shots.count();
   note_pin(best, request);
-  note_bounds(best, request, shots);
+  note_bounds(best, request);
   return best;
 }
 
 // The Pareto front's searches over `shots`: every engine found, from the largest load down, each
 // search warm from the last optimum; `loads` the axle's limits searched, from the largest down.
-std::vector<ContestEngine> front_searches(const ContestRequest& request, int points, Shots& shots, std::vector<double>& loads) {
+// The front starts from `given` where there is one, else from the best without the axle's limit.
+std::vector<ContestEngine> front_searches(const ContestRequest& request, int points, Shots& shots, std::vector<double>& loads,
+                                          const ContestEngine* given = nullptr) {
   ContestRequest free = request;
   free.limits[axle_limit].reset();
-  const ContestEngine top = best_engine(free, shots);
+  const ContestEngine top = given ? *given : best_engine(free, shots);
   const double most = request.limits[axle_limit] ? std::min(*request.limits[axle_limit], top.measured[axle_limit]) : top.measured[axle_limit];
   std::vector<ContestEngine> found{top};
   SearchPoint warm = point_of(top.engine);
@@ -589,6 +595,11 @@ ContestResult contest_with_front(const ContestRequest& request, int points) {
   std::vector<double> loads;
   std::vector<ContestEngine> found = front_searches(request, points, shots, loads);
   ContestResult out{optimum_from(request, shots), {}};
+  if (out.best.objective > found.front().objective) {  // the front began below the best: again, from it
+    loads.clear();
+    const std::vector<ContestEngine> again = front_searches(request, points, shots, loads, &out.best);
+    found.insert(found.end(), again.begin(), again.end());
+  }
   found.push_back(out.best);
   out.front = front_of(found, loads);
   return out;

@@ -385,10 +385,9 @@ void PinScan::read(const ShotResult& shot) {
 std::optional<std::string> pin_release_note(const Verification& v, const PinShot& pin) {
   // The shot given its own pin repeats the release to the roots' 1e-9 (tests/test_release.cpp).
   if (pin.R && std::abs(*pin.R - v.capacity.R) <= 1e-6 * std::abs(v.capacity.R)) return std::nullopt;
-  const std::string bend = format_significant(pin.pin_angle_deg, 4) + " deg";
-  return "a pin bent to " + bend + " lets go elsewhere in the swing (" +
-      (pin.R ? "R = " + format_significant(*pin.R, 4) + " m there" : std::string("a shot given it is refused")) + "): the pin angle reaches " + bend +
-      " before this release, so no pin makes it; release it another way (at a given time), or choose another engine";
+  return "no pin makes this release: a pin bent to " + format_significant(pin.pin_angle_deg, 4) + " deg " +
+      (pin.R ? "lets go elsewhere in the swing (R = " + format_significant(*pin.R, 4) + " m there)" : std::string("is refused")) +
+      "; release it at a given time instead, or choose another engine";
 }
 
 CapacityCheck check_capacity(const Verification& v, const Capacity& predicted, double tolerance, bool as_measured) {

@@ -169,7 +169,8 @@ void add_pin_tolerance(DesignReport& out, const PinScan& tolerance_scan, const V
     out.json["pin_to_bend_by_friction"] = by_friction;
   }
   if (check.table && shots.size() > 0 && pin_release_note(v, shots.front()))  // its note says why
-    out.table += "pin to bend for this release: none makes it (a pin bent to " + format_significant(v.pin_to_bend_deg, 4) + " deg lets go earlier)\n";
+    out.table += "pin to bend for this release: none makes it (a pin bent to " + format_significant(v.pin_to_bend_deg, 4) +
+        " deg does not, see the note)\n";
   else if (check.table)
     out.table += "pin to bend for this release: " + pin + "; R changes with the pin off by " + join(lost, ", ") + "\n";
 }
@@ -272,9 +273,10 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
       throw shot_error(e, record, check);
     }
   }();
-  if (pins && !pins->shots().empty())
-    if (const std::optional<std::string> note = pin_release_note(v, pins->shots().front())) v.notes.push_back(*note);
+  const std::optional<std::string> no_pin = pins && !pins->shots().empty() ? pin_release_note(v, pins->shots().front()) : std::nullopt;
+  if (no_pin) v.notes.push_back(*no_pin);
   DesignReport out = design_report(record, check, d, v, pins);
+  out.pin_releases = !no_pin;
   if (!check.plot_dir.empty())
     write_picture_folder(check.plot_dir, shot_pictures(d.engine, d.settings, v, out.json, check.units), picture_scripts(), check.inputs);
   if (!check.series_path.empty()) write_output_file(check.series_path, trace_csv(trace, d.engine), "series");
@@ -394,7 +396,8 @@ std::string comparison_table(const std::vector<MachineComparison>& comparison, U
       {"quality Q", [&](const DesignReport& r) { return sig(100 * r.verification.Q) + " %"; }},
       {"release time", [&](const DesignReport& r) { return sig(r.verification.t_release) + " s"; }},
       {"release angle A", [&](const DesignReport& r) { return sig(r.verification.A_deg) + " deg"; }},
-      {"pin angle to bend", [&](const DesignReport& r) { return sig(r.verification.pin_to_bend_deg) + " deg"; }},
+      {"pin angle to bend",
+       [&](const DesignReport& r) { return r.pin_releases ? sig(r.verification.pin_to_bend_deg) + " deg" : std::string("none"); }},
       {"peak axle load", [&](const DesignReport& r) { return q(r.verification.loads[pivot_load].value, UnitDimension::force); }},
       {"peak sling tension", [&](const DesignReport& r) { return q(r.verification.loads[sling_tension_load].value, UnitDimension::force); }},
       {"peak counterweight pin", [&](const DesignReport& r) { return q(r.verification.loads[hinge_load].value, UnitDimension::force); }},

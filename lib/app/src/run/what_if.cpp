@@ -130,18 +130,19 @@ std::string what_if_table(const WhatIf& what_if, const std::vector<WhatIfPoint>&
   const InputField& field = *what_if.field;
   const auto q = [&](double si, UnitDimension dimension) { return quantity_text(si, dimension, units, 4); };
   const auto sig = [](double x) { return format_significant(x, 4); };
-  using Column = std::pair<const char*, std::function<std::string(const Verification&)>>;
+  using Column = std::pair<const char*, std::function<std::string(const Verification&, const DesignReport&)>>;
   const std::vector<Column> columns = {
       // A shot that warns (the model stops holding) is marked where its range is read, its warnings below.
-      {"R", [&](const Verification& v) { return q(v.capacity.R, UnitDimension::length) + (v.warnings.empty() ? "" : " !"); }},
-      {"eps", [&](const Verification& v) { return sig(100 * v.eps) + " %"; }},
-      {"Q", [&](const Verification& v) { return sig(100 * v.Q) + " %"; }},
-      {"A", [&](const Verification& v) { return sig(v.A_deg) + " deg"; }},
-      {"pin to bend", [&](const Verification& v) { return sig(v.pin_to_bend_deg) + " deg"; }},
-      {"axle load", [&](const Verification& v) { return q(v.loads[pivot_load].value, UnitDimension::force); }},
-      {"sling", [&](const Verification& v) { return q(v.loads[sling_tension_load].value, UnitDimension::force); }},
+      {"R", [&](const Verification& v, const DesignReport&) { return q(v.capacity.R, UnitDimension::length) + (v.warnings.empty() ? "" : " !"); }},
+      {"eps", [&](const Verification& v, const DesignReport&) { return sig(100 * v.eps) + " %"; }},
+      {"Q", [&](const Verification& v, const DesignReport&) { return sig(100 * v.Q) + " %"; }},
+      {"A", [&](const Verification& v, const DesignReport&) { return sig(v.A_deg) + " deg"; }},
+      {"pin to bend",
+       [&](const Verification& v, const DesignReport& r) { return r.pin_releases ? sig(v.pin_to_bend_deg) + " deg" : std::string("none"); }},
+      {"axle load", [&](const Verification& v, const DesignReport&) { return q(v.loads[pivot_load].value, UnitDimension::force); }},
+      {"sling", [&](const Verification& v, const DesignReport&) { return q(v.loads[sling_tension_load].value, UnitDimension::force); }},
       {"beam",
-       [&](const Verification& v) {
+       [&](const Verification& v, const DesignReport&) {
          if (!v.beam) return std::string("-");
          return v.beam->margin >= 1 ? "margin " + format_significant(v.beam->margin, 3) : "BREAKS " + format_significant(v.beam->margin, 3);
        }},
@@ -165,7 +166,7 @@ std::string what_if_table(const WhatIf& what_if, const std::vector<WhatIfPoint>&
   for (const WhatIfPoint& p : points) {
     cell(q(p.value, field.dimension));
     if (p.report)
-      for (const auto& [name, value] : columns) cell(value(p.report->verification));
+      for (const auto& [name, value] : columns) cell(value(p.report->verification, *p.report));
     else
       out << p.error->message(word);
     out << "\n";
@@ -175,7 +176,7 @@ std::string what_if_table(const WhatIf& what_if, const std::vector<WhatIfPoint>&
       for (const std::string& warning : p.report->verification.warnings)
         out << "warning at " << field.key << " = " << q(p.value, field.dimension) << ": " << with_words(warning, word) << "\n";
   out << "R: range (!: the model stops holding in that shot, its warning above); eps: efficiency T/Delta U; Q: quality (eq:Q); A: the "
-         "projectile's climb at the release; pin angle: the pin to bend for it;\n"
+         "projectile's climb at the release; pin to bend: for that release (none: no pin makes it);\n"
          "axle load, sling: their largest up to the release; beam: the modulus of rupture over the beam's larger stress (below 1 it breaks)\n";
   return out.str();
 }

@@ -62,8 +62,9 @@ class Dynamics final : public Machine {
 
   /// Accelerations only (the right-hand side of the ODE), cheaper than snapshot. In the trough
   /// phi and phi_dot of `state` are not read: they follow from theta. With friction, the
-  /// accelerations are found by Newton's method on the forces' affine model (dynamics.cpp); false where they do not
-  /// settle (a friction too strong for the model), and then `out` is not set.
+  /// accelerations are found by Newton's method on the forces' affine model (dynamics.cpp);
+  /// Evaluated::failed where they do not settle (a friction too strong for the model), and
+  /// near_trough_singularity for a trough state as Machine::accelerations says; `out` is then not set.
   Evaluated accelerations(Phase phase, const State& state, std::array<double, 3>& out, Losses* loss_power = nullptr) const override;
 
   /// Whether the shot loses energy other than to the bodies (BuiltParts::dissipates).

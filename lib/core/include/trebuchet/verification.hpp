@@ -207,10 +207,10 @@ struct VerifiedRelease {
 /// (simulate_given_shots): a sweep of a release at the cost of one phase II.
 std::vector<VerifiedRelease> verify_releases(const Engine& engine, const ShotSettings& settings, const std::vector<SetRelease>& releases);
 
-/// Where a pin bent to the shot's own pin to bend lets go elsewhere than its release: a note that
-/// no pin makes this release. `pin` is the shot given that pin (read off the trajectory, PinScan,
-/// or shot alone): refused, or of another range (beyond 1e-6 of it), where the pin angle reaches
-/// the pin earlier in the swing than at the release. None where the pin makes it.
+/// Where a pin bent to the shot's own pin to bend does not make its release: a note that no pin
+/// makes it. `pin` is the shot given that pin (read off the trajectory, PinScan, or shot alone):
+/// refused, or of another range (beyond 1e-6 of it), as where the pin angle passes the pin
+/// earlier in the swing. None where the pin makes it.
 std::optional<std::string> pin_release_note(const Verification& v, const PinShot& pin);
 
 /// The pin angles either side of an optimum's whose range loss a shot reports [deg].

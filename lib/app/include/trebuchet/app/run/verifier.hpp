@@ -72,6 +72,7 @@ struct DesignReport {
   std::string table;
   std::vector<std::string> csv;
   bool outside_tolerance = false;
+  bool pin_releases = true;  ///< whether a pin bent to its pin to bend makes its release (pin_release_note)
 };
 
 /// Shoots the design (fitted to its capacity first with check.fit), checks its capacity, and
