@@ -9,6 +9,30 @@
 
 namespace trebuchet::verify {
 
+namespace {
+
+// The design's values the sweep does not hold: the one it varies, and those the varied one fixes
+// another way (a design's F where L3 runs), laid over as at its first point: said, not dropped.
+std::vector<std::string> given_way(const DesignValues& values, const std::string& where, const WhatIf& what_if, UnitSystem units) {
+  DesignValues swept;
+  swept.*what_if.field->member = what_if.from;
+  std::vector<std::string> unsaid;  // the sweep's own change, said here by field
+  const DesignValues at = overlay_flags(values, swept, where, unsaid);
+  std::vector<std::string> notes;
+  for (const InputField& field : input_fields()) {
+    const std::optional<double>& given = values.*field.member;
+    if (!given) continue;
+    const std::string value = engine_key_name(where, field.key) + " = " + quantity_text(*given, field.dimension, units);
+    if (&field == what_if.field)
+      notes.push_back(value + " gives way to the sweep's values at every point");
+    else if (!(at.*field.member))
+      notes.push_back(value + " gives way to the sweep's " + what_if.field->key + ", which fixes it another way");
+  }
+  return notes;
+}
+
+}  // namespace
+
 int run_sweep(const Options& flags) {
   if (!flags.what_if) throw Error(ErrorKind::usage, "sweep needs the value to vary and its range: --vary L4=2m..5m");
   nlohmann::json passed = nlohmann::json::object();
@@ -18,10 +42,7 @@ int run_sweep(const Options& flags) {
   DesignCheck check = design_check(o);
   WhatIf what_if = *o.what_if;
   what_if.points = o.what_if_points;
-  // A value the design gives and the sweep varies is the sweep's at every point: said, not dropped.
-  if (const std::optional<double> given = values.*what_if.field->member)
-    print_notes({engine_key_name(where, what_if.field->key) + " = " + quantity_text(*given, what_if.field->dimension, o.units) +
-                 " gives way to the sweep's values at every point"});
+  print_notes(given_way(values, where, what_if, o.units));
   // The release is set per point where the sweep varies it (--vary pin_angle=30..40), else once.
   if (what_if.field->group != FieldGroup::release) check.settings.release_at = release_of(values, where);
   const std::vector<WhatIfPoint> points = run_what_if(values, where, what_if, check, o.threads, progress_bar("shots"));
