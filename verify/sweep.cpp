@@ -21,7 +21,10 @@ std::vector<std::string> given_way(const DesignValues& values, const std::string
   std::vector<std::string> notes;
   for (const InputField& field : input_fields()) {
     const std::optional<double>& given = values.*field.member;
-    if (!given) continue;
+    // A record's D = 0 is a beam given by its mass, no value; another release than the one swept
+    // is refused by the sweep itself (run_what_if).
+    if (!given || (field.member == &DesignValues::D && *given == 0)) continue;
+    if (&field != what_if.field && field.group == FieldGroup::release && what_if.field->group == FieldGroup::release) continue;
     const std::string value = engine_key_name(where, field.key) + " = " + quantity_text(*given, field.dimension, units);
     if (&field == what_if.field)
       notes.push_back(value + " gives way to the sweep's values at every point");

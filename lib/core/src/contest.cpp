@@ -355,9 +355,7 @@ std::vector<ContestLimit> fewest_conflicting(const ContestRequest& request, Shot
       std::vector<ContestLimit> chosen;
       for (std::size_t i = 0; i < given.size(); ++i)
         if (mask & (1u << i)) some.limits[given[i]] = request.limits[given[i]], chosen.push_back(given[i]);
-      const Found some_found = search(some, shots, {}, Reach::whole, true);
-      // No engine shot at all is no conflict of limits: the engines themselves fail (best_engine says why).
-      if (!some_found.best) return some_found.any_engine ? chosen : std::vector<ContestLimit>{};
+      if (!search(some, shots, {}, Reach::whole, true).best) return chosen;
     }
   }
   return {};
@@ -382,7 +380,7 @@ void check_request(const ContestRequest& r) {
   // (a pouch may not outweigh it).
   if (r.rope_mass != 0 || r.pouch_mass != 0 || r.pin_friction != 0 || r.projectile_diameter) {
     Engine probe = engine_at(r, paper_start(r, 1e300));
-    probe.M = r.projectile_mass / least_mu(r).value_or(unlimited_least_mu);  // the search's bound
+    probe.M = r.limits[mass_limit] ? *r.limits[mass_limit] : r.projectile_mass / unlimited_least_mu;  // the search's bound
     check_engine(probe);
     settings_for(probe, r.settings);  // a size beside a density, or with no air to act in
   }
@@ -406,7 +404,8 @@ ContestEngine best_engine(const ContestRequest& request, Shots& shots, std::vect
                     "no engine found keeps its counterweight {{min_clearance}} = " + format_significant(request.min_clearance, 4) +
                         " m above the ground within the other limits; ask for less clearance, or loosen the box's height");
     }
-    const std::vector<ContestLimit> conflict = fewest_conflicting(request, shots, true);
+    // No engine shot at all is no conflict of limits: the engines themselves fail.
+    const std::vector<ContestLimit> conflict = found.any_engine ? fewest_conflicting(request, shots, true) : std::vector<ContestLimit>{};
     if (conflict.empty())
       throw Error(ErrorKind::out_of_range,
                   "no engine the search tried could be built and shot" +
@@ -499,8 +498,7 @@ void note_bounds(ContestEngine& best, const ContestRequest& request) {
     if (x[i] >= high[i] - 1e-6) at.push_back(std::string(names[i]) + " = " + format_significant(std::exp(high[i]), 3) + (i == 3 ? " m" : ""));
   }
   if (!at.empty())
-    best.verification.notes.push_back("the search stopped at its own bound (" + join(at, "; ") +
-                                      "), not at a limit: an engine beyond it may throw farther");
+    best.verification.notes.push_back("the search stopped at its own bound (" + join(at, "; ") + "): an engine beyond it may throw farther");
 }
 
 // The contest's best over `shots`, which may hold other searches' (the Pareto front's): a shot
@@ -599,6 +597,7 @@ ContestResult contest_with_front(const ContestRequest& request, int points) {
     loads.clear();
     const std::vector<ContestEngine> again = front_searches(request, points, shots, loads, &out.best);
     found.insert(found.end(), again.begin(), again.end());
+    out.best = optimum_from(request, shots);  // which adopts what those searches shot, the shots shared
   }
   found.push_back(out.best);
   out.front = front_of(found, loads);

@@ -160,7 +160,7 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
       const std::string eps = format_significant(100 * p.verification.eps, 4) + " %";
       const std::string mass = quantity_text(p.engine.M, UnitDimension::mass, units, 4);
       out << "  " << padded(load, width) << padded(range, width) << padded(eps, 10) << padded(mass, width)
-          << format_significant(p.verification.pin_to_bend_deg, 4) << " deg\n";
+          << (p.pin_releases ? format_significant(p.verification.pin_to_bend_deg, 4) + " deg" : std::string("none")) << "\n";
     }
   }
   return out.str();

@@ -176,7 +176,7 @@ std::string what_if_table(const WhatIf& what_if, const std::vector<WhatIfPoint>&
       for (const std::string& warning : p.report->verification.warnings)
         out << "warning at " << field.key << " = " << q(p.value, field.dimension) << ": " << with_words(warning, word) << "\n";
   out << "R: range (!: the model stops holding in that shot, its warning above); eps: efficiency T/Delta U; Q: quality (eq:Q); A: the "
-         "projectile's climb at the release; pin to bend: for that release (none: no pin makes it);\n"
+         "projectile's climb at the release; pin to bend: for that release (none: no pin makes the optimum's);\n"
          "axle load, sling: their largest up to the release; beam: the modulus of rupture over the beam's larger stress (below 1 it breaks)\n";
   return out.str();
 }

@@ -151,8 +151,7 @@ struct BrokenLimit {
 std::vector<BrokenLimit> broken_limits(const Engine& engine, const ShotSettings& settings, const LimitsToMeet& to_meet);
 
 /// The fewest limits of the request that no engine the search finds meets together; empty when
-/// it meets them all, or when no engine it tries can be shot at all (the engines fail, not the
-/// limits).
+/// it meets them all.
 std::vector<ContestLimit> conflicting_limits(const ContestRequest& request);
 
 /// The Pareto front of the objective against the peak axle load: `points` optima, the axle's
