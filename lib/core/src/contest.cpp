@@ -599,6 +599,7 @@ ContestResult contest_with_front(const ContestRequest& request, int points) {
     found.insert(found.end(), again.begin(), again.end());
     out.best = optimum_from(request, shots);  // which adopts what those searches shot, the shots shared
   }
+  out.best.shots = shots.count();  // the front's searches' too
   found.push_back(out.best);
   out.front = front_of(found, loads);
   return out;
