@@ -236,7 +236,7 @@ std::vector<SearchPoint> sobol_sample(const ContestRequest& r, double box, int c
   const std::size_t n = point_size(r);
   std::unique_ptr<gsl_qrng, decltype(&gsl_qrng_free)> sequence(gsl_qrng_alloc(gsl_qrng_sobol, static_cast<unsigned>(n)), gsl_qrng_free);
   const auto between = [](double low, double high, double u) { return std::log(low) + u * (std::log(high) - std::log(low)); };
-  const double mu_least = least_mu(r).value_or(0.005);
+  const double mu_least = least_mu(r).value_or(0.005), least_L2 = bounds_of(r).first[3];
   std::vector<SearchPoint> sample;
   for (int k = 0; k < count; ++k) {
     double u[5] = {};
@@ -245,7 +245,7 @@ std::vector<SearchPoint> sobol_sample(const ContestRequest& r, double box, int c
     const double l = std::exp(x[0]);
     x.push_back(box < 1e300 ? between(0.3 * box / (l + 1) / std::sqrt(3.0), 0.3 * box / (l + 1) * std::sqrt(3.0), u[3]) : between(0.2, 5, u[3]));
     if (shrink && r.beam_mass_per_length > 0)  // the beam's mass (l + 1) L2 per metre at most half the counterweight's, m/(m/M)
-      x[3] = std::max(std::min(x[3], std::log(r.projectile_mass / std::exp(x[2]) / (2 * r.beam_mass_per_length * (l + 1)))), bounds_of(r).first[3]);
+      x[3] = std::max(std::min(x[3], std::log(r.projectile_mass / std::exp(x[2]) / (2 * r.beam_mass_per_length * (l + 1)))), least_L2);
     if (n == 5) x.push_back(between(0.3, 1.5, u[4]));
     sample.push_back(x);
   }
@@ -506,16 +506,11 @@ void note_bounds(ContestEngine& best, const ContestRequest& request) {
 ContestEngine optimum_from(const ContestRequest& request, Shots& shots) {
   std::vector<SearchPoint> ends;
   ContestEngine best = best_engine(request, shots, &ends);
-  if (!request.gains) {
-    note_pin(best, request);
-    note_bounds(best, request);
-    return best;
-  }
   // A gain's search may shoot an engine that meets every limit as given and throws farther than
   // the best (the contest's own searches missed it; its limit then only seemed to bind): that
   // engine, refined under the limits as given, is the best, a local search of its own, and the
   // gains are searched again from it; at most twice.
-  for (int round = 0;; ++round) {
+  for (int round = 0; request.gains; ++round) {
     add_gains(best, request, shots, ends);
     if (round == 2) break;
     const std::optional<ContestEngine> missed = best_shot(shots, request);

@@ -114,11 +114,8 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
   std::ostringstream out;
   out << "the best " << machine_words(request.machine) << " for " << (request.efficiency ? "eps" : "the range") << " within the limits ("
       << best.shots << " shots; docs/machines.md):\n"
-      << verification_table(best.engine, request.settings, best.verification, std::nullopt, units) << "pin to bend for this release: "
-      << (best.pin_releases
-              ? pin_to_bend_text(best.verification, best.engine.parts.pin_friction)
-              : "none makes it (a pin bent to " + format_significant(best.verification.pin_to_bend_deg, 4) + " deg does not, see the note)")
-      << "\nlimits:\n";
+      << verification_table(best.engine, request.settings, best.verification, std::nullopt, units)
+      << "pin to bend for this release: " << pin_to_bend_text(best.verification, best.engine.parts.pin_friction, best.pin_releases) << "\nlimits:\n";
   const std::size_t width = units == UnitSystem::si ? 16 : 26;  // imperial gives SI beside
   bool any = false;
   for (int k = 0; k < contest_limit_count; ++k) {

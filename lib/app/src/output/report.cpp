@@ -29,8 +29,9 @@ std::string cell(const std::string& label, const std::string& value) {
 
 }  // namespace
 
-std::string pin_to_bend_text(const Verification& v, double pin_friction) {
+std::string pin_to_bend_text(const Verification& v, double pin_friction, bool releases) {
   const std::string bend = format_significant(v.pin_to_bend_deg, 4) + " deg";
+  if (!releases) return "none makes it (a pin bent to " + bend + " does not, see the note)";
   if (!(pin_friction > 0)) return bend;
   return bend + " for its friction " + format_significant(pin_friction, 3) + " (" + format_significant(v.pin_angle_deg, 4) + " deg frictionless)";
 }

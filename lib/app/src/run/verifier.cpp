@@ -135,8 +135,9 @@ FittedEngine fit_for_check(const Engine& engine, const EngineRecord& record, con
           "fitted engine (" + std::to_string(result.simulations) + " shots):\n" + engine_table(result.engine, check.units)};
 }
 
-// The pin to bend for an optimum, and what a degree or two of error costs (read off the same
-// shot); without friction on the pin, the bend for a greased and a dry one.
+// The pin to bend for an optimum (none where no pin makes its release: check_design), and what a
+// degree or two of error costs (read off the same shot); without friction on the pin, the bend
+// for a greased and a dry one.
 void add_pin_tolerance(DesignReport& out, const PinScan& tolerance_scan, const Verification& v, const Engine& engine, const DesignCheck& check) {
   nlohmann::ordered_json tolerance = nlohmann::ordered_json::array();
   std::vector<std::string> lost;
@@ -168,11 +169,9 @@ void add_pin_tolerance(DesignReport& out, const PinScan& tolerance_scan, const V
     }
     out.json["pin_to_bend_by_friction"] = by_friction;
   }
-  if (check.table && shots.size() > 0 && pin_release_note(v, shots.front()))  // its note says why
-    out.table += "pin to bend for this release: none makes it (a pin bent to " + format_significant(v.pin_to_bend_deg, 4) +
-        " deg does not, see the note)\n";
-  else if (check.table)
-    out.table += "pin to bend for this release: " + pin + "; R changes with the pin off by " + join(lost, ", ") + "\n";
+  if (check.table)
+    out.table += "pin to bend for this release: " +
+        (out.pin_releases ? pin + "; R changes with the pin off by " + join(lost, ", ") : pin_to_bend_text(v, mu, false)) + "\n";
 }
 
 }  // namespace
@@ -216,9 +215,9 @@ Error shot_error(const Error& e, const EngineRecord& record, const DesignCheck& 
 }
 
 // The report of the design's shot `v`: its record, table and CSV cells, the capacity checked,
-// the pin's tolerance where the shot read it (`tolerance_scan`).
+// the pin's tolerance where the shot read it (`tolerance_scan`), and whether a pin makes its release.
 DesignReport design_report(const EngineRecord& record, const DesignCheck& check, const CheckedDesign& d, const Verification& v,
-                           const PinScan* tolerance_scan) {
+                           const PinScan* tolerance_scan, bool pin_releases) {
   const Engine& engine = d.engine;
   const ShotSettings& settings = d.settings;
   DesignReport out;
@@ -239,6 +238,7 @@ DesignReport design_report(const EngineRecord& record, const DesignCheck& check,
   if (check.fit) engine_json.update(d.simulated);
   out.json["engine"] = engine_json;
   out.json["assumptions"] = assumptions_json(engine, settings);
+  out.pin_releases = pin_releases;
   if (tolerance_scan) add_pin_tolerance(out, *tolerance_scan, v, engine, check);
   if (!record.passed.empty()) {  // the design's keys no reader knows, as given
     out.json["passed"] = record.passed;
@@ -275,8 +275,7 @@ DesignReport check_design(const EngineRecord& record, const DesignCheck& check) 
   }();
   const std::optional<std::string> no_pin = pins && !pins->shots().empty() ? pin_release_note(v, pins->shots().front()) : std::nullopt;
   if (no_pin) v.notes.push_back(*no_pin);
-  DesignReport out = design_report(record, check, d, v, pins);
-  out.pin_releases = !no_pin;
+  DesignReport out = design_report(record, check, d, v, pins, !no_pin);
   if (!check.plot_dir.empty())
     write_picture_folder(check.plot_dir, shot_pictures(d.engine, d.settings, v, out.json, check.units), picture_scripts(), check.inputs);
   if (!check.series_path.empty()) write_output_file(check.series_path, trace_csv(trace, d.engine), "series");
@@ -310,7 +309,7 @@ std::vector<ReleasedDesign> check_released_designs(const std::vector<EngineRecor
       continue;
     }
     try {
-      out[place[k]].report = design_report(record, check, designs[k], *shots[k].verification, nullptr);
+      out[place[k]].report = design_report(record, check, designs[k], *shots[k].verification, nullptr, true);
     } catch (const Error& e) {
       out[place[k]].error = e;  // a figure its record cannot hold, as check_design throws it
     }

@@ -56,8 +56,9 @@ std::string describe_release(const ShotSettings& settings);
 std::string describe_target(const ShotSettings& settings);
 
 /// The pin to bend for a shot's release, in words: "59.11 deg for its friction 0.3 (42.42 deg
-/// frictionless)", or "42.42 deg" where the pin has no friction.
-std::string pin_to_bend_text(const Verification& v, double pin_friction);
+/// frictionless)", or "42.42 deg" where the pin has no friction; where no pin makes the release
+/// (`releases` false: pin_release_note), "none makes it (a pin bent to 42.42 deg does not, ...)".
+std::string pin_to_bend_text(const Verification& v, double pin_friction, bool releases = true);
 
 /// A given release in words: "the pin angle 40 deg".
 std::string describe_given_release(const SetRelease& release);
