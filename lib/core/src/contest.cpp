@@ -71,9 +71,13 @@ std::pair<SearchPoint, SearchPoint> bounds_of(const ContestRequest& r) {
 }
 
 // What one candidate's shot gave: the engine with its measures, or why it could not be shot.
+// An engine whose sling goes slack before the release is refused, but kept with how far its pull
+// falls below 0: the searches see the edge of the engines that hold as they see a limit's.
 struct Outcome {
   std::optional<ContestEngine> engine;
   std::string failure;
+  double slack = 0;  // the sling's least pull below 0 before the release, in the projectile's weights (refused)
+  bool usable() const { return engine && failure.empty(); }
 };
 
 // Every candidate of one contest, shot once: the objective and every limit come from the same
@@ -94,15 +98,19 @@ class Shots {
     try {
       ContestEngine c;
       c.engine = engine_at(request_, x);
-      c.measured = contest_measures(c.engine, request_.settings, &c.verification);
+      double least_pull = 0;
+      c.measured = contest_measures(c.engine, request_.settings, &c.verification, &least_pull);
       c.objective = request_.efficiency ? c.verification.eps : c.verification.capacity.R;
       c.clearance = lowest_clearance(c.verification);
       // The model stops holding before the release: no engine. A counterweight that strikes the
-      // ground (one warning more) is an engine that misses the clearance.
-      if (c.verification.warnings.size() > (c.verification.clearance.buildable() ? 0u : 1u))
-        out.failure = c.verification.warnings.front();
-      else
-        out.engine = c;
+      // ground (a clearance below 0, and where it does so before the release, a warning more) is
+      // an engine that misses the clearance, which the search then sees shrink continuously.
+      const Verification& v = c.verification;
+      const std::size_t ground_warnings = v.clearance.buildable() ? 0u : 1u + v.counterweight_below_base;
+      if (v.warnings.size() > ground_warnings) out.failure = v.warnings.front();
+      if (v.warnings.size() == ground_warnings + v.sling_slack && v.sling_slack)
+        out.slack = std::max(-least_pull, 1e-6);  // a dip between the samples: just past the edge
+      if (out.failure.empty() || out.slack > 0) out.engine = c;
     } catch (const Error& e) {
       out.failure = e.named_message();
     }
@@ -152,8 +160,8 @@ struct Search {
 
   const Outcome& shoot(const SearchPoint& x) {
     const Outcome& out = shots.at(x);
-    any_engine = any_engine || out.engine.has_value();
-    if (!out.engine) {
+    any_engine = any_engine || out.usable();
+    if (!out.usable()) {
       last_failure = out.failure;
     } else if (meets_limits(*out.engine, request)) {
       if (!best_of_start || out.engine->objective > best_of_start->objective) best_of_start = out.engine;
@@ -171,7 +179,8 @@ struct Search {
   static void limits_missed(unsigned m, double* result, unsigned n, const double* x, double*, void* data) {
     Search& s = *static_cast<Search*>(data);
     const Outcome& out = s.shoot(SearchPoint(x, x + n));
-    const std::vector<double> missed = out.engine ? misses(*out.engine, s.request) : std::vector<double>(m, 1.0);
+    std::vector<double> missed = out.engine ? misses(*out.engine, s.request) : std::vector<double>(m - 1, 1.0);
+    missed.push_back(out.engine ? out.slack : 1.0);
     std::copy(missed.begin(), missed.end(), result);
   }
 
@@ -184,7 +193,7 @@ struct Search {
     nlopt_set_lower_bounds(optimizer, low.data());
     nlopt_set_upper_bounds(optimizer, high.data());
     nlopt_set_min_objective(optimizer, minus_log_objective, this);
-    const std::vector<double> tolerances(miss_count(request), 0.0);
+    const std::vector<double> tolerances(miss_count(request) + 1, 0.0);  // the limits, then the sling's slack
     nlopt_add_inequality_mconstraint(optimizer, static_cast<unsigned>(tolerances.size()), limits_missed, this, tolerances.data());
     nlopt_set_initial_step1(optimizer, step);
     nlopt_set_xtol_abs1(optimizer, resolution);
@@ -265,7 +274,7 @@ std::vector<SearchPoint> starts_of(Search& search, const std::vector<SearchPoint
     for (const SearchPoint& x : sobol_sample(r, box, contest_sample_size, shrink)) {
       const Outcome& out = search.shoot(x);
       if (search.until_feasible && search.best) return {};
-      if (!out.engine) continue;
+      if (!out.usable()) continue;
       double missed = 0;
       for (double miss : misses(*out.engine, r)) missed += std::max(0.0, miss);
       ranked.emplace_back(missed > 0 ? missed : -out.engine->objective, x);
@@ -295,6 +304,7 @@ struct Found {
   std::vector<SearchPoint> ends;  // where the local searches that found such an engine ended, the best first
   std::string last_failure;
   bool any_engine = false;  // whether any candidate could be shot
+  int hops = 0, hops_gained = 0;  // from the best (hop_from_best)
 };
 
 // How far a search reaches beyond its warm starts: not at all (the Pareto front's next point);
@@ -302,6 +312,43 @@ struct Found {
 // refined); or wholly (the contest: the paper's proportions and the sample's best five, every end
 // within 1 % of the best refined).
 enum class Reach { warm_only, near, whole };
+
+// How many of a search's local searches reached its best (to reached_best of it).
+int agreeing(const Found& found, double best) {
+  int count = 0;
+  for (const auto& reached : found.start_objectives) count += reached && *reached >= best * (1 - reached_best);
+  return count;
+}
+
+// Hops from the best (monotone basin hopping): a coarse search from a point up to `contest_hop`
+// from it in each log, a Sobol set's (the same every run); an end that throws farther is refined
+// and hopped from in turn. It ends after `contest_fruitless_hops` hops in a row that gain nothing,
+// or `contest_most_hops` in all. Through air the local searches end on many optima of their own
+// (from 910 to 970 m for issue 63's contest), each a little below the next: the hops climb them.
+void hop_from_best(Search& s, Found& found) {
+  const std::size_t n = point_size(s.request);
+  std::unique_ptr<gsl_qrng, decltype(&gsl_qrng_free)> sequence(gsl_qrng_alloc(gsl_qrng_sobol, static_cast<unsigned>(n)), gsl_qrng_free);
+  double u[5] = {};
+  gsl_qrng_get(sequence.get(), u);  // the first point, a corner of the cube
+  SearchPoint centre = point_of(s.best->engine);
+  for (int hop = 0, fruitless = 0; hop < contest_most_hops && fruitless < contest_fruitless_hops; ++hop) {
+    gsl_qrng_get(sequence.get(), u);
+    SearchPoint x = centre;
+    for (std::size_t i = 0; i < n; ++i) x[i] += contest_hop * (2 * u[i] - 1);
+    const double before = s.best->objective;
+    const std::optional<ContestEngine> end = s.coarse(x, 0.05);
+    ++found.hops;
+    if (!end || !(end->objective > before * (1 + binding_gain))) {
+      ++fruitless;
+      continue;
+    }
+    fruitless = 0;
+    ++found.hops_gained;
+    found.start_objectives.push_back(s.refine(*end));
+    centre = point_of(s.best_of_start->engine);
+    found.ends.insert(found.ends.begin(), centre);
+  }
+}
 
 // The best engine of a request: coarse local searches from `warm` and the starts `reach` adds,
 // then the best of their ends refined; with `until_feasible`, the first engine found that meets
@@ -331,6 +378,7 @@ Found search(const ContestRequest& r, Shots& shots, const std::vector<SearchPoin
           found.start_objectives[k] = s.refine(*ends[k]), ends[k] = s.best_of_start, ++refined;
         found.ends.push_back(point_of(ends[k]->engine));
       }
+    if (reach != Reach::warm_only && agreeing(found, s.best->objective) < 2) hop_from_best(s, found);
   }
   found.best = s.best;
   found.last_failure = s.last_failure;
@@ -419,6 +467,7 @@ ContestEngine best_engine(const ContestRequest& request, Shots& shots, std::vect
   }
   ContestEngine best = *found.best;
   best.start_objectives = found.start_objectives;
+  best.hops = found.hops, best.hops_gained = found.hops_gained;
   best.shots = shots.count();
   return best;
 }
@@ -458,7 +507,7 @@ void add_gains(ContestEngine& best, const ContestRequest& request, Shots& shots,
 std::optional<ContestEngine> best_shot(const Shots& shots, const ContestRequest& request) {
   std::optional<ContestEngine> best;
   for (const auto& [point, outcome] : shots.outcomes())
-    if (outcome.engine && meets_limits(*outcome.engine, request) && (!best || outcome.engine->objective > best->objective)) best = outcome.engine;
+    if (outcome.usable() && meets_limits(*outcome.engine, request) && (!best || outcome.engine->objective > best->objective)) best = outcome.engine;
   return best;
 }
 

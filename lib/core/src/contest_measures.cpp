@@ -31,7 +31,8 @@ const char* contest_limit_key(ContestLimit limit) {
   return keys[limit];
 }
 
-std::array<double, contest_limit_count> contest_measures(const Engine& engine, const ShotSettings& given, Verification* verification) {
+std::array<double, contest_limit_count> contest_measures(const Engine& engine, const ShotSettings& given, Verification* verification,
+                                                         double* least_sling_pull) {
   check_engine(engine);
   ShotSettings settings = settings_for(engine, given);  // a ball of given size sets its density
   settings.loads = true;
@@ -52,6 +53,7 @@ std::array<double, contest_limit_count> contest_measures(const Engine& engine, c
   std::array<std::vector<double>, 12> coordinates;
   const Vec2 half_box{engine.parts.box_width.value_or(0) / 2 / engine.L2, engine.parts.box_height.value_or(0) / 2 / engine.L2};  // scaled
   std::vector<double> accelerations;  // scaled, in g
+  std::vector<double> pulls;  // the sling's on the projectile, in its weights
   for (const TracePoint& p : trace) {
     if (!times.empty() && !(p.t > times.back())) continue;  // a phase's end, sampled twice
     const Snapshot& s = p.snapshot;
@@ -63,6 +65,7 @@ std::array<double, contest_limit_count> contest_measures(const Engine& engine, c
       coordinates[k++].push_back(at.x), coordinates[k++].push_back(at.y + base);
     // The sling's pull (the tip feels its opposite), the trough's push and the weight, over the projectile's mass.
     accelerations.push_back(std::hypot(-s.sling_on_tip.x, -s.sling_on_tip.y + s.normal_force - d.mu) / d.mu);
+    pulls.push_back(s.sling_tension / d.mu);
   }
   double x_low = 1e300, x_high = -1e300, y_low = 0, y_high = base;
   for (int k = 0; k < 12; ++k) {
@@ -73,6 +76,7 @@ std::array<double, contest_limit_count> contest_measures(const Engine& engine, c
       y_low = std::min(y_low, low), y_high = std::max(y_high, high);
   }
   if (verification) *verification = v;
+  if (least_sling_pull) *least_sling_pull = -sampled_extreme(times, pulls, -1);
   return {(x_high - x_low) * engine.L2, (y_high - y_low) * engine.L2, engine.M, v.loads[pivot_load].value,
           sampled_extreme(times, accelerations, 1) * engine.material.g};
 }

@@ -114,7 +114,9 @@ void add_warnings_and_clearance(Verification& out, const Engine& engine, const S
                              format_significant(out.t_release, 4) + " s: the model no longer holds there, and the figures are not physical");
   };
   warn(shot.slack_sling, "the sling goes slack (it would push the projectile)");
+  out.sling_slack = shot.slack_sling.has_value();
   warn(shot.counterweight_below_base, "the counterweight passes below the engine's base");
+  out.counterweight_below_base = shot.counterweight_below_base.has_value();
   warn(shot.counterweight_pulled,
        "the whipper's arm would pull the counterweight it holds (the push between them changes sign before pytrebuchet's rule lets it go)");
   warn(shot.tip_below_base, "the beam's tip passes below the engine's base");

@@ -90,7 +90,9 @@ nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequ
     reached.push_back(objective ? nlohmann::ordered_json(*objective) : nlohmann::ordered_json(nullptr));
   out["search"] = {{"local_searches", best.start_objectives.size()},
                    {"reached_best", starts_at_best(best, best.start_objectives.size())},
-                   {"objectives", reached}};
+                   {"objectives", reached},
+                   {"hops", best.hops},
+                   {"hops_gained", best.hops_gained}};
   if (!front.empty()) {
     nlohmann::ordered_json points = nlohmann::ordered_json::array();
     for (const ContestEngine& p : front)
@@ -140,9 +142,13 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
            "the base)\n";
   // The contest's own searches, then those that refined a better engine a gain's search shot.
   const std::size_t own = std::min<std::size_t>(best.start_objectives.size(), contest_local_searches);
-  const std::size_t from_gains = best.start_objectives.size() - own;
+  const std::size_t from_gains = best.start_objectives.size() - own - static_cast<std::size_t>(best.hops_gained);
+  const std::string hopped = best.hops == 0 ? ""
+                                            : "; then " + std::to_string(best.hops) + (best.hops == 1 ? " hop" : " hops") + " from the best, " +
+          std::to_string(best.hops_gained) + " of which found a better engine";
   out << "search: " << starts_at_best(best, own) << " of " << own
       << " local searches reached this best to 1e-4 (from the paper's proportions and the best of " << contest_sample_size << " Sobol points)"
+      << hopped
       << (from_gains ? "; another search (a gain's or the Pareto front's) shot a better engine within the limits, refined by " +
                   std::to_string(from_gains) + " more"
                      : std::string())

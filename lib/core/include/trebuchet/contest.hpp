@@ -65,6 +65,12 @@ inline constexpr double reached_best = 1e-4;
 inline constexpr int contest_sample_size = 64;
 /// The local searches of a contest: from the paper's proportions and the best five of the sample.
 inline constexpr int contest_local_searches = 6;
+/// Then hops from the best (monotone basin hopping): up to this far in each log of the point,
+inline constexpr double contest_hop = 0.1;
+/// until this many hops in a row gain nothing,
+inline constexpr int contest_fruitless_hops = 6;
+/// or this many in all.
+inline constexpr int contest_most_hops = 40;
 
 /// One engine of a contest, with what each limit measures on it (in the limits' units) and
 /// whether it meets them all.
@@ -88,6 +94,9 @@ struct ContestEngine {
   /// What each local search of the contest reached, in the order run (none: no engine that meets
   /// the limits): how sure the search is of its best.
   std::vector<std::optional<double>> start_objectives;
+  /// The contest's hops from its best (where fewer than two local searches reached it), and how
+  /// many of them found a better engine: those follow the local searches in start_objectives.
+  int hops = 0, hops_gained = 0;
   int shots = 0;  ///< of the search that found it
   /// Whether a pin bent to the verification's pin_to_bend_deg makes its release (where not, a note
   /// says why: pin_release_note); the Pareto front's engines are not asked.
@@ -99,13 +108,18 @@ struct ContestEngine {
 /// projectile from rest through the release (the
 /// base at the bottom, sampled every 0.02 (L2/g)^(1/2) and at the release), its counterweight
 /// mass, its peak axle load, and the projectile's peak acceleration up to the release.
-std::array<double, contest_limit_count> contest_measures(const Engine& engine, const ShotSettings& settings, Verification* verification = nullptr);
+/// With `least_sling_pull`, the sling's least pull on the projectile up to the release, sampled
+/// alike, in the projectile's weights (< 0: the sling goes slack).
+std::array<double, contest_limit_count> contest_measures(const Engine& engine, const ShotSettings& settings, Verification* verification = nullptr,
+                                                         double* least_sling_pull = nullptr);
 
 /// The best engine (docs/machines.md): coarse local searches by COBYLA (NLopt) in the logs of
 /// L1/L2, L4/L1, m/M, L2 (and L3/L2 for the hinged machine; the others hold their counterweight
 /// at the short arm's end), each limit a constraint and M bounded by its limit, from the paper's
 /// proportions and the best five of 64 points of a Sobol sequence; those within 1 % of the best
-/// refined; the best engine that meets the limits over them all. Every candidate is shot once.
+/// refined; where fewer than two reached the best, hops from it (contest_hop); the best engine
+/// that meets the limits over them all. Every candidate is shot once. An engine whose sling goes
+/// slack before the release is none, but the searches see how far it goes slack, as a limit.
 /// Then, with request.gains, for each limit given, a search with that limit 10 %
 /// looser, from the contest's own ends and from starts of its own: what it gains, and whether
 /// it binds. No engine returned strikes the ground: each meets the request's clearance. Throws

@@ -128,6 +128,11 @@ struct Verification {
   /// beam's tip below the base), each with its time: the figures are then not physical; and a
   /// counterweight that would strike the ground (clearance): the engine cannot be built as given.
   std::vector<std::string> warnings;
+  /// Whether one of them is the counterweight passing below the base before the release: an
+  /// engine that strikes the ground, as a clearance below 0 (then also warned) says.
+  bool counterweight_below_base = false;
+  /// Whether one of them is the sling going slack before the release.
+  bool sling_slack = false;
   /// What makes a figure less certain without making it unphysical: Cd(Re) used beyond the
   /// Reynolds numbers it was fitted to; phase III followed only part of the way (ShotResult::phase_iii_cut).
   std::vector<std::string> notes;
