@@ -567,10 +567,11 @@ ContestEngine optimum_from(const ContestRequest& request, Shots& shots) {
     Search s{request, shots};
     s.best = missed;
     s.refine(*missed);
-    std::vector<std::optional<double>> start_objectives = best.start_objectives;
-    start_objectives.push_back(s.best->objective);
+    const ContestEngine before = best;  // how the search went, which the adopted engine's shot does not carry
     best = *s.best;
-    best.start_objectives = start_objectives;
+    best.start_objectives = before.start_objectives;
+    best.start_objectives.push_back(best.objective);
+    best.hops = before.hops, best.hops_gained = before.hops_gained;
     ends.insert(ends.begin(), point_of(best.engine));
   }
   best.shots = shots.count();
