@@ -91,6 +91,7 @@ nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequ
   out["search"] = {{"local_searches", best.start_objectives.size()},
                    {"reached_best", starts_at_best(best, best.start_objectives.size())},
                    {"objectives", reached},
+                   {"from_starts", best.local_searches},
                    {"hops", best.hops},
                    {"hops_gained", best.hops_gained}};
   if (!front.empty()) {
@@ -140,9 +141,10 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
   if (!any)
     out << "  no limit binds: the engine stops short of them where the model stops holding (a larger one would put its counterweight or tip below "
            "the base)\n";
-  // The contest's own searches, then those that refined a better engine a gain's search shot.
-  const std::size_t own = std::min<std::size_t>(best.start_objectives.size(), contest_local_searches);
-  const std::size_t from_gains = best.start_objectives.size() - own - static_cast<std::size_t>(best.hops_gained);
+  // The contest's own searches from its starts, its hops from the best, then the searches that
+  // refined a better engine a gain's search shot.
+  const std::size_t own = static_cast<std::size_t>(best.local_searches);
+  const std::size_t from_gains = best.start_objectives.size() - std::min(best.start_objectives.size(), own + best.hops_gained);
   const std::string hopped = best.hops == 0 ? ""
                                             : "; then " + std::to_string(best.hops) + (best.hops == 1 ? " hop" : " hops") + " from the best, " +
           std::to_string(best.hops_gained) + " of which found a better engine";

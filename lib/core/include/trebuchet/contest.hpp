@@ -94,9 +94,11 @@ struct ContestEngine {
   /// What each local search of the contest reached, in the order run (none: no engine that meets
   /// the limits): how sure the search is of its best.
   std::vector<std::optional<double>> start_objectives;
-  /// The contest's hops from its best (where fewer than two local searches reached it), and how
-  /// many of them found a better engine: those follow the local searches in start_objectives.
-  int hops = 0, hops_gained = 0;
+  /// How many local searches the contest ran from its starts (at most contest_local_searches:
+  /// fewer where the sample has fewer distinct points), first in start_objectives; its hops from
+  /// its best (where fewer than two of them reached it), and how many of those found a better
+  /// engine, which follow them there.
+  int local_searches = 0, hops = 0, hops_gained = 0;
   int shots = 0;  ///< of the search that found it
   /// Whether a pin bent to the verification's pin_to_bend_deg makes its release (where not, a note
   /// says why: pin_release_note); the Pareto front's engines are not asked.
@@ -121,8 +123,8 @@ std::array<double, contest_limit_count> contest_measures(const Engine& engine, c
 /// that meets the limits over them all. Every candidate is shot once. An engine whose sling goes
 /// slack before the release is none, but the searches see how far it goes slack, as a limit.
 /// Then, with request.gains, for each limit given, a search with that limit 10 %
-/// looser, from the contest's own ends and from starts of its own: what it gains, and whether
-/// it binds. No engine returned strikes the ground: each meets the request's clearance. Throws
+/// looser, from the contest's own ends and from starts of its own (hopping as the contest's own
+/// does): what it gains, and whether it binds. No engine returned strikes the ground: each meets the request's clearance. Throws
 /// Error(bad_number) for a request no engine could meet (no projectile, no beam), Error(out_of_range)
 /// when no engine meets the limits, naming the fewest limits that cannot be met together.
 ContestEngine contest_optimum(const ContestRequest& request);
