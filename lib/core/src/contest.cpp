@@ -569,6 +569,15 @@ void note_bounds(ContestEngine& best, const ContestRequest& request) {
     best.verification.notes.push_back("the search stopped at its own bound (" + join(at, "; ") + "): an engine beyond it may throw farther");
 }
 
+// The beam's strength is no limit of the contest: where the best engine's beam breaks in its shot,
+// a note says so (the report's beam line alone did: a fresh builder's test).
+void note_beam(ContestEngine& best) {
+  const std::optional<BeamStrength>& beam = best.verification.beam;
+  if (beam && beam->margin < 1)
+    best.verification.notes.push_back("this engine's beam breaks in the shot (margin " + format_significant(beam->margin, 3) +
+                                      " < 1): the contest limits no beam's stress; give a thicker beam (a larger mass per metre, or D)");
+}
+
 // The contest's best over `shots`, which may hold other searches' (the Pareto front's): a shot
 // among them that meets every limit and throws farther is adopted as a gain's is.
 ContestEngine optimum_from(const ContestRequest& request, Shots& shots) {
@@ -596,6 +605,7 @@ ContestEngine optimum_from(const ContestRequest& request, Shots& shots) {
   best.shots = shots.count();
   note_pin(best, request);
   note_bounds(best, request);
+  note_beam(best);
   return best;
 }
 
