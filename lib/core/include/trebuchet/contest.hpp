@@ -109,7 +109,8 @@ struct ContestEngine {
 /// beam, the counterweight (its box, upright, where its sides are given), the sling and the
 /// projectile from rest through the release (the
 /// base at the bottom, sampled every 0.02 (L2/g)^(1/2) and at the release), its counterweight
-/// mass, its peak axle load, and the projectile's peak acceleration up to the release.
+/// mass, its peak axle load, and the projectile's peak acceleration up to the release (sampled
+/// alike, and no less than the sling's refined peak pull allows).
 /// With `least_sling_pull`, the sling's least pull on the projectile up to the release, sampled
 /// alike, in the projectile's weights (< 0: the sling goes slack).
 std::array<double, contest_limit_count> contest_measures(const Engine& engine, const ShotSettings& settings, Verification* verification = nullptr,
