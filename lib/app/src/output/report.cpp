@@ -165,10 +165,12 @@ std::string whipper_start(const Engine& engine, UnitSystem units) {
       ")";
 }
 
-// The parts of an engine as built, a line of the report; empty for the paper's ideal engine.
+// The parts of an engine as built, a line of the report; empty for the paper's ideal engine. The
+// release pin's friction, which does not change the motion (EngineParts::any leaves it out), is
+// one of them: a pin greased alone was left off the line (a fresh builder's test).
 std::string describe_parts(const Engine& engine, UnitSystem units) {
   const EngineParts& p = engine.parts;
-  if (!p.any()) return "";
+  if (!p.any() && p.pin_friction == 0) return "";
   auto q = [&](double si, UnitDimension dimension) { return quantity_text(si, dimension, units, 4); };
   std::vector<std::string> parts;
   if (p.D_tip) {
