@@ -108,7 +108,7 @@ class Shots {
       const Verification& v = c.verification;
       const std::size_t ground_warnings = v.clearance.buildable() ? 0u : 1u + v.counterweight_below_base;
       if (v.warnings.size() > ground_warnings) out.failure = v.warnings.front();
-      if (v.warnings.size() == ground_warnings + v.sling_slack && v.sling_slack)
+      if (v.sling_slack && v.warnings.size() == ground_warnings + 1)  // the slack sling alone
         out.slack = std::max(-least_pull, 1e-6);  // a dip between the samples: just past the edge
       if (out.failure.empty() || out.slack > 0) out.engine = c;
     } catch (const Error& e) {
@@ -172,16 +172,18 @@ struct Search {
     return out;
   }
 
+  // Whether COBYLA sees the outcome's engine: a usable one, or a slack one where see_slack.
+  bool sees(const Outcome& out) const { return out.usable() || (see_slack && out.engine); }
+
   static double minus_log_objective(unsigned n, const double* x, double*, void* data) {
     Search& s = *static_cast<Search*>(data);
     const Outcome& out = s.shoot(SearchPoint(x, x + n));
-    const bool seen = out.usable() || (s.see_slack && out.engine);
-    return seen && out.engine->objective > 0 ? -std::log(out.engine->objective) : 50;  // none: worse than any engine
+    return s.sees(out) && out.engine->objective > 0 ? -std::log(out.engine->objective) : 50;  // none: worse than any engine
   }
   static void limits_missed(unsigned m, double* result, unsigned n, const double* x, double*, void* data) {
     Search& s = *static_cast<Search*>(data);
     const Outcome& out = s.shoot(SearchPoint(x, x + n));
-    const bool seen = out.usable() || (s.see_slack && out.engine);
+    const bool seen = s.sees(out);
     std::vector<double> missed = seen ? misses(*out.engine, s.request) : std::vector<double>(m - 1, 1.0);
     missed.push_back(seen ? out.slack : 1.0);
     std::copy(missed.begin(), missed.end(), result);
@@ -238,6 +240,10 @@ SearchPoint paper_start(const ContestRequest& r, double box) {
   return x;
 }
 
+// A Sobol sequence of `dimension` coordinates (GSL's gsl_qrng): the same points every run.
+using Sobol = std::unique_ptr<gsl_qrng, decltype(&gsl_qrng_free)>;
+Sobol sobol_sequence(std::size_t dimension) { return Sobol(gsl_qrng_alloc(gsl_qrng_sobol, static_cast<unsigned>(dimension)), gsl_qrng_free); }
+
 // The points of a Sobol sequence (GSL's gsl_qrng) over the shapes a contest's engine takes,
 // log-uniform: L1/L2 from 1.5 to 8, L4/L1 from 0.4 to 1.6, M from its limit to a twentieth of it
 // (or 10 to 200 m), L2 about 0.3 of the box over L1/L2 + 1 (within a factor 3), or 0.2 to 5 m
@@ -246,7 +252,7 @@ SearchPoint paper_start(const ContestRequest& r, double box) {
 // beam, where no engine of the sample as drawn meets the limits, starts small engines too.
 std::vector<SearchPoint> sobol_sample(const ContestRequest& r, double box, int count, bool shrink) {
   const std::size_t n = point_size(r);
-  std::unique_ptr<gsl_qrng, decltype(&gsl_qrng_free)> sequence(gsl_qrng_alloc(gsl_qrng_sobol, static_cast<unsigned>(n)), gsl_qrng_free);
+  const Sobol sequence = sobol_sequence(n);
   const auto between = [](double low, double high, double u) { return std::log(low) + u * (std::log(high) - std::log(low)); };
   const double mu_least = least_mu(r).value_or(0.005), least_L2 = bounds_of(r).first[3];
   std::vector<SearchPoint> sample;
@@ -317,13 +323,6 @@ struct Found {
 // within 1 % of the best refined).
 enum class Reach { warm_only, near, whole };
 
-// How many of a search's local searches reached its best (to reached_best of it).
-int agreeing(const Found& found, double best) {
-  int count = 0;
-  for (const auto& reached : found.start_objectives) count += reached && *reached >= best * (1 - reached_best);
-  return count;
-}
-
 // Hops from the best (monotone basin hopping): a coarse search from a point up to `contest_hop`
 // from it in each log, a Sobol set's (the same every run); an end that throws farther is refined
 // and hopped from in turn. It ends after `contest_fruitless_hops` hops in a row that gain nothing,
@@ -331,7 +330,7 @@ int agreeing(const Found& found, double best) {
 // (from 910 to 970 m for issue 63's contest), each a little below the next: the hops climb them.
 void hop_from_best(Search& s, Found& found) {
   const std::size_t n = point_size(s.request);
-  std::unique_ptr<gsl_qrng, decltype(&gsl_qrng_free)> sequence(gsl_qrng_alloc(gsl_qrng_sobol, static_cast<unsigned>(n)), gsl_qrng_free);
+  const Sobol sequence = sobol_sequence(n);
   double u[5] = {};
   gsl_qrng_get(sequence.get(), u);  // the first point, a corner of the cube
   SearchPoint centre = point_of(s.best->engine);
@@ -384,7 +383,8 @@ Found search_once(const ContestRequest& r, Shots& shots, const std::vector<Searc
           found.start_objectives[k] = s.refine(*ends[k]), ends[k] = s.best_of_start, ++refined;
         found.ends.push_back(point_of(ends[k]->engine));
       }
-    if (reach != Reach::warm_only && agreeing(found, s.best->objective) < 2) hop_from_best(s, found);
+    if (reach != Reach::warm_only && searches_at_best(found.start_objectives, s.best->objective, found.start_objectives.size()) < 2)
+      hop_from_best(s, found);
   }
   found.best = s.best;
   found.last_failure = s.last_failure;

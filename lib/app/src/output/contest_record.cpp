@@ -16,14 +16,6 @@ const char* const limit_words[contest_limit_count] = {"box width", "box height",
 const UnitDimension limit_dimensions[contest_limit_count] = {UnitDimension::length, UnitDimension::length, UnitDimension::mass, UnitDimension::force,
                                                              UnitDimension::acceleration};
 
-// How many of the first `count` local searches reached the best (to reached_best of it).
-int starts_at_best(const ContestEngine& best, std::size_t count) {
-  int at_best = 0;
-  for (std::size_t k = 0; k < count && k < best.start_objectives.size(); ++k)
-    at_best += best.start_objectives[k] && *best.start_objectives[k] >= best.objective * (1 - reached_best);
-  return at_best;
-}
-
 // `text` and the spaces that take it to `width` columns: at least one, where it is as wide or wider.
 std::string padded(const std::string& text, std::size_t width) { return text + std::string(text.size() < width ? width - text.size() : 1, ' '); }
 
@@ -89,7 +81,7 @@ nlohmann::ordered_json contest_json(const ContestEngine& best, const ContestRequ
   for (const auto& objective : best.start_objectives)
     reached.push_back(objective ? nlohmann::ordered_json(*objective) : nlohmann::ordered_json(nullptr));
   out["search"] = {{"local_searches", best.start_objectives.size()},
-                   {"reached_best", starts_at_best(best, best.start_objectives.size())},
+                   {"reached_best", searches_at_best(best.start_objectives, best.objective, best.start_objectives.size())},
                    {"objectives", reached},
                    {"from_starts", best.local_searches},
                    {"hops", best.hops},
@@ -148,7 +140,7 @@ std::string contest_table(const ContestEngine& best, const ContestRequest& reque
   const std::string hopped = best.hops == 0 ? ""
                                             : "; then " + std::to_string(best.hops) + (best.hops == 1 ? " hop" : " hops") + " from the best, " +
           std::to_string(best.hops_gained) + " of which found a better engine";
-  out << "search: " << starts_at_best(best, own) << " of " << own
+  out << "search: " << searches_at_best(best.start_objectives, best.objective, own) << " of " << own
       << " local searches reached this best to 1e-4 (from the paper's proportions and the best of " << contest_sample_size << " Sobol points)"
       << hopped
       << (from_gains ? "; another search (a gain's or the Pareto front's) shot a better engine within the limits, refined by " +

@@ -61,6 +61,12 @@ inline constexpr double at_limit_tolerance = 1e-3;
 inline constexpr double binding_gain = 1e-5;
 /// Within this fraction of the best, a local search reached the best (ContestEngine::start_objectives).
 inline constexpr double reached_best = 1e-4;
+/// How many of the first `count` local searches' ends reached `best` (to reached_best of it).
+inline int searches_at_best(const std::vector<std::optional<double>>& ends, double best, std::size_t count) {
+  int at_best = 0;
+  for (std::size_t k = 0; k < count && k < ends.size(); ++k) at_best += ends[k] && *ends[k] >= best * (1 - reached_best);
+  return at_best;
+}
 /// The search's starts: the paper's proportions and the best of a Sobol sample of this many points.
 inline constexpr int contest_sample_size = 64;
 /// The local searches of a contest: from the paper's proportions and the best five of the sample.
